@@ -8,3 +8,11 @@
 
 pub mod mechanics;
 pub mod model;
+pub mod analysis;
+pub mod backend;
+pub mod font;
+pub mod report;
+pub mod sheet;
+pub mod pipeline;
+pub mod results;
+pub mod cli;

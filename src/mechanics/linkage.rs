@@ -191,6 +191,10 @@ impl Mechanism {
             }
             Step::Attach { point, link, from, toward, distance, angle } => {
                 let base = s.points[from];
+                if toward == from {
+                    s.points[point] = base; // a point coinciding with a joint, e.g. a slider's centre of mass
+                    return Ok(());
+                }
                 let dir = (s.points[toward].p - base.p).normalize().rotate(angle);
                 let r = dir * distance;
                 let lk = s.links[link];

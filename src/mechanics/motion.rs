@@ -202,3 +202,13 @@ pub fn sample(m: &Mechanism, motion: &Motion, n: usize) -> Result<Vec<State>, Mo
         })
         .collect()
 }
+
+/// Solves the mechanism at the course angle `phi`.
+pub fn sample_at(m: &Mechanism, motion: &Motion, phi: f64) -> Result<State, MotionError> {
+    m.solve(motion.theta(phi)).map_err(|f| MotionError::CannotAssemble {
+        group: describe_step(m, f.step),
+        from_deg: phi.to_degrees(),
+        to_deg: phi.to_degrees(),
+        detail: describe_failure(&f.why),
+    })
+}

@@ -1,0 +1,96 @@
+//! `results.json`: every quantity computed for the sheets, in SI units (m, m/s, m/s²,
+//! rad, rad/s, rad/s²); angles of positions also in degrees. Documented in the README.
+
+use crate::analysis::{Kinematics, Position};
+use crate::mechanics::plans::{relation_values, RelationValues};
+use crate::mechanics::Mechanism;
+use crate::sheet::sheet1::Scales;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+#[derive(Serialize)]
+struct PointOut {
+    p: [f64; 2],
+    v: [f64; 2],
+    a: [f64; 2],
+}
+
+#[derive(Serialize)]
+struct LinkOut {
+    angle: f64,
+    omega: f64,
+    epsilon: f64,
+}
+
+#[derive(Serialize)]
+struct PositionOut {
+    label: String,
+    phi_deg: f64,
+    crank_angle_deg: f64,
+    extreme: bool,
+    points: BTreeMap<String, PointOut>,
+    links: BTreeMap<String, LinkOut>,
+    relative: Vec<RelationValues>,
+}
+
+#[derive(Serialize)]
+struct Sheet1Out<'a> {
+    omega1: f64,
+    crank_sense: &'static str,
+    position0_crank_angle_deg: f64,
+    other_extreme_phi_deg: Option<f64>,
+    structure: &'a crate::mechanics::structure::Structure,
+    scales: &'a Scales,
+    positions: Vec<PositionOut>,
+    assigned: PositionOut,
+    acceleration_plan_positions: Vec<String>,
+    trajectories: BTreeMap<String, Vec<[f64; 2]>>,
+}
+
+#[derive(Serialize)]
+struct Results<'a> {
+    units: &'static str,
+    title: &'a str,
+    sheet1: Sheet1Out<'a>,
+}
+
+fn v2(v: kurbo::Vec2) -> [f64; 2] {
+    [v.x, v.y]
+}
+
+fn position_out(m: &Mechanism, k: &Kinematics, p: &Position) -> PositionOut {
+    let points = m.point_names.iter().enumerate().map(|(i, n)| {
+        let q = p.state.points[i];
+        (n.clone(), PointOut { p: v2(q.p), v: v2(q.v), a: v2(q.a) })
+    });
+    let links = m.links.iter().enumerate().map(|(i, l)| {
+        let s = p.state.links[i];
+        (l.number.to_string(), LinkOut { angle: s.angle, omega: s.omega, epsilon: s.eps })
+    });
+    PositionOut {
+        label: p.label.clone(),
+        phi_deg: p.phi.to_degrees(),
+        crank_angle_deg: k.motion.theta(p.phi).to_degrees().rem_euclid(360.0),
+        extreme: p.extreme,
+        points: points.collect(),
+        links: links.collect(),
+        relative: relation_values(m, &p.state),
+    }
+}
+
+pub fn json(title: &str, m: &Mechanism, k: &Kinematics, scales: &Scales) -> String {
+    let sheet1 = Sheet1Out {
+        omega1: m.omega1,
+        crank_sense: if k.motion.sense > 0.0 { "ccw" } else { "cw" },
+        position0_crank_angle_deg: k.motion.theta0.to_degrees().rem_euclid(360.0),
+        other_extreme_phi_deg: k.motion.other_extreme.map(f64::to_degrees),
+        structure: &k.structure,
+        scales,
+        positions: k.positions.iter().map(|p| position_out(m, k, p)).collect(),
+        assigned: position_out(m, k, &k.assigned),
+        acceleration_plan_positions: k.acceleration.iter().map(|&i| k.positions[i].label.clone()).collect(),
+        trajectories: k.trajectories.iter().map(|(id, path)| (m.name(*id).to_string(), path.iter().map(|&v| v2(v)).collect())).collect(),
+    };
+    let r = Results { units: "SI: m, m/s, m/s², rad, rad/s, rad/s²", title, sheet1 };
+    serde_json::to_string_pretty(&r).expect("results serialise")
+}

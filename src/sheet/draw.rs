@@ -1,0 +1,90 @@
+//! Drafting symbols built from scene primitives: arrows, pivots, sliders, hatching.
+
+use super::scene::{Group, Item, Pen, THIN};
+use kurbo::{Point, Vec2};
+
+/// Arrowhead length and half width, mm (drafting practice for thin lines).
+pub const ARROW_LEN: f64 = 3.0;
+pub const ARROW_HALF: f64 = 0.55;
+
+/// Adds a filled arrowhead with its tip at `tip`, pointing along `dir`.
+pub fn arrowhead(g: &mut Group, tip: Point, dir: Vec2) {
+    let len = dir.hypot();
+    if len < 1e-12 {
+        return;
+    }
+    let u = dir / len;
+    let n = u.turn_90();
+    let base = tip - u * ARROW_LEN;
+    g.items.push(Item::Fill { pts: vec![tip, base + n * ARROW_HALF, base - n * ARROW_HALF] });
+}
+
+/// A vector from `a` to `b` with an arrowhead at `b`. Vectors shorter than the arrowhead
+/// get a shorter head so the arrow never points backwards; zero vectors draw nothing.
+pub fn vector(g: &mut Group, a: Point, b: Point, pen: Pen) {
+    let d = b - a;
+    let len = d.hypot();
+    if len < 0.05 {
+        return;
+    }
+    if len <= ARROW_LEN * 1.2 {
+        let u = d / len;
+        let n = u.turn_90();
+        let base = b - u * (len * 0.8);
+        g.items.push(Item::Fill { pts: vec![b, base + n * ARROW_HALF * 0.8, base - n * ARROW_HALF * 0.8] });
+        return;
+    }
+    g.line(a, b - d / len * (ARROW_LEN * 0.6), pen);
+    arrowhead(g, b, d);
+}
+
+/// A fixed pivot: a joint circle on a short base with hatching below it.
+pub fn frame_pivot(g: &mut Group, c: Point, r: f64) {
+    g.circle(c, r, THIN);
+    let y = c.y + r * 2.6;
+    let half = r * 3.0;
+    g.line(Point::new(c.x - r * 0.9, c.y + r * 0.5), Point::new(c.x - r * 1.6, y), THIN);
+    g.line(Point::new(c.x + r * 0.9, c.y + r * 0.5), Point::new(c.x + r * 1.6, y), THIN);
+    g.line(Point::new(c.x - half, y), Point::new(c.x + half, y), THIN);
+    hatch(g, Point::new(c.x - half, y), Point::new(c.x + half, y), Vec2::new(0.0, 1.0), 1.6);
+}
+
+/// Short 45° strokes along `a → b` on the side `side` (a unit vector): the frame symbol.
+pub fn hatch(g: &mut Group, a: Point, b: Point, side: Vec2, step: f64) {
+    let d = b - a;
+    let len = d.hypot();
+    if len < 1e-9 {
+        return;
+    }
+    let u = d / len;
+    let stroke = (side - u) * (step * 0.9 / std::f64::consts::SQRT_2);
+    let n = (len / step).floor() as usize;
+    for i in 0..=n {
+        let p = a + u * (i as f64 * step);
+        g.line(p, p + stroke, THIN);
+    }
+}
+
+/// A slider block: a rectangle centred at `c` along the unit direction `u`.
+pub fn slider(g: &mut Group, c: Point, u: Vec2, len: f64, wid: f64, pen: Pen) {
+    let n = u.turn_90();
+    let (hl, hw) = (u * (len / 2.0), n * (wid / 2.0));
+    g.path(vec![c - hl - hw, c + hl - hw, c + hl + hw, c - hl + hw], true, pen);
+}
+
+/// An arc arrow of radius `r` around `c` showing a turning sense (ω or ε) on paper:
+/// `ccw` is counter-clockwise as seen on the sheet.
+pub fn turn_arrow(g: &mut Group, c: Point, r: f64, start_deg: f64, sweep_deg: f64, ccw: bool, pen: Pen) {
+    let n = 24;
+    let sign = if ccw { -1.0 } else { 1.0 }; // paper y points down
+    let pts: Vec<Point> = (0..=n)
+        .map(|i| {
+            let a = (start_deg + sign * sweep_deg * i as f64 / n as f64).to_radians();
+            c + Vec2::new(a.cos(), a.sin()) * r
+        })
+        .collect();
+    let tip = pts[n];
+    let dir = pts[n] - pts[n - 1];
+    g.path(pts, false, pen);
+    arrowhead(g, tip, dir);
+}
