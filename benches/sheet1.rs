@@ -1,1 +1,46 @@
-fn main() {}
+//! Benchmarks (`cargo bench`): the exact solver over a full turn, sheet 1 to SVG, and
+//! SVG to PDF, on the guide's worked example (the six-bar vibrating conveyor).
+
+use std::f64::consts::TAU;
+use tmm_sheets::mechanics::State;
+use tmm_sheets::pipeline::{self, DEFAULT_PROJECT};
+
+fn main() {
+    divan::main();
+}
+
+/// 360 positions with velocities and accelerations, reusing one state buffer.
+#[divan::bench]
+fn solve_360_positions(bencher: divan::Bencher) {
+    let p = pipeline::load(DEFAULT_PROJECT).unwrap();
+    let mut s = State::default();
+    bencher.bench_local(|| {
+        let mut acc = 0.0;
+        for k in 0..360 {
+            p.mechanism.solve_into(TAU * k as f64 / 360.0, &mut s).unwrap();
+            acc += s.points[5].a.x;
+        }
+        divan::black_box(acc)
+    });
+}
+
+/// Everything sheet 1 needs, from the parsed project to the SVG text.
+#[divan::bench]
+fn sheet1_to_svg(bencher: divan::Bencher) {
+    let p = pipeline::load(DEFAULT_PROJECT).unwrap();
+    bencher.bench_local(|| divan::black_box(pipeline::sheet1(&p).unwrap().svg.len()));
+}
+
+#[divan::bench(sample_count = 10)]
+fn svg_to_pdf(bencher: divan::Bencher) {
+    let p = pipeline::load(DEFAULT_PROJECT).unwrap();
+    let r = pipeline::sheet1(&p).unwrap();
+    bencher.bench_local(|| divan::black_box(pipeline::pdf_and_png(&r.svg, &r.scene, None).unwrap().0.len()));
+}
+
+#[divan::bench(sample_count = 5)]
+fn svg_to_png_100dpi(bencher: divan::Bencher) {
+    let p = pipeline::load(DEFAULT_PROJECT).unwrap();
+    let r = pipeline::sheet1(&p).unwrap();
+    bencher.bench_local(|| divan::black_box(pipeline::pdf_and_png(&r.svg, &r.scene, Some(100.0)).unwrap().1.map(|x| x.len())));
+}

@@ -52,7 +52,7 @@ fn check_finite(m: &Mechanism, s: &State, phi: f64) -> Result<(), AnalysisError>
             return Err(AnalysisError::NotFinite { phi_deg: phi.to_degrees(), point: m.name(i).into() });
         }
     }
-    let links_ok = s.links.iter().all(|l| l.angle.is_finite() && l.omega.is_finite() && l.eps.is_finite());
+    let links_ok = s.links.iter().all(|l| l.dir.is_finite() && l.omega.is_finite() && l.eps.is_finite());
     if !links_ok {
         return Err(AnalysisError::NotFinite { phi_deg: phi.to_degrees(), point: "(link)".into() });
     }

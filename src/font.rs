@@ -56,3 +56,26 @@ pub fn metrics() -> &'static Metrics {
     static M: std::sync::OnceLock<Metrics> = std::sync::OnceLock::new();
     M.get_or_init(Metrics::load)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The cap height used for GOST lettering sizes is the height of the glyph 'H'.
+    #[test]
+    fn cap_height_is_that_of_h() {
+        let face = ttf_parser::Face::parse(BYTES, 0).unwrap();
+        let h = face.glyph_index('H').unwrap();
+        let bb = face.glyph_bounding_box(h).unwrap();
+        assert_eq!(f64::from(bb.y_max) / f64::from(face.units_per_em()), CAP_HEIGHT);
+        assert!((size_for_cap(5.0) - 6.86).abs() < 0.01, "STACK.md: 5 mm lettering is 6.86 mm font-size");
+    }
+
+    #[test]
+    fn the_font_is_the_vendored_one() {
+        let recorded = include_str!("../assets/fonts/DejaVuSansCondensed.ttf.sha256");
+        assert!(recorded.starts_with("2d8aa290adcf1ebcbb35f63e57cf32941b012eaab4b65096b904112cf3bac972"));
+        assert_eq!(BYTES.len(), 682_828);
+        assert!(metrics().covers("oʻgʻ Ўў Ҳҳ μ ω ε φ π √ − ² ⁿ ᵗ ᵏ ʳ ′"));
+    }
+}

@@ -65,7 +65,7 @@ fn position_out(m: &Mechanism, k: &Kinematics, p: &Position) -> PositionOut {
     });
     let links = m.links.iter().enumerate().map(|(i, l)| {
         let s = p.state.links[i];
-        (l.number.to_string(), LinkOut { angle: s.angle, omega: s.omega, epsilon: s.eps })
+        (l.number.to_string(), LinkOut { angle: s.angle(), omega: s.omega, epsilon: s.eps })
     });
     PositionOut {
         label: p.label.clone(),

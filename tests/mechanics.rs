@@ -28,7 +28,7 @@ fn closure_residual(m: &Mechanism, s: &State) -> f64 {
             }
             Step::Rpr { a, c, a3, links } => {
                 check((p(a3) - p(a)).hypot());
-                let e = Vec2::from_angle(s.links[links[1]].angle);
+                let e = s.links[links[1]].dir;
                 check((p(a) - p(c)).cross(e));
             }
             Step::Attach { point, from, distance, .. } => check((p(point) - p(from)).hypot() - distance.abs()),
@@ -79,7 +79,7 @@ fn velocities_and_accelerations_match_finite_differences() {
                 assert!((a_fd - s.points[i].a).hypot() <= 1e-6 * ascale, "{name} a of {} at θ={th}", m.name(i));
             }
             for l in 0..s.links.len() {
-                let w_fd = (sp.links[l].angle - sm.links[l].angle + TAU / 2.0).rem_euclid(TAU) - TAU / 2.0;
+                let w_fd = (sp.links[l].angle() - sm.links[l].angle() + TAU / 2.0).rem_euclid(TAU) - TAU / 2.0;
                 let w_fd = w_fd / (2.0 * dt);
                 let e_fd = (sp.links[l].omega - sm.links[l].omega) / (2.0 * dt);
                 let wscale = s.links.iter().map(|k| k.omega.abs()).fold(1e-3, f64::max);
@@ -105,7 +105,7 @@ fn velocity_and_acceleration_plans_close() {
                 let xy = s.points[r.x].p - s.points[r.y].p;
                 let v_rel = s.points[r.x].v - s.points[r.y].v;
                 if r.sliding {
-                    let e = Vec2::from_angle(s.links[r.link].angle);
+                    let e = s.links[r.link].dir;
                     assert!(v_rel.cross(e).abs() <= 1e-9 * scale, "{name}: sliding velocity along the kulisa");
                 } else {
                     assert!(v_rel.dot(xy).abs() <= 1e-9 * scale * xy.hypot(), "{name}: v_{} ⟂ link", r.name(m));

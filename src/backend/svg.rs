@@ -128,3 +128,23 @@ fn write_item(s: &mut String, item: &Item) {
         Item::Text(t) => writeln!(s, "{}", text_element(t).replacen("<text ", "<text fill=\"#000\" ", 1)),
     };
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_short_fixed_and_never_negative_zero() {
+        assert_eq!(num(0.30000000000000004), "0.3");
+        assert_eq!(num(-0.0), "0");
+        assert_eq!(num(-0.0001), "0");
+        assert_eq!(num(12.0), "12");
+        assert_eq!(num(8.4666666), "8.467");
+        assert_eq!(num(-3.1005), "-3.1"); // binary -3.1005 is just below the tie
+    }
+
+    #[test]
+    fn text_is_escaped() {
+        assert_eq!(escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+    }
+}

@@ -40,7 +40,7 @@ pub fn crank(pivot: &Kin, length: f64, theta: f64, omega: f64) -> (Kin, LinkKin)
         v: pivot.v + r.turn_90() * omega,
         a: pivot.a - r * (omega * omega),
     };
-    (pin, LinkKin { angle: theta, omega, eps: 0.0 })
+    (pin, LinkKin { dir: r / length, omega, eps: 0.0 })
 }
 
 /// Solves `x·e1 + y·e2 = rhs` by Cramer's rule; `det` is `e1 × e2`, already checked.
@@ -77,8 +77,8 @@ pub fn rrr(p: &Kin, q: &Kin, l_pb: f64, l_qb: f64, branch: f64) -> Result<DyadSo
     let point = Kin { p: b, v: p.v + r1.turn_90() * w1, a: p.a + r1.turn_90() * e1 - r1 * (w1 * w1) };
     Ok(DyadSolution {
         point,
-        link_first: LinkKin { angle: r1.atan2(), omega: w1, eps: e1 },
-        link_second: LinkKin { angle: r2.atan2(), omega: w2, eps: e2 },
+        link_first: LinkKin { dir: r1 / l_pb, omega: w1, eps: e1 },
+        link_second: LinkKin { dir: r2 / l_qb, omega: w2, eps: e2 },
     })
 }
 
@@ -105,8 +105,8 @@ pub fn rrp(p: &Kin, l: f64, through: Vec2, dir: Vec2, branch: f64) -> Result<Dya
     let point = Kin { p: d, v: dir * sd, a: dir * sdd };
     Ok(DyadSolution {
         point,
-        link_first: LinkKin { angle: r.atan2(), omega: w, eps },
-        link_second: LinkKin { angle: dir.atan2(), omega: 0.0, eps: 0.0 },
+        link_first: LinkKin { dir: r / l, omega: w, eps },
+        link_second: LinkKin { dir, omega: 0.0, eps: 0.0 },
     })
 }
 
@@ -135,5 +135,5 @@ pub fn rpr(a: &Kin, c: &Kin) -> Result<KulisaSolution, DyadFailure> {
     let eps = (da.dot(n) - 2.0 * d_dot * w) / d;
     let d_ddot = da.dot(e) + d * w * w;
     let a3 = Kin { p: a.p, v: c.v + n * (w * d), a: c.a + n * (eps * d) - e * (w * w * d) };
-    Ok(KulisaSolution { kulisa: LinkKin { angle: e.atan2(), omega: w, eps }, a3, slide: (d, d_dot, d_ddot) })
+    Ok(KulisaSolution { kulisa: LinkKin { dir: e, omega: w, eps }, a3, slide: (d, d_dot, d_ddot) })
 }

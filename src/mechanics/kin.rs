@@ -17,13 +17,21 @@ impl Kin {
     }
 }
 
-/// Angle of a link's reference direction, its angular velocity ω and acceleration ε
+/// A link's reference direction (a unit vector; the angle is computed on demand, which
+/// keeps `atan2` off the solver's hot path), its angular velocity ω and acceleration ε
 /// (counter-clockwise positive).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct LinkKin {
-    pub angle: f64,
+    pub dir: Vec2,
     pub omega: f64,
     pub eps: f64,
+}
+
+impl LinkKin {
+    /// Angle of the reference direction, radians in (−π, π].
+    pub fn angle(&self) -> f64 {
+        self.dir.atan2()
+    }
 }
 
 /// Motion of point `x` relative to point `y` of the same link: r = x − y.

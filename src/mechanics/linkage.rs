@@ -61,8 +61,9 @@ pub enum Step {
     /// point under the block. Links are `[block, kulisa]`.
     Rpr { a: PointId, c: PointId, a3: PointId, links: [LinkId; 2] },
     /// A point fixed to `link`: `distance` from `from` along the direction `from → toward`
-    /// turned by `angle` (counter-clockwise, radians).
-    Attach { point: PointId, link: LinkId, from: PointId, toward: PointId, distance: f64, angle: f64 },
+    /// turned by `angle` (counter-clockwise, radians). `span` is the fixed distance
+    /// from → toward when the link has one, which saves a square root per solve.
+    Attach { point: PointId, link: LinkId, from: PointId, toward: PointId, distance: f64, angle: f64, span: Option<f64> },
 }
 
 /// An Assur group as the note describes it: which step, which links.
@@ -75,6 +76,8 @@ pub struct Group {
     pub point: PointId,
     /// Its joints to the rest of the chain (for the structural formula and plans).
     pub inputs: Vec<PointId>,
+    /// Line of the project file that defines it (0 when unknown), for error messages.
+    pub line: u64,
 }
 
 /// The output coordinate whose extremes define position 0.
@@ -148,11 +151,9 @@ impl Mechanism {
     /// Like [`Mechanism::solve`], reusing the buffers of `s` (no allocation after the first call).
     pub fn solve_into(&self, theta: f64, s: &mut State) -> Result<(), StepFailure> {
         s.theta = theta;
-        s.points.clear();
+        // Every entry is overwritten by its step, so buffers are only resized, not cleared.
         s.points.resize(self.point_names.len(), Kin::default());
-        s.links.clear();
         s.links.resize(self.links.len(), LinkKin::default());
-        s.slides.clear();
         s.slides.resize(self.steps.len(), (0.0, 0.0, 0.0));
         for &(id, p) in &self.frame {
             s.points[id] = Kin::fixed(p);
@@ -189,14 +190,18 @@ impl Mechanism {
                 s.links[links[1]] = sol.kulisa;
                 s.slides[i] = sol.slide;
             }
-            Step::Attach { point, link, from, toward, distance, angle } => {
+            Step::Attach { point, link, from, toward, distance, angle, span } => {
                 let base = s.points[from];
                 if toward == from {
                     s.points[point] = base; // a point coinciding with a joint, e.g. a slider's centre of mass
                     return Ok(());
                 }
-                let dir = (s.points[toward].p - base.p).normalize().rotate(angle);
-                let r = dir * distance;
+                let d = s.points[toward].p - base.p;
+                let along = match span {
+                    Some(len) => d * (distance / len),
+                    None => d * (distance / d.hypot()),
+                };
+                let r = along.rotate(angle);
                 let lk = s.links[link];
                 s.points[point] = Kin {
                     p: base.p + r,
@@ -212,7 +217,7 @@ impl Mechanism {
     pub fn output_value(&self, s: &State) -> (f64, f64) {
         match self.output {
             Output::Slider { point, dir } => (s.points[point].p.dot(dir), s.points[point].v.dot(dir)),
-            Output::Rocker { link } => (s.links[link].angle, s.links[link].omega),
+            Output::Rocker { link } => (s.links[link].angle(), s.links[link].omega),
         }
     }
 }

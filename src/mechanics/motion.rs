@@ -53,7 +53,8 @@ pub fn describe_step(m: &Mechanism, step: usize) -> String {
         Some(g) => {
             let grp = &m.groups[g];
             let (a, b) = (m.links[grp.links[0]].number, m.links[grp.links[1]].number);
-            format!("Assur group {} ({}, links {a} and {b})", g + 1, grp.kind.code())
+            let at = if grp.line > 0 { format!(", line {}", grp.line) } else { String::new() };
+            format!("Assur group {} ({}, links {a} and {b}{at})", g + 1, grp.kind.code())
         }
         None => format!("step {}", step + 1),
     }

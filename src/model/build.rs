@@ -164,7 +164,7 @@ fn add_group(b: &mut Builder, g: &Spanned<GroupSpec>, field: &str) -> Result<Opt
             (DyadKind::Rpr, [l0, l1], a3, vec![a, c], Some((l1, r.length.map(|x| x.0))))
         }
     };
-    b.m.groups.push(Group { kind, step, links, point, inputs });
+    b.m.groups.push(Group { kind, step, links, point, inputs, line: loc.line() });
     Ok(kulisa)
 }
 
@@ -216,7 +216,8 @@ fn attach(b: &mut Builder, p: &PointSpec) -> Result<(), ModelError> {
     let point = b.new_point(&p.name, &format!("{field}.name"))?;
     b.m.links[link].points.push(point);
     let angle = p.angle_deg.map_or(0.0, |a| a.0.to_radians());
-    b.m.steps.push(Step::Attach { point, link, from, toward, distance, angle });
+    let span = if toward == from { None } else { link_span(b, from, toward) };
+    b.m.steps.push(Step::Attach { point, link, from, toward, distance, angle, span });
     if p.mass_centre {
         if b.m.mass_centres.iter().any(|&(l, _)| l == link) {
             return Err(invalid(at(&p.name), format!("{field}.mass_centre"), format!("link {} already has a centre of mass", p.link.value)));

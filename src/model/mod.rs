@@ -18,5 +18,8 @@ pub enum ModelError {
 
 /// Parses a project file from YAML text.
 pub fn parse(text: &str) -> Result<ProjectFile, ModelError> {
-    serde_saphyr::from_str(text).map_err(|e| ModelError::Yaml(e.to_string()))
+    serde_saphyr::from_str(text).map_err(|e| {
+        let msg = e.to_string();
+        ModelError::Yaml(msg.strip_prefix("error: ").unwrap_or(&msg).to_string())
+    })
 }

@@ -18,3 +18,17 @@ pub fn localise(s: &str, lang: Language) -> String {
         Language::Uz | Language::Ru => s.replace('.', ","),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimal_comma_and_significant_digits() {
+        assert_eq!(value(0.5254, Language::Uz), "0,525");
+        assert_eq!(value(18.149, Language::Ru), "18,15");
+        assert_eq!(value(18.149, Language::En), "18.15");
+        assert_eq!(value(-0.0001, Language::En), "0.000");
+        assert_eq!(value(1234.6, Language::En), "1235");
+    }
+}

@@ -46,3 +46,21 @@ impl Labels {
         self.entries.keys().map(String::as_str)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_label_exists_in_every_language() {
+        let l = Labels::new(Language::Uz);
+        assert!(l.keys().count() > 20);
+        for (k, e) in &l.entries {
+            for text in [&e.uz, &e.ru, &e.en] {
+                assert!(!text.trim().is_empty(), "label {k} is empty in some language");
+                assert!(crate::font::metrics().covers(text), "label {k}: a glyph is missing");
+            }
+            assert!(!e.uz.contains('\''), "label {k}: Uzbek oʻ/gʻ take U+02BB, not an apostrophe");
+        }
+    }
+}

@@ -116,7 +116,8 @@ impl MechanismView<'_> {
             let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
             let s: Vec<f64> = self.k.positions.iter().map(|p| (p.state.points[d].p - through).dot(dir)).collect();
             let (lo, hi) = s.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
-            let ext = (SLIDER.0 + 6.0) * self.view.mu;
+            // Past the slider's extreme positions by its half length and 4 mm (within MECH_PAD).
+            let ext = (SLIDER.0 / 2.0 + 4.0) * self.view.mu;
             let (a, b) = (through + dir * (lo - ext), through + dir * (hi + ext));
             g.line(self.view.p(a), self.view.p(b), AXIS);
             // Hatch on the side away from the rod, so it never crosses the links.
@@ -141,7 +142,7 @@ impl MechanismView<'_> {
                     slider(g, p(pts[0]), u, SLIDER.0, SLIDER.1, pen);
                 }
                 LinkKind::Block => {
-                    let u = self.view.dir(kurbo::Vec2::from_angle(st.links[li].angle));
+                    let u = self.view.dir(st.links[li].dir);
                     slider(g, p(pts[0]), u, BLOCK.0, BLOCK.1, pen);
                 }
                 _ => {
@@ -244,7 +245,7 @@ impl MechanismView<'_> {
                 _ => self.view.p((pts[0] + pts[1]) * 0.5),
             };
             let lk = st.links[li];
-            let along = self.view.dir(Vec2::from_angle(lk.angle));
+            let along = self.view.dir(lk.dir);
             let start = along.y.atan2(along.x).to_degrees() + 55.0;
             for (value, r, sym) in [(lk.omega, 4.5, "ω"), (lk.eps, 7.0, "ε")] {
                 if value.abs() < 1e-12 || (link.kind == LinkKind::Crank && sym == "ε") {

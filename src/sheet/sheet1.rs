@@ -53,7 +53,7 @@ const MECH_MIN_W: f64 = 200.0;
 /// Space around the mechanism drawing for its letters, pivots and guides.
 const MECH_PAD: f64 = 14.0;
 /// A region's title and scale lines.
-const HEADER: f64 = 16.0;
+const HEADER: f64 = 17.0;
 
 pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
     let lang = inp.info.language;
@@ -67,7 +67,7 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
     // Mechanism: the largest round μ_l that fits, then the region shrinks to the drawing.
     let world = world_extent(m, k, &inp.settings.kulisa_lengths);
     let (avail_w, avail_h) = (MECH_MAX_W - 2.0 * MECH_PAD, MECH_MAX_H - HEADER - 2.0 * MECH_PAD);
-    let mu_l = scale::round_up((world.width() / avail_w).max(world.height() / avail_h));
+    let mu_l = scale::length_scale((world.width() / avail_w).max(world.height() / avail_h));
     let draw_w = (world.width() / mu_l).max(MECH_MIN_W);
     let draw_h = world.height() / mu_l;
     let mech_region = Rect::new(inner.x0 + 5.0, TOP, inner.x0 + 5.0 + draw_w + 2.0 * MECH_PAD, TOP + HEADER + draw_h + 2.0 * MECH_PAD + 4.0);
@@ -94,7 +94,7 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
     let (w1, h1) = t1.size();
     let (w2, h2) = t2.size();
     let right_w = inner.x1 - 4.0 - right_x0;
-    let side_by_side = w1 + 8.0 + w2 <= right_w;
+    let side_by_side = 1.0 + w1 + 8.0 + w2 + 1.0 <= right_w;
     let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
     let notes_lines = notes_height(&l, inp.assumptions, right_w);
     let tables_top = frame::title_block_rect().y0 - 3.0 - notes_lines - tables_h - 4.0;
@@ -114,12 +114,13 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
     // Tables and notes.
     let tables_region = Rect::new(right_x0, tables_top, inner.x1 - 4.0, frame::title_block_rect().y0 - 3.0);
     let mut tables = Group::new("tables", tables_region);
-    let r1 = t1.draw(&mut tables, Point::new(tables_region.x0, tables_region.y0));
-    let at2 = if side_by_side { Point::new(r1.x1 + 8.0, tables_region.y0) } else { Point::new(tables_region.x0, r1.y1 + 6.0) };
+    let r1 = t1.draw(&mut tables, Point::new(tables_region.x0 + 1.0, tables_region.y0));
+    let at2 = if side_by_side { Point::new(r1.x1 + 8.0, tables_region.y0) } else { Point::new(tables_region.x0 + 1.0, r1.y1 + 6.0) };
     let r2 = t2.draw(&mut tables, at2);
     let notes_top = r1.y1.max(r2.y1) + 4.0;
     notes(&mut tables, &l, inp.assumptions, Rect::new(tables_region.x0, notes_top, tables_region.x1, tables_region.y1));
 
+    let organisation = [inp.info.institution.as_str(), inp.info.group.as_str()].iter().filter(|s| !s.is_empty()).copied().collect::<Vec<_>>().join(", ");
     let mut tb = Group::new("title-block", frame::title_block_rect());
     frame::title_block(&mut tb, &l, &TitleBlock {
         designation: &inp.info.designation,
@@ -127,8 +128,8 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
         project_title: &inp.info.title,
         student: &inp.info.student,
         supervisor: &inp.info.supervisor,
-        organisation: &inp.info.institution,
-        scale: "",
+        organisation: &organisation,
+        scale: &scale::ratio(mu_l),
         sheet_no: 1,
     });
     groups.extend([fr, mech, vel, acc, tables, tb]);
@@ -138,12 +139,12 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
 
 /// A region's title (5 mm) and its line of scale and formula (3.5 mm).
 fn region_header(g: &mut Group, placer: &mut Placer, r: Rect, title: &str, lines: &[LabelText]) {
-    let t = Text::new(Point::new(r.x0 + 2.0, r.y0 + 5.0), title, 5.0, Anchor::Start);
+    let t = Text::new(Point::new(r.x0 + 2.0, r.y0 + 6.0), title, 5.0, Anchor::Start);
     placer.block(t.bbox());
     g.text(t);
     let mut x = r.x0 + 2.0;
     for line in lines {
-        let bb = line.draw(g, Point::new(x, r.y0 + 11.5), 3.5, Anchor::Start);
+        let bb = line.draw(g, Point::new(x, r.y0 + 12.5), 3.5, Anchor::Start);
         placer.block(bb);
         x = bb.x1 + 8.0;
     }

@@ -31,7 +31,7 @@ impl Table {
     pub fn draw(&self, g: &mut Group, at: Point) -> Rect {
         let (outer_w, h) = self.size();
         let w = self.grid_width();
-        g.text(Text::new(Point::new(at.x, at.y + 3.5), self.title.clone(), 3.5, Anchor::Start));
+        g.text(Text::new(Point::new(at.x, at.y + 4.0), self.title.clone(), 3.5, Anchor::Start));
         let top = at.y + 7.0;
         let n_rows = self.rows.len() + 1;
         let bottom = top + ROW_H * n_rows as f64;

@@ -1,0 +1,161 @@
+//! Every kind of bad input gets an error that names the input and the reason — with line
+//! and column for the project file — and never a panic or a NaN.
+
+mod common;
+
+use common::root;
+use tmm_sheets::pipeline;
+
+fn example() -> String {
+    std::fs::read_to_string(root().join("fixtures/worked-example.yaml")).unwrap()
+}
+
+/// Builds sheet 1 of the example with `from` replaced by `to`; returns the error text.
+fn error_of(from: &str, to: &str) -> String {
+    let text = example();
+    assert!(text.contains(from), "the test's pattern {from:?} is not in the example");
+    let text = text.replacen(from, to, 1);
+    let result = pipeline::load(&text).and_then(|p| pipeline::sheet1(&p).map(|_| ()));
+    format!("{:#}", anyhow::Error::from(result.expect_err("the input must be refused")))
+}
+
+fn line_of(pattern: &str) -> usize {
+    example().lines().position(|l| l.contains(pattern)).unwrap() + 1
+}
+
+#[test]
+fn misspelt_key_names_line_column_and_the_expected_keys() {
+    let e = error_of("rpm: 70", "rmp: 70");
+    assert!(e.contains(&format!("line {} column", line_of("rpm: 70"))), "{e}");
+    assert!(e.contains("unknown field `rmp`") && e.contains("rpm"), "{e}");
+}
+
+#[test]
+fn missing_value_is_named() {
+    let e = error_of("rpm: 70, ", "");
+    assert!(e.contains("missing field `rpm`") && e.contains(&format!("line {}", line_of("rpm: 70"))), "{e}");
+}
+
+#[test]
+fn negative_zero_and_nan_lengths_are_refused_where_written() {
+    for bad in ["-0.12", "0", ".nan", ".inf"] {
+        let e = error_of("length: 0.12,", &format!("length: {bad},"));
+        assert!(e.contains("expected a positive number"), "{bad}: {e}");
+        assert!(e.contains(&format!("line {} column 37", line_of("rpm: 70"))), "{bad}: {e}");
+    }
+}
+
+#[test]
+fn text_where_a_number_belongs() {
+    let e = error_of("length: 0.12,", "length: abc,");
+    assert!(e.contains("invalid floating point") && e.contains("line"), "{e}");
+}
+
+#[test]
+fn unknown_enumeration_value_lists_the_choices() {
+    let e = error_of("branch: left", "branch: up");
+    assert!(e.contains("unknown variant `up`") && e.contains("left, right"), "{e}");
+}
+
+#[test]
+fn reference_to_an_unknown_point_names_it_and_its_place() {
+    let e = error_of("joints: [A, C]", "joints: [A, Q]");
+    assert!(e.contains("unknown point 'Q'") && e.contains("mechanism.groups[0].rrr.joints[1]"), "{e}");
+    assert!(e.contains(&format!("line {}, column", line_of("joints: [A, C]"))), "{e}");
+}
+
+#[test]
+fn point_defined_twice() {
+    let e = error_of("point: D,", "point: B,");
+    assert!(e.contains("point 'B' is defined twice"), "{e}");
+}
+
+#[test]
+fn link_used_twice_and_link_zero() {
+    assert!(error_of("links: [4, 5]", "links: [3, 5]").contains("link 3 is used twice"));
+    assert!(error_of("links: [4, 5]", "links: [0, 5]").contains("link 0 is the frame"));
+}
+
+#[test]
+fn crank_about_a_moving_point() {
+    let text = example().replacen("pivot: O, pin: A", "pivot: A, pin: A1", 1);
+    let e = pipeline::load(&text).err().map(|e| format!("{:#}", anyhow::Error::from(e))).unwrap();
+    assert!(e.contains("unknown point 'A'"), "{e}");
+}
+
+#[test]
+fn mechanism_that_cannot_be_assembled_names_group_angles_and_lengths() {
+    let e = error_of("lengths: [0.46, 0.39]", "lengths: [0.16, 0.19]");
+    assert!(e.contains("Assur group 1 (RRR, links 2 and 3"), "{e}");
+    assert!(e.contains(&format!("line {}", line_of("lengths: [0.46, 0.39]"))), "{e}");
+    assert!(e.contains("cannot be assembled for crank angles"), "{e}");
+    assert!(e.contains("the links reach only 0.0300…0.3500 m"), "{e}");
+}
+
+#[test]
+fn rod_too_short_for_its_guide() {
+    let e = error_of("through: [0.0, 0.06]", "through: [0.0, -2.0]");
+    assert!(e.contains("Assur group 2 (RRP, links 4 and 5") && e.contains("cannot be assembled"), "{e}");
+}
+
+#[test]
+fn wrong_number_of_positions_and_bad_plan_positions() {
+    assert!(error_of("positions: 8", "positions: 10").contains("8 or 12 crank positions, not 10"));
+    let e = error_of("acceleration_plans: [1, 3, 5, 7]", "acceleration_plans: [1, 3, 9]");
+    assert!(e.contains("position 9 does not exist: positions are 0…7"), "{e}");
+    let e = error_of("acceleration_plans: [1, 3, 5, 7]", "acceleration_plans: [1, 1]");
+    assert!(e.contains("listed twice"), "{e}");
+    let e = error_of("acceleration_plans: [1, 3, 5, 7]", "acceleration_plans: [0, 1, 2, 3, 4, 5, 6]");
+    assert!(e.contains("1 to 6 positions"), "{e}");
+}
+
+#[test]
+fn assigned_angle_outside_a_turn() {
+    let e = error_of("assigned_deg: 45", "assigned_deg: 400");
+    assert!(e.contains("φ1 must lie in 0…360°, got 400°"), "{e}");
+}
+
+#[test]
+fn attached_point_errors() {
+    let e = error_of("{name: S2, link: 2, from: A, toward: B, ratio: 0.5,", "{name: S2, link: 2, from: A, toward: B, ratio: 0.5, distance: 0.1,");
+    assert!(e.contains("exactly one of `ratio` and `distance`"), "{e}");
+    let e = error_of("{name: S2, link: 2, from: A,", "{name: S2, link: 9, from: A,");
+    assert!(e.contains("link 9 is not formed"), "{e}");
+    let e = error_of("{name: S3, link: 3, from: C,", "{name: S3, link: 3, from: A,");
+    assert!(e.contains("point 'A' is not on link 3"), "{e}");
+}
+
+#[test]
+fn output_point_must_be_a_slider() {
+    let text = example().replacen("  points:\n", "  output_point: B\n  points:\n", 1);
+    let e = pipeline::load(&text).err().map(|e| format!("{:#}", anyhow::Error::from(e))).unwrap();
+    assert!(e.contains("'B' is not a slider point"), "{e}");
+}
+
+#[test]
+fn broken_yaml() {
+    let e = pipeline::load("project: [\n").err().map(|e| format!("{:#}", anyhow::Error::from(e))).unwrap();
+    assert!(e.contains("line 1 column 10"), "{e}");
+    let e = pipeline::load("").err().map(|e| format!("{:#}", anyhow::Error::from(e))).unwrap();
+    assert!(!e.is_empty());
+}
+
+/// A kulisa whose crank circle passes through the kulisa's pivot: the block would slide
+/// over the pivot, where the kulisa's angle is undefined.
+#[test]
+fn kulisa_block_through_its_pivot_is_an_error_not_nan() {
+    let text = std::fs::read_to_string(root().join("fixtures/kulisa.yaml")).unwrap().replace("at: [0, -0.8]", "at: [0, -0.4]");
+    let e = pipeline::load(&text).and_then(|p| pipeline::sheet1(&p).map(|_| ())).err().map(|e| format!("{:#}", anyhow::Error::from(e)));
+    let e = e.expect("refused");
+    assert!(e.contains("Assur group 1 (RPR") && (e.contains("kulisa pivot") || e.contains("dead point")), "{e}");
+}
+
+/// A four-bar whose links can all fall into one line (s + l = p + q) passes a change
+/// point where its velocities are unbounded: an explicit error, never NaN.
+#[test]
+fn change_point_four_bar_is_reported() {
+    let text = std::fs::read_to_string(root().join("fixtures/four-bar.yaml")).unwrap().replace("lengths: [0.18, 0.15]", "lengths: [0.20, 0.05]");
+    let e = pipeline::load(&text).and_then(|p| pipeline::sheet1(&p).map(|_| ())).err().map(|e| format!("{:#}", anyhow::Error::from(e)));
+    let e = e.expect("refused");
+    assert!(e.contains("Assur group 1 (RRR, links 2 and 3, line 12) passes through a dead point"), "{e}");
+}

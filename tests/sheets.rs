@@ -1,0 +1,186 @@
+//! Sheet 1 as a user gets it: deterministic bytes, a valid SVG that parses back with
+//! every text, nothing outside its region or overlapping, three languages, an A1 PDF,
+//! and the committed reference sheets of the worked example.
+
+mod common;
+
+use common::{fixture, fixture_names, root};
+use kurbo::Rect;
+use std::path::Path;
+use tmm_sheets::backend::raster;
+use tmm_sheets::model::Language;
+use tmm_sheets::pipeline::{self, Project};
+use tmm_sheets::report;
+use tmm_sheets::sheet::frame;
+use tmm_sheets::sheet::scene::{Item, Scene};
+
+fn build(p: &Project) -> pipeline::Sheet1Result {
+    pipeline::sheet1(p).unwrap()
+}
+
+#[test]
+fn the_same_input_gives_byte_identical_svg_and_pdf() {
+    let p = fixture("worked-example");
+    let (a, b) = (build(&p), build(&p));
+    assert_eq!(a.svg, b.svg);
+    let (pa, _) = pipeline::pdf_and_png(&a.svg, &a.scene, None).unwrap();
+    let (pb, _) = pipeline::pdf_and_png(&b.svg, &b.scene, None).unwrap();
+    assert!(pa == pb, "PDF bytes differ between two runs");
+}
+
+fn count_usvg(group: &usvg::Group, paths: &mut usize, texts: &mut usize) {
+    for node in group.children() {
+        match node {
+            usvg::Node::Group(g) => count_usvg(g, paths, texts),
+            usvg::Node::Path(_) => *paths += 1,
+            usvg::Node::Text(_) => *texts += 1,
+            usvg::Node::Image(_) => {}
+        }
+    }
+}
+
+#[test]
+fn svg_parses_back_with_every_path_and_text_and_no_nan() {
+    for name in fixture_names() {
+        let r = build(&fixture(&name));
+        assert!(!r.svg.contains("NaN") && !r.svg.contains("inf"), "{name}: non-finite number in the SVG");
+        let tree = raster::parse(&r.svg).unwrap();
+        let (mut paths, mut texts) = (0, 0);
+        count_usvg(tree.root(), &mut paths, &mut texts);
+        let items = r.scene.groups.iter().flat_map(|g| &g.items);
+        let want_texts = items.clone().filter(|i| matches!(i, Item::Text(_))).count();
+        let want_paths = items.filter(|i| !matches!(i, Item::Text(_))).count() + 1; // + the white page
+        assert_eq!(texts, want_texts, "{name}: usvg dropped text (font not found?)");
+        assert_eq!(paths, want_paths, "{name}: path count");
+    }
+}
+
+fn inside(outer: Rect, r: Rect) -> bool {
+    frame::is_inside(outer, r)
+}
+
+/// Every group stays in its region, regions stay inside the frame and apart, and no two
+/// texts overlap anywhere on the sheet.
+fn check_layout(name: &str, scene: &Scene) {
+    let inner = frame::inner();
+    let tb = frame::title_block_rect();
+    for g in &scene.groups {
+        for item in &g.items {
+            // A border stroke centred on the region's edge counts as inside.
+            let half_main = 0.36;
+            assert!(inside(g.region.inflate(half_main, half_main), item.bbox()), "{name}: an item of '{}' leaves its region: {:?} not in {:?}: {item:?}", g.id, item.bbox(), g.region);
+        }
+        if g.id != "frame" {
+            assert!(inside(inner, g.region), "{name}: region '{}' leaves the frame", g.id);
+        }
+    }
+    let regions: Vec<_> = scene.groups.iter().filter(|g| g.id != "frame").collect();
+    for (i, a) in regions.iter().enumerate() {
+        for b in &regions[i + 1..] {
+            assert!(a.region.intersect(b.region).area() <= 1e-9, "{name}: regions '{}' and '{}' overlap", a.id, b.id);
+        }
+        if a.id != "title-block" {
+            assert!(a.region.intersect(tb).area() <= 1e-9, "{name}: '{}' covers the title block", a.id);
+        }
+    }
+    let texts: Vec<_> = scene.texts().collect();
+    for (i, a) in texts.iter().enumerate() {
+        for b in &texts[i + 1..] {
+            let overlap = a.core_box().intersect(b.core_box()).area();
+            assert!(overlap <= 1e-6, "{name}: texts {:?} and {:?} overlap", a.text, b.text);
+        }
+    }
+}
+
+#[test]
+fn nothing_leaves_its_region_or_overlaps_on_any_fixture() {
+    for name in fixture_names() {
+        check_layout(&name, &build(&fixture(&name)).scene);
+    }
+}
+
+#[test]
+fn every_language_renders_with_full_glyph_coverage() {
+    let metrics = tmm_sheets::font::metrics();
+    for (lang, probe) in [(Language::Uz, "Tezliklar rejalari"), (Language::Ru, "Планы скоростей"), (Language::En, "Velocity plans")] {
+        let mut p = fixture("worked-example");
+        p.file.project.language = lang;
+        let r = build(&p);
+        assert!(r.svg.contains(probe), "{lang:?}: missing {probe}");
+        for t in r.scene.texts() {
+            assert!(metrics.covers(&t.text), "{lang:?}: no glyph for some character of {:?}", t.text);
+        }
+        check_layout(&format!("{lang:?}"), &r.scene);
+    }
+}
+
+#[test]
+fn pdf_is_one_a1_page_with_embedded_text() {
+    let r = build(&fixture("worked-example"));
+    let (pdf, png) = pipeline::pdf_and_png(&r.svg, &r.scene, Some(20.0)).unwrap();
+    assert!(pdf.starts_with(b"%PDF-"));
+    let text = String::from_utf8_lossy(&pdf);
+    let mb = text.find("/MediaBox").expect("a media box");
+    let nums: Vec<f64> = text[mb + 9..].trim_start().trim_start_matches('[').split(']').next().unwrap().split_whitespace().map(|x| x.parse().unwrap()).collect();
+    let mm = |pt: f64| pt * 25.4 / 72.0;
+    assert!((mm(nums[2] - nums[0]) - 841.0).abs() < 0.01 && (mm(nums[3] - nums[1]) - 594.0).abs() < 0.01, "MediaBox {nums:?}");
+    assert!(text.contains("/Count 1"), "exactly one page");
+    assert!(text.contains("/FontFile2") || text.contains("/FontFile3"), "the font is embedded");
+    let png = png.unwrap();
+    assert!(png.starts_with(b"\x89PNG"));
+}
+
+fn reference_dir() -> std::path::PathBuf {
+    root().join("sheets/worked-example")
+}
+
+/// Writes expected | actual | difference images for a failed comparison.
+fn write_failure_images(name: &str, expected: &str, actual: &str) -> String {
+    let dir = root().join("tests/failures");
+    let _ = std::fs::create_dir_all(&dir);
+    let render = |svg: &str| {
+        let tree = raster::parse(svg).ok()?;
+        raster::png(&tree, 841.0, 594.0, 30.0).ok()
+    };
+    let (e, a) = (render(expected), render(actual));
+    if let (Some(e), Some(a)) = (&e, &a) {
+        let _ = std::fs::write(dir.join(format!("{name}-expected.png")), e);
+        let _ = std::fs::write(dir.join(format!("{name}-actual.png")), a);
+    }
+    let differing = match (e, a) {
+        (Some(e), Some(a)) => e.iter().zip(&a).filter(|(x, y)| x != y).count() + e.len().abs_diff(a.len()),
+        _ => usize::MAX,
+    };
+    format!("expected and actual previews written to {} ({differing} PNG bytes differ)", dir.display())
+}
+
+fn compare_or_update(file: &str, actual: &str) {
+    let path = reference_dir().join(file);
+    if std::env::var_os("UPDATE").is_some() {
+        std::fs::create_dir_all(reference_dir()).unwrap();
+        std::fs::write(&path, actual).unwrap();
+        return;
+    }
+    let expected = std::fs::read_to_string(&path).unwrap_or_else(|_| panic!("missing reference {}: run UPDATE=1 cargo test --test sheets", path.display()));
+    if expected != actual {
+        let note = if file.ends_with(".svg") { write_failure_images(file, &expected, actual) } else { String::new() };
+        panic!("{} differs from the reference; if the change is intended run UPDATE=1 cargo test --test sheets. {note}", path.display());
+    }
+}
+
+#[test]
+fn worked_example_matches_the_reference_sheets() {
+    let p = fixture("worked-example");
+    let r = build(&p);
+    compare_or_update("sheet1.svg", &r.svg);
+    compare_or_update("sheet1-velocities.csv", &report::csv(&r.tables.0));
+    compare_or_update("sheet1-accelerations.csv", &report::csv(&r.tables.1));
+    let json = tmm_sheets::results::json(&p.file.project.title, &p.mechanism, &r.kinematics, &r.scales);
+    compare_or_update("results.json", &json);
+    if std::env::var_os("UPDATE").is_some() {
+        let (pdf, png) = pipeline::pdf_and_png(&r.svg, &r.scene, Some(60.0)).unwrap();
+        std::fs::write(reference_dir().join("sheet1.pdf"), pdf).unwrap();
+        std::fs::write(reference_dir().join("sheet1.png"), png.unwrap()).unwrap();
+    }
+    assert!(Path::new(&reference_dir().join("sheet1.pdf")).exists());
+}
