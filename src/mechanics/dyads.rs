@@ -43,9 +43,10 @@ pub fn crank(pivot: &Kin, length: f64, theta: f64, omega: f64) -> (Kin, LinkKin)
     (pin, LinkKin { dir: r / length, omega, eps: 0.0 })
 }
 
-/// Solves `x·e1 + y·e2 = rhs` by Cramer's rule; `det` is `e1 × e2`, already checked.
-fn solve2(e1: Vec2, e2: Vec2, rhs: Vec2, det: f64) -> (f64, f64) {
-    (rhs.cross(e2) / det, e1.cross(rhs) / det)
+/// Solves `x·e1 + y·e2 = rhs` by Cramer's rule; `inv_det` is `1 / (e1 × e2)`, already
+/// checked to be finite.
+fn solve2(e1: Vec2, e2: Vec2, rhs: Vec2, inv_det: f64) -> (f64, f64) {
+    (rhs.cross(e2) * inv_det, e1.cross(rhs) * inv_det)
 }
 
 /// RRR dyad: point B joined to known P by a link of length `l_pb` and to known Q by
@@ -53,7 +54,7 @@ fn solve2(e1: Vec2, e2: Vec2, rhs: Vec2, det: f64) -> (f64, f64) {
 /// line P→Q, −1 to the right. Links are returned as (P–B, Q–B) with angles of P→B and Q→B.
 pub fn rrr(p: &Kin, q: &Kin, l_pb: f64, l_qb: f64, branch: f64) -> Result<DyadSolution, DyadFailure> {
     let pq = q.p - p.p;
-    let d = pq.hypot();
+    let d = pq.hypot2().sqrt(); // lengths are metres: no overflow risk, and libm hypot is slow
     let (lo, hi) = ((l_pb - l_qb).abs(), l_pb + l_qb);
     if !(d > 0.0) || d > hi || d < lo {
         return Err(DyadFailure::NoIntersection { distance: d, reach_min: lo, reach_max: hi });
@@ -63,17 +64,17 @@ pub fn rrr(p: &Kin, q: &Kin, l_pb: f64, l_qb: f64, branch: f64) -> Result<DyadSo
     let h = (l_pb * l_pb - along * along).max(0.0).sqrt();
     let b = p.p + e * along + e.turn_90() * (branch * h);
     let (r1, r2) = (b - p.p, b - q.p);
-    let det = -r1.cross(r2); // determinant of [perp r1, −perp r2]
-    let sin_mu = r1.cross(r2) / (l_pb * l_qb);
-    if sin_mu.abs() < SINGULAR_SIN {
+    let cross = r1.cross(r2); // l_pb·l_qb·sin(transmission angle)
+    if cross.abs() < SINGULAR_SIN * l_pb * l_qb {
+        let sin_mu = cross / (l_pb * l_qb);
         return Err(DyadFailure::DeadPoint { transmission_deg: sin_mu.asin().to_degrees() });
     }
+    let inv_det = -1.0 / cross; // reciprocal of the determinant of [perp r1, −perp r2]
     // v_P + ω1·perp(r1) = v_Q + ω2·perp(r2)
-    let (w1, w2n) = solve2(r1.turn_90(), -r2.turn_90(), q.v - p.v, det);
-    let w2 = w2n;
+    let (w1, w2) = solve2(r1.turn_90(), -r2.turn_90(), q.v - p.v, inv_det);
     // a_P + ε1·perp(r1) − ω1²·r1 = a_Q + ε2·perp(r2) − ω2²·r2
     let rhs = (q.a - r2 * (w2 * w2)) - (p.a - r1 * (w1 * w1));
-    let (e1, e2) = solve2(r1.turn_90(), -r2.turn_90(), rhs, det);
+    let (e1, e2) = solve2(r1.turn_90(), -r2.turn_90(), rhs, inv_det);
     let point = Kin { p: b, v: p.v + r1.turn_90() * w1, a: p.a + r1.turn_90() * e1 - r1 * (w1 * w1) };
     Ok(DyadSolution {
         point,
@@ -94,14 +95,14 @@ pub fn rrp(p: &Kin, l: f64, through: Vec2, dir: Vec2, branch: f64) -> Result<Dya
     let s = w.dot(dir) + branch * (l * l - h * h).sqrt();
     let d = through + dir * s;
     let r = d - p.p;
-    let det = -dir.cross(r.turn_90()); // [u, −perp r]
-    let sin_mu = r.dot(dir) / l; // transmission: rod perpendicular to guide is the dead point
-    if sin_mu.abs() < SINGULAR_SIN {
-        return Err(DyadFailure::DeadPoint { transmission_deg: sin_mu.asin().to_degrees() });
+    let along = r.dot(dir); // l·sin(transmission): a rod perpendicular to its guide is the dead point
+    if along.abs() < SINGULAR_SIN * l {
+        return Err(DyadFailure::DeadPoint { transmission_deg: (along / l).asin().to_degrees() });
     }
+    let inv_det = -1.0 / along; // reciprocal of the determinant of [u, −perp r] = −u·r
     // ṡ·u − ω·perp(r) = v_P ;  s̈·u − ε·perp(r) = a_P − ω²·r
-    let (sd, w) = solve2(dir, -r.turn_90(), p.v, det);
-    let (sdd, eps) = solve2(dir, -r.turn_90(), p.a - r * (w * w), det);
+    let (sd, w) = solve2(dir, -r.turn_90(), p.v, inv_det);
+    let (sdd, eps) = solve2(dir, -r.turn_90(), p.a - r * (w * w), inv_det);
     let point = Kin { p: d, v: dir * sd, a: dir * sdd };
     Ok(DyadSolution {
         point,
@@ -123,7 +124,7 @@ pub struct KulisaSolution {
 
 pub fn rpr(a: &Kin, c: &Kin) -> Result<KulisaSolution, DyadFailure> {
     let ca = a.p - c.p;
-    let d = ca.hypot();
+    let d = ca.hypot2().sqrt();
     if d < 1e-9 {
         return Err(DyadFailure::BlockAtPivot { distance: d });
     }

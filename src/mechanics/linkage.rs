@@ -61,9 +61,9 @@ pub enum Step {
     /// point under the block. Links are `[block, kulisa]`.
     Rpr { a: PointId, c: PointId, a3: PointId, links: [LinkId; 2] },
     /// A point fixed to `link`: `distance` from `from` along the direction `from → toward`
-    /// turned by `angle` (counter-clockwise, radians). `span` is the fixed distance
-    /// from → toward when the link has one, which saves a square root per solve.
-    Attach { point: PointId, link: LinkId, from: PointId, toward: PointId, distance: f64, angle: f64, span: Option<f64> },
+    /// turned by `angle` (counter-clockwise, radians). `ratio` is distance / |from → toward|
+    /// when the link fixes that distance, which saves a square root per solve.
+    Attach { point: PointId, link: LinkId, from: PointId, toward: PointId, distance: f64, angle: f64, ratio: Option<f64> },
 }
 
 /// An Assur group as the note describes it: which step, which links.
@@ -190,16 +190,16 @@ impl Mechanism {
                 s.links[links[1]] = sol.kulisa;
                 s.slides[i] = sol.slide;
             }
-            Step::Attach { point, link, from, toward, distance, angle, span } => {
+            Step::Attach { point, link, from, toward, distance, angle, ratio } => {
                 let base = s.points[from];
                 if toward == from {
                     s.points[point] = base; // a point coinciding with a joint, e.g. a slider's centre of mass
                     return Ok(());
                 }
                 let d = s.points[toward].p - base.p;
-                let along = match span {
-                    Some(len) => d * (distance / len),
-                    None => d * (distance / d.hypot()),
+                let along = match ratio {
+                    Some(k) => d * k,
+                    None => d * (distance / d.hypot2().sqrt()),
                 };
                 let r = along.rotate(angle);
                 let lk = s.links[link];

@@ -216,8 +216,8 @@ fn attach(b: &mut Builder, p: &PointSpec) -> Result<(), ModelError> {
     let point = b.new_point(&p.name, &format!("{field}.name"))?;
     b.m.links[link].points.push(point);
     let angle = p.angle_deg.map_or(0.0, |a| a.0.to_radians());
-    let span = if toward == from { None } else { link_span(b, from, toward) };
-    b.m.steps.push(Step::Attach { point, link, from, toward, distance, angle, span });
+    let ratio = if toward == from { None } else { link_span(b, from, toward).map(|span| distance / span) };
+    b.m.steps.push(Step::Attach { point, link, from, toward, distance, angle, ratio });
     if p.mass_centre {
         if b.m.mass_centres.iter().any(|&(l, _)| l == link) {
             return Err(invalid(at(&p.name), format!("{field}.mass_centre"), format!("link {} already has a centre of mass", p.link.value)));
