@@ -159,3 +159,25 @@ fn change_point_four_bar_is_reported() {
     let e = e.expect("refused");
     assert!(e.contains("Assur group 1 (RRR, links 2 and 3, line 12) passes through a dead point"), "{e}");
 }
+
+/// Approaching the change point (rocker 0.05 m, where s + l = p + q) from the Grashof side:
+/// every sheet is finite, or the refusal says why; never a panic or NaN.
+#[test]
+fn near_singular_four_bars_are_finite_or_refused() {
+    let base = std::fs::read_to_string(root().join("fixtures/four-bar.yaml")).unwrap();
+    for delta in [1e-2, 1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 0.0] {
+        let text = base.replace("lengths: [0.18, 0.15]", &format!("lengths: [0.20, {:.15}]", 0.05 + delta));
+        match pipeline::load(&text).and_then(|p| pipeline::sheet1(&p)) {
+            Ok(r) => {
+                assert!(!r.svg.contains("NaN") && !r.svg.contains("inf"), "δ = {delta}");
+                for p in &r.kinematics.positions {
+                    assert!(p.state.points.iter().all(|k| k.v.is_finite() && k.a.is_finite()), "δ = {delta}");
+                }
+            }
+            Err(e) => {
+                let e = format!("{:#}", anyhow::Error::from(e));
+                assert!(e.contains("dead point") || e.contains("cannot be assembled") || e.contains("not finite"), "δ = {delta}: {e}");
+            }
+        }
+    }
+}

@@ -174,3 +174,30 @@ fn full_turns_through_dead_centres_stay_finite() {
         }
     }
 }
+
+/// A rocker swinging across the negative x axis (where atan2 wraps from +180° to −180°)
+/// still gets the right minimum and maximum.
+#[test]
+fn rocker_extremes_do_not_depend_on_where_angles_wrap() {
+    let text = std::fs::read_to_string(common::root().join("fixtures/four-bar.yaml")).unwrap();
+    let original = tmm_sheets::pipeline::load(&text).unwrap().mechanism;
+    let link = original.link_by_number(3).unwrap();
+    let mean = (0..72).fold(Vec2::ZERO, |acc, k| acc + original.solve(TAU * k as f64 / 72.0).unwrap().links[link].dir);
+    // Turn the frame about O so that the swing is centred on 180°.
+    let rot = std::f64::consts::PI - mean.atan2();
+    let o1 = Vec2::new(0.20 * rot.cos(), 0.20 * rot.sin());
+    let text = text.replace("at: [0.20, 0]", &format!("at: [{:.15}, {:.15}]", o1.x, o1.y));
+    for start in ["min", "max"] {
+        let p = tmm_sheets::pipeline::load(&text.replace("positions: 12", &format!("positions: 12\n  start: {start}"))).unwrap();
+        let m = &p.mechanism;
+        let angles: Vec<f64> = (0..72).map(|k| m.solve(TAU * k as f64 / 72.0).unwrap().links[link].angle()).collect();
+        assert!(angles.iter().any(|&a| a > 3.0) && angles.iter().any(|&a| a < -3.0), "the swing crosses ±180°");
+        let motion = analyse_motion(m, p.settings.sense, p.settings.start).unwrap();
+        let angle_at = |th: f64| m.solve(th).unwrap().links[link].angle().rem_euclid(TAU); // continuous across −x
+        let a0 = angle_at(motion.theta0);
+        for d in [-0.05, 0.05] {
+            let a = angle_at(motion.theta0 + d);
+            if start == "min" { assert!(a >= a0, "{start}: {a} < {a0}") } else { assert!(a <= a0, "{start}: {a} > {a0}") }
+        }
+    }
+}

@@ -86,7 +86,8 @@ pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion,
             Err(f) => return Err(assembly_error(m, f, phi, sense, |p| m.solve(theta_of(p)).is_ok())),
         }
     }
-    let roots = output_extremes(m, &states, &|p| m.solve(theta_of(p)));
+    let reference = swing_reference(m, &states);
+    let roots = output_extremes(m, &states, reference, &|p| m.solve(theta_of(p)));
     let other_of = |theta0: f64| {
         roots
             .iter()
@@ -116,13 +117,38 @@ pub fn output_name(m: &Mechanism) -> String {
     }
 }
 
+/// For a rocker output: the mean direction of its swing, from which its angle is measured
+/// so that min and max do not depend on where atan2 wraps (±180°).
+fn swing_reference(m: &Mechanism, states: &[(f64, State)]) -> kurbo::Vec2 {
+    match m.output {
+        super::linkage::Output::Rocker { link } => {
+            let sum = states.iter().fold(kurbo::Vec2::ZERO, |acc, (_, s)| acc + s.links[link].dir);
+            if sum.hypot() > 1e-9 { sum.normalize() } else { kurbo::Vec2::new(1.0, 0.0) }
+        }
+        super::linkage::Output::Slider { .. } => kurbo::Vec2::new(1.0, 0.0),
+    }
+}
+
+/// The output coordinate: the slider's displacement, or the rocker's angle from `reference`.
+fn output_coordinate(m: &Mechanism, s: &State, reference: kurbo::Vec2) -> f64 {
+    match m.output {
+        super::linkage::Output::Rocker { link } => {
+            let d = s.links[link].dir;
+            reference.cross(d).atan2(reference.dot(d))
+        }
+        super::linkage::Output::Slider { .. } => m.output_value(s).0,
+    }
+}
+
 /// Roots of the output's velocity over a turn, refined by bisection: (φ, output value).
 fn output_extremes(
     m: &Mechanism,
     states: &[(f64, State)],
+    reference: kurbo::Vec2,
     solve: &dyn Fn(f64) -> Result<State, StepFailure>,
 ) -> Vec<(f64, f64)> {
     let vel = |s: &State| m.output_value(s).1;
+    let value = |s: &State| output_coordinate(m, s, reference);
     let mut roots = Vec::new();
     for i in 0..states.len() {
         let (p0, s0) = &states[i];
@@ -130,7 +156,7 @@ fn output_extremes(
         let p1 = if i + 1 == states.len() { p1 + TAU } else { *p1 };
         let (v0, v1) = (vel(s0), vel(s1));
         if v0 == 0.0 {
-            roots.push((*p0, m.output_value(s0).0));
+            roots.push((*p0, value(s0)));
             continue;
         }
         if v0.signum() == v1.signum() || v1 == 0.0 {
@@ -150,7 +176,7 @@ fn output_extremes(
             }
             last = sm;
         }
-        roots.push(((0.5 * (lo + hi)).rem_euclid(TAU), m.output_value(&last).0));
+        roots.push(((0.5 * (lo + hi)).rem_euclid(TAU), value(&last)));
     }
     roots
 }
