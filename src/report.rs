@@ -3,7 +3,8 @@
 
 use crate::analysis::{Kinematics, Position};
 use crate::mechanics::linkage::{LinkKind, Mechanism};
-use crate::mechanics::plans::relation_values;
+use crate::mechanics::plans::{relation_values, RelationValues};
+use crate::mechanics::{Kin, LinkKin};
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -45,47 +46,53 @@ fn row(symbol: &str, sub: impl Into<String>, unit: &str, values: Vec<f64>) -> Ro
     Row { symbol: symbol.into(), sub: sub.into(), unit: unit.into(), values }
 }
 
+/// One row per moving point, one column per position.
+fn point_rows(m: &Mechanism, positions: &[&Position], symbol: &str, unit: &str, of: impl Fn(&Kin) -> f64) -> Vec<Row> {
+    moving_points(m).into_iter().map(|id| row(symbol, m.name(id), unit, positions.iter().map(|p| of(&p.state.points[id])).collect())).collect()
+}
+
+/// One row per turning link (not the kulisa's block, which turns with its kulisa).
+fn link_rows(m: &Mechanism, positions: &[&Position], symbol: &str, unit: &str, skip_crank: bool, of: impl Fn(&LinkKin) -> f64) -> Vec<Row> {
+    turning_links(m)
+        .into_iter()
+        .filter(|&l| m.links[l].kind != LinkKind::Block && !(skip_crank && m.links[l].kind == LinkKind::Crank))
+        .map(|l| row(symbol, m.links[l].number.to_string(), unit, positions.iter().map(|p| of(&p.state.links[l])).collect()))
+        .collect()
+}
+
+/// Relative motions of every position, transposed: one entry per relation.
+fn relation_columns(m: &Mechanism, positions: &[&Position]) -> Vec<Vec<RelationValues>> {
+    let per_position: Vec<_> = positions.iter().map(|p| relation_values(m, &p.state)).collect();
+    let n = per_position.first().map_or(0, Vec::len);
+    (0..n).map(|i| per_position.iter().map(|x| x[i].clone()).collect()).collect()
+}
+
+fn table(name: &str, positions: &[&Position], rows: Vec<Row>) -> NumTable {
+    NumTable { name: name.into(), columns: positions.iter().map(|p| p.label.clone()).collect(), rows }
+}
+
 /// Table 1: speeds of points, relative speeds and angular velocities, all positions.
 pub fn velocity_table(m: &Mechanism, positions: &[&Position]) -> NumTable {
-    let mut rows = Vec::new();
-    for id in moving_points(m) {
-        rows.push(row("v", m.name(id), "m/s", positions.iter().map(|p| p.state.points[id].v.hypot()).collect()));
+    let mut rows = point_rows(m, positions, "v", "m/s", |k| k.v.hypot());
+    for rel in relation_columns(m, positions) {
+        rows.push(row("v", rel[0].name.clone(), "m/s", rel.iter().map(|x| x.v).collect()));
     }
-    let rel: Vec<_> = positions.iter().map(|p| relation_values(m, &p.state)).collect();
-    for (i, r) in rel.first().map(|r| r.as_slice()).unwrap_or(&[]).iter().enumerate() {
-        rows.push(row("v", r.name.clone(), "m/s", rel.iter().map(|x| x[i].v).collect()));
-    }
-    for l in turning_links(m) {
-        if m.links[l].kind == LinkKind::Block {
-            continue; // turns with its kulisa
-        }
-        let n = m.links[l].number;
-        rows.push(row("ω", n.to_string(), "1/s", positions.iter().map(|p| p.state.links[l].omega.abs()).collect()));
-    }
-    NumTable { name: "velocities".into(), columns: positions.iter().map(|p| p.label.clone()).collect(), rows }
+    rows.extend(link_rows(m, positions, "ω", "1/s", false, |l| l.omega.abs()));
+    table("velocities", positions, rows)
 }
 
 /// Table 2: accelerations of points, their normal and tangential (Coriolis and relative)
-/// components and angular accelerations, at the plan positions.
+/// components and angular accelerations, at the plan positions. The crank turns
+/// uniformly (ε1 = 0), so it has no ε row.
 pub fn acceleration_table(m: &Mechanism, positions: &[&Position]) -> NumTable {
-    let mut rows = Vec::new();
-    for id in moving_points(m) {
-        rows.push(row("a", m.name(id), "m/s²", positions.iter().map(|p| p.state.points[id].a.hypot()).collect()));
+    let mut rows = point_rows(m, positions, "a", "m/s²", |k| k.a.hypot());
+    for rel in relation_columns(m, positions) {
+        let (s1, s2) = if rel[0].sliding { ("aᵏ", "aʳ") } else { ("aⁿ", "aᵗ") };
+        rows.push(row(s1, rel[0].name.clone(), "m/s²", rel.iter().map(|x| x.a_n).collect()));
+        rows.push(row(s2, rel[0].name.clone(), "m/s²", rel.iter().map(|x| x.a_t).collect()));
     }
-    let rel: Vec<_> = positions.iter().map(|p| relation_values(m, &p.state)).collect();
-    for (i, r) in rel.first().map(|r| r.as_slice()).unwrap_or(&[]).iter().enumerate() {
-        let (s1, s2) = if r.sliding { ("aᵏ", "aʳ") } else { ("aⁿ", "aᵗ") };
-        rows.push(row(s1, r.name.clone(), "m/s²", rel.iter().map(|x| x[i].a_n).collect()));
-        rows.push(row(s2, r.name.clone(), "m/s²", rel.iter().map(|x| x[i].a_t).collect()));
-    }
-    for l in turning_links(m) {
-        let link = &m.links[l];
-        if link.kind == LinkKind::Block || link.kind == LinkKind::Crank {
-            continue; // the block turns with its kulisa; the crank turns uniformly (ε1 = 0)
-        }
-        rows.push(row("ε", link.number.to_string(), "1/s²", positions.iter().map(|p| p.state.links[l].eps.abs()).collect()));
-    }
-    NumTable { name: "accelerations".into(), columns: positions.iter().map(|p| p.label.clone()).collect(), rows }
+    rows.extend(link_rows(m, positions, "ε", "1/s²", true, |l| l.eps.abs()));
+    table("accelerations", positions, rows)
 }
 
 /// The two tables of sheet 1 for a kinematic analysis.

@@ -14,9 +14,17 @@ fn example() -> String {
 fn error_of(from: &str, to: &str) -> String {
     let text = example();
     assert!(text.contains(from), "the test's pattern {from:?} is not in the example");
-    let text = text.replacen(from, to, 1);
-    let result = pipeline::load(&text).and_then(|p| pipeline::sheet1(&p).map(|_| ()));
+    refusal(&text.replacen(from, to, 1))
+}
+
+/// Loads `text` and builds sheet 1, expecting a refusal; returns its message.
+fn refusal(text: &str) -> String {
+    let result = pipeline::load(text).and_then(|p| pipeline::sheet1(&p).map(|_| ()));
     format!("{:#}", anyhow::Error::from(result.expect_err("the input must be refused")))
+}
+
+fn fixture_text(name: &str) -> String {
+    std::fs::read_to_string(root().join(format!("fixtures/{name}.yaml"))).unwrap()
 }
 
 fn line_of(pattern: &str) -> usize {
@@ -78,8 +86,7 @@ fn link_used_twice_and_link_zero() {
 
 #[test]
 fn crank_about_a_moving_point() {
-    let text = example().replacen("pivot: O, pin: A", "pivot: A, pin: A1", 1);
-    let e = pipeline::load(&text).err().map(|e| format!("{:#}", anyhow::Error::from(e))).unwrap();
+    let e = refusal(&example().replacen("pivot: O, pin: A", "pivot: A, pin: A1", 1));
     assert!(e.contains("unknown point 'A'"), "{e}");
 }
 
@@ -127,16 +134,15 @@ fn attached_point_errors() {
 
 #[test]
 fn output_point_must_be_a_slider() {
-    let text = example().replacen("  points:\n", "  output_point: B\n  points:\n", 1);
-    let e = pipeline::load(&text).err().map(|e| format!("{:#}", anyhow::Error::from(e))).unwrap();
+    let e = refusal(&example().replacen("  points:\n", "  output_point: B\n  points:\n", 1));
     assert!(e.contains("'B' is not a slider point"), "{e}");
 }
 
 #[test]
 fn broken_yaml() {
-    let e = pipeline::load("project: [\n").err().map(|e| format!("{:#}", anyhow::Error::from(e))).unwrap();
+    let e = refusal("project: [\n");
     assert!(e.contains("line 1 column 10"), "{e}");
-    let e = pipeline::load("").err().map(|e| format!("{:#}", anyhow::Error::from(e))).unwrap();
+    let e = refusal("");
     assert!(!e.is_empty());
 }
 
@@ -144,9 +150,7 @@ fn broken_yaml() {
 /// over the pivot, where the kulisa's angle is undefined.
 #[test]
 fn kulisa_block_through_its_pivot_is_an_error_not_nan() {
-    let text = std::fs::read_to_string(root().join("fixtures/kulisa.yaml")).unwrap().replace("at: [0, -0.8]", "at: [0, -0.4]");
-    let e = pipeline::load(&text).and_then(|p| pipeline::sheet1(&p).map(|_| ())).err().map(|e| format!("{:#}", anyhow::Error::from(e)));
-    let e = e.expect("refused");
+    let e = refusal(&fixture_text("kulisa").replace("at: [0, -0.8]", "at: [0, -0.4]"));
     assert!(e.contains("Assur group 1 (RPR") && (e.contains("kulisa pivot") || e.contains("dead point")), "{e}");
 }
 
@@ -154,9 +158,7 @@ fn kulisa_block_through_its_pivot_is_an_error_not_nan() {
 /// point where its velocities are unbounded: an explicit error, never NaN.
 #[test]
 fn change_point_four_bar_is_reported() {
-    let text = std::fs::read_to_string(root().join("fixtures/four-bar.yaml")).unwrap().replace("lengths: [0.18, 0.15]", "lengths: [0.20, 0.05]");
-    let e = pipeline::load(&text).and_then(|p| pipeline::sheet1(&p).map(|_| ())).err().map(|e| format!("{:#}", anyhow::Error::from(e)));
-    let e = e.expect("refused");
+    let e = refusal(&fixture_text("four-bar").replace("lengths: [0.18, 0.15]", "lengths: [0.20, 0.05]"));
     assert!(e.contains("Assur group 1 (RRR, links 2 and 3, line 12) passes through a dead point"), "{e}");
 }
 
@@ -164,7 +166,7 @@ fn change_point_four_bar_is_reported() {
 /// every sheet is finite, or the refusal says why; never a panic or NaN.
 #[test]
 fn near_singular_four_bars_are_finite_or_refused() {
-    let base = std::fs::read_to_string(root().join("fixtures/four-bar.yaml")).unwrap();
+    let base = fixture_text("four-bar");
     for delta in [1e-2, 1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 0.0] {
         let text = base.replace("lengths: [0.18, 0.15]", &format!("lengths: [0.20, {:.15}]", 0.05 + delta));
         match pipeline::load(&text).and_then(|p| pipeline::sheet1(&p)) {

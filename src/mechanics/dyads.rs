@@ -56,7 +56,7 @@ pub fn rrr(p: &Kin, q: &Kin, l_pb: f64, l_qb: f64, branch: f64) -> Result<DyadSo
     let pq = q.p - p.p;
     let d = pq.hypot2().sqrt(); // lengths are metres: no overflow risk, and libm hypot is slow
     let (lo, hi) = ((l_pb - l_qb).abs(), l_pb + l_qb);
-    if !(d > 0.0) || d > hi || d < lo {
+    if d.is_nan() || d <= 0.0 || d > hi || d < lo {
         return Err(DyadFailure::NoIntersection { distance: d, reach_min: lo, reach_max: hi });
     }
     let e = pq / d;

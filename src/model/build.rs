@@ -280,10 +280,8 @@ fn settings(file: &ProjectFile, m: &Mechanism, sense: f64, kulisa_lengths: Vec<(
         None if a.start == StartExtreme::Max => Start::Max,
         None => Start::Min,
     };
-    if let Some(d) = &a.assigned_deg {
-        if !(0.0..360.0).contains(&d.value.0) {
-            return Err(invalid(at(d), "analysis.assigned_deg", format!("φ1 must lie in 0…360°, got {}°", d.value.0)));
-        }
+    if let Some(d) = a.assigned_deg.as_ref().filter(|d| !(0.0..360.0).contains(&d.value.0)) {
+        return Err(invalid(at(d), "analysis.assigned_deg", format!("φ1 must lie in 0…360°, got {}°", d.value.0)));
     }
     let acceleration_plans = match &a.acceleration_plans {
         Some(list) => {
