@@ -33,6 +33,7 @@ pub struct DyadSolution {
 
 /// Crank `pivot → pin` of length `length` at absolute angle `theta` turning with the
 /// constant signed angular velocity `omega` (counter-clockwise positive, ε = 0).
+#[inline]
 pub fn crank(pivot: &Kin, length: f64, theta: f64, omega: f64) -> (Kin, LinkKin) {
     let r = Vec2::from_angle(theta) * length;
     let pin = Kin {
@@ -52,6 +53,7 @@ fn solve2(e1: Vec2, e2: Vec2, rhs: Vec2, inv_det: f64) -> (f64, f64) {
 /// RRR dyad: point B joined to known P by a link of length `l_pb` and to known Q by
 /// a link of length `l_qb`. `branch` is +1 when B lies to the left of the directed
 /// line P→Q, −1 to the right. Links are returned as (P–B, Q–B) with angles of P→B and Q→B.
+#[inline]
 pub fn rrr(p: &Kin, q: &Kin, l_pb: f64, l_qb: f64, branch: f64) -> Result<DyadSolution, DyadFailure> {
     let pq = q.p - p.p;
     let d = pq.hypot2().sqrt(); // lengths are metres: no overflow risk, and libm hypot is slow
@@ -86,6 +88,7 @@ pub fn rrr(p: &Kin, q: &Kin, l_pb: f64, l_qb: f64, branch: f64) -> Result<DyadSo
 /// RRP dyad: slider point D on a fixed guide line (through `through`, unit direction
 /// `dir`) joined to the known point P by a rod of length `l`. `branch` is +1 when D lies
 /// ahead of P's foot on the guide (along `dir`), −1 behind. Links: (rod P→D, slider).
+#[inline]
 pub fn rrp(p: &Kin, l: f64, through: Vec2, dir: Vec2, branch: f64) -> Result<DyadSolution, DyadFailure> {
     let w = p.p - through;
     let h = w.cross(dir); // signed distance of P from the guide
@@ -122,6 +125,7 @@ pub struct KulisaSolution {
     pub slide: (f64, f64, f64),
 }
 
+#[inline]
 pub fn rpr(a: &Kin, c: &Kin) -> Result<KulisaSolution, DyadFailure> {
     let ca = a.p - c.p;
     let d = ca.hypot2().sqrt();

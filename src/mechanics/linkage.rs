@@ -166,6 +166,7 @@ impl Mechanism {
         Ok(())
     }
 
+    #[inline(always)]
     fn run_step(&self, i: usize, step: &Step, theta: f64, s: &mut State) -> Result<(), DyadFailure> {
         match *step {
             Step::Crank { pivot, pin, length, link } => {
