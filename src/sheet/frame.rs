@@ -1,23 +1,115 @@
-//! The A1 sheet's frame (GOST 2.301: 20 mm margin on the left, 5 mm elsewhere) and the
-//! title block, form 1 of GOST 2.104 (185 × 55 mm, bottom right).
+//! The A1 sheet's frame (GOST 2.301) and title block (GOST 2.104, form 1), drawn from
+//! `templates/sheet-a1.yaml`: page size, margins, the block's lines, captions and fields.
 
 use super::labels::Labels;
-use super::text::{paragraph, wrap};
 use super::scene::{Anchor, Group, Text, MAIN, THIN};
-use kurbo::{Point, Rect};
+use super::text::{paragraph, wrap};
+use kurbo::{Point, Rect, Vec2};
+use serde::Deserialize;
+
+const SOURCE: &str = include_str!("../../templates/sheet-a1.yaml");
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Template {
+    page: [f64; 2],
+    margins: Margins,
+    title_block: BlockTemplate,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Margins {
+    left: f64,
+    top: f64,
+    right: f64,
+    bottom: f64,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BlockTemplate {
+    size: [f64; 2],
+    main: Vec<[f64; 4]>,
+    thin: Vec<[f64; 4]>,
+    captions: Vec<Caption>,
+    fields: Vec<Field>,
+    name_field: [f64; 4],
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Caption {
+    key: String,
+    at: [f64; 2],
+    h: f64,
+    anchor: TemplateAnchor,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Field {
+    field: FieldName,
+    at: [f64; 2],
+    h: f64,
+    anchor: TemplateAnchor,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum TemplateAnchor {
+    Start,
+    Middle,
+    End,
+}
+
+impl From<TemplateAnchor> for Anchor {
+    fn from(a: TemplateAnchor) -> Anchor {
+        match a {
+            TemplateAnchor::Start => Anchor::Start,
+            TemplateAnchor::Middle => Anchor::Middle,
+            TemplateAnchor::End => Anchor::End,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum FieldName {
+    Designation,
+    Student,
+    Supervisor,
+    Scale,
+    Sheet,
+    Organisation,
+}
+
+fn template() -> &'static Template {
+    static T: std::sync::OnceLock<Template> = std::sync::OnceLock::new();
+    T.get_or_init(|| serde_saphyr::from_str(SOURCE).expect("templates/sheet-a1.yaml is valid (tested)"))
+}
 
 pub const A1_W: f64 = 841.0;
 pub const A1_H: f64 = 594.0;
 
-/// The inside of the frame.
-pub fn inner() -> Rect {
-    Rect::new(20.0, 5.0, A1_W - 5.0, A1_H - 5.0)
+/// The page size from the template, mm.
+pub fn page() -> (f64, f64) {
+    let t = template();
+    (t.page[0], t.page[1])
 }
 
-/// The title block's rectangle.
+/// The inside of the frame.
+pub fn inner() -> Rect {
+    let t = template();
+    let m = &t.margins;
+    Rect::new(m.left, m.top, t.page[0] - m.right, t.page[1] - m.bottom)
+}
+
+/// The title block's rectangle, in the frame's bottom-right corner.
 pub fn title_block_rect() -> Rect {
     let f = inner();
-    Rect::new(f.x1 - 185.0, f.y1 - 55.0, f.x1, f.y1)
+    let [w, h] = template().title_block.size;
+    Rect::new(f.x1 - w, f.y1 - h, f.x1, f.y1)
 }
 
 /// What the title block says.
@@ -32,78 +124,47 @@ pub struct TitleBlock<'a> {
     pub sheet_no: u32,
 }
 
-pub fn frame(g: &mut Group) {
-    let f = inner();
-    g.path(vec![f.origin(), Point::new(f.x1, f.y0), Point::new(f.x1, f.y1), Point::new(f.x0, f.y1)], true, MAIN);
-}
-
-fn cell_text(g: &mut Group, x: f64, y: f64, s: &str, h: f64) {
-    if !s.is_empty() {
-        g.text(Text::new(Point::new(x, y), s, h, Anchor::Middle));
-    }
-}
-
-/// Draws the title block with GOST column widths: 7, 10, 23, 15, 10 | 70 | 50.
-pub fn title_block(g: &mut Group, l: &Labels, tb: &TitleBlock) {
-    let r = title_block_rect();
-    let (x0, y0) = (r.x0, r.y0);
-    let row = |i: f64| y0 + 5.0 * i;
+fn rect_path(g: &mut Group, r: Rect) {
     g.path(vec![r.origin(), Point::new(r.x1, r.y0), Point::new(r.x1, r.y1), Point::new(r.x0, r.y1)], true, MAIN);
-    let cols = [7.0, 10.0, 23.0, 15.0, 10.0];
-    let mut x = x0;
-    for w in cols {
-        x += w;
-        g.line(Point::new(x, y0), Point::new(x, r.y1), if x == x0 + 65.0 { MAIN } else { THIN });
-    }
-    for i in 1..11 {
-        let pen = if i == 5 || i == 6 { MAIN } else { THIN };
-        g.line(Point::new(x0, row(i as f64)), Point::new(x0 + 65.0, row(i as f64)), pen);
-    }
-    // Designation field, name field and the right-hand block.
-    let (xd, xr) = (x0 + 65.0, x0 + 135.0);
-    g.line(Point::new(xd, row(3.0)), Point::new(r.x1, row(3.0)), MAIN);
-    g.line(Point::new(xr, row(3.0)), Point::new(xr, r.y1), MAIN);
-    g.line(Point::new(xr, row(4.0)), Point::new(r.x1, row(4.0)), MAIN);
-    g.line(Point::new(xr, row(7.0)), Point::new(r.x1, row(7.0)), MAIN);
-    g.line(Point::new(xr, row(8.0)), Point::new(r.x1, row(8.0)), MAIN);
-    for dx in [5.0, 10.0] {
-        g.line(Point::new(xr + dx, row(4.0)), Point::new(xr + dx, row(7.0)), THIN);
-    }
-    g.line(Point::new(xr + 15.0, row(3.0)), Point::new(xr + 15.0, row(7.0)), MAIN);
-    g.line(Point::new(xr + 32.0, row(3.0)), Point::new(xr + 32.0, row(7.0)), MAIN);
-    g.line(Point::new(xr + 25.0, row(7.0)), Point::new(xr + 25.0, row(8.0)), THIN);
-    // Header of the revisions table (row 6) and the signature rows (7–11).
-    let hdr = [(l.get("tb_change"), 3.5), (l.get("tb_sheet_no"), 12.0), (l.get("tb_doc"), 28.5), (l.get("tb_sign"), 47.5), (l.get("tb_date"), 60.0)];
-    for (s, cx) in hdr {
-        cell_text(g, x0 + cx, row(6.0) - 1.2, s, 1.8);
-    }
-    let people = [(l.get("tb_drawn"), tb.student), (l.get("tb_checked"), tb.supervisor), ("", ""), ("", ""), (l.get("tb_approved"), "")];
-    for (i, (role, name)) in people.iter().enumerate() {
-        let y = row(7.0 + i as f64) - 1.2;
-        if !role.is_empty() {
-            g.text(Text::new(Point::new(x0 + 1.0, y), *role, 2.5, Anchor::Start));
-        }
-        if !name.is_empty() {
-            g.text(Text::new(Point::new(x0 + 18.5, y), *name, 2.5, Anchor::Start));
-        }
-    }
-    cell_text(g, xd + 60.0, row(2.0) + 0.5, tb.designation, 7.0);
-    name_field(g, Rect::new(xd, row(3.0), xr, r.y1), tb, l);
-    cell_text(g, xr + 7.5, row(4.0) - 1.2, l.get("tb_lit"), 2.5);
-    cell_text(g, xr + 23.5, row(4.0) - 1.2, l.get("tb_mass"), 2.5);
-    cell_text(g, xr + 41.0, row(4.0) - 1.2, l.get("tb_scale"), 2.5);
-    cell_text(g, xr + 41.0, row(6.0), tb.scale, 3.5);
-    cell_text(g, xr + 12.5, row(8.0) - 1.2, &format!("{} {}", l.get("tb_sheet_no"), tb.sheet_no), 2.5);
-    cell_text(g, xr + 37.5, row(8.0) - 1.2, l.get("tb_sheets"), 2.5);
-    cell_text(g, xr + 25.0, row(10.0), tb.organisation, 3.5);
 }
 
-/// The GOST-style box around `r` is not drawn for regions; this only helps tests.
-pub fn is_inside(outer: Rect, r: Rect) -> bool {
-    r.x0 >= outer.x0 - 1e-9 && r.y0 >= outer.y0 - 1e-9 && r.x1 <= outer.x1 + 1e-9 && r.y1 <= outer.y1 + 1e-9
+pub fn frame(g: &mut Group) {
+    rect_path(g, inner());
 }
 
-/// The 70 × 40 mm name field: sheet name and project title, wrapped and centred.
+pub fn title_block(g: &mut Group, l: &Labels, tb: &TitleBlock) {
+    let t = &template().title_block;
+    let r = title_block_rect();
+    let o = r.origin().to_vec2();
+    let p = |x: f64, y: f64| Point::new(x, y) + o;
+    rect_path(g, r);
+    for (lines, pen) in [(&t.main, MAIN), (&t.thin, THIN)] {
+        for &[x1, y1, x2, y2] in lines {
+            g.line(p(x1, y1), p(x2, y2), pen);
+        }
+    }
+    for c in &t.captions {
+        g.text(Text::new(p(c.at[0], c.at[1]), l.get(&c.key), c.h, c.anchor.into()));
+    }
+    let sheet = format!("{} {}", l.get("tb_sheet_no"), tb.sheet_no);
+    for f in &t.fields {
+        let value = match f.field {
+            FieldName::Designation => tb.designation,
+            FieldName::Student => tb.student,
+            FieldName::Supervisor => tb.supervisor,
+            FieldName::Scale => tb.scale,
+            FieldName::Sheet => &sheet,
+            FieldName::Organisation => tb.organisation,
+        };
+        if !value.is_empty() {
+            g.text(Text::new(p(f.at[0], f.at[1]), value, f.h, f.anchor.into()));
+        }
+    }
+    let [x0, y0, x1, y1] = t.name_field;
+    name_field(g, Rect::new(x0, y0, x1, y1) + o, tb, l);
+}
+
+/// The name field: sheet name and project title, wrapped and centred.
 fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Labels) {
     let w = r.width() - 3.0;
     let blocks = [(wrap(tb.sheet_name, 3.5, w), 3.5), (wrap(tb.project_title, 3.5, w), 3.5), (wrap(l.get("tb_course"), 2.5, w), 2.5)];
@@ -111,5 +172,33 @@ fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Labels) {
     let mut y = r.center().y - height / 2.0 + 4.0;
     for (lines, h) in &blocks {
         y = paragraph(g, Point::new(r.center().x, y), lines, *h, Anchor::Middle) + 2.0;
+    }
+}
+
+/// Whether `r` lies inside `outer` (for the layout tests).
+pub fn is_inside(outer: Rect, r: Rect) -> bool {
+    r.x0 >= outer.x0 - 1e-9 && r.y0 >= outer.y0 - 1e-9 && r.x1 <= outer.x1 + 1e-9 && r.y1 <= outer.y1 + 1e-9
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Language;
+
+    #[test]
+    fn template_is_a1_with_gost_margins_and_a_185_by_55_block() {
+        assert_eq!(page(), (A1_W, A1_H));
+        assert_eq!(inner(), Rect::new(20.0, 5.0, 836.0, 589.0));
+        assert_eq!(title_block_rect(), Rect::new(651.0, 534.0, 836.0, 589.0));
+        let l = Labels::new(Language::Ru);
+        for c in &template().title_block.captions {
+            assert!(l.keys().any(|k| k == c.key), "caption key {} is not in labels.yaml", c.key);
+        }
+        let block = Rect::from_origin_size(Point::ZERO, (185.0, 55.0));
+        let t = &template().title_block;
+        for &[x1, y1, x2, y2] in t.main.iter().chain(&t.thin) {
+            assert!(is_inside(block, Rect::new(x1.min(x2), y1.min(y2), x1.max(x2), y1.max(y2))));
+        }
+        let _ = Vec2::ZERO;
     }
 }
