@@ -166,11 +166,10 @@ fn position_one_of_the_guide_was_drawn_at_60_degrees() {
 fn accelerations_agree_with_the_guides_table() {
     let cmp = compare();
     let mut rel = vec![];
-    for (q, col, g, e) in &cmp.rows {
+    for (q, _, g, e) in &cmp.rows {
         if q.starts_with('v') || q.starts_with('ω') || e.abs() < 1.0 {
             continue;
         }
-        let _ = col;
         rel.push(((g - e) / e).abs());
     }
     rel.sort_by(f64::total_cmp);

@@ -76,8 +76,7 @@ fn describe_failure(why: &DyadFailure) -> String {
 
 /// Checks that the mechanism assembles over a whole turn and finds position 0.
 pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion, MotionError> {
-    let omega_sign = sense;
-    let theta_of = |k: f64| omega_sign * k; // scan from absolute 0 in the sense of rotation
+    let theta_of = |k: f64| sense * k; // scan from absolute 0 in the sense of rotation
     let mut states = Vec::with_capacity(SCAN_SAMPLES);
     for k in 0..SCAN_SAMPLES {
         let phi = TAU * k as f64 / SCAN_SAMPLES as f64;

@@ -1,7 +1,7 @@
 //! Structural analysis as the note states it: links, kinematic pairs, Chebyshev's
 //! degree of freedom W = 3n − 2p5 − p4, the Assur groups and the structural formula.
 
-use super::linkage::{DyadKind, Mechanism, Step};
+use super::linkage::{Mechanism, Step};
 
 /// One lower pair: its name, the two link numbers it joins, revolute or prismatic.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -78,14 +78,5 @@ pub fn analyse(m: &Mechanism) -> Structure {
         formula: parts.join(" → "),
         class,
         pairs,
-    }
-}
-
-/// The kind ("vid") of a class-II group as the Russian/Uzbek literature numbers it.
-pub fn dyad_variety(kind: DyadKind) -> u32 {
-    match kind {
-        DyadKind::Rrr => 1,
-        DyadKind::Rrp => 2,
-        DyadKind::Rpr => 3,
     }
 }

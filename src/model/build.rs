@@ -118,7 +118,7 @@ pub fn build(file: &ProjectFile) -> Result<(Mechanism, Settings), ModelError> {
         return Err(invalid(at(&p.name), "mechanism.points", format!("point '{}' cannot be placed: {why}", p.name.value)));
     }
     b.m.output = resolve_output(&b, spec)?;
-    let settings = settings(file, &b.m, sense, kulisa_lengths)?;
+    let settings = settings(file, sense, kulisa_lengths)?;
     Ok((b.m, settings))
 }
 
@@ -269,7 +269,7 @@ fn resolve_output(b: &Builder, spec: &MechanismSpec) -> Result<Output, ModelErro
     })
 }
 
-fn settings(file: &ProjectFile, m: &Mechanism, sense: f64, kulisa_lengths: Vec<(LinkId, Option<f64>)>) -> Result<Settings, ModelError> {
+fn settings(file: &ProjectFile, sense: f64, kulisa_lengths: Vec<(LinkId, Option<f64>)>) -> Result<Settings, ModelError> {
     let a = &file.analysis;
     let n = a.positions.value;
     if n != 8 && n != 12 {
@@ -302,7 +302,6 @@ fn settings(file: &ProjectFile, m: &Mechanism, sense: f64, kulisa_lengths: Vec<(
         }
         None => (0..4).map(|i| 1 + i * n as usize / 4).collect(),
     };
-    let _ = m;
     Ok(Settings {
         sense,
         rpm: file.mechanism.crank.rpm.0,

@@ -4,7 +4,7 @@
 use super::labels::Labels;
 use super::scene::{Anchor, Group, Text, MAIN, THIN};
 use super::text::{paragraph, wrap};
-use kurbo::{Point, Rect, Vec2};
+use kurbo::{Point, Rect};
 use serde::Deserialize;
 
 const SOURCE: &str = include_str!("../../templates/sheet-a1.yaml");
@@ -199,6 +199,5 @@ mod tests {
         for &[x1, y1, x2, y2] in t.main.iter().chain(&t.thin) {
             assert!(is_inside(block, Rect::new(x1.min(x2), y1.min(y2), x1.max(x2), y1.max(y2))));
         }
-        let _ = Vec2::ZERO;
     }
 }

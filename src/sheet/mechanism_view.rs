@@ -2,7 +2,7 @@
 //! position, the assigned position thick with its letters and the senses of ω and ε,
 //! the centres of mass and their trajectories, frame pivots and guides.
 
-use super::draw::{self, frame_pivot, hatch, slider, turn_arrow};
+use super::draw::{frame_pivot, hatch, slider, turn_arrow};
 use super::place::Placer;
 use super::scene::{Group, Pen, AXIS, MAIN, THIN};
 use super::text::LabelText;
@@ -34,10 +34,9 @@ impl View {
 }
 
 /// Drawn length of a kulisa: given, or its longest reach to the block plus 15 %.
-fn kulisa_len(m: &Mechanism, k: &Kinematics, c: PointId, a3: PointId, given: Option<f64>) -> f64 {
+fn kulisa_len(k: &Kinematics, c: PointId, a3: PointId, given: Option<f64>) -> f64 {
     given.unwrap_or_else(|| {
         let reach = k.positions.iter().map(|p| (p.state.points[a3].p - p.state.points[c].p).hypot()).fold(0.0, f64::max);
-        let _ = m;
         reach * 1.15
     })
 }
@@ -50,7 +49,7 @@ pub fn world_extent(m: &Mechanism, k: &Kinematics, kulisa: &[(usize, Option<f64>
         for st in &m.steps {
             if let Step::Rpr { c, a3, links, .. } = *st {
                 let given = kulisa.iter().find(|(l, _)| *l == links[1]).and_then(|x| x.1);
-                let len = kulisa_len(m, k, c, a3, given);
+                let len = kulisa_len(k, c, a3, given);
                 let d = (p.state.points[a3].p - p.state.points[c].p).normalize();
                 pts.push(p.state.points[c].p + d * len);
             }
@@ -147,7 +146,7 @@ impl MechanismView<'_> {
                 }
                 _ => {
                     if let Some((c, a3, given)) = self.kulisa_of(li) {
-                        let len = kulisa_len(self.m, self.k, c, a3, given);
+                        let len = kulisa_len(self.k, c, a3, given);
                         let d = (st.points[a3].p - st.points[c].p).normalize();
                         g.line(p(c), self.view.p(st.points[c].p + d * len), pen);
                         continue;
@@ -259,7 +258,6 @@ impl MechanismView<'_> {
                 LabelText::new(sym, link.number.to_string()).draw(g, t.at, 3.5, super::scene::Anchor::Middle);
             }
         }
-        let _ = draw::ARROW_LEN;
     }
 }
 

@@ -96,7 +96,7 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
     let right_w = inner.x1 - 4.0 - right_x0;
     let side_by_side = 1.0 + w1 + 8.0 + w2 + 1.0 <= right_w;
     let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
-    let notes_lines = notes_height(&l, inp.assumptions, right_w);
+    let notes_lines = notes_height(inp.assumptions, right_w);
     let tables_top = frame::title_block_rect().y0 - 3.0 - notes_lines - tables_h - 4.0;
 
     // Velocity plans: every position, one common μ_v.
@@ -186,9 +186,8 @@ fn sheet_table(t: &NumTable, title: &str, lang: Language) -> Table {
 }
 
 /// Height the notes need in a column of width `w`.
-fn notes_height(l: &Labels, assumptions: &[String], w: f64) -> f64 {
+fn notes_height(assumptions: &[String], w: f64) -> f64 {
     let lines: usize = assumptions.iter().map(|a| wrap(a, 2.5, w - 2.0).len()).sum();
-    let _ = l;
     10.0 + if assumptions.is_empty() { 0.0 } else { 4.5 + lines as f64 * 4.0 + assumptions.len() as f64 }
 }
 

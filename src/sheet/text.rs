@@ -50,7 +50,6 @@ impl LabelText {
             g.text(Text::new(Point::new(x0 + wm + ws, at.y), self.tail.clone(), h, Anchor::Start));
             bb = bb.union(g.items.last().map(|i| i.bbox()).unwrap_or_default());
         }
-        let _ = total;
         bb
     }
 }
