@@ -46,10 +46,10 @@ pub struct Sheet1Result {
 
 pub fn sheet1(p: &Project) -> Result<Sheet1Result, Error> {
     let kinematics = analysis::kinematics(&p.mechanism, &p.settings)?;
-    let input = Sheet1Input { info: &p.file.project, settings: &p.settings, assumptions: &p.file.mechanism.assumptions };
+    let tables = report::sheet1_tables(&p.mechanism, &kinematics);
+    let input = Sheet1Input { info: &p.file.project, settings: &p.settings, assumptions: &p.file.mechanism.assumptions, tables: &tables };
     let s = sheet1::compose(&input, &p.mechanism, &kinematics);
     let svg = svg::write(&s.scene);
-    let tables = report::sheet1_tables(&p.mechanism, &kinematics);
     Ok(Sheet1Result { kinematics, scene: s.scene, scales: s.scales, svg, tables })
 }
 

@@ -25,17 +25,12 @@ pub struct NumTable {
     pub rows: Vec<Row>,
 }
 
+/// Points that move, without kulisa images: a kulisa image moves like the block's pin only
+/// in position; its speed is tabulated through the relation rows instead.
 fn moving_points(m: &Mechanism) -> Vec<usize> {
     (0..m.point_names.len())
-        .filter(|&id| !m.frame.iter().any(|&(f, _)| f == id))
-        .filter(|&id| !is_kulisa_image(m, id))
+        .filter(|&id| !m.is_frame(id) && !m.is_kulisa_image(id))
         .collect()
-}
-
-/// The kulisa point under a block moves like the block's pin only in position; its
-/// speed is tabulated through the relation rows instead.
-fn is_kulisa_image(m: &Mechanism, id: usize) -> bool {
-    m.steps.iter().any(|s| matches!(*s, crate::mechanics::Step::Rpr { a3, .. } if a3 == id))
 }
 
 fn turning_links(m: &Mechanism) -> Vec<usize> {

@@ -70,7 +70,7 @@ fn velocities_and_accelerations_match_finite_differences() {
                 // A kulisa image is the kulisa's material point under the block at this
                 // instant, not a point that stays under it: its velocity is not d/dt of
                 // the coincident position. Its motion is checked through the relations.
-                if m.steps.iter().any(|st| matches!(*st, Step::Rpr { a3, .. } if a3 == i)) {
+                if m.is_kulisa_image(i) {
                     continue;
                 }
                 let v_fd = (sp.points[i].p - sm.points[i].p) / (2.0 * dt);

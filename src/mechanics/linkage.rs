@@ -133,6 +133,21 @@ impl Mechanism {
         &self.point_names[id]
     }
 
+    /// A fixed point of the frame.
+    pub fn is_frame(&self, id: PointId) -> bool {
+        self.frame.iter().any(|&(f, _)| f == id)
+    }
+
+    /// The point of a kulisa under its block (A3): a material point of the kulisa at this
+    /// instant, not a joint.
+    pub fn is_kulisa_image(&self, id: PointId) -> bool {
+        self.steps.iter().any(|s| matches!(*s, Step::Rpr { a3, .. } if a3 == id))
+    }
+
+    pub fn is_mass_centre(&self, id: PointId) -> bool {
+        self.mass_centres.iter().any(|&(_, p)| p == id)
+    }
+
     /// The link with the course number `number`.
     pub fn link_by_number(&self, number: u32) -> Option<LinkId> {
         self.links.iter().position(|l| l.number == number)

@@ -216,17 +216,7 @@ fn assembly_error(
 
 /// Solves the mechanism at `n` equally spaced course angles starting at position 0.
 pub fn sample(m: &Mechanism, motion: &Motion, n: usize) -> Result<Vec<State>, MotionError> {
-    (0..n)
-        .map(|k| {
-            let phi = TAU * k as f64 / n as f64;
-            m.solve(motion.theta(phi)).map_err(|f| MotionError::CannotAssemble {
-                group: describe_step(m, f.step),
-                from_deg: phi.to_degrees(),
-                to_deg: phi.to_degrees(),
-                detail: describe_failure(&f.why),
-            })
-        })
-        .collect()
+    (0..n).map(|k| sample_at(m, motion, TAU * k as f64 / n as f64)).collect()
 }
 
 /// Solves the mechanism at the course angle `phi`.

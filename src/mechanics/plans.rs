@@ -99,10 +99,6 @@ impl Plan {
     }
 }
 
-fn is_frame(m: &Mechanism, id: PointId) -> bool {
-    m.frame.iter().any(|&(f, _)| f == id)
-}
-
 fn label(m: &Mechanism, id: PointId) -> String {
     m.name(id).to_lowercase()
 }
@@ -111,15 +107,13 @@ fn label(m: &Mechanism, id: PointId) -> String {
 /// whose images follow by similarity and are shown as points only).
 fn images_and_absolutes(m: &Mechanism, s: &State, plan: &mut Plan, acc: bool) {
     for (id, _) in m.point_names.iter().enumerate() {
-        if is_frame(m, id) {
+        if m.is_frame(id) {
             continue;
         }
         let k = s.points[id];
         let at = if acc { k.a } else { k.v };
         plan.image(label(m, id), at);
-        let attached = m.steps.iter().any(|st| matches!(*st, Step::Attach { point, .. } if point == id));
-        let mass_centre = m.mass_centres.iter().any(|&(_, p)| p == id);
-        if !(attached && mass_centre) {
+        if !m.is_mass_centre(id) {
             plan.seg(Vec2::ZERO, at, SegKind::Absolute);
         }
     }
@@ -131,7 +125,7 @@ pub fn velocity_plan(m: &Mechanism, s: &State) -> Plan {
     images_and_absolutes(m, s, &mut plan, false);
     for r in relations(m) {
         let (from, to) = (s.points[r.y].v, s.points[r.x].v);
-        if is_frame(m, r.y) && !r.sliding {
+        if m.is_frame(r.y) && !r.sliding {
             continue; // the relative vector is the absolute one already drawn
         }
         plan.seg(from, to, if r.sliding { SegKind::Sliding } else { SegKind::Relative });

@@ -26,7 +26,7 @@ pub struct Structure {
 
 /// Number of the first link that carries `point` (0 for a frame point).
 fn carrier(m: &Mechanism, point: usize) -> u32 {
-    if m.frame.iter().any(|&(id, _)| id == point) {
+    if m.is_frame(point) {
         return 0;
     }
     m.links.iter().find(|l| l.points.contains(&point)).map_or(0, |l| l.number)

@@ -53,7 +53,7 @@ impl Builder {
     }
 
     fn is_frame(&self, id: PointId) -> bool {
-        self.m.frame.iter().any(|&(f, _)| f == id)
+        self.m.is_frame(id)
     }
 }
 

@@ -134,7 +134,7 @@ impl MechanismView<'_> {
         let st = &pos.state;
         let p = |id: PointId| self.view.p(st.points[id].p);
         for (li, link) in self.m.links.iter().enumerate() {
-            let pts: Vec<PointId> = link.points.iter().copied().filter(|&id| !self.is_mass_centre(id)).collect();
+            let pts: Vec<PointId> = link.points.iter().copied().filter(|&id| !self.m.is_mass_centre(id)).collect();
             match link.kind {
                 LinkKind::Slider => {
                     let u = self.slider_dir(li);
@@ -157,7 +157,7 @@ impl MechanismView<'_> {
             }
         }
         for id in self.joints() {
-            if !self.m.frame.iter().any(|f| f.0 == id) {
+            if !self.m.is_frame(id) {
                 g.circle(p(id), joint_r, if pen == MAIN { THIN } else { pen });
             }
         }
@@ -183,18 +183,13 @@ impl MechanismView<'_> {
         }).unwrap_or(Vec2::new(1.0, 0.0))
     }
 
-    fn is_mass_centre(&self, id: PointId) -> bool {
-        self.m.mass_centres.iter().any(|&(_, p)| p == id)
-    }
-
     /// Revolute joints drawn as small circles: every link point that is not a centre of
     /// mass and not a kulisa image.
     fn joints(&self) -> Vec<PointId> {
         let mut out: Vec<PointId> = Vec::new();
         for l in &self.m.links {
             for &id in &l.points {
-                let image = self.m.steps.iter().any(|s| matches!(*s, Step::Rpr { a3, .. } if a3 == id));
-                if !self.is_mass_centre(id) && !image && !out.contains(&id) {
+                if !self.m.is_mass_centre(id) && !self.m.is_kulisa_image(id) && !out.contains(&id) {
                     out.push(id);
                 }
             }
@@ -219,7 +214,7 @@ impl MechanismView<'_> {
             super::scene::points_bbox(&ps).center()
         };
         for (id, name) in self.m.point_names.iter().enumerate() {
-            if self.m.steps.iter().any(|s| matches!(*s, Step::Rpr { a3, .. } if a3 == id)) {
+            if self.m.is_kulisa_image(id) {
                 continue;
             }
             let at = self.view.p(st.points[id].p);

@@ -56,29 +56,33 @@ impl Text {
         Text { at, text: text.into(), h, anchor, rotate: 0.0, sloped: true }
     }
 
-    /// The box of the letters themselves (advance width × capital height), for overlap
-    /// tests: neighbouring texts such as a symbol and its subscript may touch it, not cross it.
-    pub fn core_box(&self) -> Rect {
-        let size = crate::font::size_for_cap(self.h);
-        let w = crate::font::metrics().width(&self.text, size);
-        let x0 = match self.anchor {
+    /// Advance width of the text, mm.
+    fn advance(&self) -> f64 {
+        crate::font::metrics().width(&self.text, crate::font::size_for_cap(self.h))
+    }
+
+    /// Left edge of a box of width `w` placed by the anchor.
+    fn left(&self, w: f64) -> f64 {
+        match self.anchor {
             Anchor::Start => self.at.x,
             Anchor::Middle => self.at.x - w / 2.0,
             Anchor::End => self.at.x - w,
-        };
+        }
+    }
+
+    /// The box of the letters themselves (advance width × capital height), for overlap
+    /// tests: neighbouring texts such as a symbol and its subscript may touch it, not cross it.
+    pub fn core_box(&self) -> Rect {
+        let w = self.advance();
+        let x0 = self.left(w);
         let r = Rect::new(x0, self.at.y - self.h, x0 + w, self.at.y);
         if self.rotate == 0.0 { r } else { rotated_bbox(r, self.at, self.rotate) }
     }
 
     /// Bounding box of unrotated text: from the descender to the capital height.
     pub fn bbox(&self) -> Rect {
-        let size = crate::font::size_for_cap(self.h);
-        let w = crate::font::metrics().width(&self.text, size) + self.h * 0.27; // slant overhang
-        let x0 = match self.anchor {
-            Anchor::Start => self.at.x,
-            Anchor::Middle => self.at.x - w / 2.0,
-            Anchor::End => self.at.x - w,
-        };
+        let w = self.advance() + self.h * 0.27; // slant overhang
+        let x0 = self.left(w);
         let r = Rect::new(x0, self.at.y - self.h * 1.05, x0 + w, self.at.y + self.h * 0.3);
         if self.rotate == 0.0 {
             return r;

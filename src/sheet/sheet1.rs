@@ -19,7 +19,7 @@ use crate::analysis::{Kinematics, Position};
 use crate::mechanics::linkage::Mechanism;
 use crate::mechanics::plans::{acceleration_plan, velocity_plan, Plan};
 use crate::model::{Language, ProjectInfo, Settings};
-use crate::report::{self, NumTable};
+use crate::report::NumTable;
 use kurbo::{Point, Rect};
 
 /// The scales chosen for the sheet.
@@ -43,6 +43,8 @@ pub struct Sheet1Input<'a> {
     pub info: &'a ProjectInfo,
     pub settings: &'a Settings,
     pub assumptions: &'a [String],
+    /// The note's tables 1 and 2 ([`report::sheet1_tables`]), computed once by the caller.
+    pub tables: &'a (NumTable, NumTable),
 }
 
 const TOP: f64 = 12.0;
@@ -88,9 +90,9 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
 
     // Right column: the tables above the title block decide how tall the velocity plans are.
     let right_x0 = mech_region.x1 + 6.0;
-    let (vt, at) = report::sheet1_tables(m, k);
-    let t1 = sheet_table(&vt, l.get("velocity_table"), lang);
-    let t2 = sheet_table(&at, l.get("acceleration_table"), lang);
+    let (vt, at) = inp.tables;
+    let t1 = sheet_table(vt, l.get("velocity_table"), lang);
+    let t2 = sheet_table(at, l.get("acceleration_table"), lang);
     let (w1, h1) = t1.size();
     let (w2, h2) = t2.size();
     let right_w = inner.x1 - 4.0 - right_x0;
