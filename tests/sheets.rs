@@ -84,6 +84,10 @@ fn check_layout(name: &str, scene: &Scene) {
         }
     }
     let texts: Vec<_> = scene.texts().collect();
+    for t in &texts {
+        // SVG collapses leading and trailing white space: a gap made of spaces vanishes.
+        assert!(t.text.trim() == t.text && !t.text.is_empty(), "{name}: text {:?} has outer white space", t.text);
+    }
     for (i, a) in texts.iter().enumerate() {
         for b in &texts[i + 1..] {
             let overlap = a.core_box().intersect(b.core_box()).area();

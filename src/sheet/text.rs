@@ -47,7 +47,10 @@ impl LabelText {
             bb = bb.union(g.items.last().map(|i| i.bbox()).unwrap_or_default());
         }
         if !self.tail.is_empty() {
-            g.text(Text::new(Point::new(x0 + wm + ws, at.y), self.tail.clone(), h, Anchor::Start));
+            // SVG drops a text's leading white space, so the gap is made by position instead.
+            let trimmed = self.tail.trim_start();
+            let lead = wt - font::metrics().width(trimmed, font::size_for_cap(h));
+            g.text(Text::new(Point::new(x0 + wm + ws + lead, at.y), trimmed, h, Anchor::Start));
             bb = bb.union(g.items.last().map(|i| i.bbox()).unwrap_or_default());
         }
         bb
