@@ -1,7 +1,8 @@
 //! What sheet 1 needs from the mechanics, computed once: the drawn positions (with the
 //! second extreme position), the assigned position, trajectories and structure.
 
-use crate::mechanics::linkage::{Mechanism, PointId, State};
+use crate::mechanics::kinetostatics::{self, ForceError, ForceModel, Forces};
+use crate::mechanics::linkage::{Mechanism, PointId, State, Step};
 use crate::mechanics::motion::{self, Motion, MotionError};
 use crate::mechanics::structure::{self, Structure};
 use crate::model::Settings;
@@ -41,6 +42,8 @@ pub struct Kinematics {
 pub enum AnalysisError {
     #[error(transparent)]
     Motion(#[from] MotionError),
+    #[error("force analysis at φ1 = {phi_deg:.2}°: {error}")]
+    Force { phi_deg: f64, error: ForceError },
     #[error("the solution at φ = {phi_deg:.2}° is not finite (point {point}); the mechanism is too close to a singular position")]
     NotFinite { phi_deg: f64, point: String },
 }
@@ -115,4 +118,33 @@ fn trajectories(m: &Mechanism, motion: &Motion) -> Result<Vec<(PointId, Vec<Vec2
             (p, path)
         })
         .collect())
+}
+
+/// The force analysis at the assigned position φ1.
+#[derive(Debug, Clone)]
+pub struct ForceAnalysis {
+    /// The model with every load's stroke fixed.
+    pub model: ForceModel,
+    pub forces: Forces,
+}
+
+/// Fixes each load's stroke from its slider's extremes, then solves the kinetostatics at
+/// the assigned position.
+pub fn forces(m: &Mechanism, k: &Kinematics, model: &ForceModel) -> Result<ForceAnalysis, AnalysisError> {
+    let model = place_loads(m, &k.motion, model)?;
+    let phi_deg = k.assigned.phi.to_degrees();
+    let forces = kinetostatics::analyse(m, &k.assigned.state, &model).map_err(|error| AnalysisError::Force { phi_deg, error })?;
+    Ok(ForceAnalysis { model, forces })
+}
+
+/// The model with every load's stroke (origin and length) fixed from its slider's extremes.
+pub fn place_loads(m: &Mechanism, motion: &Motion, model: &ForceModel) -> Result<ForceModel, AnalysisError> {
+    let mut model = model.clone();
+    let Some(&Step::Crank { pivot, .. }) = m.steps.first() else { return Ok(model) };
+    let at = m.frame.iter().find(|f| f.0 == pivot).map_or(Vec2::ZERO, |f| f.1);
+    for load in &mut model.loads {
+        let (lo, hi) = motion::extremes_along(m, motion, load.point, load.axis)?;
+        load.set_stroke(lo, hi, at);
+    }
+    Ok(model)
 }

@@ -2,7 +2,7 @@
 
 use crate::model::Language;
 use crate::pipeline::{self, DEFAULT_PROJECT};
-use crate::{report, results};
+use crate::report;
 use anyhow::{bail, Context, Result};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::{Path, PathBuf};
@@ -103,9 +103,20 @@ fn build(args: &BuildArgs) -> Result<()> {
     let (vt, at) = &s1.tables;
     write(out, "sheet1-velocities.csv", report::csv(vt).as_bytes())?;
     write(out, "sheet1-accelerations.csv", report::csv(at).as_bytes())?;
-    let md = format!("{}\n{}", report::markdown(vt, "Table 1. Velocities and angular velocities"), report::markdown(at, "Table 2. Accelerations and angular accelerations"));
+    let mut md = format!("{}\n{}", report::markdown(vt, "Table 1. Velocities and angular velocities"), report::markdown(at, "Table 2. Accelerations and angular accelerations"));
+    if let Some((_, (t3, t4, t5))) = &s1.forces {
+        for (t, file, title) in [
+            (t3, "sheet1-inertia.csv", "Table 3. Inertia forces and moments (per link)"),
+            (t4, "sheet1-reactions.csv", "Table 4. Reactions in the kinematic pairs (R_ij: link i on link j, 0 = frame)"),
+            (t5, "sheet1-balancing.csv", "Table 5. Balancing force: kinetostatics, Zhukovsky lever, power balance"),
+        ] {
+            write(out, file, report::csv(t).as_bytes())?;
+            md.push('\n');
+            md.push_str(&report::markdown(t, title));
+        }
+    }
     write(out, "sheet1-tables.md", md.as_bytes())?;
-    let json = results::json(&project.file.project.title, &project.mechanism, &s1.kinematics, &s1.scales);
+    let json = s1.json(&project);
     write(out, "results.json", json.as_bytes())?;
     eprintln!("sheet 1 of {name} written to {}", out.display());
     Ok(())

@@ -1,7 +1,8 @@
 //! From a project file to finished outputs: the one path the CLI, the tests and the
 //! benchmarks share. Computes only what the requested sheets need.
 
-use crate::analysis::{self, AnalysisError, Kinematics};
+use crate::analysis::{self, AnalysisError, ForceAnalysis, Kinematics};
+use crate::sheet::forces_view::ForceScales;
 use crate::backend::{raster, svg};
 use crate::mechanics::Mechanism;
 use crate::model::{self, ModelError, ProjectFile, Settings};
@@ -38,6 +39,9 @@ pub fn load(text: &str) -> Result<Project, Error> {
 /// Sheet 1 with everything computed for it.
 pub struct Sheet1Result {
     pub kinematics: Kinematics,
+    /// The force analysis at φ1 with tables 3–5, when the project asks for one.
+    pub forces: Option<(ForceAnalysis, (NumTable, NumTable, NumTable))>,
+    pub force_scales: Option<ForceScales>,
     pub scene: Scene,
     pub scales: Scales,
     pub svg: String,
@@ -47,13 +51,35 @@ pub struct Sheet1Result {
 pub fn sheet1(p: &Project) -> Result<Sheet1Result, Error> {
     let kinematics = analysis::kinematics(&p.mechanism, &p.settings)?;
     let tables = report::sheet1_tables(&p.mechanism, &kinematics);
-    let input = Sheet1Input { info: &p.file.project, settings: &p.settings, assumptions: &p.file.mechanism.assumptions, tables: &tables };
+    let forces = match &p.settings.forces {
+        Some(model) => {
+            let fa = analysis::forces(&p.mechanism, &kinematics, model)?;
+            let t = report::force_tables(&p.mechanism, &fa);
+            Some((fa, t))
+        }
+        None => None,
+    };
+    let input = Sheet1Input {
+        info: &p.file.project,
+        settings: &p.settings,
+        assumptions: &p.file.mechanism.assumptions,
+        tables: &tables,
+        forces: forces.as_ref().map(|(fa, t)| (fa, t)),
+    };
     let s = sheet1::compose(&input, &p.mechanism, &kinematics);
     let svg = svg::write(&s.scene);
-    Ok(Sheet1Result { kinematics, scene: s.scene, scales: s.scales, svg, tables })
+    Ok(Sheet1Result { kinematics, forces, force_scales: s.force_scales, scene: s.scene, scales: s.scales, svg, tables })
 }
 
 /// PDF and PNG of a written SVG.
+impl Sheet1Result {
+    /// `results.json` for this sheet.
+    pub fn json(&self, p: &Project) -> String {
+        let forces = self.forces.as_ref().zip(self.force_scales.as_ref()).map(|((fa, _), sc)| (fa, sc));
+        crate::results::json(&p.file.project.title, &p.mechanism, &self.kinematics, &self.scales, forces)
+    }
+}
+
 pub fn pdf_and_png(svg_text: &str, scene: &Scene, png_dpi: Option<f64>) -> Result<(Vec<u8>, Option<Vec<u8>>), Error> {
     let tree = raster::parse(svg_text)?;
     let pdf = raster::pdf(&tree, scene.width, scene.height)?;

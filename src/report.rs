@@ -1,7 +1,9 @@
 //! The tables of the explanatory note ("1-jadval", "2-jadval") as numbers, written as
 //! CSV and Markdown, and every computed quantity as JSON (SI units).
 
-use crate::analysis::{Kinematics, Position};
+use crate::analysis::{ForceAnalysis, Kinematics, Position};
+use crate::mechanics::kinetostatics::{Forces, InertiaLoad, Kind, Part, FRAME};
+use crate::mechanics::load::LoadKind;
 use crate::mechanics::linkage::{LinkKind, Mechanism};
 use crate::mechanics::plans::{relation_values, RelationValues};
 use crate::mechanics::{Kin, LinkKin};
@@ -130,4 +132,70 @@ pub fn markdown(t: &NumTable, title: &str) -> String {
         s.push('\n');
     }
     s
+}
+
+/// The reactions of the note, one per pair: R_ij is the force of link i on link j (0: frame).
+pub fn reactions(m: &Mechanism, f: &Forces) -> Vec<(String, kurbo::Vec2)> {
+    let mut seen: Vec<(usize, usize)> = Vec::new();
+    let mut out = Vec::new();
+    for a in &f.applied {
+        let Kind::Reaction { from, part: Part::Whole } = a.kind else { continue };
+        if seen.contains(&(a.on, from)) {
+            continue;
+        }
+        seen.push((from, a.on));
+        let num = |l: usize| if l == FRAME { 0 } else { m.links[l].number };
+        out.push((format!("{}{}", num(from), num(a.on)), a.force));
+    }
+    out
+}
+
+/// Tables 3–5 of the force analysis: inertia loads per link, reactions per pair, and the
+/// balancing force found three ways.
+pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> (NumTable, NumTable, NumTable) {
+    let f = &fa.forces;
+    let columns = f.inertia.iter().map(|i| m.links[i.link].number.to_string()).collect();
+    let per = |sym: &str, sub: &str, unit: &str, of: &dyn Fn(&InertiaLoad) -> f64| row(sym, sub, unit, f.inertia.iter().map(of).collect());
+    let inertia = NumTable {
+        name: "inertia".into(),
+        columns,
+        rows: vec![
+            per("m", "", "kg", &|i| i.mass),
+            per("G", "", "N", &|i| i.weight),
+            per("a", "S", "m/s²", &|i| i.a_s.hypot()),
+            per("P", "i", "N", &|i| i.force.hypot()),
+            per("ε", "", "1/s²", &|i| i.eps.abs()),
+            per("J", "S", "kg·m²", &|i| i.j),
+            per("M", "i", "N·m", &|i| i.moment.abs()),
+        ],
+    };
+    let reactions = NumTable {
+        name: "reactions".into(),
+        columns: vec!["x".into(), "y".into(), "|R|".into()],
+        rows: reactions(m, f).into_iter().map(|(sub, r)| row("R", sub, "N", vec![r.x, r.y, r.hypot()])).collect(),
+    };
+    let mut rows = vec![];
+    for (load, v) in fa.model.loads.iter().zip(&f.loads) {
+        let n = m.links[load.link].number;
+        rows.push(row("S/H", n.to_string(), "", vec![v.s]));
+        rows.push(row("P", format!("{}{n}", load_letter(load.kind)), "N", vec![v.force.hypot()]));
+    }
+    let delta = |x: f64| if f.p_m != 0.0 { (f.p_m - x) / f.p_m * 100.0 } else { 0.0 };
+    rows.extend([
+        row("P", "m", "N", vec![f.p_m]),
+        row("M", "m", "N·m", vec![f.m_m]),
+        row("P′", "m", "N", vec![f.p_m_lever]),
+        row("Δ", "", "%", vec![delta(f.p_m_lever)]),
+        row("P", "m (N·v)", "N", vec![f.p_m_power]),
+    ]);
+    let balance = NumTable { name: "balance".into(), columns: vec!["".into()], rows };
+    (inertia, reactions, balance)
+}
+
+/// The subscript letter of a load: c for a resistance, g for a gas force.
+pub fn load_letter(kind: LoadKind) -> &'static str {
+    match kind {
+        LoadKind::Resistance => "c",
+        LoadKind::Gas => "g",
+    }
 }

@@ -1,7 +1,9 @@
 //! `results.json`: every quantity computed for the sheets, in SI units (m, m/s, m/s²,
 //! rad, rad/s, rad/s²); angles of positions also in degrees. Documented in the README.
 
-use crate::analysis::{Kinematics, Position};
+use crate::analysis::{ForceAnalysis, Kinematics, Position};
+use crate::report;
+use crate::sheet::forces_view::ForceScales;
 use crate::mechanics::plans::{relation_values, RelationValues};
 use crate::mechanics::Mechanism;
 use crate::sheet::sheet1::Scales;
@@ -45,6 +47,44 @@ struct Sheet1Out<'a> {
     assigned: PositionOut,
     acceleration_plan_positions: Vec<String>,
     trajectories: BTreeMap<String, Vec<[f64; 2]>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    forces: Option<ForcesOut>,
+}
+
+#[derive(Serialize)]
+struct InertiaOut {
+    mass: f64,
+    j_s: f64,
+    a_s: [f64; 2],
+    epsilon: f64,
+    inertia_force: [f64; 2],
+    inertia_moment: f64,
+    weight: f64,
+}
+
+#[derive(Serialize)]
+struct LoadOut {
+    link: u32,
+    point: String,
+    stroke_fraction: f64,
+    stroke: f64,
+    moving_along_axis: bool,
+    force: [f64; 2],
+}
+
+#[derive(Serialize)]
+struct ForcesOut {
+    phi_deg: f64,
+    inertia: BTreeMap<String, InertiaOut>,
+    loads: Vec<LoadOut>,
+    reactions: BTreeMap<String, [f64; 2]>,
+    balancing_force: f64,
+    balancing_direction: [f64; 2],
+    balancing_moment: f64,
+    balancing_force_lever: f64,
+    balancing_force_power: f64,
+    difference_percent: f64,
+    scales: ForceScales,
 }
 
 #[derive(Serialize)]
@@ -78,7 +118,39 @@ fn position_out(m: &Mechanism, k: &Kinematics, p: &Position) -> PositionOut {
     }
 }
 
-pub fn json(title: &str, m: &Mechanism, k: &Kinematics, scales: &Scales) -> String {
+fn forces_out(m: &Mechanism, k: &Kinematics, fa: &ForceAnalysis, scales: &ForceScales) -> ForcesOut {
+    let f = &fa.forces;
+    let inertia = f
+        .inertia
+        .iter()
+        .map(|i| {
+            let out = InertiaOut { mass: i.mass, j_s: i.j, a_s: v2(i.a_s), epsilon: i.eps, inertia_force: v2(i.force), inertia_moment: i.moment, weight: i.weight };
+            (m.links[i.link].number.to_string(), out)
+        })
+        .collect();
+    let loads = fa
+        .model
+        .loads
+        .iter()
+        .zip(&f.loads)
+        .map(|(l, v)| LoadOut { link: m.links[l.link].number, point: m.name(l.point).into(), stroke_fraction: v.s, stroke: l.stroke, moving_along_axis: v.branch == 0, force: v2(v.force) })
+        .collect();
+    ForcesOut {
+        phi_deg: k.assigned.phi.to_degrees(),
+        inertia,
+        loads,
+        reactions: report::reactions(m, f).into_iter().map(|(name, r)| (format!("R{name}"), v2(r))).collect(),
+        balancing_force: f.p_m,
+        balancing_direction: v2(f.dir_m),
+        balancing_moment: f.m_m,
+        balancing_force_lever: f.p_m_lever,
+        balancing_force_power: f.p_m_power,
+        difference_percent: if f.p_m != 0.0 { (f.p_m - f.p_m_lever) / f.p_m * 100.0 } else { 0.0 },
+        scales: scales.clone(),
+    }
+}
+
+pub fn json(title: &str, m: &Mechanism, k: &Kinematics, scales: &Scales, forces: Option<(&ForceAnalysis, &ForceScales)>) -> String {
     let sheet1 = Sheet1Out {
         omega1: m.omega1,
         crank_sense: if k.motion.sense > 0.0 { "ccw" } else { "cw" },
@@ -90,7 +162,8 @@ pub fn json(title: &str, m: &Mechanism, k: &Kinematics, scales: &Scales) -> Stri
         assigned: position_out(m, k, &k.assigned),
         acceleration_plan_positions: k.acceleration.iter().map(|&i| k.positions[i].label.clone()).collect(),
         trajectories: k.trajectories.iter().map(|(id, path)| (m.name(*id).to_string(), path.iter().map(|&v| v2(v)).collect())).collect(),
+        forces: forces.map(|(fa, sc)| forces_out(m, k, fa, sc)),
     };
-    let r = Results { units: "SI: m, m/s, m/s², rad, rad/s, rad/s²", title, sheet1 };
+    let r = Results { units: "SI: m, m/s, m/s², rad, rad/s, rad/s², kg, N, N·m", title, sheet1 };
     serde_json::to_string_pretty(&r).expect("results serialise")
 }

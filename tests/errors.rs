@@ -183,3 +183,55 @@ fn near_singular_four_bars_are_finite_or_refused() {
         }
     }
 }
+
+#[test]
+fn force_analysis_without_a_mass_names_the_links() {
+    let e = error_of("    - {link: 4, mass: 85, inertia: 36}\n", "");
+    assert!(e.contains("forces.links") && e.contains("no mass for link(s) 4") && e.contains(&format!("line {}", line_of("forces:") + 1)), "{e}");
+    let e = error_of("{link: 3, mass: 25, inertia: 1.1}", "{link: 3, inertia: 1.1}");
+    assert!(e.contains("link 3 needs `mass` (kg) or `q` (kg/m)") && e.contains(&format!("line {}", line_of("link: 3, mass: 25"))), "{e}");
+    let e = error_of("{link: 3, mass: 25, inertia: 1.1}", "{link: 3, mass: 25, q: 20}");
+    assert!(e.contains("either `mass` or `q`"), "{e}");
+    let e = error_of("{link: 5, mass: 500}", "{link: 5, q: 20}");
+    assert!(e.contains("link 5 has no fixed length"), "{e}");
+    let e = error_of("{link: 5, mass: 500}", "{link: 7, mass: 500}");
+    assert!(e.contains("there is no link 7"), "{e}");
+}
+
+#[test]
+fn moment_of_inertia_must_be_a_number_or_rod() {
+    let e = error_of("inertia: 0.5}", "inertia: stick}");
+    assert!(e.contains("expected a number or `rod`") && e.contains(&format!("line {}", line_of("inertia: 0.5"))), "{e}");
+    let e = error_of("inertia: 0.5}", "inertia: -1}");
+    assert!(e.contains("moment of inertia ≥ 0"), "{e}");
+}
+
+#[test]
+fn indicator_table_must_be_monotone_in_stroke() {
+    let load = "resistance: {point: D, working: forward, force: 4600, idle_force: 1650}";
+    let e = error_of(load, "resistance: {point: D, working: forward, force: 4600, diagram: [[0, 0], [0.6, 1], [0.5, 1], [1, 0.2]]}");
+    assert!(e.contains("forces.loads[0].resistance.diagram") && e.contains("must increase: row 3 (0.5) does not come after row 2 (0.6)"), "{e}");
+    assert!(e.contains(&format!("line {}", line_of(load))), "{e}");
+    let e = error_of(load, "resistance: {point: D, working: forward, force: 4600, diagram: [[0.1, 0], [1, 1]]}");
+    assert!(e.contains("from 0 to 1"), "{e}");
+    let gas = "gas: {point: D, force: 1000, indicator: table, table: {toward_head: [[0, 1], [1, 1]], away_from_head: [[0, 1], [1, 1], [0.9, 0]]}}";
+    let e = error_of(load, gas);
+    assert!(e.contains("table.away_from_head") && e.contains("must increase"), "{e}");
+}
+
+#[test]
+fn gas_and_resistance_loads_are_checked() {
+    let load = "resistance: {point: D, working: forward, force: 4600, idle_force: 1650}";
+    let e = error_of(load, "resistance: {point: B, working: forward, force: 4600}");
+    assert!(e.contains("'B' is not the slider point of an RRP group"), "{e}");
+    let e = error_of(load, "gas: {point: D, bore: 0.1, indicator: engine}");
+    assert!(e.contains("give either `force` (N), or `bore` (m) and `pressure` (Pa)"), "{e}");
+    let e = error_of(load, "gas: {point: D, force: 100, indicator: engine, revolution: 3}");
+    assert!(e.contains("revolutions 1 and 2, not 3"), "{e}");
+    let e = error_of(load, "gas: {point: D, force: 100, indicator: table}");
+    assert!(e.contains("`indicator: table` needs `table`"), "{e}");
+    let e = error_of(load, "gas: {point: D, force: 100, indicator: compressor-stage-3}");
+    assert!(e.contains("unknown variant `compressor-stage-3`") && e.contains("compressor-stage-1"), "{e}");
+    let e = error_of("idle_force: 1650", "idel_force: 1650");
+    assert!(e.contains("unknown field `idel_force`") && e.contains(&format!("line {}", line_of("idle_force"))), "{e}");
+}

@@ -208,7 +208,11 @@ fn worked_example_matches_the_reference_sheets() {
     compare_or_update("sheet1.svg", &r.svg);
     compare_or_update("sheet1-velocities.csv", &report::csv(&r.tables.0));
     compare_or_update("sheet1-accelerations.csv", &report::csv(&r.tables.1));
-    let json = tmm_sheets::results::json(&p.file.project.title, &p.mechanism, &r.kinematics, &r.scales);
+    let json = r.json(&p);
+    let (_, (t3, t4, t5)) = r.forces.as_ref().expect("the worked example has a force analysis");
+    compare_or_update("sheet1-inertia.csv", &report::csv(t3));
+    compare_or_update("sheet1-reactions.csv", &report::csv(t4));
+    compare_or_update("sheet1-balancing.csv", &report::csv(t5));
     compare_json_or_update("results.json", &json);
     if std::env::var_os("UPDATE").is_some() {
         let (pdf, png) = pipeline::pdf_and_png(&r.svg, &r.scene, Some(60.0)).unwrap();

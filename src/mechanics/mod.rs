@@ -5,7 +5,9 @@
 
 pub mod dyads;
 pub mod kin;
+pub mod kinetostatics;
 pub mod linkage;
+pub mod load;
 pub mod motion;
 pub mod plans;
 pub mod structure;

@@ -148,6 +148,16 @@ fn output_extremes(
 ) -> Vec<(f64, f64)> {
     let vel = |s: &State| m.output_value(s).1;
     let value = |s: &State| output_coordinate(m, s, reference);
+    extremes(states, solve, &vel, &value)
+}
+
+/// Roots of `vel` over a turn of scanned `states`, refined by bisection: (φ, `value` there).
+fn extremes(
+    states: &[(f64, State)],
+    solve: &dyn Fn(f64) -> Result<State, StepFailure>,
+    vel: &dyn Fn(&State) -> f64,
+    value: &dyn Fn(&State) -> f64,
+) -> Vec<(f64, f64)> {
     let mut roots = Vec::new();
     for i in 0..states.len() {
         let (p0, s0) = &states[i];
@@ -212,6 +222,17 @@ fn assembly_error(
         return MotionError::DeadPoint { group, at_deg: deg(phi), detail };
     }
     MotionError::CannotAssemble { group, from_deg: deg(from), to_deg: deg(to), detail }
+}
+
+/// The smallest and largest value of p·`axis` that `point` reaches over a turn (a slider's
+/// stroke ends), exact to the bisection's resolution.
+pub fn extremes_along(m: &Mechanism, motion: &Motion, point: super::linkage::PointId, axis: kurbo::Vec2) -> Result<(f64, f64), MotionError> {
+    let states: Vec<(f64, State)> =
+        (0..SCAN_SAMPLES).map(|k| TAU * k as f64 / SCAN_SAMPLES as f64).map(|phi| sample_at(m, motion, phi).map(|s| (phi, s))).collect::<Result<_, _>>()?;
+    let solve = |phi: f64| m.solve(motion.theta(phi));
+    let roots = extremes(&states, &solve, &|s| s.points[point].v.dot(axis), &|s| s.points[point].p.dot(axis));
+    let values = roots.iter().map(|r| r.1).chain(states.iter().map(|(_, s)| s.points[point].p.dot(axis)));
+    Ok(values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x))))
 }
 
 /// Solves the mechanism at `n` equally spaced course angles starting at position 0.

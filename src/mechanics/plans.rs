@@ -92,6 +92,16 @@ impl Plan {
     fn seg(&mut self, from: Vec2, to: Vec2, kind: SegKind) {
         self.segs.push(Seg { from, to, kind });
     }
+    /// The plan turned 90° counter-clockwise (`sense` = 1) or clockwise (−1) about its pole,
+    /// as the Zhukovsky lever uses it.
+    pub fn turned(&self, sense: f64) -> Plan {
+        let t = |v: Vec2| v.turn_90() * sense;
+        Plan {
+            images: self.images.iter().map(|i| Image { label: i.label.clone(), at: t(i.at) }).collect(),
+            segs: self.segs.iter().map(|s| Seg { from: t(s.from), to: t(s.to), kind: s.kind }).collect(),
+        }
+    }
+
     /// Largest distance of any image or vector end from the pole.
     pub fn extent(&self) -> f64 {
         let ends = self.segs.iter().flat_map(|s| [s.from, s.to]);

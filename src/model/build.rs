@@ -4,6 +4,7 @@
 use super::spec::*;
 use super::ModelError;
 use crate::mechanics::linkage::{Group, Link, LinkId, LinkKind, Mechanism, Output, PointId, Step};
+use crate::mechanics::kinetostatics::ForceModel;
 use crate::mechanics::{DyadKind, Start};
 use kurbo::Vec2;
 use serde_saphyr::{Location, Spanned};
@@ -69,6 +70,8 @@ pub struct Settings {
     pub crank_length: f64,
     /// Drawn lengths of kulisas, by link.
     pub kulisa_lengths: Vec<(LinkId, Option<f64>)>,
+    /// Masses and loads, when the project asks for a force analysis.
+    pub forces: Option<ForceModel>,
 }
 
 pub fn build(file: &ProjectFile) -> Result<(Mechanism, Settings), ModelError> {
@@ -118,7 +121,8 @@ pub fn build(file: &ProjectFile) -> Result<(Mechanism, Settings), ModelError> {
         return Err(invalid(at(&p.name), "mechanism.points", format!("point '{}' cannot be placed: {why}", p.name.value)));
     }
     b.m.output = resolve_output(&b, spec)?;
-    let settings = settings(file, sense, kulisa_lengths)?;
+    let mut settings = settings(file, sense, kulisa_lengths)?;
+    settings.forces = file.forces.as_ref().map(|f| super::forces::build_forces(f, &b.m)).transpose()?;
     Ok((b.m, settings))
 }
 
@@ -311,5 +315,6 @@ fn settings(file: &ProjectFile, sense: f64, kulisa_lengths: Vec<(LinkId, Option<
         acceleration_plans,
         crank_length: file.mechanism.crank.length.0,
         kulisa_lengths,
+        forces: None,
     })
 }

@@ -1,6 +1,8 @@
 //! The input model: the project file (YAML) and its translation into a mechanism.
 
 mod build;
+mod forces;
+mod indicators;
 pub mod spec;
 
 pub use build::{build, Settings};

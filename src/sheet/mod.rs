@@ -6,6 +6,7 @@
 
 pub mod draw;
 pub mod fmt;
+pub mod forces_view;
 pub mod frame;
 pub mod labels;
 pub mod mechanism_view;

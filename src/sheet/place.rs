@@ -31,28 +31,32 @@ impl Placer {
     /// (paper coordinates). Tries eight directions at growing distances; if none is free
     /// it keeps the preferred spot (the overlap test then reports it).
     pub fn place(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64) -> Text {
-        let base = if pref.hypot() > 1e-9 { pref.normalize() } else { Vec2::new(1.0, -1.0).normalize() };
         let probe = Text::new(Point::ZERO, text, h, Anchor::Middle);
         let bb = probe.bbox();
-        let (w, ht) = (bb.width(), bb.height());
+        let r = self.place_box(anchor, pref, bb.width(), bb.height());
+        // The text's baseline sits where its box (descender to cap height) puts it.
+        Text::new(Point::new(r.center().x, r.y1 - (bb.y1 - probe.at.y)), text, h, Anchor::Middle)
+    }
+
+    /// A free box of `w` × `ht` beside `anchor` (see [`Placer::place`]), now taken.
+    pub fn place_box(&mut self, anchor: Point, pref: Vec2, w: f64, ht: f64) -> Rect {
+        let base = if pref.hypot() > 1e-9 { pref.normalize() } else { Vec2::new(1.0, -1.0).normalize() };
         let mut first = None;
-        for dist in [GAP, GAP + 1.5, GAP + 3.5, GAP + 6.0] {
-            for i in 0..8 {
-                let ang = [0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0][i];
+        for dist in [GAP, GAP + 1.5, GAP + 3.5, GAP + 6.0, GAP + 9.0, GAP + 13.0, GAP + 18.0, GAP + 24.0] {
+            for ang in [0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0] {
                 let d = rotate(base, ang);
                 let centre = anchor + Vec2::new(d.x * (w / 2.0 + dist), d.y * (ht / 2.0 + dist));
-                let t = Text::new(Point::new(centre.x, centre.y + ht / 2.0 - h * 0.3), text, h, Anchor::Middle);
-                let r = t.bbox();
-                first.get_or_insert((t.clone(), r));
+                let r = Rect::new(centre.x - w / 2.0, centre.y - ht / 2.0, centre.x + w / 2.0, centre.y + ht / 2.0);
+                first.get_or_insert(r);
                 if self.free(&r) {
                     self.taken.push(r);
-                    return t;
+                    return r;
                 }
             }
         }
-        let (t, r) = first.expect("at least one candidate");
+        let r = first.expect("at least one candidate");
         self.taken.push(r);
-        t
+        r
     }
 }
 

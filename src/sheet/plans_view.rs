@@ -67,7 +67,13 @@ fn pen_of(kind: SegKind) -> Pen {
 /// Draws one plan in `cell` at scale `mu`, with the pole named `pole`.
 pub fn draw_plan(g: &mut Group, cell: Rect, title: &str, plan: &Plan, mu: f64, pole: &str) {
     let inner = Rect::new(cell.x0 + 1.0, cell.y0 + TITLE, cell.x1 - 1.0, cell.y1 - 1.0);
-    let mut placer = Placer::new(inner);
+    draw_plan_with(g, cell, title, plan, mu, pole, &mut Placer::new(inner));
+}
+
+/// [`draw_plan`] with the caller's label placer (to add labels of its own afterwards);
+/// returns the paper position of the pole.
+pub fn draw_plan_with(g: &mut Group, cell: Rect, title: &str, plan: &Plan, mu: f64, pole: &str, placer: &mut Placer) -> Point {
+    let inner = Rect::new(cell.x0 + 1.0, cell.y0 + TITLE, cell.x1 - 1.0, cell.y1 - 1.0);
     let t = Text::new(Point::new(cell.x0 + 2.0, cell.y0 + 4.5), title, 3.5, Anchor::Start);
     placer.block(t.bbox());
     g.text(t);
@@ -100,4 +106,5 @@ pub fn draw_plan(g: &mut Group, cell: Rect, title: &str, plan: &Plan, mu: f64, p
         let pref = if (*at - centre).hypot() < 1e-6 { Vec2::new(-1.0, 1.0) } else { *at - centre };
         g.text(placer.place(*at, pref, &names.join("="), 3.5));
     }
+    pole_p
 }

@@ -15,7 +15,8 @@ use super::scale;
 use super::scene::{Anchor, Group, Scene, Text};
 use super::table::Table;
 use super::text::{paragraph, wrap, LabelText};
-use crate::analysis::{Kinematics, Position};
+use super::forces_view::{draw_forces, ForceScales, ForcesInput};
+use crate::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::mechanics::linkage::Mechanism;
 use crate::mechanics::plans::{acceleration_plan, velocity_plan, Plan};
 use crate::model::{Language, ProjectInfo, Settings};
@@ -36,6 +37,7 @@ pub struct Scales {
 pub struct Sheet1 {
     pub scene: Scene,
     pub scales: Scales,
+    pub force_scales: Option<ForceScales>,
 }
 
 /// Inputs of sheet 1 beyond the mechanics.
@@ -45,6 +47,8 @@ pub struct Sheet1Input<'a> {
     pub assumptions: &'a [String],
     /// The note's tables 1 and 2 ([`report::sheet1_tables`]), computed once by the caller.
     pub tables: &'a (NumTable, NumTable),
+    /// The force analysis and its tables 3–5, when the project asks for one.
+    pub forces: Option<(&'a ForceAnalysis, &'a (NumTable, NumTable, NumTable))>,
 }
 
 const TOP: f64 = 12.0;
@@ -52,6 +56,9 @@ const TOP: f64 = 12.0;
 const MECH_MAX_W: f64 = 450.0;
 const MECH_MAX_H: f64 = 300.0;
 const MECH_MIN_W: f64 = 200.0;
+/// With a force analysis the mechanism leaves room below it for the force drawings.
+const MECH_MAX_H_FORCES: f64 = 215.0;
+const FORCES_MIN_W: f64 = 470.0;
 /// Space around the mechanism drawing for its letters, pivots and guides.
 const MECH_PAD: f64 = 14.0;
 /// A region's title and scale lines.
@@ -68,7 +75,8 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
 
     // Mechanism: the largest round μ_l that fits, then the region shrinks to the drawing.
     let world = world_extent(m, k, &inp.settings.kulisa_lengths);
-    let (avail_w, avail_h) = (MECH_MAX_W - 2.0 * MECH_PAD, MECH_MAX_H - HEADER - 2.0 * MECH_PAD);
+    let max_h = if inp.forces.is_some() { MECH_MAX_H_FORCES } else { MECH_MAX_H };
+    let (avail_w, avail_h) = (MECH_MAX_W - 2.0 * MECH_PAD, max_h - HEADER - 2.0 * MECH_PAD);
     let mu_l = scale::length_scale((world.width() / avail_w).max(world.height() / avail_h));
     let draw_w = (world.width() / mu_l).max(MECH_MIN_W);
     let draw_h = world.height() / mu_l;
@@ -88,8 +96,13 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
     mech.text(legend);
     MechanismView { m, k, view: View { mu: mu_l, origin }, kulisa: &inp.settings.kulisa_lengths }.draw(&mut mech, &mut placer);
 
+    // With a force analysis, its drawings fill the left column below the mechanism and the
+    // acceleration plans move to the right column.
+    let force_region = inp.forces.map(|_| Rect::new(inner.x0 + 5.0, mech_region.y1 + 4.0, mech_region.x1.max(inner.x0 + 5.0 + FORCES_MIN_W), inner.y1 - 4.0));
+    let left_x1 = force_region.map_or(mech_region.x1, |r| r.x1);
+
     // Right column: the tables above the title block decide how tall the velocity plans are.
-    let right_x0 = mech_region.x1 + 6.0;
+    let right_x0 = left_x1 + 6.0;
     let (vt, at) = inp.tables;
     let t1 = sheet_table(vt, l.get("velocity_table"), lang);
     let t2 = sheet_table(at, l.get("acceleration_table"), lang);
@@ -102,13 +115,18 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
     let tables_top = frame::title_block_rect().y0 - 3.0 - notes_lines - tables_h - 4.0;
 
     // Velocity plans: every position, one common μ_v.
-    let vel_region = Rect::new(right_x0, TOP, inner.x1 - 4.0, tables_top - 6.0);
+    let plans_bottom = tables_top - 6.0;
+    let vel_bottom = if force_region.is_some() { TOP + (plans_bottom - TOP) * 0.58 } else { plans_bottom };
+    let vel_region = Rect::new(right_x0, TOP, inner.x1 - 4.0, vel_bottom);
     let vplans: Vec<_> = k.positions.iter().map(|p| velocity_plan(m, &p.state)).collect();
     let mut vel = Group::new("velocity-plans", vel_region);
     let mu_v = plans_region(&mut vel, vel_region, &vplans, k.positions.iter().collect(), "p", &l, lang, ("velocity_plans", "v", "unit_v"));
 
     // Acceleration plans: the chosen positions, one common μ_a.
-    let acc_region = Rect::new(inner.x0 + 5.0, mech_region.y1 + 4.0, mech_region.x1, inner.y1 - 4.0);
+    let acc_region = match force_region {
+        Some(_) => Rect::new(right_x0, vel_bottom + 4.0, inner.x1 - 4.0, plans_bottom),
+        None => Rect::new(inner.x0 + 5.0, mech_region.y1 + 4.0, mech_region.x1, inner.y1 - 4.0),
+    };
     let aplans: Vec<_> = k.acceleration.iter().map(|&i| acceleration_plan(m, &k.positions[i].state)).collect();
     let mut acc = Group::new("acceleration-plans", acc_region);
     let mu_a = plans_region(&mut acc, acc_region, &aplans, k.acceleration.iter().map(|&i| &k.positions[i]).collect(), "π", &l, lang, ("acceleration_plans", "a", "unit_a"));
@@ -122,11 +140,24 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
     let notes_top = r1.y1.max(r2.y1) + 4.0;
     notes(&mut tables, &l, inp.assumptions, Rect::new(tables_region.x0, notes_top, tables_region.x1, tables_region.y1));
 
+    let mut force_scales = None;
+    let mut extra = Vec::new();
+    if let (Some(region), Some((fa, (t3, t4, t5)))) = (force_region, inp.forces) {
+        let mut fg = Group::new("forces", region);
+        let tables = vec![
+            sheet_table(t3, l.get("inertia_table"), lang),
+            Table { label_w: 12.0, cell_w: 16.0, ..sheet_table(t4, l.get("reaction_table"), lang) },
+            Table { label_w: 16.0, cell_w: 18.0, header: vec![l.get("value").to_string()], ..sheet_table(t5, l.get("balance_table"), lang) },
+        ];
+        let input = ForcesInput { m, fa, state: &k.assigned.state, phi_deg: k.assigned.phi.to_degrees(), labels: &l, lang, tables };
+        force_scales = Some(draw_forces(&mut fg, region, &input));
+        extra.push(fg);
+    }
     let organisation = [inp.info.institution.as_str(), inp.info.group.as_str()].iter().filter(|s| !s.is_empty()).copied().collect::<Vec<_>>().join(", ");
     let mut tb = Group::new("title-block", frame::title_block_rect());
     frame::title_block(&mut tb, &l, &TitleBlock {
         designation: &inp.info.designation,
-        sheet_name: l.get("sheet1_name"),
+        sheet_name: l.get(if inp.forces.is_some() { "sheet1_name_forces" } else { "sheet1_name" }),
         project_title: &inp.info.title,
         student: &inp.info.student,
         supervisor: &inp.info.supervisor,
@@ -135,8 +166,9 @@ pub fn compose(inp: &Sheet1Input, m: &Mechanism, k: &Kinematics) -> Sheet1 {
         sheet_no: 1,
     });
     groups.extend([fr, mech, vel, acc, tables, tb]);
-    let title = format!("{} — {}", inp.info.title, l.get("sheet1_name"));
-    Sheet1 { scene: Scene { width: A1_W, height: A1_H, title, groups }, scales: Scales { mu_l, mu_v, mu_a } }
+    groups.extend(extra);
+    let title = format!("{} — {}", inp.info.title, l.get(if inp.forces.is_some() { "sheet1_name_forces" } else { "sheet1_name" }));
+    Sheet1 { scene: Scene { width: A1_W, height: A1_H, title, groups }, scales: Scales { mu_l, mu_v, mu_a }, force_scales }
 }
 
 /// A region's title (5 mm) and its line of scale and formula (3.5 mm).

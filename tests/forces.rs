@@ -1,0 +1,138 @@
+//! The force analysis: every link in equilibrium, Newton's third law, the balancing force
+//! three ways (kinetostatics, Zhukovsky lever, power balance), and a closed-form case.
+
+mod common;
+
+use common::{close, fixture, fixture_names};
+use proptest::prelude::*;
+use tmm_sheets::analysis;
+use tmm_sheets::mechanics::kinetostatics::{self, Forces, Kind, FRAME};
+use tmm_sheets::mechanics::motion;
+use tmm_sheets::pipeline;
+
+fn largest_force(f: &Forces) -> f64 {
+    f.applied.iter().map(|a| a.force.hypot()).fold(0.0, f64::max)
+}
+
+fn analysed(name: &str) -> (tmm_sheets::pipeline::Project, Forces) {
+    let p = fixture(name);
+    let k = analysis::kinematics(&p.mechanism, &p.settings).expect("kinematics");
+    let model = p.settings.forces.as_ref().unwrap_or_else(|| panic!("{name} has a force analysis"));
+    let fa = analysis::forces(&p.mechanism, &k, model).unwrap_or_else(|e| panic!("{name}: {e}"));
+    (p, fa.forces)
+}
+
+#[test]
+fn every_link_of_every_fixture_is_in_equilibrium() {
+    for name in fixture_names() {
+        let (p, f) = analysed(&name);
+        let scale = largest_force(&f);
+        assert!(scale > 0.0, "{name}: no forces at all");
+        for link in 0..p.mechanism.links.len() {
+            let (r, m) = f.residual(link);
+            let arm = 1.0 + f.on(link).map(|a| a.at.hypot()).fold(0.0, f64::max);
+            assert!(r.hypot() <= 1e-9 * scale, "{name}: link {} force residual {r:?} (largest force {scale})", p.mechanism.links[link].number);
+            assert!(m.abs() <= 1e-9 * scale * arm, "{name}: link {} moment residual {m}", p.mechanism.links[link].number);
+        }
+    }
+}
+
+#[test]
+fn reactions_obey_newtons_third_law() {
+    for name in fixture_names() {
+        let (p, f) = analysed(&name);
+        let mut pairs = 0;
+        for a in &f.applied {
+            let Kind::Reaction { from, .. } = a.kind else { continue };
+            if from == FRAME {
+                continue;
+            }
+            let back = f.applied.iter().find(|b| b.on == from && matches!(b.kind, Kind::Reaction { from: x, .. } if x == a.on) && (b.at - a.at).hypot() < 1e-12);
+            let b = back.unwrap_or_else(|| panic!("{name}: no reaction of link {} on {}", p.mechanism.links[a.on].number, p.mechanism.links[from].number));
+            assert!((a.force + b.force).hypot() <= 1e-12 * a.force.hypot().max(1.0), "{name}: R_ij + R_ji = {:?}", a.force + b.force);
+            pairs += 1;
+        }
+        // Every group has an inner pair and joins something moving or the crank.
+        assert!(pairs >= 2 * p.mechanism.groups.len(), "{name}: only {pairs} reactions between links");
+    }
+}
+
+#[test]
+fn every_polygon_closes() {
+    for name in fixture_names() {
+        let (_, f) = analysed(&name);
+        let scale = largest_force(&f);
+        for poly in &f.polygons {
+            let sum = poly.terms.iter().fold(kurbo::Vec2::ZERO, |s, t| s + t.force);
+            assert!(sum.hypot() <= 1e-9 * scale, "{name}: polygon of group {:?} leaves {sum:?}", poly.group);
+            if let Some(inner) = poly.inner {
+                let first = poly.terms[..poly.split].iter().fold(inner.force, |s, t| s + t.force);
+                assert!(first.hypot() <= 1e-9 * scale, "{name}: the first link's part of group {:?} does not close with the inner reaction", poly.group);
+            }
+        }
+    }
+}
+
+#[test]
+fn balancing_force_agrees_three_ways_on_every_fixture() {
+    for name in fixture_names() {
+        let (_, f) = analysed(&name);
+        assert!(close(f.p_m, f.p_m_lever, 1e-9, 1e-9), "{name}: kinetostatics {} vs lever {}", f.p_m, f.p_m_lever);
+        assert!(close(f.p_m, f.p_m_power, 1e-9, 1e-9), "{name}: kinetostatics {} vs power {}", f.p_m, f.p_m_power);
+    }
+}
+
+/// P_m at course angle `phi` with the fixture's masses and loads.
+fn p_m_at(p: &tmm_sheets::pipeline::Project, k: &analysis::Kinematics, phi: f64) -> Forces {
+    let model = analysis::place_loads(&p.mechanism, &k.motion, p.settings.forces.as_ref().expect("forces")).expect("loads placed");
+    let s = motion::sample_at(&p.mechanism, &k.motion, phi).expect("assembles");
+    kinetostatics::analyse(&p.mechanism, &s, &model).expect("solvable")
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+    #[test]
+    fn kinetostatic_p_m_is_the_power_balance_at_any_angle(which in 0usize..8, phi in 0.0f64..std::f64::consts::TAU) {
+        let names = fixture_names();
+        let name = &names[which % names.len()];
+        let p = fixture(name);
+        let k = analysis::kinematics(&p.mechanism, &p.settings).expect("kinematics");
+        let f = p_m_at(&p, &k, phi);
+        prop_assert!(close(f.p_m, f.p_m_power, 1e-9, 1e-9 * largest_force(&f)), "{} at φ = {}: {} vs {}", name, phi, f.p_m, f.p_m_power);
+        prop_assert!(close(f.p_m, f.p_m_lever, 1e-9, 1e-9 * largest_force(&f)));
+    }
+}
+
+/// An axial crank-slider, massless, under a constant gas force F on the piston: the
+/// textbook balancing force is P_m = F·sin(θ + β)/cos β, with θ the crank angle from the
+/// dead centre beyond which the piston lies and sin β = (r/l)·sin θ.
+#[test]
+fn massless_crank_slider_under_a_constant_force_matches_the_closed_form() {
+    let (r, l, force) = (0.05, 0.2, 1000.0);
+    let text = format!(
+        "project: {{title: t}}
+mechanism:
+  frame: [{{name: O, at: [0, 0]}}]
+  crank: {{pivot: O, pin: A, length: {r}, rpm: 100, sense: ccw}}
+  groups:
+    - rrp: {{links: [2, 3], joint: A, point: B, length: {l}, guide: {{through: [0, 0], angle_deg: 0}}, branch: forward}}
+analysis: {{positions: 12, start: max}}
+forces:
+  links: [{{link: 2, mass: 0}}, {{link: 3, mass: 0}}]
+  loads:
+    - gas: {{point: B, force: {force}, indicator: table, table: {{toward_head: [[0, 1], [1, 1]], away_from_head: [[0, 1], [1, 1]]}}}}
+"
+    );
+    let p = pipeline::load(&text).unwrap_or_else(|e| panic!("{e}: {e:?}"));
+    let k = analysis::kinematics(&p.mechanism, &p.settings).expect("kinematics");
+    for deg in [10.0, 45.0, 90.0, 135.0, 200.0, 300.0] {
+        let phi = f64::to_radians(deg);
+        let f = p_m_at(&p, &k, phi);
+        // Position 0 is the outer dead centre (start: max), so θ = φ measured from +x.
+        let beta = (r / l * phi.sin()).asin();
+        let expected = force * (phi + beta).sin() / beta.cos();
+        // The gas pushes the piston towards the crank (−x); at θ in (0, 180°) the piston moves
+        // towards the crank, so the gas drives and the balancing force opposes the motion.
+        assert!(close(f.p_m, -expected, 1e-12, 1e-9), "θ = {deg}°: P_m = {} vs closed form {}", f.p_m, -expected);
+    }
+}
