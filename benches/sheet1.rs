@@ -24,6 +24,17 @@ fn solve_360_positions(bencher: divan::Bencher) {
     });
 }
 
+/// The force analysis at φ1 alone (inertia, groups, crank, lever, power balance), with the
+/// loads already placed on their strokes.
+#[divan::bench]
+fn kinetostatics_at_phi1(bencher: divan::Bencher) {
+    use tmm_sheets::{analysis, mechanics::kinetostatics};
+    let p = pipeline::load(DEFAULT_PROJECT).unwrap();
+    let k = analysis::kinematics(&p.mechanism, &p.settings).unwrap();
+    let model = analysis::place_loads(&p.mechanism, &k.motion, p.settings.forces.as_ref().unwrap()).unwrap();
+    bencher.bench_local(|| divan::black_box(kinetostatics::analyse(&p.mechanism, &k.assigned.state, &model).unwrap().p_m));
+}
+
 /// Everything sheet 1 needs, from the parsed project to the SVG text.
 #[divan::bench]
 fn sheet1_to_svg(bencher: divan::Bencher) {
