@@ -34,7 +34,7 @@ const CELL_TITLE: f64 = 8.0;
 const LINE: f64 = 5.0;
 const GAP: f64 = 6.0;
 const LOAD_W: f64 = 96.0;
-const LOAD_H: f64 = 70.0;
+const LOAD_H: f64 = 78.0;
 
 pub struct ForcesInput<'a> {
     pub m: &'a Mechanism,
@@ -72,19 +72,32 @@ struct Cell {
     content: Content,
 }
 
-/// Sizes that one layout attempt uses, mm: each group drawing's largest side (at a GOST
-/// scale no larger), each force polygon's and the lever's.
+/// Sizes that one layout attempt uses, mm: the largest group drawing's longest side (at a
+/// GOST scale no larger), each force polygon's and the lever's.
 #[derive(Clone, Copy)]
 struct Sizes {
     group_box: f64,
     poly_box: f64,
     lever_box: f64,
+    /// Longest side of the largest group (or crank) in the world, m.
+    widest: f64,
 }
 
 impl Sizes {
-    /// The group drawing's length scale: the GOST scale that fits its box.
+    /// A drawing's length scale: the common GOST scale that fits the largest group into its
+    /// box, unless that leaves this drawing shorter than half the box (a crank beside a
+    /// long rod); then its own GOST scale for that half.
     fn mu_l(&self, wb: Rect) -> f64 {
-        scale::length_scale((wb.width().max(wb.height()) / self.group_box).max(1e-6))
+        let common = scale::length_scale((self.widest / self.group_box).max(1e-6));
+        let side = wb.width().max(wb.height());
+        let least = self.group_box / 2.0;
+        if side / common >= least { common } else { scale::length_scale((side / least).max(1e-6)) }
+    }
+
+    fn shrunk(self) -> Sizes {
+        const STEP: f64 = 0.9;
+        // The groups are what overflow; the polygons and the lever keep a readable floor.
+        Sizes { group_box: self.group_box * STEP, poly_box: (self.poly_box * STEP).max(60.0), lever_box: (self.lever_box * STEP).max(80.0), ..self }
     }
 }
 
@@ -92,15 +105,16 @@ pub fn draw_forces(g: &mut Group, region: Rect, inp: &ForcesInput) -> ForceScale
     let title = inp.labels.get("forces_title").replace("{phi}", &fmt::localise(&format!("{:.1}", inp.phi_deg), inp.lang));
     g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let body = Rect::new(region.x0, region.y0 + 10.0, region.x1, region.y1);
-    let mut attempt = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0 };
+    let widest = inp.fa.forces.polygons.iter().map(|p| world_box(inp, p)).map(|b| b.width().max(b.height())).fold(0.0, f64::max);
+    let mut attempt = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest };
     let mut placed = None;
-    for _ in 0..8 {
+    for _ in 0..12 {
         let cells = cells(inp, attempt);
         if let Some(at) = pack(&cells, body) {
             placed = Some((cells, at));
             break;
         }
-        attempt = Sizes { group_box: attempt.group_box * 0.85, poly_box: attempt.poly_box * 0.85, lever_box: attempt.lever_box * 0.85 };
+        attempt = attempt.shrunk();
     }
     let (cells, at) = placed.unwrap_or_else(|| {
         let cells = cells(inp, attempt);
@@ -207,7 +221,8 @@ fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let lever = lever_plan(inp);
     let bb = plan_bbox(&lever);
     let mu = scale::round_up((bb.width().max(bb.height()) / s.lever_box).max(1e-12));
-    out.push(Cell { w: (bb.width() / mu + 2.0 * (MARGIN + PAD)).max(110.0), h: TITLE + bb.height() / mu + 2.0 * (MARGIN + PAD) + 3.0 * LINE, content: Content::Lever });
+    let pad = MARGIN + ARROW_MAX + 4.0;
+    out.push(Cell { w: (bb.width() / mu + 2.0 * pad).max(110.0), h: TITLE + bb.height() / mu + 2.0 * pad + 3.0 * LINE, content: Content::Lever });
     for i in 0..inp.fa.model.loads.len() {
         out.push(Cell { w: LOAD_W, h: LOAD_H, content: Content::Load(i) });
     }
@@ -378,18 +393,23 @@ fn draw_group_geometry(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, po
                 }
             }
         }
-        for &q in &link.points {
-            let at = p(inp.state.points[q].p);
-            if m.is_frame(q) {
-                frame_pivot(g, at, 1.2);
-            } else if m.is_mass_centre(q) {
-                g.dot(at, 0.6);
-            } else {
-                g.circle(at, 1.0, THIN);
-            }
-            let (main, sub) = split_name(m.name(q));
-            place_label(g, placer, at, Vec2::new(-1.0, -1.0), &LabelText::new(main, sub));
+    }
+    // A joint shared by the group's two links is drawn and named once.
+    let mut points: Vec<usize> = Vec::new();
+    for &l in &links_of(inp, poly) {
+        points.extend(m.links[l].points.iter().filter(|q| !points.contains(q)).collect::<Vec<_>>());
+    }
+    for q in points {
+        let at = p(inp.state.points[q].p);
+        if m.is_frame(q) {
+            frame_pivot(g, at, 1.2);
+        } else if m.is_mass_centre(q) {
+            g.dot(at, 0.6);
+        } else {
+            g.circle(at, 1.0, THIN);
         }
+        let (main, sub) = split_name(m.name(q));
+        place_label(g, placer, at, Vec2::new(-1.0, -1.0), &LabelText::new(main, sub));
     }
     let unit = poly.terms.iter().map(|t| t.force.hypot()).fold(0.0, f64::max) / ARROW_MAX;
     for t in &poly.terms {
@@ -477,7 +497,7 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
     let value = inp.fa.forces.loads[i];
     let n = inp.m.links[load.link].number;
     cell_title(g, placer, r, &inp.labels.get("load_title").replace("{n}", &n.to_string()));
-    let plot = Rect::new(r.x0 + 14.0, r.y0 + 20.0, r.x1 - 12.0, r.y1 - 14.0);
+    let plot = Rect::new(r.x0 + 14.0, r.y0 + 20.0, r.x1 - 12.0, r.y1 - 20.0);
     let signed = |b: usize, y: f64| y * load.branches[b].scale;
     let (lo, hi) = load.branches.iter().enumerate().flat_map(|(b, br)| br.curve.points.iter().map(move |p| signed(b, p.1))).fold((0.0f64, 0.0f64), |(lo, hi), y| (lo.min(y), hi.max(y)));
     let span = (hi - lo).max(1e-9);
@@ -498,14 +518,18 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
     let mark = Point::new(px(value.s), py(along));
     g.line(Point::new(mark.x, py(0.0)), mark, THIN);
     g.circle(mark, 1.0, MAIN);
-    let label = LabelText::new("φ", "1").with_tail(format!(": P = {} N", fmt::value(along.abs(), inp.lang)));
-    place_label(g, placer, mark, Vec2::new(1.0, -1.0), &label);
+    place_label(g, placer, mark, Vec2::new(1.0, -1.0), &LabelText::new("φ", "1"));
     let ax = Text::new(Point::new(plot.x1 + 4.0, py(0.0) + 5.0), "S/H", 2.5, Anchor::Middle);
     placer.block(ax.bbox());
     g.text(ax);
     let ay = Text::new(Point::new(plot.x0 - 2.0, plot.y0 - 3.0), "P, N", 2.5, Anchor::End);
     placer.block(ay.bbox());
     g.text(ay);
-    let scale_line = LabelText::new("μ", "P").with_tail(format!(" = {} N/mm", fmt::localise(&scale::format(mu), inp.lang)));
-    placer.block(scale_line.draw(g, Point::new(r.x0 + 2.0, r.y1 - 2.0), 3.5, Anchor::Start));
+    let lines = [
+        LabelText::new("φ", "1").with_tail(format!(": S/H = {}, P = {} N", fmt::value(value.s, inp.lang), fmt::value(along.abs(), inp.lang))),
+        LabelText::new("μ", "P").with_tail(format!(" = {} N/mm", fmt::localise(&scale::format(mu), inp.lang))),
+    ];
+    for (k, line) in lines.iter().enumerate() {
+        placer.block(line.draw(g, Point::new(r.x0 + 2.0, r.y1 - 2.0 - LINE * (1 - k) as f64), 3.5, Anchor::Start));
+    }
 }
