@@ -2,7 +2,7 @@
 //! second extreme position), the assigned position, trajectories and structure.
 
 use crate::mechanics::kinetostatics::{self, ForceError, ForceModel, Forces};
-use crate::mechanics::linkage::{Mechanism, PointId, State, Step};
+use crate::mechanics::linkage::{Mechanism, PointId, State};
 use crate::mechanics::motion::{self, Motion, MotionError};
 use crate::mechanics::structure::{self, Structure};
 use crate::model::Settings;
@@ -140,7 +140,7 @@ pub fn forces(m: &Mechanism, k: &Kinematics, model: &ForceModel) -> Result<Force
 /// The model with every load's stroke (origin and length) fixed from its slider's extremes.
 pub fn place_loads(m: &Mechanism, motion: &Motion, model: &ForceModel) -> Result<ForceModel, AnalysisError> {
     let mut model = model.clone();
-    let Some(&Step::Crank { pivot, .. }) = m.steps.first() else { return Ok(model) };
+    let pivot = m.crank().pivot;
     let at = m.frame.iter().find(|f| f.0 == pivot).map_or(Vec2::ZERO, |f| f.1);
     for load in &mut model.loads {
         let (lo, hi) = motion::extremes_along(m, motion, load.point, load.axis)?;

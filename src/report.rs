@@ -180,12 +180,11 @@ pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> (NumTable, NumTable, N
         rows.push(row("S/H", n.to_string(), "", vec![v.s]));
         rows.push(row("P", format!("{}{n}", load_letter(load.kind)), "N", vec![v.force.hypot()]));
     }
-    let delta = |x: f64| if f.p_m != 0.0 { (f.p_m - x) / f.p_m * 100.0 } else { 0.0 };
     rows.extend([
         row("P", "m", "N", vec![f.p_m]),
         row("M", "m", "N·m", vec![f.m_m]),
         row("P′", "m", "N", vec![f.p_m_lever]),
-        row("Δ", "", "%", vec![delta(f.p_m_lever)]),
+        row("Δ", "", "%", vec![f.difference_percent()]),
         row("P", "m (N·v)", "N", vec![f.p_m_power]),
     ]);
     let balance = NumTable { name: "balance".into(), columns: vec!["".into()], rows };

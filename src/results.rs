@@ -145,7 +145,7 @@ fn forces_out(m: &Mechanism, k: &Kinematics, fa: &ForceAnalysis, scales: &ForceS
         balancing_moment: f.m_m,
         balancing_force_lever: f.p_m_lever,
         balancing_force_power: f.p_m_power,
-        difference_percent: if f.p_m != 0.0 { (f.p_m - f.p_m_lever) / f.p_m * 100.0 } else { 0.0 },
+        difference_percent: f.difference_percent(),
         scales: scales.clone(),
     }
 }

@@ -4,7 +4,7 @@
 //! normal components); the crank's balancing force; and two independent checks of it, the
 //! Zhukovsky lever and the power balance.
 
-use super::linkage::{LinkId, Mechanism, PointId, State, Step};
+use super::linkage::{Crank, LinkId, Mechanism, PointId, State, Step};
 use super::load::{Load, LoadValue};
 use kurbo::Vec2;
 
@@ -147,14 +147,12 @@ impl Forces {
 
     /// Residual force and moment (about the origin) on `link`; zero in equilibrium.
     pub fn residual(&self, link: LinkId) -> (Vec2, f64) {
-        let f = self.on(link).fold(Vec2::ZERO, |s, a| s + a.force);
-        let m = self.on(link).map(|a| a.at.cross(a.force)).sum::<f64>() + self.moment_on(link);
-        (f, m)
+        resultant(&self.applied, &self.inertia, link, Vec2::ZERO)
     }
 
-    /// The inertia moment on `link`, N·m.
-    pub fn moment_on(&self, link: LinkId) -> f64 {
-        self.inertia.iter().filter(|i| i.link == link).map(|i| i.moment).sum()
+    /// Δ = (P_m − P′_m)/P_m·100 %, the course's check of the lever against kinetostatics.
+    pub fn difference_percent(&self) -> f64 {
+        if self.p_m != 0.0 { (self.p_m - self.p_m_lever) / self.p_m * 100.0 } else { 0.0 }
     }
 }
 
@@ -348,7 +346,7 @@ struct CrankSolution {
 }
 
 fn solve_crank(m: &Mechanism, s: &State, applied: &mut Vec<Applied>, inertia: &[InertiaLoad]) -> Result<CrankSolution, ForceError> {
-    let Some(&Step::Crank { pivot, pin, link, .. }) = m.steps.first() else { unreachable!("the first step is the crank") };
+    let Crank { pivot, pin, link, .. } = m.crank();
     let (po, pa) = (s.points[pivot].p, s.points[pin].p);
     let v_a = s.points[pin].v;
     if v_a.hypot() == 0.0 {

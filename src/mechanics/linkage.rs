@@ -124,7 +124,24 @@ pub struct StepFailure {
     pub why: DyadFailure,
 }
 
+/// The driving link: its frame pivot, its pin, its length and its link.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Crank {
+    pub pivot: PointId,
+    pub pin: PointId,
+    pub length: f64,
+    pub link: LinkId,
+}
+
 impl Mechanism {
+    /// The crank, which the model always makes the first step.
+    pub fn crank(&self) -> Crank {
+        match self.steps.first() {
+            Some(&Step::Crank { pivot, pin, length, link }) => Crank { pivot, pin, length, link },
+            _ => unreachable!("the model makes the crank the first step"),
+        }
+    }
+
     pub fn point_id(&self, name: &str) -> Option<PointId> {
         self.point_names.iter().position(|n| n == name)
     }

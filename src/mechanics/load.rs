@@ -100,14 +100,6 @@ impl Load {
         let b = &self.branches[branch];
         LoadValue { s, branch, force: self.axis * (b.scale * b.curve.at(s)) }
     }
-
-    /// The largest magnitude the load reaches, N (for the diagram's scale).
-    pub fn max_force(&self) -> f64 {
-        self.branches
-            .iter()
-            .flat_map(|b| b.curve.points.iter().map(move |p| (p.1 * b.scale).abs()))
-            .fold(0.0, f64::max)
-    }
 }
 
 #[cfg(test)]

@@ -10,11 +10,11 @@ use kurbo::Vec2;
 use serde_saphyr::{Location, Spanned};
 
 /// Where a value was written, for error messages.
-fn at<T>(s: &Spanned<T>) -> Location {
+pub(super) fn at<T>(s: &Spanned<T>) -> Location {
     s.referenced
 }
 
-fn invalid(loc: Location, field: impl Into<String>, message: impl Into<String>) -> ModelError {
+pub(super) fn invalid(loc: Location, field: impl Into<String>, message: impl Into<String>) -> ModelError {
     ModelError::Invalid { line: loc.line(), column: loc.column(), field: field.into(), message: message.into() }
 }
 

@@ -1,6 +1,7 @@
 //! Turns the project file's `forces` section into the mechanics' [`ForceModel`]: masses with
 //! their centres, moments of inertia (given, or m·l²/12), and the loads on sliders.
 
+use super::build::{at, invalid};
 use super::indicators::{self, Indicator};
 use super::spec::*;
 use super::ModelError;
@@ -8,22 +9,18 @@ use crate::mechanics::kinetostatics::{ForceModel, LinkMass};
 use crate::mechanics::linkage::{LinkId, LinkKind, Mechanism, PointId, Step};
 use crate::mechanics::load::{Branch, Curve, Load, LoadKind};
 use kurbo::Vec2;
-use serde_saphyr::{Location, Spanned};
+use serde_saphyr::Spanned;
 
 const G: f64 = 9.81;
-
-fn invalid(loc: Location, field: impl Into<String>, message: impl Into<String>) -> ModelError {
-    ModelError::Invalid { line: loc.line(), column: loc.column(), field: field.into(), message: message.into() }
-}
 
 pub fn build_forces(spec: &Spanned<ForcesSpec>, m: &Mechanism) -> Result<ForceModel, ModelError> {
     let f = &spec.value;
     let mut masses: Vec<LinkMass> = Vec::new();
     for (i, lm) in f.links.iter().enumerate() {
         let field = format!("forces.links[{i}]");
-        let link = m.link_by_number(lm.link.value).ok_or_else(|| invalid(lm.link.referenced, format!("{field}.link"), format!("there is no link {}", lm.link.value)))?;
+        let link = m.link_by_number(lm.link.value).ok_or_else(|| invalid(at(&lm.link), format!("{field}.link"), format!("there is no link {}", lm.link.value)))?;
         if masses.iter().any(|x| x.link == link) {
-            return Err(invalid(lm.link.referenced, format!("{field}.link"), format!("link {} is listed twice", lm.link.value)));
+            return Err(invalid(at(&lm.link), format!("{field}.link"), format!("link {} is listed twice", lm.link.value)));
         }
         masses.push(link_mass(m, lm, link, &field)?);
     }
@@ -33,7 +30,7 @@ pub fn build_forces(spec: &Spanned<ForcesSpec>, m: &Mechanism) -> Result<ForceMo
         .collect();
     if !missing.is_empty() {
         return Err(invalid(
-            spec.referenced,
+            at(spec),
             "forces.links",
             format!("no mass for link(s) {}: the force analysis needs the mass of every moving link but the crank (write `mass: 0` for a light link)", missing.join(", ")),
         ));
@@ -43,7 +40,7 @@ pub fn build_forces(spec: &Spanned<ForcesSpec>, m: &Mechanism) -> Result<ForceMo
 }
 
 fn link_mass(m: &Mechanism, lm: &LinkMassSpec, link: LinkId, field: &str) -> Result<LinkMass, ModelError> {
-    let loc = lm.link.referenced;
+    let loc = at(&lm.link);
     let length = || {
         link_length(m, link).ok_or_else(|| invalid(loc, field, format!("link {} has no fixed length between two joints, so m = q·l and J = m·l²/12 cannot be used; give `mass` and `inertia`", lm.link.value)))
     };
@@ -97,7 +94,7 @@ fn slider(m: &Mechanism, name: &Name, field: &str) -> Result<(LinkId, PointId, V
             _ => None,
         })
     });
-    found.ok_or_else(|| invalid(name.referenced, field, format!("'{}' is not the slider point of an RRP group; loads act on sliders along their guides", name.value)))
+    found.ok_or_else(|| invalid(at(name), field, format!("'{}' is not the slider point of an RRP group; loads act on sliders along their guides", name.value)))
 }
 
 fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, ModelError> {
@@ -122,7 +119,7 @@ fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, Mo
             let force = match (g.force, g.bore, g.pressure) {
                 (Some(f), None, None) => f.0,
                 (None, Some(d), Some(p)) => p.0 * std::f64::consts::PI * d.0 * d.0 / 4.0,
-                _ => return Err(invalid(spec.referenced, &f, "give either `force` (N), or `bore` (m) and `pressure` (Pa)")),
+                _ => return Err(invalid(at(spec), &f, "give either `force` (N), or `bore` (m) and `pressure` (Pa)")),
             };
             let ind = indicator(g, &f)?;
             let branch = |(rows, name): (Vec<(f64, f64)>, &str)| Branch { curve: Curve { points: rows }, scale: force, name: name.into() };
@@ -133,10 +130,10 @@ fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, Mo
 }
 
 fn indicator(g: &GasSpec, field: &str) -> Result<Indicator, ModelError> {
-    let loc = g.indicator.referenced;
+    let loc = at(&g.indicator);
     let revolution = g.revolution.as_ref().map_or(1, |r| r.value);
     if let Some(r) = g.revolution.as_ref().filter(|r| r.value != 1 && r.value != 2) {
-        return Err(invalid(r.referenced, format!("{field}.revolution"), format!("an engine's cycle has revolutions 1 and 2, not {}", r.value)));
+        return Err(invalid(at(r), format!("{field}.revolution"), format!("an engine's cycle has revolutions 1 and 2, not {}", r.value)));
     }
     if g.revolution.is_some() && g.indicator.value != IndicatorName::Engine {
         return Err(invalid(loc, format!("{field}.revolution"), "`revolution` is for `indicator: engine` only"));
@@ -158,7 +155,7 @@ fn indicator(g: &GasSpec, field: &str) -> Result<Indicator, ModelError> {
 /// increasing.
 fn diagram(d: &DiagramSpec, field: &str) -> Result<Curve, ModelError> {
     let rows: Vec<(f64, f64)> = d.value.iter().map(|r| (r[0].0, r[1].0)).collect();
-    let bad = |msg: String| Err(invalid(d.referenced, field, msg));
+    let bad = |msg: String| Err(invalid(at(d), field, msg));
     if rows.len() < 2 {
         return bad("a diagram needs at least two rows [stroke fraction, value]".into());
     }

@@ -305,7 +305,7 @@ pub enum LoadSpec {
     /// Useful resistance against the motion on the working stroke (presses, machine tools).
     Resistance(ResistanceSpec),
     /// Gas pressure on a piston from an indicator diagram (compressors, engines).
-    Gas(GasSpec),
+    Gas(Box<GasSpec>),
 }
 
 /// A diagram as written: [stroke fraction, value] rows.

@@ -14,10 +14,10 @@ use super::scene::{Anchor, Group, Text, DASHED, MAIN, THIN, VECTOR};
 use super::table::Table;
 use super::text::LabelText;
 use crate::analysis::ForceAnalysis;
-use crate::mechanics::kinetostatics::{Applied, Kind, Part, Polygon, FRAME};
+use crate::mechanics::kinetostatics::{Kind, Part, Polygon, FRAME};
 use crate::mechanics::linkage::{LinkKind, Mechanism, State};
 use crate::mechanics::load::Load;
-use crate::mechanics::plans::velocity_plan;
+use crate::mechanics::plans::{velocity_plan, Plan};
 use crate::model::Language;
 use crate::report::load_letter;
 use kurbo::{Point, Rect, Vec2};
@@ -60,10 +60,26 @@ pub struct ForceScales {
 }
 
 enum Content {
-    Polygon(usize),
-    Lever,
+    /// Index into the polygons, and the layout computed for the cell's size.
+    Polygon(usize, GroupLayout),
+    /// The turned velocity plan and its scale.
+    Lever(Plan, f64),
     Load(usize),
     Table(usize),
+}
+
+/// What sizes a group cell and then draws it: computed once per layout attempt.
+struct GroupLayout {
+    /// The group's points in the world, m.
+    world: Rect,
+    mu_l: f64,
+    /// Width of the group drawing with its room for arrows, mm.
+    drawing_w: f64,
+    mu_p: f64,
+    /// The polygon's vertices in newtons, from its start, and their box.
+    chain: Vec<Vec2>,
+    chain_box: Rect,
+    equation: Vec<Vec<LabelText>>,
 }
 
 struct Cell {
@@ -107,32 +123,35 @@ pub fn draw_forces(g: &mut Group, region: Rect, inp: &ForcesInput) -> ForceScale
     let body = Rect::new(region.x0, region.y0 + 10.0, region.x1, region.y1);
     let widest = inp.fa.forces.polygons.iter().map(|p| world_box(inp, p)).map(|b| b.width().max(b.height())).fold(0.0, f64::max);
     let mut attempt = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest };
-    let mut placed = None;
-    for _ in 0..12 {
-        let cells = cells(inp, attempt);
-        if let Some(at) = pack(&cells, body) {
-            placed = Some((cells, at));
-            break;
+    // Shrink until the cells fit; the last attempt is drawn even if it does not (the layout
+    // test then reports it).
+    let (cells, at) = {
+        let mut tries = 0;
+        loop {
+            let cells = cells(inp, attempt);
+            let at = pack(&cells, body);
+            tries += 1;
+            if fits(&cells, &at, body) || tries == 12 {
+                break (cells, at);
+            }
+            attempt = attempt.shrunk();
         }
-        attempt = attempt.shrunk();
-    }
-    let (cells, at) = placed.unwrap_or_else(|| {
-        let cells = cells(inp, attempt);
-        let at = pack_anyway(&cells, body);
-        (cells, at)
-    });
+    };
     let mut scales = ForceScales { mu_l: vec![], mu_p: vec![], mu_lever: 0.0 };
     for (cell, origin) in cells.iter().zip(at) {
         let r = Rect::new(origin.x, origin.y, origin.x + cell.w, origin.y + cell.h);
         // Each cell places its own labels inside itself, so cells never collide.
         let mut placer = Placer::new(r);
         match cell.content {
-            Content::Polygon(i) => {
-                let (mu_l, mu_p) = draw_group_cell(g, &mut placer, r, inp, i, attempt);
-                scales.mu_l.push(mu_l);
-                scales.mu_p.push(mu_p);
+            Content::Polygon(i, ref layout) => {
+                draw_group_cell(g, &mut placer, r, inp, &inp.fa.forces.polygons[i], layout);
+                scales.mu_l.push(layout.mu_l);
+                scales.mu_p.push(layout.mu_p);
             }
-            Content::Lever => scales.mu_lever = draw_lever(g, &mut placer, r, inp, attempt),
+            Content::Lever(ref plan, mu) => {
+                draw_lever(g, &mut placer, r, inp, plan, mu);
+                scales.mu_lever = mu;
+            }
             Content::Load(i) => draw_load(g, &mut placer, r, inp, i),
             Content::Table(i) => {
                 inp.tables[i].draw(g, origin);
@@ -152,12 +171,8 @@ fn world_box(inp: &ForcesInput, poly: &Polygon) -> Rect {
 fn links_of(inp: &ForcesInput, poly: &Polygon) -> Vec<usize> {
     match poly.group {
         Some(gi) => inp.m.groups[gi].links.to_vec(),
-        None => vec![crank_link(inp.m)],
+        None => vec![inp.m.crank().link],
     }
-}
-
-fn crank_link(m: &Mechanism) -> usize {
-    m.links.iter().position(|l| l.kind == LinkKind::Crank).expect("a mechanism has a crank")
 }
 
 fn drawn_points(inp: &ForcesInput, poly: &Polygon) -> Vec<Vec2> {
@@ -177,19 +192,14 @@ fn bbox_of(pts: &[Vec2]) -> Rect {
     pts.iter().fold(Rect::from_points(Point::ZERO, Point::ZERO), |r, p| r.union_pt(p.to_point()))
 }
 
-fn mu_p(poly: &Polygon, s: Sizes) -> f64 {
-    let bb = bbox_of(&chain(poly));
-    scale::round_up((bb.width().max(bb.height()) / s.poly_box).max(1e-9))
-}
-
 fn equation_lines(inp: &ForcesInput, poly: &Polygon, width: f64) -> Vec<Vec<LabelText>> {
-    let terms: Vec<LabelText> = poly.terms.iter().filter(|t| t.force.hypot() > 0.0).map(|t| force_label(inp, t)).collect();
+    let terms: Vec<LabelText> = poly.terms.iter().filter(|t| t.force.hypot() > 0.0).map(|t| force_label(inp, t.kind, t.on)).collect();
     let mut lines: Vec<Vec<LabelText>> = vec![vec![]];
     let mut w = 0.0;
     for (i, t) in terms.iter().enumerate() {
         let last = i + 1 == terms.len();
         let item = LabelText { tail: if last { " = 0".into() } else { " +".into() }, ..t.clone() };
-        let iw = label_width(&item, 3.5) + 2.0;
+        let iw = measure(&item, 3.5).width() + 2.0;
         if w + iw > width && w > 0.0 {
             lines.push(vec![]);
             w = 0.0;
@@ -200,29 +210,37 @@ fn equation_lines(inp: &ForcesInput, poly: &Polygon, width: f64) -> Vec<Vec<Labe
     lines
 }
 
-fn label_width(l: &LabelText, h: f64) -> f64 {
-    let mut g = Group::new("probe", Rect::ZERO);
-    l.draw(&mut g, Point::ZERO, h, Anchor::Start).width()
+/// The box a label draws (symbol, subscript and tail) when centred on the origin.
+fn measure(l: &LabelText, h: f64) -> Rect {
+    l.draw(&mut Group::new("probe", Rect::ZERO), Point::ZERO, h, Anchor::Middle)
+}
+
+fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes) -> (GroupLayout, f64, f64) {
+    let world = world_box(inp, poly);
+    let mu_l = s.mu_l(world);
+    let (drawing_w, drawing_h) = (world.width() / mu_l + 2.0 * PAD, world.height() / mu_l + 2.0 * PAD);
+    let chain = chain(poly);
+    let chain_box = bbox_of(&chain);
+    let mu_p = scale::round_up((chain_box.width().max(chain_box.height()) / s.poly_box).max(1e-9));
+    let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
+    let w = (drawing_w + poly_w).max(120.0);
+    let equation = equation_lines(inp, poly, w - 4.0);
+    let h = CELL_TITLE + drawing_h.max(poly_h) + LINE * (equation.len() as f64 + 2.0) + 2.0;
+    (GroupLayout { world, mu_l, drawing_w, mu_p, chain, chain_box, equation }, w, h)
 }
 
 fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let mut out = Vec::new();
     for (i, poly) in inp.fa.forces.polygons.iter().enumerate() {
-        let wb = world_box(inp, poly);
-        let mu_l = s.mu_l(wb);
-        let (gw, gh) = (wb.width() / mu_l + 2.0 * PAD, wb.height() / mu_l + 2.0 * PAD);
-        let mu = mu_p(poly, s);
-        let pb = bbox_of(&chain(poly));
-        let (pw, ph) = (pb.width() / mu + 2.0 * POLY_PAD, pb.height() / mu + 2.0 * POLY_PAD);
-        let w = (gw + pw).max(120.0);
-        let lines = equation_lines(inp, poly, w - 4.0).len();
-        out.push(Cell { w, h: CELL_TITLE + gh.max(ph) + LINE * (lines as f64 + 2.0) + 2.0, content: Content::Polygon(i) });
+        let (layout, w, h) = group_layout(inp, poly, s);
+        out.push(Cell { w, h, content: Content::Polygon(i, layout) });
     }
-    let lever = lever_plan(inp);
+    let lever = velocity_plan(inp.m, inp.state).turned(inp.m.omega1.signum());
     let bb = plan_bbox(&lever);
     let mu = scale::round_up((bb.width().max(bb.height()) / s.lever_box).max(1e-12));
     let pad = MARGIN + ARROW_MAX + 4.0;
-    out.push(Cell { w: (bb.width() / mu + 2.0 * pad).max(110.0), h: TITLE + bb.height() / mu + 2.0 * pad + 3.0 * LINE, content: Content::Lever });
+    let (w, h) = ((bb.width() / mu + 2.0 * pad).max(110.0), TITLE + bb.height() / mu + 2.0 * pad + 3.0 * LINE);
+    out.push(Cell { w, h, content: Content::Lever(lever, mu) });
     for i in 0..inp.fa.model.loads.len() {
         out.push(Cell { w: LOAD_W, h: LOAD_H, content: Content::Load(i) });
     }
@@ -233,14 +251,8 @@ fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     out
 }
 
-/// Packs cells in rows, left to right; `None` when they do not fit.
-fn pack(cells: &[Cell], body: Rect) -> Option<Vec<Point>> {
-    let at = pack_anyway(cells, body);
-    let fits = cells.iter().zip(&at).all(|(c, p)| p.x + c.w <= body.x1 + 1e-9 && p.y + c.h <= body.y1 + 1e-9);
-    fits.then_some(at)
-}
-
-fn pack_anyway(cells: &[Cell], body: Rect) -> Vec<Point> {
+/// Places cells in rows, left to right, starting a row when the next cell would overflow.
+fn pack(cells: &[Cell], body: Rect) -> Vec<Point> {
     let (mut x, mut y, mut row_h) = (body.x0, body.y0, 0.0f64);
     let mut out = Vec::new();
     for c in cells {
@@ -256,20 +268,24 @@ fn pack_anyway(cells: &[Cell], body: Rect) -> Vec<Point> {
     out
 }
 
+fn fits(cells: &[Cell], at: &[Point], body: Rect) -> bool {
+    cells.iter().zip(at).all(|(c, p)| p.x + c.w <= body.x1 + 1e-9 && p.y + c.h <= body.y1 + 1e-9)
+}
+
 /// The label of a force: G₂, Pᵢ₂, P_c5, Rⁿ₁₂, Pₘ.
-fn force_label(inp: &ForcesInput, a: &Applied) -> LabelText {
+fn force_label(inp: &ForcesInput, kind: Kind, on: usize) -> LabelText {
     let n = |l: usize| if l == FRAME { 0 } else { inp.m.links[l].number };
-    match a.kind {
-        Kind::Weight => LabelText::new("G", n(a.on).to_string()),
-        Kind::Inertia => LabelText::new("P", format!("i{}", n(a.on))),
-        Kind::Load(i) => LabelText::new("P", format!("{}{}", load_letter(inp.fa.model.loads[i].kind), n(a.on))),
+    match kind {
+        Kind::Weight => LabelText::new("G", n(on).to_string()),
+        Kind::Inertia => LabelText::new("P", format!("i{}", n(on))),
+        Kind::Load(i) => LabelText::new("P", format!("{}{}", load_letter(inp.fa.model.loads[i].kind), n(on))),
         Kind::Reaction { from, part } => {
             let main = match part {
                 Part::Whole => "R",
                 Part::Normal => "Rⁿ",
                 Part::Tangential => "Rᵗ",
             };
-            LabelText::new(main, format!("{}{}", n(from), n(a.on)))
+            LabelText::new(main, format!("{}{}", n(from), n(on)))
         }
         Kind::Balancing => LabelText::new("P", "m"),
     }
@@ -288,17 +304,17 @@ fn paper_dir(v: Vec2) -> Vec2 {
 
 /// A force arrow from `at` with its label (3.5 mm, with the value when the arrow had to be
 /// lengthened; `small`: 2.5 mm and no value, for the crowded lever); nothing for a zero force.
-fn force_arrow(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, at: Point, a: &Applied, unit: f64, small: bool) {
-    let f = a.force.hypot();
+fn force_arrow(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, at: Point, (kind, on, force): (Kind, usize, Vec2), unit: f64, small: bool) {
+    let f = force.hypot();
     if f <= 0.0 {
         return;
     }
     let natural = f / unit;
     let len = natural.clamp(ARROW_MIN, ARROW_MAX);
-    let d = paper_dir(a.force) / f;
+    let d = paper_dir(force) / f;
     let tip = at + d * len;
     vector(g, at, tip, VECTOR);
-    let mut label = force_label(inp, a);
+    let mut label = force_label(inp, kind, on);
     if natural < ARROW_MIN && !small {
         label.tail = format!(" = {} N", fmt::value(f, inp.lang));
     }
@@ -311,9 +327,7 @@ fn place_label(g: &mut Group, placer: &mut Placer, anchor: Point, pref: Vec2, la
 }
 
 fn place_label_h(g: &mut Group, placer: &mut Placer, anchor: Point, pref: Vec2, label: &LabelText, h: f64) {
-    // Measure the label as drawn (symbol, subscript and tail), then find room for that box.
-    let mut probe = Group::new("probe", Rect::ZERO);
-    let bb = label.draw(&mut probe, Point::ZERO, h, Anchor::Middle);
+    let bb = measure(label, h);
     let r = placer.place_box(anchor, pref, bb.width() + 0.4, bb.height() + 0.4);
     label.draw(g, Point::new(r.center().x, r.y1 - 0.2 - bb.y1), h, Anchor::Middle);
 }
@@ -334,24 +348,16 @@ fn group_title(inp: &ForcesInput, poly: &Polygon) -> String {
     }
 }
 
-fn draw_group_cell(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: usize, s: Sizes) -> (f64, f64) {
-    let poly = &inp.fa.forces.polygons[i];
+fn draw_group_cell(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, poly: &Polygon, layout: &GroupLayout) {
     cell_title(g, placer, r, &group_title(inp, poly));
-    let wb = world_box(inp, poly);
-    let mu_l = s.mu_l(wb);
-    let gw = wb.width() / mu_l + 2.0 * PAD;
-    let mu = mu_p(poly, s);
-    let pts = chain(poly);
-    let pb = bbox_of(&pts);
-    let lines = equation_lines(inp, poly, r.width() - 4.0);
     let top = r.y0 + CELL_TITLE;
-    let bottom = r.y1 - LINE * (lines.len() as f64 + 2.0) - 2.0;
-    let geo = Rect::new(r.x0, top, r.x0 + gw, bottom);
-    draw_group_geometry(g, placer, inp, poly, geo, wb, mu_l);
-    let pr = Rect::new(r.x0 + gw, top, r.x1, bottom);
-    draw_polygon(g, placer, inp, poly, &pts, pb, pr, mu);
+    let bottom = r.y1 - LINE * (layout.equation.len() as f64 + 2.0) - 2.0;
+    let geo = Rect::new(r.x0, top, r.x0 + layout.drawing_w, bottom);
+    draw_group_geometry(g, placer, inp, poly, geo, layout.world, layout.mu_l);
+    let pr = Rect::new(r.x0 + layout.drawing_w, top, r.x1, bottom);
+    draw_polygon(g, placer, inp, poly, layout, pr);
     let mut y = bottom + LINE;
-    for line in &lines {
+    for line in &layout.equation {
         let mut x = r.x0 + 2.0;
         for item in line {
             let bb = item.draw(g, Point::new(x, y), 3.5, Anchor::Start);
@@ -361,14 +367,13 @@ fn draw_group_cell(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInpu
         y += LINE;
     }
     let scale_lines = [
-        LabelText::new("μ", "l").with_tail(format!(" = {} m/mm", fmt::localise(&scale::format(mu_l), inp.lang))),
-        LabelText::new("μ", "P").with_tail(format!(" = {} N/mm", fmt::localise(&scale::format(mu), inp.lang))),
+        LabelText::new("μ", "l").with_tail(format!(" = {} m/mm", fmt::localise(&scale::format(layout.mu_l), inp.lang))),
+        LabelText::new("μ", "P").with_tail(format!(" = {} N/mm", fmt::localise(&scale::format(layout.mu_p), inp.lang))),
     ];
     for line in scale_lines {
         placer.block(line.draw(g, Point::new(r.x0 + 2.0, y), 3.5, Anchor::Start));
         y += LINE;
     }
-    (mu_l, mu)
 }
 
 fn draw_group_geometry(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, poly: &Polygon, r: Rect, wb: Rect, mu: f64) {
@@ -413,7 +418,7 @@ fn draw_group_geometry(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, po
     }
     let unit = poly.terms.iter().map(|t| t.force.hypot()).fold(0.0, f64::max) / ARROW_MAX;
     for t in &poly.terms {
-        force_arrow(g, placer, inp, p(t.at), t, unit.max(1e-12), false);
+        force_arrow(g, placer, inp, p(t.at), (t.kind, t.on, t.force), unit.max(1e-12), false);
     }
     for il in inp.fa.forces.inertia.iter().filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0) {
         let centre = m.mass_centres.iter().find(|c| c.0 == il.link).map_or(m.links[il.link].points[0], |c| c.1);
@@ -423,8 +428,9 @@ fn draw_group_geometry(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, po
     }
 }
 
-fn draw_polygon(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, poly: &Polygon, pts: &[Vec2], pb: Rect, r: Rect, mu: f64) {
-    let p = view(pb, r, mu);
+fn draw_polygon(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, poly: &Polygon, layout: &GroupLayout, r: Rect) {
+    let p = view(layout.chain_box, r, layout.mu_p);
+    let pts = &layout.chain;
     for (k, t) in poly.terms.iter().enumerate() {
         let (a, b) = (p(pts[k]), p(pts[k + 1]));
         if (b - a).hypot() < 0.05 {
@@ -432,62 +438,45 @@ fn draw_polygon(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, poly: &Po
         }
         vector(g, a, b, VECTOR);
         let mid = a.midpoint(b);
-        place_label(g, placer, mid, (b - a).turn_90(), &force_label(inp, t));
+        place_label(g, placer, mid, (b - a).turn_90(), &force_label(inp, t.kind, t.on));
     }
     if let Some(inner) = &poly.inner {
         let (a, b) = (p(pts[poly.split]), p(pts[0]));
         if (b - a).hypot() >= 0.05 {
             vector(g, a, b, DASHED);
-            place_label(g, placer, a.midpoint(b), (b - a).turn_90(), &force_label(inp, inner));
+            place_label(g, placer, a.midpoint(b), (b - a).turn_90(), &force_label(inp, inner.kind, inner.on));
         }
     }
     g.dot(p(pts[0]), 0.5);
 }
 
-fn lever_plan(inp: &ForcesInput) -> crate::mechanics::plans::Plan {
-    velocity_plan(inp.m, inp.state).turned(inp.m.omega1.signum())
-}
-
-fn draw_lever(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, s: Sizes) -> f64 {
+fn draw_lever(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, plan: &Plan, mu: f64) {
     let f = &inp.fa.forces;
-    let plan = lever_plan(inp);
-    let bb = plan_bbox(&plan);
-    let mu = scale::round_up((bb.width().max(bb.height()) / s.lever_box).max(1e-12));
     let text_h = 3.0 * LINE;
     let plan_cell = Rect::new(r.x0, r.y0, r.x1, r.y1 - text_h);
-    let pole = draw_plan_with(g, plan_cell, inp.labels.get("lever_title"), &plan, mu, "p", placer);
+    let pole = draw_plan_with(g, plan_cell, inp.labels.get("lever_title"), plan, mu, "p", placer);
     let at = |v: Vec2| Point::new(pole.x + v.x / mu, pole.y - v.y / mu);
     let unit = f.lever.iter().map(|l| l.force.hypot()).fold(f.p_m_lever.abs(), f64::max) / ARROW_MAX;
     for l in &f.lever {
-        let a = Applied { on: l.on, kind: l.kind, at: Vec2::ZERO, point: None, force: l.force };
         if l.couple {
             let d = paper_dir(l.force);
             vector(g, at(l.image), at(l.image) + d / d.hypot().max(1e-12) * ARROW_MIN, THIN);
             continue;
         }
-        force_arrow(g, placer, inp, at(l.image), &a, unit.max(1e-12), true);
+        force_arrow(g, placer, inp, at(l.image), (l.kind, l.on, l.force), unit.max(1e-12), true);
     }
-    let a_img = inp.state.points[pin(inp.m)].v.turn_90() * inp.m.omega1.signum();
-    let pm = Applied { on: 0, kind: Kind::Balancing, at: Vec2::ZERO, point: None, force: f.dir_m * f.p_m_lever };
-    force_arrow(g, placer, inp, at(a_img), &pm, unit.max(1e-12), true);
+    let crank = inp.m.crank();
+    let a_img = inp.state.points[crank.pin].v.turn_90() * inp.m.omega1.signum();
+    force_arrow(g, placer, inp, at(a_img), (Kind::Balancing, crank.link, f.dir_m * f.p_m_lever), unit.max(1e-12), true);
     let lang = inp.lang;
-    let delta = if f.p_m != 0.0 { (f.p_m - f.p_m_lever) / f.p_m * 100.0 } else { 0.0 };
     let y0 = r.y1 - text_h + LINE;
     let lines = [
         LabelText::new("μ", "v").with_tail(format!(" = {} (m/s)/mm", fmt::localise(&scale::format(mu), lang))),
         LabelText::new("P′", "m").with_tail(format!(" = {} N", fmt::value(f.p_m_lever, lang))),
-        LabelText::new("Δ", "").with_tail(format!(" = (Pₘ − P′ₘ)/Pₘ·100 % = {} %", fmt::scientific(delta, lang))),
+        LabelText::new("Δ", "").with_tail(format!(" = (Pₘ − P′ₘ)/Pₘ·100 % = {} %", fmt::scientific(f.difference_percent(), lang))),
     ];
     for (k, line) in lines.iter().enumerate() {
         placer.block(line.draw(g, Point::new(r.x0 + 2.0, y0 + LINE * k as f64), 3.5, Anchor::Start));
-    }
-    mu
-}
-
-fn pin(m: &Mechanism) -> usize {
-    match m.steps.first() {
-        Some(&crate::mechanics::linkage::Step::Crank { pin, .. }) => pin,
-        _ => 0,
     }
 }
 

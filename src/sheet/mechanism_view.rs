@@ -58,10 +58,10 @@ pub fn world_extent(m: &Mechanism, k: &Kinematics, kulisa: &[(usize, Option<f64>
     for (_, path) in &k.trajectories {
         pts.extend(path.iter().copied());
     }
-    if let Some(Step::Crank { pivot, length, .. }) = m.steps.first() {
-        let c = m.frame.iter().find(|f| f.0 == *pivot).map(|f| f.1).unwrap_or_default();
-        pts.extend([c + Vec2::new(*length, *length), c - Vec2::new(*length, *length)]);
-    }
+    let crank = m.crank();
+    let c = m.frame.iter().find(|f| f.0 == crank.pivot).map(|f| f.1).unwrap_or_default();
+    let r = Vec2::new(crank.length, crank.length);
+    pts.extend([c + r, c - r]);
     let first = pts[0].to_point();
     pts.iter().fold(Rect::from_points(first, first), |r, p| r.union_pt(p.to_point()))
 }
@@ -103,10 +103,9 @@ impl MechanismView<'_> {
     }
 
     fn crank_circle(&self, g: &mut Group) {
-        if let Some(Step::Crank { pivot, length, .. }) = self.m.steps.first() {
-            let c = self.k.assigned.state.points[*pivot].p;
-            g.circle(self.view.p(c), length / self.view.mu, THIN);
-        }
+        let crank = self.m.crank();
+        let c = self.k.assigned.state.points[crank.pivot].p;
+        g.circle(self.view.p(c), crank.length / self.view.mu, THIN);
     }
 
     /// Each guide: its axis (dash-dot) over the slider's travel and a hatched frame line.
@@ -199,9 +198,9 @@ impl MechanismView<'_> {
 
     /// Position numbers beside the crank pin of every position, outward from the pivot.
     fn position_numbers(&self, g: &mut Group, placer: &mut Placer) {
-        let Some(Step::Crank { pivot, pin, .. }) = self.m.steps.first() else { return };
+        let crank = self.m.crank();
         for pos in &self.k.positions {
-            let (o, a) = (self.view.p(pos.state.points[*pivot].p), self.view.p(pos.state.points[*pin].p));
+            let (o, a) = (self.view.p(pos.state.points[crank.pivot].p), self.view.p(pos.state.points[crank.pin].p));
             g.text(placer.place(a, a - o, &pos.label, 3.5));
         }
     }
