@@ -1,9 +1,10 @@
-//! Benchmarks (`cargo bench`): the exact solver over a full turn, sheet 1 to SVG, and
-//! SVG to PDF, on the guide's worked example (the six-bar vibrating conveyor).
+//! Benchmarks (`cargo bench`): the exact solver over a full turn, the force analysis,
+//! sheet 1 to SVG, and SVG to PDF and PNG, on the guide's worked example (the six-bar
+//! vibrating conveyor).
 
 use std::f64::consts::TAU;
-use tmm_sheets::mechanics::State;
-use tmm_sheets::pipeline::{self, DEFAULT_PROJECT};
+use tmm_sheets::lever::{State, analysis, kinetostatics};
+use tmm_sheets::pipeline::{self, DEFAULT_PROJECT, Formats};
 
 fn main() {
     divan::main();
@@ -12,7 +13,7 @@ fn main() {
 /// 360 positions with velocities and accelerations, reusing one state buffer.
 #[divan::bench]
 fn solve_360_positions(bencher: divan::Bencher) {
-    let p = pipeline::load(DEFAULT_PROJECT).unwrap();
+    let p = pipeline::load(DEFAULT_PROJECT).unwrap().lever.unwrap();
     let mut s = State::default();
     bencher.bench_local(|| {
         let mut acc = 0.0;
@@ -28,30 +29,36 @@ fn solve_360_positions(bencher: divan::Bencher) {
 /// loads already placed on their strokes.
 #[divan::bench]
 fn kinetostatics_at_phi1(bencher: divan::Bencher) {
-    use tmm_sheets::{analysis, mechanics::kinetostatics};
-    let p = pipeline::load(DEFAULT_PROJECT).unwrap();
+    let p = pipeline::load(DEFAULT_PROJECT).unwrap().lever.unwrap();
     let k = analysis::kinematics(&p.mechanism, &p.settings).unwrap();
-    let model = analysis::place_loads(&p.mechanism, &k.motion, p.settings.forces.as_ref().unwrap()).unwrap();
-    bencher.bench_local(|| divan::black_box(kinetostatics::analyse(&p.mechanism, &k.assigned.state, &model).unwrap().p_m));
+    let model = analysis::place_loads(&p.mechanism, &k.motion, p.forces.as_ref().unwrap()).unwrap();
+    bencher
+        .bench_local(|| divan::black_box(kinetostatics::analyse(&p.mechanism, &k.assigned.state, &model).unwrap().p_m));
 }
 
 /// Everything sheet 1 needs, from the parsed project to the SVG text.
 #[divan::bench]
 fn sheet1_to_svg(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap();
-    bencher.bench_local(|| divan::black_box(pipeline::sheet1(&p).unwrap().svg.len()));
+    bencher.bench_local(|| divan::black_box(pipeline::build(&p, &[]).unwrap()[0].svg.len()));
 }
 
 #[divan::bench(sample_count = 10)]
 fn svg_to_pdf(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap();
-    let r = pipeline::sheet1(&p).unwrap();
-    bencher.bench_local(|| divan::black_box(pipeline::pdf_and_png(&r.svg, &r.scene, None).unwrap().0.len()));
+    let b = pipeline::build(&p, &[]).unwrap().remove(0);
+    bencher.bench_local(|| {
+        divan::black_box(pipeline::render(&b, Formats { pdf: true, png_dpi: None }).unwrap().pdf.map(|x| x.len()))
+    });
 }
 
 #[divan::bench(sample_count = 5)]
 fn svg_to_png_100dpi(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap();
-    let r = pipeline::sheet1(&p).unwrap();
-    bencher.bench_local(|| divan::black_box(pipeline::pdf_and_png(&r.svg, &r.scene, Some(100.0)).unwrap().1.map(|x| x.len())));
+    let b = pipeline::build(&p, &[]).unwrap().remove(0);
+    bencher.bench_local(|| {
+        divan::black_box(
+            pipeline::render(&b, Formats { pdf: false, png_dpi: Some(100.0) }).unwrap().png.map(|x| x.len()),
+        )
+    });
 }

@@ -1,11 +1,18 @@
 //! The one font of every sheet: DejaVu Sans Condensed 2.37, vendored under
 //! `assets/fonts/` with its licence. It covers Uzbek Latin (ʻ U+02BB), Cyrillic and Greek.
+//! Advance widths are read with `skrifa` (maintained, and already compiled in by krilla).
 //!
 //! **Invariant:** system fonts are never loaded, so output does not depend on the host.
+
+use skrifa::instance::{LocationRef, Size};
+use skrifa::{FontRef, MetadataProvider};
 
 /// The family name written into SVG.
 /// (The file's family is "DejaVu Sans" with a semi-condensed stretch.)
 pub const FAMILY: &str = "DejaVu Sans";
+
+/// The font's full name, for messages.
+pub const NAME: &str = "DejaVu Sans Condensed";
 
 /// The font-stretch written into SVG to select the condensed face.
 pub const STRETCH: &str = "semi-condensed";
@@ -16,33 +23,62 @@ pub const BYTES: &[u8] = include_bytes!("../assets/fonts/DejaVuSansCondensed.ttf
 /// Capital height as a fraction of the font size (DejaVu: 1493 / 2048 units).
 pub const CAP_HEIGHT: f64 = 1493.0 / 2048.0;
 
+/// Characters below this code point have their advances in a table (Latin, Greek,
+/// Cyrillic, punctuation, sub- and superscripts, arrows, mathematical operators).
+const TABLE_END: u32 = 0x2400;
+
 /// Advance widths of the font, for laying out and measuring text without a renderer.
 pub struct Metrics {
-    face: ttf_parser::Face<'static>,
+    font: FontRef<'static>,
+    /// Advance in font units of each code point below [`TABLE_END`]; `None`: no glyph.
+    table: Vec<Option<u16>>,
+    units_per_em: f64,
 }
 
 impl Metrics {
     pub fn load() -> Metrics {
-        let face = ttf_parser::Face::parse(BYTES, 0).expect("the vendored font parses");
-        Metrics { face }
+        let font = FontRef::new(BYTES).expect("the vendored font parses");
+        let units_per_em = f64::from(font.metrics(Size::unscaled(), LocationRef::default()).units_per_em);
+        let mut m = Metrics { font, table: Vec::new(), units_per_em };
+        m.table = (0..TABLE_END).map(|c| char::from_u32(c).and_then(|c| m.lookup(c))).collect();
+        m
     }
 
-    /// Width of `text` set at font size `size` (same unit as `size`).
+    /// The advance of `c` in font units from the font's tables; `None` if it has no glyph.
+    fn lookup(&self, c: char) -> Option<u16> {
+        // Some cmap formats answer glyph 0 (.notdef) for an unmapped character.
+        let glyph = self.font.charmap().map(c).filter(|g| g.to_u32() != 0)?;
+        let advance = self.font.glyph_metrics(Size::unscaled(), LocationRef::default()).advance_width(glyph)?;
+        Some(advance as u16) // unscaled advances are whole font units
+    }
+
+    fn advance(&self, c: char) -> Option<u16> {
+        match self.table.get(c as usize) {
+            Some(&a) => a,
+            None => self.lookup(c),
+        }
+    }
+
+    /// Width of `text` set at font size `size` (same unit as `size`); a character without
+    /// a glyph counts as the font's missing-glyph box (its `.notdef` advance).
     pub fn width(&self, text: &str, size: f64) -> f64 {
-        let upm = f64::from(self.face.units_per_em());
-        let units: f64 = text
-            .chars()
-            .map(|c| {
-                let g = self.face.glyph_index(c).unwrap_or(ttf_parser::GlyphId(0));
-                f64::from(self.face.glyph_hor_advance(g).unwrap_or(0))
-            })
-            .sum();
-        units * size / upm
+        let notdef = self
+            .font
+            .glyph_metrics(Size::unscaled(), LocationRef::default())
+            .advance_width(Default::default())
+            .unwrap_or(0.0);
+        let units: f64 = text.chars().map(|c| self.advance(c).map_or(f64::from(notdef), f64::from)).sum();
+        units * size / self.units_per_em
+    }
+
+    /// Whether `c` has a glyph (white space always counts as covered).
+    pub fn has_glyph(&self, c: char) -> bool {
+        c.is_whitespace() || self.advance(c).is_some()
     }
 
     /// Whether every character of `text` has a glyph.
     pub fn covers(&self, text: &str) -> bool {
-        text.chars().all(|c| c.is_whitespace() || self.face.glyph_index(c).is_some())
+        text.chars().all(|c| self.has_glyph(c))
     }
 }
 
@@ -51,7 +87,7 @@ pub fn size_for_cap(h: f64) -> f64 {
     h / CAP_HEIGHT
 }
 
-/// A shared instance; parsing the face is cheap but not free.
+/// A shared instance.
 pub fn metrics() -> &'static Metrics {
     static M: std::sync::OnceLock<Metrics> = std::sync::OnceLock::new();
     M.get_or_init(Metrics::load)
@@ -64,18 +100,22 @@ mod tests {
     /// The cap height used for GOST lettering sizes is the height of the glyph 'H'.
     #[test]
     fn cap_height_is_that_of_h() {
-        let face = ttf_parser::Face::parse(BYTES, 0).unwrap();
-        let h = face.glyph_index('H').unwrap();
-        let bb = face.glyph_bounding_box(h).unwrap();
-        assert_eq!(f64::from(bb.y_max) / f64::from(face.units_per_em()), CAP_HEIGHT);
+        let font = FontRef::new(BYTES).unwrap();
+        let h = font.charmap().map('H').unwrap();
+        let bb = font.glyph_metrics(Size::unscaled(), LocationRef::default()).bounds(h).unwrap();
+        assert_eq!(f64::from(bb.y_max) / metrics().units_per_em, CAP_HEIGHT);
         assert!((size_for_cap(5.0) - 6.86).abs() < 0.01, "STACK.md: 5 mm lettering is 6.86 mm font-size");
     }
 
+    /// Widths against the font's own numbers (DejaVu Sans Condensed, 2048 units per em):
+    /// 'H' advances 1352 units, 'i' 512, 'ʻ' (U+02BB) 413.
     #[test]
-    fn the_font_is_the_vendored_one() {
-        let recorded = include_str!("../assets/fonts/DejaVuSansCondensed.ttf.sha256");
-        assert!(recorded.starts_with("2d8aa290adcf1ebcbb35f63e57cf32941b012eaab4b65096b904112cf3bac972"));
-        assert_eq!(BYTES.len(), 682_828);
-        assert!(metrics().covers("oʻgʻ Ўў Ҳҳ μ ω ε φ π √ − ² ⁿ ᵗ ᵏ ʳ ′"));
+    fn widths_are_the_fonts_advances() {
+        let m = metrics();
+        assert_eq!(m.units_per_em, 2048.0);
+        assert_eq!(m.width("H", 2048.0), f64::from(m.advance('H').unwrap()));
+        assert_eq!(m.width("Hi", 2048.0), f64::from(m.advance('H').unwrap() + m.advance('i').unwrap()));
+        assert!(m.covers("oʻgʻ Ўў Ҳҳ μ ω ε φ π √ − ² ⁿ ᵗ ᵏ ʳ ′ ⌀"));
+        assert!(!m.has_glyph('中') && !m.has_glyph('あ'));
     }
 }

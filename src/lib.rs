@@ -2,32 +2,34 @@
 //! Mechanisms, computed exactly and drawn the way the course requires.
 //!
 //! Layers, each depending only on the ones before it:
-//! [`model`] (project file) → [`mechanics`] (pure SI computation) → [`analysis`]
-//! (what a sheet needs, computed once) → [`sheet`] (paper-millimetre scene) →
-//! [`backend`] (SVG, PDF, PNG bytes) and [`report`] (tables, JSON).
+//! [`project`] (the project file) → pure SI domains ([`lever`]; [`num`] under them all) →
+//! [`sheets`] (composition into a [`drawing`] scene of paper millimetres) → [`backend`]
+//! (SVG, PDF, PNG bytes) and [`report`] (tables); [`pipeline`] runs the sheets a project
+//! has, [`cli`] writes their files.
 //!
 //! ```
 //! use tmm_sheets::pipeline;
 //!
 //! // The guide's worked example: a six-bar vibrating conveyor.
 //! let project = pipeline::load(pipeline::DEFAULT_PROJECT)?;
-//! let s = project.mechanism.solve(0.3)?; // absolute crank angle, radians
-//! let d = project.mechanism.point_id("D").unwrap();
+//! let lever = project.lever.as_ref().expect("the example has a mechanism");
+//! let s = lever.mechanism.solve(0.3)?; // absolute crank angle, radians
+//! let d = lever.mechanism.point_id("D").unwrap();
 //! assert!(s.points[d].v.x.is_finite());
 //!
-//! let sheet = pipeline::sheet1(&project)?;
-//! assert!(sheet.svg.starts_with("<svg"));
-//! assert_eq!(sheet.kinematics.structure.formula, "I(0,1) → II(2,3) → II(4,5)");
+//! let sheets = pipeline::build(&project, &[])?;
+//! assert!(sheets[0].svg.starts_with("<svg"));
+//! assert_eq!(sheets[0].output.results["structure"]["formula"], "I(0,1) → II(2,3) → II(4,5)");
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-pub mod mechanics;
-pub mod model;
-pub mod analysis;
 pub mod backend;
-pub mod font;
-pub mod report;
-pub mod sheet;
-pub mod pipeline;
-pub mod results;
 pub mod cli;
+pub mod drawing;
+pub mod font;
+pub mod lever;
+pub mod num;
+pub mod pipeline;
+pub mod project;
+pub mod report;
+pub mod sheets;

@@ -1,14 +1,12 @@
 //! From a project file to finished outputs: the one path the CLI, the tests and the
-//! benchmarks share. Computes only what the requested sheets need.
+//! benchmarks share. It builds the sheets [`sheets::select`] picks, each computing only
+//! what it needs, and never names a sheet.
 
-use crate::analysis::{self, AnalysisError, ForceAnalysis, Kinematics};
-use crate::sheet::forces_view::ForceScales;
 use crate::backend::{raster, svg};
-use crate::mechanics::Mechanism;
-use crate::model::{self, ModelError, ProjectFile, Settings};
-use crate::report::{self, NumTable};
-use crate::sheet::scene::Scene;
-use crate::sheet::sheet1::{self, Scales, Sheet1Input};
+use crate::project::{self, ModelError, Project};
+use crate::report;
+use crate::sheets::{self, COURSE, Context, SelectError, SheetError, SheetOutput};
+use serde::Serialize;
 
 /// The guide's worked example (the vibrating conveyor), embedded as the default project.
 pub const DEFAULT_PROJECT: &str = include_str!("../fixtures/worked-example.yaml");
@@ -16,76 +14,106 @@ pub const DEFAULT_PROJECT: &str = include_str!("../fixtures/worked-example.yaml"
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
     #[error("project file")]
-    Model(#[from] ModelError),
-    #[error("mechanism")]
-    Analysis(#[from] AnalysisError),
+    Project(#[from] ModelError),
+    #[error(transparent)]
+    Select(#[from] SelectError),
+    #[error("sheet {number}")]
+    Sheet { number: u32, source: SheetError },
     #[error("output")]
     Backend(#[from] raster::BackendError),
 }
 
-/// A parsed and resolved project.
-pub struct Project {
-    pub file: ProjectFile,
-    pub mechanism: Mechanism,
-    pub settings: Settings,
-}
-
+/// Parses and resolves a project file.
 pub fn load(text: &str) -> Result<Project, Error> {
-    let file = model::parse(text)?;
-    let (mechanism, settings) = model::build(&file)?;
-    Ok(Project { file, mechanism, settings })
+    Ok(project::load(text)?)
 }
 
-/// Sheet 1 with everything computed for it.
-pub struct Sheet1Result {
-    pub kinematics: Kinematics,
-    /// The force analysis at φ1 with tables 3–5, when the project asks for one.
-    pub forces: Option<(ForceAnalysis, (NumTable, NumTable, NumTable))>,
-    pub force_scales: Option<ForceScales>,
-    pub scene: Scene,
-    pub scales: Scales,
+/// A built sheet and its SVG text.
+#[derive(Debug, Clone)]
+pub struct Built {
+    pub output: SheetOutput,
     pub svg: String,
-    pub tables: (NumTable, NumTable),
 }
 
-pub fn sheet1(p: &Project) -> Result<Sheet1Result, Error> {
-    let kinematics = analysis::kinematics(&p.mechanism, &p.settings)?;
-    let tables = report::sheet1_tables(&p.mechanism, &kinematics);
-    let forces = match &p.settings.forces {
-        Some(model) => {
-            let fa = analysis::forces(&p.mechanism, &kinematics, model)?;
-            let t = report::force_tables(&p.mechanism, &fa);
-            Some((fa, t))
-        }
-        None => None,
-    };
-    let input = Sheet1Input {
-        info: &p.file.project,
-        settings: &p.settings,
-        assumptions: &p.file.mechanism.assumptions,
-        tables: &tables,
-        forces: forces.as_ref().map(|(fa, t)| (fa, t)),
-    };
-    let s = sheet1::compose(&input, &p.mechanism, &kinematics);
-    let svg = svg::write(&s.scene);
-    Ok(Sheet1Result { kinematics, forces, force_scales: s.force_scales, scene: s.scene, scales: s.scales, svg, tables })
+/// Builds the `requested` sheets (all the project has sections for when empty), in order.
+pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
+    let ctx = Context { info: &p.info, sheet_count: COURSE.len() as u32 };
+    sheets::select(p, requested)?
+        .iter()
+        .map(|sheet| {
+            let number = sheet.kind().number;
+            let output = sheet.build(&ctx).map_err(|source| Error::Sheet { number, source })?;
+            let svg = svg::write(&output.scene)?;
+            Ok(Built { output, svg })
+        })
+        .collect()
 }
 
-/// PDF and PNG of a written SVG.
-impl Sheet1Result {
-    /// `results.json` for this sheet.
-    pub fn json(&self, p: &Project) -> String {
-        let forces = self.forces.as_ref().zip(self.force_scales.as_ref()).map(|((fa, _), sc)| (fa, sc));
-        crate::results::json(&p.file.project.title, &p.mechanism, &self.kinematics, &self.scales, forces)
+#[derive(Serialize)]
+struct Results<'a> {
+    units: &'static str,
+    title: &'a str,
+    #[serde(flatten)]
+    sheets: serde_json::Map<String, serde_json::Value>,
+}
+
+/// `results.json`: the title and each built sheet's section under `sheet<N>`.
+pub fn results_json(p: &Project, built: &[Built]) -> String {
+    let sheets = built.iter().map(|b| (format!("sheet{}", b.output.number), b.output.results.clone())).collect();
+    let r = Results { units: "SI: m, m/s, m/s², rad, rad/s, rad/s², kg, N, N·m", title: &p.info.title, sheets };
+    serde_json::to_string_pretty(&r).expect("results serialise")
+}
+
+/// Which of the slower formats to produce besides the SVG.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Formats {
+    pub pdf: bool,
+    /// The PNG preview's resolution, dots per inch; `None`: no PNG.
+    pub png_dpi: Option<f64>,
+}
+
+/// A sheet's PDF and PNG, each when asked for.
+#[derive(Debug, Clone, Default)]
+pub struct Rendered {
+    pub pdf: Option<Vec<u8>>,
+    pub png: Option<Vec<u8>>,
+}
+
+/// The PDF and PNG of a built sheet, only those asked for (the usvg tree is parsed once).
+pub fn render(b: &Built, formats: Formats) -> Result<Rendered, Error> {
+    if !formats.pdf && formats.png_dpi.is_none() {
+        return Ok(Rendered::default());
     }
-}
-
-pub fn pdf_and_png(svg_text: &str, scene: &Scene, png_dpi: Option<f64>) -> Result<(Vec<u8>, Option<Vec<u8>>), Error> {
-    let tree = raster::parse(svg_text)?;
-    let pdf = raster::pdf(&tree, scene.width, scene.height)?;
-    let png = match png_dpi {
-        Some(dpi) => Some(raster::png(&tree, scene.width, scene.height, dpi)?),
+    let (w, h) = (b.output.scene.width, b.output.scene.height);
+    let tree = raster::parse(&b.svg)?;
+    let pdf = if formats.pdf { Some(raster::pdf(&tree, w, h)?) } else { None };
+    let png = match formats.png_dpi {
+        Some(dpi) => Some(raster::png(&tree, w, h, dpi)?),
         None => None,
     };
-    Ok((pdf, png))
+    Ok(Rendered { pdf, png })
+}
+
+/// Every output file of a build as (name, bytes), in a fixed order: per sheet its SVG, PDF,
+/// PNG, tables as CSV and Markdown; then `results.json`.
+pub fn outputs(p: &Project, built: &[Built], formats: Formats) -> Result<Vec<(String, Vec<u8>)>, Error> {
+    let mut files = Vec::new();
+    for b in built {
+        let stem = format!("sheet{}", b.output.number);
+        files.push((format!("{stem}.svg"), b.svg.clone().into_bytes()));
+        let Rendered { pdf, png } = render(b, formats)?;
+        files.extend(pdf.map(|x| (format!("{stem}.pdf"), x)));
+        files.extend(png.map(|x| (format!("{stem}.png"), x)));
+        let mut md = String::new();
+        for t in &b.output.tables {
+            files.push((format!("{stem}-{}.csv", t.stem), report::csv(&t.table).into_bytes()));
+            if !md.is_empty() {
+                md.push('\n');
+            }
+            md.push_str(&report::markdown(&t.table, &t.title));
+        }
+        files.push((format!("{stem}-tables.md"), md.into_bytes()));
+    }
+    files.push(("results.json".into(), results_json(p, built).into_bytes()));
+    Ok(files)
 }

@@ -1,27 +1,59 @@
-//! The `tmm` binary as a user runs it.
+//! The `tmm` binary as a user runs it: outputs, messages, exit codes, the output folder.
 
-use std::process::Command;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
 
 fn tmm() -> Command {
     Command::new(env!("CARGO_BIN_EXE_tmm"))
 }
 
-fn temp_dir(name: &str) -> std::path::PathBuf {
+fn temp_dir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("tmm-cli-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     d
 }
 
+fn run(args: &[&str], out: &Path) -> Output {
+    tmm().args(args).arg("-o").arg(out).output().unwrap()
+}
+
+fn listing(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> =
+        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    names
+}
+
+fn fixture(name: &str) -> String {
+    format!("{}/fixtures/{name}.yaml", env!("CARGO_MANIFEST_DIR"))
+}
+
 #[test]
-fn default_build_writes_every_output() {
+fn default_build_writes_every_output_and_says_so_on_stdout() {
     let out = temp_dir("default");
-    let st = tmm().args(["-o"]).arg(&out).args(["--png-dpi", "20"]).status().unwrap();
-    assert!(st.success());
-    for f in ["sheet1.svg", "sheet1.pdf", "sheet1.png", "sheet1-velocities.csv", "sheet1-accelerations.csv", "sheet1-tables.md", "results.json"] {
-        let meta = std::fs::metadata(out.join(f)).unwrap_or_else(|_| panic!("{f} missing"));
-        assert!(meta.len() > 100, "{f} is empty");
+    let o = run(&["--png-dpi", "20"], &out);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(stdout.contains("sheet 1 written to") && stdout.contains("(10 files)"), "{stdout}");
+    let expected = [
+        ".tmm-outputs",
+        "results.json",
+        "sheet1-accelerations.csv",
+        "sheet1-balancing.csv",
+        "sheet1-inertia.csv",
+        "sheet1-reactions.csv",
+        "sheet1-tables.md",
+        "sheet1-velocities.csv",
+        "sheet1.pdf",
+        "sheet1.png",
+        "sheet1.svg",
+    ];
+    assert_eq!(listing(&out), expected);
+    for f in &expected[1..] {
+        assert!(std::fs::metadata(out.join(f)).unwrap().len() > 100, "{f} is empty");
     }
-    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
     assert_eq!(json["sheet1"]["structure"]["dof"], 1);
     assert_eq!(json["sheet1"]["positions"].as_array().unwrap().len(), 9, "8 positions and the second extreme");
     let _ = std::fs::remove_dir_all(&out);
@@ -30,30 +62,83 @@ fn default_build_writes_every_output() {
 #[test]
 fn build_subcommand_with_a_project_file_and_language() {
     let out = temp_dir("file");
-    let fixture = concat!(env!("CARGO_MANIFEST_DIR"), "/fixtures/kulisa.yaml");
-    let st = tmm().args(["build", fixture, "--sheet", "1", "--lang", "en", "--no-png", "--no-pdf", "-o"]).arg(&out).status().unwrap();
-    assert!(st.success());
+    let o = run(&["build", &fixture("kulisa"), "--sheet", "1", "--lang", "en", "--no-png", "--no-pdf"], &out);
+    assert!(o.status.success());
     let svg = std::fs::read_to_string(out.join("sheet1.svg")).unwrap();
     assert!(svg.contains("Velocity plans"));
     assert!(!out.join("sheet1.png").exists() && !out.join("sheet1.pdf").exists());
     let _ = std::fs::remove_dir_all(&out);
 }
 
+/// A rebuild removes the outputs of the previous build that it does not write (a force
+/// analysis' tables, a PNG), and only those: a user's own file in the folder stays.
 #[test]
-fn errors_exit_non_zero_with_a_message() {
+fn a_rebuild_leaves_no_stale_outputs_and_touches_nothing_else() {
+    let out = temp_dir("stale");
+    assert!(run(&["--png-dpi", "20", "--no-pdf"], &out).status.success());
+    assert!(out.join("sheet1-inertia.csv").exists() && out.join("sheet1.png").exists());
+    std::fs::write(out.join("notes.txt"), "mine").unwrap();
+    let kinematics_only = out.join("kinematics.yaml");
+    let text = std::fs::read_to_string(fixture("worked-example")).unwrap();
+    std::fs::write(&kinematics_only, &text[..text.find("\nforces:").unwrap()]).unwrap();
+    let o = run(&["build", kinematics_only.to_str().unwrap(), "--no-png", "--no-pdf"], &out);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        listing(&out),
+        [
+            ".tmm-outputs",
+            "kinematics.yaml",
+            "notes.txt",
+            "results.json",
+            "sheet1-accelerations.csv",
+            "sheet1-tables.md",
+            "sheet1-velocities.csv",
+            "sheet1.svg"
+        ]
+    );
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn errors_name_the_cause_with_documented_exit_codes() {
+    let out = temp_dir("errors");
+    // 1: the project is refused.
     let o = tmm().args(["build", "no-such-file.yaml"]).output().unwrap();
-    assert!(!o.status.success());
+    assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stderr).contains("cannot read no-such-file.yaml"));
-    let o = tmm().args(["--sheet", "2", "-o", "/tmp/tmm-never"]).output().unwrap();
-    assert!(!o.status.success());
-    assert!(String::from_utf8_lossy(&o.stderr).contains("sheet 2 is not available yet"));
+    let o = run(&["--sheet", "2"], &out);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("sheet 2 (the gears) is not available in this version"));
+    let o = run(&["--sheet", "4"], &out);
+    assert!(String::from_utf8_lossy(&o.stderr).contains("there is no sheet 4: the course project has sheets 1 to 3"));
     let bad = temp_dir("bad").with_extension("yaml");
     std::fs::write(&bad, "project: {title: x}\nmechanism: {frame: [], crank: {pivot: O}}\n").unwrap();
     let o = tmm().arg("build").arg(&bad).output().unwrap();
-    assert!(!o.status.success());
+    assert_eq!(o.status.code(), Some(1));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("line 2") && err.contains("missing field"), "{err}");
     assert!(!err.contains("panicked"));
+    // 2: a usage error.
+    assert_eq!(tmm().args(["--no-such-flag"]).output().unwrap().status.code(), Some(2));
+    // 3: the outputs cannot be written (the output "folder" is a file).
+    let o = tmm().args(["--no-png", "--no-pdf", "-o"]).arg(&bad).output().unwrap();
+    assert_eq!(o.status.code(), Some(3), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("cannot create"));
+    assert!(!out.exists(), "a refused build writes nothing");
+    let _ = std::fs::remove_file(&bad);
+}
+
+#[test]
+fn warnings_are_printed_and_the_build_continues() {
+    let out = temp_dir("warn");
+    let text = std::fs::read_to_string(fixture("worked-example")).unwrap().replace("length: 0.12,", "length: 120,");
+    let file = temp_dir("warn-file").with_extension("yaml");
+    std::fs::write(&file, text).unwrap();
+    let o = run(&["build", file.to_str().unwrap(), "--no-png", "--no-pdf"], &out);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("warning:") && err.contains("mechanism.crank.length") && err.contains("millimetres"), "{err}");
+    let _ = std::fs::remove_file(&file);
+    let _ = std::fs::remove_dir_all(&out);
 }
 
 #[test]

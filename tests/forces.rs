@@ -3,21 +3,20 @@
 
 mod common;
 
-use common::{close, fixture, fixture_names};
+use common::{close, fixture_names, lever, lever_of};
 use proptest::prelude::*;
-use tmm_sheets::analysis;
-use tmm_sheets::mechanics::kinetostatics::{self, Forces, Kind, FRAME};
-use tmm_sheets::mechanics::motion;
-use tmm_sheets::pipeline;
+use tmm_sheets::lever::analysis;
+use tmm_sheets::lever::kinetostatics::{self, FRAME, Forces, Kind};
+use tmm_sheets::lever::motion;
 
 fn largest_force(f: &Forces) -> f64 {
     f.applied.iter().map(|a| a.force.hypot()).fold(0.0, f64::max)
 }
 
-fn analysed(name: &str) -> (tmm_sheets::pipeline::Project, Forces) {
-    let p = fixture(name);
+fn analysed(name: &str) -> (tmm_sheets::project::LeverProject, Forces) {
+    let p = lever(name);
     let k = analysis::kinematics(&p.mechanism, &p.settings).expect("kinematics");
-    let model = p.settings.forces.as_ref().unwrap_or_else(|| panic!("{name} has a force analysis"));
+    let model = p.forces.as_ref().unwrap_or_else(|| panic!("{name} has a force analysis"));
     let fa = analysis::forces(&p.mechanism, &k, model).unwrap_or_else(|e| panic!("{name}: {e}"));
     (p, fa.forces)
 }
@@ -31,8 +30,16 @@ fn every_link_of_every_fixture_is_in_equilibrium() {
         for link in 0..p.mechanism.links.len() {
             let (r, m) = f.residual(link);
             let arm = 1.0 + f.on(link).map(|a| a.at.hypot()).fold(0.0, f64::max);
-            assert!(r.hypot() <= 1e-9 * scale, "{name}: link {} force residual {r:?} (largest force {scale})", p.mechanism.links[link].number);
-            assert!(m.abs() <= 1e-9 * scale * arm, "{name}: link {} moment residual {m}", p.mechanism.links[link].number);
+            assert!(
+                r.hypot() <= 1e-9 * scale,
+                "{name}: link {} force residual {r:?} (largest force {scale})",
+                p.mechanism.links[link].number
+            );
+            assert!(
+                m.abs() <= 1e-9 * scale * arm,
+                "{name}: link {} moment residual {m}",
+                p.mechanism.links[link].number
+            );
         }
     }
 }
@@ -47,9 +54,22 @@ fn reactions_obey_newtons_third_law() {
             if from == FRAME {
                 continue;
             }
-            let back = f.applied.iter().find(|b| b.on == from && matches!(b.kind, Kind::Reaction { from: x, .. } if x == a.on) && (b.at - a.at).hypot() < 1e-12);
-            let b = back.unwrap_or_else(|| panic!("{name}: no reaction of link {} on {}", p.mechanism.links[a.on].number, p.mechanism.links[from].number));
-            assert!((a.force + b.force).hypot() <= 1e-12 * a.force.hypot().max(1.0), "{name}: R_ij + R_ji = {:?}", a.force + b.force);
+            let back = f.applied.iter().find(|b| {
+                b.on == from
+                    && matches!(b.kind, Kind::Reaction { from: x, .. } if x == a.on)
+                    && (b.at - a.at).hypot() < 1e-12
+            });
+            let b = back.unwrap_or_else(|| {
+                panic!(
+                    "{name}: no reaction of link {} on {}",
+                    p.mechanism.links[a.on].number, p.mechanism.links[from].number
+                )
+            });
+            assert!(
+                (a.force + b.force).hypot() <= 1e-12 * a.force.hypot().max(1.0),
+                "{name}: R_ij + R_ji = {:?}",
+                a.force + b.force
+            );
             pairs += 1;
         }
         // Every group has an inner pair and joins something moving or the crank.
@@ -67,7 +87,11 @@ fn every_polygon_closes() {
             assert!(sum.hypot() <= 1e-9 * scale, "{name}: polygon of group {:?} leaves {sum:?}", poly.group);
             if let Some(inner) = poly.inner {
                 let first = poly.terms[..poly.split].iter().fold(inner.force, |s, t| s + t.force);
-                assert!(first.hypot() <= 1e-9 * scale, "{name}: the first link's part of group {:?} does not close with the inner reaction", poly.group);
+                assert!(
+                    first.hypot() <= 1e-9 * scale,
+                    "{name}: the first link's part of group {:?} does not close with the inner reaction",
+                    poly.group
+                );
             }
         }
     }
@@ -83,8 +107,9 @@ fn balancing_force_agrees_three_ways_on_every_fixture() {
 }
 
 /// P_m at course angle `phi` with the fixture's masses and loads.
-fn p_m_at(p: &tmm_sheets::pipeline::Project, k: &analysis::Kinematics, phi: f64) -> Forces {
-    let model = analysis::place_loads(&p.mechanism, &k.motion, p.settings.forces.as_ref().expect("forces")).expect("loads placed");
+fn p_m_at(p: &tmm_sheets::project::LeverProject, k: &analysis::Kinematics, phi: f64) -> Forces {
+    let model =
+        analysis::place_loads(&p.mechanism, &k.motion, p.forces.as_ref().expect("forces")).expect("loads placed");
     let s = motion::sample_at(&p.mechanism, &k.motion, phi).expect("assembles");
     kinetostatics::analyse(&p.mechanism, &s, &model).expect("solvable")
 }
@@ -95,7 +120,7 @@ proptest! {
     fn kinetostatic_p_m_is_the_power_balance_at_any_angle(which in 0usize..8, phi in 0.0f64..std::f64::consts::TAU) {
         let names = fixture_names();
         let name = &names[which % names.len()];
-        let p = fixture(name);
+        let p = lever(name);
         let k = analysis::kinematics(&p.mechanism, &p.settings).expect("kinematics");
         let f = p_m_at(&p, &k, phi);
         prop_assert!(close(f.p_m, f.p_m_power, 1e-9, 1e-9 * largest_force(&f)), "{} at φ = {}: {} vs {}", name, phi, f.p_m, f.p_m_power);
@@ -123,7 +148,7 @@ forces:
     - gas: {{point: B, force: {force}, indicator: table, table: {{toward_head: [[0, 1], [1, 1]], away_from_head: [[0, 1], [1, 1]]}}}}
 "
     );
-    let p = pipeline::load(&text).unwrap_or_else(|e| panic!("{e}: {e:?}"));
+    let p = lever_of(&text);
     let k = analysis::kinematics(&p.mechanism, &p.settings).expect("kinematics");
     for deg in [10.0, 45.0, 90.0, 135.0, 200.0, 300.0] {
         let phi = f64::to_radians(deg);

@@ -3,12 +3,12 @@
 
 mod common;
 
-use common::{close, fixture, fixture_names};
+use common::{close, fixture_names, lever, lever_of};
 use kurbo::Vec2;
 use std::f64::consts::TAU;
-use tmm_sheets::mechanics::linkage::{Mechanism, State, Step};
-use tmm_sheets::mechanics::motion::{analyse_motion, Start};
-use tmm_sheets::mechanics::plans::{acceleration_plan, relations, velocity_plan, SegKind};
+use tmm_sheets::lever::linkage::{Mechanism, State, Step};
+use tmm_sheets::lever::motion::{Start, analyse_motion};
+use tmm_sheets::lever::plans::{SegKind, acceleration_plan, relations, velocity_plan};
 
 /// Residual of every constraint of every step, metres.
 fn closure_residual(m: &Mechanism, s: &State) -> f64 {
@@ -44,7 +44,7 @@ fn angles() -> impl Iterator<Item = f64> {
 #[test]
 fn every_fixture_closes_its_loops_to_1e12_m() {
     for name in fixture_names() {
-        let p = fixture(&name);
+        let p = lever(&name);
         for th in angles() {
             let s = p.mechanism.solve(th).unwrap_or_else(|e| panic!("{name} at {th}: {e:?}"));
             let r = closure_residual(&p.mechanism, &s);
@@ -57,7 +57,7 @@ fn every_fixture_closes_its_loops_to_1e12_m() {
 #[test]
 fn velocities_and_accelerations_match_finite_differences() {
     for name in fixture_names() {
-        let p = fixture(&name);
+        let p = lever(&name);
         let m = &p.mechanism;
         let w = m.omega1;
         let dt = 1e-6 / w.abs();
@@ -75,7 +75,13 @@ fn velocities_and_accelerations_match_finite_differences() {
                 }
                 let v_fd = (sp.points[i].p - sm.points[i].p) / (2.0 * dt);
                 let a_fd = (sp.points[i].v - sm.points[i].v) / (2.0 * dt);
-                assert!((v_fd - s.points[i].v).hypot() <= 1e-6 * vscale, "{name} v of {} at θ={th}: {:?} vs {:?}", m.name(i), v_fd, s.points[i].v);
+                assert!(
+                    (v_fd - s.points[i].v).hypot() <= 1e-6 * vscale,
+                    "{name} v of {} at θ={th}: {:?} vs {:?}",
+                    m.name(i),
+                    v_fd,
+                    s.points[i].v
+                );
                 assert!((a_fd - s.points[i].a).hypot() <= 1e-6 * ascale, "{name} a of {} at θ={th}", m.name(i));
             }
             for l in 0..s.links.len() {
@@ -96,7 +102,7 @@ fn velocities_and_accelerations_match_finite_differences() {
 #[test]
 fn velocity_and_acceleration_plans_close() {
     for name in fixture_names() {
-        let p = fixture(&name);
+        let p = lever(&name);
         let m = &p.mechanism;
         for th in angles() {
             let s = m.solve(th).unwrap();
@@ -137,7 +143,7 @@ fn velocity_and_acceleration_plans_close() {
 #[test]
 fn position_zero_is_an_exact_extreme_of_the_output() {
     for name in fixture_names() {
-        let p = fixture(&name);
+        let p = lever(&name);
         let m = &p.mechanism;
         let motion = analyse_motion(m, p.settings.sense, p.settings.start).unwrap();
         let s0 = m.solve(motion.theta0).unwrap();
@@ -165,7 +171,7 @@ fn position_zero_is_an_exact_extreme_of_the_output() {
 #[test]
 fn full_turns_through_dead_centres_stay_finite() {
     for name in fixture_names() {
-        let m = fixture(&name).mechanism;
+        let m = lever(&name).mechanism;
         let mut s = State::default();
         for k in 0..3600 {
             let th = TAU * k as f64 / 3600.0;
@@ -180,7 +186,7 @@ fn full_turns_through_dead_centres_stay_finite() {
 #[test]
 fn rocker_extremes_do_not_depend_on_where_angles_wrap() {
     let text = std::fs::read_to_string(common::root().join("fixtures/four-bar.yaml")).unwrap();
-    let original = tmm_sheets::pipeline::load(&text).unwrap().mechanism;
+    let original = lever_of(&text).mechanism;
     let link = original.link_by_number(3).unwrap();
     let mean = (0..72).fold(Vec2::ZERO, |acc, k| acc + original.solve(TAU * k as f64 / 72.0).unwrap().links[link].dir);
     // Turn the frame about O so that the swing is centred on 180°.
@@ -188,7 +194,7 @@ fn rocker_extremes_do_not_depend_on_where_angles_wrap() {
     let o1 = Vec2::new(0.20 * rot.cos(), 0.20 * rot.sin());
     let text = text.replace("at: [0.20, 0]", &format!("at: [{:.15}, {:.15}]", o1.x, o1.y));
     for start in ["min", "max"] {
-        let p = tmm_sheets::pipeline::load(&text.replace("positions: 12", &format!("positions: 12\n  start: {start}"))).unwrap();
+        let p = lever_of(&text.replace("positions: 12", &format!("positions: 12\n  start: {start}")));
         let m = &p.mechanism;
         let angles: Vec<f64> = (0..72).map(|k| m.solve(TAU * k as f64 / 72.0).unwrap().links[link].angle()).collect();
         assert!(angles.iter().any(|&a| a > 3.0) && angles.iter().any(|&a| a < -3.0), "the swing crosses ±180°");
@@ -197,7 +203,11 @@ fn rocker_extremes_do_not_depend_on_where_angles_wrap() {
         let a0 = angle_at(motion.theta0);
         for d in [-0.05, 0.05] {
             let a = angle_at(motion.theta0 + d);
-            if start == "min" { assert!(a >= a0, "{start}: {a} < {a0}") } else { assert!(a <= a0, "{start}: {a} > {a0}") }
+            if start == "min" {
+                assert!(a >= a0, "{start}: {a} < {a0}")
+            } else {
+                assert!(a <= a0, "{start}: {a} > {a0}")
+            }
         }
     }
 }

@@ -4,8 +4,8 @@
 use kurbo::Vec2;
 use proptest::prelude::*;
 use std::f64::consts::TAU;
-use tmm_sheets::mechanics::dyads::{crank, rrp, rrr};
-use tmm_sheets::mechanics::Kin;
+use tmm_sheets::lever::Kin;
+use tmm_sheets::lever::dyads::{crank, rrp, rrr};
 
 /// Axial crank-slider: x_B = r·cosθ + √(l² − r²sin²θ) and its time derivatives.
 fn slider_closed_form(r: f64, l: f64, th: f64, w: f64) -> (f64, f64, f64) {

@@ -8,14 +8,20 @@ use common::{fixture, fixture_names, root};
 use kurbo::Rect;
 use std::path::Path;
 use tmm_sheets::backend::raster;
-use tmm_sheets::model::Language;
-use tmm_sheets::pipeline::{self, Project};
+use tmm_sheets::drawing::frame;
+use tmm_sheets::drawing::labels::Language;
+use tmm_sheets::drawing::scene::{Item, Scene};
+use tmm_sheets::pipeline::{self, Built, Formats};
+use tmm_sheets::project::Project;
 use tmm_sheets::report;
-use tmm_sheets::sheet::frame;
-use tmm_sheets::sheet::scene::{Item, Scene};
 
-fn build(p: &Project) -> pipeline::Sheet1Result {
-    pipeline::sheet1(p).unwrap()
+fn build(p: &Project) -> Built {
+    pipeline::build(p, &[]).unwrap().remove(0)
+}
+
+fn pdf_and_png(b: &Built, png_dpi: Option<f64>) -> (Vec<u8>, Option<Vec<u8>>) {
+    let r = pipeline::render(b, Formats { pdf: true, png_dpi }).unwrap();
+    (r.pdf.unwrap(), r.png)
 }
 
 #[test]
@@ -23,8 +29,8 @@ fn the_same_input_gives_byte_identical_svg_and_pdf() {
     let p = fixture("worked-example");
     let (a, b) = (build(&p), build(&p));
     assert_eq!(a.svg, b.svg);
-    let (pa, _) = pipeline::pdf_and_png(&a.svg, &a.scene, None).unwrap();
-    let (pb, _) = pipeline::pdf_and_png(&b.svg, &b.scene, None).unwrap();
+    let (pa, _) = pdf_and_png(&a, None);
+    let (pb, _) = pdf_and_png(&b, None);
     assert!(pa == pb, "PDF bytes differ between two runs");
 }
 
@@ -47,7 +53,7 @@ fn svg_parses_back_with_every_path_and_text_and_no_nan() {
         let tree = raster::parse(&r.svg).unwrap();
         let (mut paths, mut texts) = (0, 0);
         count_usvg(tree.root(), &mut paths, &mut texts);
-        let items = r.scene.groups.iter().flat_map(|g| &g.items);
+        let items = r.output.scene.groups.iter().flat_map(|g| &g.items);
         let want_texts = items.clone().filter(|i| matches!(i, Item::Text(_))).count();
         let want_paths = items.filter(|i| !matches!(i, Item::Text(_))).count() + 1; // + the white page
         assert_eq!(texts, want_texts, "{name}: usvg dropped text (font not found?)");
@@ -68,7 +74,13 @@ fn check_layout(name: &str, scene: &Scene) {
         for item in &g.items {
             // A border stroke centred on the region's edge counts as inside.
             let half_main = 0.36;
-            assert!(inside(g.region.inflate(half_main, half_main), item.bbox()), "{name}: an item of '{}' leaves its region: {:?} not in {:?}: {item:?}", g.id, item.bbox(), g.region);
+            assert!(
+                inside(g.region.inflate(half_main, half_main), item.bbox()),
+                "{name}: an item of '{}' leaves its region: {:?} not in {:?}: {item:?}",
+                g.id,
+                item.bbox(),
+                g.region
+            );
         }
         if g.id != "frame" {
             assert!(inside(inner, g.region), "{name}: region '{}' leaves the frame", g.id);
@@ -99,35 +111,48 @@ fn check_layout(name: &str, scene: &Scene) {
 #[test]
 fn nothing_leaves_its_region_or_overlaps_on_any_fixture() {
     for name in fixture_names() {
-        check_layout(&name, &build(&fixture(&name)).scene);
+        check_layout(&name, &build(&fixture(&name)).output.scene);
     }
 }
 
 #[test]
 fn every_language_renders_with_full_glyph_coverage() {
     let metrics = tmm_sheets::font::metrics();
-    for (lang, probe) in [(Language::Uz, "Tezliklar rejalari"), (Language::Ru, "Планы скоростей"), (Language::En, "Velocity plans")] {
+    for (lang, probe) in
+        [(Language::Uz, "Tezliklar rejalari"), (Language::Ru, "Планы скоростей"), (Language::En, "Velocity plans")]
+    {
         let mut p = fixture("worked-example");
-        p.file.project.language = lang;
+        p.info.language = lang;
         let r = build(&p);
         assert!(r.svg.contains(probe), "{lang:?}: missing {probe}");
-        for t in r.scene.texts() {
+        for t in r.output.scene.texts() {
             assert!(metrics.covers(&t.text), "{lang:?}: no glyph for some character of {:?}", t.text);
         }
-        check_layout(&format!("{lang:?}"), &r.scene);
+        check_layout(&format!("{lang:?}"), &r.output.scene);
     }
 }
 
 #[test]
 fn pdf_is_one_a1_page_with_embedded_text() {
     let r = build(&fixture("worked-example"));
-    let (pdf, png) = pipeline::pdf_and_png(&r.svg, &r.scene, Some(20.0)).unwrap();
+    let (pdf, png) = pdf_and_png(&r, Some(20.0));
     assert!(pdf.starts_with(b"%PDF-"));
     let text = String::from_utf8_lossy(&pdf);
     let mb = text.find("/MediaBox").expect("a media box");
-    let nums: Vec<f64> = text[mb + 9..].trim_start().trim_start_matches('[').split(']').next().unwrap().split_whitespace().map(|x| x.parse().unwrap()).collect();
+    let nums: Vec<f64> = text[mb + 9..]
+        .trim_start()
+        .trim_start_matches('[')
+        .split(']')
+        .next()
+        .unwrap()
+        .split_whitespace()
+        .map(|x| x.parse().unwrap())
+        .collect();
     let mm = |pt: f64| pt * 25.4 / 72.0;
-    assert!((mm(nums[2] - nums[0]) - 841.0).abs() < 0.01 && (mm(nums[3] - nums[1]) - 594.0).abs() < 0.01, "MediaBox {nums:?}");
+    assert!(
+        (mm(nums[2] - nums[0]) - 841.0).abs() < 0.01 && (mm(nums[3] - nums[1]) - 594.0).abs() < 0.01,
+        "MediaBox {nums:?}"
+    );
     assert!(text.contains("/Count 1"), "exactly one page");
     assert!(text.contains("/FontFile2") || text.contains("/FontFile3"), "the font is embedded");
     let png = png.unwrap();
@@ -165,10 +190,14 @@ fn compare_or_update(file: &str, actual: &str) {
         std::fs::write(&path, actual).unwrap();
         return;
     }
-    let expected = std::fs::read_to_string(&path).unwrap_or_else(|_| panic!("missing reference {}: run UPDATE=1 cargo test --test sheets", path.display()));
+    let expected = std::fs::read_to_string(&path)
+        .unwrap_or_else(|_| panic!("missing reference {}: run UPDATE=1 cargo test --test sheets", path.display()));
     if expected != actual {
         let note = if file.ends_with(".svg") { write_failure_images(file, &expected, actual) } else { String::new() };
-        panic!("{} differs from the reference; if the change is intended run UPDATE=1 cargo test --test sheets. {note}", path.display());
+        panic!(
+            "{} differs from the reference; if the change is intended run UPDATE=1 cargo test --test sheets. {note}",
+            path.display()
+        );
     }
 }
 
@@ -179,10 +208,18 @@ fn json_close(a: &serde_json::Value, b: &serde_json::Value, path: &str) -> Resul
     match (a, b) {
         (Number(x), Number(y)) => {
             let (x, y) = (x.as_f64().unwrap(), y.as_f64().unwrap());
-            if (x - y).abs() <= 1e-9 * (1.0 + x.abs().max(y.abs())) { Ok(()) } else { Err(format!("{path}: {x} vs {y}")) }
+            if (x - y).abs() <= 1e-9 * (1.0 + x.abs().max(y.abs())) {
+                Ok(())
+            } else {
+                Err(format!("{path}: {x} vs {y}"))
+            }
         }
-        (Array(x), Array(y)) if x.len() == y.len() => x.iter().zip(y).enumerate().try_for_each(|(i, (p, q))| json_close(p, q, &format!("{path}[{i}]"))),
-        (Object(x), Object(y)) if x.len() == y.len() => x.iter().try_for_each(|(k, v)| json_close(v, y.get(k).ok_or(format!("{path}.{k} missing"))?, &format!("{path}.{k}"))),
+        (Array(x), Array(y)) if x.len() == y.len() => {
+            x.iter().zip(y).enumerate().try_for_each(|(i, (p, q))| json_close(p, q, &format!("{path}[{i}]")))
+        }
+        (Object(x), Object(y)) if x.len() == y.len() => x.iter().try_for_each(|(k, v)| {
+            json_close(v, y.get(k).ok_or(format!("{path}.{k} missing"))?, &format!("{path}.{k}"))
+        }),
         _ if a == b => Ok(()),
         _ => Err(format!("{path}: {a} vs {b}")),
     }
@@ -197,7 +234,10 @@ fn compare_json_or_update(file: &str, actual: &str) {
     let expected: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
     let actual: serde_json::Value = serde_json::from_str(actual).unwrap();
     if let Err(e) = json_close(&expected, &actual, "") {
-        panic!("{} differs from the reference at {e}; if intended run UPDATE=1 cargo test --test sheets", path.display());
+        panic!(
+            "{} differs from the reference at {e}; if intended run UPDATE=1 cargo test --test sheets",
+            path.display()
+        );
     }
 }
 
@@ -206,16 +246,19 @@ fn worked_example_matches_the_reference_sheets() {
     let p = fixture("worked-example");
     let r = build(&p);
     compare_or_update("sheet1.svg", &r.svg);
-    compare_or_update("sheet1-velocities.csv", &report::csv(&r.tables.0));
-    compare_or_update("sheet1-accelerations.csv", &report::csv(&r.tables.1));
-    let json = r.json(&p);
-    let (_, (t3, t4, t5)) = r.forces.as_ref().expect("the worked example has a force analysis");
-    compare_or_update("sheet1-inertia.csv", &report::csv(t3));
-    compare_or_update("sheet1-reactions.csv", &report::csv(t4));
-    compare_or_update("sheet1-balancing.csv", &report::csv(t5));
+    let stems: Vec<&str> = r.output.tables.iter().map(|t| t.stem).collect();
+    assert_eq!(
+        stems,
+        ["velocities", "accelerations", "inertia", "reactions", "balancing"],
+        "the worked example has tables 1–5"
+    );
+    for t in &r.output.tables {
+        compare_or_update(&format!("sheet1-{}.csv", t.stem), &report::csv(&t.table));
+    }
+    let json = pipeline::results_json(&p, std::slice::from_ref(&r));
     compare_json_or_update("results.json", &json);
     if std::env::var_os("UPDATE").is_some() {
-        let (pdf, png) = pipeline::pdf_and_png(&r.svg, &r.scene, Some(60.0)).unwrap();
+        let (pdf, png) = pdf_and_png(&r, Some(60.0));
         std::fs::write(reference_dir().join("sheet1.pdf"), pdf).unwrap();
         std::fs::write(reference_dir().join("sheet1.png"), png.unwrap()).unwrap();
     }

@@ -1,17 +1,8 @@
 //! SVG text → usvg tree (with only the embedded font), → PDF (krilla-svg) or PNG (resvg).
 
+pub use super::BackendError;
 use crate::font;
 use std::sync::Arc;
-
-#[derive(Debug, thiserror::Error)]
-pub enum BackendError {
-    #[error("the generated SVG does not parse: {0}")]
-    Parse(String),
-    #[error("PDF conversion failed: {0}")]
-    Pdf(String),
-    #[error("PNG rendering failed: {0}")]
-    Png(String),
-}
 
 /// usvg options that know exactly one font: the embedded one.
 pub fn options() -> usvg::Options<'static> {
@@ -39,7 +30,9 @@ pub fn pdf(tree: &usvg::Tree, width_mm: f64, height_mm: f64) -> Result<Vec<u8>, 
     let mut doc = Document::new();
     let mut page = doc.start_page_with(PageSettings::new(size));
     let mut surface = page.surface();
-    surface.draw_svg(tree, size, SvgSettings::default()).ok_or_else(|| BackendError::Pdf("drawing the SVG failed".into()))?;
+    surface
+        .draw_svg(tree, size, SvgSettings::default())
+        .ok_or_else(|| BackendError::Pdf("drawing the SVG failed".into()))?;
     surface.finish();
     page.finish();
     doc.finish().map_err(|e| BackendError::Pdf(format!("{e:?}")))

@@ -1,15 +1,16 @@
 //! A small deterministic SVG writer: fixed decimals, `-0` written as `0`, XML escaping,
 //! elements in scene order with the groups' stable ids. No timestamps, no randomness.
 
+use super::BackendError;
+use crate::drawing::scene::{Anchor, Item, LineType, Pen, Scene, Text};
 use crate::font;
-use crate::sheet::scene::{Anchor, Item, LineType, Pen, Scene, Text};
 use kurbo::Point;
 use std::fmt::Write;
 
 /// Digits after the decimal point for paper millimetres (1 µm).
 const DECIMALS: usize = 3;
 
-/// Formats a number with at most [`DECIMALS`] decimals, no trailing zeros, no `-0`.
+/// Formats a number with at most `DECIMALS` (3) decimals, no trailing zeros, no `-0`.
 pub fn num(x: f64) -> String {
     debug_assert!(x.is_finite(), "non-finite coordinate in the scene");
     let x = if x.is_finite() { x } else { 0.0 };
@@ -89,7 +90,17 @@ fn text_element(t: &Text) -> String {
 }
 
 /// Serialises a scene as an SVG document sized in millimetres.
-pub fn write(scene: &Scene) -> String {
+pub fn write(scene: &Scene) -> Result<String, BackendError> {
+    for g in &scene.groups {
+        for item in &g.items {
+            let bb = item.bbox();
+            for value in [bb.x0, bb.y0, bb.x1, bb.y1] {
+                if !value.is_finite() {
+                    return Err(BackendError::NonFinite { group: g.id.clone(), value, item: format!("{item:?}") });
+                }
+            }
+        }
+    }
     let mut s = String::with_capacity(1 << 20);
     let (w, h) = (num(scene.width), num(scene.height));
     let _ = writeln!(
@@ -112,7 +123,7 @@ pub fn write(scene: &Scene) -> String {
         s.push_str("</g>\n");
     }
     s.push_str("</g>\n</svg>\n");
-    s
+    Ok(s)
 }
 
 fn write_item(s: &mut String, item: &Item) {

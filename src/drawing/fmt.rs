@@ -1,0 +1,62 @@
+//! Numbers as the sheets print them: decimal comma in Uzbek and Russian, point in English.
+
+use crate::drawing::labels::Language;
+
+/// A value with about four significant digits (three decimals below 10).
+pub fn value(x: f64, lang: Language) -> String {
+    let a = x.abs();
+    let dec = if a < 10.0 {
+        3
+    } else if a < 100.0 {
+        2
+    } else if a < 1000.0 {
+        1
+    } else {
+        0
+    };
+    let s = format!("{x:.dec$}");
+    let s = if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    };
+    localise(&s, lang)
+}
+
+/// A tiny number in the form 1,6·10⁻¹³ (zero as 0), as the sheets show a residual.
+pub fn scientific(x: f64, lang: Language) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let e = x.abs().log10().floor() as i32;
+    let mantissa = x / 10f64.powi(e);
+    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let exp: String = e.abs().to_string().chars().map(|c| SUP[c.to_digit(10).expect("a digit") as usize]).collect();
+    let sign = if e < 0 { "⁻" } else { "" };
+    format!("{}·10{sign}{exp}", localise(&format!("{mantissa:.1}"), lang))
+}
+
+/// Replaces the decimal point for the language.
+pub fn localise(s: &str, lang: Language) -> String {
+    match lang {
+        Language::En => s.to_string(),
+        Language::Uz | Language::Ru => s.replace('.', ","),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimal_comma_and_significant_digits() {
+        assert_eq!(value(0.5254, Language::Uz), "0,525");
+        assert_eq!(value(18.149, Language::Ru), "18,15");
+        assert_eq!(value(18.149, Language::En), "18.15");
+        assert_eq!(value(-0.0001, Language::En), "0.000");
+        assert_eq!(value(1234.6, Language::En), "1235");
+        assert_eq!(scientific(1.63e-13, Language::Uz), "1,6·10⁻¹³");
+        assert_eq!(scientific(-250.0, Language::En), "-2.5·10²");
+        assert_eq!(scientific(0.0, Language::En), "0");
+    }
+}

@@ -1,0 +1,212 @@
+//! The A1 sheet's frame (GOST 2.301) and title block (GOST 2.104, form 1), drawn from
+//! `templates/sheet-a1.yaml`: page size, margins, the block's lines, captions and fields.
+
+use super::labels::Labels;
+use super::scene::{Anchor, Group, MAIN, THIN, Text};
+use super::text::{paragraph, wrap};
+use kurbo::{Point, Rect};
+use serde::Deserialize;
+
+const SOURCE: &str = include_str!("../../templates/sheet-a1.yaml");
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Template {
+    page: [f64; 2],
+    margins: Margins,
+    title_block: BlockTemplate,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Margins {
+    left: f64,
+    top: f64,
+    right: f64,
+    bottom: f64,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BlockTemplate {
+    size: [f64; 2],
+    main: Vec<[f64; 4]>,
+    thin: Vec<[f64; 4]>,
+    captions: Vec<Caption>,
+    fields: Vec<Field>,
+    name_field: [f64; 4],
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Caption {
+    key: String,
+    at: [f64; 2],
+    h: f64,
+    anchor: TemplateAnchor,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Field {
+    field: FieldName,
+    at: [f64; 2],
+    h: f64,
+    anchor: TemplateAnchor,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum TemplateAnchor {
+    Start,
+    Middle,
+    End,
+}
+
+impl From<TemplateAnchor> for Anchor {
+    fn from(a: TemplateAnchor) -> Anchor {
+        match a {
+            TemplateAnchor::Start => Anchor::Start,
+            TemplateAnchor::Middle => Anchor::Middle,
+            TemplateAnchor::End => Anchor::End,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum FieldName {
+    Designation,
+    Student,
+    Supervisor,
+    Scale,
+    Sheet,
+    Sheets,
+    Organisation,
+}
+
+fn template() -> &'static Template {
+    static T: std::sync::OnceLock<Template> = std::sync::OnceLock::new();
+    T.get_or_init(|| serde_saphyr::from_str(SOURCE).expect("templates/sheet-a1.yaml is valid (tested)"))
+}
+
+pub const A1_W: f64 = 841.0;
+pub const A1_H: f64 = 594.0;
+
+/// The page size from the template, mm.
+pub fn page() -> (f64, f64) {
+    let t = template();
+    (t.page[0], t.page[1])
+}
+
+/// The inside of the frame.
+pub fn inner() -> Rect {
+    let t = template();
+    let m = &t.margins;
+    Rect::new(m.left, m.top, t.page[0] - m.right, t.page[1] - m.bottom)
+}
+
+/// The title block's rectangle, in the frame's bottom-right corner.
+pub fn title_block_rect() -> Rect {
+    let f = inner();
+    let [w, h] = template().title_block.size;
+    Rect::new(f.x1 - w, f.y1 - h, f.x1, f.y1)
+}
+
+/// What the title block says.
+pub struct TitleBlock<'a> {
+    pub designation: &'a str,
+    pub sheet_name: &'a str,
+    pub project_title: &'a str,
+    pub student: &'a str,
+    pub supervisor: &'a str,
+    pub organisation: &'a str,
+    pub scale: &'a str,
+    pub sheet_no: u32,
+    /// The number of sheets of the whole project.
+    pub sheet_count: u32,
+}
+
+fn rect_path(g: &mut Group, r: Rect) {
+    g.path(vec![r.origin(), Point::new(r.x1, r.y0), Point::new(r.x1, r.y1), Point::new(r.x0, r.y1)], true, MAIN);
+}
+
+pub fn frame(g: &mut Group) {
+    rect_path(g, inner());
+}
+
+pub fn title_block(g: &mut Group, l: &Labels, tb: &TitleBlock) {
+    let t = &template().title_block;
+    let r = title_block_rect();
+    let o = r.origin().to_vec2();
+    let p = |x: f64, y: f64| Point::new(x, y) + o;
+    rect_path(g, r);
+    for (lines, pen) in [(&t.main, MAIN), (&t.thin, THIN)] {
+        for &[x1, y1, x2, y2] in lines {
+            g.line(p(x1, y1), p(x2, y2), pen);
+        }
+    }
+    for c in &t.captions {
+        g.text(Text::new(p(c.at[0], c.at[1]), l.get(&c.key), c.h, c.anchor.into()));
+    }
+    let sheet = format!("{} {}", l.get("tb_sheet_no"), tb.sheet_no);
+    let sheets = format!("{} {}", l.get("tb_sheets"), tb.sheet_count);
+    for f in &t.fields {
+        let value = match f.field {
+            FieldName::Designation => tb.designation,
+            FieldName::Student => tb.student,
+            FieldName::Supervisor => tb.supervisor,
+            FieldName::Scale => tb.scale,
+            FieldName::Sheet => &sheet,
+            FieldName::Sheets => &sheets,
+            FieldName::Organisation => tb.organisation,
+        };
+        if !value.is_empty() {
+            g.text(Text::new(p(f.at[0], f.at[1]), value, f.h, f.anchor.into()));
+        }
+    }
+    let [x0, y0, x1, y1] = t.name_field;
+    name_field(g, Rect::new(x0, y0, x1, y1) + o, tb, l);
+}
+
+/// The name field: sheet name and project title, wrapped and centred.
+fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Labels) {
+    let w = r.width() - 3.0;
+    let blocks = [
+        (wrap(tb.sheet_name, 3.5, w), 3.5),
+        (wrap(tb.project_title, 3.5, w), 3.5),
+        (wrap(l.get("tb_course"), 2.5, w), 2.5),
+    ];
+    let height: f64 = blocks.iter().map(|(ls, h)| ls.len() as f64 * 1.6 * h).sum::<f64>() + 2.0 * 2.0;
+    let mut y = r.center().y - height / 2.0 + 4.0;
+    for (lines, h) in &blocks {
+        y = paragraph(g, Point::new(r.center().x, y), lines, *h, Anchor::Middle) + 2.0;
+    }
+}
+
+/// Whether `r` lies inside `outer` (for the layout tests).
+pub fn is_inside(outer: Rect, r: Rect) -> bool {
+    r.x0 >= outer.x0 - 1e-9 && r.y0 >= outer.y0 - 1e-9 && r.x1 <= outer.x1 + 1e-9 && r.y1 <= outer.y1 + 1e-9
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::drawing::labels::Language;
+
+    #[test]
+    fn template_is_a1_with_gost_margins_and_a_185_by_55_block() {
+        assert_eq!(page(), (A1_W, A1_H));
+        assert_eq!(inner(), Rect::new(20.0, 5.0, 836.0, 589.0));
+        assert_eq!(title_block_rect(), Rect::new(651.0, 534.0, 836.0, 589.0));
+        let l = Labels::new(Language::Ru);
+        for c in &template().title_block.captions {
+            assert!(l.keys().any(|k| k == c.key), "caption key {} is not in labels.yaml", c.key);
+        }
+        let block = Rect::from_origin_size(Point::ZERO, (185.0, 55.0));
+        let t = &template().title_block;
+        for &[x1, y1, x2, y2] in t.main.iter().chain(&t.thin) {
+            assert!(is_inside(block, Rect::new(x1.min(x2), y1.min(y2), x1.max(x2), y1.max(y2))));
+        }
+    }
+}

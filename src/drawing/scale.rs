@@ -1,0 +1,89 @@
+//! Scale factors. Lengths use the scales of GOST 2.302; plans use the course's round
+//! factors {1, 2, 2.5, 4, 5}·10ⁿ.
+
+const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
+
+/// GOST 2.302 reductions 1:k (k real mm per paper mm).
+const REDUCTIONS: [f64; 21] = [
+    1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 15.0, 20.0, 25.0, 40.0, 50.0, 75.0, 100.0, 200.0, 400.0, 500.0, 800.0, 1000.0,
+    2000.0, 5000.0, 10000.0,
+];
+/// GOST 2.302 enlargements k:1.
+const ENLARGEMENTS: [f64; 9] = [2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0];
+
+/// Tolerance that keeps an exact value instead of bumping it to the next one.
+const EXACT: f64 = 1.0 - 1e-12;
+
+/// The smallest round value ≥ `x` (for x > 0). A scale factor μ (units per mm) chosen
+/// this way makes a drawing as large as possible without leaving its region.
+pub fn round_up(x: f64) -> f64 {
+    assert!(x.is_finite() && x > 0.0, "scale of a non-positive extent");
+    let mut e = x.log10().floor() as i32 - 1;
+    loop {
+        let p = 10f64.powi(e);
+        for m in MANTISSAS {
+            if m * p >= x * EXACT {
+                return m * p;
+            }
+        }
+        e += 1;
+    }
+}
+
+/// The smallest μ_l (m/mm) of a GOST 2.302 scale that is ≥ `x`.
+pub fn length_scale(x: f64) -> f64 {
+    assert!(x.is_finite() && x > 0.0, "scale of a non-positive extent");
+    let enlarge = ENLARGEMENTS.iter().rev().map(|k| 0.001 / k);
+    let reduce = REDUCTIONS.iter().map(|k| 0.001 * k);
+    enlarge.chain(reduce).find(|&mu| mu >= x * EXACT).unwrap_or_else(|| round_up(x))
+}
+
+/// Formats a scale factor with as many significant digits as it has.
+pub fn format(mu: f64) -> String {
+    let s = format!("{mu:.10}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    s.to_string()
+}
+
+/// A length scale μ_l (m/mm) as a GOST 2.302 ratio: 0.005 m/mm is 1:5, 0.0005 m/mm is 2:1.
+pub fn ratio(mu_l: f64) -> String {
+    let k = mu_l * 1000.0; // real millimetres per paper millimetre
+    if k >= 1.0 - 1e-9 { format!("1:{}", format(k)) } else { format!("{}:1", format(1.0 / k)) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rounds_up_to_the_series() {
+        assert_eq!(round_up(0.0042), 0.005);
+        assert_eq!(round_up(0.005), 0.005);
+        assert_eq!(round_up(0.0051), 0.01);
+        assert_eq!(round_up(0.011), 0.02);
+        assert_eq!(round_up(0.021975), 0.025);
+        assert_eq!(round_up(8.0), 10.0);
+    }
+
+    #[test]
+    fn length_scales_are_gost_scales() {
+        assert_eq!(length_scale(0.0042), 0.005);
+        assert_eq!(length_scale(0.0051), 0.01);
+        assert_eq!(length_scale(0.011), 0.015);
+        assert_eq!(length_scale(0.06), 0.075);
+        assert_eq!(length_scale(0.0007), 0.001);
+        assert_eq!(length_scale(0.0003), 0.0004);
+        for x in [1e-5, 3e-4, 0.0013, 0.0033, 0.07, 0.9] {
+            let r = ratio(length_scale(x));
+            assert!(!r.contains('.') || r == "1:2.5" || r == "2.5:1", "{x}: {r}");
+        }
+    }
+
+    #[test]
+    fn gost_ratios() {
+        assert_eq!(ratio(0.005), "1:5");
+        assert_eq!(ratio(0.001), "1:1");
+        assert_eq!(ratio(0.0005), "2:1");
+        assert_eq!(ratio(0.0004), "2.5:1");
+    }
+}

@@ -1,0 +1,166 @@
+//! What sheet 1 needs from the mechanics, computed once: the drawn positions (with the
+//! second extreme position), the assigned position, trajectories and structure.
+
+use super::kinetostatics::{self, ForceError, ForceModel, Forces};
+use super::linkage::{Mechanism, PointId, State};
+use super::motion::{self, Motion, MotionError, Start};
+use super::structure::{self, Structure};
+use kurbo::Vec2;
+use std::f64::consts::TAU;
+
+/// Samples per turn of the centre-of-mass trajectories: a chord deviates from the true
+/// curve by at most r·(1 − cos 0.5°) ≈ 4·10⁻⁵·r, far below a drawn line's width.
+pub const TRAJECTORY_SAMPLES: usize = 360;
+
+/// What to analyse: the crank's sense, position 0, the drawn positions and φ1.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Settings {
+    /// +1 counter-clockwise, −1 clockwise.
+    pub sense: f64,
+    pub start: Start,
+    /// 12 (every 30°) or 8 (every 45°).
+    pub positions: usize,
+    /// Course angle φ1 of the assigned (thick) position, degrees (default: position 1).
+    pub assigned_deg: Option<f64>,
+    /// Positions that get acceleration plans.
+    pub acceleration_plans: Vec<usize>,
+}
+
+/// One drawn position of the mechanism.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Position {
+    /// "0" … "11", or "4′" for the second extreme position.
+    pub label: String,
+    /// Course crank angle from position 0 in the sense of rotation, radians.
+    pub phi: f64,
+    pub state: State,
+    /// An extreme (dead) position of the output link.
+    pub extreme: bool,
+}
+
+#[derive(Debug, Clone)]
+pub struct Kinematics {
+    pub motion: Motion,
+    /// The regular positions in order, the second extreme inserted where it falls.
+    pub positions: Vec<Position>,
+    /// The assigned (thick) position.
+    pub assigned: Position,
+    /// Indices into `positions` of the acceleration plans.
+    pub acceleration: Vec<usize>,
+    pub trajectories: Vec<(PointId, Vec<Vec2>)>,
+    pub structure: Structure,
+}
+
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum AnalysisError {
+    #[error(transparent)]
+    Motion(#[from] MotionError),
+    #[error("force analysis at φ1 = {phi_deg:.2}°: {error}")]
+    Force { phi_deg: f64, error: ForceError },
+    #[error(
+        "the solution at φ = {phi_deg:.2}° is not finite (point {point}); the mechanism is too close to a singular position"
+    )]
+    NotFinite { phi_deg: f64, point: String },
+}
+
+fn check_finite(m: &Mechanism, s: &State, phi: f64) -> Result<(), AnalysisError> {
+    for (i, k) in s.points.iter().enumerate() {
+        let ok = [k.p, k.v, k.a].iter().all(|v| v.x.is_finite() && v.y.is_finite());
+        if !ok {
+            return Err(AnalysisError::NotFinite { phi_deg: phi.to_degrees(), point: m.name(i).into() });
+        }
+    }
+    let links_ok = s.links.iter().all(|l| l.dir.is_finite() && l.omega.is_finite() && l.eps.is_finite());
+    if !links_ok {
+        return Err(AnalysisError::NotFinite { phi_deg: phi.to_degrees(), point: "(link)".into() });
+    }
+    Ok(())
+}
+
+fn position(m: &Mechanism, motion: &Motion, phi: f64, label: String, extreme: bool) -> Result<Position, AnalysisError> {
+    let state = motion::sample_at(m, motion, phi)?;
+    check_finite(m, &state, phi)?;
+    Ok(Position { label, phi, state, extreme })
+}
+
+pub fn kinematics(m: &Mechanism, s: &Settings) -> Result<Kinematics, AnalysisError> {
+    let motion = motion::analyse_motion(m, s.sense, s.start)?;
+    let n = s.positions;
+    let step = TAU / n as f64;
+    let mut positions = Vec::with_capacity(n + 1);
+    for k in 0..n {
+        positions.push(position(m, &motion, k as f64 * step, k.to_string(), k == 0 && motion.other_extreme.is_some())?);
+    }
+    if let Some(e) = motion.other_extreme {
+        let k = (e / step).floor() as usize;
+        let on_grid = (e - k as f64 * step).abs() < 1e-7 || (e - (k + 1) as f64 * step).abs() < 1e-7;
+        if on_grid {
+            let j = ((e / step).round() as usize) % n;
+            positions[j].extreme = true;
+        } else {
+            positions.insert(k + 1, position(m, &motion, e, format!("{k}′"), true)?);
+        }
+    }
+    let assigned = match s.assigned_deg {
+        Some(d) => {
+            let phi = d.to_radians();
+            match positions.iter().find(|p| (p.phi - phi).abs() < 1e-9) {
+                Some(p) => p.clone(),
+                None => position(m, &motion, phi, "φ₁".into(), false)?,
+            }
+        }
+        None => positions[1].clone(),
+    };
+    let acceleration = s
+        .acceleration_plans
+        .iter()
+        .map(|&k| positions.iter().position(|p| p.label == k.to_string()).expect("regular positions exist"))
+        .collect();
+    let trajectories = trajectories(m, &motion)?;
+    Ok(Kinematics { motion, positions, assigned, acceleration, trajectories, structure: structure::analyse(m) })
+}
+
+fn trajectories(m: &Mechanism, motion: &Motion) -> Result<Vec<(PointId, Vec<Vec2>)>, AnalysisError> {
+    let states = motion::sample(m, motion, TRAJECTORY_SAMPLES)?;
+    for (k, st) in states.iter().enumerate() {
+        check_finite(m, st, TAU * k as f64 / TRAJECTORY_SAMPLES as f64)?;
+    }
+    Ok(m.mass_centres
+        .iter()
+        .map(|&(_, p)| {
+            let mut path: Vec<Vec2> = states.iter().map(|s| s.points[p].p).collect();
+            path.push(path[0]);
+            (p, path)
+        })
+        .collect())
+}
+
+/// The force analysis at the assigned position φ1.
+#[derive(Debug, Clone)]
+pub struct ForceAnalysis {
+    /// The model with every load's stroke fixed.
+    pub model: ForceModel,
+    pub forces: Forces,
+}
+
+/// Fixes each load's stroke from its slider's extremes, then solves the kinetostatics at
+/// the assigned position.
+pub fn forces(m: &Mechanism, k: &Kinematics, model: &ForceModel) -> Result<ForceAnalysis, AnalysisError> {
+    let model = place_loads(m, &k.motion, model)?;
+    let phi_deg = k.assigned.phi.to_degrees();
+    let forces = kinetostatics::analyse(m, &k.assigned.state, &model)
+        .map_err(|error| AnalysisError::Force { phi_deg, error })?;
+    Ok(ForceAnalysis { model, forces })
+}
+
+/// The model with every load's stroke (origin and length) fixed from its slider's extremes.
+pub fn place_loads(m: &Mechanism, motion: &Motion, model: &ForceModel) -> Result<ForceModel, AnalysisError> {
+    let mut model = model.clone();
+    let pivot = m.crank().pivot;
+    let at = m.frame.iter().find(|f| f.0 == pivot).map_or(Vec2::ZERO, |f| f.1);
+    for load in &mut model.loads {
+        let (lo, hi) = motion::extremes_along(m, motion, load.point, load.axis)?;
+        load.set_stroke(lo, hi, at);
+    }
+    Ok(model)
+}

@@ -1,0 +1,474 @@
+//! Kinetostatics at one crank angle, the course's way and exactly: inertia forces and
+//! moments, weights and loads; the Assur groups from the last formed to the first
+//! (tangential reactions from moments about the inner joint, then the force polygon for the
+//! normal components); the crank's balancing force; and two independent checks of it, the
+//! Zhukovsky lever and the power balance.
+
+use super::linkage::{Crank, LinkId, Mechanism, PointId, State, Step};
+use super::load::{Load, LoadValue};
+use kurbo::Vec2;
+
+/// The frame, as the body a reaction comes from.
+pub const FRAME: usize = usize::MAX;
+
+/// Mass properties of one link.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinkMass {
+    pub link: LinkId,
+    /// kg
+    pub mass: f64,
+    /// Moment of inertia about the centre of mass, kg·m².
+    pub j: f64,
+    pub centre: PointId,
+}
+
+/// Everything the force analysis needs beyond the kinematics.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ForceModel {
+    /// m/s²
+    pub g: f64,
+    pub masses: Vec<LinkMass>,
+    pub loads: Vec<Load>,
+}
+
+/// Which part of a reaction an arrow shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Part {
+    Whole,
+    /// Perpendicular to the link (from the moment equation).
+    Tangential,
+    /// Along the link (from the force polygon).
+    Normal,
+}
+
+/// What a force is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    Weight,
+    Inertia,
+    /// Index into [`ForceModel::loads`].
+    Load(usize),
+    /// From body `from` (a link or [`FRAME`]).
+    Reaction {
+        from: usize,
+        part: Part,
+    },
+    Balancing,
+}
+
+/// A force on link `on`, applied at `at`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Applied {
+    pub on: LinkId,
+    pub kind: Kind,
+    pub at: Vec2,
+    /// The mechanism's point it is applied at, when it is one.
+    pub point: Option<PointId>,
+    pub force: Vec2,
+}
+
+/// The polygon of one group (or of the crank): vectors summing to zero, in the order of its
+/// vector equation. The first `split` terms act on the group's first link, so the vector
+/// from the end of term `split − 1` back to the start is the inner reaction on that link.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Polygon {
+    /// Index into [`Mechanism::groups`]; `None` for the crank.
+    pub group: Option<usize>,
+    pub terms: Vec<Applied>,
+    pub split: usize,
+    /// The inner reaction on the first link from the second, when the group has one.
+    pub inner: Option<Applied>,
+}
+
+/// Inertia load of one link.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InertiaLoad {
+    pub link: LinkId,
+    pub mass: f64,
+    pub j: f64,
+    /// Acceleration of the centre of mass, m/s².
+    pub a_s: Vec2,
+    pub eps: f64,
+    /// P_i = −m·a_S, N.
+    pub force: Vec2,
+    /// M_i = −J_S·ε, N·m (counter-clockwise positive).
+    pub moment: f64,
+    /// G = m·g, N.
+    pub weight: f64,
+}
+
+/// One force of the Zhukovsky lever: applied at the image of its point on the velocity plan
+/// turned 90° in the sense of ω1 (m/s); inertia moments become couples of two such forces.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LeverForce {
+    pub kind: Kind,
+    pub on: LinkId,
+    pub image: Vec2,
+    pub force: Vec2,
+    /// Part of an inertia-moment couple.
+    pub couple: bool,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Forces {
+    /// Every force on every link: weights, inertia forces, loads, both directions of every
+    /// reaction, and the balancing force.
+    pub applied: Vec<Applied>,
+    pub inertia: Vec<InertiaLoad>,
+    pub loads: Vec<LoadValue>,
+    /// Groups from the last formed to the first, then the crank.
+    pub polygons: Vec<Polygon>,
+    /// Balancing force at the crank pin, perpendicular to the crank, signed along v_A
+    /// (positive: it drives the crank), N.
+    pub p_m: f64,
+    /// Its direction (the direction of v_A).
+    pub dir_m: Vec2,
+    /// Balancing moment P_m·l_OA, positive in the sense of ω1, N·m.
+    pub m_m: f64,
+    /// P'_m from the Zhukovsky lever, N.
+    pub p_m_lever: f64,
+    /// P_m from the power balance ΣF·v + ΣM·ω + P_m·v_A = 0, N.
+    pub p_m_power: f64,
+    pub lever: Vec<LeverForce>,
+    /// Moment of every lever force about the pole, N·m/s, in the order of `lever`, then P'_m's.
+    pub lever_moments: Vec<f64>,
+}
+
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ForceError {
+    #[error(
+        "group {group} cannot carry loads at this position: its {what} are parallel, so the force polygon has no solution (a dead point of the group)"
+    )]
+    Singular { group: String, what: &'static str },
+    #[error("the crank pin has no velocity, so no balancing force can be found")]
+    CrankAtRest,
+}
+
+impl Forces {
+    /// All forces on `link`.
+    pub fn on(&self, link: LinkId) -> impl Iterator<Item = &Applied> {
+        self.applied.iter().filter(move |f| f.on == link)
+    }
+
+    /// Residual force and moment (about the origin) on `link`; zero in equilibrium.
+    pub fn residual(&self, link: LinkId) -> (Vec2, f64) {
+        resultant(&self.applied, &self.inertia, link, Vec2::ZERO)
+    }
+
+    /// Δ = (P_m − P′_m)/P_m·100 %, the course's check of the lever against kinetostatics.
+    pub fn difference_percent(&self) -> f64 {
+        if self.p_m != 0.0 { (self.p_m - self.p_m_lever) / self.p_m * 100.0 } else { 0.0 }
+    }
+}
+
+/// Sum of forces on `link` and their moment about `about`, including its inertia moment.
+fn resultant(applied: &[Applied], inertia: &[InertiaLoad], link: LinkId, about: Vec2) -> (Vec2, f64) {
+    let mut f = Vec2::ZERO;
+    let mut m = inertia.iter().filter(|i| i.link == link).map(|i| i.moment).sum::<f64>();
+    for a in applied.iter().filter(|a| a.on == link) {
+        f += a.force;
+        m += (a.at - about).cross(a.force);
+    }
+    (f, m)
+}
+
+/// The body that joins `point` to a group from outside it: the frame, or the first link
+/// (other than the group's) that carries the point.
+fn owner(m: &Mechanism, point: PointId, group_links: [LinkId; 2]) -> usize {
+    if m.is_frame(point) {
+        return FRAME;
+    }
+    (0..m.links.len()).find(|l| !group_links.contains(l) && m.links[*l].points.contains(&point)).unwrap_or(FRAME)
+}
+
+fn unit(v: Vec2) -> (Vec2, f64) {
+    let l = v.hypot();
+    (v / l, l)
+}
+
+/// Solves n_a·a + n_b·b = −k for the magnitudes along the known directions `a`, `b`.
+fn polygon_pair(a: Vec2, b: Vec2, k: Vec2) -> Option<(f64, f64)> {
+    let det = a.cross(b);
+    if det.abs() < 1e-9 {
+        return None;
+    }
+    Some((-k.cross(b) / det, -a.cross(k) / det))
+}
+
+pub fn analyse(m: &Mechanism, s: &State, model: &ForceModel) -> Result<Forces, ForceError> {
+    let mut applied = Vec::new();
+    let mut inertia = Vec::new();
+    for lm in &model.masses {
+        let k = s.points[lm.centre];
+        let eps = s.links[lm.link].eps;
+        let il = InertiaLoad {
+            link: lm.link,
+            mass: lm.mass,
+            j: lm.j,
+            a_s: k.a,
+            eps,
+            force: -k.a * lm.mass,
+            moment: -lm.j * eps,
+            weight: lm.mass * model.g,
+        };
+        if il.weight != 0.0 {
+            applied.push(Applied {
+                on: lm.link,
+                kind: Kind::Weight,
+                at: k.p,
+                point: Some(lm.centre),
+                force: Vec2::new(0.0, -il.weight),
+            });
+        }
+        applied.push(Applied { on: lm.link, kind: Kind::Inertia, at: k.p, point: Some(lm.centre), force: il.force });
+        inertia.push(il);
+    }
+    let mut loads = Vec::new();
+    for (i, load) in model.loads.iter().enumerate() {
+        let k = s.points[load.point];
+        let v = load.value(k.p, k.v, k.a);
+        applied.push(Applied { on: load.link, kind: Kind::Load(i), at: k.p, point: Some(load.point), force: v.force });
+        loads.push(v);
+    }
+    let mut polygons = Vec::new();
+    for gi in (0..m.groups.len()).rev() {
+        polygons.push(solve_group(m, s, gi, &mut applied, &inertia)?);
+    }
+    let crank = solve_crank(m, s, &mut applied, &inertia)?;
+    polygons.push(crank.polygon);
+    let p_m_power = power_balance(s, &applied, &inertia, crank.v_a);
+    let (lever, lever_moments, p_m_lever) = zhukovsky(m, s, &applied, &inertia, crank.a, crank.v_a);
+    Ok(Forces {
+        applied,
+        inertia,
+        loads,
+        polygons,
+        p_m: crank.p_m,
+        dir_m: crank.dir,
+        m_m: crank.p_m * crank.l,
+        p_m_lever,
+        p_m_power,
+        lever,
+        lever_moments,
+    })
+}
+
+fn describe(m: &Mechanism, gi: usize) -> String {
+    let g = &m.groups[gi];
+    format!("{} ({}, links {}–{})", gi + 1, g.kind.code(), m.links[g.links[0]].number, m.links[g.links[1]].number)
+}
+
+/// Pushes the reaction `force` of `from` on `on` at `at`, and its opposite on `from` unless
+/// `from` is the frame.
+fn react(
+    applied: &mut Vec<Applied>,
+    from: usize,
+    on: LinkId,
+    at: Vec2,
+    point: Option<PointId>,
+    force: Vec2,
+) -> Applied {
+    let r = Applied { on, kind: Kind::Reaction { from, part: Part::Whole }, at, point, force };
+    applied.push(r);
+    if from != FRAME {
+        applied.push(Applied {
+            on: from,
+            kind: Kind::Reaction { from: on, part: Part::Whole },
+            at,
+            point,
+            force: -force,
+        });
+    }
+    r
+}
+
+fn part(r: &Applied, part: Part, force: Vec2) -> Applied {
+    let Kind::Reaction { from, .. } = r.kind else { unreachable!("only reactions have parts") };
+    Applied { kind: Kind::Reaction { from, part }, force, ..*r }
+}
+
+fn solve_group(
+    m: &Mechanism,
+    s: &State,
+    gi: usize,
+    applied: &mut Vec<Applied>,
+    inertia: &[InertiaLoad],
+) -> Result<Polygon, ForceError> {
+    let g = &m.groups[gi];
+    let [l0, l1] = g.links;
+    let known0: Vec<Applied> = applied.iter().filter(|a| a.on == l0).copied().collect();
+    let known1: Vec<Applied> = applied.iter().filter(|a| a.on == l1).copied().collect();
+    let singular = |what| ForceError::Singular { group: describe(m, gi), what };
+    let p = |id: PointId| s.points[id].p;
+    let (terms0, terms1, inner) = match m.steps[g.step] {
+        Step::Rrr { p: jp, q: jq, b, .. } => {
+            let (pb, pp) = (p(b), p(jp));
+            let (e0, len0) = unit(pb - pp);
+            let (e1, len1) = unit(pb - p(jq));
+            let (sum0, mom0) = resultant(applied, inertia, l0, pb);
+            let (sum1, mom1) = resultant(applied, inertia, l1, pb);
+            let (t0, t1) = (e0.turn_90() * (mom0 / len0), e1.turn_90() * (mom1 / len1));
+            let (n0, n1) = polygon_pair(e0, e1, t0 + t1 + sum0 + sum1).ok_or_else(|| singular("two links"))?;
+            let r0 = react(applied, owner(m, jp, g.links), l0, pp, Some(jp), e0 * n0 + t0);
+            let r1 = react(applied, owner(m, jq, g.links), l1, p(jq), Some(jq), e1 * n1 + t1);
+            let inner = react(applied, l1, l0, pb, Some(b), -(r0.force + sum0));
+            let mut terms0 = vec![part(&r0, Part::Normal, e0 * n0), part(&r0, Part::Tangential, t0)];
+            terms0.extend(known0);
+            let mut terms1 = known1;
+            terms1.extend([part(&r1, Part::Tangential, t1), part(&r1, Part::Normal, e1 * n1)]);
+            (terms0, terms1, inner)
+        }
+        Step::Rrp { p: jp, d, dir, .. } => {
+            let pd = p(d);
+            let (e0, len0) = unit(pd - p(jp));
+            let normal = dir.turn_90();
+            let (sum0, mom0) = resultant(applied, inertia, l0, pd);
+            let (sum1, mom1) = resultant(applied, inertia, l1, pd);
+            let t0 = e0.turn_90() * (mom0 / len0);
+            let (n0, nf) =
+                polygon_pair(e0, normal, t0 + sum0 + sum1).ok_or_else(|| singular("rod and guide normal"))?;
+            // The guide's reaction passes at h along the guide from D, so that the slider's
+            // moments about D balance: h·N + M_D = 0.
+            let h = if nf.abs() > 1e-12 { -mom1 / nf } else { 0.0 };
+            let r0 = react(applied, owner(m, jp, g.links), l0, p(jp), Some(jp), e0 * n0 + t0);
+            let r1 = react(applied, FRAME, l1, pd + dir * h, if h == 0.0 { Some(d) } else { None }, normal * nf);
+            let inner = react(applied, l1, l0, pd, Some(d), -(r0.force + sum0));
+            let mut terms0 = vec![part(&r0, Part::Normal, e0 * n0), part(&r0, Part::Tangential, t0)];
+            terms0.extend(known0);
+            let mut terms1 = known1;
+            terms1.push(r1);
+            (terms0, terms1, inner)
+        }
+        Step::Rpr { a, c, .. } => {
+            let (pa, pc) = (p(a), p(c));
+            let (e, len) = unit(pa - pc);
+            let normal = e.turn_90();
+            let (sum0, mom0) = resultant(applied, inertia, l0, pa);
+            let (sum1, mom1) = resultant(applied, inertia, l1, pc);
+            // Block about A: h·N + M_A = 0; kulisa about C: (l + h)·N = M_C; hence l·N = M_C + M_A.
+            let nf = (mom1 + mom0) / len;
+            let h = if nf.abs() > 1e-12 { -mom0 / nf } else { 0.0 };
+            let inner = react(applied, l1, l0, pa + e * h, if h == 0.0 { Some(a) } else { None }, normal * nf);
+            let r0 = react(applied, owner(m, a, g.links), l0, pa, Some(a), -(sum0 + inner.force));
+            let r1 = react(applied, owner(m, c, g.links), l1, pc, Some(c), -(sum1 - inner.force));
+            let mut terms0 = vec![r0];
+            terms0.extend(known0);
+            let mut terms1 = known1;
+            terms1.push(r1);
+            (terms0, terms1, inner)
+        }
+        Step::Crank { .. } | Step::Attach { .. } => unreachable!("groups are dyad steps"),
+    };
+    let split = terms0.len();
+    let mut terms = terms0;
+    terms.extend(terms1);
+    Ok(Polygon { group: Some(gi), terms, split, inner: Some(inner) })
+}
+
+struct CrankSolution {
+    polygon: Polygon,
+    p_m: f64,
+    dir: Vec2,
+    l: f64,
+    a: PointId,
+    v_a: Vec2,
+}
+
+fn solve_crank(
+    m: &Mechanism,
+    s: &State,
+    applied: &mut Vec<Applied>,
+    inertia: &[InertiaLoad],
+) -> Result<CrankSolution, ForceError> {
+    let Crank { pivot, pin, link, .. } = m.crank();
+    let (po, pa) = (s.points[pivot].p, s.points[pin].p);
+    let v_a = s.points[pin].v;
+    if v_a.hypot() == 0.0 {
+        return Err(ForceError::CrankAtRest);
+    }
+    let dir = v_a.normalize();
+    let known: Vec<Applied> = applied.iter().filter(|a| a.on == link).copied().collect();
+    let (sum, mom) = resultant(applied, inertia, link, po);
+    let arm = (pa - po).cross(dir);
+    let p_m = -mom / arm;
+    let bal = Applied { on: link, kind: Kind::Balancing, at: pa, point: Some(pin), force: dir * p_m };
+    applied.push(bal);
+    let r01 = react(applied, FRAME, link, po, Some(pivot), -(sum + bal.force));
+    let mut terms = known;
+    terms.extend([bal, r01]);
+    let split = terms.len();
+    Ok(CrankSolution {
+        polygon: Polygon { group: None, terms, split, inner: None },
+        p_m,
+        dir,
+        l: (pa - po).hypot(),
+        a: pin,
+        v_a,
+    })
+}
+
+/// Forces that do work: everything but reactions and the balancing force.
+fn is_active(a: &Applied) -> bool {
+    matches!(a.kind, Kind::Weight | Kind::Inertia | Kind::Load(_))
+}
+
+fn power_balance(s: &State, applied: &[Applied], inertia: &[InertiaLoad], v_a: Vec2) -> f64 {
+    let forces: f64 = applied
+        .iter()
+        .filter(|a| is_active(a))
+        .map(|a| a.force.dot(s.points[a.point.expect("active forces act at points")].v))
+        .sum();
+    let moments: f64 = inertia.iter().map(|i| i.moment * s.links[i.link].omega).sum();
+    -(forces + moments) / v_a.hypot()
+}
+
+/// The Zhukovsky lever: every active force at its point's image on the velocity plan turned
+/// 90° in the sense of ω1, inertia moments as couples; moments about the pole give P'_m.
+fn zhukovsky(
+    m: &Mechanism,
+    s: &State,
+    applied: &[Applied],
+    inertia: &[InertiaLoad],
+    pin: PointId,
+    v_a: Vec2,
+) -> (Vec<LeverForce>, Vec<f64>, f64) {
+    let sense = m.omega1.signum();
+    let turn = |v: Vec2| v.turn_90() * sense;
+    let mut lever: Vec<LeverForce> = applied
+        .iter()
+        .filter(|a| is_active(a))
+        .map(|a| LeverForce {
+            kind: a.kind,
+            on: a.on,
+            image: turn(s.points[a.point.expect("active forces act at points")].v),
+            force: a.force,
+            couple: false,
+        })
+        .collect();
+    for i in inertia.iter().filter(|i| i.moment != 0.0) {
+        let ((p0, v0), (p1, v1)) = couple_points(m, s, i.link);
+        let f = (p0 - p1).turn_90() * (i.moment / (p0 - p1).hypot2());
+        lever.push(LeverForce { kind: Kind::Inertia, on: i.link, image: turn(v0), force: f, couple: true });
+        lever.push(LeverForce { kind: Kind::Inertia, on: i.link, image: turn(v1), force: -f, couple: true });
+    }
+    let moments: Vec<f64> = lever.iter().map(|l| l.image.cross(l.force)).collect();
+    let a_image = turn(s.points[pin].v);
+    let arm = a_image.cross(v_a.normalize());
+    let p = -moments.iter().sum::<f64>() / arm;
+    let mut all = moments;
+    all.push(arm * p);
+    (lever, all, p)
+}
+
+/// Two points of `link` (position, velocity) for an inertia couple: its first two distinct
+/// points, or its first point and one a metre along the link.
+fn couple_points(m: &Mechanism, s: &State, link: LinkId) -> ((Vec2, Vec2), (Vec2, Vec2)) {
+    let pts = &m.links[link].points;
+    let k0 = s.points[pts[0]];
+    if let Some(&q) = pts.iter().skip(1).find(|&&q| (s.points[q].p - k0.p).hypot() > 1e-9) {
+        let k1 = s.points[q];
+        return ((k0.p, k0.v), (k1.p, k1.v));
+    }
+    let lk = s.links[link];
+    ((k0.p, k0.v), (k0.p + lk.dir, k0.v + lk.dir.turn_90() * lk.omega))
+}

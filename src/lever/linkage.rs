@@ -1,0 +1,307 @@
+//! A resolved mechanism: named points, numbered links, and the ordered steps
+//! (crank, Assur dyads, points attached to links) that solve it at any crank angle.
+
+use super::dyads::{self, DyadFailure};
+use super::kin::{Kin, LinkKin};
+use kurbo::Vec2;
+
+/// Index of a point in [`Mechanism::point_names`].
+pub type PointId = usize;
+/// Index of a link in [`Mechanism::links`] (not the course's link number).
+pub type LinkId = usize;
+
+/// How a link moves, for drawing and for the tables.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LinkKind {
+    Crank,
+    /// A link turning about a frame pivot (rocker, kulisa).
+    Rocker,
+    /// A link in plane motion (coupler, connecting rod).
+    Coupler,
+    /// A translating slider.
+    Slider,
+    /// The block of a kulisa: turns with the kulisa, slides along it.
+    Block,
+}
+
+#[derive(Debug, Clone)]
+pub struct Link {
+    /// The course's link number (1 = crank, 0 = frame).
+    pub number: u32,
+    pub kind: LinkKind,
+    /// Points carried by the link, in drawing order.
+    pub points: Vec<PointId>,
+}
+
+/// The Assur dyads, in the course's notation of their pairs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DyadKind {
+    Rrr,
+    Rrp,
+    Rpr,
+}
+
+impl DyadKind {
+    pub fn code(self) -> &'static str {
+        match self {
+            DyadKind::Rrr => "RRR",
+            DyadKind::Rrp => "RRP",
+            DyadKind::Rpr => "RPR",
+        }
+    }
+}
+
+/// One step of the solution, executed in order.
+#[derive(Debug, Clone)]
+pub enum Step {
+    Crank {
+        pivot: PointId,
+        pin: PointId,
+        length: f64,
+        link: LinkId,
+    },
+    Rrr {
+        p: PointId,
+        q: PointId,
+        b: PointId,
+        l_pb: f64,
+        l_qb: f64,
+        branch: f64,
+        links: [LinkId; 2],
+    },
+    Rrp {
+        p: PointId,
+        d: PointId,
+        length: f64,
+        through: Vec2,
+        dir: Vec2,
+        branch: f64,
+        links: [LinkId; 2],
+    },
+    /// Block pinned at `a` slides on the kulisa turning about `c`; `a3` is the kulisa's
+    /// point under the block. Links are `[block, kulisa]`.
+    Rpr {
+        a: PointId,
+        c: PointId,
+        a3: PointId,
+        links: [LinkId; 2],
+    },
+    /// A point fixed to `link`: `distance` from `from` along the direction `from → toward`
+    /// turned by `angle` (counter-clockwise, radians). `ratio` is distance / |from → toward|
+    /// when the link fixes that distance, which saves a square root per solve.
+    Attach {
+        point: PointId,
+        link: LinkId,
+        from: PointId,
+        toward: PointId,
+        distance: f64,
+        angle: f64,
+        ratio: Option<f64>,
+    },
+}
+
+/// An Assur group as the note describes it: which step, which links.
+#[derive(Debug, Clone)]
+pub struct Group {
+    pub kind: DyadKind,
+    pub step: usize,
+    pub links: [LinkId; 2],
+    /// The new point the group locates (B of an RRR, D of an RRP, A3 of an RPR).
+    pub point: PointId,
+    /// Its joints to the rest of the chain (for the structural formula and plans).
+    pub inputs: Vec<PointId>,
+    /// Line of the project file that defines it (0 when unknown), for error messages.
+    pub line: u64,
+}
+
+/// The output coordinate whose extremes define position 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Output {
+    /// Displacement of a slider point along its guide direction.
+    Slider { point: PointId, dir: Vec2 },
+    /// Angle of a rocker (or kulisa) link.
+    Rocker { link: LinkId },
+}
+
+#[derive(Debug, Clone)]
+pub struct Mechanism {
+    pub point_names: Vec<String>,
+    /// Frame points with their fixed positions.
+    pub frame: Vec<(PointId, Vec2)>,
+    pub links: Vec<Link>,
+    pub steps: Vec<Step>,
+    pub groups: Vec<Group>,
+    /// Signed crank speed, rad/s, counter-clockwise positive.
+    pub omega1: f64,
+    /// Crank angle (absolute, radians) is `theta0 + sense·φ`; see [`super::motion`].
+    pub output: Output,
+    /// Centres of mass, as (link, point).
+    pub mass_centres: Vec<(LinkId, PointId)>,
+}
+
+/// Everything known about the mechanism at one crank angle.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct State {
+    pub theta: f64,
+    pub points: Vec<Kin>,
+    pub links: Vec<LinkKin>,
+    /// Sliding distance along each kulisa and its derivatives, indexed like `steps`.
+    pub slides: Vec<(f64, f64, f64)>,
+}
+
+/// A failed step: which one, and why. [`super::motion`] turns it into a message that names
+/// the Assur group and the crank angles.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("step {} of the mechanism has no solution: {why:?}", step + 1)]
+pub struct StepFailure {
+    pub step: usize,
+    pub why: DyadFailure,
+}
+
+/// The driving link: its frame pivot, its pin, its length and its link.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Crank {
+    pub pivot: PointId,
+    pub pin: PointId,
+    pub length: f64,
+    pub link: LinkId,
+}
+
+impl Mechanism {
+    /// The crank, which the model always makes the first step.
+    pub fn crank(&self) -> Crank {
+        match self.steps.first() {
+            Some(&Step::Crank { pivot, pin, length, link }) => Crank { pivot, pin, length, link },
+            _ => unreachable!("the model makes the crank the first step"),
+        }
+    }
+
+    pub fn point_id(&self, name: &str) -> Option<PointId> {
+        self.point_names.iter().position(|n| n == name)
+    }
+
+    pub fn name(&self, id: PointId) -> &str {
+        &self.point_names[id]
+    }
+
+    /// A fixed point of the frame.
+    pub fn is_frame(&self, id: PointId) -> bool {
+        self.frame.iter().any(|&(f, _)| f == id)
+    }
+
+    /// The point of a kulisa under its block (A3): a material point of the kulisa at this
+    /// instant, not a joint.
+    pub fn is_kulisa_image(&self, id: PointId) -> bool {
+        self.steps.iter().any(|s| matches!(*s, Step::Rpr { a3, .. } if a3 == id))
+    }
+
+    pub fn is_mass_centre(&self, id: PointId) -> bool {
+        self.mass_centres.iter().any(|&(_, p)| p == id)
+    }
+
+    /// The link with the course number `number`.
+    pub fn link_by_number(&self, number: u32) -> Option<LinkId> {
+        self.links.iter().position(|l| l.number == number)
+    }
+
+    /// Index of the group solved by step `step`, if the step is a group.
+    pub fn group_of_step(&self, step: usize) -> Option<usize> {
+        self.groups.iter().position(|g| g.step == step)
+    }
+
+    /// Solves positions, velocities and accelerations at absolute crank angle `theta`.
+    pub fn solve(&self, theta: f64) -> Result<State, StepFailure> {
+        let mut s = State::default();
+        self.solve_into(theta, &mut s)?;
+        Ok(s)
+    }
+
+    /// Like [`Mechanism::solve`], reusing the buffers of `s` (no allocation after the first call).
+    pub fn solve_into(&self, theta: f64, s: &mut State) -> Result<(), StepFailure> {
+        s.theta = theta;
+        // Every entry is overwritten by its step, so buffers are only resized, not cleared.
+        s.points.resize(self.point_names.len(), Kin::default());
+        s.links.resize(self.links.len(), LinkKin::default());
+        s.slides.resize(self.steps.len(), (0.0, 0.0, 0.0));
+        for &(id, p) in &self.frame {
+            s.points[id] = Kin::fixed(p);
+        }
+        for (i, step) in self.steps.iter().enumerate() {
+            self.run_step(i, step, theta, s).map_err(|why| StepFailure { step: i, why })?;
+        }
+        Ok(())
+    }
+
+    #[inline(always)]
+    fn run_step(&self, i: usize, step: &Step, theta: f64, s: &mut State) -> Result<(), DyadFailure> {
+        match *step {
+            Step::Crank { pivot, pin, length, link } => {
+                let (k, l) = dyads::crank(&s.points[pivot], length, theta, self.omega1);
+                s.points[pin] = k;
+                s.links[link] = l;
+            }
+            Step::Rrr { p, q, b, l_pb, l_qb, branch, links } => {
+                let sol = dyads::rrr(&s.points[p], &s.points[q], l_pb, l_qb, branch)?;
+                s.points[b] = sol.point;
+                s.links[links[0]] = sol.link_first;
+                s.links[links[1]] = sol.link_second;
+            }
+            Step::Rrp { p, d, length, through, dir, branch, links } => {
+                let sol = dyads::rrp(&s.points[p], length, through, dir, branch)?;
+                s.points[d] = sol.point;
+                s.links[links[0]] = sol.link_first;
+                s.links[links[1]] = sol.link_second;
+            }
+            Step::Rpr { a, c, a3, links } => {
+                let sol = dyads::rpr(&s.points[a], &s.points[c])?;
+                s.points[a3] = sol.a3;
+                s.links[links[0]] = sol.kulisa;
+                s.links[links[1]] = sol.kulisa;
+                s.slides[i] = sol.slide;
+            }
+            Step::Attach { point, link, from, toward, distance, angle, ratio } => {
+                let base = s.points[from];
+                if toward == from {
+                    s.points[point] = base; // a point coinciding with a joint, e.g. a slider's centre of mass
+                    return Ok(());
+                }
+                let d = s.points[toward].p - base.p;
+                let along = match ratio {
+                    Some(k) => d * k,
+                    None => d * (distance / d.hypot2().sqrt()),
+                };
+                let r = along.rotate(angle);
+                let lk = s.links[link];
+                s.points[point] = Kin {
+                    p: base.p + r,
+                    v: base.v + r.turn_90() * lk.omega,
+                    a: base.a + r.turn_90() * lk.eps - r * (lk.omega * lk.omega),
+                };
+            }
+        }
+        Ok(())
+    }
+
+    /// Value of the output coordinate and its time derivative.
+    pub fn output_value(&self, s: &State) -> (f64, f64) {
+        match self.output {
+            Output::Slider { point, dir } => (s.points[point].p.dot(dir), s.points[point].v.dot(dir)),
+            Output::Rocker { link } => (s.links[link].angle(), s.links[link].omega),
+        }
+    }
+}
+
+/// Rotation of a vector by `angle` radians (counter-clockwise).
+trait Rotate {
+    fn rotate(self, angle: f64) -> Self;
+}
+
+impl Rotate for Vec2 {
+    fn rotate(self, angle: f64) -> Self {
+        if angle == 0.0 {
+            return self;
+        }
+        let (s, c) = angle.sin_cos();
+        Vec2::new(c * self.x - s * self.y, s * self.x + c * self.y)
+    }
+}

@@ -1,0 +1,144 @@
+//! Loads on sliders that depend on where the slider is in its stroke and which way it
+//! moves: gas forces read from an indicator diagram, and the resistance of a working stroke.
+
+use kurbo::Vec2;
+
+/// A diagram y(s) over the relative stroke s ∈ [0, 1], read by straight lines between its
+/// points, as the course draws it from the printed table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    /// (s, y) with s strictly increasing from 0 to 1.
+    pub points: Vec<(f64, f64)>,
+}
+
+impl Curve {
+    pub fn constant(y: f64) -> Self {
+        Curve { points: vec![(0.0, y), (1.0, y)] }
+    }
+
+    /// The diagram's value at `s`, clamped to the stroke.
+    pub fn at(&self, s: f64) -> f64 {
+        let s = s.clamp(0.0, 1.0);
+        let i = self.points.partition_point(|p| p.0 <= s).clamp(1, self.points.len() - 1);
+        let ((s0, y0), (s1, y1)) = (self.points[i - 1], self.points[i]);
+        y0 + (y1 - y0) * (s - s0) / (s1 - s0)
+    }
+}
+
+/// What the load models, which decides its labels on the sheet.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoadKind {
+    /// Gas pressure on a piston (P = p·πd²/4), pushing it away from the cylinder head.
+    Gas,
+    /// Useful resistance, against the motion on the working stroke.
+    Resistance,
+}
+
+/// One branch of the diagram: the force along [`Load::axis`] is `scale · curve(s)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Branch {
+    pub curve: Curve,
+    /// Newtons per unit of the curve, signed along the axis.
+    pub scale: f64,
+    /// Short name of the stroke for the sheet (e.g. "I", "II", "working").
+    pub name: String,
+}
+
+/// A load on the slider `point` of `link`, acting along its guide.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Load {
+    pub kind: LoadKind,
+    pub link: usize,
+    pub point: usize,
+    /// Unit vector along the guide from the stroke's origin (s = 0) to its other end.
+    pub axis: Vec2,
+    /// A point of the guide line.
+    pub through: Vec2,
+    /// Whether s is measured from the cylinder head: the stroke end farther from the crank
+    /// pivot ([`Load::set_stroke`] turns the axis away from it).
+    pub from_head: bool,
+    /// Position of the origin extreme on the guide, as the dot product p·axis (m).
+    pub origin: f64,
+    /// Stroke H, m.
+    pub stroke: f64,
+    /// `[moving along the axis, moving against it]`.
+    pub branches: [Branch; 2],
+    /// Line of the project file that defines it (0 when unknown), for error messages.
+    pub line: u64,
+}
+
+/// The load's value at one instant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadValue {
+    /// Relative stroke s = S/H.
+    pub s: f64,
+    /// Which branch applies (0: moving along the axis).
+    pub branch: usize,
+    /// The force on the slider, N.
+    pub force: Vec2,
+}
+
+impl Load {
+    /// Fixes the stroke from the extremes `lo` < `hi` of p·axis over a turn.
+    pub fn set_stroke(&mut self, lo: f64, hi: f64, crank_pivot: Vec2) {
+        let at = |t: f64| self.through + self.axis * (t - self.through.dot(self.axis));
+        let (lo, hi) = if self.from_head && (at(hi) - crank_pivot).hypot() > (at(lo) - crank_pivot).hypot() {
+            self.axis = -self.axis;
+            (-hi, -lo)
+        } else {
+            (lo, hi)
+        };
+        self.origin = lo;
+        self.stroke = hi - lo;
+    }
+
+    /// The force at slider position `p` moving with velocity `v` (acceleration `a` decides
+    /// the branch at a dead point, where the slider is about to move that way).
+    pub fn value(&self, p: Vec2, v: Vec2, a: Vec2) -> LoadValue {
+        let s = ((p.dot(self.axis) - self.origin) / self.stroke).clamp(0.0, 1.0);
+        let speed = v.dot(self.axis);
+        let going = if speed.abs() > 1e-12 { speed } else { a.dot(self.axis) };
+        let branch = if going >= 0.0 { 0 } else { 1 };
+        let b = &self.branches[branch];
+        LoadValue { s, branch, force: self.axis * (b.scale * b.curve.at(s)) }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn curve_interpolates_and_clamps() {
+        let c = Curve { points: vec![(0.0, 1.0), (0.5, 0.0), (1.0, 0.5)] };
+        assert_eq!(c.at(0.25), 0.5);
+        assert_eq!(c.at(0.75), 0.25);
+        assert_eq!(c.at(1.0), 0.5);
+        assert_eq!(c.at(-1.0), 1.0);
+        assert_eq!(c.at(2.0), 0.5);
+    }
+
+    #[test]
+    fn branch_follows_the_direction_of_motion() {
+        let axis = Vec2::new(1.0, 0.0);
+        let b = |scale: f64, name: &str| Branch { curve: Curve::constant(1.0), scale, name: name.into() };
+        let load = Load {
+            kind: LoadKind::Resistance,
+            link: 0,
+            point: 0,
+            axis,
+            through: Vec2::ZERO,
+            from_head: false,
+            origin: 0.0,
+            stroke: 2.0,
+            branches: [b(-10.0, "w"), b(3.0, "i")],
+            line: 0,
+        };
+        let fwd = load.value(Vec2::new(1.0, 0.0), Vec2::new(1.0, 0.0), Vec2::ZERO);
+        assert_eq!((fwd.s, fwd.branch, fwd.force.x), (0.5, 0, -10.0));
+        let back = load.value(Vec2::new(1.0, 0.0), Vec2::new(-1.0, 0.0), Vec2::ZERO);
+        assert_eq!((back.branch, back.force.x), (1, 3.0));
+        let dead = load.value(Vec2::new(2.0, 0.0), Vec2::ZERO, Vec2::new(-1.0, 0.0));
+        assert_eq!((dead.s, dead.branch), (1.0, 1));
+    }
+}

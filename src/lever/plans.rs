@@ -1,0 +1,209 @@
+//! The vector plans of the course, computed exactly: which image points a velocity or
+//! acceleration plan has and which vectors join them. The sheet layer only scales them.
+//!
+//! A plan is drawn from a pole (p for velocities, π for accelerations); the image of a
+//! point X lies at its absolute velocity (acceleration) vector from the pole.
+
+use super::kin::relative;
+use super::linkage::{LinkId, Mechanism, PointId, State, Step};
+use kurbo::Vec2;
+
+/// A relative motion the note tabulates: point `x` relative to point `y`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Relation {
+    pub x: PointId,
+    pub y: PointId,
+    /// The link carrying both points (turning relation), or the kulisa for sliding.
+    pub link: LinkId,
+    /// True for the sliding of a block along its kulisa (x = block pin, y = kulisa point).
+    pub sliding: bool,
+}
+
+impl Relation {
+    /// The course's subscript, e.g. "BA" for v_BA.
+    pub fn name(&self, m: &Mechanism) -> String {
+        format!("{}{}", m.name(self.x), m.name(self.y))
+    }
+}
+
+/// The relative motions of every group, in order of formation.
+pub fn relations(m: &Mechanism) -> Vec<Relation> {
+    let mut out = Vec::new();
+    let rel = |x, y, link| Relation { x, y, link, sliding: false };
+    for step in &m.steps {
+        match *step {
+            Step::Crank { .. } | Step::Attach { .. } => {}
+            Step::Rrr { p, q, b, links, .. } => {
+                out.push(rel(b, p, links[0]));
+                out.push(rel(b, q, links[1]));
+            }
+            Step::Rrp { p, d, links, .. } => out.push(rel(d, p, links[0])),
+            Step::Rpr { a, c, a3, links } => {
+                out.push(rel(a3, c, links[1]));
+                out.push(Relation { x: a, y: a3, link: links[1], sliding: true });
+            }
+        }
+    }
+    out
+}
+
+/// What a plan vector stands for; decides its line and label on the sheet.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SegKind {
+    /// From the pole to an image: an absolute velocity or acceleration.
+    Absolute,
+    /// Between two images: a relative velocity of two points of one link.
+    Relative,
+    /// Normal (centripetal) acceleration component, towards the centre of relative rotation.
+    Normal,
+    /// Tangential acceleration component, perpendicular to the link.
+    Tangential,
+    /// Coriolis acceleration 2ω·v_r (v_r turned 90° in the sense of ω).
+    Coriolis,
+    /// Relative sliding of a block along its kulisa.
+    Sliding,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Seg {
+    pub from: Vec2,
+    pub to: Vec2,
+    pub kind: SegKind,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Image {
+    /// Lowercase label of the point ("b", "s2"); auxiliary points are "n1", "k".
+    pub label: String,
+    pub at: Vec2,
+}
+
+/// One plan: images relative to the pole, and the vectors of its construction.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Plan {
+    pub images: Vec<Image>,
+    pub segs: Vec<Seg>,
+}
+
+impl Plan {
+    fn image(&mut self, label: impl Into<String>, at: Vec2) {
+        self.images.push(Image { label: label.into(), at });
+    }
+    fn seg(&mut self, from: Vec2, to: Vec2, kind: SegKind) {
+        self.segs.push(Seg { from, to, kind });
+    }
+    /// The plan turned 90° counter-clockwise (`sense` = 1) or clockwise (−1) about its pole,
+    /// as the Zhukovsky lever uses it.
+    pub fn turned(&self, sense: f64) -> Plan {
+        let t = |v: Vec2| v.turn_90() * sense;
+        Plan {
+            images: self.images.iter().map(|i| Image { label: i.label.clone(), at: t(i.at) }).collect(),
+            segs: self.segs.iter().map(|s| Seg { from: t(s.from), to: t(s.to), kind: s.kind }).collect(),
+        }
+    }
+
+    /// Largest distance of any image or vector end from the pole.
+    pub fn extent(&self) -> f64 {
+        let ends = self.segs.iter().flat_map(|s| [s.from, s.to]);
+        ends.chain(self.images.iter().map(|i| i.at)).map(Vec2::hypot).fold(0.0, f64::max)
+    }
+}
+
+fn label(m: &Mechanism, id: PointId) -> String {
+    m.name(id).to_lowercase()
+}
+
+/// Images of the moving points and absolute vectors of the joints (not of attached points,
+/// whose images follow by similarity and are shown as points only).
+fn images_and_absolutes(m: &Mechanism, s: &State, plan: &mut Plan, acc: bool) {
+    for (id, _) in m.point_names.iter().enumerate() {
+        if m.is_frame(id) {
+            continue;
+        }
+        let k = s.points[id];
+        let at = if acc { k.a } else { k.v };
+        plan.image(label(m, id), at);
+        if !m.is_mass_centre(id) {
+            plan.seg(Vec2::ZERO, at, SegKind::Absolute);
+        }
+    }
+}
+
+/// The velocity plan at state `s`.
+pub fn velocity_plan(m: &Mechanism, s: &State) -> Plan {
+    let mut plan = Plan::default();
+    images_and_absolutes(m, s, &mut plan, false);
+    for r in relations(m) {
+        let (from, to) = (s.points[r.y].v, s.points[r.x].v);
+        if m.is_frame(r.y) && !r.sliding {
+            continue; // the relative vector is the absolute one already drawn
+        }
+        plan.seg(from, to, if r.sliding { SegKind::Sliding } else { SegKind::Relative });
+    }
+    plan
+}
+
+/// The acceleration plan at state `s`: normal and tangential components of every turning
+/// relation, Coriolis and relative components of every sliding one.
+pub fn acceleration_plan(m: &Mechanism, s: &State) -> Plan {
+    let mut plan = Plan::default();
+    images_and_absolutes(m, s, &mut plan, true);
+    let mut n = 0;
+    for r in relations(m) {
+        let (x, y) = (s.points[r.x], s.points[r.y]);
+        let link = &s.links[r.link];
+        if r.sliding {
+            let v_rel = x.v - y.v;
+            let cor = v_rel.turn_90() * (2.0 * link.omega);
+            let k = y.a + cor;
+            plan.seg(y.a, k, SegKind::Coriolis);
+            plan.image("k", k);
+            plan.seg(k, x.a, SegKind::Sliding);
+            continue;
+        }
+        let (_, an, _) = relative(x.p - y.p, link);
+        n += 1;
+        let corner = y.a + an;
+        plan.seg(y.a, corner, SegKind::Normal);
+        plan.image(format!("n{n}"), corner);
+        plan.seg(corner, x.a, SegKind::Tangential);
+    }
+    plan
+}
+
+/// Speeds, accelerations and their components for the tables of the note.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct RelationValues {
+    pub name: String,
+    /// |v_xy| (m/s); for sliding, the sliding speed.
+    pub v: f64,
+    /// |aⁿ_xy| (m/s²); for sliding, the Coriolis acceleration.
+    pub a_n: f64,
+    /// |aᵗ_xy| (m/s²); for sliding, the relative (sliding) acceleration.
+    pub a_t: f64,
+    pub sliding: bool,
+}
+
+pub fn relation_values(m: &Mechanism, s: &State) -> Vec<RelationValues> {
+    relations(m)
+        .into_iter()
+        .map(|r| {
+            let (x, y) = (s.points[r.x], s.points[r.y]);
+            let link = &s.links[r.link];
+            if r.sliding {
+                let v_rel = x.v - y.v;
+                let cor = v_rel.turn_90() * (2.0 * link.omega);
+                let a_rel = x.a - y.a - cor;
+                return RelationValues {
+                    name: r.name(m),
+                    v: v_rel.hypot(),
+                    a_n: cor.hypot(),
+                    a_t: a_rel.hypot(),
+                    sliding: true,
+                };
+            }
+            let (v, an, at) = relative(x.p - y.p, link);
+            RelationValues { name: r.name(m), v: v.hypot(), a_n: an.hypot(), a_t: at.hypot(), sliding: false }
+        })
+        .collect()
+}

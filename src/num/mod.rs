@@ -1,0 +1,4 @@
+//! Numerical ground rules shared by every domain: the limits of accepted input, named
+//! tolerances with their units, and the one root finder.
+
+pub mod limits;

@@ -1,0 +1,44 @@
+//! Checks of the text a user writes that ends up on a sheet: no control characters (they
+//! make an SVG invalid) and no character the embedded font lacks (it would print as an
+//! empty box, or vanish). Each refusal names the field, the character and where it is.
+
+use super::values::UserText;
+use super::{ModelError, invalid};
+use crate::font;
+
+/// Whether a line break may stand in the field (free text that is wrapped anyway).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Lines {
+    One,
+    Many,
+}
+
+fn describe(c: char) -> String {
+    if c.is_control() {
+        format!("the control character U+{:04X}", c as u32)
+    } else {
+        format!("the character '{c}' (U+{:04X})", c as u32)
+    }
+}
+
+/// Refuses control characters (but line breaks and tabs in [`Lines::Many`] fields) and
+/// characters without a glyph in the sheets' font. Linear in the text's length.
+pub fn check(field: &str, t: &UserText, lines: Lines) -> Result<(), ModelError> {
+    let metrics = font::metrics();
+    for (i, c) in t.value.chars().enumerate() {
+        let breaks = matches!(c, '\n' | '\t' | '\r');
+        let why = if breaks && lines == Lines::Many {
+            continue;
+        } else if breaks {
+            format!("{} (a line break or tab) is not allowed in this field", describe(c))
+        } else if c.is_control() {
+            format!("{} is not allowed in text", describe(c))
+        } else if !metrics.has_glyph(c) {
+            format!("{} is not in the sheets' font ({}), so it cannot be printed", describe(c), font::NAME)
+        } else {
+            continue;
+        };
+        return Err(invalid(t.referenced, field, format!("{why} (character {} of the text)", i + 1)));
+    }
+    Ok(())
+}

@@ -1,0 +1,170 @@
+//! The lever sheet's tables of the explanatory note as numbers: 1-jadval (velocities),
+//! 2-jadval (accelerations) and, with a force analysis, tables 3–5.
+
+use super::{NumTable, Row, row};
+use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
+use crate::lever::kinetostatics::{FRAME, Forces, InertiaLoad, Kind, Part};
+use crate::lever::linkage::{LinkKind, Mechanism};
+use crate::lever::load::LoadKind;
+use crate::lever::plans::{RelationValues, relation_values};
+use crate::lever::{Kin, LinkKin};
+
+/// Points that move, without kulisa images: a kulisa image moves like the block's pin only
+/// in position; its speed is tabulated through the relation rows instead.
+fn moving_points(m: &Mechanism) -> Vec<usize> {
+    (0..m.point_names.len()).filter(|&id| !m.is_frame(id) && !m.is_kulisa_image(id)).collect()
+}
+
+fn turning_links(m: &Mechanism) -> Vec<usize> {
+    (0..m.links.len()).filter(|&l| m.links[l].kind != LinkKind::Slider).collect()
+}
+
+/// One row per moving point, one column per position.
+fn point_rows(m: &Mechanism, positions: &[&Position], symbol: &str, unit: &str, of: impl Fn(&Kin) -> f64) -> Vec<Row> {
+    moving_points(m)
+        .into_iter()
+        .map(|id| row(symbol, m.name(id), unit, positions.iter().map(|p| of(&p.state.points[id])).collect()))
+        .collect()
+}
+
+/// One row per turning link (not the kulisa's block, which turns with its kulisa).
+fn link_rows(
+    m: &Mechanism,
+    positions: &[&Position],
+    symbol: &str,
+    unit: &str,
+    skip_crank: bool,
+    of: impl Fn(&LinkKin) -> f64,
+) -> Vec<Row> {
+    turning_links(m)
+        .into_iter()
+        .filter(|&l| m.links[l].kind != LinkKind::Block && !(skip_crank && m.links[l].kind == LinkKind::Crank))
+        .map(|l| {
+            row(symbol, m.links[l].number.to_string(), unit, positions.iter().map(|p| of(&p.state.links[l])).collect())
+        })
+        .collect()
+}
+
+/// Relative motions of every position, transposed: one entry per relation.
+fn relation_columns(m: &Mechanism, positions: &[&Position]) -> Vec<Vec<RelationValues>> {
+    let per_position: Vec<_> = positions.iter().map(|p| relation_values(m, &p.state)).collect();
+    let n = per_position.first().map_or(0, Vec::len);
+    (0..n).map(|i| per_position.iter().map(|x| x[i].clone()).collect()).collect()
+}
+
+fn table(name: &str, positions: &[&Position], rows: Vec<Row>) -> NumTable {
+    NumTable { name: name.into(), columns: positions.iter().map(|p| p.label.clone()).collect(), rows }
+}
+
+/// Table 1: speeds of points, relative speeds and angular velocities, all positions.
+pub fn velocity_table(m: &Mechanism, positions: &[&Position]) -> NumTable {
+    let mut rows = point_rows(m, positions, "v", "m/s", |k| k.v.hypot());
+    for rel in relation_columns(m, positions) {
+        rows.push(row("v", rel[0].name.clone(), "m/s", rel.iter().map(|x| x.v).collect()));
+    }
+    rows.extend(link_rows(m, positions, "ω", "1/s", false, |l| l.omega.abs()));
+    table("velocities", positions, rows)
+}
+
+/// Table 2: accelerations of points, their normal and tangential (Coriolis and relative)
+/// components and angular accelerations, at the plan positions. The crank turns
+/// uniformly (ε1 = 0), so it has no ε row.
+pub fn acceleration_table(m: &Mechanism, positions: &[&Position]) -> NumTable {
+    let mut rows = point_rows(m, positions, "a", "m/s²", |k| k.a.hypot());
+    for rel in relation_columns(m, positions) {
+        let (s1, s2) = if rel[0].sliding { ("aᵏ", "aʳ") } else { ("aⁿ", "aᵗ") };
+        rows.push(row(s1, rel[0].name.clone(), "m/s²", rel.iter().map(|x| x.a_n).collect()));
+        rows.push(row(s2, rel[0].name.clone(), "m/s²", rel.iter().map(|x| x.a_t).collect()));
+    }
+    rows.extend(link_rows(m, positions, "ε", "1/s²", true, |l| l.eps.abs()));
+    table("accelerations", positions, rows)
+}
+
+/// Tables 1 and 2 of the kinematic analysis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KinematicTables {
+    pub velocities: NumTable,
+    pub accelerations: NumTable,
+}
+
+/// Tables 3–5 of the force analysis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ForceTables {
+    pub inertia: NumTable,
+    pub reactions: NumTable,
+    pub balance: NumTable,
+}
+
+/// Tables 1 and 2: every position's velocities, the plan positions' accelerations.
+pub fn kinematic_tables(m: &Mechanism, k: &Kinematics) -> KinematicTables {
+    let all: Vec<&Position> = k.positions.iter().collect();
+    let acc: Vec<&Position> = k.acceleration.iter().map(|&i| &k.positions[i]).collect();
+    KinematicTables { velocities: velocity_table(m, &all), accelerations: acceleration_table(m, &acc) }
+}
+
+/// The reactions of the note, one per pair: R_ij is the force of link i on link j (0: frame).
+pub fn reactions(m: &Mechanism, f: &Forces) -> Vec<(String, kurbo::Vec2)> {
+    let mut seen: Vec<(usize, usize)> = Vec::new();
+    let mut out = Vec::new();
+    for a in &f.applied {
+        let Kind::Reaction { from, part: Part::Whole } = a.kind else { continue };
+        if seen.contains(&(a.on, from)) {
+            continue;
+        }
+        seen.push((from, a.on));
+        let num = |l: usize| if l == FRAME { 0 } else { m.links[l].number };
+        out.push((format!("{}{}", num(from), num(a.on)), a.force));
+    }
+    out
+}
+
+/// Tables 3–5 of the force analysis: inertia loads per link, reactions per pair, and the
+/// balancing force found three ways.
+pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {
+    let f = &fa.forces;
+    let columns = f.inertia.iter().map(|i| m.links[i.link].number.to_string()).collect();
+    let per = |sym: &str, sub: &str, unit: &str, of: &dyn Fn(&InertiaLoad) -> f64| {
+        row(sym, sub, unit, f.inertia.iter().map(of).collect())
+    };
+    let inertia = NumTable {
+        name: "inertia".into(),
+        columns,
+        rows: vec![
+            per("m", "", "kg", &|i| i.mass),
+            per("G", "", "N", &|i| i.weight),
+            per("a", "S", "m/s²", &|i| i.a_s.hypot()),
+            per("P", "i", "N", &|i| i.force.hypot()),
+            per("ε", "", "1/s²", &|i| i.eps.abs()),
+            per("J", "S", "kg·m²", &|i| i.j),
+            per("M", "i", "N·m", &|i| i.moment.abs()),
+        ],
+    };
+    let reactions = NumTable {
+        name: "reactions".into(),
+        columns: vec!["x".into(), "y".into(), "|R|".into()],
+        rows: reactions(m, f).into_iter().map(|(sub, r)| row("R", sub, "N", vec![r.x, r.y, r.hypot()])).collect(),
+    };
+    let mut rows = vec![];
+    for (load, v) in fa.model.loads.iter().zip(&f.loads) {
+        let n = m.links[load.link].number;
+        rows.push(row("S/H", n.to_string(), "", vec![v.s]));
+        rows.push(row("P", format!("{}{n}", load_letter(load.kind)), "N", vec![v.force.hypot()]));
+    }
+    rows.extend([
+        row("P", "m", "N", vec![f.p_m]),
+        row("M", "m", "N·m", vec![f.m_m]),
+        row("P′", "m", "N", vec![f.p_m_lever]),
+        row("Δ", "", "%", vec![f.difference_percent()]),
+        row("P", "m (N·v)", "N", vec![f.p_m_power]),
+    ]);
+    let balance = NumTable { name: "balance".into(), columns: vec!["".into()], rows };
+    ForceTables { inertia, reactions, balance }
+}
+
+/// The subscript letter of a load: c for a resistance, g for a gas force.
+pub fn load_letter(kind: LoadKind) -> &'static str {
+    match kind {
+        LoadKind::Resistance => "c",
+        LoadKind::Gas => "g",
+    }
+}

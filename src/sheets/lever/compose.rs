@@ -1,0 +1,351 @@
+//! Sheet 1: the lever mechanism's positions, velocity and acceleration plans and the
+//! tables of the note, laid out on an A1 landscape sheet.
+//!
+//! Layout (mm, inside the frame): the mechanism at the top left, as wide as its scale
+//! makes it; the velocity plans fill the rest of the top band; the acceleration plans at
+//! the bottom left; the tables and notes at the bottom right, above the title block.
+
+use super::forces_view::{ForceScales, ForcesInput, draw_forces};
+use super::mechanism_view::{MechanismView, View, world_extent};
+use super::plans_view::{draw_plan, grid, required_mu};
+use crate::drawing::fmt;
+use crate::drawing::frame::{self, A1_H, A1_W, TitleBlock};
+use crate::drawing::labels::Labels;
+use crate::drawing::labels::Language;
+use crate::drawing::place::Placer;
+use crate::drawing::scale;
+use crate::drawing::scene::{Anchor, Group, Scene, Text};
+use crate::drawing::table::Table;
+use crate::drawing::text::{LabelText, paragraph, wrap};
+use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
+use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
+use crate::project::{LeverProject, ProjectInfo};
+use crate::report::NumTable;
+use crate::report::lever::{ForceTables, KinematicTables};
+use kurbo::{Point, Rect};
+
+/// The scales chosen for the sheet.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Scales {
+    /// m/mm
+    pub mu_l: f64,
+    /// (m/s)/mm
+    pub mu_v: f64,
+    /// (m/s²)/mm
+    pub mu_a: f64,
+}
+
+/// The composed sheet and the scales it chose.
+pub struct Composed {
+    pub scene: Scene,
+    pub scales: Scales,
+    pub force_scales: Option<ForceScales>,
+}
+
+/// Inputs of sheet 1 beyond the kinematics.
+pub struct Input<'a> {
+    pub info: &'a ProjectInfo,
+    pub project: &'a LeverProject,
+    /// The note's tables 1 and 2, computed once by the caller.
+    pub tables: &'a KinematicTables,
+    /// The force analysis and its tables 3–5, when the project asks for one.
+    pub forces: Option<&'a (ForceAnalysis, ForceTables)>,
+    /// This sheet's number and the number of sheets of the project, for the title block.
+    pub sheet_no: u32,
+    pub sheet_count: u32,
+}
+
+const TOP: f64 = 12.0;
+/// The mechanism's region at most, mm; it shrinks to the drawing at the chosen μ_l.
+const MECH_MAX_W: f64 = 450.0;
+const MECH_MAX_H: f64 = 300.0;
+const MECH_MIN_W: f64 = 200.0;
+/// With a force analysis the mechanism leaves room below it for the force drawings.
+const MECH_MAX_H_FORCES: f64 = 215.0;
+const FORCES_MIN_W: f64 = 470.0;
+/// Space around the mechanism drawing for its letters, pivots and guides.
+const MECH_PAD: f64 = 14.0;
+/// A region's title and scale lines.
+const HEADER: f64 = 17.0;
+
+pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
+    let m = &inp.project.mechanism;
+    let lang = inp.info.language;
+    let l = Labels::new(lang);
+    let inner = frame::inner();
+    let mut groups = Vec::new();
+
+    let mut fr = Group::new("frame", Rect::new(0.0, 0.0, A1_W, A1_H));
+    frame::frame(&mut fr);
+
+    // Mechanism: the largest round μ_l that fits, then the region shrinks to the drawing.
+    let world = world_extent(m, k, &inp.project.kulisa_lengths);
+    let max_h = if inp.forces.is_some() { MECH_MAX_H_FORCES } else { MECH_MAX_H };
+    let (avail_w, avail_h) = (MECH_MAX_W - 2.0 * MECH_PAD, max_h - HEADER - 2.0 * MECH_PAD);
+    let mu_l = scale::length_scale((world.width() / avail_w).max(world.height() / avail_h));
+    let draw_w = (world.width() / mu_l).max(MECH_MIN_W);
+    let draw_h = world.height() / mu_l;
+    let mech_region = Rect::new(
+        inner.x0 + 5.0,
+        TOP,
+        inner.x0 + 5.0 + draw_w + 2.0 * MECH_PAD,
+        TOP + HEADER + draw_h + 2.0 * MECH_PAD + 4.0,
+    );
+    let mut mech = Group::new("mechanism", mech_region);
+    let origin = Point::new(
+        mech_region.center().x - world.center().x / mu_l,
+        mech_region.y0 + HEADER + MECH_PAD + draw_h / 2.0 + world.center().y / mu_l,
+    );
+    let mut placer = Placer::new(mech_region);
+    region_header(
+        &mut mech,
+        &mut placer,
+        mech_region,
+        l.get("positions_title"),
+        &[
+            LabelText::new("μ", "l").with_tail(format!(
+                " = {} {}",
+                fmt::localise(&scale::format(mu_l), lang),
+                l.get("unit_l")
+            )),
+            LabelText::new(
+                format!(
+                    "{}: {}   W = 3·{} − 2·{} − {} = {}",
+                    l.get("structure"),
+                    k.structure.formula,
+                    k.structure.moving_links,
+                    k.structure.p5,
+                    k.structure.p4,
+                    k.structure.dof
+                ),
+                "",
+            ),
+        ],
+    );
+    let legend =
+        Text::new(Point::new(mech_region.x0 + 2.0, mech_region.y1 - 2.0), l.get("trajectories"), 2.5, Anchor::Start);
+    placer.block(legend.bbox());
+    mech.text(legend);
+    MechanismView { m, k, view: View { mu: mu_l, origin }, kulisa: &inp.project.kulisa_lengths }
+        .draw(&mut mech, &mut placer);
+
+    // With a force analysis, its drawings fill the left column below the mechanism and the
+    // acceleration plans move to the right column.
+    let force_region = inp.forces.map(|_| {
+        Rect::new(
+            inner.x0 + 5.0,
+            mech_region.y1 + 4.0,
+            mech_region.x1.max(inner.x0 + 5.0 + FORCES_MIN_W),
+            inner.y1 - 4.0,
+        )
+    });
+    let left_x1 = force_region.map_or(mech_region.x1, |r| r.x1);
+
+    // Right column: the tables above the title block decide how tall the velocity plans are.
+    let right_x0 = left_x1 + 6.0;
+    let (vt, at) = (&inp.tables.velocities, &inp.tables.accelerations);
+    let t1 = sheet_table(vt, l.get("velocity_table"), lang);
+    let t2 = sheet_table(at, l.get("acceleration_table"), lang);
+    let (w1, h1) = t1.size();
+    let (w2, h2) = t2.size();
+    let right_w = inner.x1 - 4.0 - right_x0;
+    let side_by_side = 1.0 + w1 + 8.0 + w2 + 1.0 <= right_w;
+    let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
+    let notes_lines = notes_height(&inp.project.assumptions, right_w);
+    let tables_top = frame::title_block_rect().y0 - 3.0 - notes_lines - tables_h - 4.0;
+
+    // Velocity plans: every position, one common μ_v.
+    let plans_bottom = tables_top - 6.0;
+    let vel_bottom = if force_region.is_some() { TOP + (plans_bottom - TOP) * 0.58 } else { plans_bottom };
+    let vel_region = Rect::new(right_x0, TOP, inner.x1 - 4.0, vel_bottom);
+    let vplans: Vec<_> = k.positions.iter().map(|p| velocity_plan(m, &p.state)).collect();
+    let mut vel = Group::new("velocity-plans", vel_region);
+    let mu_v = plans_region(
+        &mut vel,
+        vel_region,
+        &vplans,
+        k.positions.iter().collect(),
+        "p",
+        &l,
+        lang,
+        ("velocity_plans", "v", "unit_v"),
+    );
+
+    // Acceleration plans: the chosen positions, one common μ_a.
+    let acc_region = match force_region {
+        Some(_) => Rect::new(right_x0, vel_bottom + 4.0, inner.x1 - 4.0, plans_bottom),
+        None => Rect::new(inner.x0 + 5.0, mech_region.y1 + 4.0, mech_region.x1, inner.y1 - 4.0),
+    };
+    let aplans: Vec<_> = k.acceleration.iter().map(|&i| acceleration_plan(m, &k.positions[i].state)).collect();
+    let mut acc = Group::new("acceleration-plans", acc_region);
+    let mu_a = plans_region(
+        &mut acc,
+        acc_region,
+        &aplans,
+        k.acceleration.iter().map(|&i| &k.positions[i]).collect(),
+        "π",
+        &l,
+        lang,
+        ("acceleration_plans", "a", "unit_a"),
+    );
+
+    // Tables and notes.
+    let tables_region = Rect::new(right_x0, tables_top, inner.x1 - 4.0, frame::title_block_rect().y0 - 3.0);
+    let mut tables = Group::new("tables", tables_region);
+    let r1 = t1.draw(&mut tables, Point::new(tables_region.x0 + 1.0, tables_region.y0));
+    let at2 = if side_by_side {
+        Point::new(r1.x1 + 8.0, tables_region.y0)
+    } else {
+        Point::new(tables_region.x0 + 1.0, r1.y1 + 6.0)
+    };
+    let r2 = t2.draw(&mut tables, at2);
+    let notes_top = r1.y1.max(r2.y1) + 4.0;
+    notes(
+        &mut tables,
+        &l,
+        &inp.project.assumptions,
+        Rect::new(tables_region.x0, notes_top, tables_region.x1, tables_region.y1),
+    );
+
+    let mut force_scales = None;
+    let mut extra = Vec::new();
+    if let (Some(region), Some((fa, ft))) = (force_region, inp.forces) {
+        let (t3, t4, t5) = (&ft.inertia, &ft.reactions, &ft.balance);
+        let mut fg = Group::new("forces", region);
+        let tables = vec![
+            sheet_table(t3, l.get("inertia_table"), lang),
+            Table { label_w: 12.0, cell_w: 16.0, ..sheet_table(t4, l.get("reaction_table"), lang) },
+            Table {
+                label_w: 16.0,
+                cell_w: 18.0,
+                header: vec![l.get("value").to_string()],
+                ..sheet_table(t5, l.get("balance_table"), lang)
+            },
+        ];
+        let input = ForcesInput {
+            m,
+            fa,
+            state: &k.assigned.state,
+            phi_deg: k.assigned.phi.to_degrees(),
+            labels: &l,
+            lang,
+            tables,
+        };
+        force_scales = Some(draw_forces(&mut fg, region, &input));
+        extra.push(fg);
+    }
+    let organisation = [inp.info.institution.as_str(), inp.info.group.as_str()]
+        .iter()
+        .filter(|s| !s.is_empty())
+        .copied()
+        .collect::<Vec<_>>()
+        .join(", ");
+    let mut tb = Group::new("title-block", frame::title_block_rect());
+    frame::title_block(
+        &mut tb,
+        &l,
+        &TitleBlock {
+            designation: &inp.info.designation,
+            sheet_name: l.get(if inp.forces.is_some() { "sheet1_name_forces" } else { "sheet1_name" }),
+            project_title: &inp.info.title,
+            student: &inp.info.student,
+            supervisor: &inp.info.supervisor,
+            organisation: &organisation,
+            scale: &scale::ratio(mu_l),
+            sheet_no: inp.sheet_no,
+            sheet_count: inp.sheet_count,
+        },
+    );
+    groups.extend([fr, mech, vel, acc, tables, tb]);
+    groups.extend(extra);
+    let title = format!(
+        "{} — {}",
+        inp.info.title,
+        l.get(if inp.forces.is_some() { "sheet1_name_forces" } else { "sheet1_name" })
+    );
+    Composed {
+        scene: Scene { width: A1_W, height: A1_H, title, groups },
+        scales: Scales { mu_l, mu_v, mu_a },
+        force_scales,
+    }
+}
+
+/// A region's title (5 mm) and its line of scale and formula (3.5 mm).
+fn region_header(g: &mut Group, placer: &mut Placer, r: Rect, title: &str, lines: &[LabelText]) {
+    let t = Text::new(Point::new(r.x0 + 2.0, r.y0 + 6.0), title, 5.0, Anchor::Start);
+    placer.block(t.bbox());
+    g.text(t);
+    let mut x = r.x0 + 2.0;
+    for line in lines {
+        let bb = line.draw(g, Point::new(x, r.y0 + 12.5), 3.5, Anchor::Start);
+        placer.block(bb);
+        x = bb.x1 + 8.0;
+    }
+}
+
+/// Draws plans in a grid filling `region` below its header, at one round scale; returns it.
+#[allow(clippy::too_many_arguments)]
+fn plans_region(
+    g: &mut Group,
+    region: Rect,
+    plans: &[Plan],
+    positions: Vec<&Position>,
+    pole: &str,
+    l: &Labels,
+    lang: Language,
+    (title, sym, unit): (&str, &str, &str),
+) -> f64 {
+    let body = Rect::new(region.x0, region.y0 + HEADER, region.x1, region.y1);
+    let cells = grid(body, plans.len());
+    let need = plans.iter().zip(&cells).map(|(p, c)| required_mu(p, (c.width(), c.height()))).fold(0.0, f64::max);
+    let mu = scale::round_up(need.max(1e-9));
+    let mut placer = Placer::new(region);
+    let scale_line =
+        LabelText::new("μ", sym).with_tail(format!(" = {} {}", fmt::localise(&scale::format(mu), lang), l.get(unit)));
+    region_header(g, &mut placer, region, l.get(title), &[scale_line]);
+    for ((plan, cell), pos) in plans.iter().zip(&cells).zip(positions) {
+        draw_plan(g, *cell, &l.get("position_k").replace("{k}", &pos.label), plan, mu, pole);
+    }
+    mu
+}
+
+fn sheet_table(t: &NumTable, title: &str, lang: Language) -> Table {
+    Table {
+        title: title.to_string(),
+        header: t.columns.clone(),
+        rows: t
+            .rows
+            .iter()
+            .map(|r| {
+                (
+                    LabelText::new(r.symbol.clone(), r.sub.clone()),
+                    r.values.iter().map(|&v| fmt::value(v, lang)).collect(),
+                )
+            })
+            .collect(),
+        label_w: 14.0,
+        cell_w: 13.0,
+    }
+}
+
+/// Height the notes need in a column of width `w`.
+fn notes_height(assumptions: &[String], w: f64) -> f64 {
+    let lines: usize = assumptions.iter().map(|a| wrap(a, 2.5, w - 2.0).len()).sum();
+    10.0 + if assumptions.is_empty() { 0.0 } else { 4.5 + lines as f64 * 4.0 + assumptions.len() as f64 }
+}
+
+fn notes(g: &mut Group, l: &Labels, assumptions: &[String], r: Rect) {
+    let mut y = r.y0 + 3.5;
+    let w = r.width() - 2.0;
+    g.text(Text::new(Point::new(r.x0, y), l.get("exact_note"), 2.5, Anchor::Start));
+    y += 6.0;
+    if assumptions.is_empty() {
+        return;
+    }
+    g.text(Text::new(Point::new(r.x0, y), format!("{}:", l.get("assumed")), 2.5, Anchor::Start));
+    y += 4.5;
+    for a in assumptions {
+        let lines = wrap(a, 2.5, w);
+        y = paragraph(g, Point::new(r.x0, y), &lines, 2.5, Anchor::Start) + 1.0;
+    }
+}

@@ -1,0 +1,268 @@
+//! The mechanism in all its positions at the length scale μ_l: thin links for every
+//! position, the assigned position thick with its letters and the senses of ω and ε,
+//! the centres of mass and their trajectories, frame pivots and guides.
+
+use crate::drawing::place::Placer;
+use crate::drawing::scene::{AXIS, Group, MAIN, Pen, THIN};
+use crate::drawing::symbols::{frame_pivot, hatch, slider, turn_arrow};
+use crate::drawing::text::LabelText;
+use crate::lever::analysis::{Kinematics, Position};
+use crate::lever::linkage::{LinkKind, Mechanism, PointId, Step};
+use kurbo::{Point, Rect, Vec2};
+
+/// Paper sizes of the symbols, mm.
+const SLIDER: (f64, f64) = (10.0, 5.0);
+const BLOCK: (f64, f64) = (7.0, 4.0);
+const JOINT_R: f64 = 1.0;
+
+/// World (metres, y up) to paper (mm, y down) at scale `mu` (m/mm).
+#[derive(Debug, Clone, Copy)]
+pub struct View {
+    pub mu: f64,
+    /// Paper position of the world origin.
+    pub origin: Point,
+}
+
+impl View {
+    pub fn p(&self, v: Vec2) -> Point {
+        Point::new(self.origin.x + v.x / self.mu, self.origin.y - v.y / self.mu)
+    }
+    /// A world direction as a paper direction.
+    pub fn dir(&self, v: Vec2) -> Vec2 {
+        Vec2::new(v.x, -v.y)
+    }
+}
+
+/// Drawn length of a kulisa: given, or its longest reach to the block plus 15 %.
+fn kulisa_len(k: &Kinematics, c: PointId, a3: PointId, given: Option<f64>) -> f64 {
+    given.unwrap_or_else(|| {
+        let reach =
+            k.positions.iter().map(|p| (p.state.points[a3].p - p.state.points[c].p).hypot()).fold(0.0, f64::max);
+        reach * 1.15
+    })
+}
+
+/// Everything the view draws, in world coordinates, for choosing the scale.
+pub fn world_extent(m: &Mechanism, k: &Kinematics, kulisa: &[(usize, Option<f64>)]) -> Rect {
+    let mut pts: Vec<Vec2> = Vec::new();
+    for p in k.positions.iter().chain(std::iter::once(&k.assigned)) {
+        pts.extend(p.state.points.iter().map(|q| q.p));
+        for st in &m.steps {
+            if let Step::Rpr { c, a3, links, .. } = *st {
+                let given = kulisa.iter().find(|(l, _)| *l == links[1]).and_then(|x| x.1);
+                let len = kulisa_len(k, c, a3, given);
+                let d = (p.state.points[a3].p - p.state.points[c].p).normalize();
+                pts.push(p.state.points[c].p + d * len);
+            }
+        }
+    }
+    for (_, path) in &k.trajectories {
+        pts.extend(path.iter().copied());
+    }
+    let crank = m.crank();
+    let c = m.frame.iter().find(|f| f.0 == crank.pivot).map(|f| f.1).unwrap_or_default();
+    let r = Vec2::new(crank.length, crank.length);
+    pts.extend([c + r, c - r]);
+    let first = pts[0].to_point();
+    pts.iter().fold(Rect::from_points(first, first), |r, p| r.union_pt(p.to_point()))
+}
+
+pub struct MechanismView<'a> {
+    pub m: &'a Mechanism,
+    pub k: &'a Kinematics,
+    pub view: View,
+    pub kulisa: &'a [(usize, Option<f64>)],
+}
+
+impl MechanismView<'_> {
+    pub fn draw(&self, g: &mut Group, placer: &mut Placer) {
+        self.crank_circle(g);
+        for (_, path) in &self.k.trajectories {
+            let pts: Vec<Point> = path.iter().map(|&v| self.view.p(v)).collect();
+            let bb = crate::drawing::scene::points_bbox(&pts);
+            if bb.width().max(bb.height()) > 1.0 && bb.width().min(bb.height()) > 0.3 {
+                g.path(pts, false, AXIS);
+            }
+        }
+        self.guides(g);
+        for pos in &self.k.positions {
+            self.position(g, pos, THIN, 0.7);
+        }
+        self.position(g, &self.k.assigned, MAIN, JOINT_R * 1.3);
+        for &(id, p) in &self.m.frame {
+            if self.is_pivot(id) {
+                frame_pivot(g, self.view.p(p), JOINT_R * 1.5);
+            }
+        }
+        self.position_numbers(g, placer);
+        self.letters(g, placer);
+        self.senses(g, placer);
+    }
+
+    fn is_pivot(&self, id: PointId) -> bool {
+        self.m.links.iter().any(|l| l.points.contains(&id))
+    }
+
+    fn crank_circle(&self, g: &mut Group) {
+        let crank = self.m.crank();
+        let c = self.k.assigned.state.points[crank.pivot].p;
+        g.circle(self.view.p(c), crank.length / self.view.mu, THIN);
+    }
+
+    /// Each guide: its axis (dash-dot) over the slider's travel and a hatched frame line.
+    fn guides(&self, g: &mut Group) {
+        for st in &self.m.steps {
+            let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
+            let s: Vec<f64> = self.k.positions.iter().map(|p| (p.state.points[d].p - through).dot(dir)).collect();
+            let (lo, hi) = s.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+            // Past the slider's extreme positions by its half length and 4 mm (within MECH_PAD).
+            let ext = (SLIDER.0 / 2.0 + 4.0) * self.view.mu;
+            let (a, b) = (through + dir * (lo - ext), through + dir * (hi + ext));
+            g.line(self.view.p(a), self.view.p(b), AXIS);
+            // Hatch on the side away from the rod, so it never crosses the links.
+            let n_world = dir.turn_90();
+            let rod_side: f64 = self.k.positions.iter().map(|p| (p.state.points[joint].p - through).dot(n_world)).sum();
+            let side = if rod_side >= 0.0 { -1.0 } else { 1.0 };
+            let off = self.view.dir(n_world * side) * (SLIDER.1 / 2.0);
+            let (pa, pb) = (self.view.p(a) + off, self.view.p(b) + off);
+            g.line(pa, pb, THIN);
+            hatch(g, pa, pb, self.view.dir(n_world * side), 2.5);
+        }
+    }
+
+    fn position(&self, g: &mut Group, pos: &Position, pen: Pen, joint_r: f64) {
+        let st = &pos.state;
+        let p = |id: PointId| self.view.p(st.points[id].p);
+        for (li, link) in self.m.links.iter().enumerate() {
+            let pts: Vec<PointId> = link.points.iter().copied().filter(|&id| !self.m.is_mass_centre(id)).collect();
+            match link.kind {
+                LinkKind::Slider => {
+                    let u = self.slider_dir(li);
+                    slider(g, p(pts[0]), u, SLIDER.0, SLIDER.1, pen);
+                }
+                LinkKind::Block => {
+                    let u = self.view.dir(st.links[li].dir);
+                    slider(g, p(pts[0]), u, BLOCK.0, BLOCK.1, pen);
+                }
+                _ => {
+                    if let Some((c, a3, given)) = self.kulisa_of(li) {
+                        let len = kulisa_len(self.k, c, a3, given);
+                        let d = (st.points[a3].p - st.points[c].p).normalize();
+                        g.line(p(c), self.view.p(st.points[c].p + d * len), pen);
+                        continue;
+                    }
+                    let ring: Vec<Point> = pts.iter().map(|&id| p(id)).collect();
+                    g.path(ring.clone(), ring.len() > 2, pen);
+                }
+            }
+        }
+        for id in self.joints() {
+            if !self.m.is_frame(id) {
+                g.circle(p(id), joint_r, if pen == MAIN { THIN } else { pen });
+            }
+        }
+        for &(_, id) in &self.m.mass_centres {
+            g.dot(p(id), if pen == MAIN { 0.9 } else { 0.45 });
+        }
+    }
+
+    fn kulisa_of(&self, link: usize) -> Option<(PointId, PointId, Option<f64>)> {
+        self.m.steps.iter().find_map(|s| match *s {
+            Step::Rpr { c, a3, links, .. } if links[1] == link => {
+                let given = self.kulisa.iter().find(|(l, _)| *l == link).and_then(|x| x.1);
+                Some((c, a3, given))
+            }
+            _ => None,
+        })
+    }
+
+    fn slider_dir(&self, link: usize) -> Vec2 {
+        self.m
+            .steps
+            .iter()
+            .find_map(|s| match *s {
+                Step::Rrp { dir, links, .. } if links[1] == link => Some(self.view.dir(dir)),
+                _ => None,
+            })
+            .unwrap_or(Vec2::new(1.0, 0.0))
+    }
+
+    /// Revolute joints drawn as small circles: every link point that is not a centre of
+    /// mass and not a kulisa image.
+    fn joints(&self) -> Vec<PointId> {
+        let mut out: Vec<PointId> = Vec::new();
+        for l in &self.m.links {
+            for &id in &l.points {
+                if !self.m.is_mass_centre(id) && !self.m.is_kulisa_image(id) && !out.contains(&id) {
+                    out.push(id);
+                }
+            }
+        }
+        out
+    }
+
+    /// Position numbers beside the crank pin of every position, outward from the pivot.
+    fn position_numbers(&self, g: &mut Group, placer: &mut Placer) {
+        let crank = self.m.crank();
+        for pos in &self.k.positions {
+            let (o, a) = (self.view.p(pos.state.points[crank.pivot].p), self.view.p(pos.state.points[crank.pin].p));
+            g.text(placer.place(a, a - o, &pos.label, 3.5));
+        }
+    }
+
+    /// Letters of the assigned position's points, away from the mechanism's centre.
+    fn letters(&self, g: &mut Group, placer: &mut Placer) {
+        let st = &self.k.assigned.state;
+        let centre = {
+            let ps: Vec<Point> = st.points.iter().map(|q| self.view.p(q.p)).collect();
+            crate::drawing::scene::points_bbox(&ps).center()
+        };
+        for (id, name) in self.m.point_names.iter().enumerate() {
+            if self.m.is_kulisa_image(id) {
+                continue;
+            }
+            let at = self.view.p(st.points[id].p);
+            let (main, sub) = split_name(name);
+            let t = placer.place(at, at - centre + Vec2::new(0.0, -2.0), &format!("{main}{sub}"), 5.0);
+            let lt = LabelText::new(main, sub);
+            let anchor_x = t.at.x;
+            lt.draw(g, Point::new(anchor_x, t.at.y), 5.0, crate::drawing::scene::Anchor::Middle);
+        }
+    }
+
+    /// Arc arrows of ω (radius 4.5 mm) and ε (7 mm) at every turning link of the thick position.
+    fn senses(&self, g: &mut Group, placer: &mut Placer) {
+        let st = &self.k.assigned.state;
+        for (li, link) in self.m.links.iter().enumerate() {
+            if matches!(link.kind, LinkKind::Slider | LinkKind::Block) {
+                continue;
+            }
+            let pts: Vec<Vec2> = link.points.iter().map(|&id| st.points[id].p).collect();
+            let centre = match link.kind {
+                LinkKind::Crank | LinkKind::Rocker => self.view.p(pts[0]),
+                _ => self.view.p((pts[0] + pts[1]) * 0.5),
+            };
+            let lk = st.links[li];
+            let along = self.view.dir(lk.dir);
+            let start = along.y.atan2(along.x).to_degrees() + 55.0;
+            for (value, r, sym) in [(lk.omega, 4.5, "ω"), (lk.eps, 7.0, "ε")] {
+                if value.abs() < 1e-12 || (link.kind == LinkKind::Crank && sym == "ε") {
+                    continue;
+                }
+                turn_arrow(g, centre, r, start, 70.0, value > 0.0, THIN);
+                let end_ang = (start + if value > 0.0 { -70.0 } else { 70.0 }).to_radians();
+                let tip = centre + Vec2::new(end_ang.cos(), end_ang.sin()) * r;
+                let label = format!("{sym}{}", link.number);
+                let t = placer.place(tip, tip - centre, &label, 3.5);
+                LabelText::new(sym, link.number.to_string()).draw(g, t.at, 3.5, crate::drawing::scene::Anchor::Middle);
+            }
+        }
+    }
+}
+
+/// "S2" → ("S", "2"), "O1" → ("O", "1"), "A" → ("A", "").
+pub fn split_name(name: &str) -> (String, String) {
+    let mut chars = name.chars();
+    let first: String = chars.next().map(String::from).unwrap_or_default();
+    (first, chars.collect())
+}

@@ -1,0 +1,114 @@
+//! Sheet 1: the lever mechanism. Analyses the mechanism (positions, plans, and with a
+//! `forces` section the kinetostatics at φ1), builds the note's tables and composes the
+//! sheet; the composition itself lives in [`compose`] and the views it places.
+
+pub mod compose;
+pub mod forces_view;
+mod mechanism_view;
+mod plans_view;
+pub mod results;
+
+use super::{COURSE, Context, Sheet, SheetError, SheetKind, SheetOutput};
+use crate::drawing::labels::Labels;
+use crate::lever::analysis::{self, AnalysisError, ForceAnalysis, Kinematics};
+use crate::project::{LeverProject, Project};
+use crate::report::NoteTable;
+use crate::report::lever::{ForceTables, KinematicTables, force_tables, kinematic_tables};
+use compose::Composed;
+
+/// This sheet's place in the course.
+pub const KIND: SheetKind = COURSE[0];
+
+/// Sheet 1 of a project with a `mechanism` section.
+pub struct LeverSheet<'a> {
+    pub project: &'a LeverProject,
+}
+
+impl LeverSheet<'_> {
+    pub fn of(project: &Project) -> Option<Box<dyn Sheet + '_>> {
+        project.lever.as_ref().map(|p| Box::new(LeverSheet { project: p }) as Box<dyn Sheet>)
+    }
+}
+
+/// Everything computed for sheet 1.
+pub struct LeverBuild {
+    pub kinematics: Kinematics,
+    /// The force analysis at φ1 with tables 3–5, when the project asks for one.
+    pub forces: Option<(ForceAnalysis, ForceTables)>,
+    pub tables: KinematicTables,
+    pub composed: Composed,
+}
+
+/// Analyses and composes sheet 1.
+pub fn build(ctx: &Context, p: &LeverProject) -> Result<LeverBuild, AnalysisError> {
+    let m = &p.mechanism;
+    let kinematics = analysis::kinematics(m, &p.settings)?;
+    let tables = kinematic_tables(m, &kinematics);
+    let forces = match &p.forces {
+        Some(model) => {
+            let fa = analysis::forces(m, &kinematics, model)?;
+            let t = force_tables(m, &fa);
+            Some((fa, t))
+        }
+        None => None,
+    };
+    let input = compose::Input {
+        info: ctx.info,
+        project: p,
+        tables: &tables,
+        forces: forces.as_ref(),
+        sheet_no: KIND.number,
+        sheet_count: ctx.sheet_count,
+    };
+    let composed = compose::compose(&input, &kinematics);
+    Ok(LeverBuild { kinematics, forces, tables, composed })
+}
+
+impl LeverBuild {
+    /// The note's tables with their titles in the sheet's language.
+    pub fn note_tables(&self, l: &Labels) -> Vec<NoteTable> {
+        let mut out = vec![
+            NoteTable {
+                stem: "velocities",
+                title: l.get("velocity_table").into(),
+                table: self.tables.velocities.clone(),
+            },
+            NoteTable {
+                stem: "accelerations",
+                title: l.get("acceleration_table").into(),
+                table: self.tables.accelerations.clone(),
+            },
+        ];
+        if let Some((_, t)) = &self.forces {
+            out.extend([
+                NoteTable { stem: "inertia", title: l.get("inertia_table").into(), table: t.inertia.clone() },
+                NoteTable { stem: "reactions", title: l.get("reaction_table").into(), table: t.reactions.clone() },
+                NoteTable { stem: "balancing", title: l.get("balance_table").into(), table: t.balance.clone() },
+            ]);
+        }
+        out
+    }
+
+    /// The sheet's section of `results.json`.
+    pub fn results(&self, p: &LeverProject) -> serde_json::Value {
+        results::section(&p.mechanism, &self.kinematics, &self.composed, self.forces.as_ref().map(|f| &f.0))
+    }
+}
+
+impl Sheet for LeverSheet<'_> {
+    fn kind(&self) -> SheetKind {
+        KIND
+    }
+
+    fn build(&self, ctx: &Context) -> Result<SheetOutput, SheetError> {
+        let b = build(ctx, self.project)?;
+        let l = Labels::new(ctx.info.language);
+        Ok(SheetOutput {
+            number: self.kind().number,
+            tables: b.note_tables(&l),
+            results: b.results(self.project),
+            scene: b.composed.scene,
+            diagnostics: Vec::new(),
+        })
+    }
+}

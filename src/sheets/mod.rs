@@ -1,0 +1,117 @@
+//! The sheets of the course project, each a value the pipeline iterates over: it computes
+//! what it needs from its section of the project and returns its [`SheetOutput`] (scene,
+//! note tables, its `results.json` section, diagnostics). Nothing outside this module names
+//! a sheet by its number.
+//!
+//! **Architecture invariant:** sheets compose; they read domain results and produce a scene
+//! of paper-millimetre primitives, never bytes.
+
+pub mod lever;
+
+use crate::drawing::scene::Scene;
+use crate::lever::analysis::AnalysisError;
+use crate::project::{Project, ProjectInfo};
+use crate::report::NoteTable;
+
+/// The course project's sheets: number, what the sheet draws, the section it needs, and
+/// whether this version draws it.
+pub const COURSE: [SheetKind; 3] = [
+    SheetKind {
+        number: 1,
+        subject: "the lever mechanism",
+        section: "mechanism",
+        available: true,
+        make: lever::LeverSheet::of,
+    },
+    SheetKind { number: 2, subject: "the gears", section: "gears", available: false, make: |_| None },
+    SheetKind { number: 3, subject: "the cam", section: "cam", available: false, make: |_| None },
+];
+
+/// Builds a sheet from a project that has its section.
+pub type MakeSheet = for<'a> fn(&'a Project) -> Option<Box<dyn Sheet + 'a>>;
+
+#[derive(Clone, Copy)]
+pub struct SheetKind {
+    pub number: u32,
+    pub subject: &'static str,
+    /// The section of the project file the sheet draws.
+    pub section: &'static str,
+    pub available: bool,
+    pub make: MakeSheet,
+}
+
+impl std::fmt::Debug for SheetKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "sheet {} ({})", self.number, self.subject)
+    }
+}
+
+impl PartialEq for SheetKind {
+    fn eq(&self, other: &Self) -> bool {
+        self.number == other.number
+    }
+}
+
+/// What every sheet is given besides its own section.
+pub struct Context<'a> {
+    pub info: &'a ProjectInfo,
+    /// The number of sheets of the whole project, for the title block.
+    pub sheet_count: u32,
+}
+
+/// A finished sheet.
+#[derive(Debug, Clone)]
+pub struct SheetOutput {
+    pub number: u32,
+    pub scene: Scene,
+    /// The note's tables, in order.
+    pub tables: Vec<NoteTable>,
+    /// The sheet's section of `results.json`.
+    pub results: serde_json::Value,
+    /// Things the user should know about this sheet (printed, the build continues).
+    pub diagnostics: Vec<String>,
+}
+
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SheetError {
+    #[error(transparent)]
+    Lever(#[from] AnalysisError),
+}
+
+/// One sheet, ready to build from its project section.
+pub trait Sheet {
+    fn kind(&self) -> SheetKind;
+    fn build(&self, ctx: &Context) -> Result<SheetOutput, SheetError>;
+}
+
+/// Why a requested sheet cannot be built.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SelectError {
+    #[error("there is no sheet {0}: the course project has sheets 1 to {n}", n = COURSE.len())]
+    NoSuchSheet(u32),
+    #[error("sheet {number} ({subject}) is not available in this version", number = .0.number, subject = .0.subject)]
+    NotAvailable(SheetKind),
+    #[error("sheet {number} ({subject}) needs a `{section}` section in the project file", number = .0.number, subject = .0.subject, section = .0.section)]
+    MissingSection(SheetKind),
+}
+
+/// The sheets to build: the requested ones (each must exist and have its section), or, with
+/// no request, every available sheet the project has a section for, in order.
+pub fn select<'a>(project: &'a Project, requested: &[u32]) -> Result<Vec<Box<dyn Sheet + 'a>>, SelectError> {
+    if requested.is_empty() {
+        return Ok(COURSE.iter().filter(|k| k.available).filter_map(|k| (k.make)(project)).collect());
+    }
+    let mut out: Vec<Box<dyn Sheet + 'a>> = Vec::new();
+    for &n in requested {
+        let kind = *COURSE.iter().find(|k| k.number == n).ok_or(SelectError::NoSuchSheet(n))?;
+        if !kind.available {
+            return Err(SelectError::NotAvailable(kind));
+        }
+        if out.iter().any(|s| s.kind() == kind) {
+            continue;
+        }
+        out.push((kind.make)(project).ok_or(SelectError::MissingSection(kind))?);
+    }
+    out.sort_by_key(|s| s.kind().number);
+    Ok(out)
+}
