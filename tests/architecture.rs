@@ -40,7 +40,9 @@ fn crate_paths(text: &str) -> Vec<String> {
     for (i, _) in text.match_indices("crate::") {
         let rest = &text[i + 7..];
         let end = rest.find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':')).unwrap_or(rest.len());
-        out.push(rest[..end].trim_end_matches(':').to_string());
+        let path = rest[..end].trim_end_matches(':');
+        // `#[macro_export]` puts the drawing kit's `label_set!` at the crate root.
+        out.push(if path == "label_set" { "drawing::label_set".to_string() } else { path.to_string() });
     }
     out
 }

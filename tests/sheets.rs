@@ -264,3 +264,50 @@ fn worked_example_matches_the_reference_sheets() {
     }
     assert!(Path::new(&reference_dir().join("sheet1.pdf")).exists());
 }
+
+/// Latin words a Russian sheet must not show: a run of two or more Latin letters with a
+/// lowercase one ("mm", "working"), or a unit "N"/"m"/"s"/"kg" after a number or a comma
+/// ("0,5 N", "P, N"). Symbols and plan letters ("m", "p=b=s3") are not words.
+fn english_on_russian(text: &str) -> Option<String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut i = 0;
+    while i < chars.len() {
+        if !chars[i].is_ascii_alphabetic() {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < chars.len() && chars[i].is_ascii_alphabetic() {
+            i += 1;
+        }
+        let token: String = chars[start..i].iter().collect();
+        let before = chars[..start].iter().rev().find(|c| !c.is_whitespace());
+        let after_number = before.is_some_and(|c| c.is_ascii_digit() || *c == ',');
+        let word = token.len() >= 2 && token.chars().any(|c| c.is_ascii_lowercase());
+        if word || (["N", "m", "s", "kg"].contains(&token.as_str()) && after_number) {
+            return Some(token);
+        }
+    }
+    None
+}
+
+/// Every word and unit on a Russian sheet is Russian (user text aside, set here in Cyrillic).
+#[test]
+fn a_russian_sheet_has_no_english_word_or_unit() {
+    assert!(english_on_russian(" = 0,015 m/mm").is_some());
+    assert_eq!(english_on_russian("P, N"), Some("N".into()));
+    assert_eq!(english_on_russian("m"), None);
+    assert_eq!(english_on_russian(" = 0,015 м/мм"), None);
+    for name in fixture_names() {
+        let mut p = fixture(&name);
+        p.info.language = Language::Ru;
+        p.info.title = "Механизм".into();
+        p.info.institution = "ТГТУ".into();
+        p.info.designation = "ТММ 01.00.00".into();
+        p.lever.as_mut().unwrap().assumptions.clear();
+        let r = build(&p);
+        for t in r.output.scene.texts() {
+            assert_eq!(english_on_russian(&t.text), None, "{name}: English on the Russian sheet: {:?}", t.text);
+        }
+    }
+}

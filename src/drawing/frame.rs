@@ -1,7 +1,7 @@
 //! The A1 sheet's frame (GOST 2.301) and title block (GOST 2.104, form 1), drawn from
 //! `templates/sheet-a1.yaml`: page size, margins, the block's lines, captions and fields.
 
-use super::labels::Labels;
+use super::labels::Common;
 use super::scene::{Anchor, Group, MAIN, THIN, Text};
 use super::text::{paragraph, wrap};
 use kurbo::{Point, Rect};
@@ -40,7 +40,7 @@ struct BlockTemplate {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct Caption {
-    key: String,
+    key: CaptionKey,
     at: [f64; 2],
     h: f64,
     anchor: TemplateAnchor,
@@ -69,6 +69,41 @@ impl From<TemplateAnchor> for Anchor {
             TemplateAnchor::Start => Anchor::Start,
             TemplateAnchor::Middle => Anchor::Middle,
             TemplateAnchor::End => Anchor::End,
+        }
+    }
+}
+
+/// The title block's fixed captions (the [`Common`] labels `tb_…`).
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum CaptionKey {
+    Change,
+    SheetNo,
+    Doc,
+    Sign,
+    Date,
+    Drawn,
+    Checked,
+    Approved,
+    Lit,
+    Mass,
+    Scale,
+}
+
+impl CaptionKey {
+    fn text(self, c: &Common) -> &str {
+        match self {
+            CaptionKey::Change => c.tb_change(),
+            CaptionKey::SheetNo => c.tb_sheet_no(),
+            CaptionKey::Doc => c.tb_doc(),
+            CaptionKey::Sign => c.tb_sign(),
+            CaptionKey::Date => c.tb_date(),
+            CaptionKey::Drawn => c.tb_drawn(),
+            CaptionKey::Checked => c.tb_checked(),
+            CaptionKey::Approved => c.tb_approved(),
+            CaptionKey::Lit => c.tb_lit(),
+            CaptionKey::Mass => c.tb_mass(),
+            CaptionKey::Scale => c.tb_scale(),
         }
     }
 }
@@ -135,7 +170,7 @@ pub fn frame(g: &mut Group) {
     rect_path(g, inner());
 }
 
-pub fn title_block(g: &mut Group, l: &Labels, tb: &TitleBlock) {
+pub fn title_block(g: &mut Group, l: &Common, tb: &TitleBlock) {
     let t = &template().title_block;
     let r = title_block_rect();
     let o = r.origin().to_vec2();
@@ -147,10 +182,10 @@ pub fn title_block(g: &mut Group, l: &Labels, tb: &TitleBlock) {
         }
     }
     for c in &t.captions {
-        g.text(Text::new(p(c.at[0], c.at[1]), l.get(&c.key), c.h, c.anchor.into()));
+        g.text(Text::new(p(c.at[0], c.at[1]), c.key.text(l), c.h, c.anchor.into()));
     }
-    let sheet = format!("{} {}", l.get("tb_sheet_no"), tb.sheet_no);
-    let sheets = format!("{} {}", l.get("tb_sheets"), tb.sheet_count);
+    let sheet = format!("{} {}", l.tb_sheet_no(), tb.sheet_no);
+    let sheets = format!("{} {}", l.tb_sheets(), tb.sheet_count);
     for f in &t.fields {
         let value = match f.field {
             FieldName::Designation => tb.designation,
@@ -170,13 +205,10 @@ pub fn title_block(g: &mut Group, l: &Labels, tb: &TitleBlock) {
 }
 
 /// The name field: sheet name and project title, wrapped and centred.
-fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Labels) {
+fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Common) {
     let w = r.width() - 3.0;
-    let blocks = [
-        (wrap(tb.sheet_name, 3.5, w), 3.5),
-        (wrap(tb.project_title, 3.5, w), 3.5),
-        (wrap(l.get("tb_course"), 2.5, w), 2.5),
-    ];
+    let blocks =
+        [(wrap(tb.sheet_name, 3.5, w), 3.5), (wrap(tb.project_title, 3.5, w), 3.5), (wrap(l.tb_course(), 2.5, w), 2.5)];
     let height: f64 = blocks.iter().map(|(ls, h)| ls.len() as f64 * 1.6 * h).sum::<f64>() + 2.0 * 2.0;
     let mut y = r.center().y - height / 2.0 + 4.0;
     for (lines, h) in &blocks {
@@ -199,10 +231,9 @@ mod tests {
         assert_eq!(page(), (A1_W, A1_H));
         assert_eq!(inner(), Rect::new(20.0, 5.0, 836.0, 589.0));
         assert_eq!(title_block_rect(), Rect::new(651.0, 534.0, 836.0, 589.0));
-        let l = Labels::new(Language::Ru);
-        for c in &template().title_block.captions {
-            assert!(l.keys().any(|k| k == c.key), "caption key {} is not in labels.yaml", c.key);
-        }
+        let l = Common::get(Language::Ru);
+        let captions: Vec<&str> = template().title_block.captions.iter().map(|c| c.key.text(l)).collect();
+        assert!(captions.contains(&"Разраб.") && captions.contains(&"Масштаб"), "{captions:?}");
         let block = Rect::from_origin_size(Point::ZERO, (185.0, 55.0));
         let t = &template().title_block;
         for &[x1, y1, x2, y2] in t.main.iter().chain(&t.thin) {

@@ -34,14 +34,25 @@ pub enum LoadKind {
     Resistance,
 }
 
+/// The name of a stroke: a word the sheet translates, or a symbol printed as it is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stroke {
+    /// The working stroke of a resistance load.
+    Working,
+    /// The return (idle) stroke of a resistance load.
+    Idle,
+    /// "↑", "↓" (towards or away from the cylinder head), "I" … "IV" (an engine's strokes).
+    Symbol(&'static str),
+}
+
 /// One branch of the diagram: the force along [`Load::axis`] is `scale · curve(s)`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Branch {
     pub curve: Curve,
     /// Newtons per unit of the curve, signed along the axis.
     pub scale: f64,
-    /// Short name of the stroke for the sheet (e.g. "I", "II", "working").
-    pub name: String,
+    /// Which stroke it is, for the sheet's legend.
+    pub name: Stroke,
 }
 
 /// A load on the slider `point` of `link`, acting along its guide.
@@ -121,7 +132,7 @@ mod tests {
     #[test]
     fn branch_follows_the_direction_of_motion() {
         let axis = Vec2::new(1.0, 0.0);
-        let b = |scale: f64, name: &str| Branch { curve: Curve::constant(1.0), scale, name: name.into() };
+        let b = |scale: f64, name: Stroke| Branch { curve: Curve::constant(1.0), scale, name };
         let load = Load {
             kind: LoadKind::Resistance,
             link: 0,
@@ -131,7 +142,7 @@ mod tests {
             from_head: false,
             origin: 0.0,
             stroke: 2.0,
-            branches: [b(-10.0, "w"), b(3.0, "i")],
+            branches: [b(-10.0, Stroke::Working), b(3.0, Stroke::Idle)],
             line: 0,
         };
         let fwd = load.value(Vec2::new(1.0, 0.0), Vec2::new(1.0, 0.0), Vec2::ZERO);

@@ -8,7 +8,7 @@ use super::{ModelError, Warning, at, invalid, warning};
 use crate::lever::indicators::{self, Indicator};
 use crate::lever::kinetostatics::{ForceModel, LinkMass};
 use crate::lever::linkage::{LinkId, LinkKind, Mechanism, PointId, Step};
-use crate::lever::load::{Branch, Curve, Load, LoadKind};
+use crate::lever::load::{Branch, Curve, Load, LoadKind, Stroke};
 use crate::num::limits;
 use kurbo::Vec2;
 use serde_saphyr::Spanned;
@@ -158,8 +158,8 @@ fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, Mo
             let axis = if r.working == Along::Forward { dir } else { -dir };
             let idle = r.idle_force.map_or(0.0, |x| x.0);
             let branches = [
-                Branch { curve: working, scale: -r.force.0, name: "working".into() },
-                Branch { curve: Curve::constant(1.0), scale: idle, name: "idle".into() },
+                Branch { curve: working, scale: -r.force.0, name: Stroke::Working },
+                Branch { curve: Curve::constant(1.0), scale: idle, name: Stroke::Idle },
             ];
             Ok(Load {
                 kind: LoadKind::Resistance,
@@ -183,10 +183,10 @@ fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, Mo
                 _ => return Err(invalid(at(spec), &f, "give either `force` (N), or `bore` (m) and `pressure` (Pa)")),
             };
             let ind = indicator(g, &f)?;
-            let branch = |(rows, name): (Vec<(f64, f64)>, &str)| Branch {
+            let branch = |(rows, name): (Vec<(f64, f64)>, &'static str)| Branch {
                 curve: Curve { points: rows },
                 scale: force,
-                name: name.into(),
+                name: Stroke::Symbol(name),
             };
             let branches = [branch((ind.away.0, ind.away.1)), branch((ind.toward.0, ind.toward.1))];
             Ok(Load {

@@ -6,12 +6,12 @@
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
 use super::forces_view::{ForceScales, ForcesInput, draw_forces};
+use super::labels::LeverLabels;
 use super::mechanism_view::{MechanismView, View, world_extent};
 use super::plans_view::{draw_plan, grid, required_mu};
 use crate::drawing::fmt;
 use crate::drawing::frame::{self, A1_H, A1_W, TitleBlock};
-use crate::drawing::labels::Labels;
-use crate::drawing::labels::Language;
+use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Placer;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Scene, Text};
@@ -71,7 +71,7 @@ const HEADER: f64 = 17.0;
 pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
     let m = &inp.project.mechanism;
     let lang = inp.info.language;
-    let l = Labels::new(lang);
+    let (l, c) = (LeverLabels::get(lang), Common::get(lang));
     let inner = frame::inner();
     let mut groups = Vec::new();
 
@@ -101,17 +101,17 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
         &mut mech,
         &mut placer,
         mech_region,
-        l.get("positions_title"),
+        l.positions_title(),
         &[
             LabelText::new("μ", "l").with_tail(format!(
                 " = {} {}",
                 fmt::localise(&scale::format(mu_l), lang),
-                l.get("unit_l")
+                c.unit_m_per_mm()
             )),
             LabelText::new(
                 format!(
                     "{}: {}   W = 3·{} − 2·{} − {} = {}",
-                    l.get("structure"),
+                    l.structure(),
                     k.structure.formula,
                     k.structure.moving_links,
                     k.structure.p5,
@@ -123,7 +123,7 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
         ],
     );
     let legend =
-        Text::new(Point::new(mech_region.x0 + 2.0, mech_region.y1 - 2.0), l.get("trajectories"), 2.5, Anchor::Start);
+        Text::new(Point::new(mech_region.x0 + 2.0, mech_region.y1 - 2.0), l.trajectories(), 2.5, Anchor::Start);
     placer.block(legend.bbox());
     mech.text(legend);
     MechanismView { m, k, view: View { mu: mu_l, origin }, kulisa: &inp.project.kulisa_lengths }
@@ -144,8 +144,8 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
     // Right column: the tables above the title block decide how tall the velocity plans are.
     let right_x0 = left_x1 + 6.0;
     let (vt, at) = (&inp.tables.velocities, &inp.tables.accelerations);
-    let t1 = sheet_table(vt, l.get("velocity_table"), lang);
-    let t2 = sheet_table(at, l.get("acceleration_table"), lang);
+    let t1 = sheet_table(vt, l.velocity_table(), lang);
+    let t2 = sheet_table(at, l.acceleration_table(), lang);
     let (w1, h1) = t1.size();
     let (w2, h2) = t2.size();
     let right_w = inner.x1 - 4.0 - right_x0;
@@ -166,9 +166,8 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
         &vplans,
         k.positions.iter().collect(),
         "p",
-        &l,
         lang,
-        ("velocity_plans", "v", "unit_v"),
+        (l.velocity_plans(), "v", c.unit_v_per_mm()),
     );
 
     // Acceleration plans: the chosen positions, one common μ_a.
@@ -184,9 +183,8 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
         &aplans,
         k.acceleration.iter().map(|&i| &k.positions[i]).collect(),
         "π",
-        &l,
         lang,
-        ("acceleration_plans", "a", "unit_a"),
+        (l.acceleration_plans(), "a", c.unit_a_per_mm()),
     );
 
     // Tables and notes.
@@ -202,7 +200,8 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
     let notes_top = r1.y1.max(r2.y1) + 4.0;
     notes(
         &mut tables,
-        &l,
+        l,
+        c,
         &inp.project.assumptions,
         Rect::new(tables_region.x0, notes_top, tables_region.x1, tables_region.y1),
     );
@@ -213,24 +212,17 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
         let (t3, t4, t5) = (&ft.inertia, &ft.reactions, &ft.balance);
         let mut fg = Group::new("forces", region);
         let tables = vec![
-            sheet_table(t3, l.get("inertia_table"), lang),
-            Table { label_w: 12.0, cell_w: 16.0, ..sheet_table(t4, l.get("reaction_table"), lang) },
+            sheet_table(t3, l.inertia_table(), lang),
+            Table { label_w: 12.0, cell_w: 16.0, ..sheet_table(t4, l.reaction_table(), lang) },
             Table {
                 label_w: 16.0,
                 cell_w: 18.0,
-                header: vec![l.get("value").to_string()],
-                ..sheet_table(t5, l.get("balance_table"), lang)
+                header: vec![c.value().to_string()],
+                ..sheet_table(t5, l.balance_table(), lang)
             },
         ];
-        let input = ForcesInput {
-            m,
-            fa,
-            state: &k.assigned.state,
-            phi_deg: k.assigned.phi.to_degrees(),
-            labels: &l,
-            lang,
-            tables,
-        };
+        let input =
+            ForcesInput { m, fa, state: &k.assigned.state, phi_deg: k.assigned.phi.to_degrees(), l, c, lang, tables };
         force_scales = Some(draw_forces(&mut fg, region, &input));
         extra.push(fg);
     }
@@ -243,10 +235,10 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
     let mut tb = Group::new("title-block", frame::title_block_rect());
     frame::title_block(
         &mut tb,
-        &l,
+        c,
         &TitleBlock {
             designation: &inp.info.designation,
-            sheet_name: l.get(if inp.forces.is_some() { "sheet1_name_forces" } else { "sheet1_name" }),
+            sheet_name: if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() },
             project_title: &inp.info.title,
             student: &inp.info.student,
             supervisor: &inp.info.supervisor,
@@ -258,11 +250,8 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
     );
     groups.extend([fr, mech, vel, acc, tables, tb]);
     groups.extend(extra);
-    let title = format!(
-        "{} — {}",
-        inp.info.title,
-        l.get(if inp.forces.is_some() { "sheet1_name_forces" } else { "sheet1_name" })
-    );
+    let title =
+        format!("{} — {}", inp.info.title, if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() });
     Composed {
         scene: Scene { width: A1_W, height: A1_H, title, groups },
         scales: Scales { mu_l, mu_v, mu_a },
@@ -291,7 +280,6 @@ fn plans_region(
     plans: &[Plan],
     positions: Vec<&Position>,
     pole: &str,
-    l: &Labels,
     lang: Language,
     (title, sym, unit): (&str, &str, &str),
 ) -> f64 {
@@ -301,10 +289,10 @@ fn plans_region(
     let mu = scale::round_up(need.max(1e-9));
     let mut placer = Placer::new(region);
     let scale_line =
-        LabelText::new("μ", sym).with_tail(format!(" = {} {}", fmt::localise(&scale::format(mu), lang), l.get(unit)));
-    region_header(g, &mut placer, region, l.get(title), &[scale_line]);
+        LabelText::new("μ", sym).with_tail(format!(" = {} {}", fmt::localise(&scale::format(mu), lang), unit));
+    region_header(g, &mut placer, region, title, &[scale_line]);
     for ((plan, cell), pos) in plans.iter().zip(&cells).zip(positions) {
-        draw_plan(g, *cell, &l.get("position_k").replace("{k}", &pos.label), plan, mu, pole);
+        draw_plan(g, *cell, &LeverLabels::get(lang).position(&pos.label), plan, mu, pole);
     }
     mu
 }
@@ -334,15 +322,15 @@ fn notes_height(assumptions: &[String], w: f64) -> f64 {
     10.0 + if assumptions.is_empty() { 0.0 } else { 4.5 + lines as f64 * 4.0 + assumptions.len() as f64 }
 }
 
-fn notes(g: &mut Group, l: &Labels, assumptions: &[String], r: Rect) {
+fn notes(g: &mut Group, l: &LeverLabels, c: &Common, assumptions: &[String], r: Rect) {
     let mut y = r.y0 + 3.5;
     let w = r.width() - 2.0;
-    g.text(Text::new(Point::new(r.x0, y), l.get("exact_note"), 2.5, Anchor::Start));
+    g.text(Text::new(Point::new(r.x0, y), l.exact_note(), 2.5, Anchor::Start));
     y += 6.0;
     if assumptions.is_empty() {
         return;
     }
-    g.text(Text::new(Point::new(r.x0, y), format!("{}:", l.get("assumed")), 2.5, Anchor::Start));
+    g.text(Text::new(Point::new(r.x0, y), format!("{}:", c.assumed()), 2.5, Anchor::Start));
     y += 4.5;
     for a in assumptions {
         let lines = wrap(a, 2.5, w);

@@ -3,11 +3,11 @@
 //! equation, the Zhukovsky lever, the load diagrams and tables 3–5. The cells are packed
 //! in rows; when they do not fit, the drawings get smaller scales, never smaller text.
 
+use super::labels::LeverLabels;
 use super::mechanism_view::split_name;
 use super::plans_view::{MARGIN, TITLE, draw_plan_with, plan_bbox};
 use crate::drawing::fmt;
-use crate::drawing::labels::Labels;
-use crate::drawing::labels::Language;
+use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Placer;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text, VECTOR};
@@ -17,7 +17,7 @@ use crate::drawing::text::LabelText;
 use crate::lever::analysis::ForceAnalysis;
 use crate::lever::kinetostatics::{FRAME, Kind, Part, Polygon};
 use crate::lever::linkage::{LinkKind, Mechanism, State};
-use crate::lever::load::Load;
+use crate::lever::load::{Load, Stroke};
 use crate::lever::plans::{Plan, velocity_plan};
 use crate::report::lever::load_letter;
 use kurbo::{Point, Rect, Vec2};
@@ -42,7 +42,8 @@ pub struct ForcesInput<'a> {
     /// The state at φ1.
     pub state: &'a State,
     pub phi_deg: f64,
-    pub labels: &'a Labels,
+    pub l: &'a LeverLabels,
+    pub c: &'a Common,
     pub lang: Language,
     /// Tables 3–5 as drawn.
     pub tables: Vec<Table>,
@@ -123,8 +124,7 @@ impl Sizes {
 }
 
 pub fn draw_forces(g: &mut Group, region: Rect, inp: &ForcesInput) -> ForceScales {
-    let title =
-        inp.labels.get("forces_title").replace("{phi}", &fmt::localise(&format!("{:.1}", inp.phi_deg), inp.lang));
+    let title = inp.l.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.lang));
     g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let body = Rect::new(region.x0, region.y0 + 10.0, region.x1, region.y1);
     let widest =
@@ -332,7 +332,7 @@ fn force_arrow(
     vector(g, at, tip, VECTOR);
     let mut label = force_label(inp, kind, on);
     if natural < ARROW_MIN && !small {
-        label.tail = format!(" = {} N", fmt::value(f, inp.lang));
+        label.tail = format!(" = {} {}", fmt::value(f, inp.lang), inp.c.unit_n());
     }
     place_label_h(g, placer, tip, d, &label, if small { 2.5 } else { 3.5 });
 }
@@ -358,9 +358,9 @@ fn group_title(inp: &ForcesInput, poly: &Polygon) -> String {
     match poly.group {
         Some(gi) => {
             let links = inp.m.groups[gi].links.map(|l| inp.m.links[l].number);
-            inp.labels.get("group_g").replace("{g}", &format!("II({},{})", links[0], links[1]))
+            inp.l.group(&format!("II({},{})", links[0], links[1]))
         }
-        None => inp.labels.get("driving_link").to_string(),
+        None => inp.l.driving_link().to_string(),
     }
 }
 
@@ -390,8 +390,16 @@ fn draw_group_cell(
         y += LINE;
     }
     let scale_lines = [
-        LabelText::new("μ", "l").with_tail(format!(" = {} m/mm", fmt::localise(&scale::format(layout.mu_l), inp.lang))),
-        LabelText::new("μ", "P").with_tail(format!(" = {} N/mm", fmt::localise(&scale::format(layout.mu_p), inp.lang))),
+        LabelText::new("μ", "l").with_tail(format!(
+            " = {} {}",
+            fmt::localise(&scale::format(layout.mu_l), inp.lang),
+            inp.c.unit_m_per_mm()
+        )),
+        LabelText::new("μ", "P").with_tail(format!(
+            " = {} {}",
+            fmt::localise(&scale::format(layout.mu_p), inp.lang),
+            inp.c.unit_n_per_mm()
+        )),
     ];
     for line in scale_lines {
         placer.block(line.draw(g, Point::new(r.x0 + 2.0, y), 3.5, Anchor::Start));
@@ -493,7 +501,7 @@ fn draw_lever(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, pl
     let f = &inp.fa.forces;
     let text_h = 3.0 * LINE;
     let plan_cell = Rect::new(r.x0, r.y0, r.x1, r.y1 - text_h);
-    let pole = draw_plan_with(g, plan_cell, inp.labels.get("lever_title"), plan, mu, "p", placer);
+    let pole = draw_plan_with(g, plan_cell, inp.l.lever_title(), plan, mu, "p", placer);
     let at = |v: Vec2| Point::new(pole.x + v.x / mu, pole.y - v.y / mu);
     let unit = f.lever.iter().map(|l| l.force.hypot()).fold(f.p_m_lever.abs(), f64::max) / ARROW_MAX;
     for l in &f.lever {
@@ -510,8 +518,12 @@ fn draw_lever(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, pl
     let lang = inp.lang;
     let y0 = r.y1 - text_h + LINE;
     let lines = [
-        LabelText::new("μ", "v").with_tail(format!(" = {} (m/s)/mm", fmt::localise(&scale::format(mu), lang))),
-        LabelText::new("P′", "m").with_tail(format!(" = {} N", fmt::value(f.p_m_lever, lang))),
+        LabelText::new("μ", "v").with_tail(format!(
+            " = {} {}",
+            fmt::localise(&scale::format(mu), lang),
+            inp.c.unit_v_per_mm()
+        )),
+        LabelText::new("P′", "m").with_tail(format!(" = {} {}", fmt::value(f.p_m_lever, lang), inp.c.unit_n())),
         LabelText::new("Δ", "")
             .with_tail(format!(" = (Pₘ − P′ₘ)/Pₘ·100 % = {} %", fmt::scientific(f.difference_percent(), lang))),
     ];
@@ -525,7 +537,7 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
     let load: &Load = &inp.fa.model.loads[i];
     let value = inp.fa.forces.loads[i];
     let n = inp.m.links[load.link].number;
-    cell_title(g, placer, r, &inp.labels.get("load_title").replace("{n}", &n.to_string()));
+    cell_title(g, placer, r, &inp.l.load_title(&n.to_string()));
     let plot = Rect::new(r.x0 + 14.0, r.y0 + 20.0, r.x1 - 12.0, r.y1 - 20.0);
     let signed = |b: usize, y: f64| y * load.branches[b].scale;
     let (lo, hi) = load
@@ -545,7 +557,12 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
         let pts: Vec<Point> = br.curve.points.iter().map(|&(s, y)| Point::new(px(s), py(signed(b, y)))).collect();
         g.path(pts.clone(), false, if b == 0 { MAIN } else { DASHED });
         let mid = pts[pts.len() / 2];
-        let t = placer.place(mid, Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), &br.name, 2.5);
+        let name = match br.name {
+            Stroke::Working => inp.l.stroke_working(),
+            Stroke::Idle => inp.l.stroke_idle(),
+            Stroke::Symbol(s) => s,
+        };
+        let t = placer.place(mid, Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name, 2.5);
         g.text(t);
     }
     let along = value.force.dot(load.axis);
@@ -556,16 +573,21 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
     let ax = Text::new(Point::new(plot.x1 + 4.0, py(0.0) + 5.0), "S/H", 2.5, Anchor::Middle);
     placer.block(ax.bbox());
     g.text(ax);
-    let ay = Text::new(Point::new(plot.x0 - 2.0, plot.y0 - 3.0), "P, N", 2.5, Anchor::End);
+    let ay = Text::new(Point::new(plot.x0 - 2.0, plot.y0 - 3.0), format!("P, {}", inp.c.unit_n()), 2.5, Anchor::End);
     placer.block(ay.bbox());
     g.text(ay);
     let lines = [
         LabelText::new("φ", "1").with_tail(format!(
-            ": S/H = {}, P = {} N",
+            ": S/H = {}, P = {} {}",
             fmt::value(value.s, inp.lang),
-            fmt::value(along.abs(), inp.lang)
+            fmt::value(along.abs(), inp.lang),
+            inp.c.unit_n()
         )),
-        LabelText::new("μ", "P").with_tail(format!(" = {} N/mm", fmt::localise(&scale::format(mu), inp.lang))),
+        LabelText::new("μ", "P").with_tail(format!(
+            " = {} {}",
+            fmt::localise(&scale::format(mu), inp.lang),
+            inp.c.unit_n_per_mm()
+        )),
     ];
     for (k, line) in lines.iter().enumerate() {
         placer.block(line.draw(g, Point::new(r.x0 + 2.0, r.y1 - 2.0 - LINE * (1 - k) as f64), 3.5, Anchor::Start));

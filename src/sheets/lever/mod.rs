@@ -4,17 +4,19 @@
 
 pub mod compose;
 pub mod forces_view;
+pub mod labels;
 mod mechanism_view;
 mod plans_view;
 pub mod results;
 
 use super::{COURSE, Context, Sheet, SheetError, SheetKind, SheetOutput};
-use crate::drawing::labels::Labels;
+use crate::drawing::labels::Language;
 use crate::lever::analysis::{self, AnalysisError, ForceAnalysis, Kinematics};
 use crate::project::{LeverProject, Project};
 use crate::report::NoteTable;
 use crate::report::lever::{ForceTables, KinematicTables, force_tables, kinematic_tables};
 use compose::Composed;
+use labels::LeverLabels;
 
 /// This sheet's place in the course.
 pub const KIND: SheetKind = COURSE[0];
@@ -66,24 +68,21 @@ pub fn build(ctx: &Context, p: &LeverProject) -> Result<LeverBuild, AnalysisErro
 
 impl LeverBuild {
     /// The note's tables with their titles in the sheet's language.
-    pub fn note_tables(&self, l: &Labels) -> Vec<NoteTable> {
+    pub fn note_tables(&self, lang: Language) -> Vec<NoteTable> {
+        let l = LeverLabels::get(lang);
         let mut out = vec![
-            NoteTable {
-                stem: "velocities",
-                title: l.get("velocity_table").into(),
-                table: self.tables.velocities.clone(),
-            },
+            NoteTable { stem: "velocities", title: l.velocity_table().into(), table: self.tables.velocities.clone() },
             NoteTable {
                 stem: "accelerations",
-                title: l.get("acceleration_table").into(),
+                title: l.acceleration_table().into(),
                 table: self.tables.accelerations.clone(),
             },
         ];
         if let Some((_, t)) = &self.forces {
             out.extend([
-                NoteTable { stem: "inertia", title: l.get("inertia_table").into(), table: t.inertia.clone() },
-                NoteTable { stem: "reactions", title: l.get("reaction_table").into(), table: t.reactions.clone() },
-                NoteTable { stem: "balancing", title: l.get("balance_table").into(), table: t.balance.clone() },
+                NoteTable { stem: "inertia", title: l.inertia_table().into(), table: t.inertia.clone() },
+                NoteTable { stem: "reactions", title: l.reaction_table().into(), table: t.reactions.clone() },
+                NoteTable { stem: "balancing", title: l.balance_table().into(), table: t.balance.clone() },
             ]);
         }
         out
@@ -102,10 +101,9 @@ impl Sheet for LeverSheet<'_> {
 
     fn build(&self, ctx: &Context) -> Result<SheetOutput, SheetError> {
         let b = build(ctx, self.project)?;
-        let l = Labels::new(ctx.info.language);
         Ok(SheetOutput {
             number: self.kind().number,
-            tables: b.note_tables(&l),
+            tables: b.note_tables(ctx.info.language),
             results: b.results(self.project),
             scene: b.composed.scene,
             diagnostics: Vec::new(),
