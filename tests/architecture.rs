@@ -17,7 +17,7 @@ const ALLOWED: [(&str, &[&str]); 11] = [
     ("report", &["num", "lever"]),
     ("project", &["num", "font", "lever", "drawing::labels::Language"]),
     ("sheets", &["num", "font", "lever", "drawing", "report", "project"]),
-    ("backend", &["num", "font", "drawing::scene"]),
+    ("backend", &["num", "font", "drawing::scene", "drawing::path"]),
     ("pipeline", &["num", "project", "sheets", "backend", "report"]),
     ("cli", &["pipeline", "project", "drawing::labels::Language"]),
     ("lib", &["*"]),

@@ -211,3 +211,51 @@ fn rocker_extremes_do_not_depend_on_where_angles_wrap() {
         }
     }
 }
+
+/// The drawn trajectories: every exact point of the path, densely sampled, lies within the
+/// fit's tolerance of the cubic pieces, and the pieces join into one closed curve.
+#[test]
+fn fitted_trajectories_follow_the_exact_paths() {
+    use tmm_sheets::lever::analysis::{self, TRAJECTORY_FIT};
+    use tmm_sheets::lever::motion::sample_at;
+    use tmm_sheets::lever::trajectory::distance_to;
+    for name in fixture_names() {
+        let p = lever(&name);
+        let m = &p.mechanism;
+        let k = analysis::kinematics(m, &p.settings).unwrap();
+        let extent = {
+            let pts: Vec<Vec2> = k.trajectories.iter().flat_map(|t| t.samples.iter().copied()).collect();
+            let (lo, hi) = pts.iter().fold((Vec2::splat(f64::MAX), Vec2::splat(f64::MIN)), |(lo, hi), p| {
+                (Vec2::new(lo.x.min(p.x), lo.y.min(p.y)), Vec2::new(hi.x.max(p.x), hi.y.max(p.y)))
+            });
+            (hi - lo).hypot()
+        };
+        let crank = m.crank().length;
+        for t in &k.trajectories {
+            let c = &t.fitted.cubics;
+            assert!(c.len() >= 16, "{name}: {} pieces", c.len());
+            for w in c.windows(2) {
+                assert_eq!(w[0].p3, w[1].p0, "{name}: the pieces join");
+            }
+            assert!((c[0].p0 - c[c.len() - 1].p3).hypot() < 1e-15, "{name}: the path closes");
+            // Relative to the extent of everything that moves: at least the centres' extent
+            // and the crank's diameter, at most a few times that.
+            let tol = t.fitted.tolerance;
+            assert!(
+                tol >= TRAJECTORY_FIT * extent.max(2.0 * crank) * 0.999
+                    && tol <= TRAJECTORY_FIT * 10.0 * extent.max(2.0 * crank),
+                "{name}: tolerance {tol:e}"
+            );
+            for j in 0..1440 {
+                let phi = TAU * (j as f64 + 0.37) / 1440.0;
+                let exact = sample_at(m, &k.motion, phi).unwrap().points[t.point].p;
+                let d = distance_to(c, exact.to_point());
+                assert!(
+                    d <= tol,
+                    "{name}: {} is {d:e} m from its drawn path at φ = {phi} (tolerance {tol:e})",
+                    m.name(t.point)
+                );
+            }
+        }
+    }
+}

@@ -50,6 +50,10 @@ fn svg_parses_back_with_every_path_and_text_and_no_nan() {
     for name in fixture_names() {
         let r = build(&fixture(&name));
         assert!(!r.svg.contains("NaN") && !r.svg.contains("inf"), "{name}: non-finite number in the SVG");
+        // Curves are curves: ω/ε arcs as `A`, trajectories as `C`, within 0.01 mm of exact.
+        assert!(r.svg.contains(" 0 0 1 ") || r.svg.contains(" 0 0 0 "), "{name}: no arc command");
+        let fit = r.output.results["trajectory_fit_error_mm"].as_f64().unwrap();
+        assert!(fit <= 0.01, "{name}: trajectories {fit} mm from the exact paths");
         let tree = raster::parse(&r.svg).unwrap();
         let (mut paths, mut texts) = (0, 0);
         count_usvg(tree.root(), &mut paths, &mut texts);

@@ -1,19 +1,24 @@
-//! A small deterministic SVG writer: fixed decimals, `-0` written as `0`, XML escaping,
-//! elements in scene order with the groups' stable ids. No timestamps, no randomness.
+//! A small deterministic SVG writer: fixed decimals, `-0` written as `0`, complete XML
+//! escaping, elements in scene order with the groups' stable ids. No timestamps, no
+//! randomness. A non-finite number anywhere in the scene is refused, naming its group,
+//! rather than written as something else.
 
 use super::BackendError;
+use crate::drawing::path::{Path, Seg};
 use crate::drawing::scene::{Anchor, Item, LineType, Pen, Scene, Text};
 use crate::font;
-use kurbo::Point;
+use std::f64::consts::PI;
 use std::fmt::Write;
 
 /// Digits after the decimal point for paper millimetres (1 µm).
 const DECIMALS: usize = 3;
 
-/// Formats a number with at most `DECIMALS` (3) decimals, no trailing zeros, no `-0`.
-pub fn num(x: f64) -> String {
-    debug_assert!(x.is_finite(), "non-finite coordinate in the scene");
-    let x = if x.is_finite() { x } else { 0.0 };
+/// Formats a number with at most three decimals (1 µm), no trailing zeros, no `-0`;
+/// refuses NaN and infinities.
+pub fn num(x: f64) -> Result<String, BackendError> {
+    if !x.is_finite() {
+        return Err(BackendError::NonFinite { group: String::new(), value: x, item: "a number".into() });
+    }
     let mut s = format!("{x:.DECIMALS$}");
     if s.contains('.') {
         while s.ends_with('0') {
@@ -26,9 +31,11 @@ pub fn num(x: f64) -> String {
     if s == "-0" {
         s = "0".into();
     }
-    s
+    Ok(s)
 }
 
+/// Escapes the five XML special characters. Characters XML cannot hold at all (control
+/// characters) are refused where the user writes them (`project::text`) and never reach here.
 pub fn escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
@@ -37,44 +44,60 @@ pub fn escape(s: &str) -> String {
             '<' => out.push_str("&lt;"),
             '>' => out.push_str("&gt;"),
             '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
             _ => out.push(c),
         }
     }
     out
 }
 
-fn stroke_attrs(pen: &Pen) -> String {
+fn stroke_attrs(pen: &Pen) -> Result<String, BackendError> {
     let dash = match pen.line {
-        LineType::Solid => String::new(),
-        LineType::Dashed => " stroke-dasharray=\"4 1.5\"".into(),
-        LineType::DashDot => " stroke-dasharray=\"10 1.5 0.5 1.5\"".into(),
+        LineType::Solid => "",
+        LineType::Dashed => " stroke-dasharray=\"4 1.5\"",
+        LineType::DashDot => " stroke-dasharray=\"10 1.5 0.5 1.5\"",
     };
-    format!("stroke=\"#000\" stroke-width=\"{}\"{dash}", num(pen.width))
+    Ok(format!("stroke=\"#000\" stroke-width=\"{}\"{dash}", num(pen.width)?))
 }
 
-fn points_d(pts: &[Point], closed: bool) -> String {
-    let mut d = String::new();
-    for (i, p) in pts.iter().enumerate() {
-        let _ = write!(d, "{}{} {}", if i == 0 { "M" } else { "L" }, num(p.x), num(p.y));
+/// Path data: `M`, `L`, `C` and `A` commands, `Z` when closed.
+fn path_d(p: &Path) -> Result<String, BackendError> {
+    let mut d = format!("M{} {}", num(p.start.x)?, num(p.start.y)?);
+    for s in &p.segs {
+        match s {
+            Seg::Line(q) => write!(d, "L{} {}", num(q.x)?, num(q.y)?),
+            Seg::Cubic(a, b, c) => {
+                write!(d, "C{} {} {} {} {} {}", num(a.x)?, num(a.y)?, num(b.x)?, num(b.y)?, num(c.x)?, num(c.y)?)
+            }
+            Seg::Arc(a) => {
+                let end = a.center + kurbo::Vec2::from_angle(a.start_angle + a.sweep_angle) * a.radii.x;
+                let large = u8::from(a.sweep_angle.abs() > PI);
+                // Paper y points down, so a growing angle is SVG's positive (clockwise) sweep.
+                let sweep = u8::from(a.sweep_angle > 0.0);
+                let r = num(a.radii.x)?;
+                write!(d, "A{r} {r} 0 {large} {sweep} {} {}", num(end.x)?, num(end.y)?)
+            }
+        }
+        .expect("writing to a String");
     }
-    if closed {
+    if p.closed {
         d.push('Z');
     }
-    d
+    Ok(d)
 }
 
-fn text_element(t: &Text) -> String {
+fn text_element(t: &Text) -> Result<String, BackendError> {
     let anchor = match t.anchor {
         Anchor::Start => "",
         Anchor::Middle => " text-anchor=\"middle\"",
         Anchor::End => " text-anchor=\"end\"",
     };
-    let (x, y) = (num(t.at.x), num(t.at.y));
+    let (x, y) = (num(t.at.x)?, num(t.at.y)?);
     let mut transform = String::new();
     if t.rotate != 0.0 || t.sloped {
         transform.push_str(&format!(" transform=\"translate({x} {y})"));
         if t.rotate != 0.0 {
-            transform.push_str(&format!(" rotate({})", num(-t.rotate)));
+            transform.push_str(&format!(" rotate({})", num(-t.rotate)?));
         }
         if t.sloped {
             transform.push_str(" skewX(-15)");
@@ -82,80 +105,104 @@ fn text_element(t: &Text) -> String {
         transform.push('"');
     }
     let (x, y) = if transform.is_empty() { (x, y) } else { ("0".into(), "0".into()) };
-    format!(
-        "<text x=\"{x}\" y=\"{y}\" font-size=\"{}\"{anchor}{transform}>{}</text>",
-        num(font::size_for_cap(t.h)),
+    Ok(format!(
+        "<text fill=\"#000\" x=\"{x}\" y=\"{y}\" font-size=\"{}\"{anchor}{transform}>{}</text>",
+        num(font::size_for_cap(t.h))?,
         escape(&t.text)
-    )
+    ))
+}
+
+fn item_element(item: &Item) -> Result<String, BackendError> {
+    Ok(match item {
+        Item::Path { path, pen } => format!("<path d=\"{}\" {}/>", path_d(path)?, stroke_attrs(pen)?),
+        Item::Circle { c, r, pen, filled } => {
+            let paint = if *filled { "fill=\"#000\"".to_string() } else { stroke_attrs(pen)? };
+            format!("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" {paint}/>", num(c.x)?, num(c.y)?, num(*r)?)
+        }
+        Item::Fill { path } => format!("<path d=\"{}\" fill=\"#000\"/>", path_d(path)?),
+        Item::Text(t) => text_element(t)?,
+    })
 }
 
 /// Serialises a scene as an SVG document sized in millimetres.
 pub fn write(scene: &Scene) -> Result<String, BackendError> {
-    for g in &scene.groups {
-        for item in &g.items {
-            let bb = item.bbox();
-            for value in [bb.x0, bb.y0, bb.x1, bb.y1] {
-                if !value.is_finite() {
-                    return Err(BackendError::NonFinite { group: g.id.clone(), value, item: format!("{item:?}") });
-                }
-            }
-        }
-    }
     let mut s = String::with_capacity(1 << 20);
-    let (w, h) = (num(scene.width), num(scene.height));
-    let _ = writeln!(
-        s,
+    let (w, h) = (num(scene.width)?, num(scene.height)?);
+    let mut line = |text: String| {
+        s.push_str(&text);
+        s.push('\n');
+    };
+    line(format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\">"
-    );
-    let _ = writeln!(s, "<title>{}</title>", escape(&scene.title));
-    let _ = writeln!(s, "<rect width=\"{w}\" height=\"{h}\" fill=\"#fff\"/>");
-    let _ = writeln!(
-        s,
+    ));
+    line(format!("<title>{}</title>", escape(&scene.title)));
+    line(format!("<rect width=\"{w}\" height=\"{h}\" fill=\"#fff\"/>"));
+    line(format!(
         "<g fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\" font-family=\"{}\" font-stretch=\"{}\">",
         font::FAMILY,
         font::STRETCH
-    );
+    ));
     for g in &scene.groups {
-        let _ = writeln!(s, "<g id=\"{}\">", escape(&g.id));
+        line(format!("<g id=\"{}\">", escape(&g.id)));
         for item in &g.items {
-            write_item(&mut s, item);
+            let element = item_element(item).map_err(|e| match e {
+                BackendError::NonFinite { value, .. } => {
+                    BackendError::NonFinite { group: g.id.clone(), value, item: format!("{item:?}") }
+                }
+                other => other,
+            })?;
+            line(element);
         }
-        s.push_str("</g>\n");
+        line("</g>".into());
     }
-    s.push_str("</g>\n</svg>\n");
+    line("</g>\n</svg>".into());
     Ok(s)
-}
-
-fn write_item(s: &mut String, item: &Item) {
-    let _ = match item {
-        Item::Path { pts, closed, pen } => {
-            writeln!(s, "<path d=\"{}\" {}/>", points_d(pts, *closed), stroke_attrs(pen))
-        }
-        Item::Circle { c, r, pen, filled } => {
-            let paint = if *filled { "fill=\"#000\"".to_string() } else { stroke_attrs(pen) };
-            writeln!(s, "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" {paint}/>", num(c.x), num(c.y), num(*r))
-        }
-        Item::Fill { pts } => writeln!(s, "<path d=\"{}\" fill=\"#000\"/>", points_d(pts, true)),
-        Item::Text(t) => writeln!(s, "{}", text_element(t).replacen("<text ", "<text fill=\"#000\" ", 1)),
-    };
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::drawing::scene::{Group, THIN};
+    use kurbo::{Point, Rect};
 
     #[test]
     fn numbers_are_short_fixed_and_never_negative_zero() {
-        assert_eq!(num(0.30000000000000004), "0.3");
-        assert_eq!(num(-0.0), "0");
-        assert_eq!(num(-0.0001), "0");
-        assert_eq!(num(12.0), "12");
-        assert_eq!(num(8.4666666), "8.467");
-        assert_eq!(num(-3.1005), "-3.1"); // binary -3.1005 is just below the tie
+        assert_eq!(num(0.30000000000000004).unwrap(), "0.3");
+        assert_eq!(num(-0.0).unwrap(), "0");
+        assert_eq!(num(-0.0001).unwrap(), "0");
+        assert_eq!(num(12.0).unwrap(), "12");
+        assert_eq!(num(8.4666666).unwrap(), "8.467");
+        assert_eq!(num(-3.1005).unwrap(), "-3.1"); // binary -3.1005 is just below the tie
+        assert!(num(f64::NAN).is_err() && num(f64::INFINITY).is_err());
     }
 
     #[test]
     fn text_is_escaped() {
-        assert_eq!(escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+        assert_eq!(escape("a<b & \"c\">'"), "a&lt;b &amp; &quot;c&quot;&gt;&apos;");
+    }
+
+    fn scene(items: Vec<Item>) -> Scene {
+        let mut g = Group::new("g", Rect::new(0.0, 0.0, 10.0, 10.0));
+        g.items = items;
+        Scene { width: 10.0, height: 10.0, title: "t".into(), groups: vec![g] }
+    }
+
+    #[test]
+    fn arcs_and_cubics_are_written_as_svg_commands() {
+        let arc = Path::arc(Point::new(5.0, 5.0), 2.0, 0.0, -1.5 * PI);
+        let cubic = Path::cubics(&[kurbo::CubicBez::new((0.0, 0.0), (1.0, 2.0), (3.0, 2.0), (4.0, 0.0))]);
+        let svg =
+            write(&scene(vec![Item::Path { path: arc, pen: THIN }, Item::Path { path: cubic, pen: THIN }])).unwrap();
+        assert!(svg.contains("d=\"M7 5A2 2 0 1 0 5 7\""), "{svg}");
+        assert!(svg.contains("d=\"M0 0C1 2 3 2 4 0\""), "{svg}");
+    }
+
+    #[test]
+    fn a_non_finite_number_is_refused_with_its_group() {
+        let bad = Item::Circle { c: Point::new(f64::NAN, 1.0), r: 1.0, pen: THIN, filled: false };
+        match write(&scene(vec![bad])) {
+            Err(BackendError::NonFinite { group, .. }) => assert_eq!(group, "g"),
+            other => panic!("{other:?}"),
+        }
     }
 }

@@ -9,6 +9,7 @@
 pub mod fmt;
 pub mod frame;
 pub mod labels;
+pub mod path;
 pub mod place;
 pub mod scale;
 pub mod scene;

@@ -3,6 +3,7 @@
 //! **Architecture invariant:** every coordinate here is final paper geometry. Backends
 //! only serialise a scene; they never compute geometry or choose scales.
 
+pub use super::path::{Path, Seg};
 use kurbo::{Point, Rect, Vec2};
 
 /// GOST 2.303 line types.
@@ -103,10 +104,9 @@ fn rotated_bbox(r: Rect, about: Point, deg: f64) -> Rect {
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Item {
-    /// An open or closed polyline.
+    /// A stroked path of lines, cubic Béziers and arcs.
     Path {
-        pts: Vec<Point>,
-        closed: bool,
+        path: Path,
         pen: Pen,
     },
     Circle {
@@ -115,9 +115,9 @@ pub enum Item {
         pen: Pen,
         filled: bool,
     },
-    /// A filled polygon with no outline (arrowheads, dots).
+    /// A filled outline with no stroke (arrowheads).
     Fill {
-        pts: Vec<Point>,
+        path: Path,
     },
     Text(Text),
 }
@@ -125,8 +125,8 @@ pub enum Item {
 impl Item {
     pub fn bbox(&self) -> Rect {
         match self {
-            Item::Path { pts, pen, .. } => points_bbox(pts).inflate(pen.width / 2.0, pen.width / 2.0),
-            Item::Fill { pts } => points_bbox(pts),
+            Item::Path { path, pen } => path.bbox().inflate(pen.width / 2.0, pen.width / 2.0),
+            Item::Fill { path } => path.bbox(),
             Item::Circle { c, r, pen, .. } => Rect::from_center_size(*c, (2.0 * r + pen.width, 2.0 * r + pen.width)),
             Item::Text(t) => t.bbox(),
         }
@@ -153,13 +153,24 @@ impl Group {
     }
 
     pub fn line(&mut self, a: Point, b: Point, pen: Pen) {
-        self.items.push(Item::Path { pts: vec![a, b], closed: false, pen });
+        self.items.push(Item::Path { path: Path::polyline(&[a, b], false), pen });
     }
 
+    /// A polyline through `pts` (nothing for fewer than two points).
     pub fn path(&mut self, pts: Vec<Point>, closed: bool, pen: Pen) {
         if pts.len() >= 2 {
-            self.items.push(Item::Path { pts, closed, pen });
+            self.items.push(Item::Path { path: Path::polyline(&pts, closed), pen });
         }
+    }
+
+    /// A path of lines, curves and arcs.
+    pub fn curve(&mut self, path: Path, pen: Pen) {
+        self.items.push(Item::Path { path, pen });
+    }
+
+    /// A filled outline (an arrowhead).
+    pub fn fill(&mut self, pts: &[Point]) {
+        self.items.push(Item::Fill { path: Path::polyline(pts, true) });
     }
 
     pub fn circle(&mut self, c: Point, r: f64, pen: Pen) {

@@ -1,6 +1,7 @@
 //! Drafting symbols built from scene primitives: arrows, pivots, sliders, hatching.
 
-use super::scene::{Group, Item, Pen, THIN};
+use super::path::{Path, on_circle};
+use super::scene::{Group, Pen, THIN};
 use kurbo::{Point, Vec2};
 
 /// Arrowhead length and half width, mm (drafting practice for thin lines).
@@ -16,7 +17,7 @@ pub fn arrowhead(g: &mut Group, tip: Point, dir: Vec2) {
     let u = dir / len;
     let n = u.turn_90();
     let base = tip - u * ARROW_LEN;
-    g.items.push(Item::Fill { pts: vec![tip, base + n * ARROW_HALF, base - n * ARROW_HALF] });
+    g.fill(&[tip, base + n * ARROW_HALF, base - n * ARROW_HALF]);
 }
 
 /// A vector from `a` to `b` with an arrowhead at `b`. Vectors shorter than the arrowhead
@@ -31,7 +32,7 @@ pub fn vector(g: &mut Group, a: Point, b: Point, pen: Pen) {
         let u = d / len;
         let n = u.turn_90();
         let base = b - u * (len * 0.8);
-        g.items.push(Item::Fill { pts: vec![b, base + n * ARROW_HALF * 0.8, base - n * ARROW_HALF * 0.8] });
+        g.fill(&[b, base + n * ARROW_HALF * 0.8, base - n * ARROW_HALF * 0.8]);
         return;
     }
     g.line(a, b - d / len * (ARROW_LEN * 0.6), pen);
@@ -72,19 +73,16 @@ pub fn slider(g: &mut Group, c: Point, u: Vec2, len: f64, wid: f64, pen: Pen) {
     g.path(vec![c - hl - hw, c + hl - hw, c + hl + hw, c - hl + hw], true, pen);
 }
 
-/// An arc arrow of radius `r` around `c` showing a turning sense (ω or ε) on paper:
-/// `ccw` is counter-clockwise as seen on the sheet.
+/// An arc arrow of radius `r` around `c` showing a turning sense (ω, ε, an inertia moment):
+/// a true circular arc from `start_deg` through `sweep_deg` (paper angles), turning
+/// counter-clockwise on the sheet when `ccw`. The arrowhead follows the chord over its own
+/// length, so it sits on the arc rather than on its tangent.
 pub fn turn_arrow(g: &mut Group, c: Point, r: f64, start_deg: f64, sweep_deg: f64, ccw: bool, pen: Pen) {
-    let n = 24;
-    let sign = if ccw { -1.0 } else { 1.0 }; // paper y points down
-    let pts: Vec<Point> = (0..=n)
-        .map(|i| {
-            let a = (start_deg + sign * sweep_deg * i as f64 / n as f64).to_radians();
-            c + Vec2::new(a.cos(), a.sin()) * r
-        })
-        .collect();
-    let tip = pts[n];
-    let dir = pts[n] - pts[n - 1];
-    g.path(pts, false, pen);
-    arrowhead(g, tip, dir);
+    let sign = if ccw { -1.0 } else { 1.0 }; // paper y points down: ccw on the sheet is a falling angle
+    let (a0, sweep) = (start_deg.to_radians(), sign * sweep_deg.to_radians());
+    let arc = Path::arc(c, r, a0, sweep);
+    let tip = arc.end();
+    let back = on_circle(c, r, a0 + sweep - sign * (ARROW_LEN / r).min(sweep.abs()));
+    g.curve(arc, pen);
+    arrowhead(g, tip, tip - back);
 }

@@ -5,12 +5,27 @@ use super::kinetostatics::{self, ForceError, ForceModel, Forces};
 use super::linkage::{Mechanism, PointId, State};
 use super::motion::{self, Motion, MotionError, Start};
 use super::structure::{self, Structure};
+use super::trajectory;
 use kurbo::Vec2;
 use std::f64::consts::TAU;
 
-/// Samples per turn of the centre-of-mass trajectories: a chord deviates from the true
-/// curve by at most r·(1 − cos 0.5°) ≈ 4·10⁻⁵·r, far below a drawn line's width.
+/// Samples per turn of the centre-of-mass trajectories in `results.json` (1° steps).
 pub const TRAJECTORY_SAMPLES: usize = 360;
+
+/// How closely the drawn trajectories follow the exact paths, relative to the extent of the
+/// mechanism's motion: on a sheet, where that extent is at most ~450 mm, 10⁻⁵ of it is at
+/// most 0.0045 mm (the sheet states the measured value).
+pub const TRAJECTORY_FIT: f64 = 1e-5;
+
+/// A centre of mass's path over a turn.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trajectory {
+    pub point: PointId,
+    /// Closed: 361 points at 1° steps of φ from position 0.
+    pub samples: Vec<Vec2>,
+    /// Cubic pieces within [`TRAJECTORY_FIT`] of the exact path, for drawing.
+    pub fitted: trajectory::Fitted,
+}
 
 /// What to analyse: the crank's sense, position 0, the drawn positions and φ1.
 #[derive(Debug, Clone, PartialEq)]
@@ -47,7 +62,7 @@ pub struct Kinematics {
     pub assigned: Position,
     /// Indices into `positions` of the acceleration plans.
     pub acceleration: Vec<usize>,
-    pub trajectories: Vec<(PointId, Vec<Vec2>)>,
+    pub trajectories: Vec<Trajectory>,
     pub structure: Structure,
 }
 
@@ -120,19 +135,26 @@ pub fn kinematics(m: &Mechanism, s: &Settings) -> Result<Kinematics, AnalysisErr
     Ok(Kinematics { motion, positions, assigned, acceleration, trajectories, structure: structure::analyse(m) })
 }
 
-fn trajectories(m: &Mechanism, motion: &Motion) -> Result<Vec<(PointId, Vec<Vec2>)>, AnalysisError> {
+fn trajectories(m: &Mechanism, motion: &Motion) -> Result<Vec<Trajectory>, AnalysisError> {
     let states = motion::sample(m, motion, TRAJECTORY_SAMPLES)?;
     for (k, st) in states.iter().enumerate() {
         check_finite(m, st, TAU * k as f64 / TRAJECTORY_SAMPLES as f64)?;
     }
-    Ok(m.mass_centres
+    // The extent of everything that moves, to make the fit's tolerance relative.
+    let all = states.iter().flat_map(|s| s.points.iter().map(|k| k.p));
+    let (lo, hi) = all.fold((Vec2::splat(f64::MAX), Vec2::splat(f64::MIN)), |(lo, hi), p| {
+        (Vec2::new(lo.x.min(p.x), lo.y.min(p.y)), Vec2::new(hi.x.max(p.x), hi.y.max(p.y)))
+    });
+    let tol = TRAJECTORY_FIT * (hi - lo).hypot();
+    m.mass_centres
         .iter()
-        .map(|&(_, p)| {
-            let mut path: Vec<Vec2> = states.iter().map(|s| s.points[p].p).collect();
-            path.push(path[0]);
-            (p, path)
+        .map(|&(_, point)| {
+            let mut samples: Vec<Vec2> = states.iter().map(|s| s.points[point].p).collect();
+            samples.push(samples[0]);
+            let fitted = trajectory::fit(m, motion, point, tol)?;
+            Ok(Trajectory { point, samples, fitted })
         })
-        .collect())
+        .collect()
 }
 
 /// The force analysis at the assigned position φ1.

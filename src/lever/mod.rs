@@ -16,6 +16,7 @@ pub mod load;
 pub mod motion;
 pub mod plans;
 pub mod structure;
+pub mod trajectory;
 
 pub use analysis::Settings;
 pub use kin::{Kin, LinkKin};

@@ -40,6 +40,8 @@ pub struct Composed {
     pub scene: Scene,
     pub scales: Scales,
     pub force_scales: Option<ForceScales>,
+    /// The largest distance of a drawn trajectory from the exact path, paper mm.
+    pub trajectory_error_mm: f64,
 }
 
 /// Inputs of sheet 1 beyond the kinematics.
@@ -256,6 +258,7 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
         scene: Scene { width: A1_W, height: A1_H, title, groups },
         scales: Scales { mu_l, mu_v, mu_a },
         force_scales,
+        trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
     }
 }
 

@@ -2,13 +2,14 @@
 //! position, the assigned position thick with its letters and the senses of ω and ε,
 //! the centres of mass and their trajectories, frame pivots and guides.
 
+use crate::drawing::path::Path;
 use crate::drawing::place::Placer;
 use crate::drawing::scene::{AXIS, Group, MAIN, Pen, THIN};
 use crate::drawing::symbols::{frame_pivot, hatch, slider, turn_arrow};
 use crate::drawing::text::LabelText;
 use crate::lever::analysis::{Kinematics, Position};
 use crate::lever::linkage::{LinkKind, Mechanism, PointId, Step};
-use kurbo::{Point, Rect, Vec2};
+use kurbo::{CubicBez, Point, Rect, Vec2};
 
 /// Paper sizes of the symbols, mm.
 const SLIDER: (f64, f64) = (10.0, 5.0);
@@ -56,8 +57,8 @@ pub fn world_extent(m: &Mechanism, k: &Kinematics, kulisa: &[(usize, Option<f64>
             }
         }
     }
-    for (_, path) in &k.trajectories {
-        pts.extend(path.iter().copied());
+    for t in &k.trajectories {
+        pts.extend(t.samples.iter().copied());
     }
     let crank = m.crank();
     let c = m.frame.iter().find(|f| f.0 == crank.pivot).map(|f| f.1).unwrap_or_default();
@@ -77,11 +78,17 @@ pub struct MechanismView<'a> {
 impl MechanismView<'_> {
     pub fn draw(&self, g: &mut Group, placer: &mut Placer) {
         self.crank_circle(g);
-        for (_, path) in &self.k.trajectories {
-            let pts: Vec<Point> = path.iter().map(|&v| self.view.p(v)).collect();
-            let bb = crate::drawing::scene::points_bbox(&pts);
+        for t in &self.k.trajectories {
+            // World to paper is affine, so the pieces map exactly through their control points.
+            let map = |c: &CubicBez| {
+                let [p0, p1, p2, p3] = [c.p0, c.p1, c.p2, c.p3].map(|q| self.view.p(q.to_vec2()));
+                CubicBez::new(p0, p1, p2, p3)
+            };
+            let path = Path::cubics(&t.fitted.cubics.iter().map(map).collect::<Vec<_>>());
+            let bb = path.bbox();
+            // A path that is a point or a line (a slider's centre) is not drawn: its guide shows it.
             if bb.width().max(bb.height()) > 1.0 && bb.width().min(bb.height()) > 0.3 {
-                g.path(pts, false, AXIS);
+                g.curve(path, AXIS);
             }
         }
         self.guides(g);

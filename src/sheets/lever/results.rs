@@ -48,6 +48,8 @@ struct Sheet1Out<'a> {
     assigned: PositionOut,
     acceleration_plan_positions: Vec<String>,
     trajectories: BTreeMap<String, Vec<[f64; 2]>>,
+    /// How far the drawn trajectories (cubic pieces) stray from the exact paths, paper mm.
+    trajectory_fit_error_mm: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     forces: Option<ForcesOut>,
 }
@@ -178,8 +180,9 @@ pub fn section(
         trajectories: k
             .trajectories
             .iter()
-            .map(|(id, path)| (m.name(*id).to_string(), path.iter().map(|&v| v2(v)).collect()))
+            .map(|t| (m.name(t.point).to_string(), t.samples.iter().map(|&v| v2(v)).collect()))
             .collect(),
+        trajectory_fit_error_mm: composed.trajectory_error_mm,
         forces: forces.zip(composed.force_scales.as_ref()).map(|(fa, sc)| forces_out(m, k, fa, sc)),
     };
     serde_json::to_value(out).expect("results serialise")

@@ -1,0 +1,126 @@
+//! Paths of the scene: lines, cubic Béziers and circular arcs in paper millimetres, in
+//! kurbo's vocabulary (`Point`, `CubicBez`, `Arc`). A backend writes them as SVG `L`, `C` and
+//! `A` commands; layout code measures them through [`Path::to_bez`].
+//!
+//! Every approximation of a curve by these pieces states its accuracy in paper mm where it
+//! is made (a trajectory's fit, an arc never: arcs are exact).
+
+use kurbo::{Arc, BezPath, CubicBez, Point, Rect, Shape, Vec2};
+
+/// How far the Bézier form of an arc may stray from the arc for measuring (mm).
+pub const ARC_MEASURE_ACCURACY: f64 = 1e-4;
+
+/// One piece of a path, starting where the previous one ends.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Seg {
+    Line(Point),
+    Cubic(Point, Point, Point),
+    /// A circular arc (equal radii, no rotation); it starts at the previous end.
+    Arc(Arc),
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Path {
+    pub start: Point,
+    pub segs: Vec<Seg>,
+    pub closed: bool,
+}
+
+/// A point on a circle of `center` and radius `r` at `angle` (paper angles: y down, so a
+/// growing angle turns clockwise on the sheet).
+pub fn on_circle(center: Point, r: f64, angle: f64) -> Point {
+    center + Vec2::from_angle(angle) * r
+}
+
+impl Path {
+    pub fn new(start: Point) -> Path {
+        Path { start, segs: Vec::new(), closed: false }
+    }
+
+    /// Straight lines through `pts` (at least one point).
+    pub fn polyline(pts: &[Point], closed: bool) -> Path {
+        let mut p = Path::new(pts[0]);
+        p.segs.extend(pts[1..].iter().map(|&q| Seg::Line(q)));
+        p.closed = closed;
+        p
+    }
+
+    /// Cubic pieces joined end to end; the first starts at `pieces[0].p0`.
+    pub fn cubics(pieces: &[CubicBez]) -> Path {
+        let mut p = Path::new(pieces[0].p0);
+        p.segs.extend(pieces.iter().map(|c| Seg::Cubic(c.p1, c.p2, c.p3)));
+        p
+    }
+
+    /// An arc of a circle from `start_angle` through `sweep` (radians, paper angles).
+    pub fn arc(center: Point, r: f64, start_angle: f64, sweep: f64) -> Path {
+        let mut p = Path::new(on_circle(center, r, start_angle));
+        p.segs.push(Seg::Arc(Arc::new(center, (r, r), start_angle, sweep, 0.0)));
+        p
+    }
+
+    pub fn line_to(mut self, p: Point) -> Path {
+        self.segs.push(Seg::Line(p));
+        self
+    }
+
+    pub fn end(&self) -> Point {
+        match self.segs.last() {
+            None => self.start,
+            Some(Seg::Line(p)) | Some(Seg::Cubic(_, _, p)) => *p,
+            Some(Seg::Arc(a)) => on_circle(a.center, a.radii.x, a.start_angle + a.sweep_angle),
+        }
+    }
+
+    /// Every coordinate and radius, for checks of finiteness.
+    pub fn numbers(&self) -> impl Iterator<Item = f64> + '_ {
+        let pts = std::iter::once(self.start).chain(self.segs.iter().flat_map(|s| match s {
+            Seg::Line(p) => vec![*p],
+            Seg::Cubic(a, b, c) => vec![*a, *b, *c],
+            Seg::Arc(a) => vec![a.center, Point::new(a.radii.x, a.sweep_angle)],
+        }));
+        pts.flat_map(|p| [p.x, p.y])
+    }
+
+    /// The path as kurbo Béziers (arcs within [`ARC_MEASURE_ACCURACY`]), for measuring.
+    pub fn to_bez(&self) -> BezPath {
+        let mut b = BezPath::new();
+        b.move_to(self.start);
+        for s in &self.segs {
+            match s {
+                Seg::Line(p) => b.line_to(*p),
+                Seg::Cubic(p1, p2, p3) => b.curve_to(*p1, *p2, *p3),
+                Seg::Arc(a) => a.append_iter(ARC_MEASURE_ACCURACY).for_each(|el| b.push(el)),
+            }
+        }
+        if self.closed {
+            b.close_path();
+        }
+        b
+    }
+
+    pub fn bbox(&self) -> Rect {
+        self.to_bez().bounding_box()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_arc_ends_where_its_sweep_takes_it_and_is_bounded_by_its_circle() {
+        let p = Path::arc(Point::new(10.0, 10.0), 5.0, 0.0, std::f64::consts::FRAC_PI_2);
+        assert!((p.end() - Point::new(10.0, 15.0)).hypot() < 1e-12);
+        let bb = p.bbox();
+        assert!((bb.x1 - 15.0).abs() < 1e-3 && (bb.y1 - 15.0).abs() < 1e-3 && (bb.x0 - 10.0).abs() < 1e-3, "{bb:?}");
+    }
+
+    #[test]
+    fn polyline_and_cubic_boxes_are_exact() {
+        let p = Path::polyline(&[Point::new(0.0, 0.0), Point::new(3.0, -1.0), Point::new(1.0, 4.0)], true);
+        assert_eq!(p.bbox(), Rect::new(0.0, -1.0, 3.0, 4.0));
+        let c = Path::cubics(&[CubicBez::new((0.0, 0.0), (0.0, 4.0), (4.0, 4.0), (4.0, 0.0))]);
+        assert!((c.bbox().y1 - 3.0).abs() < 1e-12, "a cubic's box is its extremum, not its control polygon");
+    }
+}
