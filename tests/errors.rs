@@ -91,7 +91,8 @@ fn mechanism_that_cannot_be_assembled_names_group_angles_and_lengths() {
     let e = error_of("lengths: [0.46, 0.39]", "lengths: [0.16, 0.19]");
     assert!(e.contains("Assur group 1 (RRR, links 2 and 3"), "{e}");
     assert!(e.contains(&format!("line {}", line_of("lengths: [0.46, 0.39]"))), "{e}");
-    assert!(e.contains("cannot be assembled for crank angles"), "{e}");
+    assert!(e.contains("cannot be assembled for absolute crank angles θ from "), "{e}");
+    assert!(e.contains("as the crank turns clockwise"), "{e}");
     assert!(e.contains("the links reach only 0.0300…0.3500 m"), "{e}");
 }
 
@@ -256,4 +257,107 @@ fn gas_and_resistance_loads_are_checked() {
     assert!(e.contains("unknown variant `compressor-stage-3`") && e.contains("compressor-stage-1"), "{e}");
     let e = error_of("idle_force: 1650", "idel_force: 1650");
     assert!(e.contains("unknown field `idel_force`") && e.contains(&format!("line {}", line_of("idle_force"))), "{e}");
+}
+
+/// A four-bar whose coupler and rocker together fall short of the farthest crank-pin
+/// distance by δ = 5·10⁻⁸ m: it locks up over ≈ 0.18° of crank angle, centred between two
+/// of the assembly scan's 0.5° samples. The refinement must find it.
+#[test]
+fn a_lock_up_window_narrower_than_the_scan_step_is_found() {
+    let (r, g, delta) = (0.05_f64, 0.20_f64, 5e-8_f64);
+    let centre = 180.25_f64; // the crank pin is farthest from O1 at θ = 180.25°, between samples
+    let dir = (centre - 180.0).to_radians();
+    let l_ab = 0.15;
+    let l_bc = r + g - delta - l_ab;
+    // The half-width ψ of the window from d² = r² + g² + 2rg·cos ψ = (r + g − δ)², ψ from θ = 180.25°.
+    let half = (((r + g - delta).powi(2) - r * r - g * g) / (2.0 * r * g)).acos().to_degrees();
+    assert!(half < 0.25, "the window ({half}° each side) fits between samples");
+    let text = format!(
+        "project: {{title: t}}
+mechanism:
+  frame: [{{name: O, at: [0, 0]}}, {{name: O1, at: [{:.17}, {:.17}]}}]
+  crank: {{pivot: O, pin: A, length: {r}, rpm: 60, sense: ccw}}
+  groups:
+    - rrr: {{links: [2, 3], joints: [A, O1], point: B, lengths: [{l_ab}, {l_bc:.17}], branch: left}}
+",
+        g * dir.cos(),
+        g * dir.sin()
+    );
+    let e = refusal(&text);
+    assert!(
+        e.contains("Assur group 1 (RRR") && e.contains("cannot be assembled for absolute crank angles θ from"),
+        "{e}"
+    );
+    let nums: Vec<f64> = e
+        .split("θ from ")
+        .nth(1)
+        .unwrap()
+        .split(" as the crank")
+        .next()
+        .unwrap()
+        .split(" to ")
+        .map(|x| x.trim_end_matches('°').parse().unwrap())
+        .collect();
+    assert!(
+        (nums[0] - (centre - half)).abs() < 0.01 && (nums[1] - (centre + half)).abs() < 0.01,
+        "{e} (expected {:.2}…{:.2})",
+        centre - half,
+        centre + half
+    );
+}
+
+/// A load on a slider that never moves (its rod's crank pin is on the crank's axis): its
+/// place in the stroke is undefined, and the refusal names the load's line.
+#[test]
+fn a_load_on_a_slider_without_stroke_is_refused_with_its_line() {
+    let text = fixture_text("two-cylinder-compressor");
+    let text = text.replace(
+        "{name: D, link: 1, from: O, toward: A, distance: 0.06, angle_deg: 180}",
+        "{name: D, link: 1, from: O, toward: A, distance: 0, angle_deg: 180}",
+    );
+    let line = text.lines().position(|l| l.contains("gas: {point: E")).unwrap() + 1;
+    let e = refusal(&text);
+    assert!(e.contains("slider E") && e.contains(&format!("line {line}")) && e.contains("does not move"), "{e}");
+}
+
+#[test]
+fn numbers_too_large_to_compute_with_are_refused_where_written() {
+    let e = error_of("{link: 5, mass: 500}", "{link: 5, mass: 1.0e300}");
+    assert!(e.contains("too large") && e.contains(&format!("line {}", line_of("{link: 5, mass: 500}"))), "{e}");
+    let e = error_of("inertia: 0.5}", "inertia: 1.0e300}");
+    assert!(e.contains("moment of inertia from 0 to 1e9"), "{e}");
+}
+
+/// Valid but almost surely wrong input builds with a warning that names the field and line.
+#[test]
+fn implausible_input_is_warned_about() {
+    let p =
+        pipeline::load(&example().replacen("length: 0.12,", "length: 120,", 1).replacen("rpm: 70,", "rpm: 2.0e5,", 1));
+    let w: Vec<String> = p.unwrap().warnings.iter().map(|w| w.to_string()).collect();
+    assert!(
+        w.iter().any(|w| w.contains("mechanism.crank.length")
+            && w.contains("millimetres")
+            && w.contains(&format!("line {}", line_of("rpm: 70")))),
+        "{w:?}"
+    );
+    assert!(w.iter().any(|w| w.contains("mechanism.crank.rpm")), "{w:?}");
+    let tiny = pipeline::load(&example().replacen("length: 0.12,", "length: 1.0e-9,", 1)).unwrap();
+    assert!(tiny.warnings.iter().any(|w| w.message.contains("shorter than 1 mm")), "{:?}", tiny.warnings);
+    assert!(pipeline::load(&example()).unwrap().warnings.is_empty());
+}
+
+#[test]
+fn a_mechanism_that_never_assembles_says_so() {
+    let e = refusal(&fixture_text("four-bar").replace("lengths: [0.18, 0.15]", "lengths: [0.01, 0.01]"));
+    assert!(e.contains("Assur group 1 (RRR, links 2 and 3, line 12) cannot be assembled at any crank angle"), "{e}");
+}
+
+/// With position 0 fixed by `start_deg`, the course angle φ is known and named beside θ.
+#[test]
+fn assembly_errors_name_the_course_angle_when_position_0_is_fixed() {
+    let text = fixture_text("four-bar")
+        .replace("lengths: [0.18, 0.15]", "lengths: [0.18, 0.06]")
+        .replace("positions: 12", "positions: 12\n  start_deg: 90");
+    let e = refusal(&text);
+    assert!(e.contains("absolute crank angles θ from") && e.contains("course angles φ = "), "{e}");
 }

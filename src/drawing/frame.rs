@@ -4,6 +4,7 @@
 use super::labels::Common;
 use super::scene::{Anchor, Group, MAIN, THIN, Text};
 use super::text::{paragraph, wrap};
+use crate::num::tol;
 use kurbo::{Point, Rect};
 use serde::Deserialize;
 
@@ -218,7 +219,10 @@ fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Common) {
 
 /// Whether `r` lies inside `outer` (for the layout tests).
 pub fn is_inside(outer: Rect, r: Rect) -> bool {
-    r.x0 >= outer.x0 - 1e-9 && r.y0 >= outer.y0 - 1e-9 && r.x1 <= outer.x1 + 1e-9 && r.y1 <= outer.y1 + 1e-9
+    r.x0 >= outer.x0 - tol::PAPER
+        && r.y0 >= outer.y0 - tol::PAPER
+        && r.x1 <= outer.x1 + tol::PAPER
+        && r.y1 <= outer.y1 + tol::PAPER
 }
 
 #[cfg(test)]

@@ -2,6 +2,7 @@
 //! and staying inside a region.
 
 use super::scene::{Anchor, Text};
+use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
 /// Gap between a point and its label, mm.
@@ -25,7 +26,7 @@ impl Placer {
     fn free(&self, r: &Rect) -> bool {
         let inside =
             r.x0 >= self.bounds.x0 && r.y0 >= self.bounds.y0 && r.x1 <= self.bounds.x1 && r.y1 <= self.bounds.y1;
-        inside && self.taken.iter().all(|t| t.intersect(*r).area() <= 1e-9)
+        inside && self.taken.iter().all(|t| t.intersect(*r).area() <= tol::PAPER_AREA)
     }
 
     /// A label of height `h` beside `anchor`, preferably in the direction `pref`
@@ -41,7 +42,7 @@ impl Placer {
 
     /// A free box of `w` × `ht` beside `anchor` (see [`Placer::place`]), now taken.
     pub fn place_box(&mut self, anchor: Point, pref: Vec2, w: f64, ht: f64) -> Rect {
-        let base = if pref.hypot() > 1e-9 { pref.normalize() } else { Vec2::new(1.0, -1.0).normalize() };
+        let base = if pref.hypot() > tol::PAPER { pref.normalize() } else { Vec2::new(1.0, -1.0).normalize() };
         let mut first = None;
         for dist in [GAP, GAP + 1.5, GAP + 3.5, GAP + 6.0, GAP + 9.0, GAP + 13.0, GAP + 18.0, GAP + 24.0] {
             for ang in [0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0] {

@@ -1,6 +1,8 @@
 //! Scale factors. Lengths use the scales of GOST 2.302; plans use the course's round
 //! factors {1, 2, 2.5, 4, 5}·10ⁿ.
 
+use crate::num::tol;
+
 const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
 
 /// GOST 2.302 reductions 1:k (k real mm per paper mm).
@@ -12,12 +14,15 @@ const REDUCTIONS: [f64; 21] = [
 const ENLARGEMENTS: [f64; 9] = [2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0];
 
 /// Tolerance that keeps an exact value instead of bumping it to the next one.
-const EXACT: f64 = 1.0 - 1e-12;
+const EXACT: f64 = 1.0 - tol::ROUND_VALUE;
 
-/// The smallest round value ≥ `x` (for x > 0). A scale factor μ (units per mm) chosen
-/// this way makes a drawing as large as possible without leaving its region.
+/// The smallest round value ≥ `x`. A scale factor μ (units per mm) chosen this way makes a
+/// drawing as large as possible without leaving its region. A drawing of no extent (x ≤ 0,
+/// or not finite) fits any scale: it gets 1.
 pub fn round_up(x: f64) -> f64 {
-    assert!(x.is_finite() && x > 0.0, "scale of a non-positive extent");
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
     let mut e = x.log10().floor() as i32 - 1;
     loop {
         let p = 10f64.powi(e);
@@ -30,9 +35,11 @@ pub fn round_up(x: f64) -> f64 {
     }
 }
 
-/// The smallest μ_l (m/mm) of a GOST 2.302 scale that is ≥ `x`.
+/// The smallest μ_l (m/mm) of a GOST 2.302 scale that is ≥ `x` (1:1 for no extent).
 pub fn length_scale(x: f64) -> f64 {
-    assert!(x.is_finite() && x > 0.0, "scale of a non-positive extent");
+    if !(x.is_finite() && x > 0.0) {
+        return 0.001;
+    }
     let enlarge = ENLARGEMENTS.iter().rev().map(|k| 0.001 / k);
     let reduce = REDUCTIONS.iter().map(|k| 0.001 * k);
     enlarge.chain(reduce).find(|&mu| mu >= x * EXACT).unwrap_or_else(|| round_up(x))
@@ -48,7 +55,7 @@ pub fn format(mu: f64) -> String {
 /// A length scale μ_l (m/mm) as a GOST 2.302 ratio: 0.005 m/mm is 1:5, 0.0005 m/mm is 2:1.
 pub fn ratio(mu_l: f64) -> String {
     let k = mu_l * 1000.0; // real millimetres per paper millimetre
-    if k >= 1.0 - 1e-9 { format!("1:{}", format(k)) } else { format!("{}:1", format(1.0 / k)) }
+    if k >= EXACT { format!("1:{}", format(k)) } else { format!("{}:1", format(1.0 / k)) }
 }
 
 #[cfg(test)]
@@ -63,6 +70,7 @@ mod tests {
         assert_eq!(round_up(0.011), 0.02);
         assert_eq!(round_up(0.021975), 0.025);
         assert_eq!(round_up(8.0), 10.0);
+        assert_eq!((round_up(0.0), round_up(f64::NAN), length_scale(-1.0)), (1.0, 1.0, 0.001), "no extent, no panic");
     }
 
     #[test]

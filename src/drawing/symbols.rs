@@ -2,6 +2,7 @@
 
 use super::path::{Path, on_circle};
 use super::scene::{Group, Pen, THIN};
+use crate::num::tol;
 use kurbo::{Point, Vec2};
 
 /// Arrowhead length and half width, mm (drafting practice for thin lines).
@@ -11,7 +12,7 @@ pub const ARROW_HALF: f64 = 0.55;
 /// Adds a filled arrowhead with its tip at `tip`, pointing along `dir`.
 pub fn arrowhead(g: &mut Group, tip: Point, dir: Vec2) {
     let len = dir.hypot();
-    if len < 1e-12 {
+    if len < tol::PAPER {
         return;
     }
     let u = dir / len;
@@ -25,7 +26,7 @@ pub fn arrowhead(g: &mut Group, tip: Point, dir: Vec2) {
 pub fn vector(g: &mut Group, a: Point, b: Point, pen: Pen) {
     let d = b - a;
     let len = d.hypot();
-    if len < 0.05 {
+    if len < tol::PAPER_INVISIBLE {
         return;
     }
     if len <= ARROW_LEN * 1.2 {
@@ -54,7 +55,7 @@ pub fn frame_pivot(g: &mut Group, c: Point, r: f64) {
 pub fn hatch(g: &mut Group, a: Point, b: Point, side: Vec2, step: f64) {
     let d = b - a;
     let len = d.hypot();
-    if len < 1e-9 {
+    if len < tol::PAPER {
         return;
     }
     let u = d / len;

@@ -6,6 +6,7 @@ use super::linkage::{Mechanism, PointId, State};
 use super::motion::{self, Motion, MotionError, Start};
 use super::structure::{self, Structure};
 use super::trajectory;
+use crate::num::tol;
 use kurbo::Vec2;
 use std::f64::consts::TAU;
 
@@ -73,9 +74,17 @@ pub enum AnalysisError {
     #[error("force analysis at φ1 = {phi_deg:.2}°: {error}")]
     Force { phi_deg: f64, error: ForceError },
     #[error(
-        "the solution at φ = {phi_deg:.2}° is not finite (point {point}); the mechanism is too close to a singular position"
+        "the solution at the course angle φ = {phi_deg:.2}° is not finite (point {point}); the mechanism is too close to a singular position"
     )]
     NotFinite { phi_deg: f64, point: String },
+    #[error(
+        "the load on slider {point} (line {line} of the project file): the slider does not move (its stroke is {stroke:.3e} m), so the load's position in the stroke, S/H, is undefined"
+    )]
+    ZeroStroke { point: String, line: u64, stroke: f64 },
+    #[error(
+        "force analysis at φ1 = {phi_deg:.2}°: {what} is not finite; the mechanism is too close to a singular position"
+    )]
+    ForceNotFinite { phi_deg: f64, what: String },
 }
 
 fn check_finite(m: &Mechanism, s: &State, phi: f64) -> Result<(), AnalysisError> {
@@ -108,7 +117,8 @@ pub fn kinematics(m: &Mechanism, s: &Settings) -> Result<Kinematics, AnalysisErr
     }
     if let Some(e) = motion.other_extreme {
         let k = (e / step).floor() as usize;
-        let on_grid = (e - k as f64 * step).abs() < 1e-7 || (e - (k + 1) as f64 * step).abs() < 1e-7;
+        let on_grid =
+            (e - k as f64 * step).abs() < tol::SAME_POSITION || (e - (k + 1) as f64 * step).abs() < tol::SAME_POSITION;
         if on_grid {
             let j = ((e / step).round() as usize) % n;
             positions[j].extreme = true;
@@ -119,7 +129,7 @@ pub fn kinematics(m: &Mechanism, s: &Settings) -> Result<Kinematics, AnalysisErr
     let assigned = match s.assigned_deg {
         Some(d) => {
             let phi = d.to_radians();
-            match positions.iter().find(|p| (p.phi - phi).abs() < 1e-9) {
+            match positions.iter().find(|p| (p.phi - phi).abs() < tol::SAME_ANGLE) {
                 Some(p) => p.clone(),
                 None => position(m, &motion, phi, "φ₁".into(), false)?,
             }
@@ -172,7 +182,29 @@ pub fn forces(m: &Mechanism, k: &Kinematics, model: &ForceModel) -> Result<Force
     let phi_deg = k.assigned.phi.to_degrees();
     let forces = kinetostatics::analyse(m, &k.assigned.state, &model)
         .map_err(|error| AnalysisError::Force { phi_deg, error })?;
+    check_forces_finite(m, &forces, phi_deg)?;
     Ok(ForceAnalysis { model, forces })
+}
+
+/// Every force, moment and balancing value, finite.
+fn check_forces_finite(m: &Mechanism, f: &Forces, phi_deg: f64) -> Result<(), AnalysisError> {
+    let bad = |what: String| Err(AnalysisError::ForceNotFinite { phi_deg, what });
+    for a in &f.applied {
+        if !(a.force.is_finite() && a.at.is_finite()) {
+            return bad(format!("a force on link {}", m.links[a.on].number));
+        }
+    }
+    for i in &f.inertia {
+        if !(i.force.is_finite() && i.moment.is_finite() && i.weight.is_finite()) {
+            return bad(format!("the inertia load of link {}", m.links[i.link].number));
+        }
+    }
+    let lever = f.lever.iter().all(|l| l.force.is_finite() && l.image.is_finite())
+        && f.lever_moments.iter().all(|x| x.is_finite());
+    if ![f.p_m, f.m_m, f.p_m_lever, f.p_m_power].iter().all(|x| x.is_finite()) || !lever {
+        return bad("the balancing force".into());
+    }
+    Ok(())
 }
 
 /// The model with every load's stroke (origin and length) fixed from its slider's extremes.
@@ -182,6 +214,13 @@ pub fn place_loads(m: &Mechanism, motion: &Motion, model: &ForceModel) -> Result
     let at = m.frame.iter().find(|f| f.0 == pivot).map_or(Vec2::ZERO, |f| f.1);
     for load in &mut model.loads {
         let (lo, hi) = motion::extremes_along(m, motion, load.point, load.axis)?;
+        if hi - lo <= tol::SAME_POINT * m.size {
+            return Err(AnalysisError::ZeroStroke {
+                point: m.name(load.point).into(),
+                line: load.line,
+                stroke: hi - lo,
+            });
+        }
         load.set_stroke(lo, hi, at);
     }
     Ok(model)

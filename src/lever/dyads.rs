@@ -6,11 +6,8 @@
 //! derivative equations (2×2 linear systems), never from finite differences.
 
 use super::kin::{Kin, LinkKin};
+use crate::num::tol::DEAD_POINT_SIN;
 use kurbo::Vec2;
-
-/// Below this |sin| of the transmission angle a dyad is treated as being at a dead
-/// point: its velocities would be unbounded, so the solver reports an error instead.
-pub const SINGULAR_SIN: f64 = 1e-9;
 
 /// Why a dyad has no solution at the requested configuration.
 #[derive(Debug, Clone, PartialEq)]
@@ -63,7 +60,7 @@ pub fn rrr(p: &Kin, q: &Kin, l_pb: f64, l_qb: f64, branch: f64) -> Result<DyadSo
     let b = p.p + e * along + e.turn_90() * (branch * h);
     let (r1, r2) = (b - p.p, b - q.p);
     let cross = r1.cross(r2); // l_pb·l_qb·sin(transmission angle)
-    if cross.abs() < SINGULAR_SIN * l_pb * l_qb {
+    if cross.abs() < DEAD_POINT_SIN * l_pb * l_qb {
         let sin_mu = cross / (l_pb * l_qb);
         return Err(DyadFailure::DeadPoint { transmission_deg: sin_mu.asin().to_degrees() });
     }
@@ -95,7 +92,7 @@ pub fn rrp(p: &Kin, l: f64, through: Vec2, dir: Vec2, branch: f64) -> Result<Dya
     let d = through + dir * s;
     let r = d - p.p;
     let along = r.dot(dir); // l·sin(transmission): a rod perpendicular to its guide is the dead point
-    if along.abs() < SINGULAR_SIN * l {
+    if along.abs() < DEAD_POINT_SIN * l {
         return Err(DyadFailure::DeadPoint { transmission_deg: (along / l).asin().to_degrees() });
     }
     let inv_det = -1.0 / along; // reciprocal of the determinant of [u, −perp r] = −u·r
@@ -121,11 +118,13 @@ pub struct KulisaSolution {
     pub slide: (f64, f64, f64),
 }
 
+/// `min_distance` (m) is how close to the pivot the block may come before the kulisa's
+/// direction is undefined.
 #[inline]
-pub fn rpr(a: &Kin, c: &Kin) -> Result<KulisaSolution, DyadFailure> {
+pub fn rpr(a: &Kin, c: &Kin, min_distance: f64) -> Result<KulisaSolution, DyadFailure> {
     let ca = a.p - c.p;
     let d = ca.hypot2().sqrt();
-    if d < 1e-9 {
+    if d.is_nan() || d < min_distance {
         return Err(DyadFailure::BlockAtPivot { distance: d });
     }
     let e = ca / d;

@@ -6,6 +6,7 @@
 
 use super::linkage::{Crank, LinkId, Mechanism, PointId, State, Step};
 use super::load::{Load, LoadValue};
+use crate::num::tol;
 use kurbo::Vec2;
 
 /// The frame, as the body a reaction comes from.
@@ -189,7 +190,7 @@ fn unit(v: Vec2) -> (Vec2, f64) {
 /// Solves n_a·a + n_b·b = −k for the magnitudes along the known directions `a`, `b`.
 fn polygon_pair(a: Vec2, b: Vec2, k: Vec2) -> Option<(f64, f64)> {
     let det = a.cross(b);
-    if det.abs() < 1e-9 {
+    if det.abs() < tol::PARALLEL_SIN {
         return None;
     }
     Some((-k.cross(b) / det, -a.cross(k) / det))
@@ -328,8 +329,9 @@ fn solve_group(
             let (n0, nf) =
                 polygon_pair(e0, normal, t0 + sum0 + sum1).ok_or_else(|| singular("rod and guide normal"))?;
             // The guide's reaction passes at h along the guide from D, so that the slider's
-            // moments about D balance: h·N + M_D = 0.
-            let h = if nf.abs() > 1e-12 { -mom1 / nf } else { 0.0 };
+            // moments about D balance: h·N + M_D = 0 (a vanishing N acts anywhere: at D).
+            let scale = sum0.hypot() + sum1.hypot() + t0.hypot() + n0.abs();
+            let h = if nf.abs() > tol::ZERO_FORCE * scale { -mom1 / nf } else { 0.0 };
             let r0 = react(applied, owner(m, jp, g.links), l0, p(jp), Some(jp), e0 * n0 + t0);
             let r1 = react(applied, FRAME, l1, pd + dir * h, if h == 0.0 { Some(d) } else { None }, normal * nf);
             let inner = react(applied, l1, l0, pd, Some(d), -(r0.force + sum0));
@@ -347,7 +349,8 @@ fn solve_group(
             let (sum1, mom1) = resultant(applied, inertia, l1, pc);
             // Block about A: h·N + M_A = 0; kulisa about C: (l + h)·N = M_C; hence l·N = M_C + M_A.
             let nf = (mom1 + mom0) / len;
-            let h = if nf.abs() > 1e-12 { -mom0 / nf } else { 0.0 };
+            let scale = sum0.hypot() + sum1.hypot() + (mom0.abs() + mom1.abs()) / len;
+            let h = if nf.abs() > tol::ZERO_FORCE * scale { -mom0 / nf } else { 0.0 };
             let inner = react(applied, l1, l0, pa + e * h, if h == 0.0 { Some(a) } else { None }, normal * nf);
             let r0 = react(applied, owner(m, a, g.links), l0, pa, Some(a), -(sum0 + inner.force));
             let r1 = react(applied, owner(m, c, g.links), l1, pc, Some(c), -(sum1 - inner.force));
@@ -465,7 +468,7 @@ fn zhukovsky(
 fn couple_points(m: &Mechanism, s: &State, link: LinkId) -> ((Vec2, Vec2), (Vec2, Vec2)) {
     let pts = &m.links[link].points;
     let k0 = s.points[pts[0]];
-    if let Some(&q) = pts.iter().skip(1).find(|&&q| (s.points[q].p - k0.p).hypot() > 1e-9) {
+    if let Some(&q) = pts.iter().skip(1).find(|&&q| (s.points[q].p - k0.p).hypot() > tol::SAME_POINT * m.size) {
         let k1 = s.points[q];
         return ((k0.p, k0.v), (k1.p, k1.v));
     }

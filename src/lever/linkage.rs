@@ -3,6 +3,7 @@
 
 use super::dyads::{self, DyadFailure};
 use super::kin::{Kin, LinkKin};
+use crate::num::tol;
 use kurbo::Vec2;
 
 /// Index of a point in [`Mechanism::point_names`].
@@ -137,6 +138,9 @@ pub struct Mechanism {
     pub output: Output,
     /// Centres of mass, as (link, point).
     pub mass_centres: Vec<(LinkId, PointId)>,
+    /// The mechanism's size (m): its longest link, or the frame's extent if larger. Lengths
+    /// below [`tol::SAME_POINT`] of it are zero.
+    pub size: f64,
 }
 
 /// Everything known about the mechanism at one crank angle.
@@ -253,7 +257,7 @@ impl Mechanism {
                 s.links[links[1]] = sol.link_second;
             }
             Step::Rpr { a, c, a3, links } => {
-                let sol = dyads::rpr(&s.points[a], &s.points[c])?;
+                let sol = dyads::rpr(&s.points[a], &s.points[c], tol::SAME_POINT * self.size)?;
                 s.points[a3] = sol.a3;
                 s.links[links[0]] = sol.kulisa;
                 s.links[links[1]] = sol.kulisa;
@@ -280,6 +284,37 @@ impl Mechanism {
             }
         }
         Ok(())
+    }
+
+    /// The size [`Mechanism::size`] holds: the longest fixed length, or the frame's extent.
+    pub fn measure_size(&self) -> f64 {
+        let lengths = self.steps.iter().flat_map(|s| match *s {
+            Step::Crank { length, .. } => vec![length],
+            Step::Rrr { l_pb, l_qb, .. } => vec![l_pb, l_qb],
+            Step::Rrp { length, .. } => vec![length],
+            Step::Rpr { .. } => vec![],
+            Step::Attach { distance, .. } => vec![distance.abs()],
+        });
+        let frame = self.frame.iter().flat_map(|a| self.frame.iter().map(move |b| (a.1 - b.1).hypot()));
+        lengths.chain(frame).fold(0.0, f64::max)
+    }
+
+    /// How far each Assur group is from failing to assemble at state `s`, as (step, margin):
+    /// 0 at a dead point, positive where it assembles, relative to the group's links.
+    pub fn margins<'a>(&'a self, s: &'a State) -> impl Iterator<Item = (usize, f64)> + 'a {
+        let p = |id: PointId| s.points[id].p;
+        self.steps.iter().enumerate().filter_map(move |(i, step)| {
+            let margin = match *step {
+                Step::Rrr { p: a, q, l_pb, l_qb, .. } => {
+                    let d = (p(q) - p(a)).hypot();
+                    (d - (l_pb - l_qb).abs()).min(l_pb + l_qb - d) / (l_pb + l_qb)
+                }
+                Step::Rrp { p: a, through, dir, length, .. } => (length - (p(a) - through).cross(dir).abs()) / length,
+                Step::Rpr { a, c, .. } => (p(a) - p(c)).hypot() / self.size,
+                Step::Crank { .. } | Step::Attach { .. } => return None,
+            };
+            Some((i, margin))
+        })
     }
 
     /// Value of the output coordinate and its time derivative.

@@ -1,6 +1,7 @@
 //! Loads on sliders that depend on where the slider is in its stroke and which way it
 //! moves: gas forces read from an indicator diagram, and the resistance of a working stroke.
 
+use crate::num::tol;
 use kurbo::Vec2;
 
 /// A diagram y(s) over the relative stroke s ∈ [0, 1], read by straight lines between its
@@ -108,7 +109,10 @@ impl Load {
     pub fn value(&self, p: Vec2, v: Vec2, a: Vec2) -> LoadValue {
         let s = ((p.dot(self.axis) - self.origin) / self.stroke).clamp(0.0, 1.0);
         let speed = v.dot(self.axis);
-        let going = if speed.abs() > 1e-12 { speed } else { a.dot(self.axis) };
+        // At a dead centre (speed ≈ 0 on the scale √(a·H)) the slider moves next the way its
+        // acceleration points.
+        let at_rest = speed.abs() <= tol::ZERO_SPEED * (a.hypot() * self.stroke).sqrt();
+        let going = if at_rest { a.dot(self.axis) } else { speed };
         let branch = if going >= 0.0 { 0 } else { 1 };
         let b = &self.branches[branch];
         LoadValue { s, branch, force: self.axis * (b.scale * b.curve.at(s)) }

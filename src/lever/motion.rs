@@ -1,15 +1,26 @@
 //! The crank's motion over a full turn: course angle φ, the extreme positions of the
-//! output link (found exactly), the drawn positions and sampled trajectories.
+//! output link (found exactly), assembly over the whole turn, sampled positions.
 //!
 //! The course measures the crank angle φ from position 0 (an extreme position of the
 //! output link) in the sense of rotation, so the absolute angle is `θ = θ0 + sense·φ`.
+//! Messages name both, each as such: φ (the course angle) once position 0 is known, θ (the
+//! absolute angle, counter-clockwise from the x axis) always.
 
 use super::dyads::DyadFailure;
-use super::linkage::{Mechanism, State, StepFailure};
+use super::linkage::{Mechanism, Output, PointId, State, StepFailure};
+use crate::num::roots::{self, RootError};
+use crate::num::tol;
+use kurbo::Vec2;
+use std::convert::Infallible;
 use std::f64::consts::TAU;
 
-/// Samples per turn used to bracket extremes and to check assembly over a full turn.
+/// Samples per turn used to bracket extremes and to check assembly over a full turn. A
+/// lock-up window narrower than a step is found by minimising each group's reach margin
+/// around its sampled minima ([`analyse_motion`]).
 const SCAN_SAMPLES: usize = 720;
+
+/// Resolution of the angles found by search, rad.
+const ANGLE_RESOLUTION: f64 = 1e-12;
 
 /// Which extreme of the output coordinate is position 0.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -20,18 +31,48 @@ pub enum Start {
     Angle(f64),
 }
 
+/// Absolute crank angles θ (degrees, counter-clockwise from the x axis) as the crank passes
+/// them, and the matching course angles φ when position 0 is known.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Angles {
+    pub theta_deg: (f64, f64),
+    pub phi_deg: Option<(f64, f64)>,
+    /// +1 when the crank turns counter-clockwise: a range runs the way the crank turns.
+    pub sense: f64,
+}
+
+impl std::fmt::Display for Angles {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (a, b) = self.theta_deg;
+        if a == b {
+            write!(f, "the absolute crank angle θ = {a:.2}° (from the x axis, counter-clockwise)")?;
+        } else {
+            let turning = if self.sense > 0.0 { "counter-clockwise" } else { "clockwise" };
+            write!(
+                f,
+                "absolute crank angles θ from {a:.2}° to {b:.2}° as the crank turns {turning} (θ from the x axis, counter-clockwise)"
+            )?;
+        }
+        match self.phi_deg {
+            Some((a, b)) if a == b => write!(f, ", the course angle φ = {a:.2}° from position 0"),
+            Some((a, b)) => write!(f, ", course angles φ = {a:.2}° to {b:.2}° from position 0"),
+            None => Ok(()),
+        }
+    }
+}
+
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum MotionError {
-    #[error(
-        "{group} cannot be assembled for crank angles θ ≈ {from_deg:.1}°…{to_deg:.1}° from the x axis, counter-clockwise ({detail})"
-    )]
-    CannotAssemble { group: String, from_deg: f64, to_deg: f64, detail: String },
-    #[error(
-        "{group} passes through a dead point at the crank angle θ ≈ {at_deg:.3}° from the x axis ({detail}): its velocities are unbounded there"
-    )]
-    DeadPoint { group: String, at_deg: f64, detail: String },
+    #[error("{group} cannot be assembled at any crank angle ({detail} at {angles})")]
+    NeverAssembles { group: String, angles: Angles, detail: String },
+    #[error("{group} cannot be assembled for {angles}: {detail}")]
+    CannotAssemble { group: String, angles: Angles, detail: String },
+    #[error("{group} passes through a dead point at {angles} ({detail}): its velocities are unbounded there")]
+    DeadPoint { group: String, angles: Angles, detail: String },
     #[error("the output ({output}) has no extreme position over a full crank turn; give `start_deg` to fix position 0")]
     NoExtreme { output: String },
+    #[error("finding {what}: {detail}")]
+    Search { what: String, detail: String },
 }
 
 /// The crank's rotation and the frame of course angles.
@@ -80,22 +121,30 @@ fn describe_failure(why: &DyadFailure) -> String {
 
 /// Checks that the mechanism assembles over a whole turn and finds position 0.
 pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion, MotionError> {
-    let theta_of = |k: f64| sense * k; // scan from absolute 0 in the sense of rotation
+    // Scan in u from absolute θ = 0 in the sense of rotation: θ = sense·u.
+    let theta_of = |u: f64| sense * u;
+    let fail = |f: StepFailure, u: f64| assembly_error(m, f, u, sense, start);
     let mut states = Vec::with_capacity(SCAN_SAMPLES);
     for k in 0..SCAN_SAMPLES {
-        let phi = TAU * k as f64 / SCAN_SAMPLES as f64;
-        match m.solve(theta_of(phi)) {
-            Ok(s) => states.push((phi, s)),
-            Err(f) => return Err(assembly_error(m, f, phi, sense, |p| m.solve(theta_of(p)).is_ok())),
+        let u = TAU * k as f64 / SCAN_SAMPLES as f64;
+        match m.solve(theta_of(u)) {
+            Ok(s) => states.push((u, s)),
+            Err(f) => return Err(fail(f, u)),
         }
     }
+    if let Some((f, u)) = narrow_lock_up(m, &states, &theta_of) {
+        return Err(fail(f, u));
+    }
     let reference = swing_reference(m, &states);
-    let roots = output_extremes(m, &states, reference, &|p| m.solve(theta_of(p)));
+    let vel = |s: &State| m.output_value(s).1;
+    let value = |s: &State| output_coordinate(m, s, reference);
+    let what = || format!("the extreme positions of {}", output_name(m));
+    let roots = extremes(&states, &|u| m.solve(theta_of(u)), &vel, &value, &what)?;
     let other_of = |theta0: f64| {
         roots
             .iter()
-            .map(|&(phi, _)| (sense * (theta_of(phi) - theta0)).rem_euclid(TAU))
-            .find(|d| d.abs() > 1e-9 && (TAU - d).abs() > 1e-9)
+            .map(|&(u, _)| (sense * (theta_of(u) - theta0)).rem_euclid(TAU))
+            .find(|d| d.abs() > tol::SAME_ANGLE && (TAU - d).abs() > tol::SAME_ANGLE)
     };
     let theta0 = match start {
         Start::Angle(t) => return Ok(Motion { theta0: t, sense, other_extreme: None }),
@@ -105,7 +154,7 @@ pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion,
                 x.total_cmp(&y)
             });
             match pick {
-                Some(&(phi, _)) => theta_of(phi),
+                Some(&(u, _)) => theta_of(u),
                 None => return Err(MotionError::NoExtreme { output: output_name(m) }),
             }
         }
@@ -113,129 +162,147 @@ pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion,
     Ok(Motion { theta0, sense, other_extreme: other_of(theta0) })
 }
 
+/// A lock-up window narrower than the scan step: each group's reach margin is minimised
+/// around every sampled local minimum; a failed solve there is the window.
+fn narrow_lock_up(m: &Mechanism, states: &[(f64, State)], theta_of: &dyn Fn(f64) -> f64) -> Option<(StepFailure, f64)> {
+    let per_state: Vec<Vec<f64>> = states.iter().map(|(_, s)| m.margins(s).map(|(_, x)| x).collect()).collect();
+    let groups = per_state.first().map_or(0, Vec::len);
+    let n = states.len();
+    let step = TAU / n as f64;
+    for g in 0..groups {
+        let margin_of: Vec<f64> = per_state.iter().map(|ms| ms[g]).collect();
+        for i in 0..n {
+            let (prev, here, next) = (margin_of[(i + n - 1) % n], margin_of[i], margin_of[(i + 1) % n]);
+            if !(here < prev && here <= next) {
+                continue;
+            }
+            let u = states[i].0;
+            let margin = |x: f64| m.solve(theta_of(x)).map(|s| m.margins(&s).nth(g).map_or(f64::INFINITY, |(_, y)| y));
+            match roots::minimise(margin, u - step, u + step, ANGLE_RESOLUTION) {
+                Err((x, f)) => return Some((f, x.rem_euclid(TAU))),
+                Ok(min) if min.fx <= 0.0 => {
+                    // A margin of exactly zero is a dead point: the solver reports it.
+                    if let Err(f) = m.solve(theta_of(min.x)) {
+                        return Some((f, min.x.rem_euclid(TAU)));
+                    }
+                }
+                Ok(_) => {}
+            }
+        }
+    }
+    None
+}
+
 pub fn output_name(m: &Mechanism) -> String {
     match m.output {
-        super::linkage::Output::Slider { point, .. } => format!("slider point {}", m.name(point)),
-        super::linkage::Output::Rocker { link } => format!("link {}", m.links[link].number),
+        Output::Slider { point, .. } => format!("slider point {}", m.name(point)),
+        Output::Rocker { link } => format!("link {}", m.links[link].number),
     }
 }
 
 /// For a rocker output: the mean direction of its swing, from which its angle is measured
 /// so that min and max do not depend on where atan2 wraps (±180°).
-fn swing_reference(m: &Mechanism, states: &[(f64, State)]) -> kurbo::Vec2 {
+fn swing_reference(m: &Mechanism, states: &[(f64, State)]) -> Vec2 {
     match m.output {
-        super::linkage::Output::Rocker { link } => {
-            let sum = states.iter().fold(kurbo::Vec2::ZERO, |acc, (_, s)| acc + s.links[link].dir);
-            if sum.hypot() > 1e-9 { sum.normalize() } else { kurbo::Vec2::new(1.0, 0.0) }
+        Output::Rocker { link } => {
+            let sum = states.iter().fold(Vec2::ZERO, |acc, (_, s)| acc + s.links[link].dir);
+            // A sum of unit vectors that cancels out: the link turns fully, any reference does.
+            if sum.hypot() > tol::SAME_POINT * states.len() as f64 { sum.normalize() } else { Vec2::new(1.0, 0.0) }
         }
-        super::linkage::Output::Slider { .. } => kurbo::Vec2::new(1.0, 0.0),
+        Output::Slider { .. } => Vec2::new(1.0, 0.0),
     }
 }
 
 /// The output coordinate: the slider's displacement, or the rocker's angle from `reference`.
-fn output_coordinate(m: &Mechanism, s: &State, reference: kurbo::Vec2) -> f64 {
+fn output_coordinate(m: &Mechanism, s: &State, reference: Vec2) -> f64 {
     match m.output {
-        super::linkage::Output::Rocker { link } => {
+        Output::Rocker { link } => {
             let d = s.links[link].dir;
             reference.cross(d).atan2(reference.dot(d))
         }
-        super::linkage::Output::Slider { .. } => m.output_value(s).0,
+        Output::Slider { .. } => m.output_value(s).0,
     }
 }
 
-/// Roots of the output's velocity over a turn, refined by bisection: (φ, output value).
-fn output_extremes(
-    m: &Mechanism,
-    states: &[(f64, State)],
-    reference: kurbo::Vec2,
-    solve: &dyn Fn(f64) -> Result<State, StepFailure>,
-) -> Vec<(f64, f64)> {
-    let vel = |s: &State| m.output_value(s).1;
-    let value = |s: &State| output_coordinate(m, s, reference);
-    extremes(states, solve, &vel, &value)
-}
+type Solve<'a> = dyn Fn(f64) -> Result<State, StepFailure> + 'a;
 
-/// Roots of `vel` over a turn of scanned `states`, refined by bisection: (φ, `value` there).
+/// Roots of `vel` over a turn of scanned `states` (u, state), each bracketed by a sign change
+/// between neighbours and found by bisection: (u, `value` there).
 fn extremes(
     states: &[(f64, State)],
-    solve: &dyn Fn(f64) -> Result<State, StepFailure>,
+    solve: &Solve,
     vel: &dyn Fn(&State) -> f64,
     value: &dyn Fn(&State) -> f64,
-) -> Vec<(f64, f64)> {
+    what: &dyn Fn() -> String,
+) -> Result<Vec<(f64, f64)>, MotionError> {
     let mut roots = Vec::new();
+    let search_error = |e: RootError<StepFailure>| MotionError::Search { what: what(), detail: e.to_string() };
     for i in 0..states.len() {
-        let (p0, s0) = &states[i];
-        let (p1, s1) = &states[(i + 1) % states.len()];
-        let p1 = if i + 1 == states.len() { p1 + TAU } else { *p1 };
+        let (u0, s0) = &states[i];
+        let (u1, s1) = &states[(i + 1) % states.len()];
+        let u1 = if i + 1 == states.len() { u1 + TAU } else { *u1 };
         let (v0, v1) = (vel(s0), vel(s1));
         if v0 == 0.0 {
-            roots.push((*p0, value(s0)));
+            roots.push((*u0, value(s0)));
             continue;
         }
         if v0.signum() == v1.signum() || v1 == 0.0 {
             continue;
         }
-        let (mut lo, mut hi, mut vlo) = (*p0, p1, v0);
-        let mut last = s0.clone();
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            let Ok(sm) = solve(mid) else { break };
-            let vm = vel(&sm);
-            if vm.signum() == vlo.signum() {
-                lo = mid;
-                vlo = vm;
-            } else {
-                hi = mid;
-            }
-            last = sm;
-        }
-        roots.push(((0.5 * (lo + hi)).rem_euclid(TAU), value(&last)));
+        let u = roots::bisect(|u| solve(u).map(|s| vel(&s)), *u0, u1, ANGLE_RESOLUTION).map_err(search_error)?;
+        let s = solve(u).map_err(|f| search_error(RootError::Evaluation { x: u, error: f, log: vec![] }))?;
+        roots.push((u.rem_euclid(TAU), value(&s)));
     }
-    roots
+    Ok(roots)
 }
 
-/// Turns the first failing scan sample into an error naming the group and the range of
-/// crank angles (refined by bisection) where it fails.
-fn assembly_error(m: &Mechanism, f: StepFailure, phi: f64, sense: f64, ok: impl Fn(f64) -> bool) -> MotionError {
+/// Turns a failure at scan parameter `u` (θ = sense·u) into an error naming the group and
+/// the range of angles, found by bisection, over which it fails.
+fn assembly_error(m: &Mechanism, f: StepFailure, u: f64, sense: f64, start: Start) -> MotionError {
+    let ok = |x: f64| m.solve(sense * x).is_ok();
     let step = TAU / SCAN_SAMPLES as f64;
-    let edge = |mut good: f64, mut bad: f64| {
-        for _ in 0..50 {
-            let mid = 0.5 * (good + bad);
-            if ok(mid) { good = mid } else { bad = mid }
-        }
-        bad
+    // +1 where it assembles, −1 where it does not: the edge is a sign change.
+    let edge = |good: f64, bad: f64| {
+        let sign = |x: f64| Ok::<_, Infallible>(if ok(x) { 1.0 } else { -1.0 });
+        roots::bisect(sign, good, bad, ANGLE_RESOLUTION).unwrap_or(bad)
     };
-    let group = describe_step(m, f.step);
-    let detail = describe_failure(&f.why);
-    let deg = |p: f64| (sense * p).rem_euclid(TAU).to_degrees();
-    // The scan starts at an absolute angle of 0 that is unrelated to position 0, so the
-    // angles are reported as absolute crank angles (counter-clockwise from +x).
-    let from = if phi == 0.0 { phi } else { edge(phi - step, phi) };
-    let mut to = phi;
-    while to < phi + TAU && !ok(to) {
+    let mut from = u;
+    while from > u - TAU && !ok(from - step) {
+        from -= step;
+    }
+    let mut to = u;
+    while to < u + TAU && !ok(to + step) {
         to += step;
     }
-    let to = if to >= phi + TAU { phi + TAU } else { edge(to, to - step) };
-    if matches!(f.why, DyadFailure::DeadPoint { .. }) {
-        return MotionError::DeadPoint { group, at_deg: deg(phi), detail };
+    let group = describe_step(m, f.step);
+    let detail = describe_failure(&f.why);
+    let theta_deg = |x: f64| (sense * x).rem_euclid(TAU).to_degrees();
+    let phi_deg = |x: f64| match start {
+        Start::Angle(t0) => Some((sense * (sense * x - t0)).rem_euclid(TAU).to_degrees()),
+        _ => None,
+    };
+    let angles =
+        |a: f64, b: f64| Angles { theta_deg: (theta_deg(a), theta_deg(b)), phi_deg: phi_deg(a).zip(phi_deg(b)), sense };
+    if to - from >= TAU - step {
+        return MotionError::NeverAssembles { group, angles: angles(u, u), detail };
     }
-    MotionError::CannotAssemble { group, from_deg: deg(from), to_deg: deg(to), detail }
+    if matches!(f.why, DyadFailure::DeadPoint { .. }) {
+        return MotionError::DeadPoint { group, angles: angles(u, u), detail };
+    }
+    let (from, to) = (edge(from - step, from), edge(to + step, to));
+    MotionError::CannotAssemble { group, angles: angles(from, to), detail }
 }
 
 /// The smallest and largest value of p·`axis` that `point` reaches over a turn (a slider's
 /// stroke ends), exact to the bisection's resolution.
-pub fn extremes_along(
-    m: &Mechanism,
-    motion: &Motion,
-    point: super::linkage::PointId,
-    axis: kurbo::Vec2,
-) -> Result<(f64, f64), MotionError> {
+pub fn extremes_along(m: &Mechanism, motion: &Motion, point: PointId, axis: Vec2) -> Result<(f64, f64), MotionError> {
     let states: Vec<(f64, State)> = (0..SCAN_SAMPLES)
         .map(|k| TAU * k as f64 / SCAN_SAMPLES as f64)
         .map(|phi| sample_at(m, motion, phi).map(|s| (phi, s)))
         .collect::<Result<_, _>>()?;
     let solve = |phi: f64| m.solve(motion.theta(phi));
-    let roots = extremes(&states, &solve, &|s| s.points[point].v.dot(axis), &|s| s.points[point].p.dot(axis));
+    let what = || format!("the stroke ends of {}", m.name(point));
+    let roots = extremes(&states, &solve, &|s| s.points[point].v.dot(axis), &|s| s.points[point].p.dot(axis), &what)?;
     let values = roots.iter().map(|r| r.1).chain(states.iter().map(|(_, s)| s.points[point].p.dot(axis)));
     Ok(values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x))))
 }
@@ -247,10 +314,14 @@ pub fn sample(m: &Mechanism, motion: &Motion, n: usize) -> Result<Vec<State>, Mo
 
 /// Solves the mechanism at the course angle `phi`.
 pub fn sample_at(m: &Mechanism, motion: &Motion, phi: f64) -> Result<State, MotionError> {
-    m.solve(motion.theta(phi)).map_err(|f| MotionError::CannotAssemble {
-        group: describe_step(m, f.step),
-        from_deg: phi.to_degrees(),
-        to_deg: phi.to_degrees(),
-        detail: describe_failure(&f.why),
+    m.solve(motion.theta(phi)).map_err(|f| {
+        let theta = motion.theta(phi).rem_euclid(TAU).to_degrees();
+        let phi = phi.to_degrees();
+        let angles = Angles { theta_deg: (theta, theta), phi_deg: Some((phi, phi)), sense: motion.sense };
+        let (group, detail) = (describe_step(m, f.step), describe_failure(&f.why));
+        match f.why {
+            DyadFailure::DeadPoint { .. } => MotionError::DeadPoint { group, angles, detail },
+            _ => MotionError::CannotAssemble { group, angles, detail },
+        }
     })
 }

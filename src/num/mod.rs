@@ -2,3 +2,5 @@
 //! tolerances with their units, and the one root finder.
 
 pub mod limits;
+pub mod roots;
+pub mod tol;

@@ -96,6 +96,7 @@ pub fn resolve(
             omega1,
             output: Output::Rocker { link: 0 },
             mass_centres: vec![],
+            size: 0.0,
         },
     };
     for fp in &spec.frame {
@@ -133,6 +134,7 @@ pub fn resolve(
         ));
     }
     b.m.output = resolve_output(&b, spec)?;
+    b.m.size = b.m.measure_size();
     let default = Spanned::new(AnalysisSpec::default(), Location::UNKNOWN, Location::UNKNOWN);
     let settings = settings(&analysis.unwrap_or(&default).value, sense)?;
     let forces = forces.map(|f| super::lever_forces::build_forces(f, &b.m, warnings)).transpose()?;

@@ -289,7 +289,7 @@ fn plans_region(
     let body = Rect::new(region.x0, region.y0 + HEADER, region.x1, region.y1);
     let cells = grid(body, plans.len());
     let need = plans.iter().zip(&cells).map(|(p, c)| required_mu(p, (c.width(), c.height()))).fold(0.0, f64::max);
-    let mu = scale::round_up(need.max(1e-9));
+    let mu = scale::round_up(need);
     let mut placer = Placer::new(region);
     let scale_line =
         LabelText::new("μ", sym).with_tail(format!(" = {} {}", fmt::localise(&scale::format(mu), lang), unit));

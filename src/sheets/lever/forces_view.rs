@@ -19,6 +19,7 @@ use crate::lever::kinetostatics::{FRAME, Kind, Part, Polygon};
 use crate::lever::linkage::{LinkKind, Mechanism, State};
 use crate::lever::load::{Load, Stroke};
 use crate::lever::plans::{Plan, velocity_plan};
+use crate::num::tol;
 use crate::report::lever::load_letter;
 use kurbo::{Point, Rect, Vec2};
 
@@ -105,10 +106,10 @@ impl Sizes {
     /// box, unless that leaves this drawing shorter than half the box (a crank beside a
     /// long rod); then its own GOST scale for that half.
     fn mu_l(&self, wb: Rect) -> f64 {
-        let common = scale::length_scale((self.widest / self.group_box).max(1e-6));
+        let common = scale::length_scale(self.widest / self.group_box);
         let side = wb.width().max(wb.height());
         let least = self.group_box / 2.0;
-        if side / common >= least { common } else { scale::length_scale((side / least).max(1e-6)) }
+        if side / common >= least { common } else { scale::length_scale(side / least) }
     }
 
     fn shrunk(self) -> Sizes {
@@ -229,7 +230,7 @@ fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes) -> (GroupLayout, f6
     let (drawing_w, drawing_h) = (world.width() / mu_l + 2.0 * PAD, world.height() / mu_l + 2.0 * PAD);
     let chain = chain(poly);
     let chain_box = bbox_of(&chain);
-    let mu_p = scale::round_up((chain_box.width().max(chain_box.height()) / s.poly_box).max(1e-9));
+    let mu_p = scale::round_up(chain_box.width().max(chain_box.height()) / s.poly_box);
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let w = (drawing_w + poly_w).max(120.0);
     let equation = equation_lines(inp, poly, w - 4.0);
@@ -245,7 +246,7 @@ fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     }
     let lever = velocity_plan(inp.m, inp.state).turned(inp.m.omega1.signum());
     let bb = plan_bbox(&lever);
-    let mu = scale::round_up((bb.width().max(bb.height()) / s.lever_box).max(1e-12));
+    let mu = scale::round_up(bb.width().max(bb.height()) / s.lever_box);
     let pad = MARGIN + ARROW_MAX + 4.0;
     let (w, h) = ((bb.width() / mu + 2.0 * pad).max(110.0), TITLE + bb.height() / mu + 2.0 * pad + 3.0 * LINE);
     out.push(Cell { w, h, content: Content::Lever(lever, mu) });
@@ -277,7 +278,7 @@ fn pack(cells: &[Cell], body: Rect) -> Vec<Point> {
 }
 
 fn fits(cells: &[Cell], at: &[Point], body: Rect) -> bool {
-    cells.iter().zip(at).all(|(c, p)| p.x + c.w <= body.x1 + 1e-9 && p.y + c.h <= body.y1 + 1e-9)
+    cells.iter().zip(at).all(|(c, p)| p.x + c.w <= body.x1 + tol::PAPER && p.y + c.h <= body.y1 + tol::PAPER)
 }
 
 /// The label of a force: G₂, Pᵢ₂, P_c5, Rⁿ₁₂, Pₘ.
@@ -459,7 +460,7 @@ fn draw_group_geometry(
     }
     let unit = poly.terms.iter().map(|t| t.force.hypot()).fold(0.0, f64::max) / ARROW_MAX;
     for t in &poly.terms {
-        force_arrow(g, placer, inp, p(t.at), (t.kind, t.on, t.force), unit.max(1e-12), false);
+        force_arrow(g, placer, inp, p(t.at), (t.kind, t.on, t.force), unit.max(f64::MIN_POSITIVE), false);
     }
     for il in inp.fa.forces.inertia.iter().filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0) {
         let centre = m.mass_centres.iter().find(|c| c.0 == il.link).map_or(m.links[il.link].points[0], |c| c.1);
@@ -480,7 +481,7 @@ fn draw_polygon(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, poly: &Po
     let pts = &layout.chain;
     for (k, t) in poly.terms.iter().enumerate() {
         let (a, b) = (p(pts[k]), p(pts[k + 1]));
-        if (b - a).hypot() < 0.05 {
+        if (b - a).hypot() < tol::PAPER_INVISIBLE {
             continue;
         }
         vector(g, a, b, VECTOR);
@@ -489,7 +490,7 @@ fn draw_polygon(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, poly: &Po
     }
     if let Some(inner) = &poly.inner {
         let (a, b) = (p(pts[poly.split]), p(pts[0]));
-        if (b - a).hypot() >= 0.05 {
+        if (b - a).hypot() >= tol::PAPER_INVISIBLE {
             vector(g, a, b, DASHED);
             place_label(g, placer, a.midpoint(b), (b - a).turn_90(), &force_label(inp, inner.kind, inner.on));
         }
@@ -507,14 +508,22 @@ fn draw_lever(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, pl
     for l in &f.lever {
         if l.couple {
             let d = paper_dir(l.force);
-            vector(g, at(l.image), at(l.image) + d / d.hypot().max(1e-12) * ARROW_MIN, THIN);
+            vector(g, at(l.image), at(l.image) + d / d.hypot().max(f64::MIN_POSITIVE) * ARROW_MIN, THIN);
             continue;
         }
-        force_arrow(g, placer, inp, at(l.image), (l.kind, l.on, l.force), unit.max(1e-12), true);
+        force_arrow(g, placer, inp, at(l.image), (l.kind, l.on, l.force), unit.max(f64::MIN_POSITIVE), true);
     }
     let crank = inp.m.crank();
     let a_img = inp.state.points[crank.pin].v.turn_90() * inp.m.omega1.signum();
-    force_arrow(g, placer, inp, at(a_img), (Kind::Balancing, crank.link, f.dir_m * f.p_m_lever), unit.max(1e-12), true);
+    force_arrow(
+        g,
+        placer,
+        inp,
+        at(a_img),
+        (Kind::Balancing, crank.link, f.dir_m * f.p_m_lever),
+        unit.max(f64::MIN_POSITIVE),
+        true,
+    );
     let lang = inp.lang;
     let y0 = r.y1 - text_h + LINE;
     let lines = [
@@ -546,7 +555,7 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
         .enumerate()
         .flat_map(|(b, br)| br.curve.points.iter().map(move |p| signed(b, p.1)))
         .fold((0.0f64, 0.0f64), |(lo, hi), y| (lo.min(y), hi.max(y)));
-    let span = (hi - lo).max(1e-9);
+    let span = hi - lo;
     let mu = scale::round_up(span / plot.height());
     let y0 = plot.y0 + hi / mu;
     let px = |s: f64| plot.x0 + s * plot.width();

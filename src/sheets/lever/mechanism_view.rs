@@ -9,6 +9,7 @@ use crate::drawing::symbols::{frame_pivot, hatch, slider, turn_arrow};
 use crate::drawing::text::LabelText;
 use crate::lever::analysis::{Kinematics, Position};
 use crate::lever::linkage::{LinkKind, Mechanism, PointId, Step};
+use crate::num::tol;
 use kurbo::{CubicBez, Point, Rect, Vec2};
 
 /// Paper sizes of the symbols, mm.
@@ -253,7 +254,10 @@ impl MechanismView<'_> {
             let along = self.view.dir(lk.dir);
             let start = along.y.atan2(along.x).to_degrees() + 55.0;
             for (value, r, sym) in [(lk.omega, 4.5, "ω"), (lk.eps, 7.0, "ε")] {
-                if value.abs() < 1e-12 || (link.kind == LinkKind::Crank && sym == "ε") {
+                // Relative to the crank's ω1 and ω1²: a link at rest turns neither way.
+                let w1 = self.m.omega1.abs();
+                let zero = if sym == "ω" { tol::ZERO_SPEED * w1 } else { tol::ZERO_SPEED * w1 * w1 };
+                if value.abs() <= zero || (link.kind == LinkKind::Crank && sym == "ε") {
                     continue;
                 }
                 turn_arrow(g, centre, r, start, 70.0, value > 0.0, THIN);

@@ -9,10 +9,13 @@ use crate::drawing::place::Placer;
 use crate::drawing::scene::{Anchor, DASHED, Group, Pen, THIN, Text, VECTOR};
 use crate::drawing::symbols::vector;
 use crate::lever::plans::{Plan, SegKind};
+use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
 /// Room left around a plan inside its cell for the labels, mm.
 pub const MARGIN: f64 = 7.0;
+/// Images closer than this (mm) share one label, e.g. "p=b=d".
+const SHARED_LABEL: f64 = 0.8;
 /// Height of a cell's title strip, mm.
 pub const TITLE: f64 = 6.0;
 
@@ -32,7 +35,7 @@ pub fn plan_bbox(plan: &Plan) -> Rect {
 pub fn required_mu(plan: &Plan, cell: (f64, f64)) -> f64 {
     let bb = plan_bbox(plan);
     let (w, h) = (cell.0 - 2.0 * MARGIN, cell.1 - TITLE - 2.0 * MARGIN);
-    (bb.width() / w).max(bb.height() / h).max(1e-12)
+    (bb.width() / w).max(bb.height() / h)
 }
 
 /// Splits `region` into a grid of at least `n` cells, as square as possible.
@@ -103,7 +106,7 @@ pub fn draw_plan_with(
     let mut clusters: Vec<(Point, Vec<String>)> = vec![(pole_p, vec![pole.to_string()])];
     for img in &plan.images {
         let at = p(img.at);
-        match clusters.iter_mut().find(|(c, _)| (*c - at).hypot() < 0.8) {
+        match clusters.iter_mut().find(|(c, _)| (*c - at).hypot() < SHARED_LABEL) {
             Some((_, names)) => names.push(img.label.clone()),
             None => clusters.push((at, vec![img.label.clone()])),
         }
@@ -116,7 +119,7 @@ pub fn draw_plan_with(
         if *at != pole_p {
             g.dot(*at, 0.35);
         }
-        let pref = if (*at - centre).hypot() < 1e-6 { Vec2::new(-1.0, 1.0) } else { *at - centre };
+        let pref = if (*at - centre).hypot() < tol::PAPER { Vec2::new(-1.0, 1.0) } else { *at - centre };
         g.text(placer.place(*at, pref, &names.join("="), 3.5));
     }
     pole_p
