@@ -315,3 +315,41 @@ fn a_russian_sheet_has_no_english_word_or_unit() {
         }
     }
 }
+
+/// Titles of every length up to the name field's capacity are set smaller, then wrapped, and
+/// never leave their field; a designation too long for one 7 mm line is made smaller.
+#[test]
+fn long_title_block_texts_are_fitted_inside_their_cells() {
+    let field = frame::name_field_rect();
+    for words in [1, 6, 13, 20, 28] {
+        let mut p = fixture("worked-example");
+        p.info.title = (0..words).map(|i| format!("soʻz{i}")).collect::<Vec<_>>().join(" ");
+        p.info.designation = "MMN KL 01.00.00.000 TX — ".repeat(1 + words / 10).trim_end_matches(" — ").to_string();
+        let r = build(&p);
+        check_layout(&format!("{words} words"), &r.output.scene);
+        let tb = r.output.scene.groups.iter().find(|g| g.id == "title-block").unwrap();
+        let texts: Vec<_> =
+            tb.items.iter().filter_map(|i| if let Item::Text(t) = i { Some(t) } else { None }).collect();
+        for t in &texts {
+            assert!(inside(tb.region, t.core_box()), "{words} words: {:?} leaves the title block", t.text);
+            if t.text.contains("soʻz") {
+                assert!(inside(field, t.core_box()), "{words} words: {:?} leaves the name field", t.text);
+            }
+        }
+        let shown: String =
+            texts.iter().filter(|t| t.text.contains("soʻz")).map(|t| t.text.as_str()).collect::<Vec<_>>().join(" ");
+        assert_eq!(shown, p.info.title, "every word of the title is shown, in order");
+    }
+}
+
+#[test]
+fn xml_special_characters_in_user_text_are_escaped() {
+    let mut p = fixture("worked-example");
+    p.info.title = "A & B <C> \"D\" 'E'".into();
+    let r = build(&p);
+    assert!(r.svg.contains("A &amp; B &lt;C&gt; &quot;D&quot; &apos;E&apos;"));
+    let tree = raster::parse(&r.svg).unwrap();
+    let (mut paths, mut texts) = (0, 0);
+    count_usvg(tree.root(), &mut paths, &mut texts);
+    assert!(texts > 100);
+}

@@ -3,7 +3,7 @@
 
 use super::labels::Common;
 use super::scene::{Anchor, Group, MAIN, THIN, Text};
-use super::text::{paragraph, wrap};
+use super::text::{Fitted, TooLong, fit, paragraph, wrap};
 use crate::num::tol;
 use kurbo::{Point, Rect};
 use serde::Deserialize;
@@ -51,7 +51,7 @@ struct Caption {
 #[serde(deny_unknown_fields)]
 struct Field {
     field: FieldName,
-    at: [f64; 2],
+    cell: [f64; 4],
     h: f64,
     anchor: TemplateAnchor,
 }
@@ -149,6 +149,12 @@ pub fn title_block_rect() -> Rect {
     Rect::new(f.x1 - w, f.y1 - h, f.x1, f.y1)
 }
 
+/// The title block's name field (sheet name, project title, course), on the sheet.
+pub fn name_field_rect() -> Rect {
+    let [x0, y0, x1, y1] = template().title_block.name_field;
+    Rect::new(x0, y0, x1, y1) + title_block_rect().origin().to_vec2()
+}
+
 /// What the title block says.
 pub struct TitleBlock<'a> {
     pub designation: &'a str,
@@ -171,7 +177,42 @@ pub fn frame(g: &mut Group) {
     rect_path(g, inner());
 }
 
-pub fn title_block(g: &mut Group, l: &Common, tb: &TitleBlock) {
+/// Room left between a cell's lines and its text, mm (horizontal, vertical).
+const CELL_PAD: (f64, f64) = (0.75, 0.5);
+
+impl FieldName {
+    /// The project file's field the value comes from, for messages.
+    fn source(self) -> &'static str {
+        match self {
+            FieldName::Designation => "project.designation",
+            FieldName::Student => "project.student",
+            FieldName::Supervisor => "project.supervisor",
+            FieldName::Organisation => "project.institution and project.group",
+            FieldName::Scale | FieldName::Sheet | FieldName::Sheets => "the title block",
+        }
+    }
+}
+
+/// Draws fitted lines in `cell`, the block centred vertically, each line placed by `anchor`.
+fn draw_fitted(g: &mut Group, cell: Rect, f: &Fitted, anchor: Anchor) {
+    let top = cell.center().y - f.height() / 2.0;
+    let x = match anchor {
+        Anchor::Start => cell.x0 + CELL_PAD.0,
+        Anchor::Middle => cell.center().x,
+        Anchor::End => cell.x1 - CELL_PAD.0,
+    };
+    paragraph(g, Point::new(x, top + f.h), &f.lines, f.h, anchor);
+}
+
+/// `text` fitted into `cell` (less its padding), or the refusal naming `field`.
+fn fit_cell(text: &str, cell: Rect, h: f64, field: &str, place: &str) -> Result<Fitted, TooLong> {
+    let (w, ht) = (cell.width() - 2.0 * CELL_PAD.0, cell.height() - 2.0 * CELL_PAD.1);
+    fit(text, w, ht, h).ok_or_else(|| TooLong::new(field, text, place, (cell.width(), cell.height())))
+}
+
+/// Draws the title block; a project text too long for its cell even at 2.5 mm over several
+/// lines is refused, naming the field.
+pub fn title_block(g: &mut Group, l: &Common, tb: &TitleBlock) -> Result<(), TooLong> {
     let t = &template().title_block;
     let r = title_block_rect();
     let o = r.origin().to_vec2();
@@ -197,24 +238,42 @@ pub fn title_block(g: &mut Group, l: &Common, tb: &TitleBlock) {
             FieldName::Sheets => &sheets,
             FieldName::Organisation => tb.organisation,
         };
-        if !value.is_empty() {
-            g.text(Text::new(p(f.at[0], f.at[1]), value, f.h, f.anchor.into()));
+        if value.is_empty() {
+            continue;
         }
+        let [x0, y0, x1, y1] = f.cell;
+        let cell = Rect::new(x0, y0, x1, y1) + o;
+        let fitted = fit_cell(value, cell, f.h, f.field.source(), "title-block cell")?;
+        draw_fitted(g, cell, &fitted, f.anchor.into());
     }
     let [x0, y0, x1, y1] = t.name_field;
-    name_field(g, Rect::new(x0, y0, x1, y1) + o, tb, l);
+    name_field(g, Rect::new(x0, y0, x1, y1) + o, tb, l)
 }
 
-/// The name field: sheet name and project title, wrapped and centred.
-fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Common) {
-    let w = r.width() - 3.0;
-    let blocks =
-        [(wrap(tb.sheet_name, 3.5, w), 3.5), (wrap(tb.project_title, 3.5, w), 3.5), (wrap(l.tb_course(), 2.5, w), 2.5)];
-    let height: f64 = blocks.iter().map(|(ls, h)| ls.len() as f64 * 1.6 * h).sum::<f64>() + 2.0 * 2.0;
-    let mut y = r.center().y - height / 2.0 + 4.0;
-    for (lines, h) in &blocks {
-        y = paragraph(g, Point::new(r.center().x, y), lines, *h, Anchor::Middle) + 2.0;
+/// The name field: the project's title (the product's name, largest), the sheet's name (the
+/// document's) and the course, each fitted, stacked and centred.
+fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Common) -> Result<(), TooLong> {
+    const GAP: f64 = 2.0;
+    /// The sheet's name may take this much of the field's height, mm.
+    const SHEET_NAME_H: f64 = 12.0;
+    let w = r.width() - 2.0 * CELL_PAD.0;
+    let ours = |text: &str, ht: f64, h: f64| {
+        fit(text, w, ht, h).unwrap_or_else(|| Fitted { lines: wrap(text, 2.5, w), h: 2.5 })
+    };
+    let name = ours(tb.sheet_name, SHEET_NAME_H, 3.5);
+    let course = ours(l.tb_course(), 2.5 * 1.3, 2.5);
+    let title_room = r.height() - 2.0 * CELL_PAD.1 - name.height() - course.height() - 2.0 * GAP;
+    let title = fit(tb.project_title, w, title_room, 5.0).ok_or_else(|| {
+        TooLong::new("project.title", tb.project_title, "title block's name field", (r.width(), r.height()))
+    })?;
+    let blocks = [title, name, course];
+    let height = blocks.iter().map(Fitted::height).sum::<f64>() + GAP * 2.0;
+    let mut top = r.center().y - height / 2.0;
+    for b in &blocks {
+        paragraph(g, Point::new(r.center().x, top + b.h), &b.lines, b.h, Anchor::Middle);
+        top += b.height() + GAP;
     }
+    Ok(())
 }
 
 /// Whether `r` lies inside `outer` (for the layout tests).

@@ -60,20 +60,44 @@ impl LabelText {
 /// Subscript height relative to the symbol (GOST 2.304: indices one size smaller).
 const SUB: f64 = 0.7;
 
-/// Breaks `text` into lines no wider than `width` mm at lettering height `h`.
+/// Line pitch of wrapped text, in lettering heights.
+pub const LINE_PITCH: f64 = 1.6;
+
+/// Breaks `text` into lines no wider than `width` mm at lettering height `h`: at white space,
+/// and inside a word that is wider than a line by itself. Linear in the text's length (each
+/// character is measured once).
 pub fn wrap(text: &str, h: f64, width: f64) -> Vec<String> {
     let m = font::metrics();
     let size = font::size_for_cap(h);
-    let fits = |s: &str| m.width(s, size) + 0.27 * h <= width;
+    let room = width - SLANT * h;
+    let space = m.width(" ", size);
     let mut lines = Vec::new();
-    let mut cur = String::new();
+    let (mut cur, mut cur_w) = (String::new(), 0.0);
     for word in text.split_whitespace() {
-        let candidate = if cur.is_empty() { word.to_string() } else { format!("{cur} {word}") };
-        if fits(&candidate) || cur.is_empty() {
-            cur = candidate;
-        } else {
+        let word_w = m.width(word, size);
+        if !cur.is_empty() && cur_w + space + word_w <= room {
+            cur.push(' ');
+            cur.push_str(word);
+            cur_w += space + word_w;
+            continue;
+        }
+        if !cur.is_empty() {
             lines.push(std::mem::take(&mut cur));
-            cur = word.to_string();
+        }
+        if word_w <= room {
+            (cur, cur_w) = (word.to_string(), word_w);
+            continue;
+        }
+        // A word wider than a line: break it between characters.
+        cur_w = 0.0;
+        for c in word.chars() {
+            let cw = m.width(c.encode_utf8(&mut [0; 4]), size);
+            if !cur.is_empty() && cur_w + cw > room {
+                lines.push(std::mem::take(&mut cur));
+                cur_w = 0.0;
+            }
+            cur.push(c);
+            cur_w += cw;
         }
     }
     if !cur.is_empty() {
@@ -82,13 +106,83 @@ pub fn wrap(text: &str, h: f64, width: f64) -> Vec<String> {
     lines
 }
 
+/// The slant of GOST type B lettering adds this much width per unit of height (tan 15°).
+pub const SLANT: f64 = 0.27;
+
+/// GOST 2.304 lettering heights, mm, largest first.
+pub const SIZES: [f64; 6] = [14.0, 10.0, 7.0, 5.0, 3.5, 2.5];
+
+/// A user's text that does not fit where the sheet prints it.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error(
+    "{field}: \"{excerpt}\" ({chars} characters) does not fit the {place} ({w:.0} × {h:.0} mm) even in 2.5 mm lettering over several lines; shorten it"
+)]
+pub struct TooLong {
+    pub field: String,
+    pub excerpt: String,
+    pub chars: usize,
+    pub place: String,
+    pub w: f64,
+    pub h: f64,
+}
+
+impl TooLong {
+    pub fn new(field: &str, text: &str, place: &str, (w, h): (f64, f64)) -> TooLong {
+        let chars = text.chars().count();
+        let mut excerpt: String = text.chars().take(40).collect();
+        if chars > 40 {
+            excerpt.push('…');
+        }
+        TooLong { field: field.into(), excerpt, chars, place: place.into(), w, h }
+    }
+}
+
+/// Text set to fit a cell: its lines and their lettering height.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fitted {
+    pub lines: Vec<String>,
+    pub h: f64,
+}
+
+impl Fitted {
+    /// Height of the block from the first line's capitals to the last line's descenders.
+    pub fn height(&self) -> f64 {
+        block_height(self.lines.len(), self.h)
+    }
+}
+
+/// Height of `n` lines at lettering height `h` (capitals to descenders).
+pub fn block_height(n: usize, h: f64) -> f64 {
+    if n == 0 { 0.0 } else { (n - 1) as f64 * LINE_PITCH * h + 1.3 * h }
+}
+
+/// `text` in a `w` × `ht` mm cell (the room for the letters themselves): on one line at the
+/// largest GOST height from `h_max` down to 2.5 mm that fits, else wrapped at the largest
+/// such height whose lines fit; `None` when not even 2.5 mm wrapped fits.
+pub fn fit(text: &str, w: f64, ht: f64, h_max: f64) -> Option<Fitted> {
+    let sizes = || SIZES.into_iter().filter(move |&h| h <= h_max);
+    let m = font::metrics();
+    // A text far too long for the cell is refused without measuring it at every size.
+    let least = m.width(text, font::size_for_cap(2.5));
+    let lines_at_least = (ht / (LINE_PITCH * 2.5)).floor().max(1.0);
+    if least > lines_at_least * w * 1.5 {
+        return None;
+    }
+    for h in sizes() {
+        if block_height(1, h) <= ht && m.width(text, font::size_for_cap(h)) + SLANT * h <= w {
+            return Some(Fitted { lines: vec![text.to_string()], h });
+        }
+    }
+    sizes().map(|h| Fitted { lines: wrap(text, h, w), h }).find(|f| f.height() <= ht)
+}
+
 /// Draws wrapped lines starting with the first baseline at `at`, line pitch 1.6·h;
 /// returns the y of the next free line.
 pub fn paragraph(g: &mut Group, at: Point, lines: &[String], h: f64, anchor: Anchor) -> f64 {
     let mut y = at.y;
     for line in lines {
         g.text(Text::new(Point::new(at.x, y), line.clone(), h, anchor));
-        y += 1.6 * h;
+        y += LINE_PITCH * h;
     }
     y
 }

@@ -9,6 +9,7 @@
 pub mod lever;
 
 use crate::drawing::scene::Scene;
+use crate::drawing::text::TooLong;
 use crate::lever::analysis::AnalysisError;
 use crate::project::{Project, ProjectInfo};
 use crate::report::NoteTable;
@@ -76,6 +77,8 @@ pub struct SheetOutput {
 pub enum SheetError {
     #[error(transparent)]
     Lever(#[from] AnalysisError),
+    #[error(transparent)]
+    TooLong(#[from] TooLong),
 }
 
 /// One sheet, ready to build from its project section.

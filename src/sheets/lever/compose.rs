@@ -16,7 +16,7 @@ use crate::drawing::place::Placer;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Scene, Text};
 use crate::drawing::table::Table;
-use crate::drawing::text::{LabelText, paragraph, wrap};
+use crate::drawing::text::{LabelText, TooLong, paragraph, wrap};
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
 use crate::project::{LeverProject, ProjectInfo};
@@ -70,7 +70,8 @@ const MECH_PAD: f64 = 14.0;
 /// A region's title and scale lines.
 const HEADER: f64 = 17.0;
 
-pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
+/// Lays out sheet 1; refuses a project text too long for its place on the sheet.
+pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let m = &inp.project.mechanism;
     let lang = inp.info.language;
     let (l, c) = (LeverLabels::get(lang), Common::get(lang));
@@ -154,6 +155,10 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
     let side_by_side = 1.0 + w1 + 8.0 + w2 + 1.0 <= right_w;
     let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
     let notes_lines = notes_height(&inp.project.assumptions, right_w);
+    if notes_lines > NOTES_MAX_H {
+        let all = inp.project.assumptions.join(" ");
+        return Err(TooLong::new("mechanism.assumptions", &all, "notes above the title block", (right_w, NOTES_MAX_H)));
+    }
     let tables_top = frame::title_block_rect().y0 - 3.0 - notes_lines - tables_h - 4.0;
 
     // Velocity plans: every position, one common μ_v.
@@ -249,18 +254,21 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Composed {
             sheet_no: inp.sheet_no,
             sheet_count: inp.sheet_count,
         },
-    );
+    )?;
     groups.extend([fr, mech, vel, acc, tables, tb]);
     groups.extend(extra);
     let title =
         format!("{} — {}", inp.info.title, if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() });
-    Composed {
+    Ok(Composed {
         scene: Scene { width: A1_W, height: A1_H, title, groups },
         scales: Scales { mu_l, mu_v, mu_a },
         force_scales,
         trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
-    }
+    })
 }
+
+/// The notes (the exactness note and the assumptions) may take this much height, mm.
+const NOTES_MAX_H: f64 = 60.0;
 
 /// A region's title (5 mm) and its line of scale and formula (3.5 mm).
 fn region_header(g: &mut Group, placer: &mut Placer, r: Rect, title: &str, lines: &[LabelText]) {

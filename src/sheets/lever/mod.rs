@@ -11,7 +11,7 @@ pub mod results;
 
 use super::{COURSE, Context, Sheet, SheetError, SheetKind, SheetOutput};
 use crate::drawing::labels::Language;
-use crate::lever::analysis::{self, AnalysisError, ForceAnalysis, Kinematics};
+use crate::lever::analysis::{self, ForceAnalysis, Kinematics};
 use crate::project::{LeverProject, Project};
 use crate::report::NoteTable;
 use crate::report::lever::{ForceTables, KinematicTables, force_tables, kinematic_tables};
@@ -42,7 +42,7 @@ pub struct LeverBuild {
 }
 
 /// Analyses and composes sheet 1.
-pub fn build(ctx: &Context, p: &LeverProject) -> Result<LeverBuild, AnalysisError> {
+pub fn build(ctx: &Context, p: &LeverProject) -> Result<LeverBuild, SheetError> {
     let m = &p.mechanism;
     let kinematics = analysis::kinematics(m, &p.settings)?;
     let tables = kinematic_tables(m, &kinematics);
@@ -62,7 +62,7 @@ pub fn build(ctx: &Context, p: &LeverProject) -> Result<LeverBuild, AnalysisErro
         sheet_no: KIND.number,
         sheet_count: ctx.sheet_count,
     };
-    let composed = compose::compose(&input, &kinematics);
+    let composed = compose::compose(&input, &kinematics)?;
     Ok(LeverBuild { kinematics, forces, tables, composed })
 }
 
