@@ -107,6 +107,15 @@ mod tests {
         assert!((size_for_cap(5.0) - 6.86).abs() < 0.01, "STACK.md: 5 mm lettering is 6.86 mm font-size");
     }
 
+    /// The embedded bytes are the vendored font whose SHA-256 is recorded beside it.
+    #[test]
+    fn the_font_is_the_vendored_one() {
+        use sha2::{Digest, Sha256};
+        let recorded = include_str!("../assets/fonts/DejaVuSansCondensed.ttf.sha256");
+        let hash: String = Sha256::digest(BYTES).iter().map(|b| format!("{b:02x}")).collect();
+        assert_eq!(recorded.split_whitespace().next(), Some(hash.as_str()));
+    }
+
     /// Widths against the font's own numbers (DejaVu Sans Condensed, 2048 units per em):
     /// 'H' advances 1352 units, 'i' 512, 'ʻ' (U+02BB) 413.
     #[test]

@@ -115,7 +115,7 @@ fn p_m_at(p: &tmm_sheets::project::LeverProject, k: &analysis::Kinematics, phi: 
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(ProptestConfig { failure_persistence: None, ..ProptestConfig::with_cases(64) })]
     #[test]
     fn kinetostatic_p_m_is_the_power_balance_at_any_angle(which in 0usize..8, phi in 0.0f64..std::f64::consts::TAU) {
         let names = fixture_names();

@@ -208,7 +208,7 @@ fn balancing_force_supplies_the_rate_of_change_of_kinetic_energy_on_every_fixtur
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(32))]
+    #![proptest_config(ProptestConfig { failure_persistence: None, ..ProptestConfig::with_cases(32) })]
     #[test]
     fn the_energy_balance_holds_at_any_angle(which in 0usize..64, phi in 0.0f64..TAU) {
         let c = &cases()[which % cases().len()];

@@ -167,24 +167,50 @@ fn reference_dir() -> std::path::PathBuf {
     root().join("sheets/worked-example")
 }
 
-/// Writes expected | actual | difference images for a failed comparison.
-fn write_failure_images(name: &str, expected: &str, actual: &str) -> String {
+/// Pixels of two renderings compared channel by channel: how many differ by more than
+/// `PIXEL_TOLERANCE` in some channel, and an image marking them (red on a faded actual).
+fn pixel_diff(expected: &[u8], actual: &[u8]) -> Result<(usize, Vec<u8>), String> {
+    use resvg::tiny_skia::Pixmap;
+    let e = Pixmap::decode_png(expected).map_err(|x| format!("expected PNG: {x}"))?;
+    let a = Pixmap::decode_png(actual).map_err(|x| format!("actual PNG: {x}"))?;
+    if (e.width(), e.height()) != (a.width(), a.height()) {
+        return Err(format!("size {}×{} vs {}×{}", e.width(), e.height(), a.width(), a.height()));
+    }
+    let mut diff = a.clone();
+    let mut count = 0;
+    for ((pe, pa), pd) in e.data().chunks(4).zip(a.data().chunks(4)).zip(diff.data_mut().chunks_mut(4)) {
+        let differs = pe.iter().zip(pa).any(|(x, y)| x.abs_diff(*y) > PIXEL_TOLERANCE);
+        let faded = 255 - (255 - pa[1]) / 4;
+        pd.copy_from_slice(&if differs { [255, 0, 0, 255] } else { [faded, faded, faded, 255] });
+        count += usize::from(differs);
+    }
+    Ok((count, diff.encode_png().map_err(|x| x.to_string())?))
+}
+
+/// A channel may differ this much (of 255) between renderings before a pixel counts.
+const PIXEL_TOLERANCE: u8 = 48;
+/// Share of the sheet's pixels that may differ: anti-aliasing of a different rasteriser
+/// build, not a moved line or a lost text.
+const PIXEL_SHARE: f64 = 5e-4;
+
+/// Writes expected, actual and difference images of a failed comparison to tests/failures/.
+fn write_failure_images(name: &str, expected: &[u8], actual: &[u8]) -> String {
     let dir = root().join("tests/failures");
     let _ = std::fs::create_dir_all(&dir);
-    let render = |svg: &str| {
-        let tree = raster::parse(svg).ok()?;
-        raster::png(&tree, 841.0, 594.0, 30.0).ok()
-    };
-    let (e, a) = (render(expected), render(actual));
-    if let (Some(e), Some(a)) = (&e, &a) {
-        let _ = std::fs::write(dir.join(format!("{name}-expected.png")), e);
-        let _ = std::fs::write(dir.join(format!("{name}-actual.png")), a);
+    let _ = std::fs::write(dir.join(format!("{name}-expected.png")), expected);
+    let _ = std::fs::write(dir.join(format!("{name}-actual.png")), actual);
+    match pixel_diff(expected, actual) {
+        Ok((count, image)) => {
+            let _ = std::fs::write(dir.join(format!("{name}-diff.png")), image);
+            format!("expected, actual and diff images written to {} ({count} pixels differ)", dir.display())
+        }
+        Err(e) => format!("expected and actual images written to {} ({e})", dir.display()),
     }
-    let differing = match (e, a) {
-        (Some(e), Some(a)) => e.iter().zip(&a).filter(|(x, y)| x != y).count() + e.len().abs_diff(a.len()),
-        _ => usize::MAX,
-    };
-    format!("expected and actual previews written to {} ({differing} PNG bytes differ)", dir.display())
+}
+
+fn preview(svg: &str, dpi: f64) -> Vec<u8> {
+    let tree = raster::parse(svg).unwrap();
+    raster::png(&tree, 841.0, 594.0, dpi).unwrap()
 }
 
 fn compare_or_update(file: &str, actual: &str) {
@@ -197,7 +223,11 @@ fn compare_or_update(file: &str, actual: &str) {
     let expected = std::fs::read_to_string(&path)
         .unwrap_or_else(|_| panic!("missing reference {}: run UPDATE=1 cargo test --test sheets", path.display()));
     if expected != actual {
-        let note = if file.ends_with(".svg") { write_failure_images(file, &expected, actual) } else { String::new() };
+        let note = if file.ends_with(".svg") {
+            write_failure_images(file, &preview(&expected, 30.0), &preview(actual, 30.0))
+        } else {
+            String::new()
+        };
         panic!(
             "{} differs from the reference; if the change is intended run UPDATE=1 cargo test --test sheets. {note}",
             path.display()
@@ -261,12 +291,22 @@ fn worked_example_matches_the_reference_sheets() {
     }
     let json = pipeline::results_json(&p, std::slice::from_ref(&r));
     compare_json_or_update("results.json", &json);
+    let (pdf, png) = pdf_and_png(&r, Some(60.0));
+    let png = png.unwrap();
     if std::env::var_os("UPDATE").is_some() {
-        let (pdf, png) = pdf_and_png(&r, Some(60.0));
         std::fs::write(reference_dir().join("sheet1.pdf"), pdf).unwrap();
-        std::fs::write(reference_dir().join("sheet1.png"), png.unwrap()).unwrap();
+        std::fs::write(reference_dir().join("sheet1.png"), &png).unwrap();
     }
     assert!(Path::new(&reference_dir().join("sheet1.pdf")).exists());
+    // The rendering, pixel by pixel: catches what the SVG text cannot (a font the renderer
+    // no longer finds, a changed rasteriser).
+    let expected = std::fs::read(reference_dir().join("sheet1.png")).unwrap();
+    let (count, _) = pixel_diff(&expected, &png).unwrap_or_else(|e| panic!("sheet1.png: {e}"));
+    let pixels = 1987.0 * 1403.0;
+    if count as f64 > PIXEL_SHARE * pixels {
+        let note = write_failure_images("sheet1.png", &expected, &png);
+        panic!("sheet1.png differs from the reference in {count} pixels; {note}");
+    }
 }
 
 /// Latin words a Russian sheet must not show: a run of two or more Latin letters with a
@@ -352,4 +392,35 @@ fn xml_special_characters_in_user_text_are_escaped() {
     let (mut paths, mut texts) = (0, 0);
     count_usvg(tree.root(), &mut paths, &mut texts);
     assert!(texts > 100);
+}
+
+/// φ1 over a turn, for the layout sweep (the assigned position moves the thick drawing, the
+/// force drawings and their polygons).
+const PHI1_SWEEP: [f64; 4] = [10.0, 100.0, 190.0, 280.0];
+
+/// Every fixture in every language at several φ1: nothing leaves its region, no text
+/// overlaps another.
+#[test]
+fn the_layout_holds_for_every_fixture_language_and_phi1() {
+    let mut failures = Vec::new();
+    for name in fixture_names() {
+        for lang in Language::ALL {
+            for phi1 in PHI1_SWEEP {
+                let mut p = fixture(&name);
+                p.info.language = lang;
+                p.lever.as_mut().unwrap().settings.assigned_deg = Some(phi1);
+                let label = format!("{name} {lang:?} φ1 = {phi1}°");
+                match pipeline::build(&p, &[]) {
+                    Ok(mut b) => {
+                        let scene = b.remove(0).output.scene;
+                        if let Err(e) = std::panic::catch_unwind(|| check_layout(&label, &scene)) {
+                            failures.push(e.downcast_ref::<String>().cloned().unwrap_or(label));
+                        }
+                    }
+                    Err(e) => failures.push(format!("{label}: {e:#}")),
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{} layouts fail:\n{}", failures.len(), failures.join("\n"));
 }
