@@ -1,6 +1,7 @@
 //! Benchmarks (`cargo bench`): the exact solver over a full turn, the force analysis,
 //! sheet 1 to SVG, and SVG to PDF and PNG, on the guide's worked example (the six-bar
 //! vibrating conveyor).
+#![allow(clippy::disallowed_methods)]
 
 use std::f64::consts::TAU;
 use tmm_sheets::lever::{State, analysis, kinetostatics};

@@ -1,5 +1,7 @@
 //! Property tests over random mechanisms and angles, and the crank-slider against its
 //! closed-form textbook expressions (an independent reference).
+// Tests compute their references with the platform's math; only src/ must not (clippy.toml).
+#![allow(clippy::disallowed_methods)]
 
 use kurbo::Vec2;
 use proptest::prelude::*;

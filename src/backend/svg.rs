@@ -7,6 +7,7 @@ use super::BackendError;
 use crate::drawing::path::{Path, Seg};
 use crate::drawing::scene::{Anchor, Item, LineType, Pen, Scene, Text};
 use crate::font;
+use crate::num::math;
 use std::f64::consts::PI;
 use std::fmt::Write;
 
@@ -70,7 +71,7 @@ fn path_d(p: &Path) -> Result<String, BackendError> {
                 write!(d, "C{} {} {} {} {} {}", num(a.x)?, num(a.y)?, num(b.x)?, num(b.y)?, num(c.x)?, num(c.y)?)
             }
             Seg::Arc(a) => {
-                let end = a.center + kurbo::Vec2::from_angle(a.start_angle + a.sweep_angle) * a.radii.x;
+                let end = a.center + math::from_angle(a.start_angle + a.sweep_angle) * a.radii.x;
                 let large = u8::from(a.sweep_angle.abs() > PI);
                 // Paper y points down, so a growing angle is SVG's positive (clockwise) sweep.
                 let sweep = u8::from(a.sweep_angle > 0.0);

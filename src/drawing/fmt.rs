@@ -1,6 +1,7 @@
 //! Numbers as the sheets print them: decimal comma in Uzbek and Russian, point in English.
 
 use crate::drawing::labels::Language;
+use crate::num::math;
 
 /// A value with about four significant digits (three decimals below 10).
 pub fn value(x: f64, lang: Language) -> String {
@@ -28,7 +29,7 @@ pub fn scientific(x: f64, lang: Language) -> String {
     if x == 0.0 {
         return "0".into();
     }
-    let e = x.abs().log10().floor() as i32;
+    let e = math::log10(x.abs()).floor() as i32;
     let mantissa = x / 10f64.powi(e);
     const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
     let exp: String = e.abs().to_string().chars().map(|c| SUP[c.to_digit(10).expect("a digit") as usize]).collect();

@@ -5,7 +5,8 @@
 //! Every approximation of a curve by these pieces states its accuracy in paper mm where it
 //! is made (a trajectory's fit, an arc never: arcs are exact).
 
-use kurbo::{Arc, BezPath, CubicBez, Point, Rect, Shape, Vec2};
+use crate::num::math;
+use kurbo::{Arc, BezPath, CubicBez, Point, Rect, Shape};
 
 /// How far the Bézier form of an arc may stray from the arc for measuring (mm).
 pub const ARC_MEASURE_ACCURACY: f64 = 1e-4;
@@ -29,7 +30,7 @@ pub struct Path {
 /// A point on a circle of `center` and radius `r` at `angle` (paper angles: y down, so a
 /// growing angle turns clockwise on the sheet).
 pub fn on_circle(center: Point, r: f64, angle: f64) -> Point {
-    center + Vec2::from_angle(angle) * r
+    center + math::from_angle(angle) * r
 }
 
 impl Path {
@@ -107,11 +108,12 @@ impl Path {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::num::math::Norm;
 
     #[test]
     fn an_arc_ends_where_its_sweep_takes_it_and_is_bounded_by_its_circle() {
         let p = Path::arc(Point::new(10.0, 10.0), 5.0, 0.0, std::f64::consts::FRAC_PI_2);
-        assert!((p.end() - Point::new(10.0, 15.0)).hypot() < 1e-12);
+        assert!((p.end() - Point::new(10.0, 15.0)).norm() < 1e-12);
         let bb = p.bbox();
         assert!((bb.x1 - 15.0).abs() < 1e-3 && (bb.y1 - 15.0).abs() < 1e-3 && (bb.x0 - 10.0).abs() < 1e-3, "{bb:?}");
     }

@@ -2,6 +2,7 @@
 //! and staying inside a region.
 
 use super::scene::{Anchor, Text};
+use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
@@ -42,7 +43,7 @@ impl Placer {
 
     /// A free box of `w` × `ht` beside `anchor` (see [`Placer::place`]), now taken.
     pub fn place_box(&mut self, anchor: Point, pref: Vec2, w: f64, ht: f64) -> Rect {
-        let base = if pref.hypot() > tol::PAPER { pref.normalize() } else { Vec2::new(1.0, -1.0).normalize() };
+        let base = if pref.norm() > tol::PAPER { pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
         let mut first = None;
         for dist in [GAP, GAP + 1.5, GAP + 3.5, GAP + 6.0, GAP + 9.0, GAP + 13.0, GAP + 18.0, GAP + 24.0] {
             for ang in [0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0] {
@@ -63,6 +64,6 @@ impl Placer {
 }
 
 fn rotate(v: Vec2, deg: f64) -> Vec2 {
-    let (s, c) = deg.to_radians().sin_cos();
+    let (s, c) = math::sin_cos(deg.to_radians());
     Vec2::new(c * v.x - s * v.y, s * v.x + c * v.y)
 }

@@ -1,6 +1,7 @@
 //! Scale factors. Lengths use the scales of GOST 2.302; plans use the course's round
 //! factors {1, 2, 2.5, 4, 5}·10ⁿ.
 
+use crate::num::math;
 use crate::num::tol;
 
 const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
@@ -23,7 +24,7 @@ pub fn round_up(x: f64) -> f64 {
     if !(x.is_finite() && x > 0.0) {
         return 1.0;
     }
-    let mut e = x.log10().floor() as i32 - 1;
+    let mut e = math::log10(x).floor() as i32 - 1;
     loop {
         let p = 10f64.powi(e);
         for m in MANTISSAS {

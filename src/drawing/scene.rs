@@ -4,6 +4,7 @@
 //! only serialise a scene; they never compute geometry or choose scales.
 
 pub use super::path::{Path, Seg};
+use crate::num::math;
 use kurbo::{Point, Rect, Vec2};
 
 /// GOST 2.303 line types.
@@ -93,7 +94,7 @@ impl Text {
 }
 
 fn rotated_bbox(r: Rect, about: Point, deg: f64) -> Rect {
-    let (s, c) = (-deg.to_radians()).sin_cos();
+    let (s, c) = math::sin_cos(-deg.to_radians());
     let rot = |p: Point| {
         let d = p - about;
         about + Vec2::new(c * d.x - s * d.y, s * d.x + c * d.y)

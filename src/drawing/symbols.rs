@@ -2,6 +2,7 @@
 
 use super::path::{Path, on_circle};
 use super::scene::{Group, Pen, THIN};
+use crate::num::math::Norm;
 use crate::num::tol;
 use kurbo::{Point, Vec2};
 
@@ -11,7 +12,7 @@ pub const ARROW_HALF: f64 = 0.55;
 
 /// Adds a filled arrowhead with its tip at `tip`, pointing along `dir`.
 pub fn arrowhead(g: &mut Group, tip: Point, dir: Vec2) {
-    let len = dir.hypot();
+    let len = dir.norm();
     if len < tol::PAPER {
         return;
     }
@@ -25,7 +26,7 @@ pub fn arrowhead(g: &mut Group, tip: Point, dir: Vec2) {
 /// get a shorter head so the arrow never points backwards; zero vectors draw nothing.
 pub fn vector(g: &mut Group, a: Point, b: Point, pen: Pen) {
     let d = b - a;
-    let len = d.hypot();
+    let len = d.norm();
     if len < tol::PAPER_INVISIBLE {
         return;
     }
@@ -54,7 +55,7 @@ pub fn frame_pivot(g: &mut Group, c: Point, r: f64) {
 /// Short 45° strokes along `a → b` on the side `side` (a unit vector): the frame symbol.
 pub fn hatch(g: &mut Group, a: Point, b: Point, side: Vec2, step: f64) {
     let d = b - a;
-    let len = d.hypot();
+    let len = d.norm();
     if len < tol::PAPER {
         return;
     }

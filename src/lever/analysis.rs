@@ -6,6 +6,7 @@ use super::linkage::{Mechanism, PointId, State};
 use super::motion::{self, Motion, MotionError, Start};
 use super::structure::{self, Structure};
 use super::trajectory;
+use crate::num::math::Norm;
 use crate::num::tol;
 use kurbo::Vec2;
 use std::f64::consts::TAU;
@@ -155,7 +156,7 @@ fn trajectories(m: &Mechanism, motion: &Motion) -> Result<Vec<Trajectory>, Analy
     let (lo, hi) = all.fold((Vec2::splat(f64::MAX), Vec2::splat(f64::MIN)), |(lo, hi), p| {
         (Vec2::new(lo.x.min(p.x), lo.y.min(p.y)), Vec2::new(hi.x.max(p.x), hi.y.max(p.y)))
     });
-    let tol = TRAJECTORY_FIT * (hi - lo).hypot();
+    let tol = TRAJECTORY_FIT * (hi - lo).norm();
     m.mass_centres
         .iter()
         .map(|&(_, point)| {

@@ -6,6 +6,7 @@
 //! derivative equations (2×2 linear systems), never from finite differences.
 
 use super::kin::{Kin, LinkKin};
+use crate::num::math;
 use crate::num::tol::DEAD_POINT_SIN;
 use kurbo::Vec2;
 
@@ -32,7 +33,7 @@ pub struct DyadSolution {
 /// constant signed angular velocity `omega` (counter-clockwise positive, ε = 0).
 #[inline]
 pub fn crank(pivot: &Kin, length: f64, theta: f64, omega: f64) -> (Kin, LinkKin) {
-    let r = Vec2::from_angle(theta) * length;
+    let r = math::from_angle(theta) * length;
     let pin = Kin { p: pivot.p + r, v: pivot.v + r.turn_90() * omega, a: pivot.a - r * (omega * omega) };
     (pin, LinkKin { dir: r / length, omega, eps: 0.0 })
 }
@@ -62,7 +63,7 @@ pub fn rrr(p: &Kin, q: &Kin, l_pb: f64, l_qb: f64, branch: f64) -> Result<DyadSo
     let cross = r1.cross(r2); // l_pb·l_qb·sin(transmission angle)
     if cross.abs() < DEAD_POINT_SIN * l_pb * l_qb {
         let sin_mu = cross / (l_pb * l_qb);
-        return Err(DyadFailure::DeadPoint { transmission_deg: sin_mu.asin().to_degrees() });
+        return Err(DyadFailure::DeadPoint { transmission_deg: math::asin(sin_mu).to_degrees() });
     }
     let inv_det = -1.0 / cross; // reciprocal of the determinant of [perp r1, −perp r2]
     // v_P + ω1·perp(r1) = v_Q + ω2·perp(r2)
@@ -93,7 +94,7 @@ pub fn rrp(p: &Kin, l: f64, through: Vec2, dir: Vec2, branch: f64) -> Result<Dya
     let r = d - p.p;
     let along = r.dot(dir); // l·sin(transmission): a rod perpendicular to its guide is the dead point
     if along.abs() < DEAD_POINT_SIN * l {
-        return Err(DyadFailure::DeadPoint { transmission_deg: (along / l).asin().to_degrees() });
+        return Err(DyadFailure::DeadPoint { transmission_deg: math::asin(along / l).to_degrees() });
     }
     let inv_det = -1.0 / along; // reciprocal of the determinant of [u, −perp r] = −u·r
     // ṡ·u − ω·perp(r) = v_P ;  s̈·u − ε·perp(r) = a_P − ω²·r

@@ -1,5 +1,6 @@
 //! Kinematic state of points and links, in SI units (m, m/s, m/s², rad, rad/s, rad/s²).
 
+use crate::num::math::Norm;
 use kurbo::Vec2;
 
 /// Position, velocity and acceleration of a point.
@@ -30,7 +31,7 @@ pub struct LinkKin {
 impl LinkKin {
     /// Angle of the reference direction, radians in (−π, π].
     pub fn angle(&self) -> f64 {
-        self.dir.atan2()
+        self.dir.arg()
     }
 }
 

@@ -6,6 +6,7 @@
 
 use super::linkage::{Crank, LinkId, Mechanism, PointId, State, Step};
 use super::load::{Load, LoadValue};
+use crate::num::math::Norm;
 use crate::num::tol;
 use kurbo::Vec2;
 
@@ -183,7 +184,7 @@ fn owner(m: &Mechanism, point: PointId, group_links: [LinkId; 2]) -> usize {
 }
 
 fn unit(v: Vec2) -> (Vec2, f64) {
-    let l = v.hypot();
+    let l = v.norm();
     (v / l, l)
 }
 
@@ -330,7 +331,7 @@ fn solve_group(
                 polygon_pair(e0, normal, t0 + sum0 + sum1).ok_or_else(|| singular("rod and guide normal"))?;
             // The guide's reaction passes at h along the guide from D, so that the slider's
             // moments about D balance: h·N + M_D = 0 (a vanishing N acts anywhere: at D).
-            let scale = sum0.hypot() + sum1.hypot() + t0.hypot() + n0.abs();
+            let scale = sum0.norm() + sum1.norm() + t0.norm() + n0.abs();
             let h = if nf.abs() > tol::ZERO_FORCE * scale { -mom1 / nf } else { 0.0 };
             let r0 = react(applied, owner(m, jp, g.links), l0, p(jp), Some(jp), e0 * n0 + t0);
             let r1 = react(applied, FRAME, l1, pd + dir * h, if h == 0.0 { Some(d) } else { None }, normal * nf);
@@ -349,7 +350,7 @@ fn solve_group(
             let (sum1, mom1) = resultant(applied, inertia, l1, pc);
             // Block about A: h·N + M_A = 0; kulisa about C: (l + h)·N = M_C; hence l·N = M_C + M_A.
             let nf = (mom1 + mom0) / len;
-            let scale = sum0.hypot() + sum1.hypot() + (mom0.abs() + mom1.abs()) / len;
+            let scale = sum0.norm() + sum1.norm() + (mom0.abs() + mom1.abs()) / len;
             let h = if nf.abs() > tol::ZERO_FORCE * scale { -mom0 / nf } else { 0.0 };
             let inner = react(applied, l1, l0, pa + e * h, if h == 0.0 { Some(a) } else { None }, normal * nf);
             let r0 = react(applied, owner(m, a, g.links), l0, pa, Some(a), -(sum0 + inner.force));
@@ -386,10 +387,10 @@ fn solve_crank(
     let Crank { pivot, pin, link, .. } = m.crank();
     let (po, pa) = (s.points[pivot].p, s.points[pin].p);
     let v_a = s.points[pin].v;
-    if v_a.hypot() == 0.0 {
+    if v_a.norm() == 0.0 {
         return Err(ForceError::CrankAtRest);
     }
-    let dir = v_a.normalize();
+    let dir = v_a.unit();
     let known: Vec<Applied> = applied.iter().filter(|a| a.on == link).copied().collect();
     let (sum, mom) = resultant(applied, inertia, link, po);
     let arm = (pa - po).cross(dir);
@@ -404,7 +405,7 @@ fn solve_crank(
         polygon: Polygon { group: None, terms, split, inner: None },
         p_m,
         dir,
-        l: (pa - po).hypot(),
+        l: (pa - po).norm(),
         a: pin,
         v_a,
     })
@@ -422,7 +423,7 @@ fn power_balance(s: &State, applied: &[Applied], inertia: &[InertiaLoad], v_a: V
         .map(|a| a.force.dot(s.points[a.point.expect("active forces act at points")].v))
         .sum();
     let moments: f64 = inertia.iter().map(|i| i.moment * s.links[i.link].omega).sum();
-    -(forces + moments) / v_a.hypot()
+    -(forces + moments) / v_a.norm()
 }
 
 /// The Zhukovsky lever: every active force at its point's image on the velocity plan turned
@@ -456,7 +457,7 @@ fn zhukovsky(
     }
     let moments: Vec<f64> = lever.iter().map(|l| l.image.cross(l.force)).collect();
     let a_image = turn(s.points[pin].v);
-    let arm = a_image.cross(v_a.normalize());
+    let arm = a_image.cross(v_a.unit());
     let p = -moments.iter().sum::<f64>() / arm;
     let mut all = moments;
     all.push(arm * p);
@@ -468,7 +469,7 @@ fn zhukovsky(
 fn couple_points(m: &Mechanism, s: &State, link: LinkId) -> ((Vec2, Vec2), (Vec2, Vec2)) {
     let pts = &m.links[link].points;
     let k0 = s.points[pts[0]];
-    if let Some(&q) = pts.iter().skip(1).find(|&&q| (s.points[q].p - k0.p).hypot() > tol::SAME_POINT * m.size) {
+    if let Some(&q) = pts.iter().skip(1).find(|&&q| (s.points[q].p - k0.p).norm() > tol::SAME_POINT * m.size) {
         let k1 = s.points[q];
         return ((k0.p, k0.v), (k1.p, k1.v));
     }

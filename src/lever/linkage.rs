@@ -3,6 +3,7 @@
 
 use super::dyads::{self, DyadFailure};
 use super::kin::{Kin, LinkKin};
+use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::Vec2;
 
@@ -295,7 +296,7 @@ impl Mechanism {
             Step::Rpr { .. } => vec![],
             Step::Attach { distance, .. } => vec![distance.abs()],
         });
-        let frame = self.frame.iter().flat_map(|a| self.frame.iter().map(move |b| (a.1 - b.1).hypot()));
+        let frame = self.frame.iter().flat_map(|a| self.frame.iter().map(move |b| (a.1 - b.1).norm()));
         lengths.chain(frame).fold(0.0, f64::max)
     }
 
@@ -306,11 +307,11 @@ impl Mechanism {
         self.steps.iter().enumerate().filter_map(move |(i, step)| {
             let margin = match *step {
                 Step::Rrr { p: a, q, l_pb, l_qb, .. } => {
-                    let d = (p(q) - p(a)).hypot();
+                    let d = (p(q) - p(a)).norm();
                     (d - (l_pb - l_qb).abs()).min(l_pb + l_qb - d) / (l_pb + l_qb)
                 }
                 Step::Rrp { p: a, through, dir, length, .. } => (length - (p(a) - through).cross(dir).abs()) / length,
-                Step::Rpr { a, c, .. } => (p(a) - p(c)).hypot() / self.size,
+                Step::Rpr { a, c, .. } => (p(a) - p(c)).norm() / self.size,
                 Step::Crank { .. } | Step::Attach { .. } => return None,
             };
             Some((i, margin))
@@ -336,7 +337,7 @@ impl Rotate for Vec2 {
         if angle == 0.0 {
             return self;
         }
-        let (s, c) = angle.sin_cos();
+        let (s, c) = math::sin_cos(angle);
         Vec2::new(c * self.x - s * self.y, s * self.x + c * self.y)
     }
 }

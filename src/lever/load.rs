@@ -1,6 +1,7 @@
 //! Loads on sliders that depend on where the slider is in its stroke and which way it
 //! moves: gas forces read from an indicator diagram, and the resistance of a working stroke.
 
+use crate::num::math::Norm;
 use crate::num::tol;
 use kurbo::Vec2;
 
@@ -94,7 +95,7 @@ impl Load {
     /// Fixes the stroke from the extremes `lo` < `hi` of p·axis over a turn.
     pub fn set_stroke(&mut self, lo: f64, hi: f64, crank_pivot: Vec2) {
         let at = |t: f64| self.through + self.axis * (t - self.through.dot(self.axis));
-        let (lo, hi) = if self.from_head && (at(hi) - crank_pivot).hypot() > (at(lo) - crank_pivot).hypot() {
+        let (lo, hi) = if self.from_head && (at(hi) - crank_pivot).norm() > (at(lo) - crank_pivot).norm() {
             self.axis = -self.axis;
             (-hi, -lo)
         } else {
@@ -111,7 +112,7 @@ impl Load {
         let speed = v.dot(self.axis);
         // At a dead centre (speed ≈ 0 on the scale √(a·H)) the slider moves next the way its
         // acceleration points.
-        let at_rest = speed.abs() <= tol::ZERO_SPEED * (a.hypot() * self.stroke).sqrt();
+        let at_rest = speed.abs() <= tol::ZERO_SPEED * (a.norm() * self.stroke).sqrt();
         let going = if at_rest { a.dot(self.axis) } else { speed };
         let branch = if going >= 0.0 { 0 } else { 1 };
         let b = &self.branches[branch];

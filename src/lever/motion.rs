@@ -8,6 +8,7 @@
 
 use super::dyads::DyadFailure;
 use super::linkage::{Mechanism, Output, PointId, State, StepFailure};
+use crate::num::math::{self, Norm};
 use crate::num::roots::{self, RootError};
 use crate::num::tol;
 use kurbo::Vec2;
@@ -207,7 +208,7 @@ fn swing_reference(m: &Mechanism, states: &[(f64, State)]) -> Vec2 {
         Output::Rocker { link } => {
             let sum = states.iter().fold(Vec2::ZERO, |acc, (_, s)| acc + s.links[link].dir);
             // A sum of unit vectors that cancels out: the link turns fully, any reference does.
-            if sum.hypot() > tol::SAME_POINT * states.len() as f64 { sum.normalize() } else { Vec2::new(1.0, 0.0) }
+            if sum.norm() > tol::SAME_POINT * states.len() as f64 { sum.unit() } else { Vec2::new(1.0, 0.0) }
         }
         Output::Slider { .. } => Vec2::new(1.0, 0.0),
     }
@@ -218,7 +219,7 @@ fn output_coordinate(m: &Mechanism, s: &State, reference: Vec2) -> f64 {
     match m.output {
         Output::Rocker { link } => {
             let d = s.links[link].dir;
-            reference.cross(d).atan2(reference.dot(d))
+            math::atan2(reference.cross(d), reference.dot(d))
         }
         Output::Slider { .. } => m.output_value(s).0,
     }

@@ -6,6 +6,7 @@
 
 use super::kin::relative;
 use super::linkage::{LinkId, Mechanism, PointId, State, Step};
+use crate::num::math::Norm;
 use kurbo::Vec2;
 
 /// A relative motion the note tabulates: point `x` relative to point `y`.
@@ -105,7 +106,7 @@ impl Plan {
     /// Largest distance of any image or vector end from the pole.
     pub fn extent(&self) -> f64 {
         let ends = self.segs.iter().flat_map(|s| [s.from, s.to]);
-        ends.chain(self.images.iter().map(|i| i.at)).map(Vec2::hypot).fold(0.0, f64::max)
+        ends.chain(self.images.iter().map(|i| i.at)).map(Norm::norm).fold(0.0, f64::max)
     }
 }
 
@@ -196,14 +197,14 @@ pub fn relation_values(m: &Mechanism, s: &State) -> Vec<RelationValues> {
                 let a_rel = x.a - y.a - cor;
                 return RelationValues {
                     name: r.name(m),
-                    v: v_rel.hypot(),
-                    a_n: cor.hypot(),
-                    a_t: a_rel.hypot(),
+                    v: v_rel.norm(),
+                    a_n: cor.norm(),
+                    a_t: a_rel.norm(),
                     sliding: true,
                 };
             }
             let (v, an, at) = relative(x.p - y.p, link);
-            RelationValues { name: r.name(m), v: v.hypot(), a_n: an.hypot(), a_t: at.hypot(), sliding: false }
+            RelationValues { name: r.name(m), v: v.norm(), a_n: an.norm(), a_t: at.norm(), sliding: false }
         })
         .collect()
 }

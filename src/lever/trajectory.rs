@@ -4,6 +4,7 @@
 
 use super::linkage::{Mechanism, PointId};
 use super::motion::{self, Motion, MotionError};
+use crate::num::math::Norm;
 use kurbo::{CubicBez, ParamCurve, Point, Vec2};
 use std::f64::consts::TAU;
 
@@ -71,7 +72,7 @@ fn piece(
     let mut mid = None;
     for t in [0.25, 0.5, 0.75] {
         let e = exact(a + t * h)?;
-        worst = worst.max((c.eval(t) - e.0.to_point()).hypot());
+        worst = worst.max((c.eval(t) - e.0.to_point()).norm());
         if t == 0.5 {
             mid = Some(e);
         }

@@ -1,6 +1,8 @@
 //! Numerical ground rules shared by every domain: the limits of accepted input, named
-//! tolerances with their units, and the one root finder.
+//! tolerances with their units, the one root finder, and the mathematical functions whose
+//! results reach an output (platform-independent).
 
 pub mod limits;
+pub mod math;
 pub mod roots;
 pub mod tol;

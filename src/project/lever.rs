@@ -11,6 +11,7 @@ use crate::lever::kinetostatics::ForceModel;
 use crate::lever::linkage::{Group, Link, LinkId, LinkKind, Mechanism, Output, PointId, Step};
 use crate::lever::{DyadKind, Settings, Start};
 use crate::num::limits;
+use crate::num::math::{self, Norm};
 use kurbo::Vec2;
 use serde_saphyr::{Location, Spanned};
 
@@ -193,7 +194,7 @@ fn plausibility(spec: &MechanismSpec, warnings: &mut Vec<Warning>) {
         }
     }
     for f in &spec.frame {
-        let r = f.at[0].0.hypot(f.at[1].0);
+        let r = Vec2::new(f.at[0].0, f.at[1].0).norm();
         if r > limits::LENGTH_LOOKS_LIKE_MM {
             warnings.push(warning(
                 at(&f.name),
@@ -249,7 +250,7 @@ fn add_group(
             let pt = b.new_point(&r.point, &format!("{field}.rrp.point"))?;
             let l0 = b.new_link(r.links[0], LinkKind::Coupler, vec![p, pt], loc, &format!("{field}.rrp.links[0]"))?;
             let l1 = b.new_link(r.links[1], LinkKind::Slider, vec![pt], loc, &format!("{field}.rrp.links[1]"))?;
-            let dir = Vec2::from_angle(r.guide.angle_deg.0.to_radians());
+            let dir = math::from_angle(r.guide.angle_deg.0.to_radians());
             let through = Vec2::new(r.guide.through[0].0, r.guide.through[1].0);
             let branch = if r.branch == Along::Forward { 1.0 } else { -1.0 };
             b.m.steps.push(Step::Rrp { p, d: pt, length: r.length.0, through, dir, branch, links: [l0, l1] });

@@ -8,6 +8,7 @@ use crate::lever::linkage::{LinkKind, Mechanism};
 use crate::lever::load::LoadKind;
 use crate::lever::plans::{RelationValues, relation_values};
 use crate::lever::{Kin, LinkKin};
+use crate::num::math::Norm;
 
 /// Points that move, without kulisa images: a kulisa image moves like the block's pin only
 /// in position; its speed is tabulated through the relation rows instead.
@@ -58,7 +59,7 @@ fn table(name: &str, positions: &[&Position], rows: Vec<Row>) -> NumTable {
 
 /// Table 1: speeds of points, relative speeds and angular velocities, all positions.
 pub fn velocity_table(m: &Mechanism, positions: &[&Position]) -> NumTable {
-    let mut rows = point_rows(m, positions, "v", "m/s", |k| k.v.hypot());
+    let mut rows = point_rows(m, positions, "v", "m/s", |k| k.v.norm());
     for rel in relation_columns(m, positions) {
         rows.push(row("v", rel[0].name.clone(), "m/s", rel.iter().map(|x| x.v).collect()));
     }
@@ -70,7 +71,7 @@ pub fn velocity_table(m: &Mechanism, positions: &[&Position]) -> NumTable {
 /// components and angular accelerations, at the plan positions. The crank turns
 /// uniformly (ε1 = 0), so it has no ε row.
 pub fn acceleration_table(m: &Mechanism, positions: &[&Position]) -> NumTable {
-    let mut rows = point_rows(m, positions, "a", "m/s²", |k| k.a.hypot());
+    let mut rows = point_rows(m, positions, "a", "m/s²", |k| k.a.norm());
     for rel in relation_columns(m, positions) {
         let (s1, s2) = if rel[0].sliding { ("aᵏ", "aʳ") } else { ("aⁿ", "aᵗ") };
         rows.push(row(s1, rel[0].name.clone(), "m/s²", rel.iter().map(|x| x.a_n).collect()));
@@ -132,8 +133,8 @@ pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {
         rows: vec![
             per("m", "", "kg", &|i| i.mass),
             per("G", "", "N", &|i| i.weight),
-            per("a", "S", "m/s²", &|i| i.a_s.hypot()),
-            per("P", "i", "N", &|i| i.force.hypot()),
+            per("a", "S", "m/s²", &|i| i.a_s.norm()),
+            per("P", "i", "N", &|i| i.force.norm()),
             per("ε", "", "1/s²", &|i| i.eps.abs()),
             per("J", "S", "kg·m²", &|i| i.j),
             per("M", "i", "N·m", &|i| i.moment.abs()),
@@ -142,13 +143,13 @@ pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {
     let reactions = NumTable {
         name: "reactions".into(),
         columns: vec!["x".into(), "y".into(), "|R|".into()],
-        rows: reactions(m, f).into_iter().map(|(sub, r)| row("R", sub, "N", vec![r.x, r.y, r.hypot()])).collect(),
+        rows: reactions(m, f).into_iter().map(|(sub, r)| row("R", sub, "N", vec![r.x, r.y, r.norm()])).collect(),
     };
     let mut rows = vec![];
     for (load, v) in fa.model.loads.iter().zip(&f.loads) {
         let n = m.links[load.link].number;
         rows.push(row("S/H", n.to_string(), "", vec![v.s]));
-        rows.push(row("P", format!("{}{n}", load_letter(load.kind)), "N", vec![v.force.hypot()]));
+        rows.push(row("P", format!("{}{n}", load_letter(load.kind)), "N", vec![v.force.norm()]));
     }
     rows.extend([
         row("P", "m", "N", vec![f.p_m]),

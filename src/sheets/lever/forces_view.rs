@@ -19,6 +19,7 @@ use crate::lever::kinetostatics::{FRAME, Kind, Part, Polygon};
 use crate::lever::linkage::{LinkKind, Mechanism, State};
 use crate::lever::load::{Load, Stroke};
 use crate::lever::plans::{Plan, velocity_plan};
+use crate::num::math::Norm;
 use crate::num::tol;
 use crate::report::lever::load_letter;
 use kurbo::{Point, Rect, Vec2};
@@ -202,7 +203,7 @@ fn bbox_of(pts: &[Vec2]) -> Rect {
 
 fn equation_lines(inp: &ForcesInput, poly: &Polygon, width: f64) -> Vec<Vec<LabelText>> {
     let terms: Vec<LabelText> =
-        poly.terms.iter().filter(|t| t.force.hypot() > 0.0).map(|t| force_label(inp, t.kind, t.on)).collect();
+        poly.terms.iter().filter(|t| t.force.norm() > 0.0).map(|t| force_label(inp, t.kind, t.on)).collect();
     let mut lines: Vec<Vec<LabelText>> = vec![vec![]];
     let mut w = 0.0;
     for (i, t) in terms.iter().enumerate() {
@@ -322,7 +323,7 @@ fn force_arrow(
     unit: f64,
     small: bool,
 ) {
-    let f = force.hypot();
+    let f = force.norm();
     if f <= 0.0 {
         return;
     }
@@ -458,7 +459,7 @@ fn draw_group_geometry(
         let (main, sub) = split_name(m.name(q));
         place_label(g, placer, at, Vec2::new(-1.0, -1.0), &LabelText::new(main, sub));
     }
-    let unit = poly.terms.iter().map(|t| t.force.hypot()).fold(0.0, f64::max) / ARROW_MAX;
+    let unit = poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max) / ARROW_MAX;
     for t in &poly.terms {
         force_arrow(g, placer, inp, p(t.at), (t.kind, t.on, t.force), unit.max(f64::MIN_POSITIVE), false);
     }
@@ -481,7 +482,7 @@ fn draw_polygon(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, poly: &Po
     let pts = &layout.chain;
     for (k, t) in poly.terms.iter().enumerate() {
         let (a, b) = (p(pts[k]), p(pts[k + 1]));
-        if (b - a).hypot() < tol::PAPER_INVISIBLE {
+        if (b - a).norm() < tol::PAPER_INVISIBLE {
             continue;
         }
         vector(g, a, b, VECTOR);
@@ -490,7 +491,7 @@ fn draw_polygon(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, poly: &Po
     }
     if let Some(inner) = &poly.inner {
         let (a, b) = (p(pts[poly.split]), p(pts[0]));
-        if (b - a).hypot() >= tol::PAPER_INVISIBLE {
+        if (b - a).norm() >= tol::PAPER_INVISIBLE {
             vector(g, a, b, DASHED);
             place_label(g, placer, a.midpoint(b), (b - a).turn_90(), &force_label(inp, inner.kind, inner.on));
         }
@@ -504,11 +505,11 @@ fn draw_lever(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, pl
     let plan_cell = Rect::new(r.x0, r.y0, r.x1, r.y1 - text_h);
     let pole = draw_plan_with(g, plan_cell, inp.l.lever_title(), plan, mu, "p", placer);
     let at = |v: Vec2| Point::new(pole.x + v.x / mu, pole.y - v.y / mu);
-    let unit = f.lever.iter().map(|l| l.force.hypot()).fold(f.p_m_lever.abs(), f64::max) / ARROW_MAX;
+    let unit = f.lever.iter().map(|l| l.force.norm()).fold(f.p_m_lever.abs(), f64::max) / ARROW_MAX;
     for l in &f.lever {
         if l.couple {
             let d = paper_dir(l.force);
-            vector(g, at(l.image), at(l.image) + d / d.hypot().max(f64::MIN_POSITIVE) * ARROW_MIN, THIN);
+            vector(g, at(l.image), at(l.image) + d / d.norm().max(f64::MIN_POSITIVE) * ARROW_MIN, THIN);
             continue;
         }
         force_arrow(g, placer, inp, at(l.image), (l.kind, l.on, l.force), unit.max(f64::MIN_POSITIVE), true);

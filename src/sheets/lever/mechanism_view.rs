@@ -9,6 +9,7 @@ use crate::drawing::symbols::{frame_pivot, hatch, slider, turn_arrow};
 use crate::drawing::text::LabelText;
 use crate::lever::analysis::{Kinematics, Position};
 use crate::lever::linkage::{LinkKind, Mechanism, PointId, Step};
+use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::{CubicBez, Point, Rect, Vec2};
 
@@ -38,8 +39,7 @@ impl View {
 /// Drawn length of a kulisa: given, or its longest reach to the block plus 15 %.
 fn kulisa_len(k: &Kinematics, c: PointId, a3: PointId, given: Option<f64>) -> f64 {
     given.unwrap_or_else(|| {
-        let reach =
-            k.positions.iter().map(|p| (p.state.points[a3].p - p.state.points[c].p).hypot()).fold(0.0, f64::max);
+        let reach = k.positions.iter().map(|p| (p.state.points[a3].p - p.state.points[c].p).norm()).fold(0.0, f64::max);
         reach * 1.15
     })
 }
@@ -53,7 +53,7 @@ pub fn world_extent(m: &Mechanism, k: &Kinematics, kulisa: &[(usize, Option<f64>
             if let Step::Rpr { c, a3, links, .. } = *st {
                 let given = kulisa.iter().find(|(l, _)| *l == links[1]).and_then(|x| x.1);
                 let len = kulisa_len(k, c, a3, given);
-                let d = (p.state.points[a3].p - p.state.points[c].p).normalize();
+                let d = (p.state.points[a3].p - p.state.points[c].p).unit();
                 pts.push(p.state.points[c].p + d * len);
             }
         }
@@ -155,7 +155,7 @@ impl MechanismView<'_> {
                 _ => {
                     if let Some((c, a3, given)) = self.kulisa_of(li) {
                         let len = kulisa_len(self.k, c, a3, given);
-                        let d = (st.points[a3].p - st.points[c].p).normalize();
+                        let d = (st.points[a3].p - st.points[c].p).unit();
                         g.line(p(c), self.view.p(st.points[c].p + d * len), pen);
                         continue;
                     }
@@ -252,7 +252,7 @@ impl MechanismView<'_> {
             };
             let lk = st.links[li];
             let along = self.view.dir(lk.dir);
-            let start = along.y.atan2(along.x).to_degrees() + 55.0;
+            let start = along.arg().to_degrees() + 55.0;
             for (value, r, sym) in [(lk.omega, 4.5, "ω"), (lk.eps, 7.0, "ε")] {
                 // Relative to the crank's ω1 and ω1²: a link at rest turns neither way.
                 let w1 = self.m.omega1.abs();
@@ -262,7 +262,7 @@ impl MechanismView<'_> {
                 }
                 turn_arrow(g, centre, r, start, 70.0, value > 0.0, THIN);
                 let end_ang = (start + if value > 0.0 { -70.0 } else { 70.0 }).to_radians();
-                let tip = centre + Vec2::new(end_ang.cos(), end_ang.sin()) * r;
+                let tip = centre + math::from_angle(end_ang) * r;
                 let label = format!("{sym}{}", link.number);
                 let t = placer.place(tip, tip - centre, &label, 3.5);
                 LabelText::new(sym, link.number.to_string()).draw(g, t.at, 3.5, crate::drawing::scene::Anchor::Middle);

@@ -9,6 +9,7 @@ use crate::drawing::place::Placer;
 use crate::drawing::scene::{Anchor, DASHED, Group, Pen, THIN, Text, VECTOR};
 use crate::drawing::symbols::vector;
 use crate::lever::plans::{Plan, SegKind};
+use crate::num::math::Norm;
 use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
@@ -106,7 +107,7 @@ pub fn draw_plan_with(
     let mut clusters: Vec<(Point, Vec<String>)> = vec![(pole_p, vec![pole.to_string()])];
     for img in &plan.images {
         let at = p(img.at);
-        match clusters.iter_mut().find(|(c, _)| (*c - at).hypot() < SHARED_LABEL) {
+        match clusters.iter_mut().find(|(c, _)| (*c - at).norm() < SHARED_LABEL) {
             Some((_, names)) => names.push(img.label.clone()),
             None => clusters.push((at, vec![img.label.clone()])),
         }
@@ -119,7 +120,7 @@ pub fn draw_plan_with(
         if *at != pole_p {
             g.dot(*at, 0.35);
         }
-        let pref = if (*at - centre).hypot() < tol::PAPER { Vec2::new(-1.0, 1.0) } else { *at - centre };
+        let pref = if (*at - centre).norm() < tol::PAPER { Vec2::new(-1.0, 1.0) } else { *at - centre };
         g.text(placer.place(*at, pref, &names.join("="), 3.5));
     }
     pole_p

@@ -1,0 +1,78 @@
+//! The mathematical functions whose results reach an output, from the `libm` crate (a port of
+//! musl's) rather than the platform's C library, so that a sheet's bytes do not depend on the
+//! operating system it is built on. `clippy.toml` forbids the platform versions in `src/`.
+//! Square roots need no such care: IEEE 754 rounds them exactly everywhere.
+
+use kurbo::Vec2;
+
+pub fn sin_cos(x: f64) -> (f64, f64) {
+    libm::sincos(x)
+}
+
+pub fn sin(x: f64) -> f64 {
+    libm::sin(x)
+}
+
+pub fn cos(x: f64) -> f64 {
+    libm::cos(x)
+}
+
+pub fn asin(x: f64) -> f64 {
+    libm::asin(x)
+}
+
+pub fn acos(x: f64) -> f64 {
+    libm::acos(x)
+}
+
+pub fn atan2(y: f64, x: f64) -> f64 {
+    libm::atan2(y, x)
+}
+
+pub fn log10(x: f64) -> f64 {
+    libm::log10(x)
+}
+
+/// The unit vector at `angle` radians from the x axis.
+pub fn from_angle(angle: f64) -> Vec2 {
+    let (s, c) = sin_cos(angle);
+    Vec2::new(c, s)
+}
+
+/// Lengths and directions of vectors through an exactly rounded square root.
+pub trait Norm {
+    /// √(x² + y²): inputs are limited to ±10⁹, so the squares cannot overflow.
+    fn norm(self) -> f64;
+    /// The vector divided by its length.
+    fn unit(self) -> Vec2;
+    /// Its angle from the x axis (the argument), radians in (−π, π].
+    fn arg(self) -> f64;
+}
+
+impl Norm for Vec2 {
+    fn norm(self) -> f64 {
+        self.hypot2().sqrt()
+    }
+
+    fn unit(self) -> Vec2 {
+        self / self.norm()
+    }
+
+    fn arg(self) -> f64 {
+        atan2(self.y, self.x)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_functions_agree_with_their_definitions() {
+        let v = from_angle(0.3);
+        assert!((v.norm() - 1.0).abs() < 1e-16 && (v.arg() - 0.3).abs() < 1e-16);
+        assert_eq!(Vec2::new(3.0, 4.0).norm(), 5.0);
+        assert_eq!(log10(1000.0), 3.0);
+        assert!((asin(sin(0.7)) - 0.7).abs() < 1e-15 && (acos(cos(0.7)) - 0.7).abs() < 1e-15);
+    }
+}
