@@ -2,7 +2,7 @@
 //! file per label set under `templates/labels/`: `common.yaml` for what every sheet shares
 //! (title block, units), one file per sheet for the rest.
 //!
-//! A label set is declared with [`label_set!`]: its keys become typed accessors, so a
+//! A label set is declared with [`crate::label_set!`]: its keys become typed accessors, so a
 //! misspelt key does not compile; a key with parameters, e.g. `position(k)`, takes them by
 //! name and fills the text's `{k}`. Loading checks that the file has exactly the declared
 //! keys, each in all three languages, with exactly the declared placeholders (tested for
