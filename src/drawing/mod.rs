@@ -11,6 +11,7 @@ pub mod frame;
 pub mod labels;
 pub mod path;
 pub mod place;
+pub mod plot;
 pub mod scale;
 pub mod scene;
 pub mod symbols;

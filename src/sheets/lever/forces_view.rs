@@ -9,6 +9,7 @@ use super::plans_view::{MARGIN, TITLE, draw_plan_with, plan_bbox};
 use crate::drawing::fmt;
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Placer;
+use crate::drawing::plot::{Axis, Plot};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text, VECTOR};
 use crate::drawing::symbols::{frame_pivot, slider, turn_arrow, vector};
@@ -547,8 +548,9 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
     let load: &Load = &inp.fa.model.loads[i];
     let value = inp.fa.forces.loads[i];
     let n = inp.m.links[load.link].number;
+    let lang = inp.lang;
     cell_title(g, placer, r, &inp.l.load_title(&n.to_string()));
-    let plot = Rect::new(r.x0 + 14.0, r.y0 + 20.0, r.x1 - 12.0, r.y1 - 20.0);
+    let area = Rect::new(r.x0 + 18.0, r.y0 + 20.0, r.x1 - 14.0, r.y1 - 22.0);
     let signed = |b: usize, y: f64| y * load.branches[b].scale;
     let (lo, hi) = load
         .branches
@@ -556,46 +558,46 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
         .enumerate()
         .flat_map(|(b, br)| br.curve.points.iter().map(move |p| signed(b, p.1)))
         .fold((0.0f64, 0.0f64), |(lo, hi), y| (lo.min(y), hi.max(y)));
-    let span = hi - lo;
-    let mu = scale::round_up(span / plot.height());
-    let y0 = plot.y0 + hi / mu;
-    let px = |s: f64| plot.x0 + s * plot.width();
-    let py = |f: f64| y0 - f / mu;
-    vector(g, Point::new(plot.x0, py(0.0)), Point::new(plot.x1 + 6.0, py(0.0)), THIN);
-    vector(g, Point::new(plot.x0, plot.y1 + 2.0), Point::new(plot.x0, plot.y0 - 6.0), THIN);
+    let mu = scale::round_up((hi - lo) / area.height());
+    let x = Axis {
+        lo: 0.0,
+        hi: 1.0,
+        mu: 1.0 / area.width(),
+        name: "S/H".into(),
+        ticks: [0.0, 0.5, 1.0].map(|v| (v, fmt::localise(&format!("{v}"), lang))).to_vec(),
+    };
+    // The extreme forces of the diagram, marked on the P axis.
+    let extremes = [lo, hi].into_iter().filter(|v| *v != 0.0).map(|v| (v, fmt::value(v, lang))).collect();
+    let y = Axis { lo, hi, mu, name: format!("P, {}", inp.c.unit_n()), ticks: extremes };
+    let plot = Plot::in_area(Rect::new(area.x0, area.y1 - (hi - lo) / mu, area.x1, area.y1), x, y);
+    plot.draw_axes(g, placer);
     for (b, br) in load.branches.iter().enumerate() {
-        let pts: Vec<Point> = br.curve.points.iter().map(|&(s, y)| Point::new(px(s), py(signed(b, y)))).collect();
-        g.path(pts.clone(), false, if b == 0 { MAIN } else { DASHED });
-        let mid = pts[pts.len() / 2];
+        let data: Vec<(f64, f64)> = br.curve.points.iter().map(|&(s, y)| (s, signed(b, y))).collect();
+        plot.line(g, &data, if b == 0 { MAIN } else { DASHED });
+        let (s, y) = data[data.len() / 2];
         let name = match br.name {
             Stroke::Working => inp.l.stroke_working(),
             Stroke::Idle => inp.l.stroke_idle(),
             Stroke::Symbol(s) => s,
         };
-        let t = placer.place(mid, Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name, 2.5);
+        let t = placer.place(plot.at(s, y), Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name, 2.5);
         g.text(t);
     }
     let along = value.force.dot(load.axis);
-    let mark = Point::new(px(value.s), py(along));
-    g.line(Point::new(mark.x, py(0.0)), mark, THIN);
+    let mark = plot.at(value.s, along);
+    g.line(plot.at(value.s, 0.0), mark, THIN);
     g.circle(mark, 1.0, MAIN);
     place_label(g, placer, mark, Vec2::new(1.0, -1.0), &LabelText::new("φ", "1"));
-    let ax = Text::new(Point::new(plot.x1 + 4.0, py(0.0) + 5.0), "S/H", 2.5, Anchor::Middle);
-    placer.block(ax.bbox());
-    g.text(ax);
-    let ay = Text::new(Point::new(plot.x0 - 2.0, plot.y0 - 3.0), format!("P, {}", inp.c.unit_n()), 2.5, Anchor::End);
-    placer.block(ay.bbox());
-    g.text(ay);
     let lines = [
         LabelText::new("φ", "1").with_tail(format!(
             ": S/H = {}, P = {} {}",
-            fmt::value(value.s, inp.lang),
-            fmt::value(along.abs(), inp.lang),
+            fmt::value(value.s, lang),
+            fmt::value(along.abs(), lang),
             inp.c.unit_n()
         )),
         LabelText::new("μ", "P").with_tail(format!(
             " = {} {}",
-            fmt::localise(&scale::format(mu), inp.lang),
+            fmt::localise(&scale::format(mu), lang),
             inp.c.unit_n_per_mm()
         )),
     ];

@@ -1,0 +1,128 @@
+//! Diagrams as the course draws them: data against two axes, each at a stated scale, the x
+//! axis through y = 0 and the y axis at the start of x, arrows at the positive ends, ticks
+//! with their values and the axes' names. The load diagram of sheet 1 uses it; the cam
+//! diagrams of sheet 3 will.
+
+use super::place::Placer;
+use super::scene::{Anchor, Group, Pen, THIN, Text};
+use super::symbols::vector;
+use kurbo::{Point, Rect};
+
+/// Length of a tick mark, mm, and how far an axis runs past its data for the arrow. The x
+/// axis' name stands after its arrow: a plot needs `OVERRUN` + 1 mm + the name's width of room
+/// on its right.
+const TICK: f64 = 1.5;
+const OVERRUN: f64 = 6.0;
+/// Lettering of tick values and axis names, mm.
+const TEXT: f64 = 2.5;
+
+/// One axis: the data range it shows, its scale (data units per mm), its name and ticks.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    pub lo: f64,
+    pub hi: f64,
+    /// Data units per paper millimetre.
+    pub mu: f64,
+    /// Written at the arrow, e.g. "S/H" or "P, N".
+    pub name: String,
+    /// Values to mark, with their labels as the sheet prints them.
+    pub ticks: Vec<(f64, String)>,
+}
+
+impl Axis {
+    /// Paper length of the data range, mm.
+    pub fn length(&self) -> f64 {
+        (self.hi - self.lo) / self.mu
+    }
+}
+
+/// A diagram placed on the sheet: where data (0, 0) falls on paper, and its two axes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plot {
+    pub origin: Point,
+    pub x: Axis,
+    pub y: Axis,
+}
+
+impl Plot {
+    /// A plot whose data ranges fill `area` (x from its left, y from its bottom); the ranges
+    /// must include 0 on y, where the x axis runs.
+    pub fn in_area(area: Rect, x: Axis, y: Axis) -> Plot {
+        let origin = Point::new(area.x0 - x.lo / x.mu, area.y1 + y.lo / y.mu);
+        Plot { origin, x, y }
+    }
+
+    /// The paper point of data (x, y).
+    pub fn at(&self, x: f64, y: f64) -> Point {
+        Point::new(self.origin.x + x / self.x.mu, self.origin.y - y / self.y.mu)
+    }
+
+    /// The paper box of the data ranges.
+    pub fn area(&self) -> Rect {
+        Rect::from_points(self.at(self.x.lo, self.y.lo), self.at(self.x.hi, self.y.hi))
+    }
+
+    /// Straight lines through data points.
+    pub fn line(&self, g: &mut Group, data: &[(f64, f64)], pen: Pen) {
+        g.path(data.iter().map(|&(x, y)| self.at(x, y)).collect(), false, pen);
+    }
+
+    /// The axes with arrows, tick marks, tick values and names; every text is blocked in
+    /// `placer` so the curves' labels keep clear of them.
+    pub fn draw_axes(&self, g: &mut Group, placer: &mut Placer) {
+        let a = self.area();
+        let x0 = self.at(self.x.lo, 0.0).x;
+        let y_of_x_axis = self.at(0.0, 0.0).y;
+        vector(g, Point::new(x0, y_of_x_axis), Point::new(a.x1 + OVERRUN, y_of_x_axis), THIN);
+        vector(g, Point::new(x0, a.y1 + TICK), Point::new(x0, a.y0 - OVERRUN), THIN);
+        let mut text = |g: &mut Group, t: Text| {
+            placer.block(t.bbox());
+            g.text(t);
+        };
+        for (v, label) in &self.x.ticks {
+            let p = self.at(*v, 0.0);
+            g.line(p, Point::new(p.x, p.y + TICK), THIN);
+            if !label.is_empty() {
+                // The value at the y axis stands beside it rather than across it.
+                let (x, anchor) = if *v == self.x.lo { (p.x + 0.8, Anchor::Start) } else { (p.x, Anchor::Middle) };
+                text(g, Text::new(Point::new(x, p.y + TICK + TEXT + 0.8), label.clone(), TEXT, anchor));
+            }
+        }
+        for (v, label) in &self.y.ticks {
+            let p = Point::new(x0, self.at(0.0, *v).y);
+            g.line(p, Point::new(p.x - TICK, p.y), THIN);
+            if !label.is_empty() {
+                text(g, Text::new(Point::new(p.x - TICK - 0.8, p.y + TEXT / 2.0), label.clone(), TEXT, Anchor::End));
+            }
+        }
+        text(
+            g,
+            Text::new(
+                Point::new(a.x1 + OVERRUN + 1.0, y_of_x_axis + TEXT / 2.0),
+                self.x.name.clone(),
+                TEXT,
+                Anchor::Start,
+            ),
+        );
+        text(g, Text::new(Point::new(x0 - 1.0, a.y0 - OVERRUN + TEXT), self.y.name.clone(), TEXT, Anchor::End));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn axis(lo: f64, hi: f64, mu: f64) -> Axis {
+        Axis { lo, hi, mu, name: "x".into(), ticks: vec![] }
+    }
+
+    #[test]
+    fn data_maps_onto_its_area_at_its_scales() {
+        let area = Rect::new(10.0, 20.0, 110.0, 70.0);
+        let p = Plot::in_area(area, axis(0.0, 1.0, 0.01), axis(-100.0, 400.0, 10.0));
+        assert_eq!(p.at(0.0, -100.0), Point::new(10.0, 70.0));
+        assert_eq!(p.at(1.0, 400.0), Point::new(110.0, 20.0));
+        assert_eq!(p.area(), area);
+        assert_eq!(p.at(0.5, 0.0), Point::new(60.0, 60.0), "the x axis runs through y = 0");
+    }
+}
