@@ -110,7 +110,7 @@ pub fn outputs(p: &Project, built: &[Built], formats: Formats) -> Result<Vec<(St
             if !md.is_empty() {
                 md.push('\n');
             }
-            md.push_str(&report::markdown(&t.table, &t.title));
+            md.push_str(&report::markdown(t));
         }
         files.push((format!("{stem}-tables.md"), md.into_bytes()));
     }

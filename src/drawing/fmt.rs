@@ -1,4 +1,5 @@
-//! Numbers as the sheets print them: decimal comma in Uzbek and Russian, point in English.
+//! Numbers as the sheets print them: decimal comma in Uzbek and Russian, point in English,
+//! and the minus sign (−, U+2212) rather than a hyphen.
 
 use crate::drawing::labels::Language;
 use crate::num::math;
@@ -37,10 +38,12 @@ pub fn scientific(x: f64, lang: Language) -> String {
     format!("{}·10{sign}{exp}", localise(&format!("{mantissa:.1}"), lang))
 }
 
-/// Replaces the decimal point for the language.
+/// A number written by Rust, as the sheet prints it: the decimal point for the language and
+/// a true minus sign.
 pub fn localise(s: &str, lang: Language) -> String {
+    let s = s.replace('-', "−");
     match lang {
-        Language::En => s.to_string(),
+        Language::En => s,
         Language::Uz | Language::Ru => s.replace('.', ","),
     }
 }
@@ -57,7 +60,8 @@ mod tests {
         assert_eq!(value(-0.0001, Language::En), "0.000");
         assert_eq!(value(1234.6, Language::En), "1235");
         assert_eq!(scientific(1.63e-13, Language::Uz), "1,6·10⁻¹³");
-        assert_eq!(scientific(-250.0, Language::En), "-2.5·10²");
+        assert_eq!(scientific(-250.0, Language::En), "−2.5·10²");
+        assert_eq!(value(-4600.0, Language::Ru), "−4600");
         assert_eq!(scientific(0.0, Language::En), "0");
     }
 }

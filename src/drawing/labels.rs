@@ -169,6 +169,8 @@ label_set! {
     pub struct Common = "common.yaml" {
         tb_drawn,
         tb_checked,
+        tb_tech_control,
+        tb_std_control,
         tb_approved,
         tb_change,
         tb_sheet_no,
@@ -185,8 +187,35 @@ label_set! {
         unit_a_per_mm,
         unit_n_per_mm,
         unit_n,
+        unit_m_per_s,
+        unit_m_per_s2,
+        unit_per_s,
+        unit_per_s2,
+        unit_kg,
+        unit_kg_m2,
+        unit_n_m,
+        quantity,
+        unit,
         assumed,
         value,
+    }
+}
+
+impl Common {
+    /// An SI unit as the note's tables write it ("kg", "m/s²", "N·m" …), in this language;
+    /// a unit without a translation ("%", "") as it is.
+    pub fn si_unit<'a>(&'a self, si: &'a str) -> &'a str {
+        match si {
+            "m/s" => self.unit_m_per_s(),
+            "m/s²" => self.unit_m_per_s2(),
+            "1/s" => self.unit_per_s(),
+            "1/s²" => self.unit_per_s2(),
+            "kg" => self.unit_kg(),
+            "kg·m²" => self.unit_kg_m2(),
+            "N" => self.unit_n(),
+            "N·m" => self.unit_n_m(),
+            other => other,
+        }
     }
 }
 
@@ -200,6 +229,7 @@ mod tests {
             Common::load(lang).unwrap();
         }
         assert_eq!(Common::get(Language::Ru).unit_n_per_mm(), "Н/мм");
+        assert_eq!(Common::get(Language::Ru).si_unit("kg·m²"), "кг·м²");
     }
 
     #[test]

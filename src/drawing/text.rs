@@ -24,6 +24,12 @@ impl LabelText {
         self
     }
 
+    /// Width of the symbol, subscript and tail at lettering height `h`, mm.
+    pub fn width(&self, h: f64) -> f64 {
+        let (a, b, c) = self.widths(h);
+        a + b + c
+    }
+
     fn widths(&self, h: f64) -> (f64, f64, f64) {
         let m = font::metrics();
         let (size, sub) = (font::size_for_cap(h), font::size_for_cap(h * SUB));

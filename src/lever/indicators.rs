@@ -31,26 +31,37 @@ const ENGINE: [[f64; 13]; 4] = [
     [0.46, 0.31, 0.28, 0.25, 0.17, 0.10, 0.07, 0.04, 0.02, 0.01, 0.01, 0.0, -0.01],
 ];
 
+use super::load::Stroke;
+
 fn rows(travel: &[f64], values: &[f64]) -> Vec<(f64, f64)> {
     travel.iter().copied().zip(values.iter().copied()).collect()
 }
 
 /// A named indicator diagram: (away from the head, towards it), with the strokes' names.
 pub struct Indicator {
-    pub away: (Vec<(f64, f64)>, &'static str),
-    pub toward: (Vec<(f64, f64)>, &'static str),
+    pub away: (Vec<(f64, f64)>, Stroke),
+    pub toward: (Vec<(f64, f64)>, Stroke),
 }
 
 pub fn compressor(stage: u32) -> Indicator {
     let (toward, away) = if stage == 1 { STAGE_1 } else { STAGE_2 };
-    Indicator { away: (rows(&TRAVEL_1, &away), "↓"), toward: (rows(&TRAVEL_1, &toward), "↑") }
+    Indicator {
+        away: (rows(&TRAVEL_1, &away), Stroke::AwayFromHead),
+        toward: (rows(&TRAVEL_1, &toward), Stroke::TowardHead),
+    }
 }
 
 /// The engine's strokes in the given revolution of its 720° cycle.
 pub fn engine(revolution: u32) -> Indicator {
     if revolution == 1 {
-        Indicator { away: (rows(&TRAVEL_2, &ENGINE[0]), "I"), toward: (rows(&TRAVEL_2, &ENGINE[1]), "II") }
+        Indicator {
+            away: (rows(&TRAVEL_2, &ENGINE[0]), Stroke::Expansion),
+            toward: (rows(&TRAVEL_2, &ENGINE[1]), Stroke::Exhaust),
+        }
     } else {
-        Indicator { away: (rows(&TRAVEL_2, &ENGINE[2]), "III"), toward: (rows(&TRAVEL_2, &ENGINE[3]), "IV") }
+        Indicator {
+            away: (rows(&TRAVEL_2, &ENGINE[2]), Stroke::Intake),
+            toward: (rows(&TRAVEL_2, &ENGINE[3]), Stroke::Compression),
+        }
     }
 }

@@ -36,15 +36,22 @@ pub enum LoadKind {
     Resistance,
 }
 
-/// The name of a stroke: a word the sheet translates, or a symbol printed as it is.
+/// Which stroke a branch of a load diagram is; the sheet names it in its language.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stroke {
     /// The working stroke of a resistance load.
     Working,
     /// The return (idle) stroke of a resistance load.
     Idle,
-    /// "↑", "↓" (towards or away from the cylinder head), "I" … "IV" (an engine's strokes).
-    Symbol(&'static str),
+    /// A compressor's piston moving towards the cylinder head (compression, delivery).
+    TowardHead,
+    /// A compressor's piston moving away from the head (expansion, suction).
+    AwayFromHead,
+    /// A four-stroke engine's strokes I–IV.
+    Expansion,
+    Exhaust,
+    Intake,
+    Compression,
 }
 
 /// One branch of the diagram: the force along [`Load::axis`] is `scale · curve(s)`.

@@ -183,11 +183,8 @@ fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, Mo
                 _ => return Err(invalid(at(spec), &f, "give either `force` (N), or `bore` (m) and `pressure` (Pa)")),
             };
             let ind = indicator(g, &f)?;
-            let branch = |(rows, name): (Vec<(f64, f64)>, &'static str)| Branch {
-                curve: Curve { points: rows },
-                scale: force,
-                name: Stroke::Symbol(name),
-            };
+            let branch =
+                |(rows, name): (Vec<(f64, f64)>, Stroke)| Branch { curve: Curve { points: rows }, scale: force, name };
             let branches = [branch((ind.away.0, ind.away.1)), branch((ind.toward.0, ind.toward.1))];
             Ok(Load {
                 kind: LoadKind::Gas,
@@ -223,8 +220,8 @@ fn indicator(g: &GasSpec, field: &str) -> Result<Indicator, ModelError> {
         (IndicatorName::CompressorStage2, None) => Ok(indicators::compressor(2)),
         (IndicatorName::Engine, None) => Ok(indicators::engine(revolution)),
         (IndicatorName::Table, Some(t)) => Ok(Indicator {
-            away: (diagram(&t.away_from_head, &format!("{field}.table.away_from_head"))?.points, "↓"),
-            toward: (diagram(&t.toward_head, &format!("{field}.table.toward_head"))?.points, "↑"),
+            away: (diagram(&t.away_from_head, &format!("{field}.table.away_from_head"))?.points, Stroke::AwayFromHead),
+            toward: (diagram(&t.toward_head, &format!("{field}.table.toward_head"))?.points, Stroke::TowardHead),
         }),
         (IndicatorName::Table, None) => Err(invalid(
             loc,

@@ -156,7 +156,7 @@ pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {
         row("M", "m", "N·m", vec![f.m_m]),
         row("P′", "m", "N", vec![f.p_m_lever]),
         row("Δ", "", "%", vec![f.difference_percent()]),
-        row("P", "m (N·v)", "N", vec![f.p_m_power]),
+        row("P″", "m", "N", vec![f.p_m_power]),
     ]);
     let balance = NumTable { name: "balance".into(), columns: vec!["".into()], rows };
     ForceTables { inertia, reactions, balance }

@@ -27,13 +27,25 @@ pub(crate) fn row(symbol: &str, sub: impl Into<String>, unit: &str, values: Vec<
     Row { symbol: symbol.into(), sub: sub.into(), unit: unit.into(), values }
 }
 
-/// A table of a sheet's note: the file stem it is written under, its localised title.
+/// A table of a sheet's note: the file stem it is written under, and its title, column
+/// headings and units in the sheet's language (for the Markdown; the CSV stays in SI).
 #[derive(Debug, Clone, PartialEq)]
 pub struct NoteTable {
     /// "velocities" → `sheet1-velocities.csv`.
     pub stem: &'static str,
     pub title: String,
     pub table: NumTable,
+    /// The headings of the symbol and unit columns ("Величина", "Единица").
+    pub headings: [String; 2],
+    /// Each row's unit as the sheet writes it.
+    pub units: Vec<String>,
+    /// Whether numbers take a decimal comma (Uzbek, Russian) rather than a point.
+    pub decimal_comma: bool,
+}
+
+/// A row's quantity as `symbol_sub`, or the symbol alone.
+fn quantity(r: &Row) -> String {
+    if r.sub.is_empty() { r.symbol.clone() } else { format!("{}_{}", r.symbol, r.sub) }
 }
 
 /// Full-precision numbers (9 decimals), fields quoted by the `csv` crate where needed.
@@ -42,9 +54,7 @@ pub fn csv(t: &NumTable) -> String {
     let header = ["quantity", "unit"].into_iter().map(str::to_string).chain(t.columns.iter().cloned());
     w.write_record(header).expect("writing to memory");
     for r in &t.rows {
-        let cells = [format!("{}_{}", r.symbol, r.sub), r.unit.clone()]
-            .into_iter()
-            .chain(r.values.iter().map(|v| format!("{v:.9}")));
+        let cells = [quantity(r), r.unit.clone()].into_iter().chain(r.values.iter().map(|v| format!("{v:.9}")));
         w.write_record(cells).expect("writing to memory");
     }
     String::from_utf8(w.into_inner().expect("writing to memory")).expect("the cells are UTF-8")
@@ -69,19 +79,24 @@ pub fn md_escape(s: &str) -> String {
     out
 }
 
-/// A table as Markdown with its title as a heading; values with 4 decimals.
-pub fn markdown(t: &NumTable, title: &str) -> String {
-    let mut s = format!("### {}\n\n| quantity | unit |", md_escape(title));
+/// A table as Markdown in the sheet's language with its title as a heading; values with 4
+/// decimals.
+pub fn markdown(n: &NoteTable) -> String {
+    let t = &n.table;
+    let [quantity, unit] = &n.headings;
+    let mut s = format!("### {}\n\n| {} | {} |", md_escape(&n.title), md_escape(quantity), md_escape(unit));
     for c in &t.columns {
         let _ = write!(s, " {} |", md_escape(c));
     }
     s.push_str("\n|---|---|");
     s.push_str(&"---:|".repeat(t.columns.len()));
     s.push('\n');
-    for r in &t.rows {
-        let _ = write!(s, "| {}<sub>{}</sub> | {} |", md_escape(&r.symbol), md_escape(&r.sub), md_escape(&r.unit));
+    for (r, unit) in t.rows.iter().zip(&n.units) {
+        let sub = if r.sub.is_empty() { String::new() } else { format!("<sub>{}</sub>", md_escape(&r.sub)) };
+        let _ = write!(s, "| {}{sub} | {} |", md_escape(&r.symbol), md_escape(unit));
         for v in &r.values {
-            let _ = write!(s, " {v:.4} |");
+            let v = format!("{v:.4}").replace('-', "−");
+            let _ = write!(s, " {} |", if n.decimal_comma { v.replace('.', ",") } else { v });
         }
         s.push('\n');
     }
@@ -102,11 +117,23 @@ mod tests {
         assert_eq!(s, "quantity,unit,\"a,\"\"b\"\"\"\n\"v_B,A\",m/s,1.000000000\n");
     }
 
+    fn note(t: NumTable, title: &str) -> NoteTable {
+        let units = t.rows.iter().map(|r| r.unit.clone()).collect();
+        NoteTable {
+            stem: "t",
+            title: title.into(),
+            table: t,
+            headings: ["q".into(), "u".into()],
+            units,
+            decimal_comma: true,
+        }
+    }
+
     #[test]
     fn markdown_cells_cannot_break_the_table() {
-        let s = markdown(&table("x|y", "<b>*"), "T | 1");
+        let s = markdown(&note(table("x|y", "<b>*"), "T | 1"));
         assert!(s.starts_with("### T \\| 1\n"), "{s}");
-        assert!(s.contains("| x\\|y |") && s.contains("<sub>&lt;b&gt;\\*</sub>"), "{s}");
+        assert!(s.contains("| x\\|y |") && s.contains("<sub>&lt;b&gt;\\*</sub>") && s.contains("| 1,0000 |"), "{s}");
         for line in s.lines().skip(2) {
             let unescaped = line.replace("\\|", "");
             assert_eq!(unescaped.matches('|').count(), 4, "{line}");

@@ -14,8 +14,8 @@ use crate::drawing::frame::{self, A1_H, A1_W, TitleBlock};
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Placer;
 use crate::drawing::scale;
-use crate::drawing::scene::{Anchor, Group, Scene, Text};
-use crate::drawing::table::Table;
+use crate::drawing::scene::{AXIS, Anchor, Group, Scene, Text};
+use crate::drawing::table::{CELL_TEXT, Table};
 use crate::drawing::text::{LabelText, TooLong, paragraph, wrap};
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
@@ -111,23 +111,22 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
                 fmt::localise(&scale::format(mu_l), lang),
                 c.unit_m_per_mm()
             )),
+            LabelText::new(format!("{}: {}", l.structure(), k.structure.formula), ""),
             LabelText::new(
                 format!(
-                    "{}: {}   W = 3·{} − 2·{} − {} = {}",
-                    l.structure(),
-                    k.structure.formula,
-                    k.structure.moving_links,
-                    k.structure.p5,
-                    k.structure.p4,
-                    k.structure.dof
+                    "W = 3·{} − 2·{} − {} = {}",
+                    k.structure.moving_links, k.structure.p5, k.structure.p4, k.structure.dof
                 ),
                 "",
             ),
         ],
     );
-    let legend =
-        Text::new(Point::new(mech_region.x0 + 2.0, mech_region.y1 - 2.0), l.trajectories(), 2.5, Anchor::Start);
-    placer.block(legend.bbox());
+    // The legend shows the trajectories' own line type, then says what it is.
+    let legend_y = mech_region.y1 - 2.0;
+    let sample = (Point::new(mech_region.x0 + 2.0, legend_y - 1.2), Point::new(mech_region.x0 + 16.0, legend_y - 1.2));
+    mech.line(sample.0, sample.1, AXIS);
+    let legend = Text::new(Point::new(mech_region.x0 + 18.0, legend_y), l.trajectories(), 2.5, Anchor::Start);
+    placer.block(legend.bbox().union_pt(sample.0));
     mech.text(legend);
     MechanismView { m, k, view: View { mu: mu_l, origin }, kulisa: &inp.project.kulisa_lengths }
         .draw(&mut mech, &mut placer);
@@ -219,13 +218,12 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
         let (t3, t4, t5) = (&ft.inertia, &ft.reactions, &ft.balance);
         let mut fg = Group::new("forces", region);
         let tables = vec![
-            sheet_table(t3, l.inertia_table(), lang),
-            Table { label_w: 12.0, cell_w: 16.0, ..sheet_table(t4, l.reaction_table(), lang) },
+            with_units(sheet_table(t3, l.inertia_table(), lang), t3, c),
+            Table { cell_w: 16.0, ..sheet_table(t4, l.reaction_table(), lang) },
             Table {
-                label_w: 16.0,
                 cell_w: 18.0,
                 header: vec![c.value().to_string()],
-                ..sheet_table(t5, l.balance_table(), lang)
+                ..with_units(sheet_table(t5, l.balance_table(), lang), t5, c)
             },
         ];
         let input =
@@ -250,7 +248,7 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
             student: &inp.info.student,
             supervisor: &inp.info.supervisor,
             organisation: &organisation,
-            scale: &scale::ratio(mu_l),
+            scale: &fmt::localise(&scale::ratio(mu_l), lang),
             sheet_no: inp.sheet_no,
             sheet_count: inp.sheet_count,
         },
@@ -309,22 +307,31 @@ fn plans_region(
 }
 
 fn sheet_table(t: &NumTable, title: &str, lang: Language) -> Table {
-    Table {
-        title: title.to_string(),
-        header: t.columns.clone(),
-        rows: t
-            .rows
-            .iter()
-            .map(|r| {
-                (
-                    LabelText::new(r.symbol.clone(), r.sub.clone()),
-                    r.values.iter().map(|&v| fmt::value(v, lang)).collect(),
-                )
-            })
-            .collect(),
-        label_w: 14.0,
-        cell_w: 13.0,
+    let rows: Vec<(LabelText, Vec<String>)> = t
+        .rows
+        .iter()
+        .map(|r| {
+            (LabelText::new(r.symbol.clone(), r.sub.clone()), r.values.iter().map(|&v| fmt::value(v, lang)).collect())
+        })
+        .collect();
+    Table { title: title.to_string(), header: t.columns.clone(), label_w: label_column(&rows), rows, cell_w: 13.0 }
+}
+
+/// A table whose rows carry their own units (the title names none): "m, kg", "J_S, kg·m²".
+fn with_units(mut table: Table, t: &NumTable, c: &Common) -> Table {
+    for ((label, _), r) in table.rows.iter_mut().zip(&t.rows) {
+        let unit = c.si_unit(&r.unit);
+        if !unit.is_empty() {
+            label.tail = format!(", {unit}");
+        }
     }
+    table.label_w = label_column(&table.rows);
+    table
+}
+
+/// The label column's width: the widest label and 1.5 mm either side, at least 14 mm.
+fn label_column(rows: &[(LabelText, Vec<String>)]) -> f64 {
+    rows.iter().map(|(l, _)| l.width(CELL_TEXT) + 3.0).fold(14.0, f64::max)
 }
 
 /// Height the notes need in a column of width `w`.

@@ -552,12 +552,11 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
     cell_title(g, placer, r, &inp.l.load_title(&n.to_string()));
     let area = Rect::new(r.x0 + 18.0, r.y0 + 20.0, r.x1 - 14.0, r.y1 - 22.0);
     let signed = |b: usize, y: f64| y * load.branches[b].scale;
-    let (lo, hi) = load
-        .branches
-        .iter()
-        .enumerate()
-        .flat_map(|(b, br)| br.curve.points.iter().map(move |p| signed(b, p.1)))
-        .fold((0.0f64, 0.0f64), |(lo, hi), y| (lo.min(y), hi.max(y)));
+    let values =
+        || load.branches.iter().enumerate().flat_map(|(b, br)| br.curve.points.iter().map(move |p| signed(b, p.1)));
+    let (least, most) = values().fold((f64::MAX, f64::MIN), |(lo, hi), y| (lo.min(y), hi.max(y)));
+    // The drawing spans zero, where the S/H axis runs; the ticks mark the diagram's extremes.
+    let (lo, hi) = (least.min(0.0), most.max(0.0));
     let mu = scale::round_up((hi - lo) / area.height());
     let x = Axis {
         lo: 0.0,
@@ -566,8 +565,10 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
         name: "S/H".into(),
         ticks: [0.0, 0.5, 1.0].map(|v| (v, fmt::localise(&format!("{v}"), lang))).to_vec(),
     };
-    // The extreme forces of the diagram, marked on the P axis.
-    let extremes = [lo, hi].into_iter().filter(|v| *v != 0.0).map(|v| (v, fmt::value(v, lang))).collect();
+    let mut extremes: Vec<(f64, String)> = vec![(least, fmt::value(least, lang))];
+    if most != least {
+        extremes.push((most, fmt::value(most, lang)));
+    }
     let y = Axis { lo, hi, mu, name: format!("P, {}", inp.c.unit_n()), ticks: extremes };
     let plot = Plot::in_area(Rect::new(area.x0, area.y1 - (hi - lo) / mu, area.x1, area.y1), x, y);
     plot.draw_axes(g, placer);
@@ -578,7 +579,12 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
         let name = match br.name {
             Stroke::Working => inp.l.stroke_working(),
             Stroke::Idle => inp.l.stroke_idle(),
-            Stroke::Symbol(s) => s,
+            Stroke::TowardHead => inp.l.stroke_toward_head(),
+            Stroke::AwayFromHead => inp.l.stroke_away_from_head(),
+            Stroke::Expansion => inp.l.stroke_expansion(),
+            Stroke::Exhaust => inp.l.stroke_exhaust(),
+            Stroke::Intake => inp.l.stroke_intake(),
+            Stroke::Compression => inp.l.stroke_compression(),
         };
         let t = placer.place(plot.at(s, y), Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name, 2.5);
         g.text(t);
@@ -592,7 +598,7 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
         LabelText::new("φ", "1").with_tail(format!(
             ": S/H = {}, P = {} {}",
             fmt::value(value.s, lang),
-            fmt::value(along.abs(), lang),
+            fmt::value(along, lang),
             inp.c.unit_n()
         )),
         LabelText::new("μ", "P").with_tail(format!(

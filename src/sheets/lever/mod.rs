@@ -10,11 +10,11 @@ mod plans_view;
 pub mod results;
 
 use super::{COURSE, Context, Sheet, SheetError, SheetKind, SheetOutput};
-use crate::drawing::labels::Language;
+use crate::drawing::labels::{Common, Language};
 use crate::lever::analysis::{self, ForceAnalysis, Kinematics};
 use crate::project::{LeverProject, Project};
-use crate::report::NoteTable;
 use crate::report::lever::{ForceTables, KinematicTables, force_tables, kinematic_tables};
+use crate::report::{NoteTable, NumTable};
 use compose::Composed;
 use labels::LeverLabels;
 
@@ -67,22 +67,26 @@ pub fn build(ctx: &Context, p: &LeverProject) -> Result<LeverBuild, SheetError> 
 }
 
 impl LeverBuild {
-    /// The note's tables with their titles in the sheet's language.
+    /// The note's tables with their titles, headings and units in the sheet's language.
     pub fn note_tables(&self, lang: Language) -> Vec<NoteTable> {
-        let l = LeverLabels::get(lang);
+        let (l, c) = (LeverLabels::get(lang), Common::get(lang));
+        let note = |stem: &'static str, title: &str, table: &NumTable| NoteTable {
+            stem,
+            title: title.into(),
+            headings: [c.quantity().into(), c.unit().into()],
+            units: table.rows.iter().map(|r| c.si_unit(&r.unit).to_string()).collect(),
+            table: table.clone(),
+            decimal_comma: lang != Language::En,
+        };
         let mut out = vec![
-            NoteTable { stem: "velocities", title: l.velocity_table().into(), table: self.tables.velocities.clone() },
-            NoteTable {
-                stem: "accelerations",
-                title: l.acceleration_table().into(),
-                table: self.tables.accelerations.clone(),
-            },
+            note("velocities", l.velocity_table(), &self.tables.velocities),
+            note("accelerations", l.acceleration_table(), &self.tables.accelerations),
         ];
         if let Some((_, t)) = &self.forces {
             out.extend([
-                NoteTable { stem: "inertia", title: l.inertia_table().into(), table: t.inertia.clone() },
-                NoteTable { stem: "reactions", title: l.reaction_table().into(), table: t.reactions.clone() },
-                NoteTable { stem: "balancing", title: l.balance_table().into(), table: t.balance.clone() },
+                note("inertia", l.inertia_table(), &t.inertia),
+                note("reactions", l.reaction_table(), &t.reactions),
+                note("balancing", l.balance_table(), &t.balance),
             ]);
         }
         out
