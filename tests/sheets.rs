@@ -426,3 +426,65 @@ fn the_layout_holds_for_every_fixture_language_and_phi1() {
     }
     assert!(failures.is_empty(), "{} layouts fail:\n{}", failures.len(), failures.join("\n"));
 }
+
+/// A number as an Uzbek or Russian sheet must not print it: with a decimal point ("2.5",
+/// "1:2.5") or, in any language, with a hyphen for its minus ("-4600").
+fn misprinted_number(text: &str, comma: bool) -> Option<String> {
+    let c: Vec<char> = text.chars().collect();
+    for i in 0..c.len() {
+        let digit = |j: usize| c.get(j).is_some_and(|x| x.is_ascii_digit());
+        let point = comma && c[i] == '.' && i > 0 && digit(i - 1) && digit(i + 1);
+        let hyphen = c[i] == '-' && digit(i + 1);
+        if point || hyphen {
+            return Some(c[i.saturating_sub(3)..(i + 4).min(c.len())].iter().collect());
+        }
+    }
+    None
+}
+
+/// Numbers in the sheet's style everywhere (scales in the title block included), and the
+/// note's tables with a unit on every row that has one (user text cleared, as it is theirs).
+#[test]
+fn numbers_and_units_are_printed_in_the_sheets_style() {
+    assert!(misprinted_number("1:2.5", true).is_some() && misprinted_number("P = -4600", false).is_some());
+    assert!(misprinted_number("1:2,5  −4600  II(4,5)  I – kengayish", true).is_none());
+    for name in fixture_names() {
+        for lang in Language::ALL {
+            let mut p = fixture(&name);
+            p.info.language = lang;
+            (p.info.title, p.info.designation, p.info.institution) = ("T".into(), "D".into(), "I".into());
+            p.lever.as_mut().unwrap().assumptions.clear();
+            let r = build(&p);
+            for t in r.output.scene.texts() {
+                assert_eq!(misprinted_number(&t.text, lang != Language::En), None, "{name} {lang:?}: {:?}", t.text);
+            }
+            // Table 3's rows name their units: "m, кг", "J_S, кг·м²".
+            let kg = tmm_sheets::drawing::labels::Common::get(lang).unit_kg();
+            assert!(r.output.scene.texts().any(|t| t.text == format!(", {kg}")), "{name} {lang:?}: no unit in table 3");
+        }
+    }
+}
+
+/// Each load diagram marks its extreme forces on the P axis, whatever their signs.
+#[test]
+fn load_diagrams_tick_their_extreme_forces() {
+    use tmm_sheets::drawing::fmt;
+    for name in fixture_names() {
+        let p = fixture(&name);
+        let lever = common::build_lever(&p);
+        let Some((fa, _)) = &lever.forces else { continue };
+        let texts: Vec<&str> = lever.composed.scene.texts().map(|t| t.text.as_str()).collect();
+        for load in &fa.model.loads {
+            let values = load.branches.iter().flat_map(|b| b.curve.points.iter().map(move |q| q.1 * b.scale));
+            let (lo, hi) = values.fold((f64::MAX, f64::MIN), |(lo, hi), y| (lo.min(y), hi.max(y)));
+            for v in [lo, hi] {
+                let tick = fmt::value(v, p.info.language);
+                assert!(
+                    texts.contains(&tick.as_str()),
+                    "{name}: no tick {tick} on link {}'s load diagram",
+                    p.lever.as_ref().unwrap().mechanism.links[load.link].number
+                );
+            }
+        }
+    }
+}

@@ -298,6 +298,27 @@ mod tests {
         assert_eq!(page(), (A1_W, A1_H));
         assert_eq!(inner(), Rect::new(20.0, 5.0, 836.0, 589.0));
         assert_eq!(title_block_rect(), Rect::new(651.0, 534.0, 836.0, 589.0));
+        // Form 1's left part: the header row at 20–25 mm, then six signature rows, and the
+        // first column line stopping at the header (columns 1–2 merge below it).
+        let rows: Vec<(f64, &str)> = template()
+            .title_block
+            .captions
+            .iter()
+            .filter(|c| c.at[0] < 10.0)
+            .map(|c| (c.at[1], c.key.text(Common::get(Language::Ru))))
+            .collect();
+        assert_eq!(
+            rows,
+            [
+                (23.8, "Изм."),
+                (28.8, "Разраб."),
+                (33.8, "Пров."),
+                (38.8, "Т.контр."),
+                (48.8, "Н.контр."),
+                (53.8, "Утв.")
+            ]
+        );
+        assert!(template().title_block.main.contains(&[7.0, 0.0, 7.0, 25.0]));
         let l = Common::get(Language::Ru);
         let captions: Vec<&str> = template().title_block.captions.iter().map(|c| c.key.text(l)).collect();
         assert!(captions.contains(&"Разраб.") && captions.contains(&"Масштаб"), "{captions:?}");

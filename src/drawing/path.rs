@@ -60,27 +60,12 @@ impl Path {
         p
     }
 
-    pub fn line_to(mut self, p: Point) -> Path {
-        self.segs.push(Seg::Line(p));
-        self
-    }
-
     pub fn end(&self) -> Point {
         match self.segs.last() {
             None => self.start,
             Some(Seg::Line(p)) | Some(Seg::Cubic(_, _, p)) => *p,
             Some(Seg::Arc(a)) => on_circle(a.center, a.radii.x, a.start_angle + a.sweep_angle),
         }
-    }
-
-    /// Every coordinate and radius, for checks of finiteness.
-    pub fn numbers(&self) -> impl Iterator<Item = f64> + '_ {
-        let pts = std::iter::once(self.start).chain(self.segs.iter().flat_map(|s| match s {
-            Seg::Line(p) => vec![*p],
-            Seg::Cubic(a, b, c) => vec![*a, *b, *c],
-            Seg::Arc(a) => vec![a.center, Point::new(a.radii.x, a.sweep_angle)],
-        }));
-        pts.flat_map(|p| [p.x, p.y])
     }
 
     /// The path as kurbo Béziers (arcs within [`ARC_MEASURE_ACCURACY`]), for measuring.

@@ -29,13 +29,6 @@ pub struct Axis {
     pub ticks: Vec<(f64, String)>,
 }
 
-impl Axis {
-    /// Paper length of the data range, mm.
-    pub fn length(&self) -> f64 {
-        (self.hi - self.lo) / self.mu
-    }
-}
-
 /// A diagram placed on the sheet: where data (0, 0) falls on paper, and its two axes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Plot {
