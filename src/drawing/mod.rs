@@ -9,6 +9,8 @@
 pub mod fmt;
 pub mod frame;
 pub mod labels;
+pub mod layout;
+pub mod obstacles;
 pub mod path;
 pub mod place;
 pub mod plot;

@@ -1,69 +1,224 @@
-//! Greedy placement of short labels next to the points they name, avoiding other labels
-//! and staying inside a region.
+//! Label placement that sees everything drawn: a view draws its geometry and fixed texts
+//! into a group, asks for its labels ([`Labels::add`]: an anchor, a preferred direction, a
+//! symbol with its subscript), and places them all at the end ([`Labels::place`]), when the
+//! group holds every line, arrowhead, symbol, hatching and text they must keep clear of.
+//!
+//! Each label tries candidate boxes around its anchor — 16 directions from the preferred one,
+//! at growing distances — scored by distance and turn from the preferred direction, and
+//! takes the best one that no stroke crosses, no text overlaps and the bounds contain. Labels
+//! are resolved most-constrained first (fewest free candidates against the drawing), and
+//! each placed label becomes an obstacle for the rest. A label standing off its anchor
+//! gets a short thin leader line. The geometry sits in an R-tree ([`super::obstacles`]).
 
-use super::scene::{Anchor, Text};
+use super::obstacles::{Obstacles, Piece};
+use super::scene::{Anchor, Group, THIN};
+use super::text::{LabelText, SLANT, SUB};
 use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
-/// Gap between a point and its label, mm.
-const GAP: f64 = 1.0;
+/// Distances tried between an anchor and its label's box, mm.
+const DISTANCES: [f64; 13] = [0.5, 1.0, 1.7, 2.6, 3.7, 5.0, 6.6, 8.5, 11.0, 14.0, 18.0, 23.0, 30.0];
+/// From this distance on, a leader line joins the label to its anchor, mm.
+const LEADER_FROM: f64 = 4.0;
+/// The leader starts this far from the anchor, clear of the joint or dot drawn there, mm.
+const LEADER_GAP: f64 = 0.8;
+/// Clearance kept between a label's box and any stroke, mm.
+const CLEAR: f64 = 0.25;
+const DIRECTIONS: usize = 16;
 
-pub struct Placer {
-    bounds: Rect,
-    taken: Vec<Rect>,
+/// One label to place.
+#[derive(Debug, Clone)]
+struct Request {
+    anchor: Point,
+    pref: Vec2,
+    label: LabelText,
+    h: f64,
 }
 
-impl Placer {
-    pub fn new(bounds: Rect) -> Placer {
-        Placer { bounds, taken: Vec::new() }
+/// Where one label went, for views that draw something more beside it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Placed {
+    pub r#box: Rect,
+    /// Whether no stroke, text or bound was violated.
+    pub clear: bool,
+}
+
+/// Labels waiting for the geometry of their group to be complete.
+#[derive(Debug, Default)]
+pub struct Labels {
+    requests: Vec<Request>,
+}
+
+/// The size of a label's box at lettering height `h` (slant and subscript included): width,
+/// height above the baseline, depth below it.
+pub fn label_size(label: &LabelText, h: f64) -> (f64, f64, f64) {
+    let w = label.width(h) + SLANT * h;
+    let below = if label.sub.is_empty() { 0.3 * h } else { 0.3 * h + 0.3 * h * SUB };
+    (w, 1.05 * h, below)
+}
+
+impl Labels {
+    pub fn new() -> Labels {
+        Labels::default()
     }
 
-    /// Marks an area as occupied (another label, a title).
-    pub fn block(&mut self, r: Rect) {
-        self.taken.push(r);
+    /// A label beside `anchor`, preferably in direction `pref` (paper coordinates; zero:
+    /// up and right).
+    pub fn add(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64) {
+        self.requests.push(Request { anchor, pref, label, h });
     }
 
-    fn free(&self, r: &Rect) -> bool {
-        let inside =
-            r.x0 >= self.bounds.x0 && r.y0 >= self.bounds.y0 && r.x1 <= self.bounds.x1 && r.y1 <= self.bounds.y1;
-        inside && self.taken.iter().all(|t| t.intersect(*r).area() <= tol::PAPER_AREA)
+    /// A plain text label.
+    pub fn add_text(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64) {
+        self.add(anchor, pref, LabelText::new(text, ""), h);
     }
 
-    /// A label of height `h` beside `anchor`, preferably in the direction `pref`
-    /// (paper coordinates). Tries eight directions at growing distances; if none is free
-    /// it keeps the preferred spot (the overlap test then reports it).
-    pub fn place(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64) -> Text {
-        let probe = Text::new(Point::ZERO, text, h, Anchor::Middle);
-        let bb = probe.bbox();
-        let r = self.place_box(anchor, pref, bb.width(), bb.height());
-        // The text's baseline sits where its box (descender to cap height) puts it.
-        Text::new(Point::new(r.center().x, r.y1 - (bb.y1 - probe.at.y)), text, h, Anchor::Middle)
+    pub fn is_empty(&self) -> bool {
+        self.requests.is_empty()
     }
 
-    /// A free box of `w` × `ht` beside `anchor` (see [`Placer::place`]), now taken.
-    pub fn place_box(&mut self, anchor: Point, pref: Vec2, w: f64, ht: f64) -> Rect {
-        let base = if pref.norm() > tol::PAPER { pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
-        let mut first = None;
-        for dist in [GAP, GAP + 1.5, GAP + 3.5, GAP + 6.0, GAP + 9.0, GAP + 13.0, GAP + 18.0, GAP + 24.0] {
-            for ang in [0.0, 45.0, -45.0, 90.0, -90.0, 135.0, -135.0, 180.0] {
-                let d = rotate(base, ang);
-                let centre = anchor + Vec2::new(d.x * (w / 2.0 + dist), d.y * (ht / 2.0 + dist));
-                let r = Rect::new(centre.x - w / 2.0, centre.y - ht / 2.0, centre.x + w / 2.0, centre.y + ht / 2.0);
-                first.get_or_insert(r);
-                if self.free(&r) {
-                    self.taken.push(r);
-                    return r;
-                }
+    /// Places every label inside `bounds`, clear of everything `g` holds now, and draws them.
+    pub fn place(self, g: &mut Group, bounds: Rect) -> Vec<Placed> {
+        let mut obstacles = Obstacles::of_items(&g.items);
+        let cands: Vec<Vec<Candidate>> = self.requests.iter().map(|r| candidates(r, bounds)).collect();
+        // Most constrained first: the fewest candidates free against the drawing alone.
+        let mut order: Vec<usize> = (0..self.requests.len()).collect();
+        let free: Vec<usize> = cands.iter().map(|cs| cs.iter().filter(|c| c.is_free(&obstacles)).count()).collect();
+        order.sort_by_key(|&i| free[i]);
+        let mut placed = vec![Placed { r#box: Rect::ZERO, clear: false }; self.requests.len()];
+        for i in order {
+            let req = &self.requests[i];
+            // A leader may cross thin lines (out of a fan of links) when no label spot can be
+            // reached without: a free box comes first, a clean leader second.
+            let best = cands[i]
+                .iter()
+                .find(|c| c.is_free(&obstacles))
+                .or_else(|| cands[i].iter().find(|c| c.box_is_free(&obstacles)));
+            let (cand, clear) = match best {
+                Some(c) => (c.clone(), true),
+                None => (least_bad(&cands[i], &obstacles, req, bounds), false),
+            };
+            let (w, up, _) = label_size(&req.label, req.h);
+            let base = Point::new(cand.r.x0 + (w - SLANT * req.h) / 2.0, cand.r.y0 + up);
+            let before = g.items.len();
+            req.label.draw(g, base, req.h, Anchor::Middle);
+            obstacles.add(Piece::TextBox(cand.r), usize::MAX);
+            debug_assert!(g.items.len() > before);
+            if let Some((a, b)) = cand.leader {
+                g.line(a, b, THIN);
+                obstacles.add(Piece::Segment(a, b), usize::MAX);
             }
+            placed[i] = Placed { r#box: cand.r, clear };
         }
-        let r = first.expect("at least one candidate");
-        self.taken.push(r);
-        r
+        placed
     }
+}
+
+#[derive(Debug, Clone)]
+struct Candidate {
+    r: Rect,
+    leader: Option<(Point, Point)>,
+    cost: f64,
+}
+
+impl Candidate {
+    fn is_free(&self, o: &Obstacles) -> bool {
+        self.box_is_free(o) && self.leader.is_none_or(|(a, b)| o.hits_segment(a, b) == 0)
+    }
+
+    /// The box is clear and its leader crosses no text (it may cross lines).
+    fn box_is_free(&self, o: &Obstacles) -> bool {
+        o.hits(self.r.inflate(CLEAR, CLEAR)) == (0, 0.0)
+            && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
+    }
+}
+
+/// The candidate with the fewest crossings when none is free.
+fn least_bad(cands: &[Candidate], o: &Obstacles, req: &Request, bounds: Rect) -> Candidate {
+    // No candidate inside the bounds (a label wider than its cell): beside the anchor,
+    // pushed inside the bounds as far as they allow.
+    let fallback = || {
+        let (w, up, down) = label_size(&req.label, req.h);
+        let x0 = req.anchor.x.min(bounds.x1 - w).max(bounds.x0);
+        let y1 = req.anchor.y.max(bounds.y0 + up + down).min(bounds.y1);
+        Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), leader: None, cost: 0.0 }
+    };
+    cands
+        .iter()
+        .map(|c| {
+            let (strokes, area) = o.hits(c.r);
+            (strokes as f64 * 10.0 + area * 100.0 + c.cost, c)
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map_or_else(fallback, |(_, c)| c.clone())
+}
+
+/// Every candidate box inside `bounds`, cheapest first.
+fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
+    let (w, up, down) = label_size(&req.label, req.h);
+    let ht = up + down;
+    let base = if req.pref.norm() > tol::PAPER { req.pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
+    let mut out = Vec::new();
+    for (di, &dist) in DISTANCES.iter().enumerate() {
+        for k in 0..DIRECTIONS {
+            // 0, +1, −1, +2, −2, …: alternate sides of the preferred direction.
+            let step = k.div_ceil(2) as f64 * if k % 2 == 1 { 1.0 } else { -1.0 };
+            let turn = step * 360.0 / DIRECTIONS as f64;
+            let d = rotate(base, turn);
+            // The box's nearest point stands `dist` from the anchor along `d` (a superellipse
+            // around the anchor: boxes beside, above and diagonal all keep the gap).
+            let centre = req.anchor + Vec2::new(d.x * (w / 2.0 + dist), d.y * (ht / 2.0 + dist));
+            let r = Rect::new(centre.x - w / 2.0, centre.y - ht / 2.0, centre.x + w / 2.0, centre.y + ht / 2.0);
+            if !(r.x0 >= bounds.x0 && r.y0 >= bounds.y0 && r.x1 <= bounds.x1 && r.y1 <= bounds.y1) {
+                continue;
+            }
+            let leader = (dist >= LEADER_FROM).then(|| leader(req.anchor, r));
+            let cost = di as f64 * 1.0 + turn.abs() / 45.0 * 0.8;
+            out.push(Candidate { r, leader, cost });
+        }
+    }
+    out.sort_by(|a, b| a.cost.total_cmp(&b.cost));
+    out
+}
+
+/// A leader from near the anchor to the nearest point of the label's box.
+fn leader(anchor: Point, r: Rect) -> (Point, Point) {
+    let end = Point::new(anchor.x.clamp(r.x0, r.x1), anchor.y.clamp(r.y0, r.y1));
+    let d = end - anchor;
+    let start = anchor + d.unit() * LEADER_GAP.min(d.norm() / 2.0);
+    (start, end)
 }
 
 fn rotate(v: Vec2, deg: f64) -> Vec2 {
     let (s, c) = math::sin_cos(deg.to_radians());
     Vec2::new(c * v.x - s * v.y, s * v.x + c * v.y)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::drawing::layout;
+    use crate::drawing::scene::Scene;
+
+    #[test]
+    fn labels_keep_off_lines_crossing_at_their_anchor_and_off_each_other() {
+        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+        let mut g = Group::new("g", region);
+        let c = Point::new(50.0, 50.0);
+        // Eight lines radiating from the anchor leave only narrow sectors.
+        for k in 0..8 {
+            let d = math::from_angle(k as f64 * std::f64::consts::FRAC_PI_4 + 0.2) * 40.0;
+            g.line(c, c + d, THIN);
+        }
+        let mut labels = Labels::new();
+        for name in ["A", "B", "C", "S", "D"] {
+            labels.add(c, Vec2::new(1.0, -1.0), LabelText::new(name, "2"), 5.0);
+        }
+        let placed = labels.place(&mut g, region);
+        assert!(placed.iter().all(|p| p.clear), "{placed:?}");
+        let scene = Scene { width: 100.0, height: 100.0, title: String::new(), groups: vec![g] };
+        let l = layout::measure(&scene);
+        assert!(l.is_clean(), "{l:?}");
+    }
 }

@@ -3,7 +3,6 @@
 //! with their values and the axes' names. The load diagram of sheet 1 uses it; the cam
 //! diagrams of sheet 3 will.
 
-use super::place::Placer;
 use super::scene::{Anchor, Group, Pen, THIN, Text};
 use super::symbols::vector;
 use kurbo::{Point, Rect};
@@ -60,18 +59,15 @@ impl Plot {
         g.path(data.iter().map(|&(x, y)| self.at(x, y)).collect(), false, pen);
     }
 
-    /// The axes with arrows, tick marks, tick values and names; every text is blocked in
-    /// `placer` so the curves' labels keep clear of them.
-    pub fn draw_axes(&self, g: &mut Group, placer: &mut Placer) {
+    /// The axes with arrows, tick marks, tick values and names (labels placed afterwards
+    /// keep clear of them).
+    pub fn draw_axes(&self, g: &mut Group) {
         let a = self.area();
         let x0 = self.at(self.x.lo, 0.0).x;
         let y_of_x_axis = self.at(0.0, 0.0).y;
         vector(g, Point::new(x0, y_of_x_axis), Point::new(a.x1 + OVERRUN, y_of_x_axis), THIN);
         vector(g, Point::new(x0, a.y1 + TICK), Point::new(x0, a.y0 - OVERRUN), THIN);
-        let mut text = |g: &mut Group, t: Text| {
-            placer.block(t.bbox());
-            g.text(t);
-        };
+        let text = |g: &mut Group, t: Text| g.text(t);
         for (v, label) in &self.x.ticks {
             let p = self.at(*v, 0.0);
             g.line(p, Point::new(p.x, p.y + TICK), THIN);

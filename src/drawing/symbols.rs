@@ -1,10 +1,11 @@
 //! Drafting symbols built from scene primitives: arrows, pivots, sliders, hatching.
 
+use super::obstacles::{Obstacles, Piece, segments};
 use super::path::{Path, on_circle};
 use super::scene::{Group, Pen, THIN};
 use crate::num::math::Norm;
 use crate::num::tol;
-use kurbo::{Point, Vec2};
+use kurbo::{Point, Rect, Vec2};
 
 /// Arrowhead length and half width, mm (drafting practice for thin lines).
 pub const ARROW_LEN: f64 = 3.0;
@@ -87,4 +88,40 @@ pub fn turn_arrow(g: &mut Group, c: Point, r: f64, start_deg: f64, sweep_deg: f6
     let back = on_circle(c, r, a0 + sweep - sign * (ARROW_LEN / r).min(sweep.abs()));
     g.curve(arc, pen);
     arrowhead(g, tip, tip - back);
+}
+
+/// A [`turn_arrow`] turned (start every 10° from `pref_deg`) to where it crosses the fewest
+/// segments of `drawn`, nearest `pref_deg` among equals; it joins `drawn`. Returns its start.
+#[allow(clippy::too_many_arguments)]
+pub fn clear_turn_arrow(
+    g: &mut Group,
+    drawn: &mut Obstacles,
+    c: Point,
+    r: f64,
+    pref_deg: f64,
+    sweep_deg: f64,
+    ccw: bool,
+    pen: Pen,
+) -> f64 {
+    let probe = |start: f64| {
+        let mut p = Group::new("probe", Rect::ZERO);
+        turn_arrow(&mut p, c, r, start, sweep_deg, ccw, pen);
+        p
+    };
+    let crossings = |p: &Group| p.items.iter().flat_map(segments).map(|(a, b)| drawn.hits_segment(a, b)).sum::<usize>();
+    let turn = |a: f64| {
+        let d = (a - pref_deg).rem_euclid(360.0);
+        d.min(360.0 - d)
+    };
+    let start = (0..36)
+        .map(|k| pref_deg + 10.0 * k as f64)
+        .map(|a| (crossings(&probe(a)), turn(a), a))
+        .min_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)))
+        .map_or(pref_deg, |x| x.2);
+    let arrow = probe(start);
+    for (a, b) in arrow.items.iter().flat_map(segments) {
+        drawn.add(Piece::Segment(a, b), usize::MAX);
+    }
+    g.items.extend(arrow.items);
+    start
 }

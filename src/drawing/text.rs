@@ -64,7 +64,7 @@ impl LabelText {
 }
 
 /// Subscript height relative to the symbol (GOST 2.304: indices one size smaller).
-const SUB: f64 = 0.7;
+pub const SUB: f64 = 0.7;
 
 /// Line pitch of wrapped text, in lettering heights.
 pub const LINE_PITCH: f64 = 1.6;

@@ -8,11 +8,12 @@
 use super::forces_view::{ForceScales, ForcesInput, draw_forces};
 use super::labels::LeverLabels;
 use super::mechanism_view::{MechanismView, View, world_extent};
-use super::plans_view::{draw_plan, grid, required_mu};
+use super::plans_view::{PlanCell, Sizing, draw_plan, label_bounds, size_plans};
 use crate::drawing::fmt;
 use crate::drawing::frame::{self, A1_H, A1_W, TitleBlock};
 use crate::drawing::labels::{Common, Language};
-use crate::drawing::place::Placer;
+use crate::drawing::layout::{self, Layout};
+use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{AXIS, Anchor, Group, Scene, Text};
 use crate::drawing::table::{CELL_TEXT, Table};
@@ -25,14 +26,17 @@ use crate::report::lever::{ForceTables, KinematicTables};
 use kurbo::{Point, Rect};
 
 /// The scales chosen for the sheet.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Scales {
     /// m/mm
     pub mu_l: f64,
-    /// (m/s)/mm
-    pub mu_v: f64,
-    /// (m/s²)/mm
-    pub mu_a: f64,
+    /// (m/s)/mm, when all velocity plans share it.
+    pub mu_v: Option<f64>,
+    /// (m/s²)/mm, when all acceleration plans share it.
+    pub mu_a: Option<f64>,
+    /// Each velocity plan's scale and drawn size.
+    pub velocity_plans: Vec<PlanDrawn>,
+    pub acceleration_plans: Vec<PlanDrawn>,
 }
 
 /// The composed sheet and the scales it chose.
@@ -42,6 +46,8 @@ pub struct Composed {
     pub force_scales: Option<ForceScales>,
     /// The largest distance of a drawn trajectory from the exact path, paper mm.
     pub trajectory_error_mm: f64,
+    /// The sheet's own measurement of its layout.
+    pub layout: Layout,
 }
 
 /// Inputs of sheet 1 beyond the kinematics.
@@ -99,10 +105,8 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
         mech_region.center().x - world.center().x / mu_l,
         mech_region.y0 + HEADER + MECH_PAD + draw_h / 2.0 + world.center().y / mu_l,
     );
-    let mut placer = Placer::new(mech_region);
     region_header(
         &mut mech,
-        &mut placer,
         mech_region,
         l.positions_title(),
         &[
@@ -125,11 +129,11 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let legend_y = mech_region.y1 - 2.0;
     let sample = (Point::new(mech_region.x0 + 2.0, legend_y - 1.2), Point::new(mech_region.x0 + 16.0, legend_y - 1.2));
     mech.line(sample.0, sample.1, AXIS);
-    let legend = Text::new(Point::new(mech_region.x0 + 18.0, legend_y), l.trajectories(), 2.5, Anchor::Start);
-    placer.block(legend.bbox().union_pt(sample.0));
-    mech.text(legend);
+    mech.text(Text::new(Point::new(mech_region.x0 + 18.0, legend_y), l.trajectories(), 2.5, Anchor::Start));
+    let mut labels = Labels::new();
     MechanismView { m, k, view: View { mu: mu_l, origin }, kulisa: &inp.project.kulisa_lengths }
-        .draw(&mut mech, &mut placer);
+        .draw(&mut mech, &mut labels);
+    labels.place(&mut mech, mech_region.inflate(-0.5, -0.5));
 
     // With a force analysis, its drawings fill the left column below the mechanism and the
     // acceleration plans move to the right column.
@@ -166,7 +170,7 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let vel_region = Rect::new(right_x0, TOP, inner.x1 - 4.0, vel_bottom);
     let vplans: Vec<_> = k.positions.iter().map(|p| velocity_plan(m, &p.state)).collect();
     let mut vel = Group::new("velocity-plans", vel_region);
-    let mu_v = plans_region(
+    let vdrawn = plans_region(
         &mut vel,
         vel_region,
         &vplans,
@@ -183,7 +187,7 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     };
     let aplans: Vec<_> = k.acceleration.iter().map(|&i| acceleration_plan(m, &k.positions[i].state)).collect();
     let mut acc = Group::new("acceleration-plans", acc_region);
-    let mu_a = plans_region(
+    let adrawn = plans_region(
         &mut acc,
         acc_region,
         &aplans,
@@ -257,9 +261,14 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     groups.extend(extra);
     let title =
         format!("{} — {}", inp.info.title, if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() });
+    let scene = Scene { width: A1_W, height: A1_H, title, groups };
+    let mut layout = layout::measure(&scene);
+    layout.smallest_plan_mm =
+        vdrawn.iter().chain(&adrawn).map(|p| p.size_mm[0].max(p.size_mm[1])).reduce(f64::min);
     Ok(Composed {
-        scene: Scene { width: A1_W, height: A1_H, title, groups },
-        scales: Scales { mu_l, mu_v, mu_a },
+        scene,
+        layout,
+        scales: Scales { mu_l, mu_v: common_mu(&vdrawn), mu_a: common_mu(&adrawn), velocity_plans: vdrawn, acceleration_plans: adrawn },
         force_scales,
         trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
     })
@@ -269,19 +278,33 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
 const NOTES_MAX_H: f64 = 60.0;
 
 /// A region's title (5 mm) and its line of scale and formula (3.5 mm).
-fn region_header(g: &mut Group, placer: &mut Placer, r: Rect, title: &str, lines: &[LabelText]) {
-    let t = Text::new(Point::new(r.x0 + 2.0, r.y0 + 6.0), title, 5.0, Anchor::Start);
-    placer.block(t.bbox());
-    g.text(t);
+fn region_header(g: &mut Group, r: Rect, title: &str, lines: &[LabelText]) {
+    g.text(Text::new(Point::new(r.x0 + 2.0, r.y0 + 6.0), title, 5.0, Anchor::Start));
     let mut x = r.x0 + 2.0;
     for line in lines {
         let bb = line.draw(g, Point::new(x, r.y0 + 12.5), 3.5, Anchor::Start);
-        placer.block(bb);
         x = bb.x1 + 8.0;
     }
 }
 
-/// Draws plans in a grid filling `region` below its header, at one round scale; returns it.
+/// One drawn plan: its position, scale and size on paper.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct PlanDrawn {
+    pub position: String,
+    /// (m/s)/mm or (m/s²)/mm.
+    pub mu: f64,
+    /// Width and height of the plan on paper, mm.
+    pub size_mm: [f64; 2],
+}
+
+/// The scale all plans share, if they do.
+fn common_mu(plans: &[PlanDrawn]) -> Option<f64> {
+    let first = plans.first()?.mu;
+    plans.iter().all(|p| p.mu == first).then_some(first)
+}
+
+/// Draws plans in cells filling `region` below its header (see [`size_plans`]); returns
+/// what each plan became.
 #[allow(clippy::too_many_arguments)]
 fn plans_region(
     g: &mut Group,
@@ -291,19 +314,38 @@ fn plans_region(
     pole: &str,
     lang: Language,
     (title, sym, unit): (&str, &str, &str),
-) -> f64 {
+) -> Vec<PlanDrawn> {
     let body = Rect::new(region.x0, region.y0 + HEADER, region.x1, region.y1);
-    let cells = grid(body, plans.len());
-    let need = plans.iter().zip(&cells).map(|(p, c)| required_mu(p, (c.width(), c.height()))).fold(0.0, f64::max);
-    let mu = scale::round_up(need);
-    let mut placer = Placer::new(region);
-    let scale_line =
-        LabelText::new("μ", sym).with_tail(format!(" = {} {}", fmt::localise(&scale::format(mu), lang), unit));
-    region_header(g, &mut placer, region, title, &[scale_line]);
-    for ((plan, cell), pos) in plans.iter().zip(&cells).zip(positions) {
-        draw_plan(g, *cell, &LeverLabels::get(lang).position(&pos.label), plan, mu, pole);
+    let scale_line = |mu: f64| {
+        LabelText::new("μ", sym).with_tail(format!(" = {} {}", fmt::localise(&scale::format(mu), lang), unit))
+    };
+    let l = LeverLabels::get(lang);
+    // A cell holds its title (3.5 mm) and a scale line (2.5 mm) of the longest value.
+    let min_w = positions
+        .iter()
+        .map(|p| LabelText::new(l.position(&p.label), "").width(3.5))
+        .fold(scale_line(0.0025).width(2.5), f64::max)
+        + 5.0;
+    let sizing: Sizing = size_plans(body, plans, min_w);
+    let header = if sizing.common {
+        scale_line(sizing.mu[0])
+    } else {
+        LabelText::new("μ", sym).with_tail(format!(": {}", LeverLabels::get(lang).own_scales()))
+    };
+    region_header(g, region, title, &[header]);
+    for ((plan, &cell), (pos, &mu)) in plans.iter().zip(&sizing.cells).zip(positions.iter().zip(&sizing.mu)) {
+        let mut labels = Labels::new();
+        let title = l.position(&pos.label);
+        let c = PlanCell { cell, title: &title, plan, mu, pole, scale_line: (!sizing.common).then(|| scale_line(mu)) };
+        draw_plan(g, &c, &mut labels);
+        labels.place(g, label_bounds(cell));
     }
-    mu
+    positions
+        .iter()
+        .zip(sizing.drawn(plans))
+        .zip(&sizing.mu)
+        .map(|((p, size_mm), &mu)| PlanDrawn { position: p.label.clone(), mu, size_mm })
+        .collect()
 }
 
 fn sheet_table(t: &NumTable, title: &str, lang: Language) -> Table {

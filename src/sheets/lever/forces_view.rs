@@ -5,14 +5,15 @@
 
 use super::labels::LeverLabels;
 use super::mechanism_view::split_name;
-use super::plans_view::{MARGIN, TITLE, draw_plan_with, plan_bbox};
+use super::plans_view::{MARGIN, PlanCell, TITLE, draw_plan, plan_bbox};
 use crate::drawing::fmt;
 use crate::drawing::labels::{Common, Language};
-use crate::drawing::place::Placer;
+use crate::drawing::obstacles::Obstacles;
+use crate::drawing::place::Labels;
 use crate::drawing::plot::{Axis, Plot};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text, VECTOR};
-use crate::drawing::symbols::{frame_pivot, slider, turn_arrow, vector};
+use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, slider, vector};
 use crate::drawing::table::Table;
 use crate::drawing::text::LabelText;
 use crate::lever::analysis::ForceAnalysis;
@@ -59,15 +60,19 @@ pub struct ForceScales {
     pub mu_l: Vec<f64>,
     /// μ_P of each polygon (groups from the last, then the crank), N/mm.
     pub mu_p: Vec<f64>,
+    /// The scale of the force arrows on each group drawing, N/mm.
+    pub mu_f: Vec<f64>,
     /// Velocity scale of the Zhukovsky lever, (m/s)/mm.
     pub mu_lever: f64,
+    /// The scale of the force arrows on the lever, N/mm.
+    pub mu_f_lever: f64,
 }
 
 enum Content {
     /// Index into the polygons, and the layout computed for the cell's size.
     Polygon(usize, GroupLayout),
-    /// The turned velocity plan and its scale.
-    Lever(Plan, f64),
+    /// The turned velocity plan, its scale and the scale of its force arrows.
+    Lever(Plan, f64, f64),
     Load(usize),
     Table(usize),
 }
@@ -80,10 +85,14 @@ struct GroupLayout {
     /// Width of the group drawing with its room for arrows, mm.
     drawing_w: f64,
     mu_p: f64,
+    /// Scale of the force arrows on the group drawing, N/mm.
+    mu_f: f64,
     /// The polygon's vertices in newtons, from its start, and their box.
     chain: Vec<Vec2>,
     chain_box: Rect,
     equation: Vec<Vec<LabelText>>,
+    /// Each force's symbol and value, wrapped into lines.
+    legend: Vec<Vec<LabelText>>,
 }
 
 struct Cell {
@@ -147,26 +156,29 @@ pub fn draw_forces(g: &mut Group, region: Rect, inp: &ForcesInput) -> ForceScale
             attempt = attempt.shrunk();
         }
     };
-    let mut scales = ForceScales { mu_l: vec![], mu_p: vec![], mu_lever: 0.0 };
+    let mut scales = ForceScales { mu_l: vec![], mu_p: vec![], mu_f: vec![], mu_lever: 0.0, mu_f_lever: 0.0 };
     for (cell, origin) in cells.iter().zip(at) {
         let r = Rect::new(origin.x, origin.y, origin.x + cell.w, origin.y + cell.h);
         // Each cell places its own labels inside itself, so cells never collide.
-        let mut placer = Placer::new(r);
+        let mut labels = Labels::new();
         match cell.content {
             Content::Polygon(i, ref layout) => {
-                draw_group_cell(g, &mut placer, r, inp, &inp.fa.forces.polygons[i], layout);
+                draw_group_cell(g, &mut labels, r, inp, &inp.fa.forces.polygons[i], layout);
                 scales.mu_l.push(layout.mu_l);
                 scales.mu_p.push(layout.mu_p);
+                scales.mu_f.push(layout.mu_f);
             }
-            Content::Lever(ref plan, mu) => {
-                draw_lever(g, &mut placer, r, inp, plan, mu);
+            Content::Lever(ref plan, mu, mu_f) => {
+                draw_lever(g, &mut labels, r, inp, plan, (mu, mu_f));
                 scales.mu_lever = mu;
+                scales.mu_f_lever = mu_f;
             }
-            Content::Load(i) => draw_load(g, &mut placer, r, inp, i),
+            Content::Load(i) => draw_load(g, &mut labels, r, inp, i),
             Content::Table(i) => {
                 inp.tables[i].draw(g, origin);
             }
         }
+        labels.place(g, r.inflate(-0.5, -0.5));
     }
     scales
 }
@@ -202,21 +214,75 @@ fn bbox_of(pts: &[Vec2]) -> Rect {
     pts.iter().fold(Rect::from_points(Point::ZERO, Point::ZERO), |r, p| r.union_pt(p.to_point()))
 }
 
-fn equation_lines(inp: &ForcesInput, poly: &Polygon, width: f64) -> Vec<Vec<LabelText>> {
-    let terms: Vec<LabelText> =
-        poly.terms.iter().filter(|t| t.force.norm() > 0.0).map(|t| force_label(inp, t.kind, t.on)).collect();
+/// Items in rows no wider than `width`, each followed by `sep` and the last by `last`.
+fn wrap_items(items: Vec<LabelText>, width: f64, sep: &str, last: &str) -> Vec<Vec<LabelText>> {
     let mut lines: Vec<Vec<LabelText>> = vec![vec![]];
     let mut w = 0.0;
-    for (i, t) in terms.iter().enumerate() {
-        let last = i + 1 == terms.len();
-        let item = LabelText { tail: if last { " = 0".into() } else { " +".into() }, ..t.clone() };
-        let iw = measure(&item, 3.5).width() + 2.0;
+    let n = items.len();
+    for (i, t) in items.into_iter().enumerate() {
+        let end = if i + 1 == n { last } else { sep };
+        let item = LabelText { tail: format!("{}{end}", t.tail), ..t };
+        let iw = measure(&item, 3.5).width() + 2.5;
         if w + iw > width && w > 0.0 {
             lines.push(vec![]);
             w = 0.0;
         }
         w += iw;
         lines.last_mut().expect("one line at least").push(item);
+    }
+    lines.retain(|l| !l.is_empty());
+    lines
+}
+
+fn equation_lines(inp: &ForcesInput, poly: &Polygon, width: f64) -> Vec<Vec<LabelText>> {
+    let terms: Vec<LabelText> = poly
+        .terms
+        .iter()
+        .filter(|t| t.force.norm() > 0.0)
+        .enumerate()
+        .map(|(k, t)| {
+            let l = force_label(inp, t.kind, t.on);
+            if k == 0 { l } else { LabelText { main: format!("+ {}", l.main), ..l } }
+        })
+        .collect();
+    wrap_items(terms, width, "", " = 0")
+}
+
+/// The round scale (N/mm) that draws the largest of `forces` no longer than [`ARROW_MAX`].
+fn arrow_scale(largest: f64) -> f64 {
+    scale::round_up(largest.max(f64::MIN_POSITIVE) / ARROW_MAX)
+}
+
+/// "G₂ = 19,6 N", with a star when the arrow is drawn longer than its scale gives.
+fn value_item(inp: &ForcesInput, label: LabelText, value: f64, unit: &str, short: bool) -> LabelText {
+    let star = if short { "*" } else { "" };
+    label.with_tail(format!("{star} = {} {unit}", fmt::value(value, inp.lang)))
+}
+
+/// The legend of a group drawing: every force on it and the inner reaction with their
+/// values, the inertia moments, and the note on short arrows when one is.
+fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec<Vec<LabelText>> {
+    let mut items = Vec::new();
+    let mut short = false;
+    for t in poly.terms.iter().filter(|t| t.force.norm() > 0.0) {
+        let f = t.force.norm();
+        let s = f / mu_f < ARROW_MIN;
+        short |= s;
+        items.push(value_item(inp, force_label(inp, t.kind, t.on), f, inp.c.unit_n(), s));
+    }
+    if let Some(inner) = &poly.inner {
+        items.push(value_item(inp, force_label(inp, inner.kind, inner.on), inner.force.norm(), inp.c.unit_n(), false));
+    }
+    for il in inp.fa.forces.inertia.iter().filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0) {
+        let label = LabelText::new("M", format!("i{}", inp.m.links[il.link].number));
+        items.push(value_item(inp, label, il.moment.abs(), inp.c.unit_n_m(), false));
+    }
+    with_short_note(inp, wrap_items(items, width, ";", ""), short)
+}
+
+fn with_short_note(inp: &ForcesInput, mut lines: Vec<Vec<LabelText>>, short: bool) -> Vec<Vec<LabelText>> {
+    if short {
+        lines.push(vec![LabelText::new(format!("* {}", inp.l.short_arrow(&format!("{ARROW_MIN}"))), "")]);
     }
     lines
 }
@@ -233,12 +299,18 @@ fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes) -> (GroupLayout, f6
     let chain = chain(poly);
     let chain_box = bbox_of(&chain);
     let mu_p = scale::round_up(chain_box.width().max(chain_box.height()) / s.poly_box);
+    let mu_f = arrow_scale(poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max));
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let w = (drawing_w + poly_w).max(120.0);
     let equation = equation_lines(inp, poly, w - 4.0);
-    let h = CELL_TITLE + drawing_h.max(poly_h) + LINE * (equation.len() as f64 + 2.0) + 2.0;
-    (GroupLayout { world, mu_l, drawing_w, mu_p, chain, chain_box, equation }, w, h)
+    let legend = group_legend(inp, poly, mu_f, w - 4.0);
+    let text_lines = equation.len() + legend.len() + SCALE_LINES;
+    let h = CELL_TITLE + drawing_h.max(poly_h) + LINE * text_lines as f64 + 2.0;
+    (GroupLayout { world, mu_l, drawing_w, mu_p, mu_f, chain, chain_box, equation, legend }, w, h)
 }
+
+/// Lines of scales under a group drawing: μ_l, μ_F and μ_P.
+const SCALE_LINES: usize = 2;
 
 fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let mut out = Vec::new();
@@ -249,9 +321,12 @@ fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let lever = velocity_plan(inp.m, inp.state).turned(inp.m.omega1.signum());
     let bb = plan_bbox(&lever);
     let mu = scale::round_up(bb.width().max(bb.height()) / s.lever_box);
+    let mu_f = lever_arrow_scale(inp);
     let pad = MARGIN + ARROW_MAX + 4.0;
-    let (w, h) = ((bb.width() / mu + 2.0 * pad).max(110.0), TITLE + bb.height() / mu + 2.0 * pad + 3.0 * LINE);
-    out.push(Cell { w, h, content: Content::Lever(lever, mu) });
+    let w = (bb.width() / mu + 2.0 * pad).max(110.0);
+    let text_lines = LEVER_LINES + lever_legend(inp, mu_f, w - 4.0).len();
+    let h = TITLE + bb.height() / mu + 2.0 * pad + text_lines as f64 * LINE;
+    out.push(Cell { w, h, content: Content::Lever(lever, mu, mu_f) });
     for i in 0..inp.fa.model.loads.len() {
         out.push(Cell { w: LOAD_W, h: LOAD_H, content: Content::Load(i) });
     }
@@ -302,6 +377,12 @@ fn force_label(inp: &ForcesInput, kind: Kind, on: usize) -> LabelText {
     }
 }
 
+/// The label of the forces of the couple that replaces link `on`'s inertia moment on the
+/// lever.
+fn couple_label(inp: &ForcesInput, on: usize) -> LabelText {
+    LabelText::new("P", format!("M{}", inp.m.links[on].number))
+}
+
 /// World to paper for a drawing of world box `wb` centred in `r` at scale `mu`.
 fn view(wb: Rect, r: Rect, mu: f64) -> impl Fn(Vec2) -> Point {
     let c = r.center();
@@ -313,48 +394,57 @@ fn paper_dir(v: Vec2) -> Vec2 {
     Vec2::new(v.x, -v.y)
 }
 
-/// A force arrow from `at` with its label (3.5 mm, with the value when the arrow had to be
-/// lengthened; `small`: 2.5 mm and no value, for the crowded lever); nothing for a zero force.
-fn force_arrow(
-    g: &mut Group,
-    placer: &mut Placer,
-    inp: &ForcesInput,
-    at: Point,
-    (kind, on, force): (Kind, usize, Vec2),
-    unit: f64,
-    small: bool,
-) {
-    let f = force.norm();
-    if f <= 0.0 {
-        return;
+/// Force arrows of one drawing, kept apart: an arrow along a link is drawn beside it, and
+/// one from the same point in (nearly) the same direction as an earlier one beside that.
+struct Arrows {
+    /// The drawing's link lines, paper mm.
+    links: Vec<(Point, Point)>,
+    drawn: Vec<(Point, Vec2)>,
+    mu_f: f64,
+    h: f64,
+}
+
+/// How far an arrow along a link or another arrow is set beside it, mm.
+const BESIDE: f64 = 2.5;
+/// Directions closer than this (sine of the angle) count as along.
+const ALONG: f64 = 0.17;
+
+impl Arrows {
+    /// Draws a force arrow from `at` (nothing for a zero force) and asks for its label
+    /// beside its shaft; returns whether it was drawn at the minimum length.
+    fn arrow(&mut self, g: &mut Group, labels: &mut Labels, at: Point, force: Vec2, label: LabelText) -> bool {
+        let f = force.norm();
+        if f <= 0.0 {
+            return false;
+        }
+        let natural = f / self.mu_f;
+        let len = natural.clamp(ARROW_MIN, ARROW_MAX);
+        let d = paper_dir(force) / f;
+        let n = d.turn_90();
+        let mut start = at;
+        let along_link = self.links.iter().any(|&(a, b)| {
+            let u = b - a;
+            let on_line = (at - a).cross(u).abs() / u.norm().max(tol::PAPER) < 0.5;
+            on_line && (d.cross(u) / u.norm().max(tol::PAPER)).abs() < ALONG
+        });
+        if along_link {
+            start += n * BESIDE;
+        }
+        let twins = self.drawn.iter().filter(|(p, e)| (*p - at).norm() < 1.0 && e.dot(d) > 1.0 - ALONG).count();
+        start += n * (BESIDE * twins as f64);
+        self.drawn.push((at, d));
+        let tip = start + d * len;
+        if start != at {
+            g.line(at, start, THIN);
+        }
+        vector(g, start, tip, VECTOR);
+        labels.add(start + d * (len * 0.55), n, label, self.h);
+        natural < ARROW_MIN
     }
-    let natural = f / unit;
-    let len = natural.clamp(ARROW_MIN, ARROW_MAX);
-    let d = paper_dir(force) / f;
-    let tip = at + d * len;
-    vector(g, at, tip, VECTOR);
-    let mut label = force_label(inp, kind, on);
-    if natural < ARROW_MIN && !small {
-        label.tail = format!(" = {} {}", fmt::value(f, inp.lang), inp.c.unit_n());
-    }
-    place_label_h(g, placer, tip, d, &label, if small { 2.5 } else { 3.5 });
 }
 
-/// Places a label with a subscript beside `anchor`, preferring direction `pref`.
-fn place_label(g: &mut Group, placer: &mut Placer, anchor: Point, pref: Vec2, label: &LabelText) {
-    place_label_h(g, placer, anchor, pref, label, 3.5);
-}
-
-fn place_label_h(g: &mut Group, placer: &mut Placer, anchor: Point, pref: Vec2, label: &LabelText, h: f64) {
-    let bb = measure(label, h);
-    let r = placer.place_box(anchor, pref, bb.width() + 0.4, bb.height() + 0.4);
-    label.draw(g, Point::new(r.center().x, r.y1 - 0.2 - bb.y1), h, Anchor::Middle);
-}
-
-fn cell_title(g: &mut Group, placer: &mut Placer, r: Rect, text: &str) {
-    let t = Text::new(Point::new(r.x0 + 2.0, r.y0 + 5.0), text, 3.5, Anchor::Start);
-    placer.block(t.bbox());
-    g.text(t);
+fn cell_title(g: &mut Group, r: Rect, text: &str) {
+    g.text(Text::new(Point::new(r.x0 + 2.0, r.y0 + 5.0), text, 3.5, Anchor::Start));
 }
 
 fn group_title(inp: &ForcesInput, poly: &Polygon) -> String {
@@ -367,60 +457,60 @@ fn group_title(inp: &ForcesInput, poly: &Polygon) -> String {
     }
 }
 
-fn draw_group_cell(
-    g: &mut Group,
-    placer: &mut Placer,
-    r: Rect,
-    inp: &ForcesInput,
-    poly: &Polygon,
-    layout: &GroupLayout,
-) {
-    cell_title(g, placer, r, &group_title(inp, poly));
-    let top = r.y0 + CELL_TITLE;
-    let bottom = r.y1 - LINE * (layout.equation.len() as f64 + 2.0) - 2.0;
-    let geo = Rect::new(r.x0, top, r.x0 + layout.drawing_w, bottom);
-    draw_group_geometry(g, placer, inp, poly, geo, layout.world, layout.mu_l);
-    let pr = Rect::new(r.x0 + layout.drawing_w, top, r.x1, bottom);
-    draw_polygon(g, placer, inp, poly, layout, pr);
-    let mut y = bottom + LINE;
-    for line in &layout.equation {
-        let mut x = r.x0 + 2.0;
+/// Rows of items from `y` down, one row per line; returns the next line's baseline.
+fn text_rows(g: &mut Group, x0: f64, mut y: f64, rows: &[Vec<LabelText>]) -> f64 {
+    for line in rows {
+        let mut x = x0;
         for item in line {
             let bb = item.draw(g, Point::new(x, y), 3.5, Anchor::Start);
-            placer.block(bb);
-            x = bb.x1 + 2.0;
+            x = bb.x1 + 2.5;
         }
         y += LINE;
     }
-    let scale_lines = [
-        LabelText::new("μ", "l").with_tail(format!(
-            " = {} {}",
-            fmt::localise(&scale::format(layout.mu_l), inp.lang),
-            inp.c.unit_m_per_mm()
-        )),
-        LabelText::new("μ", "P").with_tail(format!(
-            " = {} {}",
-            fmt::localise(&scale::format(layout.mu_p), inp.lang),
-            inp.c.unit_n_per_mm()
-        )),
+    y
+}
+
+fn scale_item(inp: &ForcesInput, sub: &str, mu: f64, unit: &str) -> LabelText {
+    LabelText::new("μ", sub).with_tail(format!(" = {} {unit}", fmt::localise(&scale::format(mu), inp.lang)))
+}
+
+fn with_semicolon(mut l: LabelText) -> LabelText {
+    l.tail.push(';');
+    l
+}
+
+fn draw_group_cell(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, poly: &Polygon, layout: &GroupLayout) {
+    cell_title(g, r, &group_title(inp, poly));
+    let top = r.y0 + CELL_TITLE;
+    let lines = layout.equation.len() + layout.legend.len() + SCALE_LINES;
+    let bottom = r.y1 - LINE * lines as f64 - 2.0;
+    let geo = Rect::new(r.x0, top, r.x0 + layout.drawing_w, bottom);
+    draw_group_geometry(g, labels, inp, poly, geo, layout);
+    let pr = Rect::new(r.x0 + layout.drawing_w, top, r.x1, bottom);
+    draw_polygon(g, labels, inp, poly, layout, pr);
+    let scales = vec![
+        vec![
+            with_semicolon(scale_item(inp, "l", layout.mu_l, inp.c.unit_m_per_mm())),
+            scale_item(inp, "F", layout.mu_f, inp.c.unit_n_per_mm()),
+        ],
+        vec![scale_item(inp, "P", layout.mu_p, inp.c.unit_n_per_mm())],
     ];
-    for line in scale_lines {
-        placer.block(line.draw(g, Point::new(r.x0 + 2.0, y), 3.5, Anchor::Start));
-        y += LINE;
-    }
+    let y = text_rows(g, r.x0 + 2.0, bottom + LINE, &layout.equation);
+    let y = text_rows(g, r.x0 + 2.0, y, &layout.legend);
+    text_rows(g, r.x0 + 2.0, y, &scales);
 }
 
 fn draw_group_geometry(
     g: &mut Group,
-    placer: &mut Placer,
+    labels: &mut Labels,
     inp: &ForcesInput,
     poly: &Polygon,
     r: Rect,
-    wb: Rect,
-    mu: f64,
+    layout: &GroupLayout,
 ) {
-    let p = view(wb, r, mu);
+    let p = view(layout.world, r, layout.mu_l);
     let m = inp.m;
+    let mut link_lines = Vec::new();
     for &l in &links_of(inp, poly) {
         let link = &m.links[l];
         let joints: Vec<usize> = link.points.iter().copied().filter(|&q| !m.is_mass_centre(q)).collect();
@@ -438,7 +528,9 @@ fn draw_group_geometry(
             }
             _ => {
                 for &q in &joints[1..] {
-                    g.line(p(inp.state.points[first].p), p(inp.state.points[q].p), MAIN);
+                    let (a, b) = (p(inp.state.points[first].p), p(inp.state.points[q].p));
+                    g.line(a, b, MAIN);
+                    link_lines.push((a, b));
                 }
             }
         }
@@ -448,7 +540,7 @@ fn draw_group_geometry(
     for &l in &links_of(inp, poly) {
         points.extend(m.links[l].points.iter().filter(|q| !points.contains(q)).collect::<Vec<_>>());
     }
-    for q in points {
+    for &q in &points {
         let at = p(inp.state.points[q].p);
         if m.is_frame(q) {
             frame_pivot(g, at, 1.2);
@@ -457,28 +549,33 @@ fn draw_group_geometry(
         } else {
             g.circle(at, 1.0, THIN);
         }
-        let (main, sub) = split_name(m.name(q));
-        place_label(g, placer, at, Vec2::new(-1.0, -1.0), &LabelText::new(main, sub));
     }
-    let unit = poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max) / ARROW_MAX;
-    for t in &poly.terms {
-        force_arrow(g, placer, inp, p(t.at), (t.kind, t.on, t.force), unit.max(f64::MIN_POSITIVE), false);
-    }
+    let mut drawn = Obstacles::of_items(&g.items);
     for il in inp.fa.forces.inertia.iter().filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0) {
         let centre = m.mass_centres.iter().find(|c| c.0 == il.link).map_or(m.links[il.link].points[0], |c| c.1);
         let at = p(inp.state.points[centre].p);
-        turn_arrow(g, at, 5.0, 200.0, 250.0, il.moment > 0.0, THIN);
-        place_label(
-            g,
-            placer,
-            at + Vec2::new(5.0, 5.0),
-            Vec2::new(1.0, 1.0),
-            &LabelText::new("M", format!("i{}", m.links[il.link].number)),
-        );
+        let start = clear_turn_arrow(g, &mut drawn, at, MOMENT_R, 200.0, MOMENT_SWEEP, il.moment > 0.0, THIN);
+        let sign = if il.moment > 0.0 { -1.0 } else { 1.0 };
+        let mid = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP / 2.0).to_radians()) * MOMENT_R;
+        labels.add(mid, mid - at, LabelText::new("M", format!("i{}", m.links[il.link].number)), 3.5);
+    }
+    let mut arrows = Arrows { links: link_lines, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
+    for t in &poly.terms {
+        arrows.arrow(g, labels, p(t.at), t.force, force_label(inp, t.kind, t.on));
+    }
+    // The letters last: they keep clear of the arrows.
+    for &q in &points {
+        let at = p(inp.state.points[q].p);
+        let (main, sub) = split_name(m.name(q));
+        labels.add(at, Vec2::new(-1.0, -1.0), LabelText::new(main, sub), 3.5);
     }
 }
 
-fn draw_polygon(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, poly: &Polygon, layout: &GroupLayout, r: Rect) {
+/// Radius and sweep of an inertia moment's arc, mm and degrees.
+const MOMENT_R: f64 = 6.0;
+const MOMENT_SWEEP: f64 = 120.0;
+
+fn draw_polygon(g: &mut Group, labels: &mut Labels, inp: &ForcesInput, poly: &Polygon, layout: &GroupLayout, r: Rect) {
     let p = view(layout.chain_box, r, layout.mu_p);
     let pts = &layout.chain;
     for (k, t) in poly.terms.iter().enumerate() {
@@ -487,75 +584,91 @@ fn draw_polygon(g: &mut Group, placer: &mut Placer, inp: &ForcesInput, poly: &Po
             continue;
         }
         vector(g, a, b, VECTOR);
-        let mid = a.midpoint(b);
-        place_label(g, placer, mid, (b - a).turn_90(), &force_label(inp, t.kind, t.on));
+        labels.add(a.midpoint(b), (b - a).turn_90(), force_label(inp, t.kind, t.on), 3.5);
     }
     if let Some(inner) = &poly.inner {
         let (a, b) = (p(pts[poly.split]), p(pts[0]));
         if (b - a).norm() >= tol::PAPER_INVISIBLE {
             vector(g, a, b, DASHED);
-            place_label(g, placer, a.midpoint(b), (b - a).turn_90(), &force_label(inp, inner.kind, inner.on));
+            labels.add(a.midpoint(b), (b - a).turn_90(), force_label(inp, inner.kind, inner.on), 3.5);
         }
     }
     g.dot(p(pts[0]), 0.5);
 }
 
-fn draw_lever(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, plan: &Plan, mu: f64) {
+/// Lines under the lever besides its legend: μ_v and μ_F, P′ₘ, Δ.
+const LEVER_LINES: usize = 3;
+
+fn lever_arrow_scale(inp: &ForcesInput) -> f64 {
     let f = &inp.fa.forces;
-    let text_h = 3.0 * LINE;
-    let plan_cell = Rect::new(r.x0, r.y0, r.x1, r.y1 - text_h);
-    let pole = draw_plan_with(g, plan_cell, inp.l.lever_title(), plan, mu, "p", placer);
-    let at = |v: Vec2| Point::new(pole.x + v.x / mu, pole.y - v.y / mu);
-    let unit = f.lever.iter().map(|l| l.force.norm()).fold(f.p_m_lever.abs(), f64::max) / ARROW_MAX;
-    for l in &f.lever {
-        if l.couple {
-            let d = paper_dir(l.force);
-            vector(g, at(l.image), at(l.image) + d / d.norm().max(f64::MIN_POSITIVE) * ARROW_MIN, THIN);
+    arrow_scale(f.lever.iter().map(|l| l.force.norm()).fold(f.p_m_lever.abs(), f64::max))
+}
+
+/// The lever's legend: each force once, with its value.
+fn lever_legend(inp: &ForcesInput, mu_f: f64, width: f64) -> Vec<Vec<LabelText>> {
+    let mut items: Vec<LabelText> = Vec::new();
+    let mut short = false;
+    for l in &inp.fa.forces.lever {
+        let f = l.force.norm();
+        if f <= 0.0 {
             continue;
         }
-        force_arrow(g, placer, inp, at(l.image), (l.kind, l.on, l.force), unit.max(f64::MIN_POSITIVE), true);
+        let label = if l.couple { couple_label(inp, l.on) } else { force_label(inp, l.kind, l.on) };
+        if items.iter().any(|i| i.main == label.main && i.sub == label.sub) {
+            continue;
+        }
+        let s = f / mu_f < ARROW_MIN;
+        short |= s;
+        items.push(value_item(inp, label, f, inp.c.unit_n(), s));
+    }
+    with_short_note(inp, wrap_items(items, width, ";", ""), short)
+}
+
+fn draw_lever(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, plan: &Plan, (mu, mu_f): (f64, f64)) {
+    let f = &inp.fa.forces;
+    let legend = lever_legend(inp, mu_f, r.width() - 4.0);
+    let text_h = (LEVER_LINES + legend.len()) as f64 * LINE;
+    let plan_cell = Rect::new(r.x0, r.y0, r.x1, r.y1 - text_h);
+    let cell = PlanCell { cell: plan_cell, title: inp.l.lever_title(), plan, mu, pole: "p", scale_line: None };
+    let pole = draw_plan(g, &cell, labels);
+    let at = |v: Vec2| Point::new(pole.x + v.x / mu, pole.y - v.y / mu);
+    let mut arrows = Arrows { links: Vec::new(), drawn: Vec::new(), mu_f, h: 2.5 };
+    for l in &f.lever {
+        let label = if l.couple { couple_label(inp, l.on) } else { force_label(inp, l.kind, l.on) };
+        arrows.arrow(g, labels, at(l.image), l.force, label);
     }
     let crank = inp.m.crank();
     let a_img = inp.state.points[crank.pin].v.turn_90() * inp.m.omega1.signum();
-    force_arrow(
-        g,
-        placer,
-        inp,
-        at(a_img),
-        (Kind::Balancing, crank.link, f.dir_m * f.p_m_lever),
-        unit.max(f64::MIN_POSITIVE),
-        true,
-    );
+    arrows.arrow(g, labels, at(a_img), f.dir_m * f.p_m_lever, LabelText::new("P′", "m"));
     let lang = inp.lang;
-    let y0 = r.y1 - text_h + LINE;
     let lines = [
-        LabelText::new("μ", "v").with_tail(format!(
-            " = {} {}",
-            fmt::localise(&scale::format(mu), lang),
-            inp.c.unit_v_per_mm()
-        )),
-        LabelText::new("P′", "m").with_tail(format!(" = {} {}", fmt::value(f.p_m_lever, lang), inp.c.unit_n())),
-        LabelText::new("Δ", "")
-            .with_tail(format!(" = (Pₘ − P′ₘ)/Pₘ·100 % = {} %", fmt::scientific(f.difference_percent(), lang))),
+        vec![
+            with_semicolon(scale_item(inp, "v", mu, inp.c.unit_v_per_mm())),
+            scale_item(inp, "F", mu_f, inp.c.unit_n_per_mm()),
+        ],
+        vec![LabelText::new("P′", "m").with_tail(format!(" = {} {}", fmt::value(f.p_m_lever, lang), inp.c.unit_n()))],
+        vec![LabelText::new("Δ", "").with_tail(format!(
+            " = (Pₘ − P′ₘ)/Pₘ·100 % = {} %",
+            fmt::value(f.difference_percent(), lang)
+        ))],
     ];
-    for (k, line) in lines.iter().enumerate() {
-        placer.block(line.draw(g, Point::new(r.x0 + 2.0, y0 + LINE * k as f64), 3.5, Anchor::Start));
-    }
+    let y = text_rows(g, r.x0 + 2.0, r.y1 - text_h + LINE, &legend);
+    text_rows(g, r.x0 + 2.0, y, &lines);
 }
 
 /// A load diagram: force against S/H for both strokes, the analysed position marked.
-fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: usize) {
+fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, i: usize) {
     let load: &Load = &inp.fa.model.loads[i];
     let value = inp.fa.forces.loads[i];
     let n = inp.m.links[load.link].number;
     let lang = inp.lang;
-    cell_title(g, placer, r, &inp.l.load_title(&n.to_string()));
-    let area = Rect::new(r.x0 + 18.0, r.y0 + 20.0, r.x1 - 14.0, r.y1 - 22.0);
+    cell_title(g, r, &inp.l.load_title(&n.to_string()));
+    let area = Rect::new(r.x0 + 20.0, r.y0 + 20.0, r.x1 - 14.0, r.y1 - 22.0);
     let signed = |b: usize, y: f64| y * load.branches[b].scale;
     let values =
         || load.branches.iter().enumerate().flat_map(|(b, br)| br.curve.points.iter().map(move |p| signed(b, p.1)));
     let (least, most) = values().fold((f64::MAX, f64::MIN), |(lo, hi), y| (lo.min(y), hi.max(y)));
-    // The drawing spans zero, where the S/H axis runs; the ticks mark the diagram's extremes.
+    // The drawing spans zero, where the S/H axis runs.
     let (lo, hi) = (least.min(0.0), most.max(0.0));
     let mu = scale::round_up((hi - lo) / area.height());
     let x = Axis {
@@ -565,17 +678,13 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
         name: "S/H".into(),
         ticks: [0.0, 0.5, 1.0].map(|v| (v, fmt::localise(&format!("{v}"), lang))).to_vec(),
     };
-    let mut extremes: Vec<(f64, String)> = vec![(least, fmt::value(least, lang))];
-    if most != least {
-        extremes.push((most, fmt::value(most, lang)));
-    }
-    let y = Axis { lo, hi, mu, name: format!("P, {}", inp.c.unit_n()), ticks: extremes };
+    let y = Axis { lo, hi, mu, name: format!("P, {}", inp.c.unit_n()), ticks: force_ticks(lo, hi, mu, lang) };
     let plot = Plot::in_area(Rect::new(area.x0, area.y1 - (hi - lo) / mu, area.x1, area.y1), x, y);
-    plot.draw_axes(g, placer);
+    plot.draw_axes(g);
+    let mut names = Vec::new();
     for (b, br) in load.branches.iter().enumerate() {
         let data: Vec<(f64, f64)> = br.curve.points.iter().map(|&(s, y)| (s, signed(b, y))).collect();
         plot.line(g, &data, if b == 0 { MAIN } else { DASHED });
-        let (s, y) = data[data.len() / 2];
         let name = match br.name {
             Stroke::Working => inp.l.stroke_working(),
             Stroke::Idle => inp.l.stroke_idle(),
@@ -586,28 +695,45 @@ fn draw_load(g: &mut Group, placer: &mut Placer, r: Rect, inp: &ForcesInput, i: 
             Stroke::Intake => inp.l.stroke_intake(),
             Stroke::Compression => inp.l.stroke_compression(),
         };
-        let t = placer.place(plot.at(s, y), Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name, 2.5);
-        g.text(t);
+        // Named at a third of the stroke, on the side away from the other branch.
+        let (s, y) = data[data.len() / 3];
+        names.push((plot.at(s, y), Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name));
     }
     let along = value.force.dot(load.axis);
     let mark = plot.at(value.s, along);
     g.line(plot.at(value.s, 0.0), mark, THIN);
     g.circle(mark, 1.0, MAIN);
-    place_label(g, placer, mark, Vec2::new(1.0, -1.0), &LabelText::new("φ", "1"));
+    for (at, pref, name) in names {
+        labels.add_text(at, pref, name, 2.5);
+    }
+    let phi = fmt::localise(&format!("{:.1}", inp.phi_deg), lang);
+    labels.add(mark, Vec2::new(1.0, -1.0), LabelText::new("φ", "1").with_tail(format!(" = {phi}°")), 2.5);
     let lines = [
-        LabelText::new("φ", "1").with_tail(format!(
+        vec![LabelText::new("φ", "1").with_tail(format!(
             ": S/H = {}, P = {} {}",
             fmt::value(value.s, lang),
             fmt::value(along, lang),
             inp.c.unit_n()
-        )),
-        LabelText::new("μ", "P").with_tail(format!(
-            " = {} {}",
-            fmt::localise(&scale::format(mu), lang),
-            inp.c.unit_n_per_mm()
-        )),
+        ))],
+        vec![scale_item(inp, "P", mu, inp.c.unit_n_per_mm())],
     ];
-    for (k, line) in lines.iter().enumerate() {
-        placer.block(line.draw(g, Point::new(r.x0 + 2.0, r.y1 - 2.0 - LINE * (1 - k) as f64), 3.5, Anchor::Start));
-    }
+    text_rows(g, r.x0 + 2.0, r.y1 - 2.0 - LINE, &lines);
+}
+
+/// Ticks of a force axis at a round step (four to eight of them over the range), zero
+/// unlabelled where the S/H axis crosses.
+fn force_ticks(lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, String)> {
+    let step = scale::round_up((hi - lo) / 6.0);
+    // Ticks closer than 4 mm would print their values on each other.
+    let step = if step / mu < 4.0 { scale::round_up(4.0 * mu) } else { step };
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last)
+        .filter(|&k| k != 0)
+        .map(|k| {
+            let v = k as f64 * step;
+            (v, fmt::localise(&scale::format(v.abs()), lang))
+        })
+        .map(|(v, s)| (v, if v < 0.0 { format!("−{s}") } else { s }))
+        .collect()
 }

@@ -3,9 +3,10 @@
 //! the centres of mass and their trajectories, frame pivots and guides.
 
 use crate::drawing::path::Path;
-use crate::drawing::place::Placer;
+use crate::drawing::obstacles::Obstacles;
+use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, Group, MAIN, Pen, THIN};
-use crate::drawing::symbols::{frame_pivot, hatch, slider, turn_arrow};
+use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, hatch, slider};
 use crate::drawing::text::LabelText;
 use crate::lever::analysis::{Kinematics, Position};
 use crate::lever::linkage::{LinkKind, Mechanism, PointId, Step};
@@ -77,7 +78,7 @@ pub struct MechanismView<'a> {
 }
 
 impl MechanismView<'_> {
-    pub fn draw(&self, g: &mut Group, placer: &mut Placer) {
+    pub fn draw(&self, g: &mut Group, labels: &mut Labels) {
         self.crank_circle(g);
         for t in &self.k.trajectories {
             // World to paper is affine, so the pieces map exactly through their control points.
@@ -102,9 +103,9 @@ impl MechanismView<'_> {
                 frame_pivot(g, self.view.p(p), JOINT_R * 1.5);
             }
         }
-        self.position_numbers(g, placer);
-        self.letters(g, placer);
-        self.senses(g, placer);
+        self.senses(g, labels);
+        self.position_numbers(labels);
+        self.letters(labels);
     }
 
     fn is_pivot(&self, id: PointId) -> bool {
@@ -210,16 +211,16 @@ impl MechanismView<'_> {
     }
 
     /// Position numbers beside the crank pin of every position, outward from the pivot.
-    fn position_numbers(&self, g: &mut Group, placer: &mut Placer) {
+    fn position_numbers(&self, labels: &mut Labels) {
         let crank = self.m.crank();
         for pos in &self.k.positions {
             let (o, a) = (self.view.p(pos.state.points[crank.pivot].p), self.view.p(pos.state.points[crank.pin].p));
-            g.text(placer.place(a, a - o, &pos.label, 3.5));
+            labels.add_text(a, a - o, &pos.label, 3.5);
         }
     }
 
     /// Letters of the assigned position's points, away from the mechanism's centre.
-    fn letters(&self, g: &mut Group, placer: &mut Placer) {
+    fn letters(&self, labels: &mut Labels) {
         let st = &self.k.assigned.state;
         let centre = {
             let ps: Vec<Point> = st.points.iter().map(|q| self.view.p(q.p)).collect();
@@ -231,16 +232,15 @@ impl MechanismView<'_> {
             }
             let at = self.view.p(st.points[id].p);
             let (main, sub) = split_name(name);
-            let t = placer.place(at, at - centre + Vec2::new(0.0, -2.0), &format!("{main}{sub}"), 5.0);
-            let lt = LabelText::new(main, sub);
-            let anchor_x = t.at.x;
-            lt.draw(g, Point::new(anchor_x, t.at.y), 5.0, crate::drawing::scene::Anchor::Middle);
+            labels.add(at, at - centre + Vec2::new(0.0, -2.0), LabelText::new(main, sub), 5.0);
         }
     }
 
-    /// Arc arrows of ω (radius 4.5 mm) and ε (7 mm) at every turning link of the thick position.
-    fn senses(&self, g: &mut Group, placer: &mut Placer) {
+    /// Arc arrows of ω (radius 6 mm) and ε (9.5 mm) at every turning link of the thick
+    /// position, each turned to where it crosses the fewest lines already drawn.
+    fn senses(&self, g: &mut Group, labels: &mut Labels) {
         let st = &self.k.assigned.state;
+        let mut drawn = Obstacles::of_items(&g.items);
         for (li, link) in self.m.links.iter().enumerate() {
             if matches!(link.kind, LinkKind::Slider | LinkKind::Block) {
                 continue;
@@ -251,25 +251,27 @@ impl MechanismView<'_> {
                 _ => self.view.p((pts[0] + pts[1]) * 0.5),
             };
             let lk = st.links[li];
-            let along = self.view.dir(lk.dir);
-            let start = along.arg().to_degrees() + 55.0;
-            for (value, r, sym) in [(lk.omega, 4.5, "ω"), (lk.eps, 7.0, "ε")] {
+            let along = self.view.dir(lk.dir).arg().to_degrees();
+            for (value, r, sym) in [(lk.omega, SENSE_R.0, "ω"), (lk.eps, SENSE_R.1, "ε")] {
                 // Relative to the crank's ω1 and ω1²: a link at rest turns neither way.
                 let w1 = self.m.omega1.abs();
                 let zero = if sym == "ω" { tol::ZERO_SPEED * w1 } else { tol::ZERO_SPEED * w1 * w1 };
                 if value.abs() <= zero || (link.kind == LinkKind::Crank && sym == "ε") {
                     continue;
                 }
-                turn_arrow(g, centre, r, start, 70.0, value > 0.0, THIN);
-                let end_ang = (start + if value > 0.0 { -70.0 } else { 70.0 }).to_radians();
-                let tip = centre + math::from_angle(end_ang) * r;
-                let label = format!("{sym}{}", link.number);
-                let t = placer.place(tip, tip - centre, &label, 3.5);
-                LabelText::new(sym, link.number.to_string()).draw(g, t.at, 3.5, crate::drawing::scene::Anchor::Middle);
+                let ccw = value > 0.0;
+                let start = clear_turn_arrow(g, &mut drawn, centre, r, along + 40.0, SENSE_SWEEP, ccw, THIN);
+                let mid = (start + if ccw { -SENSE_SWEEP / 2.0 } else { SENSE_SWEEP / 2.0 }).to_radians();
+                let at = centre + math::from_angle(mid) * r;
+                labels.add(at, at - centre, LabelText::new(sym, link.number.to_string()), 3.5);
             }
         }
     }
 }
+
+/// Radii of the ω and ε arrows, mm, and their sweep, degrees.
+const SENSE_R: (f64, f64) = (6.0, 9.5);
+const SENSE_SWEEP: f64 = 110.0;
 
 /// "S2" → ("S", "2"), "O1" → ("O", "1"), "A" → ("A", "").
 pub fn split_name(name: &str) -> (String, String) {

@@ -105,12 +105,13 @@ impl Sheet for LeverSheet<'_> {
 
     fn build(&self, ctx: &Context) -> Result<SheetOutput, SheetError> {
         let b = build(ctx, self.project)?;
+        let diagnostics = b.composed.layout.problems.iter().map(|p| format!("layout: {p}")).collect();
         Ok(SheetOutput {
             number: self.kind().number,
             tables: b.note_tables(ctx.info.language),
             results: b.results(self.project),
             scene: b.composed.scene,
-            diagnostics: Vec::new(),
+            diagnostics,
         })
     }
 }

@@ -1,13 +1,20 @@
-//! Velocity and acceleration plans, each position in its own cell at one common scale.
+//! Velocity and acceleration plans, each position in its own cell.
 //!
 //! Course drawings either overlay all velocity plans on one pole or give each position
-//! its own small plan. Overlaid, 9–13 plans share their vectors' directions near the pole
-//! and their labels collide; separate cells keep every image point readable, so each
-//! position gets its own plan here.
+//! its own plan. Overlaid, 9–13 plans share their vectors' directions near the pole and
+//! their labels collide; separate cells keep every image point readable, so each position
+//! gets its own plan here.
+//!
+//! Scales: one round μ for all plans of a region when that leaves the smallest plan at
+//! least half as large as the largest; otherwise (a kulisa's plans near its extreme
+//! positions are a tenth of the others) each plan gets its own round μ, written in its cell.
+//! Cells are sized by their plans and packed in rows that fill the region.
 
-use crate::drawing::place::Placer;
+use crate::drawing::place::Labels;
+use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, Pen, THIN, Text, VECTOR};
 use crate::drawing::symbols::vector;
+use crate::drawing::text::LabelText;
 use crate::lever::plans::{Plan, SegKind};
 use crate::num::math::Norm;
 use crate::num::tol;
@@ -17,8 +24,13 @@ use kurbo::{Point, Rect, Vec2};
 pub const MARGIN: f64 = 7.0;
 /// Images closer than this (mm) share one label, e.g. "p=b=d".
 const SHARED_LABEL: f64 = 0.8;
-/// Height of a cell's title strip, mm.
+/// Height of a cell's title strip, mm; a plan with its own scale gets a second line.
 pub const TITLE: f64 = 6.0;
+const SCALE_LINE: f64 = 5.0;
+/// Gap between cells, mm.
+const GAP: f64 = 2.0;
+/// One scale for all plans when the smallest is at least this fraction of the largest.
+const COMMON_SCALE_SPREAD: f64 = 0.5;
 
 /// Bounding box of a plan in its own units (m/s or m/s²), pole included.
 pub fn plan_bbox(plan: &Plan) -> Rect {
@@ -32,37 +44,109 @@ pub fn plan_bbox(plan: &Plan) -> Rect {
     r
 }
 
-/// The scale factor needed for `plan` to fit a cell of `cell` size (units per mm).
-pub fn required_mu(plan: &Plan, cell: (f64, f64)) -> f64 {
-    let bb = plan_bbox(plan);
-    let (w, h) = (cell.0 - 2.0 * MARGIN, cell.1 - TITLE - 2.0 * MARGIN);
-    (bb.width() / w).max(bb.height() / h)
+/// How a region's plans are drawn: each plan's cell and scale.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sizing {
+    pub cells: Vec<Rect>,
+    pub mu: Vec<f64>,
+    /// One scale for all (written once in the region's header).
+    pub common: bool,
 }
 
-/// Splits `region` into a grid of at least `n` cells, as square as possible.
-pub fn grid(region: Rect, n: usize) -> Vec<Rect> {
-    let mut best = (0.0, 1, 1);
-    for rows in 1..=n {
-        let cols = n.div_ceil(rows);
-        let (w, h) = (region.width() / cols as f64, region.height() / rows as f64);
-        let score = w.min(h * 1.15);
-        if score > best.0 {
-            best = (score, rows, cols);
-        }
+impl Sizing {
+    /// Each plan's drawn size (width, height), mm.
+    pub fn drawn(&self, plans: &[Plan]) -> Vec<[f64; 2]> {
+        plans.iter().map(plan_bbox).zip(&self.mu).map(|(b, mu)| [b.width() / mu, b.height() / mu]).collect()
     }
-    let (_, rows, cols) = best;
-    let (w, h) = (region.width() / cols as f64, region.height() / rows as f64);
-    (0..n)
-        .map(|i| {
-            let (r, c) = (i / cols, i % cols);
-            Rect::new(
-                region.x0 + c as f64 * w,
-                region.y0 + r as f64 * h,
-                region.x0 + (c + 1) as f64 * w,
-                region.y0 + (r + 1) as f64 * h,
-            )
-        })
-        .collect()
+}
+
+fn cell_size(bb: Rect, mu: f64, own_scale: bool, min_w: f64) -> (f64, f64) {
+    let title = TITLE + if own_scale { SCALE_LINE } else { 0.0 };
+    ((bb.width() / mu + 2.0 * MARGIN + 2.0).max(min_w), bb.height() / mu + 2.0 * MARGIN + title + 1.0)
+}
+
+/// Packs cells of `sizes` in rows inside `body`, in order; the rows are stretched to fill
+/// the body's width and height. `None` when they do not fit.
+fn pack(sizes: &[(f64, f64)], body: Rect) -> Option<Vec<Rect>> {
+    let mut rows: Vec<Vec<usize>> = vec![vec![]];
+    let mut x = 0.0;
+    for (i, &(w, _)) in sizes.iter().enumerate() {
+        if w > body.width() {
+            return None;
+        }
+        if x + w > body.width() && x > 0.0 {
+            rows.push(vec![]);
+            x = 0.0;
+        }
+        rows.last_mut().expect("a row").push(i);
+        x += w + GAP;
+    }
+    let heights: Vec<f64> = rows.iter().map(|r| r.iter().map(|&i| sizes[i].1).fold(0.0, f64::max)).collect();
+    let total_h = heights.iter().sum::<f64>() + GAP * (rows.len() - 1) as f64;
+    if total_h > body.height() {
+        return None;
+    }
+    let extra_h = (body.height() - total_h) / rows.len() as f64;
+    let mut out = vec![Rect::ZERO; sizes.len()];
+    let mut y = body.y0;
+    for (row, h) in rows.iter().zip(&heights) {
+        let used: f64 = row.iter().map(|&i| sizes[i].0).sum::<f64>() + GAP * (row.len() - 1) as f64;
+        let extra_w = (body.width() - used) / row.len() as f64;
+        let mut x = body.x0;
+        for &i in row {
+            let w = sizes[i].0 + extra_w;
+            out[i] = Rect::new(x, y, x + w, y + h + extra_h);
+            x += w + GAP;
+        }
+        y += h + extra_h + GAP;
+    }
+    Some(out)
+}
+
+/// The next round value above `mu`.
+fn next_round(mu: f64) -> f64 {
+    scale::round_up(mu * 1.001)
+}
+
+/// Chooses the plans' scales and cells in `body` (see the module's note on scales); a cell
+/// is at least `min_w` wide (its title and scale line).
+pub fn size_plans(body: Rect, plans: &[Plan], min_w: f64) -> Sizing {
+    let boxes: Vec<Rect> = plans.iter().map(plan_bbox).collect();
+    let side = |b: &Rect| b.width().max(b.height()).max(f64::MIN_POSITIVE);
+    let largest = boxes.iter().map(side).fold(0.0, f64::max);
+    // The common scale: the smallest round μ at which the cells pack.
+    let mut mu = scale::round_up(largest / body.width().max(body.height()));
+    let mut common = None;
+    for _ in 0..400 {
+        let sizes: Vec<_> = boxes.iter().map(|&b| cell_size(b, mu, false, min_w)).collect();
+        if let Some(cells) = pack(&sizes, body) {
+            common = Some(cells);
+            break;
+        }
+        mu = next_round(mu);
+    }
+    let smallest = boxes.iter().map(side).fold(f64::MAX, f64::min);
+    if let Some(cells) = &common
+        && smallest >= COMMON_SCALE_SPREAD * largest
+    {
+        return Sizing { cells: cells.clone(), mu: vec![mu; plans.len()], common: true };
+    }
+    // Own scales: the largest drawn size `d` at which every plan, at the round μ that draws it
+    // no larger than `d`, packs.
+    let mut d = body.width().max(body.height());
+    for _ in 0..400 {
+        let mus: Vec<f64> = boxes.iter().map(|b| scale::round_up(side(b) / d)).collect();
+        let sizes: Vec<_> = boxes.iter().zip(&mus).map(|(&b, &m)| cell_size(b, m, true, min_w)).collect();
+        if let Some(cells) = pack(&sizes, body) {
+            return Sizing { cells, mu: mus, common: false };
+        }
+        d *= 0.97;
+    }
+    // Nothing packs (a region too small for its plans): the common grid, overflowing, so the
+    // layout measurement reports it.
+    let sizes: Vec<_> = boxes.iter().map(|&b| cell_size(b, mu, false, min_w)).collect();
+    let cells = pack(&sizes, Rect::new(body.x0, body.y0, body.x0 + 1e6, body.y0 + 1e6)).unwrap_or_default();
+    Sizing { cells, mu: vec![mu; plans.len()], common: true }
 }
 
 fn pen_of(kind: SegKind) -> Pen {
@@ -73,29 +157,31 @@ fn pen_of(kind: SegKind) -> Pen {
     }
 }
 
-/// Draws one plan in `cell` at scale `mu`, with the pole named `pole`.
-pub fn draw_plan(g: &mut Group, cell: Rect, title: &str, plan: &Plan, mu: f64, pole: &str) {
-    let inner = Rect::new(cell.x0 + 1.0, cell.y0 + TITLE, cell.x1 - 1.0, cell.y1 - 1.0);
-    draw_plan_with(g, cell, title, plan, mu, pole, &mut Placer::new(inner));
+/// One plan to draw in a cell.
+pub struct PlanCell<'a> {
+    pub cell: Rect,
+    pub title: &'a str,
+    pub plan: &'a Plan,
+    pub mu: f64,
+    pub pole: &'a str,
+    /// The plan's own scale line, when it has one.
+    pub scale_line: Option<LabelText>,
 }
 
-/// [`draw_plan`] with the caller's label placer (to add labels of its own afterwards);
-/// returns the paper position of the pole.
-pub fn draw_plan_with(
-    g: &mut Group,
-    cell: Rect,
-    title: &str,
-    plan: &Plan,
-    mu: f64,
-    pole: &str,
-    placer: &mut Placer,
-) -> Point {
-    let inner = Rect::new(cell.x0 + 1.0, cell.y0 + TITLE, cell.x1 - 1.0, cell.y1 - 1.0);
-    let t = Text::new(Point::new(cell.x0 + 2.0, cell.y0 + 4.5), title, 3.5, Anchor::Start);
-    placer.block(t.bbox());
-    g.text(t);
+/// Draws a plan's title, vectors and image points, and asks `labels` for its letters;
+/// returns the paper position of the pole. The caller places the labels.
+pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
+    let cell = c.cell;
+    g.text(Text::new(Point::new(cell.x0 + 2.0, cell.y0 + 4.5), c.title, 3.5, Anchor::Start));
+    let mut top = cell.y0 + TITLE;
+    if let Some(line) = &c.scale_line {
+        line.draw(g, Point::new(cell.x0 + 2.0, cell.y0 + TITLE + 3.5), 2.5, Anchor::Start);
+        top += SCALE_LINE;
+    }
+    let inner = Rect::new(cell.x0 + 1.0, top, cell.x1 - 1.0, cell.y1 - 1.0);
+    let (plan, mu) = (c.plan, c.mu);
     let bb = plan_bbox(plan);
-    let area_c = Rect::new(inner.x0 + MARGIN, inner.y0 + MARGIN, inner.x1 - MARGIN, inner.y1 - MARGIN).center();
+    let area_c = inner.inflate(-MARGIN, -MARGIN).center();
     // Paper position of the pole: the plan's box centred in the cell.
     let pole_p = Point::new(area_c.x - (bb.center().x) / mu, area_c.y + (bb.center().y) / mu);
     let p = |v: Vec2| Point::new(pole_p.x + v.x / mu, pole_p.y - v.y / mu);
@@ -104,7 +190,7 @@ pub fn draw_plan_with(
     }
     g.dot(pole_p, 0.5);
     // Labels: images closer than 0.8 mm share one label, e.g. "p=b=d".
-    let mut clusters: Vec<(Point, Vec<String>)> = vec![(pole_p, vec![pole.to_string()])];
+    let mut clusters: Vec<(Point, Vec<String>)> = vec![(pole_p, vec![c.pole.to_string()])];
     for img in &plan.images {
         let at = p(img.at);
         match clusters.iter_mut().find(|(c, _)| (*c - at).norm() < SHARED_LABEL) {
@@ -121,7 +207,31 @@ pub fn draw_plan_with(
             g.dot(*at, 0.35);
         }
         let pref = if (*at - centre).norm() < tol::PAPER { Vec2::new(-1.0, 1.0) } else { *at - centre };
-        g.text(placer.place(*at, pref, &names.join("="), 3.5));
+        labels.add_text(*at, pref, &names.join("="), 3.5);
     }
     pole_p
+}
+
+/// The box inside a cell that its labels may use.
+pub fn label_bounds(cell: Rect) -> Rect {
+    Rect::new(cell.x0 + 0.5, cell.y0 + TITLE - 1.0, cell.x1 - 0.5, cell.y1 - 0.5)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn packed_cells_fill_the_body_in_order_without_overlap() {
+        let body = Rect::new(0.0, 0.0, 200.0, 100.0);
+        let cells = pack(&[(60.0, 40.0), (80.0, 30.0), (50.0, 45.0), (90.0, 20.0)], body).expect("fits");
+        for (i, a) in cells.iter().enumerate() {
+            assert!(a.x0 >= 0.0 && a.x1 <= 200.0 + 1e-9 && a.y1 <= 100.0 + 1e-9, "{a:?}");
+            for b in &cells[i + 1..] {
+                assert!(a.intersect(*b).area() <= 1e-9, "{a:?} {b:?}");
+            }
+        }
+        assert!(cells[3].y0 > cells[0].y0, "the fourth cell starts a row");
+        assert!(pack(&[(60.0, 140.0)], body).is_none());
+    }
 }

@@ -50,6 +50,8 @@ struct Sheet1Out<'a> {
     trajectories: BTreeMap<String, Vec<[f64; 2]>>,
     /// How far the drawn trajectories (cubic pieces) stray from the exact paths, paper mm.
     trajectory_fit_error_mm: f64,
+    /// The sheet's measurement of its own layout.
+    layout: &'a crate::drawing::layout::Layout,
     #[serde(skip_serializing_if = "Option::is_none")]
     forces: Option<ForcesOut>,
 }
@@ -183,6 +185,7 @@ pub fn section(
             .map(|t| (m.name(t.point).to_string(), t.samples.iter().map(|&v| v2(v)).collect()))
             .collect(),
         trajectory_fit_error_mm: composed.trajectory_error_mm,
+        layout: &composed.layout,
         forces: forces.zip(composed.force_scales.as_ref()).map(|(fa, sc)| forces_out(m, k, fa, sc)),
     };
     serde_json::to_value(out).expect("results serialise")

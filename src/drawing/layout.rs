@@ -1,0 +1,124 @@
+//! The sheet measures its own layout: texts crossed by a drawn line, texts overlapping
+//! each other, items leaving their region. A teacher sends a sheet back for any of them, so
+//! `results.json` reports the counts and the tests hold them at zero.
+
+use super::obstacles::{Obstacles, Piece, segment_meets_rect};
+use super::scene::{Item, Scene};
+use kurbo::Rect;
+
+/// A text's box is shrunk by this much before testing: a line touching the letters' box
+/// passes beside the letters (glyphs do not fill their box), one entering it does not.
+pub const TOUCH: f64 = 0.1;
+/// A border stroke centred on a region's edge counts as inside (half the main line).
+const EDGE: f64 = 0.36;
+/// How many problems are described in words.
+const DESCRIBED: usize = 20;
+
+/// The counts of layout defects on one sheet.
+#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
+pub struct Layout {
+    /// Texts whose letters a drawn line (stroke, arrowhead, symbol, hatching) crosses.
+    pub texts_crossed: usize,
+    /// Pairs of texts whose letters overlap.
+    pub text_overlaps: usize,
+    /// Items not inside their group's region.
+    pub outside_region: usize,
+    /// The shortest side of the smallest velocity or acceleration plan, mm (a sheet without
+    /// plans has none).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub smallest_plan_mm: Option<f64>,
+    /// The first problems in words, for the user and the tests.
+    pub problems: Vec<String>,
+}
+
+impl Layout {
+    pub fn is_clean(&self) -> bool {
+        self.texts_crossed == 0 && self.text_overlaps == 0 && self.outside_region == 0
+    }
+
+    fn note(&mut self, what: String) {
+        if self.problems.len() < DESCRIBED {
+            self.problems.push(what);
+        }
+    }
+}
+
+/// Measures the layout of `scene`.
+pub fn measure(scene: &Scene) -> Layout {
+    let mut out = Layout::default();
+    let strokes = Obstacles::of_items(scene.groups.iter().flat_map(|g| g.items.iter()).filter(|i| !is_text(i)));
+    let texts: Vec<(&str, &super::scene::Text)> = scene
+        .groups
+        .iter()
+        .flat_map(|g| g.items.iter().filter_map(move |i| if let Item::Text(t) = i { Some((g.id.as_str(), t)) } else { None }))
+        .collect();
+    for (group, t) in &texts {
+        let r = t.core_box().inflate(-TOUCH, -TOUCH);
+        let crossed = strokes.near(r).any(|(p, _)| matches!(*p, Piece::Segment(a, b) if segment_meets_rect(a, b, r)));
+        if crossed {
+            out.texts_crossed += 1;
+            out.note(format!("'{group}': a line crosses {:?} at ({:.1}, {:.1}) mm", t.text, t.at.x, t.at.y));
+        }
+    }
+    let boxes = Obstacles::of_items(texts.iter().map(|(_, t)| Item::Text((*t).clone())).collect::<Vec<_>>().iter());
+    for (k, (group, t)) in texts.iter().enumerate() {
+        let r = t.core_box();
+        for (_, other) in boxes.near(r) {
+            let (og, o) = texts[*other];
+            if *other > k && o.core_box().intersect(r).area() > 1e-6 {
+                out.text_overlaps += 1;
+                out.note(format!("'{group}': {:?} overlaps {:?} ('{og}') at ({:.1}, {:.1}) mm", t.text, o.text, t.at.x, t.at.y));
+            }
+        }
+    }
+    for g in &scene.groups {
+        let region = g.region.inflate(EDGE, EDGE);
+        for item in &g.items {
+            if !inside(region, item.bbox()) {
+                out.outside_region += 1;
+                out.note(format!("'{}': an item leaves the region: {:?} not in {:?}", g.id, item.bbox(), g.region));
+            }
+        }
+    }
+    out
+}
+
+fn is_text(i: &Item) -> bool {
+    matches!(i, Item::Text(_))
+}
+
+fn inside(outer: Rect, r: Rect) -> bool {
+    r.x0 >= outer.x0 && r.y0 >= outer.y0 && r.x1 <= outer.x1 && r.y1 <= outer.y1
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::drawing::scene::{Anchor, Group, THIN, Text};
+    use kurbo::Point;
+
+    fn scene(items: Vec<Item>) -> Scene {
+        let mut g = Group::new("g", Rect::new(0.0, 0.0, 100.0, 100.0));
+        g.items = items;
+        Scene { width: 100.0, height: 100.0, title: String::new(), groups: vec![g] }
+    }
+
+    #[test]
+    fn a_line_through_a_label_an_overlap_and_an_escape_are_each_counted() {
+        let line = |a: (f64, f64), b: (f64, f64)| Item::Path {
+            path: crate::drawing::path::Path::polyline(&[a.into(), b.into()], false),
+            pen: THIN,
+        };
+        let text = |x: f64, y: f64, s: &str| Item::Text(Text::new(Point::new(x, y), s, 5.0, Anchor::Start));
+        let clean = scene(vec![line((0.0, 30.0), (90.0, 30.0)), text(10.0, 20.0, "A"), text(40.0, 20.0, "B")]);
+        assert!(measure(&clean).is_clean(), "{:?}", measure(&clean));
+        let crossed = scene(vec![line((0.0, 18.0), (90.0, 18.0)), text(10.0, 20.0, "A")]);
+        assert_eq!(measure(&crossed).texts_crossed, 1);
+        let touching = scene(vec![line((0.0, 20.0), (90.0, 20.0)), text(10.0, 20.0, "A")]);
+        assert_eq!(measure(&touching).texts_crossed, 0, "a line along the baseline only touches");
+        let overlap = scene(vec![text(10.0, 20.0, "AAA"), text(12.0, 21.0, "BBB")]);
+        assert_eq!(measure(&overlap).text_overlaps, 1);
+        let out = scene(vec![line((0.0, 18.0), (190.0, 18.0))]);
+        assert_eq!(measure(&out).outside_region, 1);
+    }
+}

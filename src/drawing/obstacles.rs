@@ -1,0 +1,198 @@
+//! What is already drawn, as straight segments and text boxes in an R-tree (`rstar`): the
+//! label placer asks it which candidate boxes are free, the layout measurement which texts a
+//! line crosses. Curves are flattened to segments within [`FLATTEN`] mm; a filled shape
+//! (an arrowhead, a dot) is its outline, which also catches a box that swallows it whole.
+
+use super::scene::Item;
+use kurbo::{Point, Rect, Shape};
+use rstar::primitives::{GeomWithData, Rectangle};
+use rstar::{AABB, RTree};
+
+/// Flattening tolerance of curves, mm: far below a line's width.
+pub const FLATTEN: f64 = 0.02;
+
+/// What an indexed piece is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Piece {
+    /// A stroke or the outline of a filled shape.
+    Segment(Point, Point),
+    /// A text's core box (the letters themselves).
+    TextBox(Rect),
+}
+
+type Entry = GeomWithData<Rectangle<[f64; 2]>, usize>;
+
+/// An index of drawn geometry.
+#[derive(Default)]
+pub struct Obstacles {
+    pieces: Vec<(Piece, usize)>,
+    tree: RTree<Entry>,
+}
+
+/// The segments an item draws (none for a text).
+pub fn segments(item: &Item) -> Vec<(Point, Point)> {
+    let bez = match item {
+        Item::Path { path, .. } => path.to_bez(),
+        Item::Fill { path } => {
+            let mut p = path.clone();
+            p.closed = true;
+            p.to_bez()
+        }
+        Item::Circle { c, r, .. } => kurbo::Circle::new(*c, *r).to_path(FLATTEN / 10.0),
+        Item::Text(_) => return Vec::new(),
+    };
+    let mut out = Vec::new();
+    let (mut start, mut last) = (Point::ZERO, Point::ZERO);
+    kurbo::flatten(bez.iter(), FLATTEN, |el| match el {
+        kurbo::PathEl::MoveTo(p) => (start, last) = (p, p),
+        kurbo::PathEl::LineTo(p) => {
+            out.push((last, p));
+            last = p;
+        }
+        kurbo::PathEl::ClosePath => {
+            if last != start {
+                out.push((last, start));
+            }
+            last = start;
+        }
+        _ => {}
+    });
+    out
+}
+
+fn rect_of(r: Rect) -> Rectangle<[f64; 2]> {
+    Rectangle::from_corners([r.x0, r.y0], [r.x1, r.y1])
+}
+
+fn aabb(r: Rect) -> AABB<[f64; 2]> {
+    AABB::from_corners([r.x0, r.y0], [r.x1, r.y1])
+}
+
+impl Obstacles {
+    /// Every item's segments and text boxes; `owner` tags them (e.g. the item's group).
+    pub fn of_items<'a>(items: impl IntoIterator<Item = &'a Item>) -> Obstacles {
+        let mut pieces = Vec::new();
+        for (k, item) in items.into_iter().enumerate() {
+            match item {
+                Item::Text(t) => pieces.push((Piece::TextBox(t.core_box()), k)),
+                _ => pieces.extend(segments(item).into_iter().map(|(a, b)| (Piece::Segment(a, b), k))),
+            }
+        }
+        let entries = pieces.iter().enumerate().map(|(i, (p, _))| Entry::new(rect_of(bounds(p)), i)).collect();
+        Obstacles { pieces, tree: RTree::bulk_load(entries) }
+    }
+
+    /// Adds a piece (a placed label, its leader) tagged `owner`.
+    pub fn add(&mut self, piece: Piece, owner: usize) {
+        let i = self.pieces.len();
+        self.pieces.push((piece, owner));
+        self.tree.insert(Entry::new(rect_of(bounds(&piece)), i));
+    }
+
+    /// The pieces touching `r`, with their owners.
+    pub fn near(&self, r: Rect) -> impl Iterator<Item = &(Piece, usize)> {
+        self.tree.locate_in_envelope_intersecting(aabb(r)).map(|e| &self.pieces[e.data])
+    }
+
+    /// How many segments cross the box `r`, and the area of text boxes it overlaps.
+    pub fn hits(&self, r: Rect) -> (usize, f64) {
+        let (mut strokes, mut area) = (0, 0.0);
+        for (p, _) in self.near(r) {
+            match *p {
+                Piece::Segment(a, b) => strokes += usize::from(segment_meets_rect(a, b, r)),
+                Piece::TextBox(t) => area += t.intersect(r).area().max(0.0),
+            }
+        }
+        (strokes, area)
+    }
+
+    /// How many stroke segments the segment `a`–`b` crosses.
+    pub fn hits_segment(&self, a: Point, b: Point) -> usize {
+        self.near(Rect::from_points(a, b))
+            .filter(|(p, _)| matches!(*p, Piece::Segment(c, d) if segments_cross(a, b, c, d)))
+            .count()
+    }
+
+    /// Whether the segment `a`–`b` crosses any text box.
+    pub fn segment_crosses_text(&self, a: Point, b: Point) -> bool {
+        self.near(Rect::from_points(a, b))
+            .any(|(p, _)| matches!(*p, Piece::TextBox(t) if segment_meets_rect(a, b, t.inflate(-0.05, -0.05))))
+    }
+}
+
+fn bounds(p: &Piece) -> Rect {
+    match *p {
+        Piece::Segment(a, b) => Rect::from_points(a, b),
+        Piece::TextBox(r) => r,
+    }
+}
+
+/// Whether segments `a`–`b` and `c`–`d` share a point.
+pub fn segments_cross(a: Point, b: Point, c: Point, d: Point) -> bool {
+    let orient = |p: Point, q: Point, r: Point| (q - p).cross(r - p);
+    let (d1, d2) = (orient(c, d, a), orient(c, d, b));
+    let (d3, d4) = (orient(a, b, c), orient(a, b, d));
+    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
+        return true;
+    }
+    let on = |p: Point, q: Point, r: Point, o: f64| {
+        o == 0.0 && r.x >= p.x.min(q.x) && r.x <= p.x.max(q.x) && r.y >= p.y.min(q.y) && r.y <= p.y.max(q.y)
+    };
+    on(c, d, a, d1) || on(c, d, b, d2) || on(a, b, c, d3) || on(a, b, d, d4)
+}
+
+/// Whether the segment `a`–`b` has a point inside or on the rectangle `r` (Liang–Barsky).
+pub fn segment_meets_rect(a: Point, b: Point, r: Rect) -> bool {
+    if r.width() < 0.0 || r.height() < 0.0 {
+        return false;
+    }
+    let d = b - a;
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [(-d.x, a.x - r.x0), (d.x, r.x1 - a.x), (-d.y, a.y - r.y0), (d.y, r.y1 - a.y)] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return false;
+            }
+        } else {
+            let t = q / p;
+            if p < 0.0 {
+                t0 = t0.max(t);
+            } else {
+                t1 = t1.min(t);
+            }
+            if t0 > t1 {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_segment_meets_a_box_it_crosses_or_lies_in_and_misses_one_beside_it() {
+        let r = Rect::new(0.0, 0.0, 2.0, 1.0);
+        assert!(segment_meets_rect(Point::new(-1.0, 0.5), Point::new(3.0, 0.5), r), "through");
+        assert!(segment_meets_rect(Point::new(0.5, 0.5), Point::new(1.0, 0.6), r), "inside");
+        assert!(!segment_meets_rect(Point::new(-1.0, 2.0), Point::new(3.0, 1.5), r), "below");
+        assert!(!segment_meets_rect(Point::new(-1.0, -0.5), Point::new(0.5, -2.0), r), "past the corner");
+        assert!(segment_meets_rect(Point::new(-1.0, 1.5), Point::new(1.5, -1.0), r), "across the corner");
+    }
+
+    #[test]
+    fn the_index_counts_crossing_strokes_and_overlapping_text() {
+        use crate::drawing::scene::{Anchor, Item, Path, THIN, Text};
+        let items = vec![
+            Item::Path { path: Path::polyline(&[Point::new(0.0, 5.0), Point::new(50.0, 5.0)], false), pen: THIN },
+            Item::Text(Text::new(Point::new(20.0, 20.0), "AB", 5.0, Anchor::Start)),
+        ];
+        let o = Obstacles::of_items(&items);
+        assert_eq!(o.hits(Rect::new(10.0, 4.0, 12.0, 6.0)).0, 1);
+        assert_eq!(o.hits(Rect::new(10.0, 6.0, 12.0, 8.0)), (0, 0.0));
+        assert!(o.hits(Rect::new(20.0, 16.0, 21.0, 19.0)).1 > 0.0);
+        assert!(o.segment_crosses_text(Point::new(19.0, 17.0), Point::new(30.0, 17.0)));
+    }
+}
