@@ -10,7 +10,7 @@ use common::{fixture, fixture_names, root};
 use kurbo::Rect;
 use std::path::Path;
 use tmm_sheets::backend::raster;
-use tmm_sheets::drawing::frame;
+use tmm_sheets::drawing::{frame, layout};
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::drawing::scene::{Item, Scene};
 use tmm_sheets::pipeline::{self, Built, Formats};
@@ -101,17 +101,22 @@ fn check_layout(name: &str, scene: &Scene) {
             assert!(a.region.intersect(tb).area() <= 1e-9, "{name}: '{}' covers the title block", a.id);
         }
     }
-    let texts: Vec<_> = scene.texts().collect();
-    for t in &texts {
+    for t in scene.texts() {
         // SVG collapses leading and trailing white space: a gap made of spaces vanishes.
         assert!(t.text.trim() == t.text && !t.text.is_empty(), "{name}: text {:?} has outer white space", t.text);
     }
+    // Independently of the sheet's measurement: no two texts' letters overlap.
+    let texts: Vec<_> = scene.texts().collect();
     for (i, a) in texts.iter().enumerate() {
         for b in &texts[i + 1..] {
             let overlap = a.core_box().intersect(b.core_box()).area();
             assert!(overlap <= 1e-6, "{name}: texts {:?} and {:?} overlap", a.text, b.text);
         }
     }
+    // The sheet's own measurement, held at zero: no text crossed by a line, no two texts
+    // overlapping, nothing outside its region.
+    let l = layout::measure(scene);
+    assert!(l.is_clean(), "{name}: {} crossed, {} overlaps, {} outside: {:#?}", l.texts_crossed, l.text_overlaps, l.outside_region, l.problems);
 }
 
 #[test]
@@ -465,26 +470,35 @@ fn numbers_and_units_are_printed_in_the_sheets_style() {
     }
 }
 
-/// Each load diagram marks its extreme forces on the P axis, whatever their signs.
+/// Each load diagram ticks its force axis at a round step over the whole range (to within
+/// one step of either extreme), and marks φ1 with its value.
 #[test]
-fn load_diagrams_tick_their_extreme_forces() {
-    use tmm_sheets::drawing::fmt;
+fn load_diagrams_tick_the_force_axis_and_mark_phi1() {
     for name in fixture_names() {
         let p = fixture(&name);
         let lever = common::build_lever(&p);
         let Some((fa, _)) = &lever.forces else { continue };
-        let texts: Vec<&str> = lever.composed.scene.texts().map(|t| t.text.as_str()).collect();
+        let forces = lever.composed.scene.groups.iter().find(|g| g.id == "forces").expect("a forces group");
+        let numbers: Vec<f64> = forces
+            .items
+            .iter()
+            .filter_map(|i| if let Item::Text(t) = i { Some(t.text.replace('−', "-").replace(',', ".")) } else { None })
+            .filter_map(|t| t.parse::<f64>().ok())
+            .filter(|v| v.fract() == 0.0 && v.abs() >= 1.0)
+            .collect();
         for load in &fa.model.loads {
             let values = load.branches.iter().flat_map(|b| b.curve.points.iter().map(move |q| q.1 * b.scale));
             let (lo, hi) = values.fold((f64::MAX, f64::MIN), |(lo, hi), y| (lo.min(y), hi.max(y)));
-            for v in [lo, hi] {
-                let tick = fmt::value(v, p.info.language);
-                assert!(
-                    texts.contains(&tick.as_str()),
-                    "{name}: no tick {tick} on link {}'s load diagram",
-                    p.lever.as_ref().unwrap().mechanism.links[load.link].number
-                );
-            }
+            // The round steps a reader can count in: 1, 2, 2.5, 4, 5 × 10^k newtons.
+            let covered = [1.0, 2.0, 2.5, 4.0, 5.0].iter().flat_map(|m| (0..7).map(move |e| m * 10f64.powi(e))).any(|step| {
+                let ticks: Vec<f64> = numbers.iter().copied().filter(|v| (v / step).fract() == 0.0).collect();
+                let (tmin, tmax) = ticks.iter().fold((0.0f64, 0.0f64), |(a, b), &v| (a.min(v), b.max(v)));
+                ticks.len() >= 2 && tmin <= lo.min(0.0) + step + 1e-9 && tmax >= hi.max(0.0) - step - 1e-9
+            });
+            assert!(covered, "{name}: the load diagram of [{lo}, {hi}] N has no round-step ticks over its range: {numbers:?}");
         }
+        let phi = tmm_sheets::drawing::fmt::localise(&format!("{:.1}", lever.kinematics.assigned.phi.to_degrees()), p.info.language);
+        let marked = forces.items.iter().any(|i| matches!(i, Item::Text(t) if t.text == format!("= {phi}°")));
+        assert!(marked, "{name}: φ1 = {phi}° is not marked on the load diagram");
     }
 }

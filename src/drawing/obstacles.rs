@@ -23,7 +23,7 @@ pub enum Piece {
 type Entry = GeomWithData<Rectangle<[f64; 2]>, usize>;
 
 /// An index of drawn geometry.
-#[derive(Default)]
+#[derive(Default, Clone)]
 pub struct Obstacles {
     pieces: Vec<(Piece, usize)>,
     tree: RTree<Entry>,

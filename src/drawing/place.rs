@@ -18,14 +18,14 @@ use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
 /// Distances tried between an anchor and its label's box, mm.
-const DISTANCES: [f64; 13] = [0.5, 1.0, 1.7, 2.6, 3.7, 5.0, 6.6, 8.5, 11.0, 14.0, 18.0, 23.0, 30.0];
+const DISTANCES: [f64; 16] = [0.5, 1.0, 1.7, 2.6, 3.7, 5.0, 6.6, 8.5, 11.0, 14.0, 18.0, 23.0, 30.0, 38.0, 48.0, 60.0];
 /// From this distance on, a leader line joins the label to its anchor, mm.
 const LEADER_FROM: f64 = 4.0;
 /// The leader starts this far from the anchor, clear of the joint or dot drawn there, mm.
 const LEADER_GAP: f64 = 0.8;
 /// Clearance kept between a label's box and any stroke, mm.
 const CLEAR: f64 = 0.25;
-const DIRECTIONS: usize = 16;
+const DIRECTIONS: usize = 24;
 
 /// One label to place.
 #[derive(Debug, Clone)]
@@ -34,6 +34,9 @@ struct Request {
     pref: Vec2,
     label: LabelText,
     h: f64,
+    /// Lower goes first: a class of labels (a mechanism's joint letters) may claim the
+    /// best spots before another (its position numbers).
+    rank: u8,
 }
 
 /// Where one label went, for views that draw something more beside it.
@@ -66,12 +69,22 @@ impl Labels {
     /// A label beside `anchor`, preferably in direction `pref` (paper coordinates; zero:
     /// up and right).
     pub fn add(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64) {
-        self.requests.push(Request { anchor, pref, label, h });
+        self.add_ranked(anchor, pref, label, h, 0);
+    }
+
+    /// A label placed after every label of a lower rank.
+    pub fn add_ranked(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
+        self.requests.push(Request { anchor, pref, label, h, rank });
     }
 
     /// A plain text label.
     pub fn add_text(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64) {
         self.add(anchor, pref, LabelText::new(text, ""), h);
+    }
+
+    /// A plain text label of a rank (see [`Labels::add_ranked`]).
+    pub fn add_text_ranked(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64, rank: u8) {
+        self.add_ranked(anchor, pref, LabelText::new(text, ""), h, rank);
     }
 
     pub fn is_empty(&self) -> bool {
@@ -80,15 +93,46 @@ impl Labels {
 
     /// Places every label inside `bounds`, clear of everything `g` holds now, and draws them.
     pub fn place(self, g: &mut Group, bounds: Rect) -> Vec<Placed> {
-        let mut obstacles = Obstacles::of_items(&g.items);
+        let drawn = Obstacles::of_items(&g.items);
         let cands: Vec<Vec<Candidate>> = self.requests.iter().map(|r| candidates(r, bounds)).collect();
-        // Most constrained first: the fewest candidates free against the drawing alone.
+        // By rank, then most constrained first: the fewest candidates free against the
+        // drawing alone.
         let mut order: Vec<usize> = (0..self.requests.len()).collect();
-        let free: Vec<usize> = cands.iter().map(|cs| cs.iter().filter(|c| c.is_free(&obstacles)).count()).collect();
-        order.sort_by_key(|&i| free[i]);
-        let mut placed = vec![Placed { r#box: Rect::ZERO, clear: false }; self.requests.len()];
-        for i in order {
-            let req = &self.requests[i];
+        let free: Vec<usize> = cands.iter().map(|cs| cs.iter().filter(|c| c.is_free(&drawn)).count()).collect();
+        order.sort_by_key(|&i| (self.requests[i].rank, free[i]));
+        // A label left without a clean spot goes first in the next round (labels placed
+        // before it took its spots), up to a few rounds; the best round is kept.
+        let mut best = self.attempt(&drawn, &cands, &order, bounds);
+        for _ in 0..REPAIR_ROUNDS {
+            let failed: Vec<usize> = order.iter().copied().filter(|&i| !best[i].1).collect();
+            if failed.is_empty() {
+                break;
+            }
+            order.retain(|i| !failed.contains(i));
+            order.splice(0..0, failed);
+            let next = self.attempt(&drawn, &cands, &order, bounds);
+            if next.iter().filter(|p| !p.1).count() < best.iter().filter(|p| !p.1).count() {
+                best = next;
+            }
+        }
+        let mut placed = Vec::with_capacity(best.len());
+        for (req, (cand, clear)) in self.requests.iter().zip(best) {
+            let (w, up, _) = label_size(&req.label, req.h);
+            let base = Point::new(cand.r.x0 + (w - SLANT * req.h) / 2.0, cand.r.y0 + up);
+            req.label.draw(g, base, req.h, Anchor::Middle);
+            if let Some((a, b)) = cand.leader {
+                g.line(a, b, THIN);
+            }
+            placed.push(Placed { r#box: cand.r, clear });
+        }
+        placed
+    }
+
+    /// One greedy round in `order`: each label's candidate and whether it is clean.
+    fn attempt(&self, drawn: &Obstacles, cands: &[Vec<Candidate>], order: &[usize], bounds: Rect) -> Vec<(Candidate, bool)> {
+        let mut obstacles = drawn.clone();
+        let mut out = vec![(Candidate { r: Rect::ZERO, leader: None, cost: 0.0 }, false); self.requests.len()];
+        for &i in order {
             // A leader may cross thin lines (out of a fan of links) when no label spot can be
             // reached without: a free box comes first, a clean leader second.
             let best = cands[i]
@@ -97,23 +141,20 @@ impl Labels {
                 .or_else(|| cands[i].iter().find(|c| c.box_is_free(&obstacles)));
             let (cand, clear) = match best {
                 Some(c) => (c.clone(), true),
-                None => (least_bad(&cands[i], &obstacles, req, bounds), false),
+                None => (least_bad(&cands[i], &obstacles, &self.requests[i], bounds), false),
             };
-            let (w, up, _) = label_size(&req.label, req.h);
-            let base = Point::new(cand.r.x0 + (w - SLANT * req.h) / 2.0, cand.r.y0 + up);
-            let before = g.items.len();
-            req.label.draw(g, base, req.h, Anchor::Middle);
             obstacles.add(Piece::TextBox(cand.r), usize::MAX);
-            debug_assert!(g.items.len() > before);
             if let Some((a, b)) = cand.leader {
-                g.line(a, b, THIN);
                 obstacles.add(Piece::Segment(a, b), usize::MAX);
             }
-            placed[i] = Placed { r#box: cand.r, clear };
+            out[i] = (cand, clear);
         }
-        placed
+        out
     }
 }
+
+/// Rounds of moving unplaced labels to the front.
+const REPAIR_ROUNDS: usize = 3;
 
 #[derive(Debug, Clone)]
 struct Candidate {
@@ -148,7 +189,8 @@ fn least_bad(cands: &[Candidate], o: &Obstacles, req: &Request, bounds: Rect) ->
         .iter()
         .map(|c| {
             let (strokes, area) = o.hits(c.r);
-            (strokes as f64 * 10.0 + area * 100.0 + c.cost, c)
+            let leader_on_text = c.leader.is_some_and(|(a, b)| o.segment_crosses_text(a, b));
+            (strokes as f64 * 10.0 + area * 100.0 + if leader_on_text { 10.0 } else { 0.0 } + c.cost, c)
         })
         .min_by(|a, b| a.0.total_cmp(&b.0))
         .map_or_else(fallback, |(_, c)| c.clone())
@@ -222,3 +264,4 @@ mod tests {
         assert!(l.is_clean(), "{l:?}");
     }
 }
+

@@ -5,7 +5,7 @@
 //! makes it; the velocity plans fill the rest of the top band; the acceleration plans at
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
-use super::forces_view::{ForceScales, ForcesInput, draw_forces};
+use super::forces_view::{ForceScales, ForcesInput, draw_forces, fit_comfortably};
 use super::labels::LeverLabels;
 use super::mechanism_view::{MechanismView, View, world_extent};
 use super::plans_view::{PlanCell, Sizing, draw_plan, label_bounds, size_plans};
@@ -68,8 +68,9 @@ const TOP: f64 = 12.0;
 const MECH_MAX_W: f64 = 450.0;
 const MECH_MAX_H: f64 = 300.0;
 const MECH_MIN_W: f64 = 200.0;
-/// With a force analysis the mechanism leaves room below it for the force drawings.
-const MECH_MAX_H_FORCES: f64 = 215.0;
+/// With a force analysis the mechanism's box is the first of these heights that leaves the
+/// force drawings enough room.
+const MECH_HEIGHTS_FORCES: [f64; 7] = [300.0, 260.0, 230.0, 200.0, 175.0, 150.0, 130.0];
 const FORCES_MIN_W: f64 = 470.0;
 /// Space around the mechanism drawing for its letters, pivots and guides.
 const MECH_PAD: f64 = 14.0;
@@ -87,19 +88,35 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let mut fr = Group::new("frame", Rect::new(0.0, 0.0, A1_W, A1_H));
     frame::frame(&mut fr);
 
-    // Mechanism: the largest round μ_l that fits, then the region shrinks to the drawing.
+    // The force drawings' input (tables 3–5 as drawn), to size the regions by.
+    let force_input = inp.forces.map(|(fa, ft)| {
+        let (t3, t4, t5) = (&ft.inertia, &ft.reactions, &ft.balance);
+        let tables = vec![
+            with_units(sheet_table(t3, l.inertia_table(), lang), t3, c),
+            Table { cell_w: 16.0, ..sheet_table(t4, l.reaction_table(), lang) },
+            Table {
+                cell_w: 18.0,
+                header: vec![c.value().to_string()],
+                ..with_units(sheet_table(t5, l.balance_table(), lang), t5, c)
+            },
+        ];
+        ForcesInput { m, fa, state: &k.assigned.state, phi_deg: k.assigned.phi.to_degrees(), l, c, lang, tables }
+    });
+
+    // Mechanism: the largest GOST μ_l that fits its box, the region shrunk to the drawing.
+    // With a force analysis the box is the tallest that leaves the force drawings below it
+    // room without cramping them.
     let world = world_extent(m, k, &inp.project.kulisa_lengths);
-    let max_h = if inp.forces.is_some() { MECH_MAX_H_FORCES } else { MECH_MAX_H };
-    let (avail_w, avail_h) = (MECH_MAX_W - 2.0 * MECH_PAD, max_h - HEADER - 2.0 * MECH_PAD);
-    let mu_l = scale::length_scale((world.width() / avail_w).max(world.height() / avail_h));
-    let draw_w = (world.width() / mu_l).max(MECH_MIN_W);
-    let draw_h = world.height() / mu_l;
-    let mech_region = Rect::new(
-        inner.x0 + 5.0,
-        TOP,
-        inner.x0 + 5.0 + draw_w + 2.0 * MECH_PAD,
-        TOP + HEADER + draw_h + 2.0 * MECH_PAD + 4.0,
-    );
+    let force_region_below = |mech: Rect| {
+        Rect::new(inner.x0 + 5.0, mech.y1 + 4.0, mech.x1.max(inner.x0 + 5.0 + FORCES_MIN_W), inner.y1 - 4.0)
+    };
+    let heights: &[f64] = if force_input.is_some() { &MECH_HEIGHTS_FORCES } else { &[MECH_MAX_H] };
+    let fits = |h: f64| {
+        let (r, _, _) = mechanism_region(world, h, inner);
+        force_input.as_ref().is_none_or(|fi| fit_comfortably(fi, force_region_below(r)))
+    };
+    let max_h = heights.iter().copied().find(|&h| fits(h)).unwrap_or(heights[heights.len() - 1]);
+    let (mech_region, mu_l, draw_h) = mechanism_region(world, max_h, inner);
     let mut mech = Group::new("mechanism", mech_region);
     let origin = Point::new(
         mech_region.center().x - world.center().x / mu_l,
@@ -137,14 +154,7 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
 
     // With a force analysis, its drawings fill the left column below the mechanism and the
     // acceleration plans move to the right column.
-    let force_region = inp.forces.map(|_| {
-        Rect::new(
-            inner.x0 + 5.0,
-            mech_region.y1 + 4.0,
-            mech_region.x1.max(inner.x0 + 5.0 + FORCES_MIN_W),
-            inner.y1 - 4.0,
-        )
-    });
+    let force_region = inp.forces.map(|_| force_region_below(mech_region));
     let left_x1 = force_region.map_or(mech_region.x1, |r| r.x1);
 
     // Right column: the tables above the title block decide how tall the velocity plans are.
@@ -218,21 +228,9 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
 
     let mut force_scales = None;
     let mut extra = Vec::new();
-    if let (Some(region), Some((fa, ft))) = (force_region, inp.forces) {
-        let (t3, t4, t5) = (&ft.inertia, &ft.reactions, &ft.balance);
+    if let (Some(region), Some(input)) = (force_region, &force_input) {
         let mut fg = Group::new("forces", region);
-        let tables = vec![
-            with_units(sheet_table(t3, l.inertia_table(), lang), t3, c),
-            Table { cell_w: 16.0, ..sheet_table(t4, l.reaction_table(), lang) },
-            Table {
-                cell_w: 18.0,
-                header: vec![c.value().to_string()],
-                ..with_units(sheet_table(t5, l.balance_table(), lang), t5, c)
-            },
-        ];
-        let input =
-            ForcesInput { m, fa, state: &k.assigned.state, phi_deg: k.assigned.phi.to_degrees(), l, c, lang, tables };
-        force_scales = Some(draw_forces(&mut fg, region, &input));
+        force_scales = Some(draw_forces(&mut fg, region, input));
         extra.push(fg);
     }
     let organisation = [inp.info.institution.as_str(), inp.info.group.as_str()]
@@ -272,6 +270,21 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
         force_scales,
         trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
     })
+}
+
+/// The mechanism's region for a box at most `max_h` tall: its scale, and the drawing's height.
+fn mechanism_region(world: Rect, max_h: f64, inner: Rect) -> (Rect, f64, f64) {
+    let (avail_w, avail_h) = (MECH_MAX_W - 2.0 * MECH_PAD, max_h - HEADER - 2.0 * MECH_PAD);
+    let mu_l = scale::length_scale((world.width() / avail_w).max(world.height() / avail_h));
+    let draw_w = (world.width() / mu_l).max(MECH_MIN_W);
+    let draw_h = world.height() / mu_l;
+    let r = Rect::new(
+        inner.x0 + 5.0,
+        TOP,
+        inner.x0 + 5.0 + draw_w + 2.0 * MECH_PAD,
+        TOP + HEADER + draw_h + 2.0 * MECH_PAD + 4.0,
+    );
+    (r, mu_l, draw_h)
 }
 
 /// The notes (the exactness note and the assumptions) may take this much height, mm.
@@ -326,7 +339,7 @@ fn plans_region(
         .map(|p| LabelText::new(l.position(&p.label), "").width(3.5))
         .fold(scale_line(0.0025).width(2.5), f64::max)
         + 5.0;
-    let sizing: Sizing = size_plans(body, plans, min_w);
+    let sizing: Sizing = size_plans(body, plans, pole, min_w);
     let header = if sizing.common {
         scale_line(sizing.mu[0])
     } else {

@@ -15,7 +15,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text, VECTOR};
 use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, slider, vector};
 use crate::drawing::table::Table;
-use crate::drawing::text::LabelText;
+use crate::drawing::text::{LabelText, wrap};
 use crate::lever::analysis::ForceAnalysis;
 use crate::lever::kinetostatics::{FRAME, Kind, Part, Polygon};
 use crate::lever::linkage::{LinkKind, Mechanism, State};
@@ -138,24 +138,7 @@ impl Sizes {
 pub fn draw_forces(g: &mut Group, region: Rect, inp: &ForcesInput) -> ForceScales {
     let title = inp.l.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.lang));
     g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
-    let body = Rect::new(region.x0, region.y0 + 10.0, region.x1, region.y1);
-    let widest =
-        inp.fa.forces.polygons.iter().map(|p| world_box(inp, p)).map(|b| b.width().max(b.height())).fold(0.0, f64::max);
-    let mut attempt = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest };
-    // Shrink until the cells fit; the last attempt is drawn even if it does not (the layout
-    // test then reports it).
-    let (cells, at) = {
-        let mut tries = 0;
-        loop {
-            let cells = cells(inp, attempt);
-            let at = pack(&cells, body);
-            tries += 1;
-            if fits(&cells, &at, body) || tries == 12 {
-                break (cells, at);
-            }
-            attempt = attempt.shrunk();
-        }
-    };
+    let (cells, at, _) = arrange(inp, region, SHRINK_TRIES);
     let mut scales = ForceScales { mu_l: vec![], mu_p: vec![], mu_f: vec![], mu_lever: 0.0, mu_f_lever: 0.0 };
     for (cell, origin) in cells.iter().zip(at) {
         let r = Rect::new(origin.x, origin.y, origin.x + cell.w, origin.y + cell.h);
@@ -181,6 +164,37 @@ pub fn draw_forces(g: &mut Group, region: Rect, inp: &ForcesInput) -> ForceScale
         labels.place(g, r.inflate(-0.5, -0.5));
     }
     scales
+}
+
+/// How many times the drawings may shrink by 10 % to fit; a region that needs more than
+/// [`COMFORTABLE`] shrinks is cramped.
+const SHRINK_TRIES: usize = 12;
+const COMFORTABLE: usize = 3;
+
+/// Cells packed into the region's body, shrinking the drawings up to `tries − 1` times until
+/// they fit; the last attempt is returned even if it does not (the layout measurement then
+/// reports it), with whether it fits.
+fn arrange(inp: &ForcesInput, region: Rect, tries: usize) -> (Vec<Cell>, Vec<Point>, bool) {
+    let body = Rect::new(region.x0, region.y0 + 10.0, region.x1, region.y1);
+    let widest =
+        inp.fa.forces.polygons.iter().map(|p| world_box(inp, p)).map(|b| b.width().max(b.height())).fold(0.0, f64::max);
+    let mut attempt = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest };
+    let mut k = 0;
+    loop {
+        let cells = cells(inp, attempt);
+        let at = pack(&cells, body);
+        k += 1;
+        let ok = fits(&cells, &at, body);
+        if ok || k >= tries {
+            return (cells, at, ok);
+        }
+        attempt = attempt.shrunk();
+    }
+}
+
+/// Whether the force drawings fit `region` without being cramped.
+pub fn fit_comfortably(inp: &ForcesInput, region: Rect) -> bool {
+    arrange(inp, region, COMFORTABLE + 1).2
 }
 
 /// The world box of a polygon's group (or the crank): its links' points.
@@ -277,12 +291,13 @@ fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec
         let label = LabelText::new("M", format!("i{}", inp.m.links[il.link].number));
         items.push(value_item(inp, label, il.moment.abs(), inp.c.unit_n_m(), false));
     }
-    with_short_note(inp, wrap_items(items, width, ";", ""), short)
+    with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
 }
 
-fn with_short_note(inp: &ForcesInput, mut lines: Vec<Vec<LabelText>>, short: bool) -> Vec<Vec<LabelText>> {
+fn with_short_note(inp: &ForcesInput, mut lines: Vec<Vec<LabelText>>, short: bool, width: f64) -> Vec<Vec<LabelText>> {
     if short {
-        lines.push(vec![LabelText::new(format!("* {}", inp.l.short_arrow(&format!("{ARROW_MIN}"))), "")]);
+        let note = inp.l.short_arrow(&format!("{ARROW_MIN}"));
+        lines.extend(wrap(&note, 3.5, width).into_iter().map(|l| vec![LabelText::new(l, "")]));
     }
     lines
 }
@@ -621,7 +636,7 @@ fn lever_legend(inp: &ForcesInput, mu_f: f64, width: f64) -> Vec<Vec<LabelText>>
         short |= s;
         items.push(value_item(inp, label, f, inp.c.unit_n(), s));
     }
-    with_short_note(inp, wrap_items(items, width, ";", ""), short)
+    with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
 }
 
 fn draw_lever(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, plan: &Plan, (mu, mu_f): (f64, f64)) {

@@ -215,7 +215,7 @@ impl MechanismView<'_> {
         let crank = self.m.crank();
         for pos in &self.k.positions {
             let (o, a) = (self.view.p(pos.state.points[crank.pivot].p), self.view.p(pos.state.points[crank.pin].p));
-            labels.add_text(a, a - o, &pos.label, 3.5);
+            labels.add_text_ranked(a, a - o, &pos.label, 3.5, 2);
         }
     }
 
@@ -263,7 +263,7 @@ impl MechanismView<'_> {
                 let start = clear_turn_arrow(g, &mut drawn, centre, r, along + 40.0, SENSE_SWEEP, ccw, THIN);
                 let mid = (start + if ccw { -SENSE_SWEEP / 2.0 } else { SENSE_SWEEP / 2.0 }).to_radians();
                 let at = centre + math::from_angle(mid) * r;
-                labels.add(at, at - centre, LabelText::new(sym, link.number.to_string()), 3.5);
+                labels.add_ranked(at, at - centre, LabelText::new(sym, link.number.to_string()), 3.5, 1);
             }
         }
     }

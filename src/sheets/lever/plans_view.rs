@@ -60,9 +60,28 @@ impl Sizing {
     }
 }
 
-fn cell_size(bb: Rect, mu: f64, own_scale: bool, min_w: f64) -> (f64, f64) {
+/// A cell's size for a plan of box `bb` at `mu`: the plan, room for its labels (`label_w`:
+/// its longest label, which may stand on either side of a plan centred in the cell), and at
+/// least `min_w` wide.
+fn cell_size(bb: Rect, mu: f64, own_scale: bool, min_w: f64, label_w: f64) -> (f64, f64) {
     let title = TITLE + if own_scale { SCALE_LINE } else { 0.0 };
-    ((bb.width() / mu + 2.0 * MARGIN + 2.0).max(min_w), bb.height() / mu + 2.0 * MARGIN + title + 1.0)
+    let side = MARGIN.max(label_w + 2.0);
+    ((bb.width() / mu + 2.0 * side + 2.0).max(min_w), bb.height() / mu + 2.0 * MARGIN + title + 1.0)
+}
+
+/// The width of a plan's longest label at 3.5 mm: the images that coincide (at any scale)
+/// share one, "p=b=s3=c".
+fn longest_label(plan: &Plan, pole: &str) -> f64 {
+    let size = plan_bbox(plan).size();
+    let same = tol::SAME_POINT * size.width.max(size.height).max(f64::MIN_POSITIVE);
+    let mut groups: Vec<(Vec2, String)> = vec![(Vec2::ZERO, pole.to_string())];
+    for img in &plan.images {
+        match groups.iter_mut().find(|(at, _)| (*at - img.at).norm() <= same) {
+            Some((_, names)) => *names = format!("{names}={}", img.label),
+            None => groups.push((img.at, img.label.clone())),
+        }
+    }
+    groups.iter().map(|(_, n)| LabelText::new(n.clone(), "").width(3.5)).fold(0.0, f64::max)
 }
 
 /// Packs cells of `sizes` in rows inside `body`, in order; the rows are stretched to fill
@@ -110,15 +129,16 @@ fn next_round(mu: f64) -> f64 {
 
 /// Chooses the plans' scales and cells in `body` (see the module's note on scales); a cell
 /// is at least `min_w` wide (its title and scale line).
-pub fn size_plans(body: Rect, plans: &[Plan], min_w: f64) -> Sizing {
+pub fn size_plans(body: Rect, plans: &[Plan], pole: &str, min_w: f64) -> Sizing {
     let boxes: Vec<Rect> = plans.iter().map(plan_bbox).collect();
+    let labels: Vec<f64> = plans.iter().map(|p| longest_label(p, pole)).collect();
     let side = |b: &Rect| b.width().max(b.height()).max(f64::MIN_POSITIVE);
     let largest = boxes.iter().map(side).fold(0.0, f64::max);
     // The common scale: the smallest round μ at which the cells pack.
     let mut mu = scale::round_up(largest / body.width().max(body.height()));
     let mut common = None;
     for _ in 0..400 {
-        let sizes: Vec<_> = boxes.iter().map(|&b| cell_size(b, mu, false, min_w)).collect();
+        let sizes: Vec<_> = boxes.iter().zip(&labels).map(|(&b, &lw)| cell_size(b, mu, false, min_w, lw)).collect();
         if let Some(cells) = pack(&sizes, body) {
             common = Some(cells);
             break;
@@ -136,7 +156,7 @@ pub fn size_plans(body: Rect, plans: &[Plan], min_w: f64) -> Sizing {
     let mut d = body.width().max(body.height());
     for _ in 0..400 {
         let mus: Vec<f64> = boxes.iter().map(|b| scale::round_up(side(b) / d)).collect();
-        let sizes: Vec<_> = boxes.iter().zip(&mus).map(|(&b, &m)| cell_size(b, m, true, min_w)).collect();
+        let sizes: Vec<_> = boxes.iter().zip(&mus).zip(&labels).map(|((&b, &m), &lw)| cell_size(b, m, true, min_w, lw)).collect();
         if let Some(cells) = pack(&sizes, body) {
             return Sizing { cells, mu: mus, common: false };
         }
@@ -144,7 +164,7 @@ pub fn size_plans(body: Rect, plans: &[Plan], min_w: f64) -> Sizing {
     }
     // Nothing packs (a region too small for its plans): the common grid, overflowing, so the
     // layout measurement reports it.
-    let sizes: Vec<_> = boxes.iter().map(|&b| cell_size(b, mu, false, min_w)).collect();
+    let sizes: Vec<_> = boxes.iter().zip(&labels).map(|(&b, &lw)| cell_size(b, mu, false, min_w, lw)).collect();
     let cells = pack(&sizes, Rect::new(body.x0, body.y0, body.x0 + 1e6, body.y0 + 1e6)).unwrap_or_default();
     Sizing { cells, mu: vec![mu; plans.len()], common: true }
 }
