@@ -29,8 +29,14 @@ pub const TITLE: f64 = 6.0;
 const SCALE_LINE: f64 = 5.0;
 /// Gap between cells, mm.
 const GAP: f64 = 2.0;
-/// One scale for all plans when the smallest is at least this fraction of the largest.
+/// One scale for all plans when the smallest is at least this fraction of the largest and
+/// at least [`MIN_PLAN`] long.
 const COMMON_SCALE_SPREAD: f64 = 0.5;
+/// A plan shorter than this (its longer side, mm) is hard to measure with a ruler; the guide
+/// draws pa = 50 mm.
+pub const MIN_PLAN: f64 = 30.0;
+/// Own scales start every plan no longer than this, mm, and enlarge from there.
+const START_PLAN: f64 = 20.0;
 
 /// Bounding box of a plan in its own units (m/s or m/s²), pole included.
 pub fn plan_bbox(plan: &Plan) -> Rect {
@@ -122,6 +128,11 @@ fn pack(sizes: &[(f64, f64)], body: Rect) -> Option<Vec<Rect>> {
     Some(out)
 }
 
+/// The largest round value below `mu`.
+fn previous_round(mu: f64) -> f64 {
+    [0.5, 0.625, 0.8].iter().map(|f| scale::round_up(mu * f)).filter(|&m| m < mu * (1.0 - 1e-9)).fold(mu * 0.5, f64::max)
+}
+
 /// The next round value above `mu`.
 fn next_round(mu: f64) -> f64 {
     scale::round_up(mu * 1.001)
@@ -148,19 +159,46 @@ pub fn size_plans(body: Rect, plans: &[Plan], pole: &str, min_w: f64) -> Sizing 
     let smallest = boxes.iter().map(side).fold(f64::MAX, f64::min);
     if let Some(cells) = &common
         && smallest >= COMMON_SCALE_SPREAD * largest
+        && smallest / mu >= MIN_PLAN
     {
         return Sizing { cells: cells.clone(), mu: vec![mu; plans.len()], common: true };
     }
-    // Own scales: the largest drawn size `d` at which every plan, at the round μ that draws it
-    // no larger than `d`, packs.
-    let mut d = body.width().max(body.height());
-    for _ in 0..400 {
-        let mus: Vec<f64> = boxes.iter().map(|b| scale::round_up(side(b) / d)).collect();
-        let sizes: Vec<_> = boxes.iter().zip(&mus).zip(&labels).map(|((&b, &m), &lw)| cell_size(b, m, true, min_w, lw)).collect();
-        if let Some(cells) = pack(&sizes, body) {
-            return Sizing { cells, mu: mus, common: false };
+    // Own scales, by water filling: every plan starts small; the smallest is enlarged by one
+    // round step while the cells still pack, and stays as it is once it cannot grow.
+    let sizes = |mus: &[f64]| -> Vec<(f64, f64)> {
+        boxes.iter().zip(mus).zip(&labels).map(|((&b, &m), &lw)| cell_size(b, m, true, min_w, lw)).collect()
+    };
+    let mut start = START_PLAN;
+    let mut mus: Vec<f64> = Vec::new();
+    for _ in 0..40 {
+        mus = boxes.iter().map(|b| scale::round_up(side(b) / start)).collect();
+        if pack(&sizes(&mus), body).is_some() {
+            break;
         }
-        d *= 0.97;
+        start *= 0.8;
+    }
+    if pack(&sizes(&mus), body).is_some() {
+        let mut frozen = vec![false; plans.len()];
+        while let Some(i) = (0..plans.len())
+            .filter(|&i| !frozen[i])
+            .min_by(|&a, &b| (side(&boxes[a]) / mus[a]).total_cmp(&(side(&boxes[b]) / mus[b])))
+        {
+            let old = mus[i];
+            mus[i] = previous_round(old);
+            if pack(&sizes(&mus), body).is_none() {
+                mus[i] = old;
+                frozen[i] = true;
+            }
+        }
+        let least = boxes.iter().zip(&mus).map(|(b, m)| side(b) / m).fold(f64::MAX, f64::min);
+        // One scale for all unless own scales make the smallest plan larger.
+        if let Some(cells) = &common
+            && least <= smallest / mu
+        {
+            return Sizing { cells: cells.clone(), mu: vec![mu; plans.len()], common: true };
+        }
+        let cells = pack(&sizes(&mus), body).expect("packed before");
+        return Sizing { cells, mu: mus, common: false };
     }
     // Nothing packs (a region too small for its plans): the common grid, overflowing, so the
     // layout measurement reports it.
