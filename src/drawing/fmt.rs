@@ -2,27 +2,13 @@
 //! and the minus sign (−, U+2212) rather than a hyphen.
 
 use crate::drawing::labels::Language;
-use crate::num::math;
+use crate::num::{digits, math};
 
-/// A value with about four significant digits (three decimals below 10).
+/// A value with four significant digits (at most nine decimals), so that a reader can
+/// recompute one printed value from others: J_S = 0,001800, ε = 4467, M = 8,040; round-off
+/// of a zero prints as 0 (see [`crate::num::digits`]).
 pub fn value(x: f64, lang: Language) -> String {
-    let a = x.abs();
-    let dec = if a < 10.0 {
-        3
-    } else if a < 100.0 {
-        2
-    } else if a < 1000.0 {
-        1
-    } else {
-        0
-    };
-    let s = format!("{x:.dec$}");
-    let s = if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
-        s.trim_start_matches('-').to_string()
-    } else {
-        s
-    };
-    localise(&s, lang)
+    localise(&digits::significant(x), lang)
 }
 
 /// A tiny number in the form 1,6·10⁻¹³ (zero as 0), as the sheets show a residual.
@@ -54,11 +40,14 @@ mod tests {
 
     #[test]
     fn decimal_comma_and_significant_digits() {
-        assert_eq!(value(0.5254, Language::Uz), "0,525");
+        assert_eq!(value(0.5254, Language::Uz), "0,5254");
+        assert_eq!(value(0.0018, Language::Uz), "0,001800", "four significant figures, not three decimals");
         assert_eq!(value(18.149, Language::Ru), "18,15");
         assert_eq!(value(18.149, Language::En), "18.15");
-        assert_eq!(value(-0.0001, Language::En), "0.000");
+        assert_eq!(value(-0.0001, Language::En), "−0.0001000");
+        assert_eq!(value(-3e-14, Language::En), "0", "round-off of a zero");
         assert_eq!(value(1234.6, Language::En), "1235");
+        assert_eq!(value(-46001.0, Language::En), "−46001");
         assert_eq!(scientific(1.63e-13, Language::Uz), "1,6·10⁻¹³");
         assert_eq!(scientific(-250.0, Language::En), "−2.5·10²");
         assert_eq!(value(-4600.0, Language::Ru), "−4600");

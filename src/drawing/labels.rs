@@ -197,6 +197,8 @@ label_set! {
         quantity,
         unit,
         assumed,
+        link_col,
+        position_col,
         value,
     }
 }

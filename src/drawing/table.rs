@@ -1,11 +1,12 @@
 //! Tables drawn on the sheet: a header row, a label column, ruled cells.
 
 use super::scene::{Anchor, Group, MAIN, Pen, THIN, Text};
-use super::text::LabelText;
+use super::text::{LINE_PITCH, LabelText, paragraph, wrap};
 use kurbo::{Point, Rect};
 
 pub const ROW_H: f64 = 5.0;
 pub const CELL_TEXT: f64 = 2.5;
+const TITLE_TEXT: f64 = 3.5;
 
 pub struct Table {
     pub title: String,
@@ -13,26 +14,60 @@ pub struct Table {
     /// First cell of each row is its label (may carry a subscript).
     pub rows: Vec<(LabelText, Vec<String>)>,
     pub label_w: f64,
+    /// The least width of a value cell; wider values widen their table's cells.
     pub cell_w: f64,
+    /// What the header names, written in the header row above the labels ("Link",
+    /// "Position"); may be empty.
+    pub corner: String,
 }
 
+/// Room either side of a cell's text, mm.
+const CELL_PAD: f64 = 1.2;
+
 impl Table {
-    fn grid_width(&self) -> f64 {
-        self.label_w + self.cell_w * self.header.len() as f64
+    /// The width of every value cell: the least width or the widest value or heading.
+    fn cell_width(&self) -> f64 {
+        let width = |t: &str| Text::new(Point::ZERO, t, CELL_TEXT, Anchor::Middle).core_box().width();
+        let values = self.rows.iter().flat_map(|(_, cells)| cells.iter()).chain(&self.header);
+        values.map(|v| width(v) + 2.0 * CELL_PAD + CELL_TEXT * super::text::SLANT).fold(self.cell_w, f64::max)
     }
 
-    /// Width and height including the title line.
+    /// The label column's width: as given, or the corner caption's.
+    fn label_width(&self) -> f64 {
+        let corner = Text::new(Point::ZERO, self.corner.as_str(), CELL_TEXT, Anchor::Middle).core_box().width();
+        self.label_w.max(corner + 2.0 * CELL_PAD + CELL_TEXT * super::text::SLANT)
+    }
+
+    fn grid_width(&self) -> f64 {
+        self.label_width() + self.cell_width() * self.header.len() as f64
+    }
+
+    /// The title's lines: wrapped to the grid's width when it is wider (at least 60 mm).
+    fn title_lines(&self) -> Vec<String> {
+        wrap(&self.title, TITLE_TEXT, self.grid_width().max(60.0))
+    }
+
+    /// Height of the title above the grid, mm.
+    fn title_height(&self) -> f64 {
+        7.0 + (self.title_lines().len().max(1) - 1) as f64 * TITLE_TEXT * LINE_PITCH
+    }
+
+    /// Width and height including the title.
     pub fn size(&self) -> (f64, f64) {
-        let title = Text::new(Point::ZERO, self.title.clone(), 3.5, Anchor::Start).bbox().width();
-        (self.grid_width().max(title), ROW_H * (self.rows.len() + 1) as f64 + 7.0)
+        let title = self
+            .title_lines()
+            .iter()
+            .map(|l| Text::new(Point::ZERO, l.as_str(), TITLE_TEXT, Anchor::Start).bbox().width())
+            .fold(0.0, f64::max);
+        (self.grid_width().max(title), ROW_H * (self.rows.len() + 1) as f64 + self.title_height())
     }
 
     /// Draws the table with its top-left corner (title included) at `at`.
     pub fn draw(&self, g: &mut Group, at: Point) -> Rect {
         let (outer_w, h) = self.size();
         let w = self.grid_width();
-        g.text(Text::new(Point::new(at.x, at.y + 4.0), self.title.clone(), 3.5, Anchor::Start));
-        let top = at.y + 7.0;
+        paragraph(g, Point::new(at.x, at.y + 4.0), &self.title_lines(), TITLE_TEXT, Anchor::Start);
+        let top = at.y + self.title_height();
         let n_rows = self.rows.len() + 1;
         let bottom = top + ROW_H * n_rows as f64;
         let outline = |g: &mut Group, pen: Pen| {
@@ -52,18 +87,22 @@ impl Table {
             let y = top + ROW_H * r as f64;
             g.line(Point::new(at.x, y), Point::new(at.x + w, y), if r == 1 { MAIN } else { THIN });
         }
-        let mut x = at.x + self.label_w;
+        let (label_w, cell_w) = (self.label_width(), self.cell_width());
+        let mut x = at.x + label_w;
         for _ in 0..self.header.len() {
             g.line(Point::new(x, top), Point::new(x, bottom), THIN);
-            x += self.cell_w;
+            x += cell_w;
         }
         let base = |r: usize| top + ROW_H * r as f64 + ROW_H / 2.0 + CELL_TEXT / 2.0;
-        let col = |c: usize| at.x + self.label_w + self.cell_w * (c as f64 + 0.5);
+        let col = |c: usize| at.x + label_w + cell_w * (c as f64 + 0.5);
+        if !self.corner.is_empty() {
+            g.text(Text::new(Point::new(at.x + label_w / 2.0, base(0)), self.corner.clone(), CELL_TEXT, Anchor::Middle));
+        }
         for (c, hd) in self.header.iter().enumerate() {
             g.text(Text::new(Point::new(col(c), base(0)), hd.clone(), CELL_TEXT, Anchor::Middle));
         }
         for (r, (label, cells)) in self.rows.iter().enumerate() {
-            label.draw(g, Point::new(at.x + self.label_w / 2.0, base(r + 1)), CELL_TEXT, Anchor::Middle);
+            label.draw(g, Point::new(at.x + label_w / 2.0, base(r + 1)), CELL_TEXT, Anchor::Middle);
             for (c, v) in cells.iter().enumerate() {
                 g.text(Text::new(Point::new(col(c), base(r + 1)), v.clone(), CELL_TEXT, Anchor::Middle));
             }

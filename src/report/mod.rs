@@ -79,8 +79,8 @@ pub fn md_escape(s: &str) -> String {
     out
 }
 
-/// A table as Markdown in the sheet's language with its title as a heading; values with 4
-/// decimals.
+/// A table as Markdown in the sheet's language with its title as a heading; values with
+/// four significant figures, as on the sheet.
 pub fn markdown(n: &NoteTable) -> String {
     let t = &n.table;
     let [quantity, unit] = &n.headings;
@@ -94,8 +94,8 @@ pub fn markdown(n: &NoteTable) -> String {
     for (r, unit) in t.rows.iter().zip(&n.units) {
         let sub = if r.sub.is_empty() { String::new() } else { format!("<sub>{}</sub>", md_escape(&r.sub)) };
         let _ = write!(s, "| {}{sub} | {} |", md_escape(&r.symbol), md_escape(unit));
-        for v in &r.values {
-            let v = format!("{v:.4}").replace('-', "−");
+        for &v in &r.values {
+            let v = crate::num::digits::significant(v).replace('-', "−");
             let _ = write!(s, " {} |", if n.decimal_comma { v.replace('.', ",") } else { v });
         }
         s.push('\n');

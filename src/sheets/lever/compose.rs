@@ -92,7 +92,7 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let force_input = inp.forces.map(|(fa, ft)| {
         let (t3, t4, t5) = (&ft.inertia, &ft.reactions, &ft.balance);
         let tables = vec![
-            with_units(sheet_table(t3, l.inertia_table(), lang), t3, c),
+            Table { corner: c.link_col().into(), ..with_units(sheet_table(t3, l.inertia_table(), lang), t3, c) },
             Table { cell_w: 16.0, ..sheet_table(t4, l.reaction_table(), lang) },
             Table {
                 cell_w: 18.0,
@@ -160,8 +160,8 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     // Right column: the tables above the title block decide how tall the velocity plans are.
     let right_x0 = left_x1 + 6.0;
     let (vt, at) = (&inp.tables.velocities, &inp.tables.accelerations);
-    let t1 = sheet_table(vt, l.velocity_table(), lang);
-    let t2 = sheet_table(at, l.acceleration_table(), lang);
+    let t1 = Table { corner: c.position_col().into(), ..sheet_table(vt, l.velocity_table(), lang) };
+    let t2 = Table { corner: c.position_col().into(), ..sheet_table(at, l.acceleration_table(), lang) };
     let (w1, h1) = t1.size();
     let (w2, h2) = t2.size();
     let right_w = inner.x1 - 4.0 - right_x0;
@@ -369,7 +369,14 @@ fn sheet_table(t: &NumTable, title: &str, lang: Language) -> Table {
             (LabelText::new(r.symbol.clone(), r.sub.clone()), r.values.iter().map(|&v| fmt::value(v, lang)).collect())
         })
         .collect();
-    Table { title: title.to_string(), header: t.columns.clone(), label_w: label_column(&rows), rows, cell_w: 13.0 }
+    Table {
+        title: title.to_string(),
+        header: t.columns.clone(),
+        label_w: label_column(&rows),
+        rows,
+        cell_w: 11.0,
+        corner: String::new(),
+    }
 }
 
 /// A table whose rows carry their own units (the title names none): "m, kg", "J_S, kg·m²".

@@ -66,13 +66,13 @@ impl Sizing {
     }
 }
 
-/// A cell's size for a plan of box `bb` at `mu`: the plan, room for its labels (`label_w`:
-/// its longest label, which may stand on either side of a plan centred in the cell), and at
-/// least `min_w` wide.
+/// A cell's size for a plan of box `bb` at `mu`: the plan with room around it for its
+/// labels, at least `min_w` wide (its title and scale line) and as wide as its longest label
+/// (`label_w`), which may then stand above or below the point it names.
 fn cell_size(bb: Rect, mu: f64, own_scale: bool, min_w: f64, label_w: f64) -> (f64, f64) {
     let title = TITLE + if own_scale { SCALE_LINE } else { 0.0 };
-    let side = MARGIN.max(label_w + 2.0);
-    ((bb.width() / mu + 2.0 * side + 2.0).max(min_w), bb.height() / mu + 2.0 * MARGIN + title + 1.0)
+    let w = (bb.width() / mu + 2.0 * MARGIN + 2.0).max(min_w).max(label_w + 4.0);
+    (w, bb.height() / mu + 2.0 * MARGIN + title + 1.0)
 }
 
 /// The width of a plan's longest label at 3.5 mm: the images that coincide (at any scale)
@@ -87,8 +87,24 @@ fn longest_label(plan: &Plan, pole: &str) -> f64 {
             None => groups.push((img.at, img.label.clone())),
         }
     }
-    groups.iter().map(|(_, n)| LabelText::new(n.clone(), "").width(3.5)).fold(0.0, f64::max)
+    groups
+        .iter()
+        .flat_map(|(_, n)| chunks(&n.split('=').map(String::from).collect::<Vec<_>>()))
+        .map(|n| LabelText::new(n, "").width(3.5))
+        .fold(0.0, f64::max)
 }
+
+/// Names sharing one point, written as "p=b=s3" and, on a second label beside it,
+/// "=c=s4=s5": [`SHARED_PER_LABEL`] names per label keep the labels short.
+fn chunks(names: &[String]) -> Vec<String> {
+    names
+        .chunks(SHARED_PER_LABEL)
+        .enumerate()
+        .map(|(k, c)| format!("{}{}", if k == 0 { "" } else { "=" }, c.join("=")))
+        .collect()
+}
+
+const SHARED_PER_LABEL: usize = 3;
 
 /// Packs cells of `sizes` in rows inside `body`, in order; the rows are stretched to fill
 /// the body's width and height. `None` when they do not fit.
@@ -265,7 +281,9 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
             g.dot(*at, 0.35);
         }
         let pref = if (*at - centre).norm() < tol::PAPER { Vec2::new(-1.0, 1.0) } else { *at - centre };
-        labels.add_text(*at, pref, &names.join("="), 3.5);
+        for name in chunks(names) {
+            labels.add_text(*at, pref, &name, 3.5);
+        }
     }
     pole_p
 }
