@@ -499,6 +499,6 @@ fn load_diagrams_tick_the_force_axis_and_mark_phi1() {
         }
         let phi = tmm_sheets::drawing::fmt::localise(&format!("{:.1}", lever.kinematics.assigned.phi.to_degrees()), p.info.language);
         let marked = forces.items.iter().any(|i| matches!(i, Item::Text(t) if t.text == format!("= {phi}°")));
-        assert!(marked, "{name}: φ1 = {phi}° is not marked on the load diagram");
+        assert!(marked || fa.model.loads.is_empty(), "{name}: φ1 = {phi}° is not marked on the load diagram");
     }
 }

@@ -77,7 +77,7 @@ pub enum MotionError {
 }
 
 /// The crank's rotation and the frame of course angles.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Motion {
     /// Absolute crank angle of position 0, radians.
     pub theta0: f64,
@@ -85,6 +85,10 @@ pub struct Motion {
     pub sense: f64,
     /// Course angle of the other extreme position, when the output has extremes.
     pub other_extreme: Option<f64>,
+    /// Absolute crank angles (radians) of every extreme position of the output over a turn.
+    /// A slider or rocker driven as the course assumes has two; more mean a scheme that is
+    /// almost surely not the one meant.
+    pub extremes: Vec<f64>,
 }
 
 impl Motion {
@@ -141,6 +145,7 @@ pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion,
     let value = |s: &State| output_coordinate(m, s, reference);
     let what = || format!("the extreme positions of {}", output_name(m));
     let roots = extremes(&states, &|u| m.solve(theta_of(u)), &vel, &value, &what)?;
+    let all: Vec<f64> = roots.iter().map(|&(u, _)| theta_of(u).rem_euclid(TAU)).collect();
     let other_of = |theta0: f64| {
         roots
             .iter()
@@ -148,7 +153,7 @@ pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion,
             .find(|d| d.abs() > tol::SAME_ANGLE && (TAU - d).abs() > tol::SAME_ANGLE)
     };
     let theta0 = match start {
-        Start::Angle(t) => return Ok(Motion { theta0: t, sense, other_extreme: None }),
+        Start::Angle(t) => return Ok(Motion { theta0: t, sense, other_extreme: None, extremes: all }),
         Start::Min | Start::Max => {
             let pick = roots.iter().min_by(|a, b| {
                 let (x, y) = if start == Start::Min { (a.1, b.1) } else { (b.1, a.1) };
@@ -160,7 +165,7 @@ pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion,
             }
         }
     };
-    Ok(Motion { theta0, sense, other_extreme: other_of(theta0) })
+    Ok(Motion { theta0, sense, other_extreme: other_of(theta0), extremes: all })
 }
 
 /// A lock-up window narrower than the scan step: each group's reach margin is minimised

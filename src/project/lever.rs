@@ -86,7 +86,7 @@ pub fn resolve(
     check_texts(spec)?;
     plausibility(spec, warnings);
     let sense = if spec.crank.sense == Sense::Ccw { 1.0 } else { -1.0 };
-    let omega1 = sense * std::f64::consts::PI * spec.crank.rpm.value.0 / 30.0;
+    let omega1 = sense * crank_speed(&spec.crank)?;
     let mut b = Builder {
         m: Mechanism {
             point_names: vec![],
@@ -206,13 +206,39 @@ fn plausibility(spec: &MechanismSpec, warnings: &mut Vec<Warning>) {
             ));
         }
     }
-    let rpm = spec.crank.rpm.value.0;
-    if rpm > limits::RPM_PLAUSIBLE_MAX {
+    if let Some(n) = &spec.crank.rpm
+        && n.value.0 > limits::RPM_PLAUSIBLE_MAX
+    {
         warnings.push(warning(
-            at(&spec.crank.rpm),
+            at(n),
             "mechanism.crank.rpm",
-            format!("{rpm} rev/min is above {:e}: is the crank speed in rev/min?", limits::RPM_PLAUSIBLE_MAX),
+            format!("{} rev/min is above {:e}: is the crank speed in rev/min?", n.value.0, limits::RPM_PLAUSIBLE_MAX),
         ));
+    }
+    if let Some(w) = &spec.crank.omega
+        && w.value.0 * 30.0 / std::f64::consts::PI > limits::RPM_PLAUSIBLE_MAX
+    {
+        warnings.push(warning(
+            at(w),
+            "mechanism.crank.omega",
+            format!("ω1 = {} 1/s is above {:e} rev/min: is ω1 in 1/s (rad/s)?", w.value.0, limits::RPM_PLAUSIBLE_MAX),
+        ));
+    }
+}
+
+/// |ω1|, 1/s, from `rpm` (ω = π·n/30) or `omega`: exactly one of them.
+fn crank_speed(c: &CrankSpec) -> Result<f64, ModelError> {
+    match (&c.rpm, &c.omega) {
+        (Some(n), None) => Ok(std::f64::consts::PI * n.value.0 / 30.0),
+        (None, Some(w)) => Ok(w.value.0),
+        (Some(_), Some(w)) => {
+            Err(invalid(at(w), "mechanism.crank.omega", "give the crank's speed once: `rpm` (rev/min) or `omega` (1/s)"))
+        }
+        (None, None) => Err(invalid(
+            at(&c.pivot),
+            "mechanism.crank",
+            "the crank needs its speed: `rpm` (rev/min) or `omega` (1/s)",
+        )),
     }
 }
 

@@ -8,6 +8,7 @@ use super::{ModelError, Warning, at, invalid, warning};
 use crate::lever::indicators::{self, Indicator};
 use crate::lever::kinetostatics::{ForceModel, LinkMass};
 use crate::lever::linkage::{LinkId, LinkKind, Mechanism, PointId, Step};
+use crate::num::math::Norm;
 use crate::lever::load::{Branch, Curve, Load, LoadKind, Stroke};
 use crate::num::limits;
 use kurbo::Vec2;
@@ -34,7 +35,7 @@ pub fn build_forces(
                 format!("link {} is listed twice", lm.link.value),
             ));
         }
-        let mass = link_mass(m, lm, link, &field)?;
+        let mass = link_mass(m, lm, link, &field, warnings)?;
         if mass.mass > limits::MASS_PLAUSIBLE_MAX {
             warnings.push(warning(
                 at(&lm.link),
@@ -63,11 +64,29 @@ pub fn build_forces(
     Ok(ForceModel { g: f.g.map_or(G, |g| g.0), masses, loads })
 }
 
-fn link_mass(m: &Mechanism, lm: &LinkMassSpec, link: LinkId, field: &str) -> Result<LinkMass, ModelError> {
+fn link_mass(
+    m: &Mechanism,
+    lm: &LinkMassSpec,
+    link: LinkId,
+    field: &str,
+    warnings: &mut Vec<Warning>,
+) -> Result<LinkMass, ModelError> {
     let loc = at(&lm.link);
+    let full = full_length(m, link);
     let length = || {
-        link_length(m, link).ok_or_else(|| invalid(loc, field, format!("link {} has no fixed length between two joints, so m = q·l and J = m·l²/12 cannot be used; give `mass` and `inertia`", lm.link.value)))
+        full.as_ref().map(|f| f.length).ok_or_else(|| invalid(loc, field, format!("link {} has no fixed length between two joints, so m = q·l and J = m·l²/12 cannot be used; give `mass` and `inertia`", lm.link.value)))
     };
+    let uses_length = lm.q.is_some() || matches!(lm.inertia, Some(Inertia::Rod));
+    if let Some(f) = full.as_ref().filter(|f| uses_length && f.joints > 2) {
+        warnings.push(warning(
+            loc,
+            field,
+            format!(
+                "link {} has {} joints: m = q·l and J = m·l²/12 use its full length {}{} = {} m, the largest distance between its joints",
+                lm.link.value, f.joints, f.from, f.to, crate::num::digits::significant(f.length)
+            ),
+        ));
+    }
     let mass = match (lm.mass, lm.q) {
         (Some(x), None) => x.0,
         (None, Some(q)) => q.0 * length()?,
@@ -110,21 +129,39 @@ fn mass_centre(m: &Mechanism, link: LinkId) -> Option<PointId> {
 }
 
 /// The fixed distance between the two joints that define a link.
-fn link_length(m: &Mechanism, link: LinkId) -> Option<f64> {
-    m.steps.iter().find_map(|s| match *s {
-        Step::Crank { length, link: l, .. } if l == link => Some(length),
-        Step::Rrr { l_pb, l_qb, links, .. } => {
-            if links[0] == link {
-                Some(l_pb)
-            } else if links[1] == link {
-                Some(l_qb)
-            } else {
-                None
+/// A link's full length: the largest distance between two of its joints (its centre of
+/// mass and a kulisa's image point are not joints), and which joints they are.
+struct FullLength {
+    length: f64,
+    from: String,
+    to: String,
+    joints: usize,
+}
+
+/// The link's [`FullLength`], measured on the mechanism assembled at the first crank angle
+/// (every 5°) where it assembles; `None` for a link with one joint, or one whose joints'
+/// distance changes (a kulisa's block slides along it).
+fn full_length(m: &Mechanism, link: LinkId) -> Option<FullLength> {
+    let joints: Vec<PointId> = m.links[link]
+        .points
+        .iter()
+        .copied()
+        .filter(|&p| !m.is_mass_centre(p) && !m.is_kulisa_image(p))
+        .collect();
+    if joints.len() < 2 {
+        return None;
+    }
+    let state = (0..72).find_map(|k| m.solve(k as f64 * std::f64::consts::TAU / 72.0).ok())?;
+    let mut best: Option<FullLength> = None;
+    for (i, &a) in joints.iter().enumerate() {
+        for &b in &joints[i + 1..] {
+            let d = (state.points[a].p - state.points[b].p).norm();
+            if best.as_ref().is_none_or(|f| d > f.length) {
+                best = Some(FullLength { length: d, from: m.name(a).into(), to: m.name(b).into(), joints: joints.len() });
             }
         }
-        Step::Rrp { length, links, .. } if links[0] == link => Some(length),
-        _ => None,
-    })
+    }
+    best.filter(|f| f.length > 0.0)
 }
 
 /// The slider of an RRP group at `name`: (link, point, guide point, guide direction).

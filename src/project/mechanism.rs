@@ -48,8 +48,12 @@ pub struct CrankSpec {
     pub pivot: Name,
     pub pin: Name,
     pub length: Spanned<Positive>,
-    /// n1, rev/min.
-    pub rpm: Spanned<Positive>,
+    /// n1, rev/min; or `omega`.
+    #[serde(default)]
+    pub rpm: Option<Spanned<Positive>>,
+    /// ω1, 1/s (rad/s), as some tasks give it; or `rpm`.
+    #[serde(default)]
+    pub omega: Option<Spanned<Positive>>,
     pub sense: Sense,
     #[serde(default = "one")]
     pub link: u32,

@@ -105,7 +105,25 @@ impl Sheet for LeverSheet<'_> {
 
     fn build(&self, ctx: &Context) -> Result<SheetOutput, SheetError> {
         let b = build(ctx, self.project)?;
-        let diagnostics = b.composed.layout.problems.iter().map(|p| format!("layout: {p}")).collect();
+        let mut diagnostics: Vec<String> = Vec::new();
+        let motion = &b.kinematics.motion;
+        if motion.extremes.len() > 2 {
+            let angles: Vec<String> = motion
+                .extremes
+                .iter()
+                .map(|&t| {
+                    let phi = (motion.sense * (t - motion.theta0)).rem_euclid(std::f64::consts::TAU);
+                    format!("θ = {:.1}° (φ = {:.1}°)", t.to_degrees(), phi.to_degrees())
+                })
+                .collect();
+            diagnostics.push(format!(
+                "the output ({}) has {} extreme positions per crank turn, at {}: a slider or rocker driven as the course assumes has two, so the scheme is almost surely not the one meant (check the lengths, the guide and the branches)",
+                crate::lever::motion::output_name(&self.project.mechanism),
+                motion.extremes.len(),
+                angles.join(", ")
+            ));
+        }
+        diagnostics.extend(b.composed.layout.problems.iter().map(|p| format!("layout: {p}")));
         Ok(SheetOutput {
             number: self.kind().number,
             tables: b.note_tables(ctx.info.language),
