@@ -405,8 +405,12 @@ fn xml_special_characters_in_user_text_are_escaped() {
 /// force drawings and their polygons).
 const PHI1_SWEEP: [f64; 4] = [10.0, 100.0, 190.0, 280.0];
 
-/// Every fixture in every language at several φ1: nothing leaves its region, no text
-/// overlaps another.
+/// No plan's longer side is shorter than this on any fixture, mm: measurable with a ruler.
+const SMALLEST_PLAN_MM: f64 = 25.0;
+
+/// Every fixture in every language at several φ1: no text crossed by a line or overlapping
+/// another, nothing outside its region, every plan large enough to measure — and
+/// `results.json` reports the same.
 #[test]
 fn the_layout_holds_for_every_fixture_language_and_phi1() {
     let mut failures = Vec::new();
@@ -419,8 +423,16 @@ fn the_layout_holds_for_every_fixture_language_and_phi1() {
                 let label = format!("{name} {lang:?} φ1 = {phi1}°");
                 match pipeline::build(&p, &[]) {
                     Ok(mut b) => {
-                        let scene = b.remove(0).output.scene;
-                        if let Err(e) = std::panic::catch_unwind(|| check_layout(&label, &scene)) {
+                        let out = b.remove(0).output;
+                        let reported = &out.results["layout"];
+                        let smallest = reported["smallest_plan_mm"].as_f64().unwrap_or(0.0);
+                        if reported["texts_crossed"] != 0 || reported["text_overlaps"] != 0 || reported["outside_region"] != 0 {
+                            failures.push(format!("{label}: results.json reports {reported}"));
+                        }
+                        if smallest < SMALLEST_PLAN_MM {
+                            failures.push(format!("{label}: the smallest plan is {smallest:.1} mm"));
+                        }
+                        if let Err(e) = std::panic::catch_unwind(|| check_layout(&label, &out.scene)) {
                             failures.push(e.downcast_ref::<String>().cloned().unwrap_or(label));
                         }
                     }
@@ -500,5 +512,43 @@ fn load_diagrams_tick_the_force_axis_and_mark_phi1() {
         let phi = tmm_sheets::drawing::fmt::localise(&format!("{:.1}", lever.kinematics.assigned.phi.to_degrees()), p.info.language);
         let marked = forces.items.iter().any(|i| matches!(i, Item::Text(t) if t.text == format!("= {phi}°")));
         assert!(marked || fa.model.loads.is_empty(), "{name}: φ1 = {phi}° is not marked on the load diagram");
+    }
+}
+
+/// Each plan is drawn at a round scale (1, 2, 2.5, 4 or 5 × 10ᵏ), recorded with its drawn
+/// size in `results.json`; the size is the plan's extent at that scale — its diagonal at least
+/// the crank pin's velocity |v_A|/μ_v, computed here from ω1·l1 — and a plan with its own scale writes
+/// it in its cell.
+#[test]
+fn plans_are_drawn_at_round_scales_recorded_with_their_sizes() {
+    let round = |mu: f64| {
+        let m = mu / 10f64.powf(mu.log10().floor());
+        [1.0, 2.0, 2.5, 4.0, 5.0, 10.0].iter().any(|r| (m - r).abs() < 1e-9)
+    };
+    for name in fixture_names() {
+        let p = fixture(&name);
+        let b = pipeline::build(&p, &[]).unwrap().remove(0).output;
+        let m = &p.lever.as_ref().unwrap().mechanism;
+        let v_a = (m.omega1 * m.crank().length).abs();
+        let scales = &b.results["scales"];
+        for kind in ["velocity_plans", "acceleration_plans"] {
+            let plans = scales[kind].as_array().expect("plans recorded");
+            assert!(!plans.is_empty(), "{name}: no {kind}");
+            let common = scales[if kind == "velocity_plans" { "mu_v" } else { "mu_a" }].as_f64();
+            for plan in plans {
+                let mu = plan["mu"].as_f64().unwrap();
+                assert!(round(mu), "{name}: {kind} at μ = {mu}");
+                let [w, h] = [0, 1].map(|k| plan["size_mm"][k].as_f64().unwrap());
+                if kind == "velocity_plans" {
+                    // pa lies inside the plan's box: no longer than its diagonal.
+                    let diagonal = w.hypot(h);
+                    assert!(diagonal >= v_a / mu - 1e-9, "{name}: plan {} is {w} × {h} mm, pa alone is {} mm", plan["position"], v_a / mu);
+                }
+                if common.is_none() {
+                    let written = format!("= {} ", tmm_sheets::drawing::fmt::localise(&tmm_sheets::drawing::scale::format(mu), p.info.language));
+                    assert!(b.scene.texts().any(|t| t.text.starts_with(&written)), "{name}: no own scale {written} written");
+                }
+            }
+        }
     }
 }
