@@ -593,18 +593,29 @@ const MOMENT_SWEEP: f64 = 120.0;
 fn draw_polygon(g: &mut Group, labels: &mut Labels, inp: &ForcesInput, poly: &Polygon, layout: &GroupLayout, r: Rect) {
     let p = view(layout.chain_box, r, layout.mu_p);
     let pts = &layout.chain;
+    // Labels stand outside the polygon: beside each side, away from the vertices' centre.
+    let centre = {
+        let n = pts.len().max(1) as f64;
+        let c = pts.iter().fold(Vec2::ZERO, |acc, &v| acc + v) / n;
+        p(c)
+    };
+    let outward = |a: Point, b: Point| {
+        let n = (b - a).turn_90();
+        if n.dot(a.midpoint(b) - centre) < 0.0 { -n } else { n }
+    };
     for (k, t) in poly.terms.iter().enumerate() {
         let (a, b) = (p(pts[k]), p(pts[k + 1]));
         if (b - a).norm() < tol::PAPER_INVISIBLE {
             continue;
         }
         vector(g, a, b, VECTOR);
-        labels.add(a.midpoint(b), (b - a).turn_90(), force_label(inp, t.kind, t.on), 3.5);
+        labels.add(a.midpoint(b), outward(a, b), force_label(inp, t.kind, t.on), 3.5);
     }
     if let Some(inner) = &poly.inner {
         let (a, b) = (p(pts[poly.split]), p(pts[0]));
         if (b - a).norm() >= tol::PAPER_INVISIBLE {
             vector(g, a, b, DASHED);
+            // The inner reaction runs inside the polygon: its label beside it, either side.
             labels.add(a.midpoint(b), (b - a).turn_90(), force_label(inp, inner.kind, inner.on), 3.5);
         }
     }
