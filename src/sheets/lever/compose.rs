@@ -113,7 +113,8 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let heights: &[f64] = if force_input.is_some() { &MECH_HEIGHTS_FORCES } else { &[MECH_MAX_H] };
     let fits = |h: f64| {
         let (r, _, _) = mechanism_region(world, h, inner);
-        force_input.as_ref().is_none_or(|fi| fit_comfortably(fi, force_region_below(r)))
+        let below = force_region_below(r);
+        force_input.as_ref().is_none_or(|fi| fit_comfortably(fi, below, side_region(r, below)))
     };
     let max_h = heights.iter().copied().find(|&h| fits(h)).unwrap_or(heights[heights.len() - 1]);
     let (mech_region, mu_l, draw_h) = mechanism_region(world, max_h, inner);
@@ -230,8 +231,10 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let mut extra = Vec::new();
     if let (Some(region), Some(input)) = (force_region, &force_input) {
         let mut fg = Group::new("forces", region);
-        force_scales = Some(draw_forces(&mut fg, region, input));
+        let mut side = side_region(mech_region, region).map(|r| Group::new("forces-beside-mechanism", r));
+        force_scales = Some(draw_forces(&mut fg, side.as_mut(), input));
         extra.push(fg);
+        extra.extend(side.filter(|g| !g.items.is_empty()));
     }
     let organisation = [inp.info.institution.as_str(), inp.info.group.as_str()]
         .iter()
@@ -271,6 +274,15 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
         trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
     })
 }
+
+/// The room beside a narrow mechanism drawing, above the force region, for force cells.
+fn side_region(mech: Rect, forces: Rect) -> Option<Rect> {
+    let r = Rect::new(mech.x1 + 6.0, mech.y0, forces.x1, mech.y1);
+    (r.width() >= SIDE_MIN.0 && r.height() >= SIDE_MIN.1).then_some(r)
+}
+
+/// The least room beside the mechanism worth giving to force cells, mm.
+const SIDE_MIN: (f64, f64) = (80.0, 60.0);
 
 /// The mechanism's region for a box at most `max_h` tall: its scale, and the drawing's height.
 fn mechanism_region(world: Rect, max_h: f64, inner: Rect) -> (Rect, f64, f64) {

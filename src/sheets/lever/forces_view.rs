@@ -135,12 +135,20 @@ impl Sizes {
     }
 }
 
-pub fn draw_forces(g: &mut Group, region: Rect, inp: &ForcesInput) -> ForceScales {
+/// Draws the force analysis into `main` (the region below the mechanism, titled) and, when
+/// the mechanism leaves room beside it, `side`; returns the scales the drawings got.
+pub fn draw_forces(main: &mut Group, mut side: Option<&mut Group>, inp: &ForcesInput) -> ForceScales {
+    let region = main.region;
     let title = inp.l.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.lang));
-    g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
-    let (cells, at, _) = arrange(inp, region, SHRINK_TRIES);
+    main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
+    let bodies = bodies(region, side.as_ref().map(|g| g.region));
+    let (cells, at, _) = arrange(inp, &bodies, SHRINK_TRIES);
     let mut scales = ForceScales { mu_l: vec![], mu_p: vec![], mu_f: vec![], mu_lever: 0.0, mu_f_lever: 0.0 };
-    for (cell, origin) in cells.iter().zip(at) {
+    for (cell, &(body, origin)) in cells.iter().zip(&at) {
+        let g: &mut Group = match (body, side.as_deref_mut()) {
+            (1, Some(sg)) => sg,
+            _ => &mut *main,
+        };
         let r = Rect::new(origin.x, origin.y, origin.x + cell.w, origin.y + cell.h);
         // Each cell places its own labels inside itself, so cells never collide.
         let mut labels = Labels::new();
@@ -166,25 +174,30 @@ pub fn draw_forces(g: &mut Group, region: Rect, inp: &ForcesInput) -> ForceScale
     scales
 }
 
+/// The areas the cells may use: the main region below its title, then the side region.
+fn bodies(main: Rect, side: Option<Rect>) -> Vec<Rect> {
+    let mut out = vec![Rect::new(main.x0, main.y0 + 10.0, main.x1, main.y1)];
+    out.extend(side);
+    out
+}
+
 /// How many times the drawings may shrink by 10 % to fit; a region that needs more than
 /// [`COMFORTABLE`] shrinks is cramped.
 const SHRINK_TRIES: usize = 12;
 const COMFORTABLE: usize = 3;
 
-/// Cells packed into the region's body, shrinking the drawings up to `tries − 1` times until
-/// they fit; the last attempt is returned even if it does not (the layout measurement then
+/// Cells packed into the bodies, shrinking the drawings up to `tries − 1` times until they
+/// fit; the last attempt is returned even if it does not (the layout measurement then
 /// reports it), with whether it fits.
-fn arrange(inp: &ForcesInput, region: Rect, tries: usize) -> (Vec<Cell>, Vec<Point>, bool) {
-    let body = Rect::new(region.x0, region.y0 + 10.0, region.x1, region.y1);
+fn arrange(inp: &ForcesInput, bodies: &[Rect], tries: usize) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
     let widest =
         inp.fa.forces.polygons.iter().map(|p| world_box(inp, p)).map(|b| b.width().max(b.height())).fold(0.0, f64::max);
     let mut attempt = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest };
     let mut k = 0;
     loop {
         let cells = cells(inp, attempt);
-        let at = pack(&cells, body);
+        let (at, ok) = pack(&cells, bodies);
         k += 1;
-        let ok = fits(&cells, &at, body);
         if ok || k >= tries {
             return (cells, at, ok);
         }
@@ -192,9 +205,10 @@ fn arrange(inp: &ForcesInput, region: Rect, tries: usize) -> (Vec<Cell>, Vec<Poi
     }
 }
 
-/// Whether the force drawings fit `region` without being cramped.
-pub fn fit_comfortably(inp: &ForcesInput, region: Rect) -> bool {
-    arrange(inp, region, COMFORTABLE + 1).2
+/// Whether the force drawings fit the main region (and the side region, if any) without
+/// being cramped.
+pub fn fit_comfortably(inp: &ForcesInput, main: Rect, side: Option<Rect>) -> bool {
+    arrange(inp, &bodies(main, side), COMFORTABLE + 1).2
 }
 
 /// The world box of a polygon's group (or the crank): its links' points.
@@ -352,25 +366,39 @@ fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     out
 }
 
-/// Places cells in rows, left to right, starting a row when the next cell would overflow.
-fn pack(cells: &[Cell], body: Rect) -> Vec<Point> {
-    let (mut x, mut y, mut row_h) = (body.x0, body.y0, 0.0f64);
+/// Places cells in rows, first fit: each cell goes into the first body where it fits, in
+/// that body's current row or a new one. Returns each cell's body and corner, and whether
+/// all fit (a cell that fits nowhere overflows the first body).
+fn pack(cells: &[Cell], bodies: &[Rect]) -> (Vec<(usize, Point)>, bool) {
+    // Per body: the next cell's x, its row's top and the row's height so far.
+    let mut rows: Vec<(f64, f64, f64)> = bodies.iter().map(|b| (b.x0, b.y0, 0.0)).collect();
     let mut out = Vec::new();
+    let mut all = true;
     for c in cells {
-        if x > body.x0 && x + c.w > body.x1 {
-            x = body.x0;
-            y += row_h + GAP;
-            row_h = 0.0;
+        let mut spot = None;
+        for (i, b) in bodies.iter().enumerate() {
+            let (x, y, row_h) = rows[i];
+            let fits = |x: f64, y: f64| x + c.w <= b.x1 + tol::PAPER && y + c.h <= b.y1 + tol::PAPER;
+            if fits(x, y) {
+                spot = Some((i, Point::new(x, y), (x + c.w + GAP, y, row_h.max(c.h))));
+            } else if row_h > 0.0 && fits(b.x0, y + row_h + GAP) {
+                let y = y + row_h + GAP;
+                spot = Some((i, Point::new(b.x0, y), (b.x0 + c.w + GAP, y, c.h)));
+            }
+            if spot.is_some() {
+                break;
+            }
         }
-        out.push(Point::new(x, y));
-        x += c.w + GAP;
-        row_h = row_h.max(c.h);
+        let (i, at, next) = spot.unwrap_or_else(|| {
+            all = false;
+            let (_, y, row_h) = rows[0];
+            let y = y + row_h + GAP;
+            (0, Point::new(bodies[0].x0, y), (bodies[0].x0 + c.w + GAP, y, c.h))
+        });
+        rows[i] = next;
+        out.push((i, at));
     }
-    out
-}
-
-fn fits(cells: &[Cell], at: &[Point], body: Rect) -> bool {
-    cells.iter().zip(at).all(|(c, p)| p.x + c.w <= body.x1 + tol::PAPER && p.y + c.h <= body.y1 + tol::PAPER)
+    (out, all)
 }
 
 /// The label of a force: G₂, Pᵢ₂, P_c5, Rⁿ₁₂, Pₘ.
