@@ -113,6 +113,20 @@ impl Obstacles {
             .count()
     }
 
+    /// Whether nothing (no segment, no text box) meets the box `r`: [`Obstacles::hits`]
+    /// stopping at the first piece.
+    pub fn is_clear(&self, r: Rect) -> bool {
+        !self.near(r).any(|(p, _)| match *p {
+            Piece::Segment(a, b) => segment_meets_rect(a, b, r),
+            Piece::TextBox(t) => t.intersect(r).area() > 0.0,
+        })
+    }
+
+    /// Whether the segment `a`–`b` crosses any stroke segment.
+    pub fn segment_crosses_stroke(&self, a: Point, b: Point) -> bool {
+        self.near(Rect::from_points(a, b)).any(|(p, _)| matches!(*p, Piece::Segment(c, d) if segments_cross(a, b, c, d)))
+    }
+
     /// Whether the segment `a`–`b` crosses any text box.
     pub fn segment_crosses_text(&self, a: Point, b: Point) -> bool {
         self.near(Rect::from_points(a, b))

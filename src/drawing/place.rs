@@ -98,7 +98,9 @@ impl Labels {
         // By rank, then most constrained first: the fewest candidates free against the
         // drawing alone.
         let mut order: Vec<usize> = (0..self.requests.len()).collect();
-        let free: Vec<usize> = cands.iter().map(|cs| cs.iter().filter(|c| c.is_free(&drawn)).count()).collect();
+        // Counting stops at a few: beyond that a label is not constrained.
+        let free: Vec<usize> =
+            cands.iter().map(|cs| cs.iter().filter(|c| c.is_free(&drawn)).take(CONSTRAINED).count()).collect();
         order.sort_by_key(|&i| (self.requests[i].rank, free[i]));
         // A label left without a clean spot goes first in the next round (labels placed
         // before it took its spots), up to a few rounds; the best round is kept.
@@ -153,6 +155,9 @@ impl Labels {
     }
 }
 
+/// A label with at least this many free spots is not constrained (for the order).
+const CONSTRAINED: usize = 8;
+
 /// Rounds of moving unplaced labels to the front.
 const REPAIR_ROUNDS: usize = 3;
 
@@ -165,12 +170,12 @@ struct Candidate {
 
 impl Candidate {
     fn is_free(&self, o: &Obstacles) -> bool {
-        self.box_is_free(o) && self.leader.is_none_or(|(a, b)| o.hits_segment(a, b) == 0)
+        self.box_is_free(o) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke(a, b))
     }
 
     /// The box is clear and its leader crosses no text (it may cross lines).
     fn box_is_free(&self, o: &Obstacles) -> bool {
-        o.hits(self.r.inflate(CLEAR, CLEAR)) == (0, 0.0)
+        o.is_clear(self.r.inflate(CLEAR, CLEAR))
             && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
     }
 }
