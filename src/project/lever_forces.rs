@@ -151,7 +151,11 @@ fn full_length(m: &Mechanism, link: LinkId) -> Option<FullLength> {
     if joints.len() < 2 {
         return None;
     }
-    let state = (0..72).find_map(|k| m.solve(k as f64 * std::f64::consts::TAU / 72.0).ok())?;
+    let Some(state) = (0..72).find_map(|k| m.solve(k as f64 * std::f64::consts::TAU / 72.0).ok()) else {
+        // A mechanism that never assembles is refused by the motion analysis, which says
+        // why; until then the group's own side length stands in.
+        return defined_length(m, link).map(|length| FullLength { length, from: String::new(), to: String::new(), joints: 2 });
+    };
     let mut best: Option<FullLength> = None;
     for (i, &a) in joints.iter().enumerate() {
         for &b in &joints[i + 1..] {
@@ -162,6 +166,16 @@ fn full_length(m: &Mechanism, link: LinkId) -> Option<FullLength> {
         }
     }
     best.filter(|f| f.length > 0.0)
+}
+
+/// The length a group's definition gives the link (its side from the joint it is built on).
+fn defined_length(m: &Mechanism, link: LinkId) -> Option<f64> {
+    m.steps.iter().find_map(|s| match *s {
+        Step::Crank { length, link: l, .. } if l == link => Some(length),
+        Step::Rrr { l_pb, l_qb, links, .. } if links.contains(&link) => Some(if links[0] == link { l_pb } else { l_qb }),
+        Step::Rrp { length, links, .. } if links[0] == link => Some(length),
+        _ => None,
+    })
 }
 
 /// The slider of an RRP group at `name`: (link, point, guide point, guide direction).
