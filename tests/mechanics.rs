@@ -261,3 +261,25 @@ fn fitted_trajectories_follow_the_exact_paths() {
         }
     }
 }
+
+/// Every image of an acceleration plan lies on a drawn line: a centre of mass on the whole
+/// relative acceleration of its link (the line ab), so no image floats in empty space.
+#[test]
+fn every_acceleration_image_lies_on_a_drawn_vector() {
+    for name in fixture_names() {
+        let p = lever(&name);
+        let m = &p.mechanism;
+        let s = m.solve(0.7).unwrap();
+        let plan = acceleration_plan(m, &s);
+        let size = plan.extent();
+        for img in &plan.images {
+            let on = plan.segs.iter().any(|sg| {
+                let (a, b) = (sg.from, sg.to);
+                let ab = b - a;
+                let t = if ab.hypot2() > 0.0 { ((img.at - a).dot(ab) / ab.hypot2()).clamp(0.0, 1.0) } else { 0.0 };
+                (a + ab * t - img.at).hypot() <= 1e-9 * size
+            });
+            assert!(on, "{name}: image {} of the acceleration plan lies on no drawn vector", img.label);
+        }
+    }
+}

@@ -144,8 +144,9 @@ pub fn velocity_plan(m: &Mechanism, s: &State) -> Plan {
     plan
 }
 
-/// The acceleration plan at state `s`: normal and tangential components of every turning
-/// relation, Coriolis and relative components of every sliding one.
+/// The acceleration plan at state `s`: normal and tangential components and the whole
+/// relative acceleration of every turning relation (of a link between two moving joints),
+/// Coriolis and relative components of every sliding one.
 pub fn acceleration_plan(m: &Mechanism, s: &State) -> Plan {
     let mut plan = Plan::default();
     images_and_absolutes(m, s, &mut plan, true);
@@ -168,6 +169,11 @@ pub fn acceleration_plan(m: &Mechanism, s: &State) -> Plan {
         plan.seg(y.a, corner, SegKind::Normal);
         plan.image(format!("n{n}"), corner);
         plan.seg(corner, x.a, SegKind::Tangential);
+        // The whole relative acceleration: the line on which the images of the link's other
+        // points (its centre of mass) lie by similarity.
+        if !m.is_frame(r.y) {
+            plan.seg(y.a, x.a, SegKind::Relative);
+        }
     }
     plan
 }

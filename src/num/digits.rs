@@ -18,7 +18,14 @@ pub fn significant(x: f64) -> String {
     }
     let magnitude = math::log10(a).floor() as i32;
     let dec = (3 - magnitude).clamp(0, 9) as usize;
-    format!("{x:.dec$}")
+    let s = format!("{x:.dec$}");
+    // 0.99999 rounds to 1.0000: one digit too many once the rounding reaches the next power.
+    let rounded: f64 = s.parse().unwrap_or(x);
+    if dec > 0 && rounded.abs() >= 10f64.powi(magnitude + 1) {
+        let dec = dec - 1;
+        return format!("{x:.dec$}");
+    }
+    s
 }
 
 #[cfg(test)]
@@ -33,5 +40,7 @@ mod tests {
         assert_eq!(significant(-3e-14), "0");
         assert_eq!(significant(-46001.0), "-46001");
         assert_eq!(significant(f64::NAN), "0");
+        assert_eq!(significant(0.99999), "1.000", "rounding up to the next power keeps four digits");
+        assert_eq!(significant(-9.99996), "-10.00");
     }
 }

@@ -35,7 +35,7 @@ const PAD: f64 = ARROW_MAX + 6.0;
 /// Room around a force polygon for its labels, mm.
 const POLY_PAD: f64 = 9.0;
 const CELL_TITLE: f64 = 8.0;
-const LINE: f64 = 5.0;
+const LINE: f64 = 5.5;
 const GAP: f64 = 6.0;
 const LOAD_W: f64 = 96.0;
 const LOAD_H: f64 = 78.0;
@@ -142,7 +142,7 @@ pub fn draw_forces(main: &mut Group, mut side: Option<&mut Group>, inp: &ForcesI
     let title = inp.l.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.lang));
     main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let bodies = bodies(region, side.as_ref().map(|g| g.region));
-    let (cells, at, _) = arrange(inp, &bodies, SHRINK_TRIES);
+    let (cells, at, _) = arrange(inp, &bodies, DRAWN, SHRINK_TRIES);
     let mut scales = ForceScales { mu_l: vec![], mu_p: vec![], mu_f: vec![], mu_lever: 0.0, mu_f_lever: 0.0 };
     for (cell, &(body, origin)) in cells.iter().zip(&at) {
         let g: &mut Group = match (body, side.as_deref_mut()) {
@@ -185,14 +185,18 @@ fn bodies(main: Rect, side: Option<Rect>) -> Vec<Rect> {
 /// [`COMFORTABLE`] shrinks is cramped.
 const SHRINK_TRIES: usize = 12;
 const COMFORTABLE: usize = 3;
+/// The sizes a comfortable layout starts from (the mechanism above gets the rest), and the
+/// larger ones the drawings start from, shrinking until they fit what they got.
+const COMFORTABLE_START: Sizes = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0 };
+const DRAWN: Sizes = Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0 };
 
 /// Cells packed into the bodies, shrinking the drawings up to `tries − 1` times until they
 /// fit; the last attempt is returned even if it does not (the layout measurement then
 /// reports it), with whether it fits.
-fn arrange(inp: &ForcesInput, bodies: &[Rect], tries: usize) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
+fn arrange(inp: &ForcesInput, bodies: &[Rect], start: Sizes, tries: usize) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
     let widest =
         inp.fa.forces.polygons.iter().map(|p| world_box(inp, p)).map(|b| b.width().max(b.height())).fold(0.0, f64::max);
-    let mut attempt = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest };
+    let mut attempt = Sizes { widest, ..start };
     let mut k = 0;
     loop {
         let cells = cells(inp, attempt);
@@ -208,7 +212,7 @@ fn arrange(inp: &ForcesInput, bodies: &[Rect], tries: usize) -> (Vec<Cell>, Vec<
 /// Whether the force drawings fit the main region (and the side region, if any) without
 /// being cramped.
 pub fn fit_comfortably(inp: &ForcesInput, main: Rect, side: Option<Rect>) -> bool {
-    arrange(inp, &bodies(main, side), COMFORTABLE + 1).2
+    arrange(inp, &bodies(main, side), COMFORTABLE_START, COMFORTABLE + 1).2
 }
 
 /// The world box of a polygon's group (or the crank): its links' points.
@@ -442,6 +446,8 @@ fn paper_dir(v: Vec2) -> Vec2 {
 struct Arrows {
     /// The drawing's link lines, paper mm.
     links: Vec<(Point, Point)>,
+    /// Slider blocks: centre, unit direction along the block, half length and half width.
+    blocks: Vec<(Point, Vec2, f64, f64)>,
     drawn: Vec<(Point, Vec2)>,
     mu_f: f64,
     h: f64,
@@ -464,7 +470,12 @@ impl Arrows {
         let len = natural.clamp(ARROW_MIN, ARROW_MAX);
         let d = paper_dir(force) / f;
         let n = d.turn_90();
-        let mut start = at;
+        // A force on a slider starts at the block's outline, not under it.
+        let exit = self.blocks.iter().find(|b| (b.0 - at).norm() < 0.5).map_or(0.0, |&(_, u, hl, hw)| {
+            let (along, across) = (d.dot(u).abs(), d.dot(u.turn_90()).abs());
+            (hl / along.max(1e-9)).min(hw / across.max(1e-9))
+        });
+        let mut start = at + d * exit;
         let along_link = self.links.iter().any(|&(a, b)| {
             let u = b - a;
             let on_line = (at - a).cross(u).abs() / u.norm().max(tol::PAPER) < 0.5;
@@ -477,8 +488,8 @@ impl Arrows {
         start += n * (BESIDE * twins as f64);
         self.drawn.push((at, d));
         let tip = start + d * len;
-        if start != at {
-            g.line(at, start, THIN);
+        if (start - (at + d * exit)).norm() > 0.0 {
+            g.line(at + d * exit, start, THIN);
         }
         vector(g, start, tip, VECTOR);
         labels.add(start + d * (len * 0.55), n, label, self.h);
@@ -554,6 +565,7 @@ fn draw_group_geometry(
     let p = view(layout.world, r, layout.mu_l);
     let m = inp.m;
     let mut link_lines = Vec::new();
+    let mut blocks = Vec::new();
     for &l in &links_of(inp, poly) {
         let link = &m.links[l];
         let joints: Vec<usize> = link.points.iter().copied().filter(|&q| !m.is_mass_centre(q)).collect();
@@ -564,10 +576,13 @@ fn draw_group_geometry(
                 slider(g, p(inp.state.points[first].p), paper_dir(dir), 10.0, 5.0, MAIN);
                 let c = p(inp.state.points[first].p);
                 let u = paper_dir(dir);
+                blocks.push((c, u.unit(), 5.0, 2.5));
                 g.line(c - u * 14.0 + u.turn_90() * 2.5, c + u * 14.0 + u.turn_90() * 2.5, THIN);
             }
             LinkKind::Block => {
-                slider(g, p(inp.state.points[first].p), paper_dir(inp.state.links[l].dir), 8.0, 4.0, MAIN)
+                let (c, u) = (p(inp.state.points[first].p), paper_dir(inp.state.links[l].dir));
+                slider(g, c, u, 8.0, 4.0, MAIN);
+                blocks.push((c, u.unit(), 4.0, 2.0));
             }
             _ => {
                 for &q in &joints[1..] {
@@ -602,7 +617,7 @@ fn draw_group_geometry(
         let mid = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP / 2.0).to_radians()) * MOMENT_R;
         labels.add(mid, mid - at, LabelText::new("M", format!("i{}", m.links[il.link].number)), 3.5);
     }
-    let mut arrows = Arrows { links: link_lines, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
+    let mut arrows = Arrows { links: link_lines, blocks, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
     for t in &poly.terms {
         arrows.arrow(g, labels, p(t.at), t.force, force_label(inp, t.kind, t.on));
     }
@@ -686,7 +701,7 @@ fn draw_lever(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, pl
     let cell = PlanCell { cell: plan_cell, title: inp.l.lever_title(), plan, mu, pole: "p", scale_line: None };
     let pole = draw_plan(g, &cell, labels);
     let at = |v: Vec2| Point::new(pole.x + v.x / mu, pole.y - v.y / mu);
-    let mut arrows = Arrows { links: Vec::new(), drawn: Vec::new(), mu_f, h: 2.5 };
+    let mut arrows = Arrows { links: Vec::new(), blocks: Vec::new(), drawn: Vec::new(), mu_f, h: 2.5 };
     for l in &f.lever {
         let label = if l.couple { couple_label(inp, l.on) } else { force_label(inp, l.kind, l.on) };
         arrows.arrow(g, labels, at(l.image), l.force, label);
