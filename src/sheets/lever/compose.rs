@@ -378,7 +378,8 @@ fn sheet_table(t: &NumTable, title: &str, lang: Language) -> Table {
         .rows
         .iter()
         .map(|r| {
-            (LabelText::new(r.symbol.clone(), r.sub.clone()), r.values.iter().map(|&v| fmt::value(v, lang)).collect())
+            let sub = LeverLabels::get(lang).force_sub(&r.symbol, &r.sub);
+            (LabelText::new(r.symbol.clone(), sub), r.values.iter().map(|&v| fmt::value(v, lang)).collect())
         })
         .collect();
     Table {

@@ -306,7 +306,7 @@ fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec
         items.push(value_item(inp, force_label(inp, inner.kind, inner.on), inner.force.norm(), inp.c.unit_n(), false));
     }
     for il in inp.fa.forces.inertia.iter().filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0) {
-        let label = LabelText::new("M", format!("i{}", inp.m.links[il.link].number));
+        let label = LabelText::new("M", inp.l.force_sub("M", &format!("i{}", inp.m.links[il.link].number)));
         items.push(value_item(inp, label, il.moment.abs(), inp.c.unit_n_m(), false));
     }
     with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
@@ -410,8 +410,11 @@ fn force_label(inp: &ForcesInput, kind: Kind, on: usize) -> LabelText {
     let n = |l: usize| if l == FRAME { 0 } else { inp.m.links[l].number };
     match kind {
         Kind::Weight => LabelText::new("G", n(on).to_string()),
-        Kind::Inertia => LabelText::new("P", format!("i{}", n(on))),
-        Kind::Load(i) => LabelText::new("P", format!("{}{}", load_letter(inp.fa.model.loads[i].kind), n(on))),
+        Kind::Inertia => LabelText::new("P", inp.l.force_sub("P", &format!("i{}", n(on)))),
+        Kind::Load(i) => {
+            let sub = format!("{}{}", load_letter(inp.fa.model.loads[i].kind), n(on));
+            LabelText::new("P", inp.l.force_sub("P", &sub))
+        }
         Kind::Reaction { from, part } => {
             let main = match part {
                 Part::Whole => "R",
@@ -420,7 +423,7 @@ fn force_label(inp: &ForcesInput, kind: Kind, on: usize) -> LabelText {
             };
             LabelText::new(main, format!("{}{}", n(from), n(on)))
         }
-        Kind::Balancing => LabelText::new("P", "m"),
+        Kind::Balancing => LabelText::new("P", inp.l.sub_balancing()),
     }
 }
 
@@ -615,7 +618,7 @@ fn draw_group_geometry(
         let start = clear_turn_arrow(g, &mut drawn, at, MOMENT_R, 200.0, MOMENT_SWEEP, il.moment > 0.0, THIN);
         let sign = if il.moment > 0.0 { -1.0 } else { 1.0 };
         let mid = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP / 2.0).to_radians()) * MOMENT_R;
-        labels.add(mid, mid - at, LabelText::new("M", format!("i{}", m.links[il.link].number)), 3.5);
+        labels.add(mid, mid - at, LabelText::new("M", inp.l.force_sub("M", &format!("i{}", m.links[il.link].number))), 3.5);
     }
     let mut arrows = Arrows { links: link_lines, blocks, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
     for t in &poly.terms {
@@ -708,18 +711,15 @@ fn draw_lever(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, pl
     }
     let crank = inp.m.crank();
     let a_img = inp.state.points[crank.pin].v.turn_90() * inp.m.omega1.signum();
-    arrows.arrow(g, labels, at(a_img), f.dir_m * f.p_m_lever, LabelText::new("P′", "m"));
+    arrows.arrow(g, labels, at(a_img), f.dir_m * f.p_m_lever, LabelText::new("P′", inp.l.sub_balancing()));
     let lang = inp.lang;
     let lines = [
         vec![
             with_semicolon(scale_item(inp, "v", mu, inp.c.unit_v_per_mm())),
             scale_item(inp, "F", mu_f, inp.c.unit_n_per_mm()),
         ],
-        vec![LabelText::new("P′", "m").with_tail(format!(" = {} {}", fmt::value(f.p_m_lever, lang), inp.c.unit_n()))],
-        vec![LabelText::new("Δ", "").with_tail(format!(
-            " = (Pₘ − P′ₘ)/Pₘ·100 % = {} %",
-            fmt::value(f.difference_percent(), lang)
-        ))],
+        vec![LabelText::new("P′", inp.l.sub_balancing()).with_tail(format!(" = {} {}", fmt::value(f.p_m_lever, lang), inp.c.unit_n()))],
+        vec![LabelText::new("Δ", "").with_tail(format!(" = {} %", fmt::value(f.difference_percent(), lang)))],
     ];
     let y = text_rows(g, r.x0 + 2.0, r.y1 - text_h + LINE, &legend);
     text_rows(g, r.x0 + 2.0, y, &lines);

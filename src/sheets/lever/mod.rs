@@ -75,7 +75,15 @@ impl LeverBuild {
             title: title.into(),
             headings: [c.quantity().into(), c.unit().into()],
             units: table.rows.iter().map(|r| c.si_unit(&r.unit).to_string()).collect(),
-            table: table.clone(),
+            // Force symbols' subscripts in the sheet's language (P_и on a Russian sheet).
+            table: NumTable {
+                rows: table
+                    .rows
+                    .iter()
+                    .map(|r| crate::report::Row { sub: l.force_sub(&r.symbol, &r.sub), ..r.clone() })
+                    .collect(),
+                ..table.clone()
+            },
             decimal_comma: lang != Language::En,
         };
         let mut out = vec![
