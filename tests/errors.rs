@@ -39,7 +39,10 @@ fn misspelt_key_names_line_column_and_the_expected_keys() {
 #[test]
 fn missing_value_is_named() {
     let e = error_of("rpm: 70, ", "");
-    assert!(e.contains("`rpm` (rev/min) or `omega` (1/s)") && e.contains(&format!("line {}", line_of("rpm: 70"))), "{e}");
+    assert!(
+        e.contains("`rpm` (rev/min) or `omega` (1/s)") && e.contains(&format!("line {}", line_of("rpm: 70"))),
+        "{e}"
+    );
 }
 
 #[test]

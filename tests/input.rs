@@ -73,7 +73,10 @@ mechanism:
     let p = pipeline::load(text).expect("loads");
     let built = pipeline::build(&p, &[]).expect("builds");
     let d = &built[0].output.diagnostics;
-    assert!(d.iter().any(|d| d.contains("4 extreme positions per crank turn") && d.matches("θ = ").count() == 4), "{d:?}");
+    assert!(
+        d.iter().any(|d| d.contains("4 extreme positions per crank turn") && d.matches("θ = ").count() == 4),
+        "{d:?}"
+    );
     // The usual crank-slider says nothing of the kind.
     let usual = pipeline::build(&common::fixture("crank-slider-axial"), &[]).expect("builds");
     assert!(!usual[0].output.diagnostics.iter().any(|d| d.contains("extreme positions")));

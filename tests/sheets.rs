@@ -10,9 +10,9 @@ use common::{fixture, fixture_names, root};
 use kurbo::Rect;
 use std::path::Path;
 use tmm_sheets::backend::raster;
-use tmm_sheets::drawing::{frame, layout};
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::drawing::scene::{Item, Scene};
+use tmm_sheets::drawing::{frame, layout};
 use tmm_sheets::pipeline::{self, Built, Formats};
 use tmm_sheets::project::Project;
 use tmm_sheets::report;
@@ -116,7 +116,14 @@ fn check_layout(name: &str, scene: &Scene) {
     // The sheet's own measurement, held at zero: no text crossed by a line, no two texts
     // overlapping, nothing outside its region.
     let l = layout::measure(scene);
-    assert!(l.is_clean(), "{name}: {} crossed, {} overlaps, {} outside: {:#?}", l.texts_crossed, l.text_overlaps, l.outside_region, l.problems);
+    assert!(
+        l.is_clean(),
+        "{name}: {} crossed, {} overlaps, {} outside: {:#?}",
+        l.texts_crossed,
+        l.text_overlaps,
+        l.outside_region,
+        l.problems
+    );
 }
 
 #[test]
@@ -426,7 +433,10 @@ fn the_layout_holds_for_every_fixture_language_and_phi1() {
                         let out = b.remove(0).output;
                         let reported = &out.results["layout"];
                         let smallest = reported["smallest_plan_mm"].as_f64().unwrap_or(0.0);
-                        if reported["texts_crossed"] != 0 || reported["text_overlaps"] != 0 || reported["outside_region"] != 0 {
+                        if reported["texts_crossed"] != 0
+                            || reported["text_overlaps"] != 0
+                            || reported["outside_region"] != 0
+                        {
                             failures.push(format!("{label}: results.json reports {reported}"));
                         }
                         if smallest < SMALLEST_PLAN_MM {
@@ -502,14 +512,21 @@ fn load_diagrams_tick_the_force_axis_and_mark_phi1() {
             let values = load.branches.iter().flat_map(|b| b.curve.points.iter().map(move |q| q.1 * b.scale));
             let (lo, hi) = values.fold((f64::MAX, f64::MIN), |(lo, hi), y| (lo.min(y), hi.max(y)));
             // The round steps a reader can count in: 1, 2, 2.5, 4, 5 × 10^k newtons.
-            let covered = [1.0, 2.0, 2.5, 4.0, 5.0].iter().flat_map(|m| (0..7).map(move |e| m * 10f64.powi(e))).any(|step| {
-                let ticks: Vec<f64> = numbers.iter().copied().filter(|v| (v / step).fract() == 0.0).collect();
-                let (tmin, tmax) = ticks.iter().fold((0.0f64, 0.0f64), |(a, b), &v| (a.min(v), b.max(v)));
-                ticks.len() >= 2 && tmin <= lo.min(0.0) + step + 1e-9 && tmax >= hi.max(0.0) - step - 1e-9
-            });
-            assert!(covered, "{name}: the load diagram of [{lo}, {hi}] N has no round-step ticks over its range: {numbers:?}");
+            let covered =
+                [1.0, 2.0, 2.5, 4.0, 5.0].iter().flat_map(|m| (0..7).map(move |e| m * 10f64.powi(e))).any(|step| {
+                    let ticks: Vec<f64> = numbers.iter().copied().filter(|v| (v / step).fract() == 0.0).collect();
+                    let (tmin, tmax) = ticks.iter().fold((0.0f64, 0.0f64), |(a, b), &v| (a.min(v), b.max(v)));
+                    ticks.len() >= 2 && tmin <= lo.min(0.0) + step + 1e-9 && tmax >= hi.max(0.0) - step - 1e-9
+                });
+            assert!(
+                covered,
+                "{name}: the load diagram of [{lo}, {hi}] N has no round-step ticks over its range: {numbers:?}"
+            );
         }
-        let phi = tmm_sheets::drawing::fmt::localise(&format!("{:.1}", lever.kinematics.assigned.phi.to_degrees()), p.info.language);
+        let phi = tmm_sheets::drawing::fmt::localise(
+            &format!("{:.1}", lever.kinematics.assigned.phi.to_degrees()),
+            p.info.language,
+        );
         let marked = forces.items.iter().any(|i| matches!(i, Item::Text(t) if t.text == format!("= {phi}°")));
         assert!(marked || fa.model.loads.is_empty(), "{name}: φ1 = {phi}° is not marked on the load diagram");
     }
@@ -542,11 +559,22 @@ fn plans_are_drawn_at_round_scales_recorded_with_their_sizes() {
                 if kind == "velocity_plans" {
                     // pa lies inside the plan's box: no longer than its diagonal.
                     let diagonal = w.hypot(h);
-                    assert!(diagonal >= v_a / mu - 1e-9, "{name}: plan {} is {w} × {h} mm, pa alone is {} mm", plan["position"], v_a / mu);
+                    assert!(
+                        diagonal >= v_a / mu - 1e-9,
+                        "{name}: plan {} is {w} × {h} mm, pa alone is {} mm",
+                        plan["position"],
+                        v_a / mu
+                    );
                 }
                 if common.is_none() {
-                    let written = format!("= {} ", tmm_sheets::drawing::fmt::localise(&tmm_sheets::drawing::scale::format(mu), p.info.language));
-                    assert!(b.scene.texts().any(|t| t.text.starts_with(&written)), "{name}: no own scale {written} written");
+                    let written = format!(
+                        "= {} ",
+                        tmm_sheets::drawing::fmt::localise(&tmm_sheets::drawing::scale::format(mu), p.info.language)
+                    );
+                    assert!(
+                        b.scene.texts().any(|t| t.text.starts_with(&written)),
+                        "{name}: no own scale {written} written"
+                    );
                 }
             }
         }

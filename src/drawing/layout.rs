@@ -50,7 +50,9 @@ pub fn measure(scene: &Scene) -> Layout {
     let texts: Vec<(&str, &super::scene::Text)> = scene
         .groups
         .iter()
-        .flat_map(|g| g.items.iter().filter_map(move |i| if let Item::Text(t) = i { Some((g.id.as_str(), t)) } else { None }))
+        .flat_map(|g| {
+            g.items.iter().filter_map(move |i| if let Item::Text(t) = i { Some((g.id.as_str(), t)) } else { None })
+        })
         .collect();
     for (group, t) in &texts {
         let r = t.core_box().inflate(-TOUCH, -TOUCH);
@@ -67,7 +69,10 @@ pub fn measure(scene: &Scene) -> Layout {
             let (og, o) = texts[*other];
             if *other > k && o.core_box().intersect(r).area() > 1e-6 {
                 out.text_overlaps += 1;
-                out.note(format!("'{group}': {:?} overlaps {:?} ('{og}') at ({:.1}, {:.1}) mm", t.text, o.text, t.at.x, t.at.y));
+                out.note(format!(
+                    "'{group}': {:?} overlaps {:?} ('{og}') at ({:.1}, {:.1}) mm",
+                    t.text, o.text, t.at.x, t.at.y
+                ));
             }
         }
     }

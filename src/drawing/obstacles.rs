@@ -124,7 +124,8 @@ impl Obstacles {
 
     /// Whether the segment `a`–`b` crosses any stroke segment.
     pub fn segment_crosses_stroke(&self, a: Point, b: Point) -> bool {
-        self.near(Rect::from_points(a, b)).any(|(p, _)| matches!(*p, Piece::Segment(c, d) if segments_cross(a, b, c, d)))
+        self.near(Rect::from_points(a, b))
+            .any(|(p, _)| matches!(*p, Piece::Segment(c, d) if segments_cross(a, b, c, d)))
     }
 
     /// Whether the segment `a`–`b` crosses any text box.

@@ -131,7 +131,13 @@ impl Labels {
     }
 
     /// One greedy round in `order`: each label's candidate and whether it is clean.
-    fn attempt(&self, drawn: &Obstacles, cands: &[Vec<Candidate>], order: &[usize], bounds: Rect) -> Vec<(Candidate, bool)> {
+    fn attempt(
+        &self,
+        drawn: &Obstacles,
+        cands: &[Vec<Candidate>],
+        order: &[usize],
+        bounds: Rect,
+    ) -> Vec<(Candidate, bool)> {
         let mut obstacles = drawn.clone();
         let mut out = vec![(Candidate { r: Rect::ZERO, leader: None, cost: 0.0 }, false); self.requests.len()];
         for &i in order {
@@ -175,8 +181,7 @@ impl Candidate {
 
     /// The box is clear and its leader crosses no text (it may cross lines).
     fn box_is_free(&self, o: &Obstacles) -> bool {
-        o.is_clear(self.r.inflate(CLEAR, CLEAR))
-            && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
+        o.is_clear(self.r.inflate(CLEAR, CLEAR)) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
     }
 }
 
@@ -269,4 +274,3 @@ mod tests {
         assert!(l.is_clean(), "{l:?}");
     }
 }
-

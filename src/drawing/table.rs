@@ -96,7 +96,12 @@ impl Table {
         let base = |r: usize| top + ROW_H * r as f64 + ROW_H / 2.0 + CELL_TEXT / 2.0;
         let col = |c: usize| at.x + label_w + cell_w * (c as f64 + 0.5);
         if !self.corner.is_empty() {
-            g.text(Text::new(Point::new(at.x + label_w / 2.0, base(0)), self.corner.clone(), CELL_TEXT, Anchor::Middle));
+            g.text(Text::new(
+                Point::new(at.x + label_w / 2.0, base(0)),
+                self.corner.clone(),
+                CELL_TEXT,
+                Anchor::Middle,
+            ));
         }
         for (c, hd) in self.header.iter().enumerate() {
             g.text(Text::new(Point::new(col(c), base(0)), hd.clone(), CELL_TEXT, Anchor::Middle));

@@ -13,7 +13,7 @@ pub const NOISE: f64 = 1e-7;
 pub fn significant(x: f64) -> String {
     let a = x.abs();
     // Also catches NaN, which never reaches an output (the writers refuse it).
-    if !(a >= NOISE) {
+    if a.is_nan() || a < NOISE {
         return "0".into();
     }
     let magnitude = math::log10(a).floor() as i32;

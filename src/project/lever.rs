@@ -231,14 +231,14 @@ fn crank_speed(c: &CrankSpec) -> Result<f64, ModelError> {
     match (&c.rpm, &c.omega) {
         (Some(n), None) => Ok(std::f64::consts::PI * n.value.0 / 30.0),
         (None, Some(w)) => Ok(w.value.0),
-        (Some(_), Some(w)) => {
-            Err(invalid(at(w), "mechanism.crank.omega", "give the crank's speed once: `rpm` (rev/min) or `omega` (1/s)"))
-        }
-        (None, None) => Err(invalid(
-            at(&c.pivot),
-            "mechanism.crank",
-            "the crank needs its speed: `rpm` (rev/min) or `omega` (1/s)",
+        (Some(_), Some(w)) => Err(invalid(
+            at(w),
+            "mechanism.crank.omega",
+            "give the crank's speed once: `rpm` (rev/min) or `omega` (1/s)",
         )),
+        (None, None) => {
+            Err(invalid(at(&c.pivot), "mechanism.crank", "the crank needs its speed: `rpm` (rev/min) or `omega` (1/s)"))
+        }
     }
 }
 

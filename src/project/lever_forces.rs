@@ -8,9 +8,9 @@ use super::{ModelError, Warning, at, invalid, warning};
 use crate::lever::indicators::{self, Indicator};
 use crate::lever::kinetostatics::{ForceModel, LinkMass};
 use crate::lever::linkage::{LinkId, LinkKind, Mechanism, PointId, Step};
-use crate::num::math::Norm;
 use crate::lever::load::{Branch, Curve, Load, LoadKind, Stroke};
 use crate::num::limits;
+use crate::num::math::Norm;
 use kurbo::Vec2;
 use serde_saphyr::Spanned;
 
@@ -142,26 +142,28 @@ struct FullLength {
 /// (every 5°) where it assembles; `None` for a link with one joint, or one whose joints'
 /// distance changes (a kulisa's block slides along it).
 fn full_length(m: &Mechanism, link: LinkId) -> Option<FullLength> {
-    let joints: Vec<PointId> = m.links[link]
-        .points
-        .iter()
-        .copied()
-        .filter(|&p| !m.is_mass_centre(p) && !m.is_kulisa_image(p))
-        .collect();
+    let joints: Vec<PointId> =
+        m.links[link].points.iter().copied().filter(|&p| !m.is_mass_centre(p) && !m.is_kulisa_image(p)).collect();
     if joints.len() < 2 {
         return None;
     }
     let Some(state) = (0..72).find_map(|k| m.solve(k as f64 * std::f64::consts::TAU / 72.0).ok()) else {
         // A mechanism that never assembles is refused by the motion analysis, which says
         // why; until then the group's own side length stands in.
-        return defined_length(m, link).map(|length| FullLength { length, from: String::new(), to: String::new(), joints: 2 });
+        return defined_length(m, link).map(|length| FullLength {
+            length,
+            from: String::new(),
+            to: String::new(),
+            joints: 2,
+        });
     };
     let mut best: Option<FullLength> = None;
     for (i, &a) in joints.iter().enumerate() {
         for &b in &joints[i + 1..] {
             let d = (state.points[a].p - state.points[b].p).norm();
             if best.as_ref().is_none_or(|f| d > f.length) {
-                best = Some(FullLength { length: d, from: m.name(a).into(), to: m.name(b).into(), joints: joints.len() });
+                best =
+                    Some(FullLength { length: d, from: m.name(a).into(), to: m.name(b).into(), joints: joints.len() });
             }
         }
     }
@@ -172,7 +174,9 @@ fn full_length(m: &Mechanism, link: LinkId) -> Option<FullLength> {
 fn defined_length(m: &Mechanism, link: LinkId) -> Option<f64> {
     m.steps.iter().find_map(|s| match *s {
         Step::Crank { length, link: l, .. } if l == link => Some(length),
-        Step::Rrr { l_pb, l_qb, links, .. } if links.contains(&link) => Some(if links[0] == link { l_pb } else { l_qb }),
+        Step::Rrr { l_pb, l_qb, links, .. } if links.contains(&link) => {
+            Some(if links[0] == link { l_pb } else { l_qb })
+        }
         Step::Rrp { length, links, .. } if links[0] == link => Some(length),
         _ => None,
     })

@@ -264,12 +264,17 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
         format!("{} — {}", inp.info.title, if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() });
     let scene = Scene { width: A1_W, height: A1_H, title, groups };
     let mut layout = layout::measure(&scene);
-    layout.smallest_plan_mm =
-        vdrawn.iter().chain(&adrawn).map(|p| p.size_mm[0].max(p.size_mm[1])).reduce(f64::min);
+    layout.smallest_plan_mm = vdrawn.iter().chain(&adrawn).map(|p| p.size_mm[0].max(p.size_mm[1])).reduce(f64::min);
     Ok(Composed {
         scene,
         layout,
-        scales: Scales { mu_l, mu_v: common_mu(&vdrawn), mu_a: common_mu(&adrawn), velocity_plans: vdrawn, acceleration_plans: adrawn },
+        scales: Scales {
+            mu_l,
+            mu_v: common_mu(&vdrawn),
+            mu_a: common_mu(&adrawn),
+            velocity_plans: vdrawn,
+            acceleration_plans: adrawn,
+        },
         force_scales,
         trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
     })
@@ -406,7 +411,7 @@ fn with_units(mut table: Table, t: &NumTable, c: &Common) -> Table {
 
 /// The label column's width: the widest label and 1.5 mm either side, at least 14 mm.
 fn label_column(rows: &[(LabelText, Vec<String>)]) -> f64 {
-    rows.iter().map(|(l, _)| l.width(CELL_TEXT) + 3.0).fold(14.0, f64::max)
+    rows.iter().map(|(l, _)| l.width(CELL_TEXT) + 3.0 + CELL_TEXT * crate::drawing::text::SLANT).fold(14.0, f64::max)
 }
 
 /// Height the notes need in a column of width `w`.

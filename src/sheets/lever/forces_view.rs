@@ -536,7 +536,14 @@ fn with_semicolon(mut l: LabelText) -> LabelText {
     l
 }
 
-fn draw_group_cell(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, poly: &Polygon, layout: &GroupLayout) {
+fn draw_group_cell(
+    g: &mut Group,
+    labels: &mut Labels,
+    r: Rect,
+    inp: &ForcesInput,
+    poly: &Polygon,
+    layout: &GroupLayout,
+) {
     cell_title(g, r, &group_title(inp, poly));
     let top = r.y0 + CELL_TITLE;
     let lines = layout.equation.len() + layout.legend.len() + SCALE_LINES;
@@ -618,7 +625,12 @@ fn draw_group_geometry(
         let start = clear_turn_arrow(g, &mut drawn, at, MOMENT_R, 200.0, MOMENT_SWEEP, il.moment > 0.0, THIN);
         let sign = if il.moment > 0.0 { -1.0 } else { 1.0 };
         let mid = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP / 2.0).to_radians()) * MOMENT_R;
-        labels.add(mid, mid - at, LabelText::new("M", inp.l.force_sub("M", &format!("i{}", m.links[il.link].number))), 3.5);
+        labels.add(
+            mid,
+            mid - at,
+            LabelText::new("M", inp.l.force_sub("M", &format!("i{}", m.links[il.link].number))),
+            3.5,
+        );
     }
     let mut arrows = Arrows { links: link_lines, blocks, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
     for t in &poly.terms {
@@ -718,7 +730,11 @@ fn draw_lever(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, pl
             with_semicolon(scale_item(inp, "v", mu, inp.c.unit_v_per_mm())),
             scale_item(inp, "F", mu_f, inp.c.unit_n_per_mm()),
         ],
-        vec![LabelText::new("P′", inp.l.sub_balancing()).with_tail(format!(" = {} {}", fmt::value(f.p_m_lever, lang), inp.c.unit_n()))],
+        vec![LabelText::new("P′", inp.l.sub_balancing()).with_tail(format!(
+            " = {} {}",
+            fmt::value(f.p_m_lever, lang),
+            inp.c.unit_n()
+        ))],
         vec![LabelText::new("Δ", "").with_tail(format!(" = {} %", fmt::value(f.difference_percent(), lang)))],
     ];
     let y = text_rows(g, r.x0 + 2.0, r.y1 - text_h + LINE, &legend);

@@ -2,8 +2,8 @@
 //! position, the assigned position thick with its letters and the senses of ω and ε,
 //! the centres of mass and their trajectories, frame pivots and guides.
 
-use crate::drawing::path::Path;
 use crate::drawing::obstacles::Obstacles;
+use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, Group, MAIN, Pen, THIN};
 use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, hatch, slider};

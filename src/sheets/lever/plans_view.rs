@@ -146,7 +146,11 @@ fn pack(sizes: &[(f64, f64)], body: Rect) -> Option<Vec<Rect>> {
 
 /// The largest round value below `mu`.
 fn previous_round(mu: f64) -> f64 {
-    [0.5, 0.625, 0.8].iter().map(|f| scale::round_up(mu * f)).filter(|&m| m < mu * (1.0 - 1e-9)).fold(mu * 0.5, f64::max)
+    [0.5, 0.625, 0.8]
+        .iter()
+        .map(|f| scale::round_up(mu * f))
+        .filter(|&m| m < mu * (1.0 - 1e-9))
+        .fold(mu * 0.5, f64::max)
 }
 
 /// The next round value above `mu`.
