@@ -79,6 +79,29 @@ const HEADER: f64 = 17.0;
 
 /// Lays out sheet 1; refuses a project text too long for its place on the sheet.
 pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
+    if inp.forces.is_none() {
+        return Ok(compose_at(inp, k, FORCES_MIN_W)?.0);
+    }
+    // The split between the force drawings (left) and the plans (right): the widest force
+    // column is tried first; a narrower one wins when the forces still fit comfortably and
+    // the smallest plan grows by a tenth or more.
+    let mut best = compose_at(inp, k, FORCES_WIDTHS[0])?;
+    for &w in &FORCES_WIDTHS[1..] {
+        let next = compose_at(inp, k, w)?;
+        let smallest = |c: &Composed| c.layout.smallest_plan_mm.unwrap_or(0.0);
+        if next.1 && next.0.layout.is_clean() && smallest(&next.0) > 1.1 * smallest(&best.0) {
+            best = next;
+        }
+    }
+    Ok(best.0)
+}
+
+/// Widths of the force column tried, mm.
+const FORCES_WIDTHS: [f64; 3] = [FORCES_MIN_W, 430.0, 390.0];
+
+/// [`compose`] with a force column at least `forces_w` wide; also whether the force drawings
+/// fit it comfortably.
+fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, bool), TooLong> {
     let m = &inp.project.mechanism;
     let lang = inp.info.language;
     let (l, c) = (LeverLabels::get(lang), Common::get(lang));
@@ -107,16 +130,16 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     // With a force analysis the box is the tallest that leaves the force drawings below it
     // room without cramping them.
     let world = world_extent(m, k, &inp.project.kulisa_lengths);
-    let force_region_below = |mech: Rect| {
-        Rect::new(inner.x0 + 5.0, mech.y1 + 4.0, mech.x1.max(inner.x0 + 5.0 + FORCES_MIN_W), inner.y1 - 4.0)
-    };
+    let force_region_below =
+        |mech: Rect| Rect::new(inner.x0 + 5.0, mech.y1 + 4.0, mech.x1.max(inner.x0 + 5.0 + forces_w), inner.y1 - 4.0);
     let heights: &[f64] = if force_input.is_some() { &MECH_HEIGHTS_FORCES } else { &[MECH_MAX_H] };
     let fits = |h: f64| {
         let (r, _, _) = mechanism_region(world, h, inner);
         let below = force_region_below(r);
         force_input.as_ref().is_none_or(|fi| fit_comfortably(fi, below, side_region(r, below)))
     };
-    let max_h = heights.iter().copied().find(|&h| fits(h)).unwrap_or(heights[heights.len() - 1]);
+    let comfortable = heights.iter().copied().find(|&h| fits(h));
+    let max_h = comfortable.unwrap_or(heights[heights.len() - 1]);
     let (mech_region, mu_l, draw_h) = mechanism_region(world, max_h, inner);
     let mut mech = Group::new("mechanism", mech_region);
     let origin = Point::new(
@@ -265,19 +288,22 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let scene = Scene { width: A1_W, height: A1_H, title, groups };
     let mut layout = layout::measure(&scene);
     layout.smallest_plan_mm = vdrawn.iter().chain(&adrawn).map(|p| p.size_mm[0].max(p.size_mm[1])).reduce(f64::min);
-    Ok(Composed {
-        scene,
-        layout,
-        scales: Scales {
-            mu_l,
-            mu_v: common_mu(&vdrawn),
-            mu_a: common_mu(&adrawn),
-            velocity_plans: vdrawn,
-            acceleration_plans: adrawn,
+    Ok((
+        Composed {
+            scene,
+            layout,
+            scales: Scales {
+                mu_l,
+                mu_v: common_mu(&vdrawn),
+                mu_a: common_mu(&adrawn),
+                velocity_plans: vdrawn,
+                acceleration_plans: adrawn,
+            },
+            force_scales,
+            trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
         },
-        force_scales,
-        trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
-    })
+        comfortable.is_some(),
+    ))
 }
 
 /// The room beside a narrow mechanism drawing, above the force region, for force cells.
