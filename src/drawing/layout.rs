@@ -62,7 +62,8 @@ pub fn measure(scene: &Scene) -> Layout {
             out.note(format!("'{group}': a line crosses {:?} at ({:.1}, {:.1}) mm", t.text, t.at.x, t.at.y));
         }
     }
-    let boxes = Obstacles::of_items(texts.iter().map(|(_, t)| Item::Text((*t).clone())).collect::<Vec<_>>().iter());
+    let boxes =
+        Obstacles::of_pieces(texts.iter().enumerate().map(|(k, (_, t))| (Piece::TextBox(t.core_box()), k)).collect());
     for (k, (group, t)) in texts.iter().enumerate() {
         let r = t.core_box();
         for (_, other) in boxes.near(r) {

@@ -69,7 +69,7 @@ fn aabb(r: Rect) -> AABB<[f64; 2]> {
 }
 
 impl Obstacles {
-    /// Every item's segments and text boxes; `owner` tags them (e.g. the item's group).
+    /// Every item's segments and text boxes, each tagged with its item's index.
     pub fn of_items<'a>(items: impl IntoIterator<Item = &'a Item>) -> Obstacles {
         let mut pieces = Vec::new();
         for (k, item) in items.into_iter().enumerate() {
@@ -78,6 +78,11 @@ impl Obstacles {
                 _ => pieces.extend(segments(item).into_iter().map(|(a, b)| (Piece::Segment(a, b), k))),
             }
         }
+        Obstacles::of_pieces(pieces)
+    }
+
+    /// Pieces with their tags, loaded at once.
+    pub fn of_pieces(pieces: Vec<(Piece, usize)>) -> Obstacles {
         let entries = pieces.iter().enumerate().map(|(i, (p, _))| Entry::new(rect_of(bounds(p)), i)).collect();
         Obstacles { pieces, tree: RTree::bulk_load(entries) }
     }

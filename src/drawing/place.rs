@@ -39,14 +39,6 @@ struct Request {
     rank: u8,
 }
 
-/// Where one label went, for views that draw something more beside it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Placed {
-    pub r#box: Rect,
-    /// Whether no stroke, text or bound was violated.
-    pub clear: bool,
-}
-
 /// Labels waiting for the geometry of their group to be complete.
 #[derive(Debug, Default)]
 pub struct Labels {
@@ -87,12 +79,10 @@ impl Labels {
         self.add_ranked(anchor, pref, LabelText::new(text, ""), h, rank);
     }
 
-    pub fn is_empty(&self) -> bool {
-        self.requests.is_empty()
-    }
-
-    /// Places every label inside `bounds`, clear of everything `g` holds now, and draws them.
-    pub fn place(self, g: &mut Group, bounds: Rect) -> Vec<Placed> {
+    /// Places every label inside `bounds`, clear of everything `g` holds now, and draws them;
+    /// returns whether each found a clean spot (the layout measurement reports those that
+    /// did not).
+    pub fn place(self, g: &mut Group, bounds: Rect) -> Vec<bool> {
         let drawn = Obstacles::of_items(&g.items);
         let cands: Vec<Vec<Candidate>> = self.requests.iter().map(|r| candidates(r, bounds)).collect();
         // By rank, then most constrained first: the fewest candidates free against the
@@ -125,7 +115,7 @@ impl Labels {
             if let Some((a, b)) = cand.leader {
                 g.line(a, b, THIN);
             }
-            placed.push(Placed { r#box: cand.r, clear });
+            placed.push(clear);
         }
         placed
     }
@@ -268,7 +258,7 @@ mod tests {
             labels.add(c, Vec2::new(1.0, -1.0), LabelText::new(name, "2"), 5.0);
         }
         let placed = labels.place(&mut g, region);
-        assert!(placed.iter().all(|p| p.clear), "{placed:?}");
+        assert!(placed.iter().all(|&clear| clear), "{placed:?}");
         let scene = Scene { width: 100.0, height: 100.0, title: String::new(), groups: vec![g] };
         let l = layout::measure(&scene);
         assert!(l.is_clean(), "{l:?}");

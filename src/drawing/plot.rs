@@ -3,8 +3,10 @@
 //! with their values and the axes' names. The load diagram of sheet 1 uses it; the cam
 //! diagrams of sheet 3 will.
 
+use super::labels::Language;
 use super::scene::{Anchor, Group, Pen, THIN, Text};
 use super::symbols::vector;
+use super::{fmt, scale};
 use kurbo::{Point, Rect};
 
 /// Length of a tick mark, mm, and how far an axis runs past its data for the arrow. The x
@@ -97,6 +99,24 @@ impl Plot {
     }
 }
 
+/// Ticks of an axis at a round step (the round value at or above a sixth of the range, and
+/// at least 4 mm on paper), without zero, where the other axis crosses: the values as the
+/// sheet in `lang` prints them.
+pub fn round_ticks(lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, String)> {
+    let step = scale::round_up((hi - lo) / 6.0);
+    // Ticks closer than 4 mm would print their values on each other.
+    let step = if step / mu < 4.0 { scale::round_up(4.0 * mu) } else { step };
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last)
+        .filter(|&k| k != 0)
+        .map(|k| {
+            let v = k as f64 * step;
+            (v, fmt::localise(&scale::format(v), lang))
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -113,5 +133,17 @@ mod tests {
         assert_eq!(p.at(1.0, 400.0), Point::new(110.0, 20.0));
         assert_eq!(p.area(), area);
         assert_eq!(p.at(0.5, 0.0), Point::new(60.0, 60.0), "the x axis runs through y = 0");
+    }
+
+    #[test]
+    fn round_ticks_cover_the_range_at_a_round_step_without_zero() {
+        let t = round_ticks(-4600.0, 1650.0, 100.0, Language::Ru);
+        let values: Vec<f64> = t.iter().map(|x| x.0).collect();
+        // The step is the round value at or above a sixth of the 6250 N range: 2000 N.
+        assert_eq!(values, [-4000.0, -2000.0]);
+        assert_eq!(t[0].1, "−4000");
+        // At 100 N/mm a 200 N step would be 2 mm apart: it grows to 400 N, 4 mm on paper.
+        let dense: Vec<f64> = round_ticks(0.0, 1200.0, 100.0, Language::En).iter().map(|x| x.0).collect();
+        assert_eq!(dense, [400.0, 800.0, 1200.0]);
     }
 }

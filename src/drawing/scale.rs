@@ -36,6 +36,16 @@ pub fn round_up(x: f64) -> f64 {
     }
 }
 
+/// The next value of the round series above `mu`.
+pub fn next_round(mu: f64) -> f64 {
+    round_up(mu * 1.001)
+}
+
+/// The largest value of the round series below `mu`.
+pub fn previous_round(mu: f64) -> f64 {
+    [0.5, 0.625, 0.8].iter().map(|f| round_up(mu * f)).filter(|&m| m < mu * (1.0 - 1e-9)).fold(mu * 0.5, f64::max)
+}
+
 /// The smallest μ_l (m/mm) of a GOST 2.302 scale that is ≥ `x` (1:1 for no extent).
 pub fn length_scale(x: f64) -> f64 {
     if !(x.is_finite() && x > 0.0) {
@@ -72,6 +82,12 @@ mod tests {
         assert_eq!(round_up(0.021975), 0.025);
         assert_eq!(round_up(8.0), 10.0);
         assert_eq!((round_up(0.0), round_up(f64::NAN), length_scale(-1.0)), (1.0, 1.0, 0.001), "no extent, no panic");
+    }
+
+    #[test]
+    fn next_and_previous_round_values_step_along_the_series() {
+        assert_eq!([next_round(0.02), next_round(0.025), next_round(0.05)], [0.025, 0.04, 0.1]);
+        assert_eq!([previous_round(0.1), previous_round(0.04), previous_round(0.025)], [0.05, 0.025, 0.02]);
     }
 
     #[test]

@@ -204,7 +204,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     let vel_region = Rect::new(right_x0, TOP, inner.x1 - 4.0, vel_bottom);
     let vplans: Vec<_> = k.positions.iter().map(|p| velocity_plan(m, &p.state)).collect();
     let mut vel = Group::new("velocity-plans", vel_region);
-    let vdrawn = plans_region(
+    let (vdrawn, mu_v) = plans_region(
         &mut vel,
         vel_region,
         &vplans,
@@ -221,7 +221,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     };
     let aplans: Vec<_> = k.acceleration.iter().map(|&i| acceleration_plan(m, &k.positions[i].state)).collect();
     let mut acc = Group::new("acceleration-plans", acc_region);
-    let adrawn = plans_region(
+    let (adrawn, mu_a) = plans_region(
         &mut acc,
         acc_region,
         &aplans,
@@ -292,13 +292,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         Composed {
             scene,
             layout,
-            scales: Scales {
-                mu_l,
-                mu_v: common_mu(&vdrawn),
-                mu_a: common_mu(&adrawn),
-                velocity_plans: vdrawn,
-                acceleration_plans: adrawn,
-            },
+            scales: Scales { mu_l, mu_v, mu_a, velocity_plans: vdrawn, acceleration_plans: adrawn },
             force_scales,
             trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
         },
@@ -353,14 +347,8 @@ pub struct PlanDrawn {
     pub size_mm: [f64; 2],
 }
 
-/// The scale all plans share, if they do.
-fn common_mu(plans: &[PlanDrawn]) -> Option<f64> {
-    let first = plans.first()?.mu;
-    plans.iter().all(|p| p.mu == first).then_some(first)
-}
-
 /// Draws plans in cells filling `region` below its header (see [`size_plans`]); returns
-/// what each plan became.
+/// what each plan became and the scale they share, if one.
 #[allow(clippy::too_many_arguments)]
 fn plans_region(
     g: &mut Group,
@@ -370,7 +358,7 @@ fn plans_region(
     pole: &str,
     lang: Language,
     (title, sym, unit): (&str, &str, &str),
-) -> Vec<PlanDrawn> {
+) -> (Vec<PlanDrawn>, Option<f64>) {
     let body = Rect::new(region.x0, region.y0 + HEADER, region.x1, region.y1);
     let scale_line = |mu: f64| {
         LabelText::new("μ", sym).with_tail(format!(" = {} {}", fmt::localise(&scale::format(mu), lang), unit))
@@ -386,7 +374,7 @@ fn plans_region(
     let header = if sizing.common {
         scale_line(sizing.mu[0])
     } else {
-        LabelText::new("μ", sym).with_tail(format!(": {}", LeverLabels::get(lang).own_scales()))
+        LabelText::new("μ", sym).with_tail(format!(": {}", l.own_scales()))
     };
     region_header(g, region, title, &[header]);
     for ((plan, &cell), (pos, &mu)) in plans.iter().zip(&sizing.cells).zip(positions.iter().zip(&sizing.mu)) {
@@ -396,12 +384,13 @@ fn plans_region(
         draw_plan(g, &c, &mut labels);
         labels.place(g, label_bounds(cell));
     }
-    positions
+    let drawn = positions
         .iter()
         .zip(sizing.drawn(plans))
         .zip(&sizing.mu)
         .map(|((p, size_mm), &mu)| PlanDrawn { position: p.label.clone(), mu, size_mm })
-        .collect()
+        .collect();
+    (drawn, sizing.common.then(|| sizing.mu[0]))
 }
 
 fn sheet_table(t: &NumTable, title: &str, lang: Language) -> Table {

@@ -10,7 +10,7 @@ use crate::drawing::fmt;
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
-use crate::drawing::plot::{Axis, Plot};
+use crate::drawing::plot::{Axis, Plot, round_ticks};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text, VECTOR};
 use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, slider, vector};
@@ -763,7 +763,7 @@ fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, i: 
         name: "S/H".into(),
         ticks: [0.0, 0.5, 1.0].map(|v| (v, fmt::localise(&format!("{v}"), lang))).to_vec(),
     };
-    let y = Axis { lo, hi, mu, name: format!("P, {}", inp.c.unit_n()), ticks: force_ticks(lo, hi, mu, lang) };
+    let y = Axis { lo, hi, mu, name: format!("P, {}", inp.c.unit_n()), ticks: round_ticks(lo, hi, mu, lang) };
     let plot = Plot::in_area(Rect::new(area.x0, area.y1 - (hi - lo) / mu, area.x1, area.y1), x, y);
     plot.draw_axes(g);
     let mut names = Vec::new();
@@ -803,22 +803,4 @@ fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, i: 
         vec![scale_item(inp, "P", mu, inp.c.unit_n_per_mm())],
     ];
     text_rows(g, r.x0 + 2.0, r.y1 - 2.0 - LINE, &lines);
-}
-
-/// Ticks of a force axis at a round step (four to eight of them over the range), zero
-/// unlabelled where the S/H axis crosses.
-fn force_ticks(lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, String)> {
-    let step = scale::round_up((hi - lo) / 6.0);
-    // Ticks closer than 4 mm would print their values on each other.
-    let step = if step / mu < 4.0 { scale::round_up(4.0 * mu) } else { step };
-    let first = (lo / step).ceil() as i64;
-    let last = (hi / step).floor() as i64;
-    (first..=last)
-        .filter(|&k| k != 0)
-        .map(|k| {
-            let v = k as f64 * step;
-            (v, fmt::localise(&scale::format(v.abs()), lang))
-        })
-        .map(|(v, s)| (v, if v < 0.0 { format!("−{s}") } else { s }))
-        .collect()
 }

@@ -43,7 +43,7 @@ impl LeverLabels {
     /// A force symbol's subscript in the sheet's language: "i2" → "и2", "m" → "ур", "c5" →
     /// "пс5" on a Russian sheet; other symbols' subscripts as they are.
     pub fn force_sub(&self, main: &str, sub: &str) -> String {
-        if !matches!(main, "P" | "M" | "P′" | "P″" | "Pᴹ") {
+        if !matches!(main, "P" | "M" | "P′" | "P″") {
             return sub.to_string();
         }
         let mut chars = sub.chars();

@@ -144,20 +144,6 @@ fn pack(sizes: &[(f64, f64)], body: Rect) -> Option<Vec<Rect>> {
     Some(out)
 }
 
-/// The largest round value below `mu`.
-fn previous_round(mu: f64) -> f64 {
-    [0.5, 0.625, 0.8]
-        .iter()
-        .map(|f| scale::round_up(mu * f))
-        .filter(|&m| m < mu * (1.0 - 1e-9))
-        .fold(mu * 0.5, f64::max)
-}
-
-/// The next round value above `mu`.
-fn next_round(mu: f64) -> f64 {
-    scale::round_up(mu * 1.001)
-}
-
 /// Chooses the plans' scales and cells in `body` (see the module's note on scales); a cell
 /// is at least `min_w` wide (its title and scale line).
 pub fn size_plans(body: Rect, plans: &[Plan], pole: &str, min_w: f64) -> Sizing {
@@ -174,7 +160,7 @@ pub fn size_plans(body: Rect, plans: &[Plan], pole: &str, min_w: f64) -> Sizing 
             common = Some(cells);
             break;
         }
-        mu = next_round(mu);
+        mu = scale::next_round(mu);
     }
     let smallest = boxes.iter().map(side).fold(f64::MAX, f64::min);
     if let Some(cells) = &common
@@ -204,7 +190,7 @@ pub fn size_plans(body: Rect, plans: &[Plan], pole: &str, min_w: f64) -> Sizing 
             .min_by(|&a, &b| (side(&boxes[a]) / mus[a]).total_cmp(&(side(&boxes[b]) / mus[b])))
         {
             let old = mus[i];
-            mus[i] = previous_round(old);
+            mus[i] = scale::previous_round(old);
             if pack(&sizes(&mus), body).is_none() {
                 mus[i] = old;
                 frozen[i] = true;
