@@ -580,3 +580,28 @@ fn plans_are_drawn_at_round_scales_recorded_with_their_sizes() {
         }
     }
 }
+
+/// Force symbols on a Russian sheet carry Russian subscripts (P_и, M_и, P_пс, P_г, P_ур), in
+/// the drawings and the tables: no subscript of the Latin letters i, m, c or g is left.
+#[test]
+fn force_subscripts_on_a_russian_sheet_are_russian() {
+    for name in fixture_names() {
+        let mut p = fixture(&name);
+        if p.lever.as_ref().unwrap().forces.is_none() {
+            continue;
+        }
+        p.info.language = Language::Ru;
+        let scene = pipeline::build(&p, &[]).unwrap().remove(0).output.scene;
+        let latin = |t: &str| {
+            let mut c = t.chars();
+            matches!(c.next(), Some('i' | 'm' | 'c' | 'g')) && c.all(|d| d.is_ascii_digit())
+        };
+        let texts: Vec<&str> = scene.texts().map(|t| t.text.as_str()).collect();
+        // Subscripts are set one size down, off the GOST series (m, kg are symbols and units).
+        let subscript = |h: f64| ![1.8, 2.5, 3.5, 5.0, 7.0, 10.0, 14.0].iter().any(|s| (h - s).abs() < 1e-9);
+        let found: Vec<&str> =
+            scene.texts().filter(|t| subscript(t.h) && latin(&t.text)).map(|t| t.text.as_str()).collect();
+        assert!(found.is_empty(), "{name}: Latin force subscripts on a Russian sheet: {found:?}");
+        assert!(texts.contains(&"ур") && texts.iter().any(|t| t.starts_with('и')), "{name}: no P_ур or P_и");
+    }
+}
