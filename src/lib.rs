@@ -27,6 +27,7 @@ pub mod backend;
 pub mod cli;
 pub mod drawing;
 pub mod font;
+pub mod gears;
 pub mod lever;
 pub mod num;
 pub mod pipeline;

@@ -11,14 +11,15 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 /// Module → the crate modules it may use (besides itself).
-const ALLOWED: [(&str, &[&str]); 11] = [
+const ALLOWED: [(&str, &[&str]); 12] = [
     ("num", &[]),
     ("font", &[]),
     ("lever", &["num"]),
+    ("gears", &["num"]),
     ("drawing", &["num", "font"]),
-    ("report", &["num", "lever"]),
-    ("project", &["num", "font", "lever", "drawing::labels::Language"]),
-    ("sheets", &["num", "font", "lever", "drawing", "report", "project"]),
+    ("report", &["num", "lever", "gears"]),
+    ("project", &["num", "font", "lever", "gears", "drawing::labels::Language"]),
+    ("sheets", &["num", "font", "lever", "gears", "drawing", "report", "project"]),
     ("backend", &["num", "font", "drawing::scene", "drawing::path"]),
     ("pipeline", &["num", "project", "sheets", "backend", "report"]),
     ("cli", &["pipeline", "project", "drawing::labels::Language"]),

@@ -29,6 +29,14 @@ pub fn atan2(y: f64, x: f64) -> f64 {
     libm::atan2(y, x)
 }
 
+pub fn tan(x: f64) -> f64 {
+    libm::tan(x)
+}
+
+pub fn atan(x: f64) -> f64 {
+    libm::atan(x)
+}
+
 pub fn log10(x: f64) -> f64 {
     libm::log10(x)
 }

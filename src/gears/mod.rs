@@ -1,0 +1,5 @@
+//! The gears of sheet 2, pure and in SI (metres, radians): the external involute pair
+//! ([`pair`]), its tooth outlines as the generating rack cuts them ([`tooth`]), and the
+//! planetary stage's synthesis with its conditions checked honestly ([`planetary`]).
+
+pub mod planetary;

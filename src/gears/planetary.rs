@@ -1,0 +1,1 @@
+//! Planetary stage (being written).
