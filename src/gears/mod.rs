@@ -2,4 +2,6 @@
 //! ([`pair`]), its tooth outlines as the generating rack cuts them ([`tooth`]), and the
 //! planetary stage's synthesis with its conditions checked honestly ([`planetary`]).
 
+pub mod pair;
 pub mod planetary;
+pub mod tooth;

@@ -37,6 +37,10 @@ pub fn atan(x: f64) -> f64 {
     libm::atan(x)
 }
 
+pub fn cbrt(x: f64) -> f64 {
+    libm::cbrt(x)
+}
+
 pub fn log10(x: f64) -> f64 {
     libm::log10(x)
 }

@@ -2,6 +2,7 @@
 //! tolerances with their units, the one root finder, and the mathematical functions whose
 //! results reach an output (platform-independent).
 
+pub mod bezier;
 pub mod digits;
 pub mod limits;
 pub mod math;
