@@ -36,7 +36,7 @@ fn default_build_writes_every_output_and_says_so_on_stdout() {
     let o = run(&["--png-dpi", "20"], &out);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     let stdout = String::from_utf8_lossy(&o.stdout);
-    assert!(stdout.contains("sheet 1 written to") && stdout.contains("(10 files)"), "{stdout}");
+    assert!(stdout.contains("sheet 1, 2 written to") && stdout.contains("(18 files)"), "{stdout}");
     let expected = [
         ".tmm-outputs",
         "results.json",
@@ -49,6 +49,14 @@ fn default_build_writes_every_output_and_says_so_on_stdout() {
         "sheet1.pdf",
         "sheet1.png",
         "sheet1.svg",
+        "sheet2-conditions.csv",
+        "sheet2-pair.csv",
+        "sheet2-planetary.csv",
+        "sheet2-tables.md",
+        "sheet2-wheels.csv",
+        "sheet2.pdf",
+        "sheet2.png",
+        "sheet2.svg",
     ];
     assert_eq!(listing(&out), expected);
     for f in &expected[1..] {
@@ -108,9 +116,9 @@ fn errors_name_the_cause_with_documented_exit_codes() {
     let o = tmm().args(["build", "no-such-file.yaml"]).output().unwrap();
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stderr).contains("cannot read no-such-file.yaml"));
-    let o = run(&["--sheet", "2"], &out);
+    let o = run(&["--sheet", "3"], &out);
     assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("sheet 2 (the gears) is not available in this version"));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("sheet 3 (the cam) is not available in this version"));
     let o = run(&["--sheet", "4"], &out);
     assert!(String::from_utf8_lossy(&o.stderr).contains("there is no sheet 4: the course project has sheets 1 to 3"));
     let bad = temp_dir("bad").with_extension("yaml");

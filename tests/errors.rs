@@ -336,8 +336,10 @@ fn numbers_too_large_to_compute_with_are_refused_where_written() {
 /// Valid but almost surely wrong input builds with a warning that names the field and line.
 #[test]
 fn implausible_input_is_warned_about() {
+    // Without the gears: their stage's ratio follows from the crank's speed, which this makes absurd.
+    let lever_only = example().split("\ngears:").next().unwrap().to_string();
     let p =
-        pipeline::load(&example().replacen("length: 0.12,", "length: 120,", 1).replacen("rpm: 70,", "rpm: 2.0e5,", 1));
+        pipeline::load(&lever_only.replacen("length: 0.12,", "length: 120,", 1).replacen("rpm: 70,", "rpm: 2.0e5,", 1));
     let w: Vec<String> = p.unwrap().warnings.iter().map(|w| w.to_string()).collect();
     assert!(
         w.iter().any(|w| w.contains("mechanism.crank.length")

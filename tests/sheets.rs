@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{fixture, fixture_names, root};
+use common::{english_on_russian, fixture, fixture_names, root};
 use kurbo::Rect;
 use std::path::Path;
 use tmm_sheets::backend::raster;
@@ -321,32 +321,6 @@ fn worked_example_matches_the_reference_sheets() {
         let note = write_failure_images("sheet1.png", &expected, &png);
         panic!("sheet1.png differs from the reference in {count} pixels; {note}");
     }
-}
-
-/// Latin words a Russian sheet must not show: a run of two or more Latin letters with a
-/// lowercase one ("mm", "working"), or a unit "N"/"m"/"s"/"kg" after a number or a comma
-/// ("0,5 N", "P, N"). Symbols and plan letters ("m", "p=b=s3") are not words.
-fn english_on_russian(text: &str) -> Option<String> {
-    let chars: Vec<char> = text.chars().collect();
-    let mut i = 0;
-    while i < chars.len() {
-        if !chars[i].is_ascii_alphabetic() {
-            i += 1;
-            continue;
-        }
-        let start = i;
-        while i < chars.len() && chars[i].is_ascii_alphabetic() {
-            i += 1;
-        }
-        let token: String = chars[start..i].iter().collect();
-        let before = chars[..start].iter().rev().find(|c| !c.is_whitespace());
-        let after_number = before.is_some_and(|c| c.is_ascii_digit() || *c == ',');
-        let word = token.len() >= 2 && token.chars().any(|c| c.is_ascii_lowercase());
-        if word || (["N", "m", "s", "kg"].contains(&token.as_str()) && after_number) {
-            return Some(token);
-        }
-    }
-    None
 }
 
 /// Every word and unit on a Russian sheet is Russian (user text aside, set here in Cyrillic).

@@ -56,6 +56,15 @@ pub fn length_scale(x: f64) -> f64 {
     enlarge.chain(reduce).find(|&mu| mu >= x * EXACT).unwrap_or_else(|| round_up(x))
 }
 
+/// The largest μ_l (m/mm) of a GOST 2.302 scale strictly below `x`: the coarsest scale that
+/// makes a length of x·1 mm on paper longer than 1 mm (a tooth height over 50 mm: `x` = h/50).
+pub fn length_scale_below(x: f64) -> f64 {
+    let enlarge = ENLARGEMENTS.iter().rev().map(|k| 0.001 / k);
+    let reduce = REDUCTIONS.iter().map(|k| 0.001 * k);
+    let all: Vec<f64> = enlarge.chain(reduce).collect();
+    all.iter().rev().copied().find(|&mu| mu < x).unwrap_or(all[0])
+}
+
 /// Formats a scale factor with as many significant digits as it has.
 pub fn format(mu: f64) -> String {
     let s = format!("{mu:.10}");

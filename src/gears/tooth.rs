@@ -86,7 +86,7 @@ impl Rack {
     }
 
     /// A rack point and its φ-derivative taken into the wheel's frame (gap on +y).
-    fn to_wheel(&self, phi: f64, (f, df): PointTangent) -> PointTangent {
+    fn in_wheel_frame(&self, phi: f64, (f, df): PointTangent) -> PointTangent {
         let w = Vec2::new(f.x - self.r * phi, f.y + self.r);
         let dw = df - Vec2::new(self.r, 0.0);
         (rot(w, -phi), rot(dw - perp(w), -phi))
@@ -135,7 +135,7 @@ impl Outline {
 
     /// The upper flank's fillet at rack parameter φ, and d/dφ.
     pub fn fillet(&self, phi: f64) -> PointTangent {
-        let (p, d) = self.rack.to_wheel(phi, self.rack.fillet_rack(phi));
+        let (p, d) = self.rack.in_wheel_frame(phi, self.rack.fillet_rack(phi));
         (rot(p, self.turn), rot(d, self.turn))
     }
 

@@ -1,11 +1,12 @@
 //! The project file (YAML) and its resolution into the domains' inputs.
 //!
-//! One file per section of the file format (`info`, `mechanism`, `forces`); `lever` and
-//! `lever_forces` resolve the lever sections into [`crate::lever`] types, checking every
+//! One file per section of the file format (`info`, `mechanism`, `forces`, `gears`); `lever`
+//! and `lever_forces` resolve the lever sections, `gears` sheet 2's section, into [`crate::lever`] types, checking every
 //! cross-reference with its line and column. Text that reaches a sheet is checked in
 //! [`text`]; input that is valid but almost surely a mistake gives a [`Warning`].
 
 pub mod forces;
+pub mod gears;
 pub mod info;
 mod lever;
 mod lever_forces;
@@ -13,6 +14,7 @@ pub mod mechanism;
 pub mod text;
 pub mod values;
 
+pub use gears::GearsProject;
 pub use info::ProjectInfo;
 pub use lever::LeverProject;
 
@@ -35,6 +37,9 @@ pub struct ProjectFile {
     /// The force analysis at φ1 (`analysis.assigned_deg`); absent: sheet 1 has kinematics only.
     #[serde(default)]
     pub forces: Option<Spanned<ForcesSpec>>,
+    /// The external pair and the planetary stage of sheet 2.
+    #[serde(default)]
+    pub gears: Option<Spanned<gears::GearsSpec>>,
 }
 
 /// A resolved project: what each sheet needs, and the warnings about its input.
@@ -43,6 +48,8 @@ pub struct Project {
     pub info: ProjectInfo,
     /// Sheet 1's mechanism, when the file has a `mechanism` section.
     pub lever: Option<LeverProject>,
+    /// Sheet 2's gears, when the file has a `gears` section.
+    pub gears: Option<GearsProject>,
     pub warnings: Vec<Warning>,
 }
 
@@ -115,10 +122,15 @@ pub fn resolve(file: &ProjectFile) -> Result<Project, ModelError> {
             None
         }
     };
-    if lever.is_none() {
+    let crank_rpm = lever.as_ref().map(|l| l.mechanism.omega1.abs() * 30.0 / std::f64::consts::PI);
+    let gears = match &file.gears {
+        Some(g) => Some(gears::resolve(g, crank_rpm, &mut warnings)?),
+        None => None,
+    };
+    if lever.is_none() && gears.is_none() {
         return Err(ModelError::Yaml(
-            "the project has nothing to draw: add a `mechanism` section (sheet 1; `tmm example` prints one)".into(),
+            "the project has nothing to draw: add a `mechanism` section (sheet 1) or a `gears` section (sheet 2); `tmm example` prints one".into(),
         ));
     }
-    Ok(Project { info: file.project.resolve(), lever, warnings })
+    Ok(Project { info: file.project.resolve(), lever, gears, warnings })
 }

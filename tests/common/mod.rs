@@ -55,3 +55,31 @@ pub fn build_lever(p: &Project) -> LeverBuild {
 pub fn close(a: f64, b: f64, rel: f64, floor: f64) -> bool {
     (a - b).abs() <= rel * a.abs().max(b.abs()) + floor
 }
+
+/// Latin words a Russian sheet must not show: a run of two or more Latin letters with a
+/// lowercase one ("mm", "working"), or a unit "N"/"m"/"s"/"kg" after a number or a comma
+/// ("0,5 N", "P, N"). Symbols and plan letters ("m", "p=b=s3") and min/max are not words.
+pub fn english_on_russian(text: &str) -> Option<String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut i = 0;
+    while i < chars.len() {
+        if !chars[i].is_ascii_alphabetic() {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < chars.len() && chars[i].is_ascii_alphabetic() {
+            i += 1;
+        }
+        let token: String = chars[start..i].iter().collect();
+        let before = chars[..start].iter().rev().find(|c| !c.is_whitespace());
+        let after_number = before.is_some_and(|c| c.is_ascii_digit() || *c == ',');
+        // "min" and "max" are mathematical notation in Russian too (x_min, z_min).
+        let math = ["min", "max"].contains(&token.as_str());
+        let word = token.len() >= 2 && token.chars().any(|c| c.is_ascii_lowercase()) && !math;
+        if word || (["N", "m", "s", "kg"].contains(&token.as_str()) && after_number) {
+            return Some(token);
+        }
+    }
+    None
+}

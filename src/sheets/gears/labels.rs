@@ -1,0 +1,85 @@
+//! Sheet 2's texts (`templates/labels/gears.yaml`).
+
+crate::label_set! {
+    /// Every word of sheet 2 that is not shared with the other sheets.
+    pub struct GearLabels = "gears.yaml" {
+        sheet_name,
+        mesh_title(m, z1, z2),
+        scale(s),
+        contact_ratio_exact(e),
+        contact_ratio_drawn(e, d),
+        involute_note(dev),
+        active_note,
+        arc_of_action,
+        undercut_note(w, x, xmin),
+        auto_shift_note(w, x),
+        thin_tip_note(w, sa),
+        low_ratio_note(e),
+        interference_note(w),
+        planetary_title(u, req, k),
+        front_view,
+        side_view,
+        scheme_sun_planet_ring,
+        scheme_double_planet,
+        pair_table,
+        planetary_table,
+        conditions_table,
+        wheel(w),
+        pair_col,
+        condition_col,
+        value_col,
+        limit_col,
+        ok_col,
+        yes,
+        no,
+        cond_ratio,
+        cond_coaxiality,
+        cond_neighbours,
+        cond_assembly,
+        cond_no_undercut,
+        cond_ring_teeth,
+        cond_ring_planet_difference,
+        driver,
+        sub_drawn,
+        sub_required,
+    }
+}
+
+impl GearLabels {
+    /// A table subscript in the sheet's language ("drawn" → "черт").
+    pub fn sub<'a>(&'a self, sub: &'a str) -> &'a str {
+        match sub {
+            "drawn" => self.sub_drawn(),
+            "required" => self.sub_required(),
+            other => other,
+        }
+    }
+
+    /// A planetary condition's name by its key (the key itself if unknown).
+    pub fn condition<'a>(&'a self, key: &'a str) -> &'a str {
+        match key {
+            "ratio" => self.cond_ratio(),
+            "coaxiality" => self.cond_coaxiality(),
+            "neighbours" => self.cond_neighbours(),
+            "assembly" => self.cond_assembly(),
+            "no_undercut" => self.cond_no_undercut(),
+            "ring_teeth" => self.cond_ring_teeth(),
+            "ring_planet_difference" => self.cond_ring_planet_difference(),
+            other => other,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::drawing::labels::Language;
+
+    #[test]
+    fn the_gear_set_loads_in_every_language() {
+        for lang in Language::ALL {
+            GearLabels::load(lang).unwrap();
+        }
+        assert_eq!(GearLabels::get(Language::Ru).wheel("1"), "Колесо 1");
+    }
+}

@@ -1,0 +1,134 @@
+//! The planetary stage in two views at one GOST scale: the front view (pitch circles of the
+//! sun, the planets and the ring, the carrier's arms) and the side view as a kinematic
+//! scheme (shafts, the carrier, the gear rims, the fixed ring and the bearings).
+
+use crate::drawing::place::Labels;
+use crate::drawing::scene::{AXIS, Group, MAIN, THIN};
+use crate::drawing::symbols;
+use crate::drawing::text::LabelText;
+use crate::gears::planetary::Stage;
+use crate::num::math::from_angle;
+use kurbo::{Point, Rect, Vec2};
+use std::f64::consts::{FRAC_PI_2, TAU};
+
+/// The stage's pitch radii (m): sun, planet meshing the sun, planet meshing the ring (the
+/// same for a single row), ring; and the carrier's radius.
+struct Radii {
+    sun: f64,
+    planet: f64,
+    planet2: f64,
+    ring: f64,
+    carrier: f64,
+}
+
+fn radii(s: &Stage, m: f64) -> Radii {
+    let r = |z: u32| m * f64::from(z) / 2.0;
+    let (sun, planet) = (r(s.z[0]), r(s.z[1]));
+    let (planet2, ring) = if s.z.len() == 4 { (r(s.z[2]), r(s.z[3])) } else { (planet, r(s.z[2])) };
+    Radii { sun, planet, planet2, ring, carrier: sun + planet }
+}
+
+/// The radius the front view reaches (m): the ring's rim, or a double planet's larger gear.
+pub fn extent(s: &Stage, m: f64) -> f64 {
+    let r = radii(s, m);
+    (r.ring + 1.25 * m).max(r.carrier + r.planet.max(r.planet2) + m)
+}
+
+/// The scale (μ_l, m/mm) at which the front view fits `size` mm across.
+pub fn scale_for(s: &Stage, m: f64, size: f64) -> f64 {
+    crate::drawing::scale::length_scale(2.0 * extent(s, m) / size)
+}
+
+/// Draws the front view centred in `front` and the kinematic scheme in `side`, at μ_l `mu`.
+pub fn draw(g: &mut Group, front: Rect, side: Rect, s: &Stage, m: f64, mu: f64, labels: &mut Labels) {
+    let r = radii(s, m);
+    let k = 1.0 / mu;
+    let double = s.z.len() == 4;
+    // Front view.
+    let o = front.center();
+    let ext = k * extent(s, m) + 4.0;
+    g.line(o - Vec2::new(ext, 0.0), o + Vec2::new(ext, 0.0), AXIS);
+    g.line(o - Vec2::new(0.0, ext), o + Vec2::new(0.0, ext), AXIS);
+    g.circle(o, k * r.sun, MAIN);
+    g.circle(o, k * r.ring, MAIN);
+    g.circle(o, k * (r.ring + 1.25 * m) + 2.0, THIN);
+    g.circle(o, k * r.carrier, AXIS);
+    for i in 0..s.planets {
+        // Planets from the top, counter-clockwise on paper.
+        let a = -FRAC_PI_2 - TAU * f64::from(i) / f64::from(s.planets);
+        let c = o + from_angle(a) * (k * r.carrier);
+        g.circle(c, k * r.planet, MAIN);
+        if double {
+            g.circle(c, k * r.planet2, THIN);
+        }
+        g.line(o, c, MAIN);
+        g.circle(c, 1.2, THIN);
+    }
+    g.circle(o, 1.5, MAIN);
+    let top = o - Vec2::new(0.0, k * r.carrier);
+    labels.add_text_ranked(o + Vec2::new(k * r.sun * 0.7, -k * r.sun * 0.7), Vec2::new(1.0, -1.0), "1", 3.5, 0);
+    labels.add_text_ranked(top + Vec2::new(k * r.planet * 0.7, -k * r.planet * 0.7), Vec2::new(1.0, -1.0), "2", 3.5, 0);
+    if double {
+        labels.add_text_ranked(
+            top + Vec2::new(-k * r.planet2 * 0.7, -k * r.planet2 * 0.7),
+            Vec2::new(-1.0, -1.0),
+            "2′",
+            3.5,
+            0,
+        );
+    }
+    labels.add_text_ranked(o + Vec2::new(k * r.ring * 0.71, k * r.ring * 0.71), Vec2::new(1.0, 1.0), "3", 3.5, 0);
+    labels.add_text_ranked(o + Vec2::new(0.0, -k * r.carrier * 0.5), Vec2::new(1.0, 0.0), "H", 3.5, 0);
+
+    // Side view: the axis across, the scheme symmetric about it.
+    let c = Point::new(side.x0 + 0.15 * side.width(), side.center().y);
+    let x_sun = c.x + 0.25 * side.width();
+    let x_ring = if double { x_sun + 16.0 } else { x_sun };
+    let x_h = x_ring + 0.25 * side.width();
+    let x_out = side.x1 - 6.0;
+    let x_in = side.x0 + 4.0;
+    g.line(Point::new(x_in - 2.0, c.y), Point::new(x_out + 2.0, c.y), AXIS);
+    // Input shaft and the sun.
+    g.line(Point::new(x_in, c.y), Point::new(x_sun, c.y), MAIN);
+    let ys = k * r.sun;
+    g.line(Point::new(x_sun, c.y - ys), Point::new(x_sun, c.y + ys), MAIN);
+    for side_sign in [-1.0, 1.0] {
+        let ya = c.y + side_sign * k * r.carrier;
+        // The planet's rims and its axle on the carrier.
+        g.line(Point::new(x_sun, ya - k * r.planet), Point::new(x_sun, ya + k * r.planet), MAIN);
+        if double {
+            g.line(Point::new(x_ring, ya - k * r.planet2), Point::new(x_ring, ya + k * r.planet2), MAIN);
+        }
+        g.line(Point::new(x_sun - 6.0, ya), Point::new(x_h, ya), MAIN);
+        // The fixed ring: its rim, turned back toward the planet, held by the frame.
+        let yr = c.y + side_sign * k * r.ring;
+        g.path(
+            vec![Point::new(x_ring - 5.0, yr), Point::new(x_ring, yr), Point::new(x_ring, yr + side_sign * 8.0)],
+            false,
+            MAIN,
+        );
+        let yf = yr + side_sign * 8.0;
+        g.line(Point::new(x_ring - 6.0, yf), Point::new(x_ring + 6.0, yf), MAIN);
+        symbols::hatch(g, Point::new(x_ring - 6.0, yf), Point::new(x_ring + 6.0, yf), Vec2::new(0.0, side_sign), 2.0);
+    }
+    // The carrier H and the output shaft.
+    g.line(Point::new(x_h, c.y - k * r.carrier), Point::new(x_h, c.y + k * r.carrier), MAIN);
+    g.line(Point::new(x_h, c.y), Point::new(x_out, c.y), MAIN);
+    // Bearings on the input and output shafts.
+    for x in [x_in + 0.35 * (x_sun - x_in), x_h + 0.5 * (x_out - x_h)] {
+        for sgn in [-1.0, 1.0] {
+            let b = Point::new(x, c.y + sgn * 1.6);
+            g.path(vec![b, b + Vec2::new(-2.0, sgn * 3.5), b + Vec2::new(2.0, sgn * 3.5)], true, THIN);
+        }
+    }
+    let lab = |labels: &mut Labels, at: Point, t: &str, pref: Vec2| {
+        labels.add_ranked(at, pref, LabelText::new(t, ""), 3.5, 0);
+    };
+    lab(labels, Point::new(x_sun, c.y - ys * 0.6), "1", Vec2::new(-1.0, 0.0));
+    lab(labels, Point::new(x_sun, c.y - k * r.carrier - k * r.planet * 0.6), "2", Vec2::new(-1.0, 0.0));
+    if double {
+        lab(labels, Point::new(x_ring, c.y - k * r.carrier + k * r.planet2 * 0.6), "2′", Vec2::new(1.0, 0.0));
+    }
+    lab(labels, Point::new(x_ring, c.y - k * r.ring - 4.0), "3", Vec2::new(1.0, 0.0));
+    lab(labels, Point::new(x_h, c.y - k * r.carrier * 0.5), "H", Vec2::new(1.0, 0.0));
+}

@@ -1,0 +1,188 @@
+//! Sheet 2 as a user builds it: the worked example's pair and stage against numbers computed
+//! here, a gears-only project, `--sheet 2` without the linkage, the sheet's own layout in
+//! every language, and every kind of bad gear input refused at its line.
+// Tests compute their references with the platform's math; only src/ must not (clippy.toml).
+#![allow(clippy::disallowed_methods)]
+
+mod common;
+
+use common::{english_on_russian, fixture_text, root};
+use tmm_sheets::drawing::labels::Language;
+use tmm_sheets::pipeline;
+use tmm_sheets::project::Project;
+
+/// The gears-only fixtures, `fixtures/gears/*.yaml`.
+fn gear_fixtures() -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = std::fs::read_dir(root().join("fixtures/gears"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "yaml"))
+        .map(|p| (p.file_stem().unwrap().to_string_lossy().into_owned(), std::fs::read_to_string(&p).unwrap()))
+        .collect();
+    out.sort();
+    out
+}
+
+fn sheet2(p: &Project) -> pipeline::Built {
+    pipeline::build(p, &[2]).unwrap_or_else(|e| panic!("{e:#}")).remove(0)
+}
+
+#[test]
+fn the_worked_example_pair_and_stage_are_exact_and_valid() {
+    let p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+    let b = sheet2(&p);
+    let r = &b.output.results;
+    // The guide's pair by hand: m = 5 mm, z = 17/19, α = 20°, no shift.
+    let (m, a) = (0.005f64, 20f64.to_radians());
+    let (r1, r2) = (m * 17.0 / 2.0, m * 19.0 / 2.0);
+    let (rb1, rb2) = (r1 * a.cos(), r2 * a.cos());
+    let (ra1, ra2) = (r1 + m, r2 + m);
+    let aw = r1 + r2;
+    let eps = ((ra1 * ra1 - rb1 * rb1).sqrt() + (ra2 * ra2 - rb2 * rb2).sqrt() - aw * a.sin())
+        / (std::f64::consts::PI * m * a.cos());
+    let got = r["pair"]["contact_ratio"].as_f64().unwrap();
+    assert!((got - eps).abs() < 1e-12, "{got} vs {eps}");
+    assert_eq!(format!("{eps:.3}"), "1.529", "the guide's 1.53 is this rounded");
+    let drawn = r["pair"]["contact_ratio_drawing"].as_f64().unwrap();
+    assert!((drawn - eps).abs() / eps < 1e-5, "measured on the drawing: {drawn}");
+    assert!((r["pair"]["centre_distance"].as_f64().unwrap() - 0.09).abs() < 1e-15);
+    assert!(r["drawing"]["tooth_height_mm"].as_f64().unwrap() > 50.0);
+    assert!(r["drawing"]["involute_deviation"].as_f64().unwrap() < 1e-6);
+
+    // The stage: u_pl = (750/70)/(19/17); every condition re-verified here.
+    let pl = &r["planetary"];
+    let z: Vec<u64> = pl["z"].as_array().unwrap().iter().map(|v| v.as_u64().unwrap()).collect();
+    let k = pl["planets"].as_u64().unwrap();
+    let required = 750.0 / 70.0 / (19.0 / 17.0);
+    assert!((pl["ratio_required"].as_f64().unwrap() - required).abs() < 1e-12);
+    let (z1, z2, z3) = (z[0], z[1], z[2]);
+    let u = 1.0 + z3 as f64 / z1 as f64;
+    assert!((u - required).abs() / required <= 0.03, "u = {u}");
+    assert_eq!(z1 + 2 * z2, z3, "coaxial");
+    assert!((std::f64::consts::PI / k as f64).sin() > (z2 as f64 + 2.0) / (z1 + z2) as f64, "neighbours");
+    assert_eq!((z1 + z3) % k, 0, "assembly");
+    assert!(z1 >= 17 && z2 >= 17 && z3 >= 85 && z3 - z2 > 8);
+    assert_ne!((z1, z2, z3, k), (17, 68, 153, 5), "the guide's set fails the neighbour condition");
+    assert!(pl["conditions"].as_array().unwrap().iter().all(|c| c["ok"] == true));
+}
+
+#[test]
+fn a_project_with_only_gears_builds_sheet_2_alone() {
+    for (name, text) in gear_fixtures() {
+        let p = pipeline::load(&text).unwrap_or_else(|e| panic!("{name}: {e:#}"));
+        assert!(p.lever.is_none());
+        let built = pipeline::build(&p, &[]).unwrap();
+        assert_eq!(built.len(), 1, "{name}");
+        assert_eq!(built[0].output.number, 2);
+        let e = pipeline::build(&p, &[1]).unwrap_err().to_string();
+        assert!(e.contains("needs a `mechanism` section"), "{name}: {e}");
+    }
+}
+
+/// A mechanism that cannot turn fails sheet 1, and `--sheet 2` still builds: sheet 2 does not
+/// analyse the linkage.
+#[test]
+fn sheet_2_computes_nothing_of_the_linkage() {
+    let text = fixture_text("worked-example").replacen("lengths: [0.46, 0.39]", "lengths: [0.1, 0.39]", 1);
+    let p = pipeline::load(&text).unwrap();
+    let e = format!("{:#}", pipeline::build(&p, &[1]).unwrap_err());
+    assert!(e.contains("sheet 1"), "{e}");
+    let b = sheet2(&p);
+    assert_eq!(b.output.number, 2);
+    // n1 still comes from the crank's rpm, a number in the file, not from an analysis.
+    assert!(b.output.results["planetary"]["ratio_required"].as_f64().unwrap() > 9.0);
+}
+
+#[test]
+fn the_layout_of_sheet_2_is_clean_in_every_language() {
+    let mut projects = vec![("worked-example".to_string(), pipeline::DEFAULT_PROJECT.to_string())];
+    projects.extend(gear_fixtures());
+    for (name, text) in projects {
+        for lang in Language::ALL {
+            let mut p = pipeline::load(&text).unwrap();
+            p.info.language = lang;
+            if lang == Language::Ru {
+                p.info.title = "Редуктор".into();
+                p.info.institution = "ТГТУ".into();
+                p.info.designation = "ТММ 02.00.00".into();
+                p.gears.as_mut().unwrap().assumptions.clear();
+            }
+            let b = sheet2(&p);
+            let l = &b.output.results["layout"];
+            for key in ["texts_crossed", "text_overlaps", "outside_region"] {
+                assert_eq!(l[key], 0, "{name} {lang:?}: {key}: {}", l["problems"]);
+            }
+            if lang == Language::Ru {
+                for t in b.output.scene.texts() {
+                    assert_eq!(english_on_russian(&t.text), None, "{name}: English on the Russian sheet: {:?}", t.text);
+                }
+            }
+        }
+    }
+}
+
+fn refusal(text: &str) -> String {
+    match pipeline::load(text) {
+        Ok(_) => panic!("accepted:\n{text}"),
+        Err(e) => format!("{:#}", anyhow::Error::from(e)),
+    }
+}
+
+/// Bad gear input is refused with the field, the line and the reason, never a panic.
+#[test]
+fn bad_gear_input_is_refused_at_its_line() {
+    let base = |gears: &str| format!("project: {{title: t}}\ngears:\n{gears}\n");
+    let cases = [
+        ("  pair: {module: 5, z: [4, 19]}", "gears.pair.z[0]", "at least 5"),
+        ("  pair: {module: 0, z: [17, 19]}", "line 3", "positive"),
+        ("  pair: {module: 5, z: [17, 19], shift: [1.9, 0]}", "gears.pair.shift", "pointed"),
+        ("  pair: {module: 5, z: [12, 12], shift: [-1.4, -1.4]}", "gears.pair.shift", "α_w"),
+        ("  pair: {module: 5, z: [17, 19], shift: fast}", "gears.pair.shift", "auto"),
+        (
+            "  pair: {module: 5, z: [17, 19]}\n  planetary: {scheme: wolfrom, module: 5, ratio: 9}",
+            "unknown scheme 'wolfrom'",
+            "sun-planet-ring",
+        ),
+        (
+            "  pair: {module: 5, z: [17, 19]}\n  planetary: {scheme: sun-planet-ring, module: 5}",
+            "gears.motor_rpm",
+            "ratio",
+        ),
+        (
+            "  pair: {module: 5, z: [17, 19]}\n  motor_rpm: 1000\n  planetary: {scheme: sun-planet-ring, module: 5}",
+            "gears.output_rpm",
+            "n1",
+        ),
+        (
+            "  pair: {module: 5, z: [17, 19]}\n  planetary: {scheme: sun-planet-ring, module: 5, ratio: 2.0}",
+            "gears.planetary",
+            "reaches only",
+        ),
+        (
+            "  pair: {module: 5, z: [17, 19]}\n  planetary: {scheme: sun-planet-ring, module: 5, ratio: 9, planets: 1}",
+            "planets",
+            "1",
+        ),
+        ("  pair: {module: 5, z: [17, 19], teeth: 3}", "unknown field", "teeth"),
+        ("  pair: {module: .nan, z: [17, 19]}", "line 3", "positive number, got NaN"),
+    ];
+    for (gears, field, reason) in cases {
+        let e = refusal(&base(gears));
+        assert!(e.contains(field) && e.contains(reason), "{gears}\n→ {e}");
+        assert!(e.contains("line"), "{gears}\n→ {e}");
+    }
+}
+
+#[test]
+fn an_undercut_pinion_builds_with_a_warning_and_a_note_on_the_sheet() {
+    let (_, text) = gear_fixtures().into_iter().find(|(n, _)| n == "undercut").unwrap();
+    let p = pipeline::load(&text).unwrap();
+    assert!(
+        p.warnings.iter().any(|w| w.field == "gears.pair.shift" && w.message.contains("undercut")),
+        "{:?}",
+        p.warnings
+    );
+    let b = sheet2(&p);
+    assert_eq!(b.output.results["pair"]["undercut"][0], true);
+    assert!(b.output.scene.texts().any(|t| t.text.contains("x_min")), "the sheet says so");
+}
