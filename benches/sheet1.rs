@@ -41,13 +41,13 @@ fn kinetostatics_at_phi1(bencher: divan::Bencher) {
 #[divan::bench]
 fn sheet1_to_svg(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap();
-    bencher.bench_local(|| divan::black_box(pipeline::build(&p, &[]).unwrap()[0].svg.len()));
+    bencher.bench_local(|| divan::black_box(pipeline::build(&p, &[1]).unwrap()[0].svg.len()));
 }
 
 #[divan::bench(sample_count = 10)]
 fn svg_to_pdf(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap();
-    let b = pipeline::build(&p, &[]).unwrap().remove(0);
+    let b = pipeline::build(&p, &[1]).unwrap().remove(0);
     bencher.bench_local(|| {
         divan::black_box(pipeline::render(&b, Formats { pdf: true, png_dpi: None }).unwrap().pdf.map(|x| x.len()))
     });
@@ -56,7 +56,7 @@ fn svg_to_pdf(bencher: divan::Bencher) {
 #[divan::bench(sample_count = 5)]
 fn svg_to_png_100dpi(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap();
-    let b = pipeline::build(&p, &[]).unwrap().remove(0);
+    let b = pipeline::build(&p, &[1]).unwrap().remove(0);
     bencher.bench_local(|| {
         divan::black_box(
             pipeline::render(&b, Formats { pdf: false, png_dpi: Some(100.0) }).unwrap().png.map(|x| x.len()),

@@ -292,35 +292,41 @@ fn compare_json_or_update(file: &str, actual: &str) {
 #[test]
 fn worked_example_matches_the_reference_sheets() {
     let p = fixture("worked-example");
-    let r = build(&p);
-    compare_or_update("sheet1.svg", &r.svg);
-    let stems: Vec<&str> = r.output.tables.iter().map(|t| t.stem).collect();
+    let built = pipeline::build(&p, &[]).unwrap();
+    let numbers: Vec<u32> = built.iter().map(|b| b.output.number).collect();
+    assert_eq!(numbers, [1, 2], "the worked example has sheets 1 and 2");
+    let stems: Vec<&str> = built[0].output.tables.iter().map(|t| t.stem).collect();
     assert_eq!(
         stems,
         ["velocities", "accelerations", "inertia", "reactions", "balancing"],
         "the worked example has tables 1–5"
     );
-    for t in &r.output.tables {
-        compare_or_update(&format!("sheet1-{}.csv", t.stem), &report::csv(&t.table));
+    for r in &built {
+        let stem = format!("sheet{}", r.output.number);
+        compare_or_update(&format!("{stem}.svg"), &r.svg);
+        for t in &r.output.tables {
+            compare_or_update(&format!("{stem}-{}.csv", t.stem), &report::csv(&t.table));
+        }
+        let (pdf, png) = pdf_and_png(r, Some(60.0));
+        let png = png.unwrap();
+        let (pdf_name, png_name) = (format!("{stem}.pdf"), format!("{stem}.png"));
+        if std::env::var_os("UPDATE").is_some() {
+            std::fs::write(reference_dir().join(&pdf_name), pdf).unwrap();
+            std::fs::write(reference_dir().join(&png_name), &png).unwrap();
+        }
+        assert!(Path::new(&reference_dir().join(&pdf_name)).exists());
+        // The rendering, pixel by pixel: catches what the SVG text cannot (a font the renderer
+        // no longer finds, a changed rasteriser).
+        let expected = std::fs::read(reference_dir().join(&png_name)).unwrap();
+        let (count, _) = pixel_diff(&expected, &png).unwrap_or_else(|e| panic!("{png_name}: {e}"));
+        let pixels = 1987.0 * 1403.0;
+        if count as f64 > PIXEL_SHARE * pixels {
+            let note = write_failure_images(&png_name, &expected, &png);
+            panic!("{png_name} differs from the reference in {count} pixels; {note}");
+        }
     }
-    let json = pipeline::results_json(&p, std::slice::from_ref(&r));
+    let json = pipeline::results_json(&p, &built);
     compare_json_or_update("results.json", &json);
-    let (pdf, png) = pdf_and_png(&r, Some(60.0));
-    let png = png.unwrap();
-    if std::env::var_os("UPDATE").is_some() {
-        std::fs::write(reference_dir().join("sheet1.pdf"), pdf).unwrap();
-        std::fs::write(reference_dir().join("sheet1.png"), &png).unwrap();
-    }
-    assert!(Path::new(&reference_dir().join("sheet1.pdf")).exists());
-    // The rendering, pixel by pixel: catches what the SVG text cannot (a font the renderer
-    // no longer finds, a changed rasteriser).
-    let expected = std::fs::read(reference_dir().join("sheet1.png")).unwrap();
-    let (count, _) = pixel_diff(&expected, &png).unwrap_or_else(|e| panic!("sheet1.png: {e}"));
-    let pixels = 1987.0 * 1403.0;
-    if count as f64 > PIXEL_SHARE * pixels {
-        let note = write_failure_images("sheet1.png", &expected, &png);
-        panic!("sheet1.png differs from the reference in {count} pixels; {note}");
-    }
 }
 
 /// Every word and unit on a Russian sheet is Russian (user text aside, set here in Cyrillic).

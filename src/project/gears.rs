@@ -106,8 +106,12 @@ pub fn resolve(
     let pair = Pair::new(&pair_spec).map_err(|e| pair_error(&g.pair, e))?;
     let pair_warnings = pair.warnings();
     for w in &pair_warnings {
+        // The course's limit rounds z_min down to a whole number (17 teeth): a wheel at or
+        // above it is the course's own practice (the guide's z = 17, x = 0), undercut by a hair
+        // that the sheet notes; below it the undercut is real and worth a warning.
         if let PairWarning::Undercut { wheel, x, x_min } = w
             && !auto_shift[wheel - 1]
+            && *x < course_x_min(&pair_spec, pair_spec.z[wheel - 1])
         {
             warnings.push(warning(
                 at(&g.pair),
@@ -131,6 +135,14 @@ pub fn resolve(
         assumptions.push(a.value.clone());
     }
     Ok(GearsProject { pair, auto_shift, warnings: pair_warnings, motor_rpm, output_rpm, planetary, assumptions })
+}
+
+/// The course's undercut limit h_a*·(z_lim − z)/z_lim, z_lim = ⌊2h_a*/sin²α⌋ (17 for the
+/// standard rack).
+fn course_x_min(spec: &PairSpec, z: u32) -> f64 {
+    let s = crate::num::math::sin(spec.pressure_angle);
+    let z_lim = (2.0 * spec.addendum / (s * s)).floor();
+    spec.addendum * (z_lim - f64::from(z)) / z_lim
 }
 
 fn pair_spec(p: &Spanned<PairFileSpec>) -> Result<(PairSpec, [bool; 2]), ModelError> {
