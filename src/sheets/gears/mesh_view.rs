@@ -200,12 +200,12 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     let mu = crate::drawing::scale::length_scale_below(p.tooth_height / 50.0);
     let k = 1.0 / mu; // paper mm per metre
     let a_w = p.centre_distance;
-    // P in the middle across; down so that both centres fit when they can.
+    // P in the middle across; both centres on the sheet when they fit, else P in the middle.
     let span = k * a_w;
     let py = if span + 24.0 <= area.height() {
         area.y0 + 12.0 + k * w2.working + (area.height() - span - 24.0) / 2.0
     } else {
-        area.center().y + (k * (w2.working - w1.working) / 2.0).clamp(-area.height() / 4.0, area.height() / 4.0)
+        area.center().y
     };
     let pp = Point::new(area.center().x, py);
     let v = View { o: Point::new(pp.x, pp.y + k * w1.working), k };
@@ -315,10 +315,15 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     pt(labels, b2, "B", "2", Vec2::new(-1.0, -0.5));
     pt(labels, o1, "O", "1", Vec2::new(1.0, 0.6));
     pt(labels, o2, "O", "2", Vec2::new(1.0, -0.6));
-    for q in [o1, o2] {
+    // The senses of rotation: wheel 1 drives counter-clockwise, wheel 2 turns clockwise.
+    for (q, ccw, n) in [(o1, true, "1"), (o2, false, "2")] {
         let c = v.p(q);
         if area.contains(c) {
             g.dot(c, 0.8);
+            let start = if ccw { 200.0 } else { 20.0 };
+            crate::drawing::symbols::turn_arrow(g, c, 9.0, start, 110.0, ccw, THIN);
+            let at = c + from_angle((start + 55.0f64).to_radians() * if ccw { -1.0 } else { 1.0 }) * 9.0;
+            labels.add_ranked(at, Vec2::new(-1.0, 0.0), LabelText::new("ω", n), 3.5, 1);
         }
     }
     labels.add_ranked(pp - Vec2::new(tau, 0.0), up, LabelText::new("τ", ""), 3.5, 1);
