@@ -65,3 +65,15 @@ impl InfoSpec {
         }
     }
 }
+
+impl ProjectInfo {
+    /// The title block's organisation field: the institution and the group, as given.
+    pub fn organisation(&self) -> String {
+        [self.institution.as_str(), self.group.as_str()]
+            .iter()
+            .filter(|s| !s.is_empty())
+            .copied()
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}

@@ -21,7 +21,7 @@ use crate::drawing::text::{LabelText, paragraph, wrap};
 use crate::gears::pair::PairWarning;
 use crate::gears::tooth::Outline;
 use crate::project::gears::PlanetaryProject;
-use crate::project::{GearsProject, Project, ProjectInfo};
+use crate::project::{GearsProject, Project};
 use crate::report::{self, NoteTable, NumTable};
 use kurbo::{Point, Rect};
 use labels::GearLabels;
@@ -121,7 +121,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
             project_title: &ctx.info.title,
             student: &ctx.info.student,
             supervisor: &ctx.info.supervisor,
-            organisation: &organisation(ctx.info),
+            organisation: &ctx.info.organisation(),
             scale: &fmt::localise(&scale::ratio(drawn.mu), lang),
             sheet_no: KIND.number,
             sheet_count: ctx.sheet_count,
@@ -142,15 +142,6 @@ fn trimmed(x: f64, lang: Language) -> String {
     } else {
         s
     }
-}
-
-fn organisation(info: &ProjectInfo) -> String {
-    [info.institution.as_str(), info.group.as_str()]
-        .iter()
-        .filter(|s| !s.is_empty())
-        .copied()
-        .collect::<Vec<_>>()
-        .join(", ")
 }
 
 /// The notes under the mesh: shifts chosen, warnings, the user's assumptions.

@@ -259,12 +259,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         extra.push(fg);
         extra.extend(side.filter(|g| !g.items.is_empty()));
     }
-    let organisation = [inp.info.institution.as_str(), inp.info.group.as_str()]
-        .iter()
-        .filter(|s| !s.is_empty())
-        .copied()
-        .collect::<Vec<_>>()
-        .join(", ");
+    let organisation = inp.info.organisation();
     let mut tb = Group::new("title-block", frame::title_block_rect());
     frame::title_block(
         &mut tb,
