@@ -109,7 +109,8 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         y_tables = bottom + 4.0;
     }
     let tables = note_tables_of(p, drawn.contact_ratio_drawn);
-    groups.push(tables_group(&tables, Rect::new(right.x0, y_tables, right.x1, right.y1), l, c, lang));
+    let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
+    groups.push(tables_group(&tables, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, l, c, lang));
 
     let mut tb = Group::new("title-block", frame::title_block_rect());
     frame::title_block(
@@ -215,6 +216,7 @@ fn table_title<'a>(stem: &str, l: &'a GearLabels) -> &'a str {
 fn tables_group(
     tables: &[(&'static str, NumTable)],
     region: Rect,
+    tolerance: Option<f64>,
     l: &GearLabels,
     c: &Common,
     lang: Language,
@@ -224,7 +226,7 @@ fn tables_group(
     let mut y = region.y0;
     let mut col_w: f64 = 0.0;
     for (stem, t) in tables {
-        let table = sheet_table(stem, t, l, c, lang);
+        let table = sheet_table(stem, t, tolerance, l, c, lang);
         let (w, h) = table.size();
         if y + h > region.y1 && y > region.y0 {
             x += col_w + 6.0;
@@ -238,13 +240,17 @@ fn tables_group(
     g
 }
 
-fn sheet_table(stem: &str, t: &NumTable, l: &GearLabels, c: &Common, lang: Language) -> Table {
+fn sheet_table(stem: &str, t: &NumTable, tolerance: Option<f64>, l: &GearLabels, c: &Common, lang: Language) -> Table {
     let is_conditions = stem == "conditions";
     let rows: Vec<(LabelText, Vec<String>)> = t
         .rows
         .iter()
         .map(|r| {
-            let mut label = if is_conditions {
+            let mut label = if is_conditions && r.symbol == "ratio" {
+                // The ratio's condition is the stated tolerance.
+                let tol = tolerance.map(|t| format!(" ±{} %", trimmed(t * 100.0, lang))).unwrap_or_default();
+                LabelText::new(format!("{}{tol}", l.condition(&r.symbol)), "")
+            } else if is_conditions {
                 LabelText::new(l.condition(&r.symbol), "")
             } else {
                 LabelText::new(r.symbol.clone(), l.sub(&r.sub))
