@@ -289,6 +289,12 @@ impl Teeth {
         (z1 * z2b + z2 * z3) / u128::from(gcd(self.planet_sun, self.planet_ring))
     }
 
+    /// The reducer's outer diameter in modules (tips aside): the ring, or a double planet's
+    /// larger gear z2 reaching past it (2a + z2 = z1 + 2·z2); the single row has z1 + 2z2 = z3.
+    fn size(self) -> u32 {
+        self.ring.max(self.sun + 2 * self.planet_sun)
+    }
+
     fn smallest_external(self) -> u32 {
         self.sun.min(self.planet_sun).min(self.planet_ring)
     }
@@ -457,12 +463,13 @@ impl<'a> Search<'a> {
         }
     }
 
-    /// The smallest reducer (ring), then the closest ratio, then more planets (lighter
-    /// loaded), then the smallest sun; the tooth numbers last make the order total.
+    /// The smallest reducer (its outer diameter: the ring, or a double planet's larger gear),
+    /// then the closest ratio, then more planets (lighter loaded), then the smallest sun; the
+    /// tooth numbers last make the order total.
     fn better(&self, a: &Found, b: &Found) -> bool {
         let error = |f: &Found| (f.ratio - self.spec.ratio_required).abs();
         let key = |f: &Found| (f.teeth.ring, std::cmp::Reverse(f.planets), f.teeth.sun, f.teeth.planet_sun);
-        a.teeth.ring.cmp(&b.teeth.ring).then(error(a).total_cmp(&error(b))).then(key(a).cmp(&key(b))).is_lt()
+        a.teeth.size().cmp(&b.teeth.size()).then(error(a).total_cmp(&error(b))).then(key(a).cmp(&key(b))).is_lt()
     }
 
     /// The ratio window [u(1 − tol), u(1 + tol)].
@@ -478,8 +485,8 @@ impl<'a> Search<'a> {
         let (lo, hi) = self.window();
         let mut best: Option<Found> = None;
         for z1 in s.z_min..=s.z_max {
-            // No ring larger than the best one found can win.
-            let ring_max = best.map_or(s.z_max, |b| b.teeth.ring);
+            // No ring larger than the best reducer found can win (its size is at least its ring).
+            let ring_max = best.map_or(s.z_max, |b| b.teeth.size());
             let first = floor_u32((lo - 1.0) * f64::from(z1)).saturating_sub(1).max(z1 + 2 * s.z_min).max(s.ring_min);
             let last = ceil_u32((hi - 1.0) * f64::from(z1)).saturating_add(1).min(ring_max);
             for z3 in (first..=last).filter(|z3| (z3 - z1) % 2 == 0) {
@@ -498,8 +505,8 @@ impl<'a> Search<'a> {
         let (lo, hi) = self.window();
         let mut best: Option<Found> = None;
         for z1 in s.z_min..=s.z_max {
-            // No ring larger than the best one found can win.
-            let ring_max = best.map_or(s.z_max, |b| b.teeth.ring);
+            // No ring larger than the best reducer found can win (its size is at least its ring).
+            let ring_max = best.map_or(s.z_max, |b| b.teeth.size());
             for z2b in s.z_min..=ring_max.saturating_sub(z1 + s.z_min) {
                 let room = ring_max - z1 - z2b;
                 let b = f64::from(z1 + z2b);
@@ -583,7 +590,8 @@ fn ceil_u32(x: f64) -> u32 {
 }
 
 /// The best valid set: ratio within the tolerance and every condition of [`check`] met;
-/// the smallest reducer (smallest ring z3) first, then the smallest |ratio error|, then more
+/// the smallest reducer (the ring z3, or z1 + 2·z2 when a double planet's larger gear reaches
+/// past it) first, then the smallest |ratio error|, then more
 /// planets, then the smallest z1.
 ///
 /// It runs when a sheet is built and inside property tests, so it visits only the

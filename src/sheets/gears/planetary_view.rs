@@ -90,20 +90,30 @@ pub fn draw(g: &mut Group, front: Rect, side: Rect, s: &Stage, m: f64, mu: f64, 
     g.line(Point::new(x_in - 2.0, c.y), Point::new(x_out + 2.0, c.y), AXIS);
     // Input shaft and the sun.
     g.line(Point::new(x_in, c.y), Point::new(x_sun, c.y), MAIN);
+    // Gears meshing in one plane meet at their pitch radii: a small gap there keeps each rim
+    // a line of its own, as kinematic schemes draw them.
+    let gap = 0.8;
     let ys = k * r.sun;
-    g.line(Point::new(x_sun, c.y - ys), Point::new(x_sun, c.y + ys), MAIN);
+    g.line(Point::new(x_sun, c.y - ys + gap), Point::new(x_sun, c.y + ys - gap), MAIN);
     for side_sign in [-1.0, 1.0] {
         let ya = c.y + side_sign * k * r.carrier;
         // The planet's rims and its axle on the carrier.
-        g.line(Point::new(x_sun, ya - k * r.planet), Point::new(x_sun, ya + k * r.planet), MAIN);
+        let rim = |g: &mut Group, x: f64, half: f64| {
+            g.line(Point::new(x, ya - half + gap), Point::new(x, ya + half - gap), MAIN);
+        };
+        rim(g, x_sun, k * r.planet);
         if double {
-            g.line(Point::new(x_ring, ya - k * r.planet2), Point::new(x_ring, ya + k * r.planet2), MAIN);
+            rim(g, x_ring, k * r.planet2);
         }
         g.line(Point::new(x_sun - 6.0, ya), Point::new(x_h, ya), MAIN);
         // The fixed ring: its rim, turned back toward the planet, held by the frame.
         let yr = c.y + side_sign * k * r.ring;
         g.path(
-            vec![Point::new(x_ring - 5.0, yr), Point::new(x_ring, yr), Point::new(x_ring, yr + side_sign * 8.0)],
+            vec![
+                Point::new(x_ring - 5.0, yr + side_sign * gap),
+                Point::new(x_ring, yr + side_sign * gap),
+                Point::new(x_ring, yr + side_sign * 8.0),
+            ],
             false,
             MAIN,
         );
