@@ -184,5 +184,5 @@ fn an_undercut_pinion_builds_with_a_warning_and_a_note_on_the_sheet() {
     );
     let b = sheet2(&p);
     assert_eq!(b.output.results["pair"]["undercut"][0], true);
-    assert!(b.output.scene.texts().any(|t| t.text.contains("x_min")), "the sheet says so");
+    assert!(b.output.scene.texts().any(|t| t.text.contains("xₘᵢₙ")), "the sheet says so");
 }
