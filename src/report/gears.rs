@@ -41,7 +41,7 @@ pub fn pair(p: &Pair, eps_drawn: f64) -> NumTable {
             row("m", "", "mm", one(s.module * MM)),
             row("α", "", "°", one(s.pressure_angle.to_degrees())),
             row("h", "a*", "", one(s.addendum)),
-            row("c", "*", "", one(s.clearance)),
+            row("c*", "", "", one(s.clearance)),
             row("u", "12", "", one(p.ratio)),
             row("α", "w", "°", one(p.working_pressure_angle.to_degrees())),
             row("a", "", "mm", one(p.reference_centre_distance * MM)),

@@ -42,6 +42,12 @@ pub struct NoteTable {
     pub units: Vec<String>,
     /// Whether numbers take a decimal comma (Uzbek, Russian) rather than a point.
     pub decimal_comma: bool,
+    /// The value columns' headings in the sheet's language for the Markdown (empty: the
+    /// table's own, which the CSV keeps stable for programs).
+    pub column_titles: Vec<String>,
+    /// Whether whole numbers print without decimals (tooth numbers, a centre distance of
+    /// 90 mm, 1 for a condition met); otherwise every value has four significant digits.
+    pub whole_numbers: bool,
 }
 
 /// A row's quantity as `symbol_sub`, or the symbol alone.
@@ -86,7 +92,8 @@ pub fn markdown(n: &NoteTable) -> String {
     let t = &n.table;
     let [quantity, unit] = &n.headings;
     let mut s = format!("### {}\n\n| {} | {} |", md_escape(&n.title), md_escape(quantity), md_escape(unit));
-    for c in &t.columns {
+    let titles = if n.column_titles.len() == t.columns.len() { &n.column_titles } else { &t.columns };
+    for c in titles {
         let _ = write!(s, " {} |", md_escape(c));
     }
     s.push_str("\n|---|---|");
@@ -96,7 +103,8 @@ pub fn markdown(n: &NoteTable) -> String {
         let sub = if r.sub.is_empty() { String::new() } else { format!("<sub>{}</sub>", md_escape(&r.sub)) };
         let _ = write!(s, "| {}{sub} | {} |", md_escape(&r.symbol), md_escape(unit));
         for &v in &r.values {
-            let v = crate::num::digits::significant(v).replace('-', "−");
+            let whole = n.whole_numbers && v.fract() == 0.0 && v.abs() < 1e9;
+            let v = if whole { format!("{v:.0}") } else { crate::num::digits::significant(v) }.replace('-', "−");
             let _ = write!(s, " {} |", if n.decimal_comma { v.replace('.', ",") } else { v });
         }
         s.push('\n');
@@ -127,6 +135,8 @@ mod tests {
             headings: ["q".into(), "u".into()],
             units,
             decimal_comma: true,
+            column_titles: Vec::new(),
+            whole_numbers: false,
         }
     }
 

@@ -302,10 +302,29 @@ impl GearsBuild {
                 headings: [c.quantity().into(), c.unit().into()],
                 units: t.rows.iter().map(|r| c.si_unit(&r.unit).to_string()).collect(),
                 table: NumTable {
-                    rows: t.rows.iter().map(|r| report::Row { sub: l.sub(&r.sub).to_string(), ..r.clone() }).collect(),
+                    // Words in the sheet's language: subscripts, and the conditions' names.
+                    rows: t
+                        .rows
+                        .iter()
+                        .map(|r| report::Row {
+                            symbol: if *stem == "conditions" {
+                                l.condition(&r.symbol).to_string()
+                            } else {
+                                r.symbol.clone()
+                            },
+                            sub: l.sub(&r.sub).to_string(),
+                            ..r.clone()
+                        })
+                        .collect(),
                     ..t.clone()
                 },
+                column_titles: match *stem {
+                    "wheels" => vec![l.wheel("1"), l.wheel("2")],
+                    "conditions" => vec![l.value_col().into(), l.limit_col().into(), l.ok_col().into()],
+                    _ => vec![c.value().into()],
+                },
                 decimal_comma: lang != Language::En,
+                whole_numbers: true,
             })
             .collect()
     }

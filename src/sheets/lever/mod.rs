@@ -85,6 +85,8 @@ impl LeverBuild {
                 ..table.clone()
             },
             decimal_comma: lang != Language::En,
+            column_titles: Vec::new(),
+            whole_numbers: false,
         };
         let mut out = vec![
             note("velocities", l.velocity_table(), &self.tables.velocities),
