@@ -270,4 +270,66 @@ mod tests {
             assert!(dev < 1e-6, "{z:?}: {dev:e} m");
         }
     }
+
+    /// The outline against brute force: the rack cutter (flank, tip round, tip flat) placed at
+    /// 20 000 positions as dense points; at each radius the tooth ends where the nearest rack
+    /// point is. Independent of the envelope formulas; checks the undercut crossing too.
+    #[test]
+    fn the_outline_is_what_the_rack_leaves() {
+        for (z, x) in [([10u32, 40u32], 0.0), ([12, 40], 0.0), ([17, 40], 0.0), ([14, 40], 0.3)] {
+            let spec = PairSpec { shift: [x, 0.0], ..PairSpec::standard(1.0, z) };
+            let pair = Pair::new(&spec).unwrap();
+            let w = &pair.wheels[0];
+            let o = Outline::new(&spec, w);
+            let rack = Rack::of(&spec, w);
+            let a = spec.pressure_angle;
+            // The right side of the cutter tooth, rack frame.
+            let mut pts = Vec::new();
+            let t_y = rack.centre.y - rack.rho * sin(a);
+            for i in 0..=400 {
+                let y = t_y + (x + 1.0 - t_y) * f64::from(i) / 400.0;
+                pts.push(Vec2::new(PI / 4.0 + (y - x) * tan(a), y));
+            }
+            for i in 0..=400 {
+                let th = -PI / 2.0 + (PI / 2.0 - a) * f64::from(i) / 400.0;
+                pts.push(rack.centre + Vec2::new(cos(th), sin(th)) * rack.rho);
+            }
+            let bins = 200;
+            let (r_lo, r_hi) = (w.root + 0.02, w.tip - 0.02);
+            let mut edge = vec![f64::INFINITY; bins];
+            let n = 20_000;
+            for k in 0..=n {
+                let phi = -1.2 + 2.4 * f64::from(k) / f64::from(n);
+                for &pt in &pts {
+                    let q = rot(rot(Vec2::new(pt.x - rack.r * phi, pt.y + rack.r), -phi), o.turn);
+                    let r = q.norm();
+                    if r < r_lo || r >= r_hi {
+                        continue;
+                    }
+                    let b = ((r - r_lo) / (r_hi - r_lo) * bins as f64) as usize;
+                    edge[b.min(bins - 1)] = edge[b.min(bins - 1)].min(polar(q));
+                }
+            }
+            let cross = o.fillet(o.phi_join).0.norm();
+            let mut worst: f64 = 0.0;
+            for (b, &e) in edge.iter().enumerate() {
+                // The tooth narrows outward, so the rack's nearest point in a bin is at its top.
+                let r = r_lo + (b as f64 + 1.0) * (r_hi - r_lo) / bins as f64;
+                let ours = if r >= cross {
+                    o.involute_angle(r)
+                } else {
+                    // The fillet's point at this radius (its radius grows toward the junction).
+                    let (mut lo, mut hi) = (o.phi_root, o.phi_join);
+                    for _ in 0..100 {
+                        let m = 0.5 * (lo + hi);
+                        if o.fillet(m).0.norm() < r { lo = m } else { hi = m }
+                    }
+                    polar(o.fillet(lo).0)
+                };
+                worst = worst.max(((e - ours) * r).abs());
+            }
+            // The bins are 0.01·m wide and the points 1/400 of a flank apart: a few thousandths of m.
+            assert!(worst < 4e-3, "{z:?}, x = {x}: the outline is {worst:e}·m from what the rack leaves");
+        }
+    }
 }
