@@ -4,6 +4,7 @@ crate::label_set! {
     /// Every word of sheet 2 that is not shared with the other sheets.
     pub struct GearLabels = "gears.yaml" {
         sheet_name,
+        sheet_name_pair,
         mesh_title(m, z1, z2),
         scale(s),
         contact_ratio_exact(e),

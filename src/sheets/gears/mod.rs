@@ -112,13 +112,14 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
     groups.push(tables_group(&tables, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, l, c, lang));
 
+    let sheet_name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
     let mut tb = Group::new("title-block", frame::title_block_rect());
     frame::title_block(
         &mut tb,
         c,
         &TitleBlock {
             designation: &ctx.info.designation,
-            sheet_name: l.sheet_name(),
+            sheet_name,
             project_title: &ctx.info.title,
             student: &ctx.info.student,
             supervisor: &ctx.info.supervisor,
@@ -129,8 +130,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         },
     )?;
     groups.push(tb);
-    let scene =
-        Scene { width: A1_W, height: A1_H, title: format!("{} — {}", ctx.info.title, l.sheet_name()), groups };
+    let scene = Scene { width: A1_W, height: A1_H, title: format!("{} — {sheet_name}", ctx.info.title), groups };
     let layout = layout::measure(&scene);
     Ok(GearsBuild { scene, mesh: drawn, planetary_mu, layout, tables })
 }
