@@ -24,6 +24,7 @@
 //! ```
 
 pub mod backend;
+pub mod cams;
 pub mod cli;
 pub mod drawing;
 pub mod font;

@@ -11,11 +11,12 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 /// Module → the crate modules it may use (besides itself).
-const ALLOWED: [(&str, &[&str]); 12] = [
+const ALLOWED: [(&str, &[&str]); 13] = [
     ("num", &[]),
     ("font", &[]),
     ("lever", &["num"]),
     ("gears", &["num"]),
+    ("cams", &["num"]),
     ("drawing", &["num", "font"]),
     ("report", &["num", "lever", "gears"]),
     ("project", &["num", "font", "lever", "gears", "drawing::labels::Language"]),

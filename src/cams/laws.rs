@@ -1,0 +1,223 @@
+//! The follower's laws of motion, exact: each a normalised rise s(x) over the phase
+//! x = φ/φ_phase ∈ [0, 1] with s(0) = 0, s(1) = 1, and its derivatives s′, s″ with respect
+//! to x (a caller scales: ds/dφ = h·s′/φ_p, d²s/dφ² = h·s″/φ_p²). The return phase is the
+//! mirror 1 − s(x).
+//!
+//! The guide numbers six acceleration-analog laws in an appendix whose figure is lost; this
+//! table defines them (every one is antisymmetric about the middle of the phase, so the
+//! second half is the first mirrored: s(1 − x) = 1 − s(x)):
+//!
+//! | no. | key | acceleration s″ on the first half | C_v = max s′ | C_a = max s″ |
+//! |---|---|---|---|---|
+//! | 1 | `uniform-acceleration` | constant 4 | 2 | 4 |
+//! | 2 | `linearly-decreasing` | 6(1 − 2x), from +6 to −6 | 1.5 | 6 |
+//! | 3 | `cosine` | (π²/2)·cos πx | π/2 | π²/2 |
+//! | 4 | `sine` (cycloidal) | 2π·sin 2πx | 2 | 2π |
+//! | 5 | `triangular` | up to 8 at x = ¼, down to 0 at ½ | 2 | 8 |
+//! | 6 | `trapezoid` | up over [0, ⅛], 16/3 over [⅛, ⅜], down to 0 at ½ | 2 | 16/3 |
+//! | – | `polynomial-345` | 60x − 180x² + 120x³ | 1.875 | 10/√3 |
+//!
+//! The peaks follow from the closed forms (tested against these values and numerically).
+
+use crate::num::math::{cos, sin};
+use std::f64::consts::PI;
+
+/// A law of motion, by its key in a project file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Law {
+    UniformAcceleration,
+    LinearlyDecreasing,
+    Cosine,
+    Sine,
+    Triangular,
+    Trapezoid,
+    Polynomial345,
+}
+
+/// s, s′ and s″ at one x.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Derivs {
+    pub s: f64,
+    pub ds: f64,
+    pub dds: f64,
+}
+
+/// The trapezoid's plateau: s(½) = ½ fixes it at 16/3.
+const TRAPEZOID_A: f64 = 16.0 / 3.0;
+
+impl Law {
+    pub const ALL: [Law; 7] = [
+        Law::UniformAcceleration,
+        Law::LinearlyDecreasing,
+        Law::Cosine,
+        Law::Sine,
+        Law::Triangular,
+        Law::Trapezoid,
+        Law::Polynomial345,
+    ];
+
+    pub fn key(self) -> &'static str {
+        match self {
+            Law::UniformAcceleration => "uniform-acceleration",
+            Law::LinearlyDecreasing => "linearly-decreasing",
+            Law::Cosine => "cosine",
+            Law::Sine => "sine",
+            Law::Triangular => "triangular",
+            Law::Trapezoid => "trapezoid",
+            Law::Polynomial345 => "polynomial-345",
+        }
+    }
+
+    /// The guide's number (1–6), none for the laws beyond the course.
+    pub fn guide_number(self) -> Option<u8> {
+        Law::ALL[..6].iter().position(|&l| l == self).map(|i| i as u8 + 1)
+    }
+
+    /// A law by its key or the guide's number ("1"…"6").
+    pub fn by_key(key: &str) -> Option<Law> {
+        let key = key.trim();
+        Law::ALL.into_iter().find(|l| l.key() == key || l.guide_number().is_some_and(|n| n.to_string() == key))
+    }
+
+    /// s, s′, s″ at x; outside [0, 1] the dwell's values (s = 0 or 1, s′ = s″ = 0).
+    pub fn eval(self, x: f64) -> Derivs {
+        if x.is_nan() || x <= 0.0 {
+            return Derivs { s: 0.0, ds: 0.0, dds: 0.0 };
+        }
+        if x >= 1.0 {
+            return Derivs { s: 1.0, ds: 0.0, dds: 0.0 };
+        }
+        if x <= 0.5 {
+            self.first_half(x)
+        } else {
+            let d = self.first_half(1.0 - x);
+            Derivs { s: 1.0 - d.s, ds: d.ds, dds: -d.dds }
+        }
+    }
+
+    /// The closed form on [0, ½].
+    fn first_half(self, x: f64) -> Derivs {
+        let d = |s, ds, dds| Derivs { s, ds, dds };
+        match self {
+            Law::UniformAcceleration => d(2.0 * x * x, 4.0 * x, 4.0),
+            Law::LinearlyDecreasing => d(x * x * (3.0 - 2.0 * x), 6.0 * x * (1.0 - x), 6.0 - 12.0 * x),
+            Law::Cosine => d((1.0 - cos(PI * x)) / 2.0, PI / 2.0 * sin(PI * x), PI * PI / 2.0 * cos(PI * x)),
+            Law::Sine => {
+                let w = 2.0 * PI * x;
+                d(x - sin(w) / (2.0 * PI), 1.0 - cos(w), 2.0 * PI * sin(w))
+            }
+            Law::Triangular => {
+                if x <= 0.25 {
+                    d(16.0 * x * x * x / 3.0, 16.0 * x * x, 32.0 * x)
+                } else {
+                    // From the middle: u = ½ − x, s″ = 32u, s′ = 2 − 16u², s = ½ − 2u + 16u³/3.
+                    let u = 0.5 - x;
+                    d(0.5 - 2.0 * u + 16.0 * u * u * u / 3.0, 2.0 - 16.0 * u * u, 32.0 * u)
+                }
+            }
+            Law::Trapezoid => {
+                let a = TRAPEZOID_A;
+                if x <= 0.125 {
+                    d(4.0 * a * x * x * x / 3.0, 4.0 * a * x * x, 8.0 * a * x)
+                } else if x <= 0.375 {
+                    let t = x - 0.125;
+                    d(a / 384.0 + a / 16.0 * t + a * t * t / 2.0, a / 16.0 + a * t, a)
+                } else {
+                    let u = 0.5 - x;
+                    d(0.5 - 2.0 * u + 4.0 * a * u * u * u / 3.0, 2.0 - 4.0 * a * u * u, 8.0 * a * u)
+                }
+            }
+            Law::Polynomial345 => {
+                let (x2, x3) = (x * x, x * x * x);
+                d(
+                    x3 * (10.0 - 15.0 * x + 6.0 * x2),
+                    30.0 * x2 * (1.0 - x) * (1.0 - x),
+                    60.0 * x * (1.0 - x) * (1.0 - 2.0 * x),
+                )
+            }
+        }
+    }
+
+    /// The peak coefficients (max |s′|, max |s″|), from the closed forms.
+    pub fn peaks(self) -> (f64, f64) {
+        match self {
+            Law::UniformAcceleration => (2.0, 4.0),
+            Law::LinearlyDecreasing => (1.5, 6.0),
+            Law::Cosine => (PI / 2.0, PI * PI / 2.0),
+            Law::Sine => (2.0, 2.0 * PI),
+            Law::Triangular => (2.0, 8.0),
+            Law::Trapezoid => (2.0, TRAPEZOID_A),
+            // s″ peaks where 6x² − 6x + 1 = 0: x = ½ − √3/6, value 10/√3.
+            Law::Polynomial345 => (1.875, 10.0 / 3f64.sqrt()),
+        }
+    }
+}
+
+/// The follower's program over a turn: rise, far dwell, return, near dwell (the rest).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Program {
+    /// Phase angles, radians.
+    pub rise: f64,
+    pub far_dwell: f64,
+    pub ret: f64,
+    pub rise_law: Law,
+    pub return_law: Law,
+    /// The lift: metres (translating follower) or radians of swing (rocker).
+    pub lift: f64,
+}
+
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ProgramError {
+    #[error("the {phase} phase must be a positive angle, not {deg}°")]
+    Phase { phase: &'static str, deg: f64 },
+    #[error("the far dwell must be an angle ≥ 0, not {0}°")]
+    Dwell(f64),
+    #[error("rise + far dwell + return = {0:.4}° exceeds a turn (360°)")]
+    OverTurn(f64),
+    #[error("the lift must be positive and finite, not {0}")]
+    Lift(f64),
+}
+
+impl Program {
+    pub fn new(rise: f64, far_dwell: f64, ret: f64, laws: (Law, Law), lift: f64) -> Result<Program, ProgramError> {
+        for (phase, a) in [("rise", rise), ("return", ret)] {
+            if !(a.is_finite() && a > 0.0) {
+                return Err(ProgramError::Phase { phase, deg: a.to_degrees() });
+            }
+        }
+        if !(far_dwell.is_finite() && far_dwell >= 0.0) {
+            return Err(ProgramError::Dwell(far_dwell.to_degrees()));
+        }
+        let total = rise + far_dwell + ret;
+        if total > 2.0 * PI + 1e-12 {
+            return Err(ProgramError::OverTurn(total.to_degrees()));
+        }
+        if !(lift.is_finite() && lift > 0.0) {
+            return Err(ProgramError::Lift(lift));
+        }
+        Ok(Program { rise, far_dwell, ret, rise_law: laws.0, return_law: laws.1, lift })
+    }
+
+    /// s(φ), ds/dφ, d²s/dφ² in the lift's unit (per radian), φ taken modulo a turn from the
+    /// start of the rise.
+    pub fn at(&self, phi: f64) -> Derivs {
+        let phi = if phi.is_finite() { phi.rem_euclid(2.0 * PI) } else { 0.0 };
+        let h = self.lift;
+        let scale = |d: Derivs, p: f64, sign: f64, base: f64| Derivs {
+            s: base + sign * h * d.s,
+            ds: sign * h * d.ds / p,
+            dds: sign * h * d.dds / (p * p),
+        };
+        let back = self.rise + self.far_dwell;
+        if phi < self.rise {
+            scale(self.rise_law.eval(phi / self.rise), self.rise, 1.0, 0.0)
+        } else if phi < back {
+            Derivs { s: h, ds: 0.0, dds: 0.0 }
+        } else if phi < back + self.ret {
+            scale(self.return_law.eval((phi - back) / self.ret), self.ret, -1.0, h)
+        } else {
+            Derivs { s: 0.0, ds: 0.0, dds: 0.0 }
+        }
+    }
+}
