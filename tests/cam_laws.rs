@@ -94,10 +94,13 @@ fn peak_coefficients_are_the_known_ones() {
         (Law::Triangular, 2.0, 8.0),
         (Law::Trapezoid, 2.0, 16.0 / 3.0),
         (Law::Polynomial345, 1.875, 5.773_502_691_896_258),
+        // The handbooks' four-digit values (Rothbart, Cam Design Handbook, table 2.2).
+        (Law::ModifiedTrapezoid, 2.0, 4.8881),
+        (Law::ModifiedSine, 1.7596, 5.5280),
     ];
     for (law, cv, ca) in known {
         let (v, a) = law.peaks();
-        assert!((v - cv).abs() < 1e-12 && (a - ca).abs() < 1e-12, "{law:?}: {v}, {a}");
+        assert!((v - cv).abs() < 1e-4 && (a - ca).abs() < 1e-4, "{law:?}: {v}, {a}");
         // And the closed forms reach them (sampled finely).
         let (mut vm, mut am) = (0.0f64, 0.0f64);
         for i in 1..100_000 {
@@ -105,7 +108,7 @@ fn peak_coefficients_are_the_known_ones() {
             vm = vm.max(d.ds.abs());
             am = am.max(d.dds.abs());
         }
-        assert!((vm - cv).abs() < 1e-6 && (am - ca).abs() < 1e-3, "{law:?}: sampled {vm}, {am}");
+        assert!((vm - v).abs() < 1e-6 && (am - a).abs() < 1e-3, "{law:?}: sampled {vm}, {am}");
     }
 }
 

@@ -16,6 +16,11 @@
 //! | 5 | `triangular` | up to 8 at x = ¼, down to 0 at ½ | 2 | 8 |
 //! | 6 | `trapezoid` | up over [0, ⅛], 16/3 over [⅛, ⅜], down to 0 at ½ | 2 | 16/3 |
 //! | – | `polynomial-345` | 60x − 180x² + 120x³ | 1.875 | 10/√3 |
+//! | – | `modified-trapezoid` | A·sin 4πx to ⅛, A to ⅜, A·cos 4π(x − ⅜) to ½ | 2 | 8π/(2 + π) |
+//! | – | `modified-sine` | A·sin 4πx to ⅛, A·cos ⁴⁄₃π(x − ⅛) to ½ | 4π/(π + 4) | 4π²/(π + 4) |
+//!
+//! Each plateau or amplitude A is fixed by s(½) = ½; integrating the pieces gives
+//! s(½) = A·(2 + π)/(16π) for the modified trapezoid and A·(π + 4)/(8π²) for the modified sine.
 //!
 //! The peaks follow from the closed forms (tested against these values and numerically).
 
@@ -33,6 +38,8 @@ pub enum Law {
     Triangular,
     Trapezoid,
     Polynomial345,
+    ModifiedTrapezoid,
+    ModifiedSine,
 }
 
 /// s, s′ and s″ at one x.
@@ -45,9 +52,13 @@ pub struct Derivs {
 
 /// The trapezoid's plateau: s(½) = ½ fixes it at 16/3.
 const TRAPEZOID_A: f64 = 16.0 / 3.0;
+/// The modified trapezoid's plateau, 8π/(2 + π) ≈ 4.888.
+const MOD_TRAPEZOID_A: f64 = 8.0 * PI / (2.0 + PI);
+/// The modified sine's amplitude, 4π²/(π + 4) ≈ 5.528.
+const MOD_SINE_A: f64 = 4.0 * PI * PI / (PI + 4.0);
 
 impl Law {
-    pub const ALL: [Law; 7] = [
+    pub const ALL: [Law; 9] = [
         Law::UniformAcceleration,
         Law::LinearlyDecreasing,
         Law::Cosine,
@@ -55,6 +66,8 @@ impl Law {
         Law::Triangular,
         Law::Trapezoid,
         Law::Polynomial345,
+        Law::ModifiedTrapezoid,
+        Law::ModifiedSine,
     ];
 
     pub fn key(self) -> &'static str {
@@ -66,6 +79,8 @@ impl Law {
             Law::Triangular => "triangular",
             Law::Trapezoid => "trapezoid",
             Law::Polynomial345 => "polynomial-345",
+            Law::ModifiedTrapezoid => "modified-trapezoid",
+            Law::ModifiedSine => "modified-sine",
         }
     }
 
@@ -136,6 +151,33 @@ impl Law {
                     60.0 * x * (1.0 - x) * (1.0 - 2.0 * x),
                 )
             }
+            Law::ModifiedTrapezoid => {
+                let a = MOD_TRAPEZOID_A;
+                let k = 4.0 * PI;
+                // The end of the first sine ramp, where the plateau starts.
+                let (v1, s1) = (a / k, a * (1.0 / (8.0 * k) - 1.0 / (k * k)));
+                if x <= 0.125 {
+                    d(a * (x / k - sin(k * x) / (k * k)), a * (1.0 - cos(k * x)) / k, a * sin(k * x))
+                } else if x <= 0.375 {
+                    let t = x - 0.125;
+                    d(s1 + v1 * t + a * t * t / 2.0, v1 + a * t, a)
+                } else {
+                    let (v2, s2) = (v1 + a / 4.0, s1 + v1 / 4.0 + a / 32.0);
+                    let t = x - 0.375;
+                    d(s2 + v2 * t + a * (1.0 - cos(k * t)) / (k * k), v2 + a * sin(k * t) / k, a * cos(k * t))
+                }
+            }
+            Law::ModifiedSine => {
+                let a = MOD_SINE_A;
+                let k = 4.0 * PI;
+                if x <= 0.125 {
+                    d(a * (x / k - sin(k * x) / (k * k)), a * (1.0 - cos(k * x)) / k, a * sin(k * x))
+                } else {
+                    let (v1, s1) = (a / k, a * (1.0 / (8.0 * k) - 1.0 / (k * k)));
+                    let (q, t) = (k / 3.0, x - 0.125);
+                    d(s1 + v1 * t + a * (1.0 - cos(q * t)) / (q * q), v1 + a * sin(q * t) / q, a * cos(q * t))
+                }
+            }
         }
     }
 
@@ -150,6 +192,8 @@ impl Law {
             Law::Trapezoid => (2.0, TRAPEZOID_A),
             // s″ peaks where 6x² − 6x + 1 = 0: x = ½ − √3/6, value 10/√3.
             Law::Polynomial345 => (1.875, 10.0 / 3f64.sqrt()),
+            Law::ModifiedTrapezoid => (2.0, MOD_TRAPEZOID_A),
+            Law::ModifiedSine => (4.0 * PI / (PI + 4.0), MOD_SINE_A),
         }
     }
 }
