@@ -294,7 +294,7 @@ fn worked_example_matches_the_reference_sheets() {
     let p = fixture("worked-example");
     let built = pipeline::build(&p, &[]).unwrap();
     let numbers: Vec<u32> = built.iter().map(|b| b.output.number).collect();
-    assert_eq!(numbers, [1, 2], "the worked example has sheets 1 and 2");
+    assert_eq!(numbers, [1, 2, 3], "the worked example has sheets 1, 2 and 3");
     let stems: Vec<&str> = built[0].output.tables.iter().map(|t| t.stem).collect();
     assert_eq!(
         stems,

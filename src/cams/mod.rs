@@ -12,6 +12,7 @@ pub mod laws;
 pub mod profile;
 pub mod radius;
 
+use crate::num::math::Norm;
 use follower::Follower;
 use kurbo::Vec2;
 use laws::Program;
@@ -111,7 +112,7 @@ pub struct Design {
 impl Design {
     /// The rocker's pivot to the cam centre, metres.
     pub fn centre_distance(&self) -> Option<f64> {
-        self.spec.follower.pivot().map(|a| (self.centre.o - a).hypot())
+        self.spec.follower.pivot().map(|a| (self.centre.o - a).norm())
     }
 
     /// The rocker's angle at the start of the rise between the pivot→cam-centre line and
@@ -170,7 +171,8 @@ pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
             r
         }
     };
-    let max_pressure = Phase::BOTH.map(|ph| radius::sup(ph.span(&spec.program), |phi| profile.pressure_angle_on_profile(phi)));
+    let max_pressure =
+        Phase::BOTH.map(|ph| radius::sup(ph.span(&spec.program), |phi| profile.pressure_angle_on_profile(phi)));
     let max_pressure = max_pressure.map(|(phi, a)| (a, phi));
     Ok(Design { spec: spec.clone(), region, centre, profile, rho_min, rho_min_phi, roller, max_pressure, warnings })
 }

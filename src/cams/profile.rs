@@ -15,6 +15,7 @@ use super::follower::{Follower, State};
 use super::laws::Program;
 use super::radius::sup;
 use crate::num::bezier::{self, Fitted};
+use crate::num::math::Norm;
 use crate::num::math::{atan2, sin_cos};
 use kurbo::Vec2;
 use std::f64::consts::PI;
@@ -58,17 +59,13 @@ impl Profile {
     pub fn pitch(&self, phi: f64) -> PitchPoint {
         let s = self.state(phi);
         let x = s.b - self.o;
-        PitchPoint {
-            p: rot(x, phi),
-            dp: rot(quarter(x) + s.db, phi),
-            ddp: rot(-x + quarter(s.db) * 2.0 + s.ddb, phi),
-        }
+        PitchPoint { p: rot(x, phi), dp: rot(quarter(x) + s.db, phi), ddp: rot(-x + quarter(s.db) * 2.0 + s.ddb, phi) }
     }
 
     /// The pitch profile's signed curvature, 1/m (positive where it is convex).
     pub fn curvature(&self, phi: f64) -> f64 {
         let q = self.pitch(phi);
-        q.dp.cross(q.ddp) / q.dp.hypot().powi(3)
+        q.dp.cross(q.ddp) / q.dp.norm().powi(3)
     }
 
     /// The smallest radius of curvature over the convex parts, and its φ (a turn
@@ -85,7 +82,7 @@ impl Profile {
     /// The working profile's point and tangent at φ for a roller of radius r.
     pub fn working(&self, r: f64, phi: f64) -> (Vec2, Vec2) {
         let q = self.pitch(phi);
-        let len = q.dp.hypot();
+        let len = q.dp.norm();
         let tangent = q.dp / len;
         let outward = Vec2::new(tangent.y, -tangent.x);
         let kappa = q.dp.cross(q.ddp) / len.powi(3);
@@ -108,7 +105,7 @@ impl Profile {
     pub fn polar(&self, p: Vec2) -> (f64, f64) {
         let start = self.state(0.0).b - self.o;
         let a = atan2(start.cross(p), start.dot(p));
-        (p.hypot(), a.rem_euclid(2.0 * PI))
+        (p.norm(), a.rem_euclid(2.0 * PI))
     }
 
     /// The pitch (r = 0) or working profile as cubic pieces, part by part, each part within

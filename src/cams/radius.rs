@@ -178,7 +178,7 @@ impl Region {
             (Placement::Free, _) => {
                 // |u*| ≤ r_min ≤ W(0): the column through B₀ bounds the search.
                 let bound = self.floor(0.0).max(0.0) * (1.0 + 1e-9) + 1e-12;
-                let m = minimise(|u| Ok::<_, ()>(column(u).0), -bound, bound, U_TOL)
+                let m = minimise(|u| Ok::<_, ()>(column(u).0), -bound, bound, U_TOL.max(bound * 1e-14))
                     .unwrap_or_else(|_| unreachable!("the column never fails"));
                 m.x
             }

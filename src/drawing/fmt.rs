@@ -11,6 +11,17 @@ pub fn value(x: f64, lang: Language) -> String {
     localise(&digits::significant(x), lang)
 }
 
+/// A value with four significant digits, trailing zeros dropped (a module of 5 mm is "5", a
+/// scale of 0,001000 m/mm is "0,001").
+pub fn trimmed(x: f64, lang: Language) -> String {
+    let s = value(x, lang);
+    if s.contains([',', '.']) && !s.contains(['e', '·']) {
+        s.trim_end_matches('0').trim_end_matches([',', '.']).to_string()
+    } else {
+        s
+    }
+}
+
 /// A tiny number in the form 1,6·10⁻¹³ (zero as 0), as the sheets show a residual.
 pub fn scientific(x: f64, lang: Language) -> String {
     if x == 0.0 {

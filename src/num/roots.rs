@@ -79,6 +79,9 @@ pub fn bisect<E>(mut f: impl FnMut(f64) -> Result<f64, E>, lo: f64, hi: f64, x_t
     Ok(0.5 * (a + b))
 }
 
+/// Golden-section steps at most (0.618⁴⁰⁰ ≈ 1e-84 of the starting interval).
+const MAX_GOLDEN_STEPS: usize = 400;
+
 /// The minimum of `f` on [lo, hi] by golden-section search, for a function with one minimum
 /// there; `x_tol` as in [`bisect`]. Failed evaluations are returned at once with their `x`.
 pub fn minimise<E>(
@@ -93,7 +96,11 @@ pub fn minimise<E>(
     let mut c = b - INV_PHI * (b - a);
     let mut d = a + INV_PHI * (b - a);
     let (mut fc, mut fd) = (eval(c)?, eval(d)?);
-    while (b - a).abs() > x_tol {
+    // A tolerance below the spacing of doubles at [a, b] cannot be met: the interval stops
+    // shrinking. 400 steps shrink any finite interval below that spacing.
+    let mut steps = 0;
+    while (b - a).abs() > x_tol && steps < MAX_GOLDEN_STEPS {
+        steps += 1;
         if fc < fd {
             b = d;
             d = c;

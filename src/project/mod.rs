@@ -1,10 +1,12 @@
 //! The project file (YAML) and its resolution into the domains' inputs.
 //!
-//! One file per section of the file format (`info`, `mechanism`, `forces`, `gears`); `lever`
-//! and `lever_forces` resolve the lever sections, `gears` sheet 2's section, into [`crate::lever`] types, checking every
-//! cross-reference with its line and column. Text that reaches a sheet is checked in
-//! [`text`]; input that is valid but almost surely a mistake gives a [`Warning`].
+//! One file per section of the file format (`info`, `mechanism`, `forces`, `gears`, `cam`);
+//! `lever` and `lever_forces` resolve the lever sections into [`crate::lever`] types, `gears`
+//! sheet 2's section and `cam` sheet 3's, checking every cross-reference with its line and
+//! column. Text that reaches a sheet is checked in [`text`]; input that is valid but almost
+//! surely a mistake gives a [`Warning`].
 
+pub mod cam;
 pub mod forces;
 pub mod gears;
 pub mod info;
@@ -14,6 +16,7 @@ pub mod mechanism;
 pub mod text;
 pub mod values;
 
+pub use cam::CamProject;
 pub use gears::GearsProject;
 pub use info::ProjectInfo;
 pub use lever::LeverProject;
@@ -40,6 +43,9 @@ pub struct ProjectFile {
     /// The external pair and the planetary stage of sheet 2.
     #[serde(default)]
     pub gears: Option<Spanned<gears::GearsSpec>>,
+    /// The cam of sheet 3.
+    #[serde(default)]
+    pub cam: Option<Spanned<cam::CamSpecFile>>,
 }
 
 /// A resolved project: what each sheet needs, and the warnings about its input.
@@ -50,6 +56,8 @@ pub struct Project {
     pub lever: Option<LeverProject>,
     /// Sheet 2's gears, when the file has a `gears` section.
     pub gears: Option<GearsProject>,
+    /// Sheet 3's cam, when the file has a `cam` section.
+    pub cam: Option<CamProject>,
     pub warnings: Vec<Warning>,
 }
 
@@ -127,10 +135,14 @@ pub fn resolve(file: &ProjectFile) -> Result<Project, ModelError> {
         Some(g) => Some(gears::resolve(g, crank_rpm, &mut warnings)?),
         None => None,
     };
-    if lever.is_none() && gears.is_none() {
+    let cam = match &file.cam {
+        Some(c) => Some(cam::resolve(c, &mut warnings)?),
+        None => None,
+    };
+    if lever.is_none() && gears.is_none() && cam.is_none() {
         return Err(ModelError::Yaml(
-            "the project has nothing to draw: add a `mechanism` section (sheet 1) or a `gears` section (sheet 2); `tmm example` prints one".into(),
+            "the project has nothing to draw: add a `mechanism` section (sheet 1), a `gears` section (sheet 2) or a `cam` section (sheet 3); `tmm example` prints one".into(),
         ));
     }
-    Ok(Project { info: file.project.resolve(), lever, gears, warnings })
+    Ok(Project { info: file.project.resolve(), lever, gears, cam, warnings })
 }

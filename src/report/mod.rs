@@ -1,6 +1,7 @@
 //! The tables of the explanatory note as numbers, and their writers: CSV (full precision,
 //! for programs) and Markdown (for the note). [`lever`] builds the lever sheet's tables.
 
+pub mod cam;
 pub mod gears;
 pub mod lever;
 

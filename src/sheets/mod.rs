@@ -6,6 +6,7 @@
 //! **Architecture invariant:** sheets compose; they read domain results and produce a scene
 //! of paper-millimetre primitives, never bytes.
 
+pub mod cam;
 pub mod gears;
 pub mod lever;
 
@@ -26,7 +27,7 @@ pub const COURSE: [SheetKind; 3] = [
         make: lever::LeverSheet::of,
     },
     SheetKind { number: 2, subject: "the gears", section: "gears", available: true, make: gears::GearsSheet::of },
-    SheetKind { number: 3, subject: "the cam", section: "cam", available: false, make: |_| None },
+    SheetKind { number: 3, subject: "the cam", section: "cam", available: true, make: cam::CamSheet::of },
 ];
 
 /// Builds a sheet from a project that has its section.

@@ -58,7 +58,8 @@ pub fn close(a: f64, b: f64, rel: f64, floor: f64) -> bool {
 
 /// Latin words a Russian sheet must not show: a run of two or more Latin letters with a
 /// lowercase one ("mm", "working"), or a unit "N"/"m"/"s"/"kg" after a number or a comma
-/// ("0,5 N", "P, N"). Symbols and plan letters ("m", "p=b=s3") and min/max are not words.
+/// ("0,5 N", "P, N"). Symbols and plan letters ("m", "p=b=s3"), min/max and a derivative's
+/// numerator ("ds/dφ") are not words.
 pub fn english_on_russian(text: &str) -> Option<String> {
     let chars: Vec<char> = text.chars().collect();
     let mut i = 0;
@@ -76,7 +77,9 @@ pub fn english_on_russian(text: &str) -> Option<String> {
         let after_number = before.is_some_and(|c| c.is_ascii_digit() || *c == ',');
         // "min" and "max" are mathematical notation in Russian too (x_min, z_min).
         let math = ["min", "max"].contains(&token.as_str());
-        let word = token.len() >= 2 && token.chars().any(|c| c.is_ascii_lowercase()) && !math;
+        // A derivative's numerator ("ds/dφ") is notation, not a word.
+        let derivative = token.starts_with('d') && chars.get(i) == Some(&'/');
+        let word = token.len() >= 2 && token.chars().any(|c| c.is_ascii_lowercase()) && !math && !derivative;
         if word || (["N", "m", "s", "kg"].contains(&token.as_str()) && after_number) {
             return Some(token);
         }

@@ -70,7 +70,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let mut mesh = Group::new("mesh", MESH);
     let mut labels = Labels::new();
     let title = l.mesh_title(
-        &trimmed(p.pair.spec.module * 1e3, lang),
+        &fmt::trimmed(p.pair.spec.module * 1e3, lang),
         &p.pair.wheels[0].z.to_string(),
         &p.pair.wheels[1].z.to_string(),
     );
@@ -133,16 +133,6 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let scene = Scene { width: A1_W, height: A1_H, title: format!("{} — {sheet_name}", ctx.info.title), groups };
     let layout = layout::measure(&scene);
     Ok(GearsBuild { scene, mesh: drawn, planetary_mu, layout, tables })
-}
-
-/// A value with four significant digits, trailing zeros dropped (a module of 5 mm is "5").
-fn trimmed(x: f64, lang: Language) -> String {
-    let s = fmt::value(x, lang);
-    if s.contains([',', '.']) && !s.contains(['e', '·']) {
-        s.trim_end_matches('0').trim_end_matches([',', '.']).to_string()
-    } else {
-        s
-    }
 }
 
 /// The notes under the mesh: shifts chosen, warnings, the user's assumptions.
@@ -248,7 +238,7 @@ fn sheet_table(stem: &str, t: &NumTable, tolerance: Option<f64>, l: &GearLabels,
         .map(|r| {
             let mut label = if is_conditions && r.symbol == "ratio" {
                 // The ratio's condition is the stated tolerance.
-                let tol = tolerance.map(|t| format!(" ±{} %", trimmed(t * 100.0, lang))).unwrap_or_default();
+                let tol = tolerance.map(|t| format!(" ±{} %", fmt::trimmed(t * 100.0, lang))).unwrap_or_default();
                 LabelText::new(format!("{}{tol}", l.condition(&r.symbol)), "")
             } else if is_conditions {
                 LabelText::new(l.condition(&r.symbol), "")

@@ -1,0 +1,634 @@
+//! The `cam` section: sheet 3's cam in the course's terms (lengths in metres, angles in
+//! degrees), resolved into the cams domain in SI. The cam is designed here once (centre,
+//! profile, roller, pressure angles), so that an impossible angle or a roller that undercuts
+//! the profile is an error at its line, not a failed sheet. Every refusal names its field
+//! and line; input that builds but is almost surely a mistake gives a [`Warning`].
+//!
+//! ```yaml
+//! cam:
+//!   follower: {rocker: {length: 0.105, swing_deg: 25}}   # or {translating: {stroke: 0.04, offset: 0}}
+//!   roller: auto                                       # `auto`, a radius in metres, or `knife`
+//!   phases_deg: {rise: 70, far_dwell: 10, return: 70}  # the near dwell is the rest of 360°
+//!   law: sine                                          # or 4, or {rise: cosine, return: 4}
+//!   pressure_angle_deg: 45                             # or {rise: 30, return: 45}
+//!   sense: ccw                                         # cw or ccw
+//!   assumptions: []
+//! ```
+
+use super::text::{self, Lines};
+use super::values::{Finite, UserText};
+use super::{ModelError, Warning, at, invalid, warning};
+use crate::cams::follower::Follower;
+use crate::cams::laws::{Law, Program, ProgramError};
+use crate::cams::radius::{Allowed, Placement, RadiusError};
+use crate::cams::{CamError, CamSpec, CamWarning, Roller, Sense};
+use crate::num::limits::{LENGTH_LOOKS_LIKE_MM, LENGTH_TINY};
+use serde::Deserialize;
+use serde::de::{self, Deserializer, IntoDeserializer, MapAccess, Visitor};
+use serde_saphyr::{Location, Spanned};
+use std::fmt;
+
+/// The `cam` section as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CamSpecFile {
+    /// Exactly one of `{rocker: {length, swing_deg}}` and `{translating: {stroke, offset}}`.
+    pub follower: Spanned<FollowerFileSpec>,
+    /// `auto` (default: the course's 0.25·r_min, kept below the profile's curvature), a
+    /// radius in metres, or `knife` (a knife edge).
+    #[serde(default)]
+    pub roller: Option<Spanned<Scalar>>,
+    /// The phases, degrees of cam angle: `rise`, `far_dwell` (default 0) and `return`; the
+    /// near dwell is the rest of the turn.
+    pub phases_deg: Spanned<PhasesFileSpec>,
+    /// The law of motion: a key (`cosine`, `sine`, `polynomial-345`, …) or the guide's
+    /// number 1–6, for both phases, or `{rise: …, return: …}`.
+    pub law: Spanned<PerPhase>,
+    /// The allowed pressure angle, degrees, in (0°, 90°) (the course: 30–50°): one for both
+    /// phases, or `{rise: …, return: …}`.
+    pub pressure_angle_deg: Spanned<PerPhase>,
+    /// The cam's sense of rotation: `cw` or `ccw` (default).
+    #[serde(default)]
+    pub sense: Option<Spanned<String>>,
+    /// Printed on the sheet: what was assumed where the source is silent or contradicts itself.
+    #[serde(default)]
+    pub assumptions: Vec<UserText>,
+}
+
+/// The follower: exactly one of the two kinds.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FollowerFileSpec {
+    /// An oscillating follower.
+    #[serde(default)]
+    pub rocker: Option<Spanned<RockerFileSpec>>,
+    /// A translating (reciprocating) follower.
+    #[serde(default)]
+    pub translating: Option<Spanned<TranslatingFileSpec>>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RockerFileSpec {
+    /// The rocker's length, pivot to roller centre, metres.
+    pub length: Spanned<Finite>,
+    /// The swing, degrees (the lift of a rocker).
+    pub swing_deg: Spanned<Finite>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TranslatingFileSpec {
+    /// The stroke, metres (the lift of a translating follower).
+    pub stroke: Spanned<Finite>,
+    /// The cam centre's distance from the follower's axis, metres (default 0; positive toward
+    /// the side that lowers the rise's pressure angle), or `auto`: the offset of the smallest
+    /// cam.
+    #[serde(default)]
+    pub offset: Option<Spanned<Scalar>>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PhasesFileSpec {
+    pub rise: Spanned<Finite>,
+    #[serde(default)]
+    pub far_dwell: Option<Spanned<Finite>>,
+    #[serde(rename = "return")]
+    pub ret: Spanned<Finite>,
+}
+
+/// A scalar that is a number (finite, within the file's limit) or a word.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Scalar {
+    Number(f64),
+    Word(String),
+}
+
+/// One value for both phases, or one for each.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PerPhase {
+    Both(Scalar),
+    Each { rise: Spanned<Scalar>, ret: Spanned<Scalar> },
+}
+
+struct ScalarVisitor;
+
+impl<'de> Visitor<'de> for ScalarVisitor {
+    type Value = Scalar;
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("a number or a word")
+    }
+
+    fn visit_f64<E: de::Error>(self, x: f64) -> Result<Scalar, E> {
+        // The same checks as every number of the file (finite, within its limit).
+        let d: de::value::F64Deserializer<E> = x.into_deserializer();
+        Finite::deserialize(d).map(|f| Scalar::Number(f.0))
+    }
+
+    fn visit_i64<E: de::Error>(self, x: i64) -> Result<Scalar, E> {
+        self.visit_f64(x as f64)
+    }
+
+    fn visit_u64<E: de::Error>(self, x: u64) -> Result<Scalar, E> {
+        self.visit_f64(x as f64)
+    }
+
+    fn visit_str<E: de::Error>(self, s: &str) -> Result<Scalar, E> {
+        Ok(Scalar::Word(s.to_owned()))
+    }
+}
+
+impl<'de> Deserialize<'de> for Scalar {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(ScalarVisitor)
+    }
+}
+
+struct PerPhaseVisitor;
+
+impl<'de> Visitor<'de> for PerPhaseVisitor {
+    type Value = PerPhase;
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("a value for both phases, or `{rise: …, return: …}`")
+    }
+
+    fn visit_f64<E: de::Error>(self, x: f64) -> Result<PerPhase, E> {
+        ScalarVisitor.visit_f64(x).map(PerPhase::Both)
+    }
+
+    fn visit_i64<E: de::Error>(self, x: i64) -> Result<PerPhase, E> {
+        ScalarVisitor.visit_i64(x).map(PerPhase::Both)
+    }
+
+    fn visit_u64<E: de::Error>(self, x: u64) -> Result<PerPhase, E> {
+        ScalarVisitor.visit_u64(x).map(PerPhase::Both)
+    }
+
+    fn visit_str<E: de::Error>(self, s: &str) -> Result<PerPhase, E> {
+        ScalarVisitor.visit_str(s).map(PerPhase::Both)
+    }
+
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<PerPhase, A::Error> {
+        const FIELDS: &[&str] = &["rise", "return"];
+        let (mut rise, mut ret) = (None, None);
+        while let Some(key) = map.next_key::<String>()? {
+            let slot = match key.as_str() {
+                "rise" => &mut rise,
+                "return" => &mut ret,
+                other => return Err(de::Error::unknown_field(other, FIELDS)),
+            };
+            if slot.is_some() {
+                return Err(de::Error::duplicate_field(FIELDS[usize::from(key == "return")]));
+            }
+            *slot = Some(map.next_value::<Spanned<Scalar>>()?);
+        }
+        let rise = rise.ok_or_else(|| de::Error::missing_field("rise"))?;
+        let ret = ret.ok_or_else(|| de::Error::missing_field("return"))?;
+        Ok(PerPhase::Each { rise, ret })
+    }
+}
+
+impl<'de> Deserialize<'de> for PerPhase {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(PerPhaseVisitor)
+    }
+}
+
+/// Everything sheet 3 needs.
+#[derive(Debug, Clone)]
+pub struct CamProject {
+    /// The designed cam (centre, profile, roller, pressure angles) — built here once so that
+    /// a bad roller or an impossible angle is an error at its line.
+    pub design: crate::cams::Design,
+    /// The law's choice for each phase, as the file named it (for the sheet's text).
+    pub laws: (Law, Law),
+    /// Whether the roller was `auto`.
+    pub roller_auto: bool,
+    /// Whether the translating follower's offset was `auto`.
+    pub offset_auto: bool,
+    /// Printed on the sheet, like gears' `assumptions`.
+    pub assumptions: Vec<String>,
+}
+
+const FIELD: &str = "cam";
+
+/// The course's range of allowed pressure angles, degrees.
+const COURSE_ALLOWED_DEG: (f64, f64) = (30.0, 50.0);
+/// A swing above this (degrees) is almost surely a mistake.
+const SWING_PLAUSIBLE_MAX_DEG: f64 = 60.0;
+/// The largest cam the design is asked for, metres: a bound on the cam centre's distance
+/// from the roller centre B₀ when the centre is searched for. The search works to an
+/// absolute 1e-12 m, which the spacing of doubles stops resolving beyond a few kilometres
+/// (the search would then never end); no course cam comes near it, and a cam this size means
+/// a unit or a phase written wrong.
+const SIZE_MAX: f64 = 1e3;
+
+/// The follower as resolved, with where its lift was written.
+struct FollowerInput {
+    follower: Follower,
+    /// Metres or radians.
+    lift: f64,
+    lift_loc: Location,
+    lift_field: &'static str,
+    placement: Placement,
+    offset_auto: bool,
+}
+
+/// Resolves the section and designs the cam.
+pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Result<CamProject, ModelError> {
+    let c = &spec.value;
+    let f = follower(&c.follower, warnings)?;
+    let phases = phases(&c.phases_deg)?;
+    let laws = laws(&c.law)?;
+    let allowed = allowed(&c.pressure_angle_deg, warnings)?;
+    let (roller, roller_loc) = roller(c.roller.as_ref(), spec.referenced)?;
+    let sense = match c.sense.as_ref().map(|s| (s.value.trim(), s.referenced)) {
+        None | Some(("ccw", _)) => Sense::Ccw,
+        Some(("cw", _)) => Sense::Cw,
+        Some((other, loc)) => {
+            return Err(invalid(
+                loc,
+                "cam.sense",
+                format!("unknown sense '{other}': the cam turns `cw` (clockwise) or `ccw` (counter-clockwise)"),
+            ));
+        }
+    };
+    let program = Program::new(phases.rise, phases.far_dwell, phases.ret, laws, f.lift).map_err(|e| {
+        let (loc, field) = match &e {
+            ProgramError::Phase { phase: "rise", .. } => (at(&c.phases_deg.value.rise), "cam.phases_deg.rise"),
+            ProgramError::Phase { .. } => (at(&c.phases_deg.value.ret), "cam.phases_deg.return"),
+            ProgramError::Dwell(_) => {
+                (c.phases_deg.value.far_dwell.as_ref().map_or(at(&c.phases_deg), at), "cam.phases_deg.far_dwell")
+            }
+            ProgramError::OverTurn(_) => (at(&c.phases_deg), "cam.phases_deg"),
+            ProgramError::Lift(_) => (f.lift_loc, f.lift_field),
+        };
+        invalid(loc, field, e.to_string())
+    })?;
+    let cam = CamSpec { follower: f.follower, program, allowed, placement: f.placement, roller, sense };
+    if let Some(size) = size_bound(&cam)
+        && (size.is_nan() || size > SIZE_MAX)
+    {
+        return Err(invalid(
+            spec.referenced,
+            FIELD,
+            format!(
+                "this cam would be too large to design: its centre could lie up to {size:.3e} m from the roller (at most {SIZE_MAX} m): check that lengths are in metres and angles in degrees, that no phase is tiny, and that the swing is not nearly twice the allowed pressure angle"
+            ),
+        ));
+    }
+    let design = crate::cams::design(&cam).map_err(|e| {
+        let (loc, field) = match &e {
+            CamError::RollerTooLarge { .. } | CamError::Roller(_) => (roller_loc, "cam.roller"),
+            CamError::Radius(RadiusError::SwingTooLarge { .. }) => (f.lift_loc, f.lift_field),
+            CamError::Radius(RadiusError::Allowed(_)) => (at(&c.pressure_angle_deg), "cam.pressure_angle_deg"),
+            CamError::Radius(RadiusError::OffsetOfRocker) => (at(&c.follower), "cam.follower"),
+        };
+        invalid(loc, field, e.to_string())
+    })?;
+    if !(design.centre.r_min.is_finite() && design.centre.r_min > 0.0 && !design.rho_min.is_nan()) {
+        return Err(invalid(
+            spec.referenced,
+            FIELD,
+            format!(
+                "the cam cannot be designed from this input (r_min = {} m, ρ_min = {} m): check the phases, the lift and the pressure angle",
+                design.centre.r_min, design.rho_min
+            ),
+        ));
+    }
+    for w in &design.warnings {
+        warnings.push(warning(roller_loc, "cam.roller", cam_warning(w)));
+    }
+    let mut assumptions = Vec::new();
+    for (i, a) in c.assumptions.iter().enumerate() {
+        text::check(&format!("{FIELD}.assumptions[{i}]"), a, Lines::Many)?;
+        assumptions.push(a.value.clone());
+    }
+    Ok(CamProject {
+        design,
+        laws,
+        roller_auto: matches!(roller, Roller::Auto),
+        offset_auto: f.offset_auto,
+        assumptions,
+    })
+}
+
+/// An upper bound on the distance of a searched-for cam centre from B₀, metres: every
+/// velocity-analog point B′ lies within |B′|max of B₀, and the admissible region's floor above
+/// B₀ is at most |B′|max·(1 + cot γ), γ the smallest angle of a wedge's side to the viewing
+/// direction ([`crate::cams::radius`]). `None` when the centre is not searched for (a given
+/// offset) or when the design refuses the swing itself.
+fn size_bound(spec: &CamSpec) -> Option<f64> {
+    if spec.placement != Placement::Free {
+        return None;
+    }
+    let p = &spec.program;
+    // The largest |ds/dφ| (or |dβ/dφ|) over both phases.
+    let rate = (p.lift * p.rise_law.peaks().0 / p.rise).max(p.lift * p.return_law.peaks().0 / p.ret);
+    let (smallest, largest) = (spec.allowed.rise.min(spec.allowed.ret), spec.allowed.rise.max(spec.allowed.ret));
+    let (reach, half) = match spec.follower {
+        Follower::Translating => (p.lift + rate, 0.0),
+        Follower::Rocker { length } => (length * (2.0 + rate), p.lift / 2.0),
+    };
+    let gamma = (smallest - half).min(std::f64::consts::PI - largest - half);
+    if gamma <= 1e-9 * smallest {
+        return None;
+    }
+    Some(reach * (1.0 + 1.0 / crate::num::math::tan(gamma)))
+}
+
+fn cam_warning(w: &CamWarning) -> String {
+    match *w {
+        CamWarning::RollerBelowCourse { r, r_min, rho_min } => format!(
+            "the automatic roller is {:.1} mm, below the course's 0.25·r_min = {:.3} mm (r_min = {:.3} mm), to stay under 0.7·ρ_min (ρ_min = {:.3} mm, the pitch profile's smallest convex radius of curvature)",
+            r * 1e3,
+            0.25 * r_min * 1e3,
+            r_min * 1e3,
+            rho_min * 1e3
+        ),
+        CamWarning::RollerNearCurvature { r, rho_min } => format!(
+            "the roller ({:.3} mm) is above 0.8·ρ_min = {:.3} mm (ρ_min = {:.3} mm, the pitch profile's smallest convex radius of curvature): the working profile is nearly pointed there",
+            r * 1e3,
+            0.8 * rho_min * 1e3,
+            rho_min * 1e3
+        ),
+        CamWarning::RollerOutsideCourse { r, r_min } => format!(
+            "the roller ({:.3} mm) is {:.3}·r_min, outside the course's 0.25–0.4·r_min = {:.3}–{:.3} mm (r_min = {:.3} mm)",
+            r * 1e3,
+            r / r_min,
+            0.25 * r_min * 1e3,
+            0.4 * r_min * 1e3,
+            r_min * 1e3
+        ),
+    }
+}
+
+/// Warns about a length that is almost surely in the wrong unit or a slip.
+fn plausible_length(v: &Spanned<Finite>, field: &str, what: &str, warnings: &mut Vec<Warning>) {
+    let x = v.value.0;
+    if x >= LENGTH_LOOKS_LIKE_MM {
+        warnings.push(warning(
+            at(v),
+            field,
+            format!(
+                "a {what} of {x} m looks like millimetres written as metres: lengths are in metres ({} m?)",
+                x * 1e-3
+            ),
+        ));
+    } else if x < LENGTH_TINY {
+        warnings.push(warning(
+            at(v),
+            field,
+            format!("a {what} of {x} m ({} mm) is implausibly small: lengths are in metres", x * 1e3),
+        ));
+    }
+}
+
+fn follower(spec: &Spanned<FollowerFileSpec>, warnings: &mut Vec<Warning>) -> Result<FollowerInput, ModelError> {
+    match (&spec.value.rocker, &spec.value.translating) {
+        (Some(r), None) => {
+            let (length, swing) = (&r.value.length, &r.value.swing_deg);
+            if length.value.0 <= 0.0 {
+                return Err(invalid(
+                    at(length),
+                    "cam.follower.rocker.length",
+                    format!("the rocker's length must be positive (metres), not {}", length.value.0),
+                ));
+            }
+            let s = swing.value.0;
+            if s <= 0.0 || s >= 180.0 {
+                return Err(invalid(
+                    at(swing),
+                    "cam.follower.rocker.swing_deg",
+                    format!("the swing must be an angle between 0° and 180° (exclusive), not {s}°"),
+                ));
+            }
+            plausible_length(length, "cam.follower.rocker.length", "rocker length", warnings);
+            if s > SWING_PLAUSIBLE_MAX_DEG {
+                warnings.push(warning(
+                    at(swing),
+                    "cam.follower.rocker.swing_deg",
+                    format!(
+                        "a swing of {s}° is unusually large for a cam's rocker (the course's are below {SWING_PLAUSIBLE_MAX_DEG}°)"
+                    ),
+                ));
+            }
+            Ok(FollowerInput {
+                follower: Follower::Rocker { length: length.value.0 },
+                lift: s.to_radians(),
+                lift_loc: at(swing),
+                lift_field: "cam.follower.rocker.swing_deg",
+                placement: Placement::Free,
+                offset_auto: false,
+            })
+        }
+        (None, Some(t)) => {
+            let stroke = &t.value.stroke;
+            if stroke.value.0 <= 0.0 {
+                return Err(invalid(
+                    at(stroke),
+                    "cam.follower.translating.stroke",
+                    format!("the stroke must be positive (metres), not {}", stroke.value.0),
+                ));
+            }
+            plausible_length(stroke, "cam.follower.translating.stroke", "stroke", warnings);
+            let (placement, offset_auto) = match t.value.offset.as_ref().map(|o| (&o.value, o.referenced)) {
+                None => (Placement::Offset(0.0), false),
+                Some((Scalar::Number(e), loc)) => {
+                    if e.abs() >= LENGTH_LOOKS_LIKE_MM {
+                        warnings.push(warning(
+                            loc,
+                            "cam.follower.translating.offset",
+                            format!(
+                                "an offset of {e} m looks like millimetres written as metres: lengths are in metres"
+                            ),
+                        ));
+                    }
+                    (Placement::Offset(*e), false)
+                }
+                Some((Scalar::Word(w), _)) if w.trim() == "auto" => (Placement::Free, true),
+                Some((Scalar::Word(w), loc)) => {
+                    return Err(invalid(
+                        loc,
+                        "cam.follower.translating.offset",
+                        format!("'{w}': give the offset in metres or `auto` (the offset of the smallest cam)"),
+                    ));
+                }
+            };
+            Ok(FollowerInput {
+                follower: Follower::Translating,
+                lift: stroke.value.0,
+                lift_loc: at(stroke),
+                lift_field: "cam.follower.translating.stroke",
+                placement,
+                offset_auto,
+            })
+        }
+        (Some(_), Some(_)) => Err(invalid(
+            at(spec),
+            "cam.follower",
+            "both `rocker` and `translating` are given: the follower is exactly one of them",
+        )),
+        (None, None) => Err(invalid(
+            at(spec),
+            "cam.follower",
+            "no follower: give exactly one of `rocker: {length, swing_deg}` and `translating: {stroke, offset}`",
+        )),
+    }
+}
+
+/// The phases in radians.
+struct Phases {
+    rise: f64,
+    far_dwell: f64,
+    ret: f64,
+}
+
+fn phases(spec: &Spanned<PhasesFileSpec>) -> Result<Phases, ModelError> {
+    let p = &spec.value;
+    for (v, field, name) in [(&p.rise, "cam.phases_deg.rise", "rise"), (&p.ret, "cam.phases_deg.return", "return")] {
+        if v.value.0 <= 0.0 {
+            return Err(invalid(
+                at(v),
+                field,
+                format!("the {name} phase must be a positive angle (degrees), not {}°", v.value.0),
+            ));
+        }
+    }
+    let dwell = p.far_dwell.as_ref().map_or(0.0, |d| d.value.0);
+    if let Some(d) = &p.far_dwell
+        && dwell < 0.0
+    {
+        return Err(invalid(
+            at(d),
+            "cam.phases_deg.far_dwell",
+            format!("the far dwell must be an angle ≥ 0 (degrees; 0 or absent for none), not {dwell}°"),
+        ));
+    }
+    let total = p.rise.value.0 + dwell + p.ret.value.0;
+    if total > 360.0 {
+        return Err(invalid(
+            at(spec),
+            "cam.phases_deg",
+            format!(
+                "rise + far dwell + return = {} + {dwell} + {} = {total}° exceeds a turn (360°); the near dwell is the rest of the turn",
+                p.rise.value.0, p.ret.value.0
+            ),
+        ));
+    }
+    Ok(Phases { rise: p.rise.value.0.to_radians(), far_dwell: dwell.to_radians(), ret: p.ret.value.0.to_radians() })
+}
+
+/// The accepted law keys and numbers, for an error message.
+fn known_laws() -> String {
+    let keys: Vec<String> = Law::ALL
+        .iter()
+        .map(|l| match l.guide_number() {
+            Some(n) => format!("{} ({n})", l.key()),
+            None => l.key().to_string(),
+        })
+        .collect();
+    format!("known: {}; or the guide's number 1–6", keys.join(", "))
+}
+
+fn law(v: &Scalar, loc: Location, field: &str) -> Result<Law, ModelError> {
+    let found = match v {
+        Scalar::Word(w) => Law::by_key(w),
+        Scalar::Number(x) if x.fract() == 0.0 && (1.0..=6.0).contains(x) => Law::by_key(&format!("{x}")),
+        Scalar::Number(_) => None,
+    };
+    found.ok_or_else(|| {
+        let shown = match v {
+            Scalar::Word(w) => format!("'{w}'"),
+            Scalar::Number(x) => format!("{x}"),
+        };
+        invalid(loc, field, format!("unknown law {shown} ({})", known_laws()))
+    })
+}
+
+fn laws(spec: &Spanned<PerPhase>) -> Result<(Law, Law), ModelError> {
+    match &spec.value {
+        PerPhase::Both(v) => {
+            let l = law(v, at(spec), "cam.law")?;
+            Ok((l, l))
+        }
+        PerPhase::Each { rise, ret } => {
+            Ok((law(&rise.value, at(rise), "cam.law.rise")?, law(&ret.value, at(ret), "cam.law.return")?))
+        }
+    }
+}
+
+fn allowed_angle(v: &Scalar, loc: Location, field: &str, warnings: &mut Vec<Warning>) -> Result<f64, ModelError> {
+    let a = match v {
+        Scalar::Number(a) => *a,
+        Scalar::Word(w) => {
+            return Err(invalid(
+                loc,
+                field,
+                format!("'{w}': give the allowed pressure angle in degrees, or `{{rise: …, return: …}}`"),
+            ));
+        }
+    };
+    if !(a > 0.0 && a < 90.0) {
+        return Err(invalid(
+            loc,
+            field,
+            format!("the allowed pressure angle must lie between 0° and 90° (exclusive), not {a}°"),
+        ));
+    }
+    let (lo, hi) = COURSE_ALLOWED_DEG;
+    if !(lo..=hi).contains(&a) {
+        warnings.push(warning(
+            loc,
+            field,
+            format!("an allowed pressure angle of {a}° is outside the course's {lo}–{hi}°"),
+        ));
+    }
+    Ok(a.to_radians())
+}
+
+fn allowed(spec: &Spanned<PerPhase>, warnings: &mut Vec<Warning>) -> Result<Allowed, ModelError> {
+    match &spec.value {
+        PerPhase::Both(v) => {
+            let a = allowed_angle(v, at(spec), "cam.pressure_angle_deg", warnings)?;
+            Ok(Allowed { rise: a, ret: a })
+        }
+        PerPhase::Each { rise, ret } => Ok(Allowed {
+            rise: allowed_angle(&rise.value, at(rise), "cam.pressure_angle_deg.rise", warnings)?,
+            ret: allowed_angle(&ret.value, at(ret), "cam.pressure_angle_deg.return", warnings)?,
+        }),
+    }
+}
+
+/// The roller asked for, and where (the section's line when it is the default).
+fn roller(spec: Option<&Spanned<Scalar>>, section: Location) -> Result<(Roller, Location), ModelError> {
+    let Some(s) = spec else {
+        return Ok((Roller::Auto, section));
+    };
+    let loc = at(s);
+    let roller = match &s.value {
+        Scalar::Number(r) if *r > 0.0 => Roller::Radius(*r),
+        Scalar::Number(r) => {
+            return Err(invalid(
+                loc,
+                "cam.roller",
+                format!("the roller radius must be positive (metres), not {r}; `knife` for a knife edge"),
+            ));
+        }
+        Scalar::Word(w) => match w.trim() {
+            "auto" => Roller::Auto,
+            "knife" => Roller::Knife,
+            _ => {
+                return Err(invalid(
+                    loc,
+                    "cam.roller",
+                    format!("'{w}': give `auto`, a radius in metres, or `knife` (a knife edge)"),
+                ));
+            }
+        },
+    };
+    Ok((roller, loc))
+}

@@ -1,0 +1,263 @@
+//! The law's three diagrams as the course draws them, stacked: s(φ) on top, ds/dφ, then
+//! d²s/dφ² at the bottom, over the working angle at μ_φ. The acceleration analog is the given
+//! law; the velocity analog and the displacement are drawn as the chord integration builds them
+//! (thick), each with its pole at H to the left of its origin and the rays to the mid-ordinates,
+//! the exact curves thin over them. Every scale is written to the left of its graph.
+
+use super::labels::CamLabels;
+use crate::cams::Design;
+use crate::cams::follower::Follower;
+use crate::cams::integrate::Integrated;
+use crate::drawing::fmt;
+use crate::drawing::labels::{Common, Language};
+use crate::drawing::place::Labels;
+use crate::drawing::plot::{Axis, Plot, round_ticks};
+use crate::drawing::scale;
+use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text};
+use crate::drawing::text::LabelText;
+use kurbo::{Point, Rect};
+
+/// The chosen scales: μ_φ in degrees and radians per mm, the three ordinate scales (the
+/// lift's unit — metres or radians — per mm, per radian for the analogs) and the poles, mm.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Scales {
+    pub mu_phi_deg: f64,
+    pub mu_phi_rad: f64,
+    pub mu_s: f64,
+    pub mu_ds: f64,
+    pub mu_dds: f64,
+    pub h1: f64,
+    pub h2: f64,
+}
+
+/// The acceleration analog's peak and the lift's most height, mm.
+const ACCELERATION_MM: f64 = 40.0;
+const LIFT_MAX_MM: f64 = 80.0;
+/// The working angle's target width, mm.
+const WIDTH_MM: f64 = 200.0;
+
+/// The course's scales for diagrams stacked in `height` mm: μ_φ round; μ_s round with s and
+/// ds/dφ sharing it (H1 = 1/μ_φ), as large as the height allows with the lift at most
+/// [`LIFT_MAX_MM`]; μ_d²s/dφ² round, H2 following from μ_ds/dφ = μ_d²s/dφ²·H2·μ_φ.
+pub fn scales(d: &Design, height: f64) -> Scales {
+    let p = &d.spec.program;
+    let work = (p.rise + p.far_dwell + p.ret).to_degrees();
+    let mu_phi_deg = scale::round_up(work / WIDTH_MM);
+    let mu_phi_rad = mu_phi_deg.to_radians();
+    let (vmax, amax) = peaks(d);
+    // The lift and the velocity's two signs share what the acceleration and gaps leave.
+    let room = (height - 2.0 * ACCELERATION_MM - 3.0 * GAP - 8.0).max(40.0);
+    let mu_s = scale::round_up(((p.lift + 2.0 * vmax) / room).max(p.lift / LIFT_MAX_MM));
+    let mu_dds = scale::round_up(amax / ACCELERATION_MM);
+    Scales { mu_phi_deg, mu_phi_rad, mu_s, mu_ds: mu_s, mu_dds, h1: 1.0 / mu_phi_rad, h2: mu_s / (mu_dds * mu_phi_rad) }
+}
+
+/// The largest |ds/dφ| and |d²s/dφ²| over both phases (from the laws' peak coefficients).
+fn peaks(d: &Design) -> (f64, f64) {
+    let p = &d.spec.program;
+    let (rv, ra) = p.rise_law.peaks();
+    let (tv, ta) = p.return_law.peaks();
+    let h = p.lift;
+    ((rv * h / p.rise).max(tv * h / p.ret), (ra * h / (p.rise * p.rise)).max(ta * h / (p.ret * p.ret)))
+}
+
+/// What the diagrams measured.
+pub struct Drawn {
+    pub scales: Scales,
+    /// The bottom of the last diagram, mm.
+    pub bottom: f64,
+}
+
+/// Vertical room of one diagram besides its data: the title above, the axis values below.
+const GAP: f64 = 14.0;
+
+/// Draws the three diagrams from the top of `area`; the poles take the room at its left.
+pub fn draw(
+    g: &mut Group,
+    area: Rect,
+    d: &Design,
+    integrated: &[Integrated; 2],
+    l: &CamLabels,
+    c: &Common,
+    lang: Language,
+) -> Drawn {
+    let sc = scales(d, area.height());
+    let p = &d.spec.program;
+    let work = p.rise + p.far_dwell + p.ret;
+    let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
+    let (vmax, amax) = peaks(d);
+    // Room left of the poles for their names.
+    let x0 = area.x0 + sc.h1.max(sc.h2) + POLE_NAME;
+    let x_axis = |_numbered: bool| Axis {
+        lo: 0.0,
+        hi: work.to_degrees(),
+        mu: sc.mu_phi_deg,
+        name: "φ".into(),
+        ticks: division_ticks(integrated),
+    };
+    let (s_name, v_name, a_name) =
+        if rocker { ("β", "dβ/dφ", "d²β/dφ²") } else { ("s", "ds/dφ", "d²s/dφ²") };
+    let exact = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
+        let n = (work.to_degrees() * 4.0).ceil() as usize;
+        (0..=n)
+            .map(|k| {
+                // Just inside the working angle at its end, where `at` belongs to the near dwell.
+                let phi = (work * k as f64 / n as f64).min(work - 1e-12);
+                (phi.to_degrees(), f(phi))
+            })
+            .collect()
+    };
+    // A translating follower's scales are all m/mm; a rocker's analogs have no unit.
+    let unit = if rocker { l.unit_per_mm() } else { c.unit_m_per_mm() };
+    let mut top = area.y0;
+
+    // s(φ): the lift above the axis.
+    let s_plot = Plot {
+        origin: Point::new(x0, top + GAP + p.lift / sc.mu_s),
+        x: x_axis(true),
+        y: Axis {
+            lo: 0.0,
+            hi: p.lift,
+            mu: sc.mu_s,
+            name: s_name.into(),
+            ticks: round_ticks(0.0, p.lift, sc.mu_s, lang),
+        },
+    };
+    s_plot.draw_axes(g);
+    let mut labels = Labels::new();
+    s_plot.line(g, &exact(&|phi| p.at(phi).s), THIN);
+    s_plot.line(g, &integrated_curve(integrated, |i| &i.s), MAIN);
+    number_divisions(&s_plot, integrated, &mut labels);
+    let s_top = Point::new(area.x0, s_plot.origin.y - p.lift / sc.mu_s);
+    if rocker {
+        let deg = format!("({} {})", fmt::trimmed(sc.mu_s.to_degrees(), lang), l.unit_deg_per_mm());
+        scale_text(g, s_top, &[mu("β", sc.mu_s, l.unit_rad_per_mm(), lang), LabelText::new(deg, "")]);
+    } else {
+        scale_text(g, s_top, &[mu("s", sc.mu_s, unit, lang)]);
+    }
+    top = s_plot.origin.y + GAP;
+
+    // ds/dφ: both signs.
+    let v_plot = Plot {
+        origin: Point::new(x0, top + vmax / sc.mu_ds + 4.0),
+        x: x_axis(false),
+        y: Axis {
+            lo: -vmax,
+            hi: vmax,
+            mu: sc.mu_ds,
+            name: v_name.into(),
+            ticks: unlabelled(round_ticks(-vmax, vmax, sc.mu_ds, lang)),
+        },
+    };
+    v_plot.draw_axes(g);
+    v_plot.line(g, &exact(&|phi| p.at(phi).ds), THIN);
+    v_plot.line(g, &integrated_curve(integrated, |i| &i.ds), MAIN);
+    scale_text(g, Point::new(area.x0, v_plot.origin.y - vmax / sc.mu_ds), &[mu(v_name, sc.mu_ds, unit, lang)]);
+    // The displacement's pole: rays to the mean ordinates of the velocity's chords.
+    let means: Vec<f64> = integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
+    pole(g, &v_plot, sc.h1, &means, sc.mu_ds, "H₁", c, lang);
+    top = v_plot.origin.y + vmax / sc.mu_ds + GAP;
+
+    // d²s/dφ²: the given law, with its mid-ordinates.
+    let a_plot = Plot {
+        origin: Point::new(x0, top + amax / sc.mu_dds + 4.0),
+        x: x_axis(false),
+        y: Axis {
+            lo: -amax,
+            hi: amax,
+            mu: sc.mu_dds,
+            name: a_name.into(),
+            ticks: unlabelled(round_ticks(-amax, amax, sc.mu_dds, lang)),
+        },
+    };
+    a_plot.draw_axes(g);
+    a_plot.line(g, &exact(&|phi| p.at(phi).dds), MAIN);
+    for i in integrated {
+        for (k, &a) in i.mid_dds.iter().enumerate() {
+            let mid = (i.phi[k] + i.phi[k + 1]) / 2.0;
+            g.line(a_plot.at(mid.to_degrees(), 0.0), a_plot.at(mid.to_degrees(), a), DASHED);
+        }
+    }
+    let phi_rad = LabelText::new(format!("= {} {}", fmt::value(sc.mu_phi_rad, lang), l.unit_rad_per_mm()), "");
+    scale_text(
+        g,
+        Point::new(area.x0, a_plot.origin.y - amax / sc.mu_dds),
+        &[mu(a_name, sc.mu_dds, unit, lang), mu("φ", sc.mu_phi_deg, l.unit_deg_per_mm(), lang), phi_rad],
+    );
+    let mids: Vec<f64> = integrated.iter().flat_map(|i| i.mid_dds.iter().copied()).collect();
+    pole(g, &a_plot, sc.h2, &mids, sc.mu_dds, "H₂", c, lang);
+    labels.place(g, area);
+    Drawn { scales: sc, bottom: a_plot.origin.y + amax / sc.mu_dds + GAP }
+}
+
+/// The division points along the x axis; their numbers are placed as labels, clear of the
+/// curves (the integrated displacement may end a little below the axis).
+fn division_ticks(integrated: &[Integrated; 2]) -> Vec<(f64, String)> {
+    integrated.iter().flat_map(|i| i.phi.iter().map(|&phi| (phi.to_degrees(), String::new()))).collect()
+}
+
+/// The positions' numbers under the displacement's axis (0 at the start of the rise).
+fn number_divisions(plot: &Plot, integrated: &[Integrated; 2], labels: &mut Labels) {
+    let phis: Vec<f64> = integrated.iter().flat_map(|i| i.phi.iter().copied()).collect();
+    for (&phi, name) in phis.iter().zip(super::nomogram::position_labels(&phis)) {
+        if let Some(name) = name {
+            labels.add_text(
+                plot.at(phi.to_degrees(), 0.0) + kurbo::Vec2::new(0.0, 1.5),
+                kurbo::Vec2::new(0.0, 1.0),
+                &name,
+                2.5,
+            );
+        }
+    }
+}
+
+/// Tick marks without their values: on a graph with a pole the rays cross the values' place;
+/// its scale is written instead.
+fn unlabelled(ticks: Vec<(f64, String)>) -> Vec<(f64, String)> {
+    ticks.into_iter().map(|(v, _)| (v, String::new())).collect()
+}
+
+/// "μ_q = value unit", with q as a subscript.
+fn mu(q: &str, value: f64, unit: &str, lang: Language) -> LabelText {
+    LabelText::new("μ", q).with_tail(format!(" = {} {unit}", fmt::trimmed(value, lang)))
+}
+
+/// Room left of a pole for its name, mm.
+const POLE_NAME: f64 = 26.0;
+
+/// An integrated quantity over the working angle: the rise's division points, the dwell,
+/// the return's.
+fn integrated_curve(integrated: &[Integrated; 2], f: impl Fn(&Integrated) -> &Vec<f64>) -> Vec<(f64, f64)> {
+    integrated.iter().flat_map(|i| i.phi.iter().zip(f(i)).map(|(&p, &v)| (p.to_degrees(), v))).collect()
+}
+
+/// Lines of scale text at the graph's top left (above the pole's rays), from `at` down.
+fn scale_text(g: &mut Group, at: Point, lines: &[LabelText]) {
+    for (k, t) in lines.iter().enumerate() {
+        t.draw(g, Point::new(at.x, at.y + 3.0 + 4.5 * k as f64), 2.5, Anchor::Start);
+    }
+}
+
+/// The pole at H left of the origin on the x axis, and its rays to the ordinates `ys`
+/// carried to the y axis: each chord of the integral is drawn parallel to its ray.
+#[allow(clippy::too_many_arguments)]
+fn pole(g: &mut Group, plot: &Plot, h: f64, ys: &[f64], mu: f64, name: &str, c: &Common, lang: Language) {
+    let p = Point::new(plot.origin.x - h, plot.origin.y);
+    g.dot(p, 0.6);
+    let text = format!("{name} = {} {}", fmt::value(h, lang), c.unit_mm());
+    g.text(Text::new(Point::new(p.x - 1.5, p.y + 1.0), text, 2.5, Anchor::End));
+    for &y in ys {
+        g.line(p, Point::new(plot.origin.x, plot.origin.y - y / mu), THIN);
+    }
+}
+
+/// The integration's error on this sheet, in percent of the lift (s) and of the largest
+/// |ds/dφ|, over both phases.
+pub fn error_percent(d: &Design, integrated: &[Integrated; 2]) -> (f64, f64) {
+    let (vmax, _) = peaks(d);
+    let e = integrated
+        .iter()
+        .map(|i| i.error(&d.spec.program))
+        .fold((0.0f64, 0.0f64), |m, e| (m.0.max(e.s), m.1.max(e.ds)));
+    (e.0 / d.spec.program.lift * 100.0, e.1 / vmax * 100.0)
+}

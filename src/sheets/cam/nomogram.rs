@@ -1,0 +1,199 @@
+//! The nomogram of the minimum radius, drawn in the follower's frame at one round scale:
+//! the roller centre's positions B_k with their velocity-analog segments to B′_k (across the
+//! axis for a translating follower, along the rocker lines for a rocker), the B′ curve, the
+//! course's limiting lines at the allowed angle for the rise and the return, the exact
+//! boundary of the admissible zone, and the centre O with r_min (and e, or the pivot and the
+//! centre distance).
+
+use super::labels::CamLabels;
+use crate::cams::Design;
+use crate::cams::follower::Follower;
+use crate::cams::radius::Phase;
+use crate::drawing::fmt;
+use crate::drawing::labels::{Common, Language};
+use crate::drawing::place::Labels;
+use crate::drawing::scale;
+use crate::drawing::scene::{AXIS, Anchor, DASHED, Group, MAIN, THIN};
+use crate::drawing::symbols::frame_pivot;
+use crate::drawing::text::LabelText;
+use crate::num::math::Norm;
+use kurbo::{Point, Rect, Vec2};
+
+/// A follower-frame picture on paper: metres → mm, mirrored for a counter-clockwise cam.
+#[derive(Debug, Clone, Copy)]
+pub struct View {
+    pub origin: Point,
+    /// m per paper mm.
+    pub mu: f64,
+    pub mirror: bool,
+}
+
+impl View {
+    pub fn at(&self, v: Vec2) -> Point {
+        let x = if self.mirror { -v.x } else { v.x };
+        Point::new(self.origin.x + x / self.mu, self.origin.y - v.y / self.mu)
+    }
+}
+
+/// The cam angles of the numbered positions: each phase's division points.
+pub fn positions(d: &Design, divisions: usize) -> Vec<f64> {
+    Phase::BOTH
+        .iter()
+        .flat_map(|ph| {
+            let (a, b) = ph.span(&d.spec.program);
+            (0..=divisions).map(move |k| a + (b - a) * k as f64 / divisions as f64)
+        })
+        .collect()
+}
+
+/// Each position's number as the drawing writes it: a position that coincides with the one
+/// before it (the rise's end and the return's start without a far dwell) shares its label
+/// ("8, 9") and gets none of its own.
+pub fn position_labels(phis: &[f64]) -> Vec<Option<String>> {
+    let mut out: Vec<Option<String>> = Vec::with_capacity(phis.len());
+    for (k, &phi) in phis.iter().enumerate() {
+        if k > 0 && (phi - phis[k - 1]).abs() < 1e-12 {
+            if let Some(Some(prev)) = out.last_mut() {
+                prev.push_str(&format!(", {k}"));
+            }
+            out.push(None);
+        } else {
+            out.push(Some(k.to_string()));
+        }
+    }
+    out
+}
+
+/// Every point the nomogram must show, follower frame.
+fn extent_points(d: &Design, phis: &[f64]) -> Vec<Vec2> {
+    let r = &d.region;
+    let mut pts: Vec<Vec2> = phis.iter().flat_map(|&phi| [r.state(phi).b, r.state(phi).analog]).collect();
+    pts.push(d.centre.o);
+    pts.extend(d.spec.follower.pivot());
+    pts
+}
+
+/// How far a ray from `p` (inside the box) along the unit `dir` runs before it leaves the box.
+fn exit(p: Vec2, dir: Vec2, lo: Vec2, hi: Vec2) -> f64 {
+    let along = |p: f64, d: f64, lo: f64, hi: f64| {
+        if d > 1e-12 {
+            (hi - p) / d
+        } else if d < -1e-12 {
+            (lo - p) / d
+        } else {
+            f64::INFINITY
+        }
+    };
+    along(p.x, dir.x, lo.x, hi.x).min(along(p.y, dir.y, lo.y, hi.y)).max(0.0)
+}
+
+/// Draws the nomogram in `area`; returns its scale, m/mm.
+#[allow(clippy::too_many_arguments)]
+pub fn draw(
+    g: &mut Group,
+    area: Rect,
+    d: &Design,
+    phis: &[f64],
+    labels: &mut Labels,
+    l: &CamLabels,
+    c: &Common,
+    lang: Language,
+) -> f64 {
+    let mirror = d.spec.sense == crate::cams::Sense::Ccw;
+    let pts = extent_points(d, phis);
+    let (mut lo, mut hi) = (Vec2::new(f64::MAX, f64::MAX), Vec2::new(f64::MIN, f64::MIN));
+    for p in &pts {
+        lo = Vec2::new(lo.x.min(p.x), lo.y.min(p.y));
+        hi = Vec2::new(hi.x.max(p.x), hi.y.max(p.y));
+    }
+    // Room below O for the limiting lines to meet, and round the picture for labels.
+    let pad = 0.15 * (hi - lo).norm();
+    lo -= Vec2::new(pad, pad);
+    hi += Vec2::new(pad, pad * 0.5);
+    let mu = scale::round_up(((hi.x - lo.x) / area.width()).max((hi.y - lo.y) / area.height()));
+    let (cx, cy) = ((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0);
+    let centre = area.center();
+    let mx = if mirror { -cx } else { cx };
+    let view = View { origin: Point::new(centre.x - mx / mu, centre.y + cy / mu), mu, mirror };
+    let r = &d.region;
+    let o = d.centre.o;
+
+    // The follower: its axis, or the rocker's pivot, arc and lines.
+    match d.spec.follower {
+        Follower::Translating => {
+            g.line(view.at(Vec2::new(0.0, lo.y)), view.at(Vec2::new(0.0, hi.y)), AXIS);
+        }
+        Follower::Rocker { length } => {
+            let a = Vec2::new(length, 0.0);
+            frame_pivot(g, view.at(a), 1.5);
+            labels.add_text(view.at(a), Vec2::new(1.0, -1.0), "A", 3.5);
+            let arc: Vec<Point> = (0..=60)
+                .map(|k| view.at(r.state(phis[0] + (phis[phis.len() / 2 - 1] - phis[0]) * k as f64 / 60.0).b))
+                .collect();
+            g.path(arc, false, THIN);
+            for &phi in phis {
+                g.line(view.at(a), view.at(r.state(phi).b), THIN);
+            }
+        }
+    }
+    // The positions and their analog segments.
+    for (&phi, name) in phis.iter().zip(position_labels(phis)) {
+        let s = r.state(phi);
+        g.line(view.at(s.b), view.at(s.analog), THIN);
+        g.dot(view.at(s.analog), 0.45);
+        if let Some(name) = name {
+            labels.add_text_ranked(view.at(s.analog), Vec2::ZERO, &name, 2.5, 2);
+        }
+    }
+    // The B′ curve, exact.
+    for ph in Phase::BOTH {
+        let (a, b) = ph.span(&d.spec.program);
+        let pts: Vec<Point> = (0..=200).map(|k| view.at(r.state(a + (b - a) * k as f64 / 200.0).analog)).collect();
+        g.path(pts, false, MAIN);
+    }
+    // The limiting lines through the most binding B′, to a little below O.
+    for (ph, left) in [(Phase::Rise, true), (Phase::Return, false)] {
+        let (apex, dir, _) = r.limiting_ray(ph, left, o);
+        let reach = exit(apex, dir, lo, hi);
+        g.line(view.at(apex), view.at(apex + dir * reach), THIN);
+        let alpha = ph.allowed(&d.spec.allowed).to_degrees();
+        let sub = if ph == Phase::Rise { l.sub_rise() } else { l.sub_return() };
+        let text = LabelText::new("α", sub).with_tail(format!(" = {}°", fmt::value(alpha, lang)));
+        labels.add_ranked(view.at(apex + dir * reach * 0.85), Vec2::ZERO, text, 2.5, 1);
+    }
+    // The zone's exact boundary across the picture.
+    let (u_lo, u_hi) = (-(hi - lo).norm(), (hi - lo).norm());
+    let boundary: Vec<Point> = (0..=240)
+        .map(|k| {
+            let u = u_lo + (u_hi - u_lo) * k as f64 / 240.0;
+            r.point(u, r.floor(u))
+        })
+        .filter(|p| p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y)
+        .map(|p| view.at(p))
+        .collect();
+    g.path(boundary, false, DASHED);
+    labels.add_text_ranked(view.at(o + r.d * (0.4 * d.centre.r_min)), Vec2::ZERO, l.zone(), 2.5, 3);
+    // O and r_min.
+    g.dot(view.at(o), 0.8);
+    labels.add_text(view.at(o), Vec2::new(-1.0, 1.0), "O", 3.5);
+    g.line(view.at(o), view.at(Vec2::ZERO), MAIN);
+    let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
+        " = {} {}",
+        fmt::value(d.centre.r_min * 1e3, lang),
+        c.unit_mm()
+    ));
+    labels.add(view.at(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5);
+    if let Some(a) = d.spec.follower.pivot() {
+        g.line(view.at(o), view.at(a), DASHED);
+        let dist = d.centre_distance().unwrap_or_default();
+        let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(dist * 1e3, lang), c.unit_mm()));
+        labels.add(view.at((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
+    } else if o.x.abs() > 1e-9 {
+        g.line(view.at(o), view.at(Vec2::new(0.0, o.y)), THIN);
+        let t = format!("e = {} {}", fmt::value(o.x.abs() * 1e3, lang), c.unit_mm());
+        labels.add_text(view.at(Vec2::new(o.x / 2.0, o.y)), Vec2::new(0.0, 1.0), &t, 3.5);
+    }
+    let scale = LabelText::new("μ", "l").with_tail(format!(" = {} {}", fmt::trimmed(mu, lang), c.unit_m_per_mm()));
+    scale.draw(g, Point::new(area.x0, area.y1 - 1.0), 2.5, Anchor::Start);
+    mu
+}

@@ -1,0 +1,136 @@
+//! Sheet 3 as a user builds it: the worked example's cam (a rocker) and the cam fixtures in
+//! every language, a cam-only project, `--sheet 3` without the other sections, the layout
+//! the sheet measures itself, finite outputs, Russian words only on a Russian sheet, and the
+//! diagrams' numbers against the law computed here.
+// Tests compute their references with the platform's math; only src/ must not (clippy.toml).
+#![allow(clippy::disallowed_methods)]
+
+mod common;
+
+use common::{english_on_russian, fixture_text, root};
+use std::f64::consts::PI;
+use tmm_sheets::drawing::labels::Language;
+use tmm_sheets::pipeline;
+use tmm_sheets::project::Project;
+
+/// The cam fixtures, `fixtures/cams/*.yaml`, and the worked example.
+fn cam_projects() -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = std::fs::read_dir(root().join("fixtures/cams"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "yaml"))
+        .map(|p| (p.file_stem().unwrap().to_string_lossy().into_owned(), std::fs::read_to_string(&p).unwrap()))
+        .collect();
+    out.sort();
+    out.insert(0, ("worked-example".into(), pipeline::DEFAULT_PROJECT.to_string()));
+    out
+}
+
+fn sheet3(p: &Project) -> pipeline::Built {
+    pipeline::build(p, &[3]).unwrap_or_else(|e| panic!("{e:#}")).remove(0)
+}
+
+#[test]
+fn the_layout_of_sheet_3_is_clean_and_finite_in_every_language() {
+    for (name, text) in cam_projects() {
+        for lang in Language::ALL {
+            let mut p = pipeline::load(&text).unwrap();
+            p.info.language = lang;
+            if lang == Language::Ru {
+                p.info.title = "Кулачок".into();
+                p.info.institution = "ТГТУ".into();
+                p.info.designation = "ТММ 03.00.00".into();
+                p.cam.as_mut().unwrap().assumptions.clear();
+            }
+            let b = sheet3(&p);
+            let l = &b.output.results["layout"];
+            for key in ["texts_crossed", "text_overlaps", "outside_region"] {
+                assert_eq!(l[key], 0, "{name} {lang:?}: {key}: {}", l["problems"]);
+            }
+            assert!(!b.svg.contains("NaN") && !b.svg.contains("inf"), "{name} {lang:?}: non-finite number in the SVG");
+            let json = serde_json::to_string(&b.output.results).unwrap();
+            assert!(!json.contains("null"), "{name} {lang:?}: a non-finite number became null in results.json");
+            if lang == Language::Ru {
+                for t in b.output.scene.texts() {
+                    assert_eq!(english_on_russian(&t.text), None, "{name}: English on the Russian sheet: {:?}", t.text);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_cam_only_project_builds_sheet_3_alone() {
+    for (name, text) in cam_projects().into_iter().skip(1) {
+        let p = pipeline::load(&text).unwrap_or_else(|e| panic!("{name}: {e:#}"));
+        assert!(p.lever.is_none() && p.gears.is_none(), "{name}");
+        let built = pipeline::build(&p, &[]).unwrap();
+        assert_eq!(built.len(), 1, "{name}");
+        assert_eq!(built[0].output.number, 3);
+        let e = pipeline::build(&p, &[2]).unwrap_err().to_string();
+        assert!(e.contains("needs a `gears` section"), "{name}: {e}");
+    }
+}
+
+/// A mechanism that cannot turn fails sheet 1, and `--sheet 3` still builds.
+#[test]
+fn sheet_3_computes_nothing_of_the_linkage() {
+    let text = fixture_text("worked-example").replacen("lengths: [0.46, 0.39]", "lengths: [0.1, 0.39]", 1);
+    let p = pipeline::load(&text).unwrap();
+    assert!(pipeline::build(&p, &[1]).is_err());
+    assert_eq!(sheet3(&p).output.number, 3);
+}
+
+/// The worked example's results: the guide's rocker, its exact minimum radius admissible, the
+/// finished profile's pressure angles within 45°, the scales of the course's rule.
+#[test]
+fn the_worked_example_cam_is_the_guides_rocker_and_its_results_hold() {
+    let p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+    let r = sheet3(&p).output.results;
+    assert_eq!(r["follower"], "rocker");
+    let r_min = r["r_min"].as_f64().unwrap();
+    // The guide draws 56.22 mm by placing O near the zone's vertex; the exact minimum for the
+    // cycloidal law (assumed) is of that size.
+    assert!((0.050..0.060).contains(&r_min), "{r_min}");
+    for phase in ["rise", "return"] {
+        let a = r["max_pressure_angle_deg"][phase].as_f64().unwrap();
+        assert!(a <= 45.0 + 1e-6 && a > 44.9, "{phase}: {a}");
+    }
+    let roller = r["roller_radius"].as_f64().unwrap();
+    let rho = r["pitch_min_radius_of_curvature"].as_f64().unwrap();
+    assert!(roller < rho && roller <= 0.4 * r_min && roller > 0.2 * r_min, "{roller} {rho} {r_min}");
+    // H1 = 1/μ_φ (rad/mm): s and ds/dφ share one scale.
+    let s = &r["scales"];
+    let h1 = s["h1"].as_f64().unwrap();
+    let mu_phi = s["mu_phi_rad"].as_f64().unwrap();
+    assert!((h1 * mu_phi - 1.0).abs() < 1e-12 && s["mu_s"] == s["mu_ds"], "{s}");
+    let mu_dds = s["mu_dds"].as_f64().unwrap();
+    let h2 = s["h2"].as_f64().unwrap();
+    assert!((s["mu_ds"].as_f64().unwrap() / (h2 * mu_phi) - mu_dds).abs() < 1e-12);
+    // The centre distance and the rocker's start angle are reported.
+    assert!(r["centre_distance"].as_f64().unwrap() > 0.105 && r["rocker_start_deg"].as_f64().unwrap() > 0.0);
+}
+
+/// The law sampled in results.json is the cycloidal law computed here, and the chord
+/// integration's error is of the size the midpoint rule gives for eight divisions.
+#[test]
+fn the_sampled_law_and_the_integration_error_are_the_cycloidal_laws() {
+    let p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+    let r = sheet3(&p).output.results;
+    let (h, phase) = (25f64.to_radians(), 70f64.to_radians());
+    for row in r["law"].as_array().unwrap() {
+        let v: Vec<f64> = row.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+        let phi = v[0].to_radians();
+        if phi > phase {
+            continue;
+        }
+        let x = phi / phase;
+        let s = h * (x - (2.0 * PI * x).sin() / (2.0 * PI));
+        let ds = h / phase * (1.0 - (2.0 * PI * x).cos());
+        assert!((v[1] - s).abs() < 1e-12 && (v[2] - ds).abs() < 1e-12, "φ = {}: {v:?}", v[0]);
+    }
+    let e = &r["integration_error"];
+    assert_eq!(e["divisions"], 8);
+    let es = e["s_percent_of_lift"].as_f64().unwrap();
+    assert!(es > 0.01 && es < 5.0, "{es}");
+}
