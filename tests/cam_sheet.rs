@@ -134,3 +134,16 @@ fn the_sampled_law_and_the_integration_error_are_the_cycloidal_laws() {
     let es = e["s_percent_of_lift"].as_f64().unwrap();
     assert!(es > 0.01 && es < 5.0, "{es}");
 }
+
+/// Where the acceleration jumps (the cosine law at the start of its rise), the law's table
+/// gives the phase's own value, computed here: h·π²/(2φ_rise²), in mm.
+#[test]
+fn the_law_table_gives_the_phases_own_acceleration_at_a_jump() {
+    let text = std::fs::read_to_string(root().join("fixtures/cams/translating-offset-auto.yaml")).unwrap();
+    let p = pipeline::load(&text).unwrap();
+    let b = sheet3(&p);
+    let t = b.output.tables.iter().find(|t| t.stem == "law-rise").unwrap();
+    let row = t.table.rows.iter().find(|r| r.symbol == "d²s/dφ²").unwrap();
+    let expected = 40.0 * PI * PI / (2.0 * (120f64.to_radians()).powi(2));
+    assert!((row.values[0] - expected).abs() < 1e-9, "{} vs {expected}", row.values[0]);
+}

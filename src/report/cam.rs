@@ -28,8 +28,17 @@ fn analog(d: &Design, x: f64) -> f64 {
 pub fn law(d: &Design, name: &str, first: usize, phis: &[f64]) -> NumTable {
     let p = &d.spec.program;
     let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
-    // Just inside a phase at its end: `at` belongs to the next part there.
-    let at = |phi: f64, k: usize| p.at(if k + 1 == phis.len() { phi - 1e-12 } else { phi });
+    // Each position from inside its phase: at the ends `at` belongs to the dwell, and where the
+    // acceleration jumps the table gives the phase's own value.
+    let at = |phi: f64, k: usize| {
+        p.at(if k + 1 == phis.len() {
+            phi - 1e-12
+        } else if k == 0 {
+            phi + 1e-12
+        } else {
+            phi
+        })
+    };
     let col = |f: &dyn Fn(f64, usize) -> f64| phis.iter().enumerate().map(|(k, &phi)| f(phi, k)).collect::<Vec<_>>();
     let (s, v, a) = if rocker { ("β", "dβ/dφ", "d²β/dφ²") } else { ("s", "ds/dφ", "d²s/dφ²") };
     let (us, uv) = if rocker { ("°", "") } else { ("mm", "mm") };
@@ -83,7 +92,11 @@ pub fn results(d: &Design, errors: (f64, f64)) -> NumTable {
     rows.push(row("ρ", "min", "mm", one(d.rho_min * MM)));
     rows.push(row("α", "rise", "°", one(d.max_pressure[0].0.to_degrees())));
     rows.push(row("α", "return", "°", one(d.max_pressure[1].0.to_degrees())));
-    rows.push(row("δs", "", "%", one(errors.0)));
-    rows.push(row("δ(ds/dφ)", "", "%", one(errors.1)));
+    let (s, v) = match d.spec.follower {
+        Follower::Translating => ("δs", "δ(ds/dφ)"),
+        Follower::Rocker { .. } => ("δβ", "δ(dβ/dφ)"),
+    };
+    rows.push(row(s, "", "%", one(errors.0)));
+    rows.push(row(v, "", "%", one(errors.1)));
     NumTable { name: "results".into(), columns: vec!["".into()], rows }
 }

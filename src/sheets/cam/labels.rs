@@ -22,7 +22,7 @@ crate::label_set! {
         unit_per_mm,
         unit_deg,
         phases(rise, dwell, ret, work),
-        integration_note(n, es, ev),
+        integration_note(n, q, dq, es, ev),
         nomogram_title,
         nomogram_note(a),
         zone,

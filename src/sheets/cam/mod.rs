@@ -187,16 +187,16 @@ fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLabels
     let d = &p.design;
     let pr = &d.spec.program;
     let deg = |x: f64| fmt::value(x.to_degrees(), lang);
-    let kind = match d.spec.follower {
-        Follower::Translating => l.follower_translating(),
-        Follower::Rocker { .. } => l.follower_rocker(),
+    let (kind, q, dq) = match d.spec.follower {
+        Follower::Translating => (l.follower_translating(), "s", "ds/dφ"),
+        Follower::Rocker { .. } => (l.follower_rocker(), "β", "dβ/dφ"),
     };
     let mut out = vec![
         format!(
             "{kind}; {}",
             l.phases(&deg(pr.rise), &deg(pr.far_dwell), &deg(pr.ret), &deg(pr.rise + pr.far_dwell + pr.ret))
         ),
-        l.integration_note(&DIVISIONS.to_string(), &fmt::value(errors.0, lang), &fmt::value(errors.1, lang)),
+        l.integration_note(&DIVISIONS.to_string(), q, dq, &fmt::value(errors.0, lang), &fmt::value(errors.1, lang)),
         l.nomogram_note(&deg(d.spec.allowed.rise.min(d.spec.allowed.ret))),
     ];
     if d.roller == 0.0 {
