@@ -158,12 +158,8 @@ impl Region {
     pub fn floor(&self, u: f64) -> f64 {
         Phase::BOTH
             .iter()
-            .map(|&ph| sup(self.program_span(ph), |phi| self.floor_at(ph, phi, u)).1)
+            .map(|&ph| sup(ph.span(&self.program), |phi| self.floor_at(ph, phi, u)).1)
             .fold(f64::NEG_INFINITY, f64::max)
-    }
-
-    fn program_span(&self, phase: Phase) -> (f64, f64) {
-        phase.span(&self.program)
     }
 
     /// The nearest admissible centre to B₀ (the origin).
@@ -189,7 +185,7 @@ impl Region {
 
     /// The largest |pressure angle| of a phase for a centre at `o`, and the φ it is at.
     pub fn max_pressure_angle(&self, phase: Phase, o: Vec2) -> (f64, f64) {
-        sup(self.program_span(phase), |phi| pressure_angle(&self.state(phi), o).abs())
+        sup(phase.span(&self.program), |phi| pressure_angle(&self.state(phi), o).abs())
     }
 
     /// The boundary ray of `phase` on one side (toward −u when `left`) that is the most binding
@@ -205,7 +201,7 @@ impl Region {
             (s.analog, dir)
         };
         // The most binding ray has `at` farthest on its outer side.
-        let (phi, _) = sup(self.program_span(phase), |phi| {
+        let (phi, _) = sup(phase.span(&self.program), |phi| {
             let (apex, dir) = ray(phi);
             let outward = if left { Vec2::new(dir.y, -dir.x) } else { Vec2::new(-dir.y, dir.x) };
             (at - apex).dot(outward) * orientation(self.across, self.d)

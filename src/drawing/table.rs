@@ -115,3 +115,22 @@ impl Table {
         Rect::new(at.x, at.y, at.x + outer_w, at.y + h)
     }
 }
+
+/// Tables drawn in `region` top to bottom, a new column to the right when the next one would
+/// leave the region's bottom; `gap` mm between tables and 6 mm between columns.
+pub fn flow(id: &str, tables: impl IntoIterator<Item = Table>, region: Rect, gap: f64) -> Group {
+    let mut g = Group::new(id, region);
+    let (mut x, mut y, mut col_w) = (region.x0, region.y0, 0.0f64);
+    for table in tables {
+        let (w, h) = table.size();
+        if y + h > region.y1 && y > region.y0 {
+            x += col_w + 6.0;
+            y = region.y0;
+            col_w = 0.0;
+        }
+        table.draw(&mut g, Point::new(x, y));
+        y += h + gap;
+        col_w = col_w.max(w);
+    }
+    g
+}

@@ -62,6 +62,37 @@ pub struct Context<'a> {
     pub sheet_count: u32,
 }
 
+impl Context<'_> {
+    /// The GOST 2.104 title block of sheet `number`, named `sheet_name`, at `scale`, filled
+    /// from the project's information.
+    pub fn title_block(
+        &self,
+        c: &crate::drawing::labels::Common,
+        sheet_name: &str,
+        scale: &str,
+        number: u32,
+    ) -> Result<crate::drawing::scene::Group, TooLong> {
+        use crate::drawing::frame::{self, TitleBlock};
+        let mut tb = crate::drawing::scene::Group::new("title-block", frame::title_block_rect());
+        frame::title_block(
+            &mut tb,
+            c,
+            &TitleBlock {
+                designation: &self.info.designation,
+                sheet_name,
+                project_title: &self.info.title,
+                student: &self.info.student,
+                supervisor: &self.info.supervisor,
+                organisation: &self.info.organisation(),
+                scale,
+                sheet_no: number,
+                sheet_count: self.sheet_count,
+            },
+        )?;
+        Ok(tb)
+    }
+}
+
 /// A finished sheet.
 #[derive(Debug, Clone)]
 pub struct SheetOutput {

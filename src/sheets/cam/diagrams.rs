@@ -88,7 +88,7 @@ pub fn draw(
     let (vmax, amax) = peaks(d);
     // Room left of the poles for their names.
     let x0 = area.x0 + sc.h1.max(sc.h2) + POLE_NAME;
-    let x_axis = |_numbered: bool| Axis {
+    let x_axis = || Axis {
         lo: 0.0,
         hi: work.to_degrees(),
         mu: sc.mu_phi_deg,
@@ -114,7 +114,7 @@ pub fn draw(
     // s(φ): the lift above the axis.
     let s_plot = Plot {
         origin: Point::new(x0, top + GAP + p.lift / sc.mu_s),
-        x: x_axis(true),
+        x: x_axis(),
         y: Axis {
             lo: 0.0,
             hi: p.lift,
@@ -140,7 +140,7 @@ pub fn draw(
     // ds/dφ: both signs.
     let v_plot = Plot {
         origin: Point::new(x0, top + vmax / sc.mu_ds + 4.0),
-        x: x_axis(false),
+        x: x_axis(),
         y: Axis {
             lo: -vmax,
             hi: vmax,
@@ -161,7 +161,7 @@ pub fn draw(
     // d²s/dφ²: the given law, with its mid-ordinates.
     let a_plot = Plot {
         origin: Point::new(x0, top + amax / sc.mu_dds + 4.0),
-        x: x_axis(false),
+        x: x_axis(),
         y: Axis {
             lo: -amax,
             hi: amax,

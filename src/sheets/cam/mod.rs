@@ -16,7 +16,7 @@ use crate::cams::integrate::{self, Integrated};
 use crate::cams::radius::Phase;
 use crate::cams::{CamWarning, Design};
 use crate::drawing::fmt;
-use crate::drawing::frame::{self, A1_H, A1_W, TitleBlock};
+use crate::drawing::frame::{self, A1_H, A1_W};
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::layout::{self, Layout};
 use crate::drawing::place::Labels;
@@ -146,22 +146,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     };
 
     let sheet_name = l.sheet_name();
-    let mut tb = Group::new("title-block", frame::title_block_rect());
-    frame::title_block(
-        &mut tb,
-        c,
-        &TitleBlock {
-            designation: &ctx.info.designation,
-            sheet_name,
-            project_title: &ctx.info.title,
-            student: &ctx.info.student,
-            supervisor: &ctx.info.supervisor,
-            organisation: &ctx.info.organisation(),
-            scale: &fmt::localise(&scale::ratio(prof.mu), lang),
-            sheet_no: KIND.number,
-            sheet_count: ctx.sheet_count,
-        },
-    )?;
+    let tb = ctx.title_block(c, sheet_name, &fmt::localise(&scale::ratio(prof.mu), lang), KIND.number)?;
     let mut groups = vec![fr, dg, nm, pv];
     groups.extend(table_groups);
     groups.push(tb);
@@ -236,21 +221,8 @@ fn table_title<'a>(stem: &str, l: &'a CamLabels) -> &'a str {
 
 /// Draws the tables in `region`, in columns left to right.
 fn tables_group(tables: &[(&'static str, NumTable)], region: Rect, l: &CamLabels, c: &Common, lang: Language) -> Group {
-    let mut g = Group::new("tables", region);
-    let (mut x, mut y, mut col_w) = (region.x0, region.y0, 0.0f64);
-    for (stem, t) in tables {
-        let table = sheet_table(stem, t, l, c, lang);
-        let (w, h) = table.size();
-        if y + h > region.y1 && y > region.y0 {
-            x += col_w + 6.0;
-            y = region.y0;
-            col_w = 0.0;
-        }
-        table.draw(&mut g, Point::new(x, y));
-        y += h + 3.0;
-        col_w = col_w.max(w);
-    }
-    g
+    let drawn = tables.iter().map(|(stem, t)| sheet_table(stem, t, l, c, lang));
+    crate::drawing::table::flow("tables", drawn, region, 3.0)
 }
 
 fn sheet_table(stem: &str, t: &NumTable, l: &CamLabels, c: &Common, lang: Language) -> Table {

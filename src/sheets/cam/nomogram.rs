@@ -64,6 +64,13 @@ pub fn position_labels(phis: &[f64]) -> Vec<Option<String>> {
     out
 }
 
+/// The box holding discs (centre, radius): its lowest and highest corners.
+pub fn bounds(discs: impl IntoIterator<Item = (Vec2, f64)>) -> (Vec2, Vec2) {
+    discs.into_iter().fold((Vec2::new(f64::MAX, f64::MAX), Vec2::new(f64::MIN, f64::MIN)), |(lo, hi), (p, r)| {
+        (Vec2::new(lo.x.min(p.x - r), lo.y.min(p.y - r)), Vec2::new(hi.x.max(p.x + r), hi.y.max(p.y + r)))
+    })
+}
+
 /// Every point the nomogram must show, follower frame.
 fn extent_points(d: &Design, phis: &[f64]) -> Vec<Vec2> {
     let r = &d.region;
@@ -100,12 +107,7 @@ pub fn draw(
     lang: Language,
 ) -> f64 {
     let mirror = d.spec.sense == crate::cams::Sense::Ccw;
-    let pts = extent_points(d, phis);
-    let (mut lo, mut hi) = (Vec2::new(f64::MAX, f64::MAX), Vec2::new(f64::MIN, f64::MIN));
-    for p in &pts {
-        lo = Vec2::new(lo.x.min(p.x), lo.y.min(p.y));
-        hi = Vec2::new(hi.x.max(p.x), hi.y.max(p.y));
-    }
+    let (mut lo, mut hi) = bounds(extent_points(d, phis).into_iter().map(|p| (p, 0.0)));
     // Room below O for the limiting lines to meet, and round the picture for labels.
     let pad = 0.15 * (hi - lo).norm();
     lo -= Vec2::new(pad, pad);

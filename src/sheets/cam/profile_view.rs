@@ -3,7 +3,7 @@
 //! inversion, the follower in the start position and the cam's sense of rotation.
 
 use super::labels::CamLabels;
-use super::nomogram::View;
+use super::nomogram::{View, bounds};
 use crate::cams::follower::Follower;
 use crate::cams::{Design, Sense};
 use crate::drawing::fmt;
@@ -34,22 +34,14 @@ pub struct ProfileDrawn {
 /// The box (cam frame, metres) the view must hold: the profiles with the rollers, and the
 /// follower at the start of the rise.
 fn extent(d: &Design) -> (Vec2, Vec2) {
-    let (mut lo, mut hi) = (Vec2::new(f64::MAX, f64::MAX), Vec2::new(f64::MIN, f64::MIN));
-    let mut add = |p: Vec2, r: f64| {
-        lo = Vec2::new(lo.x.min(p.x - r), lo.y.min(p.y - r));
-        hi = Vec2::new(hi.x.max(p.x + r), hi.y.max(p.y + r));
+    let pitch: Vec<Vec2> = (0..720).map(|k| d.profile.pitch(std::f64::consts::TAU * k as f64 / 720.0).p).collect();
+    let r_max = pitch.iter().map(|p| p.norm()).fold(0.0, f64::max);
+    let b0 = pitch[0];
+    let follower = match d.spec.follower {
+        Follower::Translating => (b0 + Vec2::new(0.0, STEM * r_max), 0.0),
+        Follower::Rocker { length } => (b0 + Vec2::new(length, 0.0), 0.01 * r_max),
     };
-    let mut r_max: f64 = 0.0;
-    for k in 0..720 {
-        let p = d.profile.pitch(std::f64::consts::TAU * k as f64 / 720.0).p;
-        r_max = r_max.max(p.norm());
-        add(p, d.roller);
-    }
-    let b0 = d.profile.pitch(0.0).p;
-    match d.spec.follower {
-        Follower::Translating => add(b0 + Vec2::new(0.0, STEM * r_max), 0.0),
-        Follower::Rocker { length } => add(b0 + Vec2::new(length, 0.0), 0.01 * r_max),
-    }
+    let (lo, hi) = bounds(pitch.iter().map(|&p| (p, d.roller)).chain([follower]));
     // Room round the profile for the position numbers.
     let pad = 0.08 * r_max;
     (lo - Vec2::new(pad, pad), hi + Vec2::new(pad, pad))

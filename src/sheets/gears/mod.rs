@@ -10,7 +10,7 @@ pub use mesh_view::{INVOLUTE_PIECES, MeshDrawn};
 
 use super::{COURSE, Context, Sheet, SheetError, SheetKind, SheetOutput};
 use crate::drawing::fmt;
-use crate::drawing::frame::{self, A1_H, A1_W, TitleBlock};
+use crate::drawing::frame::{self, A1_H, A1_W};
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::layout::{self, Layout};
 use crate::drawing::place::Labels;
@@ -113,22 +113,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     groups.push(tables_group(&tables, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, l, c, lang));
 
     let sheet_name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
-    let mut tb = Group::new("title-block", frame::title_block_rect());
-    frame::title_block(
-        &mut tb,
-        c,
-        &TitleBlock {
-            designation: &ctx.info.designation,
-            sheet_name,
-            project_title: &ctx.info.title,
-            student: &ctx.info.student,
-            supervisor: &ctx.info.supervisor,
-            organisation: &ctx.info.organisation(),
-            scale: &fmt::localise(&scale::ratio(drawn.mu), lang),
-            sheet_no: KIND.number,
-            sheet_count: ctx.sheet_count,
-        },
-    )?;
+    let tb = ctx.title_block(c, sheet_name, &fmt::localise(&scale::ratio(drawn.mu), lang), KIND.number)?;
     groups.push(tb);
     let scene = Scene { width: A1_W, height: A1_H, title: format!("{} — {sheet_name}", ctx.info.title), groups };
     let layout = layout::measure(&scene);
@@ -211,23 +196,8 @@ fn tables_group(
     c: &Common,
     lang: Language,
 ) -> Group {
-    let mut g = Group::new("tables", region);
-    let mut x = region.x0;
-    let mut y = region.y0;
-    let mut col_w: f64 = 0.0;
-    for (stem, t) in tables {
-        let table = sheet_table(stem, t, tolerance, l, c, lang);
-        let (w, h) = table.size();
-        if y + h > region.y1 && y > region.y0 {
-            x += col_w + 6.0;
-            y = region.y0;
-            col_w = 0.0;
-        }
-        table.draw(&mut g, Point::new(x, y));
-        y += h + 4.0;
-        col_w = col_w.max(w);
-    }
-    g
+    let drawn = tables.iter().map(|(stem, t)| sheet_table(stem, t, tolerance, l, c, lang));
+    crate::drawing::table::flow("tables", drawn, region, 4.0)
 }
 
 fn sheet_table(stem: &str, t: &NumTable, tolerance: Option<f64>, l: &GearLabels, c: &Common, lang: Language) -> Table {
