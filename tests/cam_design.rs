@@ -28,7 +28,7 @@ use kurbo::Vec2;
 use std::f64::consts::PI;
 use tmm_sheets::cams::follower::Follower;
 use tmm_sheets::cams::integrate::chords;
-use tmm_sheets::cams::laws::{Law, Program};
+use tmm_sheets::cams::laws::{Program, Standard as Law};
 use tmm_sheets::cams::radius::{Allowed, Phase, Placement};
 use tmm_sheets::cams::{CamSpec, Design, Roller, Sense, design};
 

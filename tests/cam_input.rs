@@ -8,7 +8,7 @@ mod common;
 
 use common::{fixture_text, root};
 use tmm_sheets::cams::follower::Follower;
-use tmm_sheets::cams::laws::Law;
+use tmm_sheets::cams::laws::{Law, Standard as S};
 use tmm_sheets::cams::radius::Placement;
 use tmm_sheets::cams::{Roller, Sense};
 use tmm_sheets::project::{self, CamProject, Project};
@@ -87,8 +87,11 @@ fn the_worked_example_has_the_guides_cam() {
     assert!(close(spec.program.rise, 70f64.to_radians()));
     assert!(close(spec.program.far_dwell, 10f64.to_radians()));
     assert!(close(spec.program.ret, 70f64.to_radians()));
-    assert_eq!(c.laws, (Law::Sine, Law::Sine));
-    assert_eq!((spec.program.rise_law, spec.program.return_law), (Law::Sine, Law::Sine));
+    assert_eq!(c.laws, (Law::Standard(S::Sine), Law::Standard(S::Sine)));
+    assert_eq!(
+        (spec.program.rise_law.clone(), spec.program.return_law.clone()),
+        (Law::Standard(S::Sine), Law::Standard(S::Sine))
+    );
     assert_eq!(c.laws.0.guide_number(), Some(4));
     assert!(close(spec.allowed.rise, 45f64.to_radians()) && close(spec.allowed.ret, 45f64.to_radians()));
     assert_eq!(spec.placement, Placement::Free);
@@ -111,7 +114,7 @@ fn the_translating_fixture_has_auto_offset_and_two_laws() {
     assert!(close(spec.program.rise, 120f64.to_radians()));
     assert!(close(spec.program.far_dwell, 30f64.to_radians()));
     assert!(close(spec.program.ret, 90f64.to_radians()));
-    assert_eq!(c.laws, (Law::Cosine, Law::Polynomial345));
+    assert_eq!(c.laws, (Law::Standard(S::Cosine), Law::Standard(S::Polynomial345)));
     assert!(close(spec.allowed.rise, 30f64.to_radians()) && close(spec.allowed.ret, 45f64.to_radians()));
     assert_eq!(spec.placement, Placement::Free);
     assert_eq!(spec.roller, Roller::Radius(0.008));
@@ -132,7 +135,7 @@ fn the_knife_rocker_fixture_has_no_roller_and_no_far_dwell() {
     assert!(close(spec.program.rise, 90f64.to_radians()));
     assert_eq!(spec.program.far_dwell, 0.0);
     assert!(close(spec.program.ret, 60f64.to_radians()));
-    assert_eq!(c.laws, (Law::LinearlyDecreasing, Law::LinearlyDecreasing));
+    assert_eq!(c.laws, (Law::Standard(S::LinearlyDecreasing), Law::Standard(S::LinearlyDecreasing)));
     assert_eq!(spec.roller, Roller::Knife);
     assert_eq!(c.design.roller, 0.0);
     assert!(!c.roller_auto && !c.offset_auto);
@@ -153,11 +156,11 @@ fn a_project_with_only_a_cam_loads_with_defaults() {
 #[test]
 fn laws_by_number_and_per_phase() {
     for (law, expect) in [
-        ("4", (Law::Sine, Law::Sine)),
-        ("\"1\"", (Law::UniformAcceleration, Law::UniformAcceleration)),
-        ("modified-sine", (Law::ModifiedSine, Law::ModifiedSine)),
-        ("{rise: 3, return: trapezoid}", (Law::Cosine, Law::Trapezoid)),
-        ("{rise: \"5\", return: 6}", (Law::Triangular, Law::Trapezoid)),
+        ("4", (Law::Standard(S::Sine), Law::Standard(S::Sine))),
+        ("\"1\"", (Law::Standard(S::UniformAcceleration), Law::Standard(S::UniformAcceleration))),
+        ("modified-sine", (Law::Standard(S::ModifiedSine), Law::Standard(S::ModifiedSine))),
+        ("{rise: 3, return: trapezoid}", (Law::Standard(S::Cosine), Law::Standard(S::Trapezoid))),
+        ("{rise: \"5\", return: 6}", (Law::Standard(S::Triangular), Law::Standard(S::Trapezoid))),
     ] {
         let p = load(&with("law: sine", &format!("law: {law}")));
         assert_eq!(cam(&p).laws, expect, "{law}");

@@ -5,7 +5,7 @@
 
 use proptest::prelude::*;
 use std::f64::consts::PI;
-use tmm_sheets::cams::laws::{Law, Program, ProgramError};
+use tmm_sheets::cams::laws::{Program, ProgramError, Standard as Law};
 
 /// Breakpoints where a law's pieces meet (s″ may jump there).
 const BREAKS: [f64; 7] = [0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875];

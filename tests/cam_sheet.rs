@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{english_on_russian, fixture_text, root};
+use common::{check_layout, english_on_russian, fixture_text, root};
 use std::f64::consts::PI;
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::pipeline;
@@ -43,6 +43,7 @@ fn the_layout_of_sheet_3_is_clean_and_finite_in_every_language() {
                 p.cam.as_mut().unwrap().assumptions.clear();
             }
             let b = sheet3(&p);
+            check_layout(&format!("{name} {lang:?}"), &b.output.scene);
             let l = &b.output.results["layout"];
             for key in ["texts_crossed", "text_overlaps", "outside_region"] {
                 assert_eq!(l[key], 0, "{name} {lang:?}: {key}: {}", l["problems"]);
@@ -146,4 +147,34 @@ fn the_law_table_gives_the_phases_own_acceleration_at_a_jump() {
     let row = t.table.rows.iter().find(|r| r.symbol == "d²s/dφ²").unwrap();
     let expected = 40.0 * PI * PI / (2.0 * (120f64.to_radians()).powi(2));
     assert!((row.values[0] - expected).abs() < 1e-9, "{} vs {expected}", row.values[0]);
+}
+
+/// The diagrams are big enough to measure: the lift at most 100 mm and at least 25 mm (a
+/// peaky law, like the fixture's two rectangles, spends height on its acceleration), the
+/// acceleration analog 20–50 mm each side of its axis from the law's exact peak, H2 a whole
+/// number of mm in 15–40 (its rays apart); and with one law on both phases the drawn
+/// displacement closes at zero (the return's chord error cancels the rise's).
+#[test]
+fn the_diagrams_are_measurable_and_close_for_one_law() {
+    for (name, text) in cam_projects() {
+        let p = pipeline::load(&text).unwrap();
+        let r = sheet3(&p).output.results;
+        let s = &r["scales"];
+        let f = |k: &str| s[k].as_f64().unwrap();
+        let prog = &p.cam.as_ref().unwrap().design.spec.program;
+        let lift_mm = prog.lift / f("mu_s");
+        assert!((25.0..=100.0 + 1e-9).contains(&lift_mm), "{name}: the lift is drawn {lift_mm} mm");
+        let h2 = f("h2");
+        assert!(h2.fract() == 0.0 && (15.0..=40.0).contains(&h2), "{name}: H2 = {h2}");
+        let amax = (prog.rise_law.peaks().1 * prog.lift / (prog.rise * prog.rise))
+            .max(prog.return_law.peaks().1 * prog.lift / (prog.ret * prog.ret));
+        let a_mm = amax / f("mu_dds");
+        assert!((20.0..=50.0).contains(&a_mm), "{name}: the acceleration analog is {a_mm} mm high");
+        let closure = r["integration_error"]["closure_s"].as_f64().unwrap();
+        if prog.rise_law == prog.return_law {
+            assert!(closure.abs() < 1e-9 * prog.lift, "{name}: the drawn s ends at {closure}");
+        } else {
+            assert!(closure.is_finite() && closure.abs() < 0.05 * prog.lift, "{name}: closure {closure}");
+        }
+    }
 }

@@ -23,14 +23,21 @@
 //! s(½) = A·(2 + π)/(16π) for the modified trapezoid and A·(π + 4)/(8π²) for the modified sine.
 //!
 //! The peaks follow from the closed forms (tested against these values and numerically).
+//!
+//! A project file may redefine any of these, or add its own, as an acceleration analog drawn
+//! through corners ([`Custom`]): the figure of the guide's appendix is lost, so a teacher
+//! whose appendix shows another law 5 can give it. [`Law`] is either kind.
 
 use crate::num::math::{cos, sin};
 use std::f64::consts::PI;
+use std::sync::Arc;
 
-/// A law of motion, by its key in a project file.
+pub use super::custom_law::{Custom, LawError};
+
+/// A law of the built-in table, by its key in a project file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
-pub enum Law {
+pub enum Standard {
     UniformAcceleration,
     LinearlyDecreasing,
     Cosine,
@@ -57,42 +64,42 @@ const MOD_TRAPEZOID_A: f64 = 8.0 * PI / (2.0 + PI);
 /// The modified sine's amplitude, 4π²/(π + 4) ≈ 5.528.
 const MOD_SINE_A: f64 = 4.0 * PI * PI / (PI + 4.0);
 
-impl Law {
-    pub const ALL: [Law; 9] = [
-        Law::UniformAcceleration,
-        Law::LinearlyDecreasing,
-        Law::Cosine,
-        Law::Sine,
-        Law::Triangular,
-        Law::Trapezoid,
-        Law::Polynomial345,
-        Law::ModifiedTrapezoid,
-        Law::ModifiedSine,
+impl Standard {
+    pub const ALL: [Standard; 9] = [
+        Standard::UniformAcceleration,
+        Standard::LinearlyDecreasing,
+        Standard::Cosine,
+        Standard::Sine,
+        Standard::Triangular,
+        Standard::Trapezoid,
+        Standard::Polynomial345,
+        Standard::ModifiedTrapezoid,
+        Standard::ModifiedSine,
     ];
 
     pub fn key(self) -> &'static str {
         match self {
-            Law::UniformAcceleration => "uniform-acceleration",
-            Law::LinearlyDecreasing => "linearly-decreasing",
-            Law::Cosine => "cosine",
-            Law::Sine => "sine",
-            Law::Triangular => "triangular",
-            Law::Trapezoid => "trapezoid",
-            Law::Polynomial345 => "polynomial-345",
-            Law::ModifiedTrapezoid => "modified-trapezoid",
-            Law::ModifiedSine => "modified-sine",
+            Standard::UniformAcceleration => "uniform-acceleration",
+            Standard::LinearlyDecreasing => "linearly-decreasing",
+            Standard::Cosine => "cosine",
+            Standard::Sine => "sine",
+            Standard::Triangular => "triangular",
+            Standard::Trapezoid => "trapezoid",
+            Standard::Polynomial345 => "polynomial-345",
+            Standard::ModifiedTrapezoid => "modified-trapezoid",
+            Standard::ModifiedSine => "modified-sine",
         }
     }
 
     /// The guide's number (1–6), none for the laws beyond the course.
     pub fn guide_number(self) -> Option<u8> {
-        Law::ALL[..6].iter().position(|&l| l == self).map(|i| i as u8 + 1)
+        Standard::ALL[..6].iter().position(|&l| l == self).map(|i| i as u8 + 1)
     }
 
     /// A law by its key or the guide's number ("1"…"6").
-    pub fn by_key(key: &str) -> Option<Law> {
+    pub fn by_key(key: &str) -> Option<Standard> {
         let key = key.trim();
-        Law::ALL.into_iter().find(|l| l.key() == key || l.guide_number().is_some_and(|n| n.to_string() == key))
+        Standard::ALL.into_iter().find(|l| l.key() == key || l.guide_number().is_some_and(|n| n.to_string() == key))
     }
 
     /// s, s′, s″ at x; outside [0, 1] the dwell's values (s = 0 or 1, s′ = s″ = 0).
@@ -115,14 +122,14 @@ impl Law {
     fn first_half(self, x: f64) -> Derivs {
         let d = |s, ds, dds| Derivs { s, ds, dds };
         match self {
-            Law::UniformAcceleration => d(2.0 * x * x, 4.0 * x, 4.0),
-            Law::LinearlyDecreasing => d(x * x * (3.0 - 2.0 * x), 6.0 * x * (1.0 - x), 6.0 - 12.0 * x),
-            Law::Cosine => d((1.0 - cos(PI * x)) / 2.0, PI / 2.0 * sin(PI * x), PI * PI / 2.0 * cos(PI * x)),
-            Law::Sine => {
+            Standard::UniformAcceleration => d(2.0 * x * x, 4.0 * x, 4.0),
+            Standard::LinearlyDecreasing => d(x * x * (3.0 - 2.0 * x), 6.0 * x * (1.0 - x), 6.0 - 12.0 * x),
+            Standard::Cosine => d((1.0 - cos(PI * x)) / 2.0, PI / 2.0 * sin(PI * x), PI * PI / 2.0 * cos(PI * x)),
+            Standard::Sine => {
                 let w = 2.0 * PI * x;
                 d(x - sin(w) / (2.0 * PI), 1.0 - cos(w), 2.0 * PI * sin(w))
             }
-            Law::Triangular => {
+            Standard::Triangular => {
                 if x <= 0.25 {
                     d(16.0 * x * x * x / 3.0, 16.0 * x * x, 32.0 * x)
                 } else {
@@ -131,7 +138,7 @@ impl Law {
                     d(0.5 - 2.0 * u + 16.0 * u * u * u / 3.0, 2.0 - 16.0 * u * u, 32.0 * u)
                 }
             }
-            Law::Trapezoid => {
+            Standard::Trapezoid => {
                 let a = TRAPEZOID_A;
                 if x <= 0.125 {
                     d(4.0 * a * x * x * x / 3.0, 4.0 * a * x * x, 8.0 * a * x)
@@ -143,7 +150,7 @@ impl Law {
                     d(0.5 - 2.0 * u + 4.0 * a * u * u * u / 3.0, 2.0 - 4.0 * a * u * u, 8.0 * a * u)
                 }
             }
-            Law::Polynomial345 => {
+            Standard::Polynomial345 => {
                 let (x2, x3) = (x * x, x * x * x);
                 d(
                     x3 * (10.0 - 15.0 * x + 6.0 * x2),
@@ -151,7 +158,7 @@ impl Law {
                     60.0 * x * (1.0 - x) * (1.0 - 2.0 * x),
                 )
             }
-            Law::ModifiedTrapezoid => {
+            Standard::ModifiedTrapezoid => {
                 let a = MOD_TRAPEZOID_A;
                 let k = 4.0 * PI;
                 // The end of the first sine ramp, where the plateau starts.
@@ -167,7 +174,7 @@ impl Law {
                     d(s2 + v2 * t + a * (1.0 - cos(k * t)) / (k * k), v2 + a * sin(k * t) / k, a * cos(k * t))
                 }
             }
-            Law::ModifiedSine => {
+            Standard::ModifiedSine => {
                 let a = MOD_SINE_A;
                 let k = 4.0 * PI;
                 if x <= 0.125 {
@@ -184,16 +191,69 @@ impl Law {
     /// The peak coefficients (max |s′|, max |s″|), from the closed forms.
     pub fn peaks(self) -> (f64, f64) {
         match self {
-            Law::UniformAcceleration => (2.0, 4.0),
-            Law::LinearlyDecreasing => (1.5, 6.0),
-            Law::Cosine => (PI / 2.0, PI * PI / 2.0),
-            Law::Sine => (2.0, 2.0 * PI),
-            Law::Triangular => (2.0, 8.0),
-            Law::Trapezoid => (2.0, TRAPEZOID_A),
+            Standard::UniformAcceleration => (2.0, 4.0),
+            Standard::LinearlyDecreasing => (1.5, 6.0),
+            Standard::Cosine => (PI / 2.0, PI * PI / 2.0),
+            Standard::Sine => (2.0, 2.0 * PI),
+            Standard::Triangular => (2.0, 8.0),
+            Standard::Trapezoid => (2.0, TRAPEZOID_A),
             // s″ peaks where 6x² − 6x + 1 = 0: x = ½ − √3/6, value 10/√3.
-            Law::Polynomial345 => (1.875, 10.0 / 3f64.sqrt()),
-            Law::ModifiedTrapezoid => (2.0, MOD_TRAPEZOID_A),
-            Law::ModifiedSine => (4.0 * PI / (PI + 4.0), MOD_SINE_A),
+            Standard::Polynomial345 => (1.875, 10.0 / 3f64.sqrt()),
+            Standard::ModifiedTrapezoid => (2.0, MOD_TRAPEZOID_A),
+            Standard::ModifiedSine => (4.0 * PI / (PI + 4.0), MOD_SINE_A),
+        }
+    }
+}
+
+/// A law of motion: one of the built-in table's, or one a project file defines.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Law {
+    Standard(Standard),
+    Custom(Arc<Custom>),
+}
+
+impl From<Standard> for Law {
+    fn from(s: Standard) -> Law {
+        Law::Standard(s)
+    }
+}
+
+impl From<Custom> for Law {
+    fn from(c: Custom) -> Law {
+        Law::Custom(Arc::new(c))
+    }
+}
+
+impl Law {
+    /// The key a project file names it by.
+    pub fn key(&self) -> &str {
+        match self {
+            Law::Standard(s) => s.key(),
+            Law::Custom(c) => c.key(),
+        }
+    }
+
+    /// The guide's number (1–6), if it is (or redefines) one of the guide's laws.
+    pub fn guide_number(&self) -> Option<u8> {
+        match self {
+            Law::Standard(s) => s.guide_number(),
+            Law::Custom(c) => c.guide_number(),
+        }
+    }
+
+    /// s, s′, s″ at x; outside [0, 1] the dwell's values (s = 0 or 1, s′ = s″ = 0).
+    pub fn eval(&self, x: f64) -> Derivs {
+        match self {
+            Law::Standard(s) => s.eval(x),
+            Law::Custom(c) => c.eval(x),
+        }
+    }
+
+    /// The peak coefficients (max |s′|, max |s″|).
+    pub fn peaks(&self) -> (f64, f64) {
+        match self {
+            Law::Standard(s) => s.peaks(),
+            Law::Custom(c) => c.peaks(),
         }
     }
 }
@@ -224,7 +284,13 @@ pub enum ProgramError {
 }
 
 impl Program {
-    pub fn new(rise: f64, far_dwell: f64, ret: f64, laws: (Law, Law), lift: f64) -> Result<Program, ProgramError> {
+    pub fn new(
+        rise: f64,
+        far_dwell: f64,
+        ret: f64,
+        laws: (impl Into<Law>, impl Into<Law>),
+        lift: f64,
+    ) -> Result<Program, ProgramError> {
         for (phase, a) in [("rise", rise), ("return", ret)] {
             if !(a.is_finite() && a > 0.0) {
                 return Err(ProgramError::Phase { phase, deg: a.to_degrees() });
@@ -240,7 +306,7 @@ impl Program {
         if !(lift.is_finite() && lift > 0.0) {
             return Err(ProgramError::Lift(lift));
         }
-        Ok(Program { rise, far_dwell, ret, rise_law: laws.0, return_law: laws.1, lift })
+        Ok(Program { rise, far_dwell, ret, rise_law: laws.0.into(), return_law: laws.1.into(), lift })
     }
 
     /// s(φ), ds/dφ, d²s/dφ² in the lift's unit (per radian), φ taken modulo a turn from the

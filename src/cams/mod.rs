@@ -6,6 +6,7 @@
 //! Everything is computed for a cam turning clockwise; a counter-clockwise cam is the mirror
 //! image, applied by [`Sense::apply`] to finished coordinates.
 
+mod custom_law;
 pub mod follower;
 pub mod integrate;
 pub mod laws;

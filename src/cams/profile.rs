@@ -68,6 +68,13 @@ impl Profile {
         q.dp.cross(q.ddp) / q.dp.norm().powi(3)
     }
 
+    /// A follower-frame point as the inversion carries it at cam angle φ: cam frame, metres
+    /// (the rocker's pivot sweeps the circle of radius a_w, the translating follower's axis
+    /// stays tangent to the circle of radius e).
+    pub fn carried(&self, x: Vec2, phi: f64) -> Vec2 {
+        rot(x - self.o, phi)
+    }
+
     /// The smallest radius of curvature over the convex parts, and its φ (a turn
     /// with no convex part cannot be: the profile closes round O).
     pub fn min_convex_radius(&self) -> (f64, f64) {

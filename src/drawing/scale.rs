@@ -46,6 +46,12 @@ pub fn previous_round(mu: f64) -> f64 {
     [0.5, 0.625, 0.8].iter().map(|f| round_up(mu * f)).filter(|&m| m < mu * (1.0 - 1e-9)).fold(mu * 0.5, f64::max)
 }
 
+/// Every GOST 2.302 μ_l (m/mm), the largest drawing first.
+pub fn length_scales() -> impl Iterator<Item = f64> {
+    let enlarge = ENLARGEMENTS.iter().rev().map(|k| 0.001 / k);
+    enlarge.chain(REDUCTIONS.iter().map(|k| 0.001 * k))
+}
+
 /// The smallest μ_l (m/mm) of a GOST 2.302 scale that is ≥ `x` (1:1 for no extent).
 pub fn length_scale(x: f64) -> f64 {
     if !(x.is_finite() && x > 0.0) {

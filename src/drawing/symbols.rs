@@ -125,3 +125,33 @@ pub fn clear_turn_arrow(
     g.items.extend(arrow.items);
     start
 }
+
+/// A linear dimension of the features at `a` and `b`: extension lines from them along
+/// `offset` (past the dimension line by 2 mm, 1 mm clear of the features), the dimension line
+/// at `offset` with arrowheads at its ends — inside when the two heads and a gap fit, else
+/// outside, pointing in, on 5 mm lines. Returns the dimension line's middle (for its text).
+pub fn dimension(g: &mut Group, a: Point, b: Point, offset: Vec2) -> Point {
+    let (da, db) = (a + offset, b + offset);
+    let len = (db - da).norm();
+    let off = offset.norm();
+    if off > tol::PAPER {
+        let u = offset / off;
+        for p in [a, b] {
+            g.line(p + u * off.min(1.0), p + offset + u * 2.0, THIN);
+        }
+    }
+    if len < tol::PAPER {
+        return da;
+    }
+    let u = (db - da) / len;
+    if len >= 2.0 * ARROW_LEN + 2.0 {
+        g.line(da, db, THIN);
+        arrowhead(g, da, -u);
+        arrowhead(g, db, u);
+    } else {
+        g.line(da - u * 5.0, db + u * 5.0, THIN);
+        arrowhead(g, da, u);
+        arrowhead(g, db, -u);
+    }
+    da.midpoint(db)
+}

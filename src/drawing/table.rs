@@ -134,3 +134,34 @@ pub fn flow(id: &str, tables: impl IntoIterator<Item = Table>, region: Rect, gap
     }
     g
 }
+
+/// The width [`flow`] takes for tables of `sizes` in a region `height` mm tall.
+pub fn flow_width(sizes: &[(f64, f64)], height: f64, gap: f64) -> f64 {
+    let (mut x, mut y, mut col_w, mut right) = (0.0, 0.0, 0.0f64, 0.0f64);
+    for &(w, h) in sizes {
+        if y + h > height && y > 0.0 {
+            x += col_w + 6.0;
+            y = 0.0;
+            col_w = 0.0;
+        }
+        y += h + gap;
+        col_w = col_w.max(w);
+        right = right.max(x + col_w);
+    }
+    right
+}
+
+/// The least height (whole mm) in which [`flow`] fits tables of `sizes` into `width`, or
+/// `None` when one column is wider.
+pub fn flow_height(sizes: &[(f64, f64)], width: f64, gap: f64) -> Option<f64> {
+    let tallest = sizes.iter().map(|s| s.1).fold(0.0, f64::max).ceil();
+    let total: f64 = sizes.iter().map(|s| s.1 + gap).sum();
+    let mut h = tallest;
+    while h <= total.ceil() + 1.0 {
+        if flow_width(sizes, h, gap) <= width {
+            return Some(h);
+        }
+        h += 1.0;
+    }
+    None
+}

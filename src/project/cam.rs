@@ -10,17 +10,20 @@
 //!   roller: auto                                       # `auto`, a radius in metres, or `knife`
 //!   phases_deg: {rise: 70, far_dwell: 10, return: 70}  # the near dwell is the rest of 360°
 //!   law: sine                                          # or 4, or {rise: cosine, return: 4}
+//!   laws:                                              # optional: redefine or add laws
+//!     5: {name: "…", acceleration: [[0, 0], [0.25, 1], [0.75, -1], [1, 0]]}
 //!   pressure_angle_deg: 45                             # or {rise: 30, return: 45}
 //!   sense: ccw                                         # cw or ccw
 //!   assumptions: []
 //! ```
 
 use super::text::{self, Lines};
-use super::values::{Finite, UserText};
+use super::values::{Finite, LocalText, UserText};
 use super::{ModelError, Warning, at, invalid, warning};
 use crate::cams::follower::Follower;
-use crate::cams::laws::{Law, Program, ProgramError};
-use crate::cams::radius::{Allowed, Placement, RadiusError};
+use crate::cams::integrate;
+use crate::cams::laws::{Custom, Law, LawError, Program, ProgramError, Standard};
+use crate::cams::radius::{Allowed, Phase, Placement, RadiusError};
 use crate::cams::{CamError, CamSpec, CamWarning, Roller, Sense};
 use crate::num::limits::{LENGTH_LOOKS_LIKE_MM, LENGTH_TINY};
 use serde::Deserialize;
@@ -44,6 +47,10 @@ pub struct CamSpecFile {
     /// The law of motion: a key (`cosine`, `sine`, `polynomial-345`, …) or the guide's
     /// number 1–6, for both phases, or `{rise: …, return: …}`.
     pub law: Spanned<PerPhase>,
+    /// The law table's additions and replacements: by a key (a built-in one or the guide's
+    /// number 1–6 replaces that law; another adds one), the acceleration analog's corners.
+    #[serde(default)]
+    pub laws: Option<Spanned<LawTable>>,
     /// The allowed pressure angle, degrees, in (0°, 90°) (the course: 30–50°): one for both
     /// phases, or `{rise: …, return: …}`.
     pub pressure_angle_deg: Spanned<PerPhase>,
@@ -53,6 +60,59 @@ pub struct CamSpecFile {
     /// Printed on the sheet: what was assumed where the source is silent or contradicts itself.
     #[serde(default)]
     pub assumptions: Vec<UserText>,
+}
+
+/// The `laws` table as written: (key, definition) in the file's order.
+#[derive(Debug, Clone, Default)]
+pub struct LawTable(pub Vec<(Spanned<String>, Spanned<LawFileSpec>)>);
+
+/// One law of the table: the acceleration analog s″ straight between corners `[x, a]` over
+/// the phase (x from 0 to 1, two corners at one x for a jump; a in any unit, the law is
+/// scaled to the lift), and the name the sheet prints.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LawFileSpec {
+    /// One text, or one per language; default: the replaced law's name, or the key.
+    #[serde(default)]
+    pub name: Option<Spanned<LocalText>>,
+    pub acceleration: Spanned<Vec<Spanned<(Finite, Finite)>>>,
+}
+
+/// A law table's key: a word, or the guide's number written as a number.
+struct LawKey(String);
+
+impl<'de> Deserialize<'de> for LawKey {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        match d.deserialize_any(ScalarVisitor)? {
+            Scalar::Word(w) => Ok(LawKey(w)),
+            Scalar::Number(x) => Ok(LawKey(format!("{x}"))),
+        }
+    }
+}
+
+struct LawTableVisitor;
+
+impl<'de> Visitor<'de> for LawTableVisitor {
+    type Value = LawTable;
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("a table of laws: `key: {name: …, acceleration: [[x, a], …]}`")
+    }
+
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<LawTable, A::Error> {
+        let mut out = Vec::new();
+        while let Some(key) = map.next_key::<Spanned<LawKey>>()? {
+            let key = Spanned { value: key.value.0, referenced: key.referenced, defined: key.defined };
+            out.push((key, map.next_value()?));
+        }
+        Ok(LawTable(out))
+    }
+}
+
+impl<'de> Deserialize<'de> for LawTable {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_map(LawTableVisitor)
+    }
 }
 
 /// The follower: exactly one of the two kinds.
@@ -205,6 +265,8 @@ pub struct CamProject {
     pub design: crate::cams::Design,
     /// The law's choice for each phase, as the file named it (for the sheet's text).
     pub laws: (Law, Law),
+    /// The names the file gives the laws of its `laws` table, by key.
+    pub law_names: Vec<(String, LocalText)>,
     /// Whether the roller was `auto`.
     pub roller_auto: bool,
     /// Whether the translating follower's offset was `auto`.
@@ -242,7 +304,8 @@ pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Resu
     let c = &spec.value;
     let f = follower(&c.follower, warnings)?;
     let phases = phases(&c.phases_deg)?;
-    let laws = laws(&c.law)?;
+    let table = law_table(c.laws.as_ref(), warnings)?;
+    let laws = laws(&c.law, &table)?;
     let allowed = allowed(&c.pressure_angle_deg, warnings)?;
     let (roller, roller_loc) = roller(c.roller.as_ref(), spec.referenced)?;
     let sense = match c.sense.as_ref().map(|s| (s.value.trim(), s.referenced)) {
@@ -256,7 +319,7 @@ pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Resu
             ));
         }
     };
-    let program = Program::new(phases.rise, phases.far_dwell, phases.ret, laws, f.lift).map_err(|e| {
+    let program = Program::new(phases.rise, phases.far_dwell, phases.ret, laws.clone(), f.lift).map_err(|e| {
         let (loc, field) = match &e {
             ProgramError::Phase { phase: "rise", .. } => (at(&c.phases_deg.value.rise), "cam.phases_deg.rise"),
             ProgramError::Phase { .. } => (at(&c.phases_deg.value.ret), "cam.phases_deg.return"),
@@ -307,9 +370,11 @@ pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Resu
         text::check(&format!("{FIELD}.assumptions[{i}]"), a, Lines::Many)?;
         assumptions.push(a.value.clone());
     }
+    let law_names = table.into_iter().filter_map(|u| Some((u.law.key().to_string(), u.name?))).collect();
     Ok(CamProject {
         design,
         laws,
+        law_names,
         roller_auto: matches!(roller, Roller::Auto),
         offset_auto: f.offset_auto,
         assumptions,
@@ -522,41 +587,127 @@ fn phases(spec: &Spanned<PhasesFileSpec>) -> Result<Phases, ModelError> {
     Ok(Phases { rise: p.rise.value.0.to_radians(), far_dwell: dwell.to_radians(), ret: p.ret.value.0.to_radians() })
 }
 
+/// A law of the file's `laws` table, with its name.
+struct UserLaw {
+    law: Law,
+    name: Option<LocalText>,
+}
+
+/// Resolves the `laws` table: each key to the built-in law it replaces (by key or the guide's
+/// number) or to a new key, each corner list to a law.
+fn law_table(spec: Option<&Spanned<LawTable>>, warnings: &mut Vec<Warning>) -> Result<Vec<UserLaw>, ModelError> {
+    let Some(spec) = spec else { return Ok(Vec::new()) };
+    let mut out: Vec<UserLaw> = Vec::new();
+    for (spanned_key, def) in &spec.value.0 {
+        let key = &spanned_key.value;
+        let field = format!("cam.laws.{key}");
+        let replaces = Standard::by_key(key);
+        let canonical = replaces.map_or(key.trim().to_string(), |s| s.key().to_string());
+        if replaces.is_none() {
+            new_law_key(key).map_err(|why| invalid(at(spanned_key), &field, why))?;
+        }
+        if out.iter().any(|u| u.law.key() == canonical) {
+            return Err(invalid(
+                at(spanned_key),
+                &field,
+                format!("the law `{canonical}` is defined twice in `cam.laws`"),
+            ));
+        }
+        let acc = &def.value.acceleration;
+        let corners: Vec<(f64, f64)> = acc.value.iter().map(|c| (c.value.0.0, c.value.1.0)).collect();
+        let law = Custom::new(&canonical, replaces, &corners).map_err(|e| {
+            let (loc, field) = match e {
+                LawError::Decreasing { index, .. } | LawError::TripleCorner { index, .. } => {
+                    (at(&acc.value[index]), format!("{field}.acceleration[{index}]"))
+                }
+                _ => (at(acc), format!("{field}.acceleration")),
+            };
+            invalid(loc, field, e.to_string())
+        })?;
+        if let Some(n) = &def.value.name {
+            text::check_local(&format!("{field}.name"), n, Lines::One)?;
+        }
+        if let Some(w) = corner_between_divisions(&law) {
+            warnings.push(warning(at(acc), format!("{field}.acceleration"), w));
+        }
+        out.push(UserLaw { law: law.into(), name: def.value.name.as_ref().map(|n| n.value.clone()) });
+    }
+    Ok(out)
+}
+
+/// A corner between the course's divisions of the phase is cut off by the chord
+/// integration (it samples s″ at the divisions' middles): says so with the error it makes.
+fn corner_between_divisions(law: &Custom) -> Option<String> {
+    let n = integrate::DIVISIONS as f64;
+    let (x, _) = law.corners().find(|(x, _)| ((x * n).round() - x * n).abs() > 1e-9)?;
+    let program = Program::new(1.0, 0.0, 1.0, (law.clone(), law.clone()), 1.0).ok()?;
+    let error = integrate::chords(&program, Phase::Rise, integrate::DIVISIONS).error(&program).s;
+    Some(format!(
+        "a corner at x = {x} lies between the course's {n} divisions of the phase (multiples of 1/{n}): the graphical integration cuts it off and misses the displacement by up to {:.1} % of the lift; corners at the divisions are drawn exactly",
+        error * 100.0
+    ))
+}
+
+/// A new law's key: a word of letters, digits, `-` and `_` that is not a number (numbers
+/// are the guide's, 1–6).
+fn new_law_key(key: &str) -> Result<(), String> {
+    let k = key.trim();
+    if k.parse::<f64>().is_ok() {
+        return Err(format!("'{k}': the guide numbers its laws 1–6; give a new law a name"));
+    }
+    if k.is_empty() || !k.chars().all(|c| c.is_alphanumeric() || c == '-' || c == '_') {
+        return Err(format!("'{k}': a law's key is a word of letters, digits, `-` and `_`"));
+    }
+    Ok(())
+}
+
 /// The accepted law keys and numbers, for an error message.
-fn known_laws() -> String {
-    let keys: Vec<String> = Law::ALL
+fn known_laws(table: &[UserLaw]) -> String {
+    let mut keys: Vec<String> = Standard::ALL
         .iter()
         .map(|l| match l.guide_number() {
             Some(n) => format!("{} ({n})", l.key()),
             None => l.key().to_string(),
         })
         .collect();
+    keys.extend(
+        table
+            .iter()
+            .filter(|u| u.law.guide_number().is_none() && Standard::by_key(u.law.key()).is_none())
+            .map(|u| u.law.key().to_string()),
+    );
     format!("known: {}; or the guide's number 1–6", keys.join(", "))
 }
 
-fn law(v: &Scalar, loc: Location, field: &str) -> Result<Law, ModelError> {
-    let found = match v {
-        Scalar::Word(w) => Law::by_key(w),
-        Scalar::Number(x) if x.fract() == 0.0 && (1.0..=6.0).contains(x) => Law::by_key(&format!("{x}")),
+fn law(v: &Scalar, loc: Location, field: &str, table: &[UserLaw]) -> Result<Law, ModelError> {
+    let key = match v {
+        Scalar::Word(w) => Some(w.trim().to_string()),
+        Scalar::Number(x) if x.fract() == 0.0 && (1.0..=6.0).contains(x) => Some(format!("{x}")),
         Scalar::Number(_) => None,
     };
+    // A built-in key or number names the built-in law, or the table's replacement of it.
+    let canonical = key.map(|k| Standard::by_key(&k).map_or(k, |s| s.key().to_string()));
+    let found = canonical.and_then(|k| match table.iter().find(|u| u.law.key() == k) {
+        Some(u) => Some(u.law.clone()),
+        None => Standard::by_key(&k).map(Law::Standard),
+    });
     found.ok_or_else(|| {
         let shown = match v {
             Scalar::Word(w) => format!("'{w}'"),
             Scalar::Number(x) => format!("{x}"),
         };
-        invalid(loc, field, format!("unknown law {shown} ({})", known_laws()))
+        invalid(loc, field, format!("unknown law {shown} ({})", known_laws(table)))
     })
 }
 
-fn laws(spec: &Spanned<PerPhase>) -> Result<(Law, Law), ModelError> {
+fn laws(spec: &Spanned<PerPhase>, table: &[UserLaw]) -> Result<(Law, Law), ModelError> {
     match &spec.value {
         PerPhase::Both(v) => {
-            let l = law(v, at(spec), "cam.law")?;
-            Ok((l, l))
+            let l = law(v, at(spec), "cam.law", table)?;
+            Ok((l.clone(), l))
         }
         PerPhase::Each { rise, ret } => {
-            Ok((law(&rise.value, at(rise), "cam.law.rise")?, law(&ret.value, at(ret), "cam.law.return")?))
+            Ok((law(&rise.value, at(rise), "cam.law.rise", table)?, law(&ret.value, at(ret), "cam.law.return", table)?))
         }
     }
 }

@@ -2,9 +2,10 @@
 //! make an SVG invalid) and no character the embedded font lacks (it would print as an
 //! empty box, or vanish). Each refusal names the field, the character and where it is.
 
-use super::values::UserText;
+use super::values::{LocalText, UserText};
 use super::{ModelError, invalid};
 use crate::font;
+use serde_saphyr::{Location, Spanned};
 
 /// Whether a line break may stand in the field (free text that is wrapped anyway).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -24,8 +25,24 @@ fn describe(c: char) -> String {
 /// Refuses control characters (but line breaks and tabs in [`Lines::Many`] fields) and
 /// characters without a glyph in the sheets' font. Linear in the text's length.
 pub fn check(field: &str, t: &UserText, lines: Lines) -> Result<(), ModelError> {
+    check_str(field, &t.value, t.referenced, lines)
+}
+
+/// [`check`] for each language's text (the field named with the language's key).
+pub fn check_local(field: &str, t: &Spanned<LocalText>, lines: Lines) -> Result<(), ModelError> {
+    for (lang, text) in t.value.texts() {
+        let field = match lang {
+            Some(l) => format!("{field}.{}", format!("{l:?}").to_lowercase()),
+            None => field.to_string(),
+        };
+        check_str(&field, text, t.referenced, lines)?;
+    }
+    Ok(())
+}
+
+fn check_str(field: &str, text: &str, at: Location, lines: Lines) -> Result<(), ModelError> {
     let metrics = font::metrics();
-    for (i, c) in t.value.chars().enumerate() {
+    for (i, c) in text.chars().enumerate() {
         let breaks = matches!(c, '\n' | '\t' | '\r');
         let why = if breaks && lines == Lines::Many {
             continue;
@@ -38,7 +55,7 @@ pub fn check(field: &str, t: &UserText, lines: Lines) -> Result<(), ModelError> 
         } else {
             continue;
         };
-        return Err(invalid(t.referenced, field, format!("{why} (character {} of the text)", i + 1)));
+        return Err(invalid(at, field, format!("{why} (character {} of the text)", i + 1)));
     }
     Ok(())
 }

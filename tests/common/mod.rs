@@ -2,6 +2,8 @@
 #![allow(dead_code)]
 
 use std::path::PathBuf;
+use tmm_sheets::drawing::scene::Scene;
+use tmm_sheets::drawing::{frame, layout};
 use tmm_sheets::pipeline;
 use tmm_sheets::project::{LeverProject, Project};
 use tmm_sheets::sheets::lever::{self, LeverBuild};
@@ -85,4 +87,59 @@ pub fn english_on_russian(text: &str) -> Option<String> {
         }
     }
     None
+}
+
+/// Every group stays in its region, regions stay inside the frame and apart, and no two
+/// texts overlap anywhere on the sheet.
+pub fn check_layout(name: &str, scene: &Scene) {
+    let inner = frame::inner();
+    let tb = frame::title_block_rect();
+    for g in &scene.groups {
+        for item in &g.items {
+            // A border stroke centred on the region's edge counts as inside.
+            let half_main = 0.36;
+            assert!(
+                frame::is_inside(g.region.inflate(half_main, half_main), item.bbox()),
+                "{name}: an item of '{}' leaves its region: {:?} not in {:?}: {item:?}",
+                g.id,
+                item.bbox(),
+                g.region
+            );
+        }
+        if g.id != "frame" {
+            assert!(frame::is_inside(inner, g.region), "{name}: region '{}' leaves the frame", g.id);
+        }
+    }
+    let regions: Vec<_> = scene.groups.iter().filter(|g| g.id != "frame").collect();
+    for (i, a) in regions.iter().enumerate() {
+        for b in &regions[i + 1..] {
+            assert!(a.region.intersect(b.region).area() <= 1e-9, "{name}: regions '{}' and '{}' overlap", a.id, b.id);
+        }
+        if a.id != "title-block" {
+            assert!(a.region.intersect(tb).area() <= 1e-9, "{name}: '{}' covers the title block", a.id);
+        }
+    }
+    for t in scene.texts() {
+        // SVG collapses leading and trailing white space: a gap made of spaces vanishes.
+        assert!(t.text.trim() == t.text && !t.text.is_empty(), "{name}: text {:?} has outer white space", t.text);
+    }
+    // Independently of the sheet's measurement: no two texts' letters overlap.
+    let texts: Vec<_> = scene.texts().collect();
+    for (i, a) in texts.iter().enumerate() {
+        for b in &texts[i + 1..] {
+            let overlap = a.core_box().intersect(b.core_box()).area();
+            assert!(overlap <= 1e-6, "{name}: texts {:?} and {:?} overlap", a.text, b.text);
+        }
+    }
+    // The sheet's own measurement, held at zero: no text crossed by a line, no two texts
+    // overlapping, nothing outside its region.
+    let l = layout::measure(scene);
+    assert!(
+        l.is_clean(),
+        "{name}: {} crossed, {} overlaps, {} outside: {:#?}",
+        l.texts_crossed,
+        l.text_overlaps,
+        l.outside_region,
+        l.problems
+    );
 }

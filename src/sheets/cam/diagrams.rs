@@ -16,6 +16,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text};
 use crate::drawing::text::LabelText;
 use kurbo::{Point, Rect};
+use std::f64::consts::PI;
 
 /// The chosen scales: μ_φ in degrees and radians per mm, the three ordinate scales (the
 /// lift's unit — metres or radians — per mm, per radian for the analogs) and the poles, mm.
@@ -30,26 +31,70 @@ pub struct Scales {
     pub h2: f64,
 }
 
-/// The acceleration analog's peak and the lift's most height, mm.
-const ACCELERATION_MM: f64 = 40.0;
-const LIFT_MAX_MM: f64 = 80.0;
-/// The working angle's target width, mm.
-const WIDTH_MM: f64 = 200.0;
+/// The lift's most height on paper, mm.
+const LIFT_MAX_MM: f64 = 100.0;
+/// The acceleration analog's height each side of its axis, mm: the course's "about 70 mm"
+/// over both signs, and the range accepted around it.
+const ACCELERATION_MM: (f64, f64, f64) = (20.0, 35.0, 50.0);
+/// The pole distance H2, whole mm: below 15 mm its rays merge.
+const H2_MM: (f64, f64) = (15.0, 40.0);
+/// The working angle's widest drawing, mm.
+const WIDTH_MAX_MM: f64 = 240.0;
+/// μ_φ's series, degrees per mm (times 10ⁿ): finer than the plans' round series, so that the
+/// working angle fills the column (the guide takes 0.73 °/mm).
+const PHI_MANTISSAS: [f64; 10] = [1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
+/// Room right of the x axis' end for its arrow and name, mm.
+const RIGHT: f64 = 14.0;
 
-/// The course's scales for diagrams stacked in `height` mm: μ_φ round; μ_s round with s and
-/// ds/dφ sharing it (H1 = 1/μ_φ), as large as the height allows with the lift at most
-/// [`LIFT_MAX_MM`]; μ_d²s/dφ² round, H2 following from μ_ds/dφ = μ_d²s/dφ²·H2·μ_φ.
-pub fn scales(d: &Design, height: f64) -> Scales {
+/// The diagrams' scales and the room they take.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Plan {
+    pub scales: Scales,
+    /// Width and height of the three diagrams with their poles, scale texts and gaps, mm.
+    pub width: f64,
+    pub height: f64,
+}
+
+/// The course's scales for diagrams in at most `max_w` × `max_h` mm:
+/// - μ_φ from [`PHI_MANTISSAS`], the smallest that fits the width (at most
+///   [`WIDTH_MAX_MM`] for the working angle);
+/// - H1 = 1/μ_φ, so that s and ds/dφ share μ_s;
+/// - μ_s round, the smallest (the largest drawing) with the lift at most [`LIFT_MAX_MM`]
+///   whose acceleration analog can be drawn between [`ACCELERATION_MM`] with a whole-mm H2
+///   in [`H2_MM`] within the height: the analog's height is H2·d²s/dφ²·μ_φ/μ_s, so a
+///   large μ_s's small drawing is what keeps H2 from merging its rays;
+/// - μ_d²s/dφ² = μ_ds/dφ/(H2·μ_φ), the course's rule, from the chosen H2.
+pub fn plan(d: &Design, max_w: f64, max_h: f64) -> Plan {
     let p = &d.spec.program;
     let work = (p.rise + p.far_dwell + p.ret).to_degrees();
-    let mu_phi_deg = scale::round_up(work / WIDTH_MM);
+    let width = |mu_deg: f64| POLE_NAME + (180.0 / PI / mu_deg).max(H2_MM.1) + work / mu_deg + RIGHT;
+    let series = (-2..=3).flat_map(|e| PHI_MANTISSAS.map(|m| m * 10f64.powi(e)));
+    let mu_phi_deg = series
+        .clone()
+        .find(|&m| work / m <= WIDTH_MAX_MM && width(m) <= max_w)
+        .unwrap_or_else(|| series.clone().find(|&m| work / m <= WIDTH_MAX_MM).unwrap_or(1.0));
     let mu_phi_rad = mu_phi_deg.to_radians();
     let (vmax, amax) = peaks(d);
-    // The lift and the velocity's two signs share what the acceleration and gaps leave.
-    let room = (height - 2.0 * ACCELERATION_MM - 3.0 * GAP - 8.0).max(40.0);
-    let mu_s = scale::round_up(((p.lift + 2.0 * vmax) / room).max(p.lift / LIFT_MAX_MM));
-    let mu_dds = scale::round_up(amax / ACCELERATION_MM);
-    Scales { mu_phi_deg, mu_phi_rad, mu_s, mu_ds: mu_s, mu_dds, h1: 1.0 / mu_phi_rad, h2: mu_s / (mu_dds * mu_phi_rad) }
+    let fit = |mu_s: f64| {
+        // A = k·H2: the analog's height per mm of pole distance.
+        let k = amax * mu_phi_rad / mu_s;
+        let h2 = (ACCELERATION_MM.1 / k).round().clamp(H2_MM.0, H2_MM.1);
+        let a = k * h2;
+        let height = p.lift / mu_s + 2.0 * vmax / mu_s + 2.0 * a + 4.0 * GAP + 8.0;
+        (h2, a, height)
+    };
+    let mut mu_s = scale::round_up(p.lift / LIFT_MAX_MM);
+    for _ in 0..40 {
+        let (_, a, height) = fit(mu_s);
+        if (ACCELERATION_MM.0..=ACCELERATION_MM.2).contains(&a) && height <= max_h {
+            break;
+        }
+        mu_s = scale::next_round(mu_s);
+    }
+    let (h2, _, height) = fit(mu_s);
+    let h1 = 1.0 / mu_phi_rad;
+    let scales = Scales { mu_phi_deg, mu_phi_rad, mu_s, mu_ds: mu_s, mu_dds: mu_s / (h2 * mu_phi_rad), h1, h2 };
+    Plan { scales, width: width(mu_phi_deg), height }
 }
 
 /// The largest |ds/dφ| and |d²s/dφ²| over both phases (from the laws' peak coefficients).
@@ -71,17 +116,20 @@ pub struct Drawn {
 /// Vertical room of one diagram besides its data: the title above, the axis values below.
 const GAP: f64 = 14.0;
 
-/// Draws the three diagrams from the top of `area`; the poles take the room at its left.
+/// Draws the three diagrams of `plan` from the top left of `area`; the poles take the room
+/// at its left.
+#[allow(clippy::too_many_arguments)]
 pub fn draw(
     g: &mut Group,
     area: Rect,
+    plan: &Plan,
     d: &Design,
     integrated: &[Integrated; 2],
     l: &CamLabels,
     c: &Common,
     lang: Language,
 ) -> Drawn {
-    let sc = scales(d, area.height());
+    let sc = plan.scales;
     let p = &d.spec.program;
     let work = p.rise + p.far_dwell + p.ret;
     let rocker = matches!(d.spec.follower, Follower::Rocker { .. });

@@ -1,6 +1,6 @@
 //! Sheet 3's texts (`templates/labels/cam.yaml`).
 
-use crate::cams::laws::Law;
+use crate::cams::laws::Standard;
 
 crate::label_set! {
     /// Every word of sheet 3 that is not shared with the other sheets.
@@ -17,6 +17,7 @@ crate::label_set! {
         law_polynomial_345,
         law_modified_trapezoid,
         law_modified_sine,
+        law_custom_note(name, corners),
         unit_deg_per_mm,
         unit_rad_per_mm,
         unit_per_mm,
@@ -48,18 +49,18 @@ crate::label_set! {
 }
 
 impl CamLabels {
-    /// A law's name in the sheet's language.
-    pub fn law(&self, law: Law) -> &str {
+    /// A built-in law's name in the sheet's language.
+    pub fn law(&self, law: Standard) -> &str {
         match law {
-            Law::UniformAcceleration => self.law_uniform_acceleration(),
-            Law::LinearlyDecreasing => self.law_linearly_decreasing(),
-            Law::Cosine => self.law_cosine(),
-            Law::Sine => self.law_sine(),
-            Law::Triangular => self.law_triangular(),
-            Law::Trapezoid => self.law_trapezoid(),
-            Law::Polynomial345 => self.law_polynomial_345(),
-            Law::ModifiedTrapezoid => self.law_modified_trapezoid(),
-            Law::ModifiedSine => self.law_modified_sine(),
+            Standard::UniformAcceleration => self.law_uniform_acceleration(),
+            Standard::LinearlyDecreasing => self.law_linearly_decreasing(),
+            Standard::Cosine => self.law_cosine(),
+            Standard::Sine => self.law_sine(),
+            Standard::Triangular => self.law_triangular(),
+            Standard::Trapezoid => self.law_trapezoid(),
+            Standard::Polynomial345 => self.law_polynomial_345(),
+            Standard::ModifiedTrapezoid => self.law_modified_trapezoid(),
+            Standard::ModifiedSine => self.law_modified_sine(),
         }
     }
 

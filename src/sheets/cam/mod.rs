@@ -13,7 +13,7 @@ pub use profile_view::{MAX_PIECES, PROFILE_TOL};
 use super::{COURSE, Context, Sheet, SheetError, SheetKind, SheetOutput};
 use crate::cams::follower::Follower;
 use crate::cams::integrate::{self, Integrated};
-use crate::cams::radius::Phase;
+use crate::cams::laws::Law;
 use crate::cams::{CamWarning, Design};
 use crate::drawing::fmt;
 use crate::drawing::frame::{self, A1_H, A1_W};
@@ -22,18 +22,18 @@ use crate::drawing::layout::{self, Layout};
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Scene, Text};
-use crate::drawing::table::{CELL_TEXT, Table};
-use crate::drawing::text::{LabelText, paragraph, wrap};
+use crate::drawing::table::{self, CELL_TEXT, Table};
+use crate::drawing::text::{LabelText, block_height, paragraph, wrap};
 use crate::project::{CamProject, Project};
 use crate::report::{self, NoteTable, NumTable};
-use kurbo::{Point, Rect};
+use kurbo::{Point, Rect, Vec2};
 use labels::CamLabels;
 
 /// This sheet's place in the course.
 pub const KIND: SheetKind = COURSE[2];
 
 /// Divisions of each phase: the numbered positions and the chord integration.
-pub const DIVISIONS: usize = 8;
+pub use crate::cams::integrate::DIVISIONS;
 
 /// Sheet 3 of a project with a `cam` section.
 pub struct CamSheet<'a> {
@@ -61,13 +61,30 @@ pub struct CamBuild {
     pub tables: Vec<(&'static str, NumTable)>,
 }
 
-const DIAGRAMS: Rect = Rect { x0: 24.0, y0: 9.0, x1: 300.0, y1: 585.0 };
-const DIAGRAMS_BOTTOM: f64 = DIAGRAMS.y1 - NOTES_AND_TABLES;
-const NOMOGRAM: Rect = Rect { x0: 306.0, y0: 9.0, x1: 560.0, y1: 330.0 };
-const PROFILE: Rect = Rect { x0: 566.0, y0: 9.0, x1: 832.0, y1: 330.0 };
-const TABLES: Rect = Rect { x0: 306.0, y0: 336.0, x1: 832.0, y1: 530.0 };
-/// The left column's room below the diagrams: the notes and the law's tables.
-const NOTES_AND_TABLES: f64 = 150.0;
+/// The sheet inside its frame, with a 4 mm margin.
+const SHEET: Rect = Rect { x0: 24.0, y0: 9.0, x1: 832.0, y1: 585.0 };
+/// The diagrams' column is at most this wide, mm.
+const LEFT_MAX: f64 = 320.0;
+/// Between regions, mm.
+const GAP: f64 = 6.0;
+/// Room a view needs besides its drawing: its title above and its scale below, its margins.
+const VIEW_TOP: f64 = 10.0;
+const VIEW_BOTTOM: f64 = 8.0;
+const VIEW_SIDES: f64 = 8.0;
+/// The nomogram's drawing is at least this long on its longer side when the profile can
+/// be drawn smaller to allow it, mm.
+const NOMOGRAM_MIN_MM: f64 = 130.0;
+
+/// The regions of the sheet and the views' scales, chosen by content.
+struct Layout3 {
+    diagrams: Rect,
+    law_tables: Option<Rect>,
+    tables: Rect,
+    nomogram: Rect,
+    profile: Rect,
+    nomogram_mu: f64,
+    profile_mu: f64,
+}
 
 /// Builds sheet 3.
 pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
@@ -76,74 +93,91 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let d = &p.design;
     let mut fr = Group::new("frame", Rect::new(0.0, 0.0, A1_W, A1_H));
     frame::frame(&mut fr);
-    let integrated = Phase::BOTH.map(|ph| integrate::chords(&d.spec.program, ph, DIVISIONS));
+    let integrated = integrate::turn(&d.spec.program, DIVISIONS);
     let errors = diagrams::error_percent(d, &integrated);
-
-    // The nomogram and the profile.
     let phis = nomogram::positions(d, DIVISIONS);
-    let mut nm = Group::new("nomogram", NOMOGRAM);
-    nm.text(Text::new(Point::new(NOMOGRAM.x0 + 2.0, NOMOGRAM.y0 + 5.0), l.nomogram_title(), 3.5, Anchor::Start));
-    let mut nl = Labels::new();
-    let n_area = Rect::new(NOMOGRAM.x0 + 4.0, NOMOGRAM.y0 + 10.0, NOMOGRAM.x1 - 4.0, NOMOGRAM.y1 - 6.0);
-    let nomogram_mu = nomogram::draw(&mut nm, n_area, d, &phis, &mut nl, l, c, lang);
-    nl.place(&mut nm, NOMOGRAM);
+    let tables = note_tables_of(d, &phis, errors);
 
-    let mut pv = Group::new("profile", PROFILE);
-    pv.text(Text::new(Point::new(PROFILE.x0 + 2.0, PROFILE.y0 + 5.0), l.profile_title(), 3.5, Anchor::Start));
-    let mut pl = Labels::new();
-    let p_area = Rect::new(PROFILE.x0 + 4.0, PROFILE.y0 + 10.0, PROFILE.x1 - 4.0, PROFILE.y1 - 8.0);
-    let prof = profile_view::draw(&mut pv, p_area, d, &phis, &mut pl, l, c, lang);
-    let tail = format!(
-        " = {} {} ({})",
-        fmt::trimmed(prof.mu, lang),
-        c.unit_m_per_mm(),
-        fmt::localise(&scale::ratio(prof.mu), lang)
-    );
-    LabelText::new("μ", "l").with_tail(tail).draw(
-        &mut pv,
-        Point::new(PROFILE.x0 + 2.0, PROFILE.y1 - 1.0),
-        2.5,
-        Anchor::Start,
-    );
-    pl.place(&mut pv, PROFILE);
-
-    // The diagrams, with the law's name above and the notes below.
-    let mut dg = Group::new("diagrams", DIAGRAMS);
+    // The left column: the law's name, the diagrams, the notes, the law's tables if they fit.
     let title = if p.laws.0 == p.laws.1 {
-        l.laws_title(l.law(p.laws.0))
+        l.laws_title(&law_name(p, &p.laws.0, l, lang))
     } else {
-        l.laws_title_two(l.law(p.laws.0), l.law(p.laws.1))
+        l.laws_title_two(&law_name(p, &p.laws.0, l, lang), &law_name(p, &p.laws.1, l, lang))
     };
-    let width = DIAGRAMS.width() - 4.0;
+    let fitted = profile_view::fit(d);
+    let notes = sheet_notes(p, errors, fitted.deviation, l, lang);
+    let title_lines = wrap(&title, 3.5, LEFT_MAX - 4.0);
+    let notes_h =
+        |w: f64| notes.iter().map(|n| block_height(wrap(n, CELL_TEXT, w).len(), CELL_TEXT) + 1.0).sum::<f64>();
+    let head = 5.0 + block_height(title_lines.len(), 3.5) + 2.0;
+    let plan = diagrams::plan(d, LEFT_MAX - 4.0, SHEET.height() - head - notes_h(LEFT_MAX - 4.0) - 8.0);
+    let (law, rest): (Vec<_>, Vec<_>) = tables.iter().cloned().partition(|(s, _)| s.starts_with("law"));
+    let drawn_tables = |ts: &[(&'static str, NumTable)]| -> Vec<Table> {
+        ts.iter().map(|(s, t)| sheet_table(s, t, l, c, lang)).collect()
+    };
+    let lay = layout(d, &phis, &plan, head + notes_h(plan.width.max(200.0)), &drawn_tables(&law), &drawn_tables(&rest));
+    let width = lay.diagrams.width() - 4.0;
+
+    let mut dg = Group::new("diagrams", lay.diagrams);
     let mut y = paragraph(
         &mut dg,
-        Point::new(DIAGRAMS.x0 + 2.0, DIAGRAMS.y0 + 5.0),
+        Point::new(lay.diagrams.x0 + 2.0, lay.diagrams.y0 + 5.0),
         &wrap(&title, 3.5, width),
         3.5,
         Anchor::Start,
     );
-    let area = Rect::new(DIAGRAMS.x0 + 2.0, y + 2.0, DIAGRAMS.x1 - 14.0, DIAGRAMS_BOTTOM);
-    let drawn = diagrams::draw(&mut dg, area, d, &integrated, l, c, lang);
+    let area = Rect::new(lay.diagrams.x0 + 2.0, y + 2.0, lay.diagrams.x1, y + 2.0 + plan.height);
+    let drawn = diagrams::draw(&mut dg, area, &plan, d, &integrated, l, c, lang);
     y = drawn.bottom + 4.0;
-    for n in sheet_notes(p, errors, prof.deviation, l, lang) {
-        y = paragraph(&mut dg, Point::new(DIAGRAMS.x0 + 2.0, y), &wrap(&n, CELL_TEXT, width), CELL_TEXT, Anchor::Start)
-            + 1.0;
+    for n in &notes {
+        y = paragraph(
+            &mut dg,
+            Point::new(lay.diagrams.x0 + 2.0, y),
+            &wrap(n, CELL_TEXT, width),
+            CELL_TEXT,
+            Anchor::Start,
+        ) + 1.0;
     }
-    // The group ends with its notes; the law's tables may follow in the column.
-    dg.region = Rect::new(DIAGRAMS.x0, DIAGRAMS.y0, DIAGRAMS.x1, y + 1.0);
+    dg.region = Rect::new(lay.diagrams.x0, lay.diagrams.y0, lay.diagrams.x1, (y + 1.0).max(lay.diagrams.y0 + 10.0));
 
-    // The tables: the law's under the notes when they fit there, the rest on the right.
-    let tables = note_tables_of(d, &phis, errors);
-    let left = Rect::new(DIAGRAMS.x0 + 2.0, y + 3.0, DIAGRAMS.x1, DIAGRAMS.y1);
-    let (law, rest): (Vec<_>, Vec<_>) = tables.iter().cloned().partition(|(s, _)| s.starts_with("law"));
-    let law_h: f64 = law.iter().map(|(s, t)| sheet_table(s, t, l, c, lang).size().1 + 3.0).sum();
-    let table_groups = if law_h <= left.height() {
-        let mut g = tables_group(&law, left, l, c, lang);
-        g.id = "law-tables".into();
-        vec![g, tables_group(&rest, TABLES, l, c, lang)]
-    } else {
-        vec![tables_group(&tables, TABLES, l, c, lang)]
-    };
+    // The nomogram and the profile.
+    let mut nm = Group::new("nomogram", lay.nomogram);
+    view_title(&mut nm, l.nomogram_title());
+    let mut nl = Labels::new();
+    let n_extent = nomogram::extent(d, &phis);
+    nomogram::draw(&mut nm, view_area(lay.nomogram), n_extent, lay.nomogram_mu, d, &phis, &mut nl, l, c, lang);
+    scale_note(&mut nm, lay.nomogram_mu, None, c, lang);
+    nl.place(&mut nm, lay.nomogram);
+
+    let mut pv = Group::new("profile", lay.profile);
+    view_title(&mut pv, l.profile_title());
+    let mut pl = Labels::new();
+    let p_extent = profile_view::extent(d);
+    let prof = profile_view::draw(
+        &mut pv,
+        view_area(lay.profile),
+        p_extent,
+        lay.profile_mu,
+        d,
+        &fitted,
+        &phis,
+        &mut pl,
+        l,
+        c,
+        lang,
+    );
+    scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), c, lang);
+    pl.place(&mut pv, lay.profile);
+
+    // The tables.
+    let mut table_groups = vec![];
+    match lay.law_tables {
+        Some(r) => {
+            table_groups.push(table::flow("law-tables", drawn_tables(&law), r, 3.0));
+            table_groups.push(table::flow("tables", drawn_tables(&rest), lay.tables, 3.0));
+        }
+        None => table_groups.push(table::flow("tables", drawn_tables(&tables), lay.tables, 3.0)),
+    }
 
     let sheet_name = l.sheet_name();
     let tb = ctx.title_block(c, sheet_name, &fmt::localise(&scale::ratio(prof.mu), lang), KIND.number)?;
@@ -157,13 +191,160 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         scales: drawn.scales,
         integrated,
         errors,
-        nomogram_mu,
+        nomogram_mu: lay.nomogram_mu,
         profile_mu: prof.mu,
         profile_pieces: prof.pieces,
         profile_deviation: prof.deviation,
         layout,
         tables,
     })
+}
+
+/// A view's title at its region's top left.
+fn view_title(g: &mut Group, title: &str) {
+    let r = g.region;
+    g.text(Text::new(Point::new(r.x0 + 2.0, r.y0 + 5.0), title, 3.5, Anchor::Start));
+}
+
+/// Where a view draws: its region less its title, scale and margins.
+fn view_area(r: Rect) -> Rect {
+    Rect::new(r.x0 + VIEW_SIDES / 2.0, r.y0 + VIEW_TOP, r.x1 - VIEW_SIDES / 2.0, r.y1 - VIEW_BOTTOM)
+}
+
+/// "μ_l = … m/mm" (and the GOST ratio) under a view.
+fn scale_note(g: &mut Group, mu: f64, ratio: Option<String>, c: &Common, lang: Language) {
+    let mut tail = format!(" = {} {}", fmt::trimmed(mu, lang), c.unit_m_per_mm());
+    if let Some(r) = ratio {
+        tail.push_str(&format!(" ({})", fmt::localise(&r, lang)));
+    }
+    let r = g.region;
+    LabelText::new("μ", "l").with_tail(tail).draw(g, Point::new(r.x0 + 2.0, r.y1 - 2.0), 2.5, Anchor::Start);
+}
+
+/// The sheet's regions by content. The diagrams' column is as wide as its plan; the tables
+/// not kept in that column go to a strip left of the title block, as low as fits. Two
+/// arrangements of the views are tried, and the one with the larger profile wins (then the
+/// larger nomogram):
+/// - the nomogram under the notes in the diagrams' column, the profile alone on the right;
+/// - both on the right side by side, the profile at the largest GOST scale that leaves the
+///   nomogram [`NOMOGRAM_MIN_MM`], the law's tables under the notes when they fit.
+fn layout(d: &Design, phis: &[f64], plan: &diagrams::Plan, text_h: f64, law: &[Table], rest: &[Table]) -> Layout3 {
+    let tb = frame::title_block_rect();
+    let left_w = plan.width + 4.0;
+    let column_used = text_h + plan.height + 10.0;
+    let right_x = SHEET.x0 + left_w + GAP;
+    let sizes = |ts: &[Table]| ts.iter().map(Table::size).collect::<Vec<_>>();
+    let strip = |sizes: &[(f64, f64)]| {
+        let h = table::flow_height(sizes, tb.x0 - GAP - right_x, 3.0).unwrap_or(SHEET.height() / 2.0);
+        Rect::new(right_x, SHEET.y1 - h, tb.x0 - GAP, SHEET.y1)
+    };
+    let views_above = |tables: Rect| Rect::new(right_x, SHEET.y0, SHEET.x1, tables.y0.min(tb.y0) - GAP);
+    let (n_ext, p_ext) = (nomogram::extent(d, phis), profile_view::extent(d));
+    let all: Vec<(f64, f64)> = sizes(law).into_iter().chain(sizes(rest)).collect();
+
+    // The nomogram in the diagrams' column, the profile alone on the right.
+    let below = {
+        let tables = strip(&all);
+        let views = views_above(tables);
+        let column = Rect::new(SHEET.x0, SHEET.y0 + column_used + GAP, SHEET.x0 + left_w, SHEET.y1);
+        let n = fit_view(n_ext, column, false).filter(|(mu, _)| longer_side(n_ext, *mu) >= NOMOGRAM_MIN_MM * 0.6);
+        let p = fit_view(p_ext, views, true);
+        n.zip(p).map(|((nomogram_mu, nomogram), (profile_mu, profile))| Layout3 {
+            diagrams: Rect::new(SHEET.x0, SHEET.y0, SHEET.x0 + left_w, nomogram.y0 - GAP),
+            law_tables: None,
+            tables,
+            nomogram,
+            profile: centred_across(profile, views),
+            nomogram_mu,
+            profile_mu,
+        })
+    };
+
+    // Both on the right.
+    let law_h: f64 = sizes(law).iter().map(|s| s.1 + 3.0).sum();
+    let law_fits = column_used + law_h <= SHEET.height() && sizes(law).iter().all(|s| s.0 <= left_w);
+    let rest_sizes = sizes(rest);
+    let tables = strip(if law_fits { &rest_sizes } else { &all });
+    let views = views_above(tables);
+    let law_tables = law_fits.then(|| Rect::new(SHEET.x0, SHEET.y1 - law_h, SHEET.x0 + left_w, SHEET.y1));
+    let diagrams = Rect::new(SHEET.x0, SHEET.y0, SHEET.x0 + left_w, law_tables.map_or(SHEET.y1, |r| r.y0 - GAP));
+    let mut beside = None;
+    for mu_p in scale::length_scales() {
+        let Some((_, profile)) = fit_at(p_ext, views, mu_p) else { continue };
+        let rest = Rect::new(views.x0, views.y0, views.x1 - profile.width() - GAP, views.y1);
+        let Some((mu_n, nomogram)) = fit_view(n_ext, rest, false) else { continue };
+        let found = (mu_p, profile, mu_n, nomogram);
+        let enough = longer_side(n_ext, mu_n) >= NOMOGRAM_MIN_MM;
+        if beside.is_none() || enough {
+            beside = Some(found);
+        }
+        if enough {
+            break;
+        }
+    }
+    let beside = beside.map(|(profile_mu, profile, nomogram_mu, nomogram)| {
+        // The room left over, shared out between and round the two.
+        let slack = ((views.width() - profile.width() - nomogram.width() - GAP) / 3.0).max(0.0);
+        let nomogram = nomogram + Vec2::new(slack, 0.0);
+        let px = (nomogram.x1 + GAP + slack).min(views.x1 - profile.width());
+        let profile = profile + Vec2::new(px - profile.x0, 0.0);
+        Layout3 { diagrams, law_tables, tables, nomogram, profile, nomogram_mu, profile_mu }
+    });
+    let better =
+        |a: &Layout3, b: &Layout3| (a.profile_mu, a.nomogram_mu) < (b.profile_mu * 0.999, b.nomogram_mu * 0.999);
+    match (below, beside) {
+        (Some(a), Some(b)) => {
+            if better(&b, &a) {
+                b
+            } else {
+                a
+            }
+        }
+        (Some(a), None) | (None, Some(a)) => a,
+        // Nothing fits at any scale (an extent of no size): the views at 1:1 side by side.
+        (None, None) => {
+            let half = views.width() / 2.0;
+            Layout3 {
+                diagrams,
+                law_tables,
+                tables,
+                nomogram: Rect::new(views.x0, views.y0, views.x0 + half - GAP, views.y1),
+                profile: Rect::new(views.x0 + half, views.y0, views.x1, views.y1),
+                nomogram_mu: 0.001,
+                profile_mu: 0.001,
+            }
+        }
+    }
+}
+
+/// The longer side of a view's drawing at `mu`, mm.
+fn longer_side((lo, hi): (Vec2, Vec2), mu: f64) -> f64 {
+    ((hi.x - lo.x) / mu).max((hi.y - lo.y) / mu)
+}
+
+/// The region a view of the box `ext` (metres) takes at `mu` at the top left of `room`, if it
+/// fits there.
+fn fit_at((lo, hi): (Vec2, Vec2), room: Rect, mu: f64) -> Option<(f64, Rect)> {
+    let (w, h) = ((hi.x - lo.x) / mu + VIEW_SIDES, (hi.y - lo.y) / mu + VIEW_TOP + VIEW_BOTTOM);
+    (w <= room.width() && h <= room.height()).then(|| (mu, Rect::new(room.x0, room.y0, room.x0 + w, room.y0 + h)))
+}
+
+/// The largest scale at which a view of the box `ext` fits `room` — a GOST one, or of the
+/// round series — and its region there.
+fn fit_view(ext: (Vec2, Vec2), room: Rect, gost: bool) -> Option<(f64, Rect)> {
+    let (lo, hi) = ext;
+    let need =
+        ((hi.x - lo.x) / (room.width() - VIEW_SIDES)).max((hi.y - lo.y) / (room.height() - VIEW_TOP - VIEW_BOTTOM));
+    if !(need.is_finite() && need > 0.0) {
+        return None;
+    }
+    let mu = if gost { scale::length_scale(need) } else { scale::round_up(need) };
+    fit_at(ext, room, mu)
+}
+
+/// `r` moved to the middle of `within` across.
+fn centred_across(r: Rect, within: Rect) -> Rect {
+    r + Vec2::new(within.x0 + (within.width() - r.width()) / 2.0 - r.x0, 0.0)
 }
 
 /// The notes under the diagrams: the phases, the integration, the nomogram's and the
@@ -194,8 +375,29 @@ fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLabels
             out.push(l.roller_reduced(&fmt::value(r * 1e3, lang), &fmt::value(rho_min * 1e3, lang)));
         }
     }
+    for (k, law) in [&p.laws.0, &p.laws.1].into_iter().enumerate() {
+        if let Law::Custom(c) = law
+            && (k == 0 || p.laws.0 != p.laws.1)
+        {
+            let corners: Vec<String> =
+                c.corners().map(|(x, a)| format!("({}; {})", fmt::value(x, lang), fmt::value(a, lang))).collect();
+            out.push(l.law_custom_note(&law_name(p, law, l, lang), &corners.join(", ")));
+        }
+    }
     out.extend(p.assumptions.iter().cloned());
     out
+}
+
+/// A law's name on the sheet: the built-in law's in the sheet's language; for a law of the
+/// project's table, the name the file gives, else the replaced law's, else its key.
+fn law_name(p: &CamProject, law: &Law, l: &CamLabels, lang: Language) -> String {
+    match law {
+        Law::Standard(s) => l.law(*s).to_string(),
+        Law::Custom(c) => match p.law_names.iter().find(|(k, _)| k == c.key()) {
+            Some((_, name)) => name.get(lang).to_string(),
+            None => c.replaces().map_or_else(|| c.key().to_string(), |s| l.law(s).to_string()),
+        },
+    }
 }
 
 /// The note's tables as numbers, by file stem.
@@ -217,12 +419,6 @@ fn table_title<'a>(stem: &str, l: &'a CamLabels) -> &'a str {
         "profile-rise" | "profile-return" => l.profile_table(),
         _ => l.results_table(),
     }
-}
-
-/// Draws the tables in `region`, in columns left to right.
-fn tables_group(tables: &[(&'static str, NumTable)], region: Rect, l: &CamLabels, c: &Common, lang: Language) -> Group {
-    let drawn = tables.iter().map(|(stem, t)| sheet_table(stem, t, l, c, lang));
-    crate::drawing::table::flow("tables", drawn, region, 3.0)
 }
 
 fn sheet_table(stem: &str, t: &NumTable, l: &CamLabels, c: &Common, lang: Language) -> Table {
@@ -314,6 +510,7 @@ pub fn results(p: &CamProject, b: &CamBuild) -> serde_json::Value {
         })
         .collect();
     let err = b.integrated.each_ref().map(|i| i.error(pr));
+    let closure = integrate::closure(&b.integrated);
     let mut out = json!({
         "follower": match d.spec.follower { Follower::Translating => "translating", Follower::Rocker { .. } => "rocker" },
         "laws": [pr.rise_law.key(), pr.return_law.key()],
@@ -333,7 +530,7 @@ pub fn results(p: &CamProject, b: &CamBuild) -> serde_json::Value {
         "profile_mu_l": b.profile_mu,
         "profile_pieces": b.profile_pieces,
         "profile_deviation": b.profile_deviation,
-        "integration_error": {"divisions": DIVISIONS, "rise": err[0], "return": err[1], "s_percent_of_lift": b.errors.0, "ds_percent_of_peak": b.errors.1},
+        "integration_error": {"divisions": DIVISIONS, "rise": err[0], "return": err[1], "s_percent_of_lift": b.errors.0, "ds_percent_of_peak": b.errors.1, "closure_s": closure.0, "closure_ds": closure.1},
         "law_columns": ["phi_deg", "s", "ds", "dds"],
         "law": law,
         "profile_columns": ["phi_deg", "pitch_x", "pitch_y", "working_x", "working_y"],

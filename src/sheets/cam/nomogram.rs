@@ -12,8 +12,7 @@ use crate::cams::radius::Phase;
 use crate::drawing::fmt;
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Labels;
-use crate::drawing::scale;
-use crate::drawing::scene::{AXIS, Anchor, DASHED, Group, MAIN, THIN};
+use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::frame_pivot;
 use crate::drawing::text::LabelText;
 use crate::num::math::Norm;
@@ -94,29 +93,39 @@ fn exit(p: Vec2, dir: Vec2, lo: Vec2, hi: Vec2) -> f64 {
     along(p.x, dir.x, lo.x, hi.x).min(along(p.y, dir.y, lo.y, hi.y)).max(0.0)
 }
 
-/// Draws the nomogram in `area`; returns its scale, m/mm.
+/// The follower-frame box (metres) the nomogram shows: every B_k and B′_k, O and the pivot,
+/// with room below O for the limiting lines to meet and round the picture for labels.
+pub fn extent(d: &Design, phis: &[f64]) -> (Vec2, Vec2) {
+    let (lo, hi) = bounds(extent_points(d, phis).into_iter().map(|p| (p, 0.0)));
+    let pad = 0.15 * (hi - lo).norm();
+    (lo - Vec2::new(pad, pad), hi + Vec2::new(pad, pad * 0.5))
+}
+
+/// A view of the follower-frame box `(lo, hi)` centred in `area` at `mu` m/mm, mirrored for a
+/// counter-clockwise cam.
+pub fn centred(area: Rect, (lo, hi): (Vec2, Vec2), mu: f64, mirror: bool) -> View {
+    let (cx, cy) = ((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0);
+    let mx = if mirror { -cx } else { cx };
+    let centre = area.center();
+    View { origin: Point::new(centre.x - mx / mu, centre.y + cy / mu), mu, mirror }
+}
+
+/// Draws the nomogram of the box `(lo, hi)` ([`extent`]) centred in `area` at `mu` m/mm.
 #[allow(clippy::too_many_arguments)]
 pub fn draw(
     g: &mut Group,
     area: Rect,
+    (lo, hi): (Vec2, Vec2),
+    mu: f64,
     d: &Design,
     phis: &[f64],
     labels: &mut Labels,
     l: &CamLabels,
     c: &Common,
     lang: Language,
-) -> f64 {
+) {
     let mirror = d.spec.sense == crate::cams::Sense::Ccw;
-    let (mut lo, mut hi) = bounds(extent_points(d, phis).into_iter().map(|p| (p, 0.0)));
-    // Room below O for the limiting lines to meet, and round the picture for labels.
-    let pad = 0.15 * (hi - lo).norm();
-    lo -= Vec2::new(pad, pad);
-    hi += Vec2::new(pad, pad * 0.5);
-    let mu = scale::round_up(((hi.x - lo.x) / area.width()).max((hi.y - lo.y) / area.height()));
-    let (cx, cy) = ((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0);
-    let centre = area.center();
-    let mx = if mirror { -cx } else { cx };
-    let view = View { origin: Point::new(centre.x - mx / mu, centre.y + cy / mu), mu, mirror };
+    let view = centred(area, (lo, hi), mu, mirror);
     let r = &d.region;
     let o = d.centre.o;
 
@@ -195,7 +204,4 @@ pub fn draw(
         let t = format!("e = {} {}", fmt::value(o.x.abs() * 1e3, lang), c.unit_mm());
         labels.add_text(view.at(Vec2::new(o.x / 2.0, o.y)), Vec2::new(0.0, 1.0), &t, 3.5);
     }
-    let scale = LabelText::new("μ", "l").with_tail(format!(" = {} {}", fmt::trimmed(mu, lang), c.unit_m_per_mm()));
-    scale.draw(g, Point::new(area.x0, area.y1 - 1.0), 2.5, Anchor::Start);
-    mu
 }

@@ -1,25 +1,54 @@
-//! The cam's profile at a GOST scale: the pitch profile, the working profile (the roller's
-//! envelope as Bézier pieces), the base circle, the rollers and the numbered positions by
-//! inversion, the follower in the start position and the cam's sense of rotation.
+//! The cam's profile at a GOST scale, by inversion as the course builds it: the follower
+//! carried round the cam against its rotation. For a rocker, its pivot's positions A_k on the
+//! circle of radius a_w round O, and from each an arc of radius l from the base circle to the
+//! roller centre B_k (the swing β_k) with the rocker line A_k B_k; for a translating follower
+//! with an offset, its axis in each position tangent to the circle of radius e; without one,
+//! its axis through O. Then the pitch profile through the B_k, the rollers, the working
+//! profile (the rollers' envelope as Bézier pieces), the base circle with r_min, the follower
+//! in the start position and the cam's sense of rotation.
 
 use super::labels::CamLabels;
-use super::nomogram::{View, bounds};
+use super::nomogram::{bounds, centred, position_labels};
 use crate::cams::follower::Follower;
 use crate::cams::{Design, Sense};
 use crate::drawing::fmt;
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
-use crate::drawing::scale;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
-use crate::drawing::symbols::{frame_pivot, turn_arrow};
+use crate::drawing::symbols::{frame_pivot, turn_arrow, vector};
 use crate::drawing::text::LabelText;
-use crate::num::math::Norm;
-use kurbo::{Affine, CubicBez, Rect, Vec2};
+use crate::num::bezier::Fitted;
+use crate::num::math::{Norm, atan2, sin_cos};
+use kurbo::{Affine, CubicBez, Point, Rect, Vec2};
+use std::f64::consts::TAU;
 
 /// The profiles' accuracy, metres, and the most pieces a part may take.
 pub const PROFILE_TOL: f64 = 1e-6;
 pub const MAX_PIECES: usize = 256;
+
+/// The translating follower's stem above the roller, in r_max.
+const STEM: f64 = 0.4;
+
+/// The profiles as Bézier pieces, part by part, fitted once for the notes and the drawing.
+pub struct Pieces {
+    pub pitch: Vec<Fitted>,
+    /// The working profile (none for a knife edge, whose working profile is the pitch one).
+    pub working: Option<Vec<Fitted>>,
+    /// The pieces of the profile the cam is cut to and their largest measured deviation, m.
+    pub count: usize,
+    pub deviation: f64,
+}
+
+/// Fits the profiles within [`PROFILE_TOL`].
+pub fn fit(d: &Design) -> Pieces {
+    let pitch = d.profile.cubics(0.0, PROFILE_TOL, MAX_PIECES);
+    let working = (d.roller > 0.0).then(|| d.profile.cubics(d.roller, PROFILE_TOL, MAX_PIECES));
+    let cut = working.as_ref().unwrap_or(&pitch);
+    let count = cut.iter().map(|f| f.cubics.len()).sum();
+    let deviation = cut.iter().map(|f| f.deviation).fold(0.0, f64::max);
+    Pieces { pitch, working, count, deviation }
+}
 
 /// What the profile view measured.
 pub struct ProfileDrawn {
@@ -31,32 +60,37 @@ pub struct ProfileDrawn {
     pub deviation: f64,
 }
 
-/// The box (cam frame, metres) the view must hold: the profiles with the rollers, and the
-/// follower at the start of the rise.
-fn extent(d: &Design) -> (Vec2, Vec2) {
-    let pitch: Vec<Vec2> = (0..720).map(|k| d.profile.pitch(std::f64::consts::TAU * k as f64 / 720.0).p).collect();
-    let r_max = pitch.iter().map(|p| p.norm()).fold(0.0, f64::max);
+/// The largest distance of the pitch profile from O, metres.
+fn r_max(d: &Design) -> f64 {
+    (0..720).map(|k| d.profile.pitch(TAU * k as f64 / 720.0).p.norm()).fold(0.0, f64::max)
+}
+
+/// The box (cam frame, metres) the view must hold: the profiles with the rollers, the
+/// inversion's construction (the pivots' circle of a rocker) and the follower at the start
+/// of the rise, with room round them for the position numbers.
+pub fn extent(d: &Design) -> (Vec2, Vec2) {
+    let pitch: Vec<Vec2> = (0..720).map(|k| d.profile.pitch(TAU * k as f64 / 720.0).p).collect();
+    let r_max = r_max(d);
     let b0 = pitch[0];
     let follower = match d.spec.follower {
         Follower::Translating => (b0 + Vec2::new(0.0, STEM * r_max), 0.0),
-        Follower::Rocker { length } => (b0 + Vec2::new(length, 0.0), 0.01 * r_max),
+        Follower::Rocker { .. } => (Vec2::ZERO, d.centre_distance().unwrap_or_default()),
     };
     let (lo, hi) = bounds(pitch.iter().map(|&p| (p, d.roller)).chain([follower]));
-    // Room round the profile for the position numbers.
     let pad = 0.08 * r_max;
     (lo - Vec2::new(pad, pad), hi + Vec2::new(pad, pad))
 }
 
-/// The translating follower's stem above the roller, in r_max.
-const STEM: f64 = 0.4;
-
-/// Draws the profile centred in `area` (O at the centre for a translating follower; for a
-/// rocker the view also holds the pivot).
+/// Draws the profile of the box `(lo, hi)` ([`extent`]) centred in `area` at the GOST scale
+/// `mu` m/mm.
 #[allow(clippy::too_many_arguments)]
 pub fn draw(
     g: &mut Group,
     area: Rect,
+    (lo, hi): (Vec2, Vec2),
+    mu: f64,
     d: &Design,
+    pieces: &Pieces,
     phis: &[f64],
     labels: &mut Labels,
     l: &CamLabels,
@@ -64,39 +98,26 @@ pub fn draw(
     lang: Language,
 ) -> ProfileDrawn {
     let mirror = d.spec.sense == Sense::Ccw;
-    let (lo, hi) = extent(d);
-    let mu = scale::length_scale(((hi.x - lo.x) / area.width()).max((hi.y - lo.y) / area.height()));
-    let mid = (lo + hi) * 0.5;
-    let mx = if mirror { -mid.x } else { mid.x };
-    let view = View { origin: area.center() + Vec2::new(-mx / mu, mid.y / mu), mu, mirror };
-    let r_max = (hi - lo).norm() / 2.0;
-    let o = Vec2::ZERO;
+    let view = centred(area, (lo, hi), mu, mirror);
     let pr = &d.profile;
     // To paper: the cam frame's metres through the view (mirror and y up).
     let sx = if mirror { -1.0 / mu } else { 1.0 / mu };
     let to_paper = Affine::new([sx, 0.0, 0.0, -1.0 / mu, view.origin.x, view.origin.y]);
     let path_of = |cubics: &[CubicBez]| Path::cubics(&cubics.iter().map(|c| to_paper * *c).collect::<Vec<_>>());
-
-    // The base circle and the pitch profile.
-    g.circle(view.origin, d.centre.r_min / mu, DASHED);
-    let pitch = pr.cubics(0.0, PROFILE_TOL, MAX_PIECES);
     let knife = d.roller == 0.0;
-    for f in &pitch {
+
+    inversion(g, d, phis, &|v| view.at(v), mu, labels);
+    // The base circle and the profiles.
+    g.circle(view.origin, d.centre.r_min / mu, DASHED);
+    for f in &pieces.pitch {
         g.curve(path_of(&f.cubics), if knife { MAIN } else { THIN });
     }
-    let (pieces, deviation) = if knife {
-        (pitch.iter().map(|f| f.cubics.len()).sum(), pitch.iter().map(|f| f.deviation).fold(0.0, f64::max))
-    } else {
-        let work = pr.cubics(d.roller, PROFILE_TOL, MAX_PIECES);
-        for f in &work {
-            g.curve(path_of(&f.cubics), MAIN);
-        }
-        (work.iter().map(|f| f.cubics.len()).sum(), work.iter().map(|f| f.deviation).fold(0.0, f64::max))
-    };
-    // The numbered positions: rays from O to the roller centres, the rollers.
-    for (&phi, name) in phis.iter().zip(super::nomogram::position_labels(phis)) {
+    for f in pieces.working.iter().flatten() {
+        g.curve(path_of(&f.cubics), MAIN);
+    }
+    // The numbered positions: the rollers and their numbers outside them.
+    for (&phi, name) in phis.iter().zip(position_labels(phis)) {
         let p = pr.pitch(phi).p;
-        g.line(view.at(o), view.at(p), THIN);
         if !knife {
             g.circle(view.at(p), d.roller / mu, THIN);
         }
@@ -105,45 +126,111 @@ pub fn draw(
             labels.add_text_ranked(view.at(out), Vec2::ZERO, &name, 2.5, 2);
         }
     }
-    // The follower at the start of the rise (the follower frame is the cam frame at φ = 0).
-    let b0 = pr.pitch(0.0).p;
-    match d.spec.follower {
-        Follower::Translating => {
-            let top = b0 + Vec2::new(0.0, STEM * r_max * 0.8);
-            g.line(view.at(b0), view.at(top), MAIN);
-            g.line(view.at(b0 - Vec2::new(0.0, 0.1 * r_max)), view.at(top + Vec2::new(0.0, 0.05 * r_max)), AXIS);
-        }
-        Follower::Rocker { length } => {
-            let a = Vec2::new(length, 0.0) + b0;
-            frame_pivot(g, view.at(a), 1.5);
-            g.line(view.at(a), view.at(b0), MAIN);
-            labels.add_text(view.at(a), Vec2::new(1.0, -1.0), "A₀", 3.5);
-        }
-    }
-    if !knife {
-        g.circle(view.at(b0), d.roller / mu, MAIN);
-    }
-    // O, and the sense of rotation.
+    follower_at_start(g, d, &|v| view.at(v), mu);
+    // O, and the sense of rotation with ω beside its arrow.
     frame_pivot(g, view.origin, 1.5);
     labels.add_text(view.origin, Vec2::new(-1.0, 1.0), "O", 3.5);
-    let arrow_r = 0.25 * d.centre.r_min / mu;
-    turn_arrow(g, view.origin, arrow_r.max(6.0), 200.0, 60.0, mirror, THIN);
-    labels.add_text_ranked(view.origin + Vec2::new(-arrow_r.max(6.0) - 3.0, 0.0), Vec2::new(-1.0, 0.0), "ω", 3.5, 1);
+    let arrow_r = (0.25 * d.centre.r_min / mu).max(6.0);
+    turn_arrow(g, view.origin, arrow_r, 200.0, 60.0, mirror, THIN);
+    let (s, c_) = sin_cos(if mirror { 170.0f64 } else { 230.0f64 }.to_radians());
+    let out = Vec2::new(c_, s);
+    labels.add_text_ranked(view.origin + out * arrow_r, out, "ω", 3.5, 0);
     // The curves' names.
-    let far = pr.pitch(d.spec.program.rise + d.spec.program.far_dwell / 2.0).p;
+    let prog = &d.spec.program;
+    let far = pr.pitch(prog.rise + prog.far_dwell / 2.0).p;
     labels.add_ranked(view.at(far), Vec2::new(0.0, -1.0), LabelText::new(l.pitch_profile(), ""), 2.5, 3);
     if !knife {
-        let (w, _) = pr.working(d.roller, d.spec.program.rise / 2.0);
+        let (w, _) = pr.working(d.roller, prog.rise / 2.0);
         labels.add_ranked(view.at(w * 0.97), Vec2::ZERO, LabelText::new(l.working_profile(), ""), 2.5, 3);
     }
-    let base = Vec2::new(0.0, -d.centre.r_min);
-    labels.add_ranked(view.at(base), Vec2::new(0.0, 1.0), LabelText::new(l.base_circle(), ""), 2.5, 3);
+    // r_min: a radius into the middle of the near dwell, where the profile is the base circle.
+    let near = prog.rise + prog.far_dwell + prog.ret;
+    let dir = pr.pitch((near + TAU) / 2.0).p.unit();
+    let base = dir * d.centre.r_min;
+    vector(g, view.origin, view.at(base), THIN);
+    labels.add_ranked(view.at(base * 1.02), Vec2::ZERO, LabelText::new(l.base_circle(), ""), 2.5, 3);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
         fmt::value(d.centre.r_min * 1e3, lang),
         c.unit_mm()
     ));
-    labels.add_ranked(view.at(base * 0.5), Vec2::new(1.0, 0.0), r_text, 2.5, 3);
-    g.line(view.origin, view.at(base), THIN);
-    ProfileDrawn { mu, pieces, deviation }
+    labels.add_ranked(view.at(base * 0.55), Vec2::ZERO, r_text, 2.5, 1);
+    ProfileDrawn { mu, pieces: pieces.count, deviation: pieces.deviation }
+}
+
+/// The inversion's construction for each numbered position (cam frame through `at`).
+fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point, mu: f64, labels: &mut Labels) {
+    let pr = &d.profile;
+    let b0 = Vec2::ZERO; // the roller centre at the start of the rise, follower frame
+    match d.spec.follower {
+        Follower::Rocker { length } => {
+            let pivot = Vec2::new(length, 0.0);
+            let a_w = d.centre_distance().unwrap_or_default();
+            g.circle(at(Vec2::ZERO), a_w / mu, AXIS);
+            for (&phi, name) in phis.iter().zip(position_labels(phis)) {
+                let a = pr.carried(pivot, phi);
+                let (start, end) = (pr.carried(b0, phi), pr.pitch(phi).p);
+                g.dot(at(a), 0.5);
+                g.line(at(a), at(end), THIN);
+                swing_arc(g, a, start, end, at, mu);
+                if name.as_deref() == Some("0") {
+                    labels.add_text(at(a), Vec2::new(1.0, -1.0), "A₀", 3.5);
+                }
+            }
+        }
+        Follower::Translating => {
+            let e = d.centre.o.x.abs();
+            if e * 1e3 > 1e-9 {
+                g.circle(at(Vec2::ZERO), e / mu, AXIS);
+            }
+            // The axis' foot nearest O, and the axis from it past the roller centre.
+            let foot = Vec2::new(0.0, d.centre.o.y);
+            for &phi in phis {
+                let (f, end) = (pr.carried(foot, phi), pr.pitch(phi).p);
+                g.line(at(f), at(end), THIN);
+            }
+        }
+    }
+}
+
+/// The arc of radius l round the pivot `a` from the base circle's point to the roller
+/// centre (nothing where they coincide: the dwell at the base circle).
+fn swing_arc(g: &mut Group, a: Vec2, from: Vec2, to: Vec2, at: &dyn Fn(Vec2) -> Point, mu: f64) {
+    let (u, v) = (from - a, to - a);
+    let sweep = atan2(u.cross(v), u.dot(v));
+    let r = u.norm();
+    if (sweep * r / mu).abs() < 0.5 {
+        return;
+    }
+    let start = atan2(u.y, u.x);
+    let n = ((sweep.abs() * r / mu) / 2.0).ceil().max(2.0) as usize;
+    let pts: Vec<Point> = (0..=n)
+        .map(|k| {
+            let (s, c) = sin_cos(start + sweep * k as f64 / n as f64);
+            at(a + Vec2::new(c, s) * r)
+        })
+        .collect();
+    g.path(pts, false, THIN);
+}
+
+/// The follower at the start of the rise (the follower frame is the cam frame at φ = 0).
+fn follower_at_start(g: &mut Group, d: &Design, at: &dyn Fn(Vec2) -> Point, mu: f64) {
+    let pr = &d.profile;
+    let b0 = pr.pitch(0.0).p;
+    let r_max = r_max(d);
+    match d.spec.follower {
+        Follower::Translating => {
+            let top = b0 + Vec2::new(0.0, STEM * r_max * 0.8);
+            g.line(at(b0), at(top), MAIN);
+            g.line(at(b0 - Vec2::new(0.0, 0.1 * r_max)), at(top + Vec2::new(0.0, 0.05 * r_max)), AXIS);
+        }
+        Follower::Rocker { length } => {
+            let a = pr.carried(Vec2::new(length, 0.0), 0.0);
+            frame_pivot(g, at(a), 1.5);
+            g.line(at(a), at(b0), MAIN);
+        }
+    }
+    if d.roller > 0.0 {
+        g.circle(at(b0), d.roller / mu, MAIN);
+    }
 }
