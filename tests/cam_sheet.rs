@@ -178,3 +178,28 @@ fn the_diagrams_are_measurable_and_close_for_one_law() {
         }
     }
 }
+
+/// Positions the nomogram draws at one point share one label (the rise's end and the
+/// return's start at the far dwell, the turn's end and start at B₀), and each allowed angle is
+/// written once, at its mark.
+#[test]
+fn the_nomogram_merges_coincident_positions_and_marks_each_allowed_angle() {
+    let p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+    let b = sheet3(&p);
+    let g = b.output.scene.groups.iter().find(|g| g.id == "nomogram").expect("a nomogram group");
+    let texts: Vec<&str> = g
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            tmm_sheets::drawing::scene::Item::Text(t) => Some(t.text.as_str()),
+            _ => None,
+        })
+        .collect();
+    for merged in ["8, 9", "0, 17"] {
+        assert!(texts.contains(&merged), "no {merged:?} among {texts:?}");
+    }
+    for lone in ["8", "9", "0", "17"] {
+        assert!(!texts.contains(&lone), "{lone:?} is written apart from its twin: {texts:?}");
+    }
+    assert_eq!(texts.iter().filter(|t| t.starts_with('α')).count(), 2, "{texts:?}");
+}

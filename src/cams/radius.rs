@@ -105,6 +105,26 @@ pub struct Region {
     pub across: Vec2,
 }
 
+/// One φ's wedge of admissible centres in the (u, w) coordinates: its apex B′, the angle δ of
+/// its axis from d, and its half-angle α.
+#[derive(Debug, Clone, Copy)]
+struct Wedge {
+    u: f64,
+    w: f64,
+    delta: f64,
+    alpha: f64,
+}
+
+impl Wedge {
+    /// The lowest admissible height w above the column u.
+    fn floor(&self, u: f64) -> f64 {
+        let du = u - self.u;
+        // The boundary ray toward +u is at δ + α from d, toward −u at δ − α.
+        let gamma = if du >= 0.0 { self.delta + self.alpha } else { self.delta - self.alpha };
+        self.w + du / tan(gamma)
+    }
+}
+
 impl Region {
     pub fn new(follower: Follower, program: &Program, allowed: Allowed) -> Result<Region, RadiusError> {
         for a in [allowed.rise, allowed.ret] {
@@ -141,25 +161,42 @@ impl Region {
         self.across * u + self.d * w
     }
 
+    /// The wedge of `phase` at φ.
+    fn wedge(&self, phase: Phase, phi: f64) -> Wedge {
+        let s = self.state(phi);
+        let axis = -s.t;
+        Wedge {
+            u: s.analog.dot(self.across),
+            w: s.analog.dot(self.d),
+            delta: atan2(axis.dot(self.across), axis.dot(self.d)),
+            alpha: phase.allowed(&self.allowed),
+        }
+    }
+
     /// The lowest admissible height w above the column u for the wedge at φ of `phase`.
     fn floor_at(&self, phase: Phase, phi: f64, u: f64) -> f64 {
-        let s = self.state(phi);
-        let (ua, wa) = (s.analog.dot(self.across), s.analog.dot(self.d));
-        let axis = -s.t;
-        let delta = atan2(axis.dot(self.across), axis.dot(self.d));
-        let alpha = phase.allowed(&self.allowed);
-        let du = u - ua;
-        // The boundary ray toward +u is at δ + α from d, toward −u at δ − α.
-        let gamma = if du >= 0.0 { delta + alpha } else { delta - alpha };
-        wa + du / tan(gamma)
+        self.wedge(phase, phi).floor(u)
     }
 
     /// W(u): the region's lower boundary in the column u (the maximum over both phases).
     pub fn floor(&self, u: f64) -> f64 {
-        Phase::BOTH
-            .iter()
-            .map(|&ph| sup(ph.span(&self.program), |phi| self.floor_at(ph, phi, u)).1)
-            .fold(f64::NEG_INFINITY, f64::max)
+        self.floors(&[u])[0]
+    }
+
+    /// W at many columns: each phase's wedges sampled once and shared by the columns, then
+    /// every column's sampled local maxima refined as [`sup`] does (the same values as
+    /// [`Region::floor`] column by column, without re-evaluating the law at every sample).
+    pub fn floors(&self, us: &[f64]) -> Vec<f64> {
+        let mut out = vec![f64::NEG_INFINITY; us.len()];
+        for ph in Phase::BOTH {
+            let span = ph.span(&self.program);
+            let wedges: Vec<Wedge> = (0..=SAMPLES).map(|k| self.wedge(ph, grid(span, k))).collect();
+            for (w, &u) in out.iter_mut().zip(us) {
+                let vals: Vec<f64> = wedges.iter().map(|wedge| wedge.floor(u)).collect();
+                *w = w.max(refine(span, &vals, |phi| self.floor_at(ph, phi, u)).1);
+            }
+        }
+        out
     }
 
     /// The nearest admissible centre to B₀ (the origin).
@@ -224,10 +261,20 @@ fn rotate(v: Vec2, a: f64) -> Vec2 {
 /// The maximum of `f` on [a, b]: sampled, then each sampled local maximum refined between
 /// its neighbours. Returns (argmax, max).
 pub fn sup(span: (f64, f64), f: impl Fn(f64) -> f64) -> (f64, f64) {
-    let (a, b) = span;
-    let n = SAMPLES;
-    let at = |k: usize| if k == n { b } else { a + (b - a) * k as f64 / n as f64 };
-    let vals: Vec<f64> = (0..=n).map(|k| f(at(k))).collect();
+    let vals: Vec<f64> = (0..=SAMPLES).map(|k| f(grid(span, k))).collect();
+    refine(span, &vals, f)
+}
+
+/// The k-th of the [`SAMPLES`] + 1 sample points of `span` (its end exactly).
+fn grid((a, b): (f64, f64), k: usize) -> f64 {
+    if k == SAMPLES { b } else { a + (b - a) * k as f64 / SAMPLES as f64 }
+}
+
+/// The maximum of `f` from its values `vals` at the [`grid`] of `span`: every sampled local
+/// maximum refined between its neighbours.
+fn refine(span: (f64, f64), vals: &[f64], f: impl Fn(f64) -> f64) -> (f64, f64) {
+    let (a, n) = (span.0, SAMPLES);
+    let at = |k: usize| grid(span, k);
     let mut best = (a, f64::NEG_INFINITY);
     for k in 0..=n {
         let left = k == 0 || vals[k] >= vals[k - 1];

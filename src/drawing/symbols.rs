@@ -3,7 +3,7 @@
 use super::obstacles::{Obstacles, Piece, segments};
 use super::path::{Path, on_circle};
 use super::scene::{Group, Pen, THIN};
-use crate::num::math::Norm;
+use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
@@ -154,4 +154,38 @@ pub fn dimension(g: &mut Group, a: Point, b: Point, offset: Vec2) -> Point {
         arrowhead(g, db, -u);
     }
     da.midpoint(db)
+}
+
+/// An angle's mark at `apex` from the unit direction `from` to the unit direction `to` (the
+/// smaller turn): an arc of radius `r`. Returns the point just outside the arc's middle, where
+/// its value is written.
+pub fn angle_mark(g: &mut Group, apex: Point, from: Vec2, to: Vec2, r: f64) -> Point {
+    let a0 = math::atan2(from.y, from.x);
+    let sweep = math::atan2(from.cross(to), from.dot(to));
+    g.curve(Path::arc(apex, r, a0, sweep), THIN);
+    on_circle(apex, r + 2.0, a0 + sweep / 2.0)
+}
+
+/// Short 45° strokes every `step` mm of arc length along the polyline `pts`, on the side
+/// where `inside` (a unit vector) points: a zone's boundary as a drawing hatches it.
+pub fn hatch_along(g: &mut Group, pts: &[Point], inside: Vec2, step: f64) {
+    let mut to_next = 0.0;
+    for w in pts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let len = (b - a).norm();
+        if len < tol::PAPER {
+            continue;
+        }
+        let u = (b - a) / len;
+        let normal = Vec2::new(-u.y, u.x);
+        let side = if normal.dot(inside) >= 0.0 { normal } else { -normal };
+        let stroke = (side - u) * (step * 0.9 / std::f64::consts::SQRT_2);
+        let mut at = to_next;
+        while at <= len {
+            let p = a + u * at;
+            g.line(p, p + stroke, THIN);
+            at += step;
+        }
+        to_next = at - len;
+    }
 }

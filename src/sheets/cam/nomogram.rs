@@ -13,7 +13,7 @@ use crate::drawing::fmt;
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
-use crate::drawing::symbols::frame_pivot;
+use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along};
 use crate::drawing::text::LabelText;
 use crate::num::math::Norm;
 use kurbo::{Point, Rect, Vec2};
@@ -61,6 +61,42 @@ pub fn position_labels(phis: &[f64]) -> Vec<Option<String>> {
         }
     }
     out
+}
+
+/// Positions closer than this on paper (mm) are one point to the reader and share a label.
+const SAME_POINT_MM: f64 = 1.5;
+/// The radius of the allowed angle's mark at a limiting line's apex, mm.
+const ANGLE_MARK_MM: f64 = 10.0;
+/// The zone's boundary: points traced across the picture, the hatching's step, and how near
+/// a limiting line the boundary runs along it (not dashed over it), mm.
+const BOUNDARY_POINTS: usize = 240;
+const HATCH_STEP_MM: f64 = 2.5;
+const ON_LINE_MM: f64 = 0.3;
+
+/// Labels for points that fall within `near` mm of an earlier labelled one merged into its
+/// label, by number ("0, 17"); the merged points get none.
+fn merged_labels(points: &[Point], near: f64) -> Vec<Option<String>> {
+    let mut out: Vec<Option<String>> = Vec::with_capacity(points.len());
+    for (k, p) in points.iter().enumerate() {
+        let host = (0..k).find(|&j| out[j].is_some() && (points[j] - *p).norm() < near);
+        match host {
+            Some(j) => {
+                if let Some(label) = out[j].as_mut() {
+                    label.push_str(&format!(", {k}"));
+                }
+                out.push(None);
+            }
+            None => out.push(Some(k.to_string())),
+        }
+    }
+    out
+}
+
+/// The distance from `p` to the segment `a`–`b`, mm.
+fn distance_to_segment(p: Point, a: Point, b: Point) -> f64 {
+    let ab = b - a;
+    let t = if ab.hypot2() > 0.0 { ((p - a).dot(ab) / ab.hypot2()).clamp(0.0, 1.0) } else { 0.0 };
+    (p - (a + ab * t)).norm()
 }
 
 /// The box holding discs (centre, radius): its lowest and highest corners.
@@ -147,13 +183,13 @@ pub fn draw(
             }
         }
     }
-    // The positions and their analog segments.
-    for (&phi, name) in phis.iter().zip(position_labels(phis)) {
-        let s = r.state(phi);
-        g.line(view.at(s.b), view.at(s.analog), THIN);
-        g.dot(view.at(s.analog), 0.45);
+    // The positions and their analog segments; positions drawn at one point share a label.
+    let analogs: Vec<Point> = phis.iter().map(|&phi| view.at(r.state(phi).analog)).collect();
+    for ((&phi, &at), name) in phis.iter().zip(&analogs).zip(merged_labels(&analogs, SAME_POINT_MM)) {
+        g.line(view.at(r.state(phi).b), at, THIN);
+        g.dot(at, 0.45);
         if let Some(name) = name {
-            labels.add_text_ranked(view.at(s.analog), Vec2::ZERO, &name, 2.5, 2);
+            labels.add_text_ranked(at, Vec2::ZERO, &name, 2.5, 2);
         }
     }
     // The B′ curve, exact.
@@ -162,27 +198,40 @@ pub fn draw(
         let pts: Vec<Point> = (0..=200).map(|k| view.at(r.state(a + (b - a) * k as f64 / 200.0).analog)).collect();
         g.path(pts, false, MAIN);
     }
-    // The limiting lines through the most binding B′, to a little below O.
+    // The limiting lines through the most binding B′, to the picture's edge, each with its
+    // angle from the wedge's axis (the direction opposite the follower's motion there).
+    let paper = |v: Vec2| (view.at(v) - view.at(Vec2::ZERO)).unit();
+    let mut limiting = Vec::new();
     for (ph, left) in [(Phase::Rise, true), (Phase::Return, false)] {
-        let (apex, dir, _) = r.limiting_ray(ph, left, o);
-        let reach = exit(apex, dir, lo, hi);
-        g.line(view.at(apex), view.at(apex + dir * reach), THIN);
+        let (apex, dir, phi) = r.limiting_ray(ph, left, o);
+        let end = apex + dir * exit(apex, dir, lo, hi);
+        let (a, b) = (view.at(apex), view.at(end));
+        g.line(a, b, THIN);
+        limiting.push((a, b));
+        let axis = paper(-r.state(phi).t);
+        g.line(a, a + axis * (ANGLE_MARK_MM + 4.0), THIN);
+        let at = angle_mark(g, a, axis, paper(dir), ANGLE_MARK_MM);
         let alpha = ph.allowed(&d.spec.allowed).to_degrees();
         let sub = if ph == Phase::Rise { l.sub_rise() } else { l.sub_return() };
         let text = LabelText::new("α", sub).with_tail(format!(" = {}°", fmt::value(alpha, lang)));
-        labels.add_ranked(view.at(apex + dir * reach * 0.85), Vec2::ZERO, text, 2.5, 1);
+        labels.add_ranked(at, at - a, text, 2.5, 1);
     }
-    // The zone's exact boundary across the picture.
-    let (u_lo, u_hi) = (-(hi - lo).norm(), (hi - lo).norm());
-    let boundary: Vec<Point> = (0..=240)
-        .map(|k| {
-            let u = u_lo + (u_hi - u_lo) * k as f64 / 240.0;
-            r.point(u, r.floor(u))
-        })
+    // The zone's exact boundary across the picture, hatched on the zone's side; dashed where
+    // it does not run along a limiting line.
+    let span = (hi - lo).norm();
+    let us: Vec<f64> = (0..=BOUNDARY_POINTS).map(|k| span * (2.0 * k as f64 / BOUNDARY_POINTS as f64 - 1.0)).collect();
+    let boundary: Vec<Point> = us
+        .iter()
+        .zip(r.floors(&us))
+        .map(|(&u, w)| r.point(u, w))
         .filter(|p| p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y)
         .map(|p| view.at(p))
         .collect();
-    g.path(boundary, false, DASHED);
+    hatch_along(g, &boundary, paper(r.d), HATCH_STEP_MM);
+    let on_limiting = |p: &Point| limiting.iter().any(|&(a, b)| distance_to_segment(*p, a, b) < ON_LINE_MM);
+    for run in boundary.split(on_limiting).filter(|run| run.len() >= 2) {
+        g.path(run.to_vec(), false, DASHED);
+    }
     labels.add_text_ranked(view.at(o + r.d * (0.4 * d.centre.r_min)), Vec2::ZERO, l.zone(), 2.5, 3);
     // O and r_min.
     g.dot(view.at(o), 0.8);
@@ -200,8 +249,9 @@ pub fn draw(
         let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(dist * 1e3, lang), c.unit_mm()));
         labels.add(view.at((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
     } else if o.x.abs() > 1e-9 {
-        g.line(view.at(o), view.at(Vec2::new(0.0, o.y)), THIN);
+        // The offset as a dimension from the follower's axis to O, below O.
+        let mid = dimension(g, view.at(Vec2::new(0.0, o.y)), view.at(o), Vec2::new(0.0, 8.0));
         let t = format!("e = {} {}", fmt::value(o.x.abs() * 1e3, lang), c.unit_mm());
-        labels.add_text(view.at(Vec2::new(o.x / 2.0, o.y)), Vec2::new(0.0, 1.0), &t, 3.5);
+        labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);
     }
 }
