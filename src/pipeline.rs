@@ -60,7 +60,7 @@ struct Results<'a> {
 /// `results.json`: the title and each built sheet's section under `sheet<N>`.
 pub fn results_json(p: &Project, built: &[Built]) -> String {
     let sheets = built.iter().map(|b| (format!("sheet{}", b.output.number), b.output.results.clone())).collect();
-    let r = Results { units: "SI: m, m/s, m/s², rad, rad/s, rad/s², kg, N, N·m", title: &p.info.title, sheets };
+    let r = Results { units: "SI: m, m/s, m/s², rad, rad/s, rad/s², kg, N, N·m", title: p.info.title(), sheets };
     serde_json::to_string_pretty(&r).expect("results serialise")
 }
 

@@ -11,6 +11,7 @@ use tmm_sheets::cams::follower::Follower;
 use tmm_sheets::cams::laws::{Law, Standard as S};
 use tmm_sheets::cams::radius::Placement;
 use tmm_sheets::cams::{Roller, Sense};
+use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::project::{self, CamProject, Project};
 
 fn load(text: &str) -> Project {
@@ -99,7 +100,10 @@ fn the_worked_example_has_the_guides_cam() {
     assert_eq!(spec.sense, Sense::Ccw);
     assert!(c.roller_auto && !c.offset_auto);
     assert!(c.design.roller > 0.0 && c.design.centre.r_min > c.design.roller);
-    assert_eq!(c.assumptions, ["Qonun rasmi yoʻqolgan: 4-qonun (sinusoidal, sikloidal) qabul qilindi."]);
+    let uz: Vec<&str> = c.assumptions.iter().map(|a| a.get(Language::Uz)).collect();
+    assert_eq!(uz, ["Qonun rasmi yoʻqolgan: 4-qonun (sinusoidal, sikloidal) qabul qilindi."]);
+    let ru: Vec<&str> = c.assumptions.iter().map(|a| a.get(Language::Ru)).collect();
+    assert_eq!(ru, ["Рисунок закона утерян: принят закон 4 (синусоидальный, циклоидальный)."]);
     assert!(p.warnings.iter().all(|w| !w.field.starts_with("cam")), "{:?}", p.warnings);
 }
 
@@ -334,7 +338,8 @@ fn assumptions_are_checked_like_the_other_texts() {
     let e = refusal(&text);
     assert!(e.contains("cam.assumptions[1]") && e.contains("U+0007") && e.contains("line 13"), "{e}");
     let p = load(&format!("{BASE}  assumptions: [\"Qonun 4-qonun.\"]\n"));
-    assert_eq!(cam(&p).assumptions, ["Qonun 4-qonun."]);
+    let texts: Vec<&str> = cam(&p).assumptions.iter().map(|a| a.get(Language::En)).collect();
+    assert_eq!(texts, ["Qonun 4-qonun."]);
 }
 
 #[test]
@@ -438,4 +443,27 @@ fn a_cam_too_large_to_design_is_refused_not_searched_forever() {
     // A given offset is not searched for: the same cam designs.
     let given = translating.replace("offset: auto", "offset: 0").replace("rise: 70,", "rise: 1.0e-6,");
     assert!(cam(&load(&given)).design.centre.r_min.is_finite());
+}
+
+/// The title, the institution and each assumption may be written per language; the sheet's
+/// language picks, a language not written takes the first one; an unknown language is
+/// refused at its line.
+#[test]
+fn user_texts_may_be_written_per_language() {
+    let text = with("  title: \"Cam\"", "  title: {en: \"Cam\", ru: \"Кулачок\"}").replacen(
+        "  sense: ccw\n",
+        "  sense: ccw\n  assumptions:\n    - {uz: \"Qonun\", ru: \"Закон\"}\n",
+        1,
+    );
+    let mut p = load(&text);
+    assert_eq!(p.info.title(), "Cam");
+    p.info.language = Language::Ru;
+    assert_eq!(p.info.title(), "Кулачок");
+    p.info.language = Language::Uz;
+    assert_eq!(p.info.title(), "Cam", "Uzbek not written: the first one written");
+    assert_eq!(cam(&p).assumptions[0].get(Language::Ru), "Закон");
+    assert_eq!(cam(&p).assumptions[0].get(Language::En), "Qonun");
+    let bad = with("  title: \"Cam\"", "  title: {de: \"Nocke\"}");
+    let e = refusal(&bad);
+    assert!(e.contains("line 2") && e.contains("`de`"), "{e}");
 }

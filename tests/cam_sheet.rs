@@ -36,7 +36,9 @@ fn the_layout_of_sheet_3_is_clean_and_finite_in_every_language() {
         for lang in Language::ALL {
             let mut p = pipeline::load(&text).unwrap();
             p.info.language = lang;
-            if lang == Language::Ru {
+            // The worked example writes its title and assumptions in every language; the
+            // fixtures in one, so the Russian check gets Russian ones here.
+            if lang == Language::Ru && name != "worked-example" {
                 p.info.title = "Кулачок".into();
                 p.info.institution = "ТГТУ".into();
                 p.info.designation = "ТММ 03.00.00".into();
@@ -195,7 +197,7 @@ fn the_nomogram_merges_coincident_positions_and_marks_each_allowed_angle() {
             _ => None,
         })
         .collect();
-    for merged in ["8, 9", "0, 17"] {
+    for merged in ["8≡9", "0≡17"] {
         assert!(texts.contains(&merged), "no {merged:?} among {texts:?}");
     }
     for lone in ["8", "9", "0", "17"] {

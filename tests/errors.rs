@@ -373,7 +373,7 @@ fn assembly_errors_name_the_course_angle_when_position_0_is_fixed() {
 /// in one-line fields are refused where they are written, naming the field and the character.
 #[test]
 fn user_text_that_cannot_be_printed_is_refused_with_its_field() {
-    let title = "title: \"Tebranuvchi konveyer mexanizmi\"";
+    let title = "title: {uz: \"Tebranuvchi konveyer mexanizmi\", ru: \"Механизм вибрационного конвейера\", en: \"Vibrating conveyor mechanism\"}";
     let e = error_of(title, "title: \"Tebranuvchi\\u0007 konveyer\"");
     assert!(
         e.contains("project.title") && e.contains("U+0007") && e.contains(&format!("line {}", line_of(title))),
@@ -386,19 +386,24 @@ fn user_text_that_cannot_be_printed_is_refused_with_its_field() {
     let e = error_of("{name: C, at: [0.33, 0.06]}", "{name: \"C\\u0000\", at: [0.33, 0.06]}");
     assert!(e.contains("mechanism.frame.name") && e.contains("U+0000"), "{e}");
     // Free text may break lines; it is wrapped anyway.
-    let text = example().replacen("  assumptions:\n    - \"", "  assumptions:\n    - \"first line\\nsecond line ", 1);
+    let text =
+        example().replacen("  assumptions:\n    - uz: \"", "  assumptions:\n    - uz: \"first line\\nsecond line ", 1);
     assert!(pipeline::load(&text).is_ok());
 }
 
 #[test]
 fn text_too_long_for_its_place_on_the_sheet_is_refused_with_its_field() {
-    let title = "title: \"Tebranuvchi konveyer mexanizmi\"";
+    let title = "title: {uz: \"Tebranuvchi konveyer mexanizmi\", ru: \"Механизм вибрационного конвейера\", en: \"Vibrating conveyor mechanism\"}";
     let e = error_of(title, &format!("title: \"{}\"", "Konveyer ".repeat(200)));
     assert!(e.contains("project.title") && e.contains("does not fit the title block's name field"), "{e}");
     let e = error_of("student: \"\"", "student: \"Abdurahmonov Jasurbek Baxtiyorovich\"");
     assert!(e.contains("project.student") && e.contains("title-block cell (23 × 5 mm)"), "{e}");
     // One word of a million letters: refused (wrapping and measuring are linear).
     let word = "a".repeat(1_000_000);
-    let e = refusal(&example().replacen("  assumptions:\n    - \"", &format!("  assumptions:\n    - \"{word} "), 1));
+    let e = refusal(&example().replacen(
+        "  assumptions:\n    - uz: \"",
+        &format!("  assumptions:\n    - uz: \"{word} "),
+        1,
+    ));
     assert!(e.contains("mechanism.assumptions") && e.contains("does not fit the notes"), "{}", &e[..e.len().min(300)]);
 }

@@ -302,7 +302,7 @@ fn long_title_block_texts_are_fitted_inside_their_cells() {
     let field = frame::name_field_rect();
     for words in [1, 6, 13, 20, 28] {
         let mut p = fixture("worked-example");
-        p.info.title = (0..words).map(|i| format!("soʻz{i}")).collect::<Vec<_>>().join(" ");
+        p.info.title = (0..words).map(|i| format!("soʻz{i}")).collect::<Vec<_>>().join(" ").into();
         p.info.designation = "MMN KL 01.00.00.000 TX — ".repeat(1 + words / 10).trim_end_matches(" — ").to_string();
         let r = build(&p);
         check_layout(&format!("{words} words"), &r.output.scene);
@@ -317,7 +317,7 @@ fn long_title_block_texts_are_fitted_inside_their_cells() {
         }
         let shown: String =
             texts.iter().filter(|t| t.text.contains("soʻz")).map(|t| t.text.as_str()).collect::<Vec<_>>().join(" ");
-        assert_eq!(shown, p.info.title, "every word of the title is shown, in order");
+        assert_eq!(shown, p.info.title(), "every word of the title is shown, in order");
     }
 }
 

@@ -18,7 +18,7 @@
 //! ```
 
 use super::text::{self, Lines};
-use super::values::{Finite, LocalText, UserText};
+use super::values::{Finite, LocalText};
 use super::{ModelError, Warning, at, invalid, warning};
 use crate::cams::follower::Follower;
 use crate::cams::integrate;
@@ -59,7 +59,8 @@ pub struct CamSpecFile {
     pub sense: Option<Spanned<String>>,
     /// Printed on the sheet: what was assumed where the source is silent or contradicts itself.
     #[serde(default)]
-    pub assumptions: Vec<UserText>,
+    /// Each one text, or one per language.
+    pub assumptions: Vec<Spanned<LocalText>>,
 }
 
 /// The `laws` table as written: (key, definition) in the file's order.
@@ -272,7 +273,7 @@ pub struct CamProject {
     /// Whether the translating follower's offset was `auto`.
     pub offset_auto: bool,
     /// Printed on the sheet, like gears' `assumptions`.
-    pub assumptions: Vec<String>,
+    pub assumptions: Vec<LocalText>,
 }
 
 const FIELD: &str = "cam";
@@ -367,7 +368,7 @@ pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Resu
     }
     let mut assumptions = Vec::new();
     for (i, a) in c.assumptions.iter().enumerate() {
-        text::check(&format!("{FIELD}.assumptions[{i}]"), a, Lines::Many)?;
+        text::check_local(&format!("{FIELD}.assumptions[{i}]"), a, Lines::Many)?;
         assumptions.push(a.value.clone());
     }
     let law_names = table.into_iter().filter_map(|u| Some((u.law.key().to_string(), u.name?))).collect();

@@ -5,7 +5,7 @@
 //! an error at its line, not a failed sheet.
 
 use super::text::{self, Lines};
-use super::values::{Finite, Positive, UserText};
+use super::values::{Finite, LocalText, Positive};
 use super::{ModelError, Warning, at, invalid, warning};
 use crate::gears::pair::{Pair, PairError, PairSpec, PairWarning};
 use crate::gears::planetary::{self, Scheme, Stage, StageError, StageSpec};
@@ -26,7 +26,8 @@ pub struct GearsSpec {
     pub planetary: Option<Spanned<PlanetaryFileSpec>>,
     /// Printed on the sheet: what was assumed where the source is silent or contradicts itself.
     #[serde(default)]
-    pub assumptions: Vec<UserText>,
+    /// Each one text, or one per language.
+    pub assumptions: Vec<Spanned<LocalText>>,
 }
 
 #[derive(Debug, Clone, Deserialize)]
@@ -81,7 +82,7 @@ pub struct GearsProject {
     pub motor_rpm: Option<f64>,
     pub output_rpm: Option<f64>,
     pub planetary: Option<PlanetaryProject>,
-    pub assumptions: Vec<String>,
+    pub assumptions: Vec<LocalText>,
 }
 
 #[derive(Debug, Clone)]
@@ -131,7 +132,7 @@ pub fn resolve(
     };
     let mut assumptions = Vec::new();
     for (i, a) in g.assumptions.iter().enumerate() {
-        text::check(&format!("{FIELD}.assumptions[{i}]"), a, Lines::Many)?;
+        text::check_local(&format!("{FIELD}.assumptions[{i}]"), a, Lines::Many)?;
         assumptions.push(a.value.clone());
     }
     Ok(GearsProject { pair, auto_shift, warnings: pair_warnings, motor_rpm, output_rpm, planetary, assumptions })

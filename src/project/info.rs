@@ -1,6 +1,6 @@
 //! The `project` section: what the title block says and the sheets' language.
 
-use super::values::UserText;
+use super::values::{LocalText, UserText};
 use crate::drawing::labels::Language;
 use serde::Deserialize;
 use serde_saphyr::{Location, Spanned};
@@ -9,11 +9,16 @@ fn blank() -> UserText {
     Spanned::new(String::new(), Location::UNKNOWN, Location::UNKNOWN)
 }
 
+fn blank_local() -> Spanned<LocalText> {
+    Spanned::new(LocalText::default(), Location::UNKNOWN, Location::UNKNOWN)
+}
+
 /// The section as written.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct InfoSpec {
-    pub title: UserText,
+    /// One text, or one per language (`{uz: …, ru: …, en: …}`).
+    pub title: Spanned<LocalText>,
     #[serde(default = "blank")]
     pub designation: UserText,
     #[serde(default = "blank")]
@@ -22,8 +27,9 @@ pub struct InfoSpec {
     pub group: UserText,
     #[serde(default = "blank")]
     pub supervisor: UserText,
-    #[serde(default = "blank")]
-    pub institution: UserText,
+    /// One text, or one per language.
+    #[serde(default = "blank_local")]
+    pub institution: Spanned<LocalText>,
     #[serde(default)]
     pub language: Language,
 }
@@ -31,26 +37,31 @@ pub struct InfoSpec {
 /// What every sheet's title block and title say, checked.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct ProjectInfo {
-    pub title: String,
+    /// Per language: read it with [`ProjectInfo::title`].
+    pub title: LocalText,
     pub designation: String,
     pub student: String,
     pub group: String,
     pub supervisor: String,
-    pub institution: String,
+    /// Per language: read it with [`ProjectInfo::institution`].
+    pub institution: LocalText,
     pub language: Language,
 }
 
 impl InfoSpec {
-    /// Every text field with its name, for the checks of [`super::text`].
-    pub fn texts(&self) -> [(&'static str, &UserText); 6] {
+    /// Every one-language text field with its name, for the checks of [`super::text`].
+    pub fn texts(&self) -> [(&'static str, &UserText); 4] {
         [
-            ("project.title", &self.title),
             ("project.designation", &self.designation),
             ("project.student", &self.student),
             ("project.group", &self.group),
             ("project.supervisor", &self.supervisor),
-            ("project.institution", &self.institution),
         ]
+    }
+
+    /// The fields that may be written per language.
+    pub fn local_texts(&self) -> [(&'static str, &Spanned<LocalText>); 2] {
+        [("project.title", &self.title), ("project.institution", &self.institution)]
     }
 
     pub fn resolve(&self) -> ProjectInfo {
@@ -67,9 +78,19 @@ impl InfoSpec {
 }
 
 impl ProjectInfo {
+    /// The project's title in the sheets' language.
+    pub fn title(&self) -> &str {
+        self.title.get(self.language)
+    }
+
+    /// The institution in the sheets' language.
+    pub fn institution(&self) -> &str {
+        self.institution.get(self.language)
+    }
+
     /// The title block's organisation field: the institution and the group, as given.
     pub fn organisation(&self) -> String {
-        [self.institution.as_str(), self.group.as_str()]
+        [self.institution(), self.group.as_str()]
             .iter()
             .filter(|s| !s.is_empty())
             .copied()

@@ -25,7 +25,7 @@ pub struct LeverProject {
     /// Drawn lengths of kulisas, by link (`None`: the longest reach plus 15 %).
     pub kulisa_lengths: Vec<(LinkId, Option<f64>)>,
     /// Printed on the sheet: what was assumed where the figure was lost.
-    pub assumptions: Vec<String>,
+    pub assumptions: Vec<crate::project::values::LocalText>,
 }
 
 /// Collects points and links while the steps are laid out.
@@ -159,7 +159,7 @@ fn check_texts(spec: &MechanismSpec) -> Result<(), ModelError> {
         text::check(field, n, Lines::One)?;
     }
     for (i, a) in spec.assumptions.iter().enumerate() {
-        text::check(&format!("mechanism.assumptions[{i}]"), a, Lines::Many)?;
+        text::check_local(&format!("mechanism.assumptions[{i}]"), a, Lines::Many)?;
     }
     Ok(())
 }

@@ -2,7 +2,7 @@
 //! terms (frame points, crank, Assur groups in order of formation, points on links) and
 //! which positions the sheet draws.
 
-use super::values::{Finite, Name, Positive, UserText};
+use super::values::{Finite, LocalText, Name, Positive};
 use serde::Deserialize;
 use serde_saphyr::Spanned;
 
@@ -23,7 +23,8 @@ pub struct MechanismSpec {
     pub output_link: Option<Spanned<u32>>,
     /// Free text printed on the sheet: what was assumed where the figure was lost.
     #[serde(default)]
-    pub assumptions: Vec<UserText>,
+    /// Each one text, or one per language.
+    pub assumptions: Vec<Spanned<LocalText>>,
 }
 
 #[derive(Debug, Clone, Deserialize)]

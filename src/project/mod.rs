@@ -112,6 +112,9 @@ pub fn resolve(file: &ProjectFile) -> Result<Project, ModelError> {
     for (field, t) in file.project.texts() {
         text::check(field, t, text::Lines::One)?;
     }
+    for (field, t) in file.project.local_texts() {
+        text::check_local(field, t, text::Lines::One)?;
+    }
     let mut warnings = Vec::new();
     let lever = match &file.mechanism {
         Some(m) => Some(lever::resolve(m, file.analysis.as_ref(), file.forces.as_ref(), &mut warnings)?),

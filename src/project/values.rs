@@ -89,6 +89,18 @@ impl LocalText {
     }
 }
 
+impl Default for LocalText {
+    fn default() -> LocalText {
+        LocalText::All(String::new())
+    }
+}
+
+impl From<String> for LocalText {
+    fn from(t: String) -> LocalText {
+        LocalText::All(t)
+    }
+}
+
 impl From<&str> for LocalText {
     fn from(t: &str) -> LocalText {
         LocalText::All(t.to_string())

@@ -76,22 +76,31 @@ pub fn profile(d: &Design, name: &str, first: usize, phis: &[f64]) -> NumTable {
     NumTable { name: name.into(), columns: (first..first + phis.len()).map(|k| k.to_string()).collect(), rows }
 }
 
-/// The results: r_min, the offset or centre distance and rocker angle, the roller, ρ_min, the
-/// largest pressure angles, and the drawing's integration errors (percent).
+/// The results: r_min, the offset, or the rocker's length and swing with the centre distance
+/// and start angle; the roller (none for a knife edge), ρ_min, each phase's allowed and
+/// largest pressure angle, and the drawing's integration errors (percent).
 pub fn results(d: &Design, errors: (f64, f64)) -> NumTable {
     let one = |x: f64| vec![x];
     let mut rows: Vec<Row> = vec![row("r", "min", "mm", one(d.centre.r_min * MM))];
     if let Some(e) = d.offset() {
         rows.push(row("e", "", "mm", one(e * MM)));
     }
+    if let Follower::Rocker { length } = d.spec.follower {
+        rows.push(row("l", "", "mm", one(length * MM)));
+        rows.push(row("β", "max", "°", one(d.spec.program.lift.to_degrees())));
+    }
     if let (Some(a), Some(psi)) = (d.centre_distance(), d.rocker_start()) {
         rows.push(row("a", "w", "mm", one(a * MM)));
         rows.push(row("ψ", "0", "°", one(psi.to_degrees())));
     }
-    rows.push(row("r", "roller", "mm", one(d.roller * MM)));
+    if d.roller > 0.0 {
+        rows.push(row("r", "roller", "mm", one(d.roller * MM)));
+    }
     rows.push(row("ρ", "min", "mm", one(d.rho_min * MM)));
-    rows.push(row("α", "rise", "°", one(d.max_pressure[0].0.to_degrees())));
-    rows.push(row("α", "return", "°", one(d.max_pressure[1].0.to_degrees())));
+    rows.push(row("α", "allowed_rise", "°", one(d.spec.allowed.rise.to_degrees())));
+    rows.push(row("α", "max_rise", "°", one(d.max_pressure[0].0.to_degrees())));
+    rows.push(row("α", "allowed_return", "°", one(d.spec.allowed.ret.to_degrees())));
+    rows.push(row("α", "max_return", "°", one(d.max_pressure[1].0.to_degrees())));
     let (s, v) = match d.spec.follower {
         Follower::Translating => ("δs", "δ(ds/dφ)"),
         Follower::Rocker { .. } => ("δβ", "δ(dβ/dφ)"),

@@ -80,7 +80,7 @@ impl Context<'_> {
             &TitleBlock {
                 designation: &self.info.designation,
                 sheet_name,
-                project_title: &self.info.title,
+                project_title: self.info.title(),
                 student: &self.info.student,
                 supervisor: &self.info.supervisor,
                 organisation: &self.info.organisation(),

@@ -167,8 +167,8 @@ pub fn draw(
             lo: 0.0,
             hi: p.lift,
             mu: sc.mu_s,
-            name: s_name.into(),
-            ticks: round_ticks(0.0, p.lift, sc.mu_s, lang),
+            name: format!("{s_name}, {}", if rocker { l.unit_deg() } else { c.unit_mm() }),
+            ticks: lift_ticks(p.lift, sc.mu_s, rocker, lang),
         },
     };
     s_plot.draw_axes(g);
@@ -219,7 +219,12 @@ pub fn draw(
         },
     };
     a_plot.draw_axes(g);
-    a_plot.line(g, &exact(&|phi| p.at(phi).dds), MAIN);
+    // From the axis and back to it: the near dwell's s″ = 0 on both sides of the working angle
+    // (a law that starts or ends with a jump shows it).
+    let mut a_exact = exact(&|phi| p.at(phi).dds);
+    a_exact.insert(0, (0.0, 0.0));
+    a_exact.push((work.to_degrees(), 0.0));
+    a_plot.line(g, &a_exact, MAIN);
     for i in integrated {
         for (k, &a) in i.mid_dds.iter().enumerate() {
             let mid = (i.phi[k] + i.phi[k + 1]) / 2.0;
@@ -257,6 +262,13 @@ fn number_divisions(plot: &Plot, integrated: &[Integrated; 2], labels: &mut Labe
             );
         }
     }
+}
+
+/// The displacement's ticks in the tables' units, round there: mm for a translating
+/// follower, degrees for a rocker (the values stay in SI for the plot).
+fn lift_ticks(lift: f64, mu_s: f64, rocker: bool, lang: Language) -> Vec<(f64, String)> {
+    let k = if rocker { 180.0 / PI } else { 1e3 };
+    round_ticks(0.0, lift * k, mu_s * k, lang).into_iter().map(|(v, t)| (v / k, t)).collect()
 }
 
 /// Tick marks without their values: on a graph with a pole the rays cross the values' place;

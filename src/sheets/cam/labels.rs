@@ -7,6 +7,7 @@ crate::label_set! {
     pub struct CamLabels = "cam.yaml" {
         sheet_name,
         laws_title(law),
+        laws_title_rocker(law),
         laws_title_two(rise, ret),
         law_uniform_acceleration,
         law_linearly_decreasing,
@@ -26,6 +27,7 @@ crate::label_set! {
         integration_note(n, q, dq, es, ev),
         nomogram_title,
         nomogram_note(a),
+        angles_two(rise, ret),
         zone,
         profile_title,
         pitch_profile,
@@ -33,6 +35,7 @@ crate::label_set! {
         base_circle,
         profile_note(dev),
         knife_note,
+        knife_note_rocker,
         roller_reduced(r, rho),
         law_table,
         profile_table,
@@ -43,6 +46,10 @@ crate::label_set! {
         sub_return,
         sub_min,
         sub_roller,
+        sub_allowed_rise,
+        sub_allowed_return,
+        sub_max_rise,
+        sub_max_return,
         follower_translating,
         follower_rocker,
     }
@@ -72,6 +79,10 @@ impl CamLabels {
             "rise" => self.sub_rise(),
             "return" => self.sub_return(),
             "roller" => self.sub_roller(),
+            "allowed_rise" => self.sub_allowed_rise(),
+            "allowed_return" => self.sub_allowed_return(),
+            "max_rise" => self.sub_max_rise(),
+            "max_return" => self.sub_max_return(),
             other => other,
         }
     }

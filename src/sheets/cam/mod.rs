@@ -99,8 +99,10 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let tables = note_tables_of(d, &phis, errors);
 
     // The left column: the law's name, the diagrams, the notes, the law's tables if they fit.
+    let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
     let title = if p.laws.0 == p.laws.1 {
-        l.laws_title(&law_name(p, &p.laws.0, l, lang))
+        let name = law_name(p, &p.laws.0, l, lang);
+        if rocker { l.laws_title_rocker(&name) } else { l.laws_title(&name) }
     } else {
         l.laws_title_two(&law_name(p, &p.laws.0, l, lang), &law_name(p, &p.laws.1, l, lang))
     };
@@ -184,7 +186,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let mut groups = vec![fr, dg, nm, pv];
     groups.extend(table_groups);
     groups.push(tb);
-    let scene = Scene { width: A1_W, height: A1_H, title: format!("{} — {sheet_name}", ctx.info.title), groups };
+    let scene = Scene { width: A1_W, height: A1_H, title: format!("{} — {sheet_name}", ctx.info.title()), groups };
     let layout = layout::measure(&scene);
     Ok(CamBuild {
         scene,
@@ -359,14 +361,15 @@ fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLabels
     };
     let mut out = vec![
         format!(
-            "{kind}; {}",
+            "{kind}. {}",
             l.phases(&deg(pr.rise), &deg(pr.far_dwell), &deg(pr.ret), &deg(pr.rise + pr.far_dwell + pr.ret))
         ),
         l.integration_note(&DIVISIONS.to_string(), q, dq, &fmt::value(errors.0, lang), &fmt::value(errors.1, lang)),
-        l.nomogram_note(&deg(d.spec.allowed.rise.min(d.spec.allowed.ret))),
+        l.nomogram_note(&allowed_angles(d, l, lang)),
     ];
     if d.roller == 0.0 {
-        out.push(l.knife_note().to_string());
+        let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
+        out.push(if rocker { l.knife_note_rocker() } else { l.knife_note() }.to_string());
     } else {
         out.push(l.profile_note(&fmt::value(deviation * 1e6, lang)));
     }
@@ -384,8 +387,15 @@ fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLabels
             out.push(l.law_custom_note(&law_name(p, law, l, lang), &corners.join(", ")));
         }
     }
-    out.extend(p.assumptions.iter().cloned());
+    out.extend(p.assumptions.iter().map(|a| a.get(lang).to_string()));
     out
+}
+
+/// The allowed pressure angle as the note states it: one value, or each phase's.
+fn allowed_angles(d: &Design, l: &CamLabels, lang: Language) -> String {
+    let deg = |x: f64| format!("{}°", fmt::value(x.to_degrees(), lang));
+    let a = &d.spec.allowed;
+    if a.rise == a.ret { deg(a.rise) } else { l.angles_two(&deg(a.rise), &deg(a.ret)) }
 }
 
 /// A law's name on the sheet: the built-in law's in the sheet's language; for a law of the

@@ -47,13 +47,13 @@ pub fn positions(d: &Design, divisions: usize) -> Vec<f64> {
 
 /// Each position's number as the drawing writes it: a position that coincides with the one
 /// before it (the rise's end and the return's start without a far dwell) shares its label
-/// ("8, 9") and gets none of its own.
+/// ("8≡9") and gets none of its own.
 pub fn position_labels(phis: &[f64]) -> Vec<Option<String>> {
     let mut out: Vec<Option<String>> = Vec::with_capacity(phis.len());
     for (k, &phi) in phis.iter().enumerate() {
         if k > 0 && (phi - phis[k - 1]).abs() < 1e-12 {
             if let Some(Some(prev)) = out.last_mut() {
-                prev.push_str(&format!(", {k}"));
+                prev.push_str(&format!("≡{k}"));
             }
             out.push(None);
         } else {
@@ -74,7 +74,7 @@ const HATCH_STEP_MM: f64 = 2.5;
 const ON_LINE_MM: f64 = 0.3;
 
 /// Labels for points that fall within `near` mm of an earlier labelled one merged into its
-/// label, by number ("0, 17"); the merged points get none.
+/// label, by number ("0≡17"); the merged points get none.
 fn merged_labels(points: &[Point], near: f64) -> Vec<Option<String>> {
     let mut out: Vec<Option<String>> = Vec::with_capacity(points.len());
     for (k, p) in points.iter().enumerate() {
@@ -82,7 +82,7 @@ fn merged_labels(points: &[Point], near: f64) -> Vec<Option<String>> {
         match host {
             Some(j) => {
                 if let Some(label) = out[j].as_mut() {
-                    label.push_str(&format!(", {k}"));
+                    label.push_str(&format!("≡{k}"));
                 }
                 out.push(None);
             }

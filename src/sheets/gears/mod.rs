@@ -115,7 +115,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let sheet_name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
     let tb = ctx.title_block(c, sheet_name, &fmt::localise(&scale::ratio(drawn.mu), lang), KIND.number)?;
     groups.push(tb);
-    let scene = Scene { width: A1_W, height: A1_H, title: format!("{} — {sheet_name}", ctx.info.title), groups };
+    let scene = Scene { width: A1_W, height: A1_H, title: format!("{} — {sheet_name}", ctx.info.title()), groups };
     let layout = layout::measure(&scene);
     Ok(GearsBuild { scene, mesh: drawn, planetary_mu, layout, tables })
 }
@@ -137,7 +137,7 @@ fn mesh_notes(p: &GearsProject, l: &GearLabels, lang: Language) -> Vec<String> {
             PairWarning::Interference { wheel } => l.interference_note(&wheel.to_string()),
         });
     }
-    out.extend(p.assumptions.iter().cloned());
+    out.extend(p.assumptions.iter().map(|a| a.get(lang).to_string()));
     out
 }
 

@@ -191,9 +191,10 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     let right_w = inner.x1 - 4.0 - right_x0;
     let side_by_side = 1.0 + w1 + 8.0 + w2 + 1.0 <= right_w;
     let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
-    let notes_lines = notes_height(&inp.project.assumptions, right_w);
+    let assumptions: Vec<String> = inp.project.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
+    let notes_lines = notes_height(&assumptions, right_w);
     if notes_lines > NOTES_MAX_H {
-        let all = inp.project.assumptions.join(" ");
+        let all = assumptions.join(" ");
         return Err(TooLong::new("mechanism.assumptions", &all, "notes above the title block", (right_w, NOTES_MAX_H)));
     }
     let tables_top = frame::title_block_rect().y0 - 3.0 - notes_lines - tables_h - 4.0;
@@ -242,13 +243,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     };
     let r2 = t2.draw(&mut tables, at2);
     let notes_top = r1.y1.max(r2.y1) + 4.0;
-    notes(
-        &mut tables,
-        l,
-        c,
-        &inp.project.assumptions,
-        Rect::new(tables_region.x0, notes_top, tables_region.x1, tables_region.y1),
-    );
+    notes(&mut tables, l, c, &assumptions, Rect::new(tables_region.x0, notes_top, tables_region.x1, tables_region.y1));
 
     let mut force_scales = None;
     let mut extra = Vec::new();
@@ -267,7 +262,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         &TitleBlock {
             designation: &inp.info.designation,
             sheet_name: if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() },
-            project_title: &inp.info.title,
+            project_title: inp.info.title(),
             student: &inp.info.student,
             supervisor: &inp.info.supervisor,
             organisation: &organisation,
@@ -279,7 +274,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     groups.extend([fr, mech, vel, acc, tables, tb]);
     groups.extend(extra);
     let title =
-        format!("{} — {}", inp.info.title, if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() });
+        format!("{} — {}", inp.info.title(), if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() });
     let scene = Scene { width: A1_W, height: A1_H, title, groups };
     let mut layout = layout::measure(&scene);
     layout.smallest_plan_mm = vdrawn.iter().chain(&adrawn).map(|p| p.size_mm[0].max(p.size_mm[1])).reduce(f64::min);
