@@ -14,10 +14,10 @@
 //! the turn is the drawing's closure error ([`closure`]).
 
 use super::laws::Program;
+use super::radius::Phase;
 
 /// The course's divisions of each phase (the guide's eight).
 pub const DIVISIONS: usize = 8;
-use super::radius::Phase;
 
 /// One phase integrated: the values at the n + 1 division points.
 #[derive(Debug, Clone, PartialEq)]

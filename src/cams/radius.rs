@@ -191,8 +191,11 @@ impl Region {
         for ph in Phase::BOTH {
             let span = ph.span(&self.program);
             let wedges: Vec<Wedge> = (0..=SAMPLES).map(|k| self.wedge(ph, grid(span, k))).collect();
+            let mut vals = vec![0.0; wedges.len()];
             for (w, &u) in out.iter_mut().zip(us) {
-                let vals: Vec<f64> = wedges.iter().map(|wedge| wedge.floor(u)).collect();
+                for (v, wedge) in vals.iter_mut().zip(&wedges) {
+                    *v = wedge.floor(u);
+                }
                 *w = w.max(refine(span, &vals, |phi| self.floor_at(ph, phi, u)).1);
             }
         }

@@ -22,6 +22,15 @@ pub enum Language {
 
 impl Language {
     pub const ALL: [Language; 3] = [Language::Uz, Language::Ru, Language::En];
+
+    /// The key a project file writes it by.
+    pub fn key(self) -> &'static str {
+        match self {
+            Language::Uz => "uz",
+            Language::Ru => "ru",
+            Language::En => "en",
+        }
+    }
 }
 
 /// One label in the three languages, as written in a template.

@@ -55,18 +55,25 @@ pub fn frame_pivot(g: &mut Group, c: Point, r: f64) {
 
 /// Short 45° strokes along `a → b` on the side `side` (a unit vector): the frame symbol.
 pub fn hatch(g: &mut Group, a: Point, b: Point, side: Vec2, step: f64) {
-    let d = b - a;
-    let len = d.norm();
+    hatch_strokes(g, a, b, |_| side, 0.0, step);
+}
+
+/// The strokes of [`hatch`] on `a → b` from `first` mm on, every `step` mm, toward the side
+/// `side(u)` gives for the segment's direction u. Returns where the next stroke falls past
+/// `b` (for a polyline's next segment); a segment too short to have a direction adds none.
+fn hatch_strokes(g: &mut Group, a: Point, b: Point, side: impl Fn(Vec2) -> Vec2, first: f64, step: f64) -> f64 {
+    let len = (b - a).norm();
     if len < tol::PAPER {
-        return;
+        return first;
     }
-    let u = d / len;
-    let stroke = (side - u) * (step * 0.9 / std::f64::consts::SQRT_2);
-    let n = (len / step).floor() as usize;
-    for i in 0..=n {
-        let p = a + u * (i as f64 * step);
+    let u = (b - a) / len;
+    let stroke = (side(u) - u) * (step * 0.9 / std::f64::consts::SQRT_2);
+    let count = ((len - first) / step).floor().max(-1.0) as i64 + 1;
+    for i in 0..count {
+        let p = a + u * (first + i as f64 * step);
         g.line(p, p + stroke, THIN);
     }
+    first + count as f64 * step - len
 }
 
 /// A slider block: a rectangle centred at `c` along the unit direction `u`.
@@ -169,23 +176,12 @@ pub fn angle_mark(g: &mut Group, apex: Point, from: Vec2, to: Vec2, r: f64) -> P
 /// Short 45° strokes every `step` mm of arc length along the polyline `pts`, on the side
 /// where `inside` (a unit vector) points: a zone's boundary as a drawing hatches it.
 pub fn hatch_along(g: &mut Group, pts: &[Point], inside: Vec2, step: f64) {
-    let mut to_next = 0.0;
-    for w in pts.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let len = (b - a).norm();
-        if len < tol::PAPER {
-            continue;
-        }
-        let u = (b - a) / len;
+    let toward_inside = |u: Vec2| {
         let normal = Vec2::new(-u.y, u.x);
-        let side = if normal.dot(inside) >= 0.0 { normal } else { -normal };
-        let stroke = (side - u) * (step * 0.9 / std::f64::consts::SQRT_2);
-        let mut at = to_next;
-        while at <= len {
-            let p = a + u * at;
-            g.line(p, p + stroke, THIN);
-            at += step;
-        }
-        to_next = at - len;
+        if normal.dot(inside) >= 0.0 { normal } else { -normal }
+    };
+    let mut first = 0.0;
+    for w in pts.windows(2) {
+        first = hatch_strokes(g, w[0], w[1], toward_inside, first, step);
     }
 }

@@ -116,39 +116,44 @@ impl Table {
     }
 }
 
+/// Between columns of tables, mm.
+const COLUMN_GAP: f64 = 6.0;
+
 /// Tables drawn in `region` top to bottom, a new column to the right when the next one would
 /// leave the region's bottom; `gap` mm between tables and 6 mm between columns.
 pub fn flow(id: &str, tables: impl IntoIterator<Item = Table>, region: Rect, gap: f64) -> Group {
     let mut g = Group::new(id, region);
-    let (mut x, mut y, mut col_w) = (region.x0, region.y0, 0.0f64);
-    for table in tables {
-        let (w, h) = table.size();
-        if y + h > region.y1 && y > region.y0 {
-            x += col_w + 6.0;
-            y = region.y0;
-            col_w = 0.0;
-        }
-        table.draw(&mut g, Point::new(x, y));
-        y += h + gap;
-        col_w = col_w.max(w);
+    let tables: Vec<Table> = tables.into_iter().collect();
+    let sizes: Vec<(f64, f64)> = tables.iter().map(Table::size).collect();
+    let (corners, _) = packed(&sizes, region.height(), gap);
+    for (table, at) in tables.iter().zip(corners) {
+        table.draw(&mut g, Point::new(region.x0 + at.x, region.y0 + at.y));
     }
     g
 }
 
-/// The width [`flow`] takes for tables of `sizes` in a region `height` mm tall.
-pub fn flow_width(sizes: &[(f64, f64)], height: f64, gap: f64) -> f64 {
+/// How [`flow`] packs tables of `sizes` into a column `height` mm tall: each one's top left
+/// from the region's, and the width taken.
+fn packed(sizes: &[(f64, f64)], height: f64, gap: f64) -> (Vec<Point>, f64) {
     let (mut x, mut y, mut col_w, mut right) = (0.0, 0.0, 0.0f64, 0.0f64);
+    let mut corners = Vec::with_capacity(sizes.len());
     for &(w, h) in sizes {
         if y + h > height && y > 0.0 {
-            x += col_w + 6.0;
+            x += col_w + COLUMN_GAP;
             y = 0.0;
             col_w = 0.0;
         }
+        corners.push(Point::new(x, y));
         y += h + gap;
         col_w = col_w.max(w);
         right = right.max(x + col_w);
     }
-    right
+    (corners, right)
+}
+
+/// The width [`flow`] takes for tables of `sizes` in a region `height` mm tall.
+pub fn flow_width(sizes: &[(f64, f64)], height: f64, gap: f64) -> f64 {
+    packed(sizes, height, gap).1
 }
 
 /// The least height (whole mm) in which [`flow`] fits tables of `sizes` into `width`, or

@@ -366,11 +366,7 @@ pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Resu
     for w in &design.warnings {
         warnings.push(warning(roller_loc, "cam.roller", cam_warning(w)));
     }
-    let mut assumptions = Vec::new();
-    for (i, a) in c.assumptions.iter().enumerate() {
-        text::check_local(&format!("{FIELD}.assumptions[{i}]"), a, Lines::Many)?;
-        assumptions.push(a.value.clone());
-    }
+    let assumptions = text::assumptions(FIELD, &c.assumptions)?;
     let law_names = table.into_iter().filter_map(|u| Some((u.law.key().to_string(), u.name?))).collect();
     Ok(CamProject {
         design,

@@ -4,7 +4,7 @@
 //! here once so that a shift that makes a tooth pointed or a ratio no tooth set reaches is
 //! an error at its line, not a failed sheet.
 
-use super::text::{self, Lines};
+use super::text;
 use super::values::{Finite, LocalText, Positive};
 use super::{ModelError, Warning, at, invalid, warning};
 use crate::gears::pair::{Pair, PairError, PairSpec, PairWarning};
@@ -130,11 +130,7 @@ pub fn resolve(
         Some(p) => Some(planetary_project(p, &pair, motor_rpm, output_rpm, spec.referenced)?),
         None => None,
     };
-    let mut assumptions = Vec::new();
-    for (i, a) in g.assumptions.iter().enumerate() {
-        text::check_local(&format!("{FIELD}.assumptions[{i}]"), a, Lines::Many)?;
-        assumptions.push(a.value.clone());
-    }
+    let assumptions = text::assumptions(FIELD, &g.assumptions)?;
     Ok(GearsProject { pair, auto_shift, warnings: pair_warnings, motor_rpm, output_rpm, planetary, assumptions })
 }
 

@@ -32,12 +32,21 @@ pub fn check(field: &str, t: &UserText, lines: Lines) -> Result<(), ModelError> 
 pub fn check_local(field: &str, t: &Spanned<LocalText>, lines: Lines) -> Result<(), ModelError> {
     for (lang, text) in t.value.texts() {
         let field = match lang {
-            Some(l) => format!("{field}.{}", format!("{l:?}").to_lowercase()),
+            Some(l) => format!("{field}.{}", l.key()),
             None => field.to_string(),
         };
         check_str(&field, text, t.referenced, lines)?;
     }
     Ok(())
+}
+
+/// A section's `assumptions`, each checked as free text (`<section>.assumptions[i]`).
+pub fn assumptions(section: &str, texts: &[Spanned<LocalText>]) -> Result<Vec<LocalText>, ModelError> {
+    texts
+        .iter()
+        .enumerate()
+        .map(|(i, a)| check_local(&format!("{section}.assumptions[{i}]"), a, Lines::Many).map(|()| a.value.clone()))
+        .collect()
 }
 
 fn check_str(field: &str, text: &str, at: Location, lines: Lines) -> Result<(), ModelError> {

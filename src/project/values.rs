@@ -124,10 +124,7 @@ impl<'de> serde::de::Visitor<'de> for LocalTextVisitor {
         let mut each: Vec<(Language, String)> = Vec::new();
         while let Some(lang) = map.next_key::<Language>()? {
             if each.iter().any(|(l, _)| *l == lang) {
-                return Err(serde::de::Error::custom(format!(
-                    "the language `{}` is given twice",
-                    format!("{lang:?}").to_lowercase()
-                )));
+                return Err(serde::de::Error::custom(format!("the language `{}` is given twice", lang.key())));
             }
             each.push((lang, map.next_value::<String>()?));
         }

@@ -113,11 +113,13 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         |w: f64| notes.iter().map(|n| block_height(wrap(n, CELL_TEXT, w).len(), CELL_TEXT) + 1.0).sum::<f64>();
     let head = 5.0 + block_height(title_lines.len(), 3.5) + 2.0;
     let plan = diagrams::plan(d, LEFT_MAX - 4.0, SHEET.height() - head - notes_h(LEFT_MAX - 4.0) - 8.0);
-    let (law, rest): (Vec<_>, Vec<_>) = tables.iter().cloned().partition(|(s, _)| s.starts_with("law"));
-    let drawn_tables = |ts: &[(&'static str, NumTable)]| -> Vec<Table> {
-        ts.iter().map(|(s, t)| sheet_table(s, t, l, c, lang)).collect()
+    let drawn_tables = |ts: Vec<&(&'static str, NumTable)>| -> Vec<Table> {
+        ts.into_iter().map(|(s, t)| sheet_table(s, t, l, c, lang)).collect()
     };
-    let lay = layout(d, &phis, &plan, head + notes_h(plan.width.max(200.0)), &drawn_tables(&law), &drawn_tables(&rest));
+    let (law, rest): (Vec<_>, Vec<_>) = tables.iter().partition(|(s, _)| s.starts_with("law"));
+    let (law, rest) = (drawn_tables(law), drawn_tables(rest));
+    let extents = (nomogram::extent(d, &phis), profile_view::extent(d));
+    let lay = layout(extents, &plan, head + notes_h(plan.width.max(200.0)), &law, &rest);
     let width = lay.diagrams.width() - 4.0;
 
     let mut dg = Group::new("diagrams", lay.diagrams);
@@ -146,19 +148,17 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let mut nm = Group::new("nomogram", lay.nomogram);
     view_title(&mut nm, l.nomogram_title());
     let mut nl = Labels::new();
-    let n_extent = nomogram::extent(d, &phis);
-    nomogram::draw(&mut nm, view_area(lay.nomogram), n_extent, lay.nomogram_mu, d, &phis, &mut nl, l, c, lang);
+    nomogram::draw(&mut nm, view_area(lay.nomogram), extents.0, lay.nomogram_mu, d, &phis, &mut nl, l, c, lang);
     scale_note(&mut nm, lay.nomogram_mu, None, c, lang);
     nl.place(&mut nm, lay.nomogram);
 
     let mut pv = Group::new("profile", lay.profile);
     view_title(&mut pv, l.profile_title());
     let mut pl = Labels::new();
-    let p_extent = profile_view::extent(d);
     let prof = profile_view::draw(
         &mut pv,
         view_area(lay.profile),
-        p_extent,
+        extents.1,
         lay.profile_mu,
         d,
         &fitted,
@@ -175,10 +175,10 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let mut table_groups = vec![];
     match lay.law_tables {
         Some(r) => {
-            table_groups.push(table::flow("law-tables", drawn_tables(&law), r, 3.0));
-            table_groups.push(table::flow("tables", drawn_tables(&rest), lay.tables, 3.0));
+            table_groups.push(table::flow("law-tables", law, r, 3.0));
+            table_groups.push(table::flow("tables", rest, lay.tables, 3.0));
         }
-        None => table_groups.push(table::flow("tables", drawn_tables(&tables), lay.tables, 3.0)),
+        None => table_groups.push(table::flow("tables", law.into_iter().chain(rest), lay.tables, 3.0)),
     }
 
     let sheet_name = l.sheet_name();
@@ -223,14 +223,21 @@ fn scale_note(g: &mut Group, mu: f64, ratio: Option<String>, c: &Common, lang: L
     LabelText::new("μ", "l").with_tail(tail).draw(g, Point::new(r.x0 + 2.0, r.y1 - 2.0), 2.5, Anchor::Start);
 }
 
-/// The sheet's regions by content. The diagrams' column is as wide as its plan; the tables
+/// The sheet's regions by content, for the views' boxes `(nomogram, profile)` (metres). The
+/// diagrams' column is as wide as its plan; the tables
 /// not kept in that column go to a strip left of the title block, as low as fits. Two
 /// arrangements of the views are tried, and the one with the larger profile wins (then the
 /// larger nomogram):
 /// - the nomogram under the notes in the diagrams' column, the profile alone on the right;
 /// - both on the right side by side, the profile at the largest GOST scale that leaves the
 ///   nomogram [`NOMOGRAM_MIN_MM`], the law's tables under the notes when they fit.
-fn layout(d: &Design, phis: &[f64], plan: &diagrams::Plan, text_h: f64, law: &[Table], rest: &[Table]) -> Layout3 {
+fn layout(
+    (n_ext, p_ext): ((Vec2, Vec2), (Vec2, Vec2)),
+    plan: &diagrams::Plan,
+    text_h: f64,
+    law: &[Table],
+    rest: &[Table],
+) -> Layout3 {
     let tb = frame::title_block_rect();
     let left_w = plan.width + 4.0;
     let column_used = text_h + plan.height + 10.0;
@@ -241,7 +248,6 @@ fn layout(d: &Design, phis: &[f64], plan: &diagrams::Plan, text_h: f64, law: &[T
         Rect::new(right_x, SHEET.y1 - h, tb.x0 - GAP, SHEET.y1)
     };
     let views_above = |tables: Rect| Rect::new(right_x, SHEET.y0, SHEET.x1, tables.y0.min(tb.y0) - GAP);
-    let (n_ext, p_ext) = (nomogram::extent(d, phis), profile_view::extent(d));
     let all: Vec<(f64, f64)> = sizes(law).into_iter().chain(sizes(rest)).collect();
 
     // The nomogram in the diagrams' column, the profile alone on the right.

@@ -16,7 +16,7 @@ use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along};
 use crate::drawing::text::LabelText;
 use crate::num::math::Norm;
-use kurbo::{Point, Rect, Vec2};
+use kurbo::{Line, ParamCurveNearest, Point, Rect, Vec2};
 
 /// A follower-frame picture on paper: metres → mm, mirrored for a counter-clockwise cam.
 #[derive(Debug, Clone, Copy)]
@@ -49,18 +49,7 @@ pub fn positions(d: &Design, divisions: usize) -> Vec<f64> {
 /// before it (the rise's end and the return's start without a far dwell) shares its label
 /// ("8≡9") and gets none of its own.
 pub fn position_labels(phis: &[f64]) -> Vec<Option<String>> {
-    let mut out: Vec<Option<String>> = Vec::with_capacity(phis.len());
-    for (k, &phi) in phis.iter().enumerate() {
-        if k > 0 && (phi - phis[k - 1]).abs() < 1e-12 {
-            if let Some(Some(prev)) = out.last_mut() {
-                prev.push_str(&format!("≡{k}"));
-            }
-            out.push(None);
-        } else {
-            out.push(Some(k.to_string()));
-        }
-    }
-    out
+    merged_labels(phis.len(), |j, k| (phis[j] - phis[k]).abs() < 1e-12)
 }
 
 /// Positions closer than this on paper (mm) are one point to the reader and share a label.
@@ -73,13 +62,12 @@ const BOUNDARY_POINTS: usize = 240;
 const HATCH_STEP_MM: f64 = 2.5;
 const ON_LINE_MM: f64 = 0.3;
 
-/// Labels for points that fall within `near` mm of an earlier labelled one merged into its
-/// label, by number ("0≡17"); the merged points get none.
-fn merged_labels(points: &[Point], near: f64) -> Vec<Option<String>> {
-    let mut out: Vec<Option<String>> = Vec::with_capacity(points.len());
-    for (k, p) in points.iter().enumerate() {
-        let host = (0..k).find(|&j| out[j].is_some() && (points[j] - *p).norm() < near);
-        match host {
+/// The numbers 0…n−1 as labels, a number that is `same` as an earlier labelled one merged
+/// into its label ("0≡17") and given none of its own.
+fn merged_labels(n: usize, same: impl Fn(usize, usize) -> bool) -> Vec<Option<String>> {
+    let mut out: Vec<Option<String>> = Vec::with_capacity(n);
+    for k in 0..n {
+        match (0..k).find(|&j| out[j].is_some() && same(j, k)) {
             Some(j) => {
                 if let Some(label) = out[j].as_mut() {
                     label.push_str(&format!("≡{k}"));
@@ -90,13 +78,6 @@ fn merged_labels(points: &[Point], near: f64) -> Vec<Option<String>> {
         }
     }
     out
-}
-
-/// The distance from `p` to the segment `a`–`b`, mm.
-fn distance_to_segment(p: Point, a: Point, b: Point) -> f64 {
-    let ab = b - a;
-    let t = if ab.hypot2() > 0.0 { ((p - a).dot(ab) / ab.hypot2()).clamp(0.0, 1.0) } else { 0.0 };
-    (p - (a + ab * t)).norm()
 }
 
 /// The box holding discs (centre, radius): its lowest and highest corners.
@@ -185,7 +166,11 @@ pub fn draw(
     }
     // The positions and their analog segments; positions drawn at one point share a label.
     let analogs: Vec<Point> = phis.iter().map(|&phi| view.at(r.state(phi).analog)).collect();
-    for ((&phi, &at), name) in phis.iter().zip(&analogs).zip(merged_labels(&analogs, SAME_POINT_MM)) {
+    for ((&phi, &at), name) in phis
+        .iter()
+        .zip(&analogs)
+        .zip(merged_labels(analogs.len(), |j, k| (analogs[j] - analogs[k]).norm() < SAME_POINT_MM))
+    {
         g.line(view.at(r.state(phi).b), at, THIN);
         g.dot(at, 0.45);
         if let Some(name) = name {
@@ -207,7 +192,7 @@ pub fn draw(
         let end = apex + dir * exit(apex, dir, lo, hi);
         let (a, b) = (view.at(apex), view.at(end));
         g.line(a, b, THIN);
-        limiting.push((a, b));
+        limiting.push(Line::new(a, b));
         let axis = paper(-r.state(phi).t);
         g.line(a, a + axis * (ANGLE_MARK_MM + 4.0), THIN);
         let at = angle_mark(g, a, axis, paper(dir), ANGLE_MARK_MM);
@@ -228,7 +213,7 @@ pub fn draw(
         .map(|p| view.at(p))
         .collect();
     hatch_along(g, &boundary, paper(r.d), HATCH_STEP_MM);
-    let on_limiting = |p: &Point| limiting.iter().any(|&(a, b)| distance_to_segment(*p, a, b) < ON_LINE_MM);
+    let on_limiting = |p: &Point| limiting.iter().any(|l| l.nearest(*p, 0.0).distance_sq < ON_LINE_MM * ON_LINE_MM);
     for run in boundary.split(on_limiting).filter(|run| run.len() >= 2) {
         g.path(run.to_vec(), false, DASHED);
     }

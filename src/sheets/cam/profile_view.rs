@@ -16,7 +16,7 @@ use crate::drawing::labels::{Common, Language};
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
-use crate::drawing::symbols::{frame_pivot, turn_arrow, vector};
+use crate::drawing::symbols::{angle_mark, frame_pivot, turn_arrow, vector};
 use crate::drawing::text::LabelText;
 use crate::num::bezier::Fitted;
 use crate::num::math::{Norm, atan2, sin_cos};
@@ -70,7 +70,7 @@ fn r_max(d: &Design) -> f64 {
 /// of the rise, with room round them for the position numbers.
 pub fn extent(d: &Design) -> (Vec2, Vec2) {
     let pitch: Vec<Vec2> = (0..720).map(|k| d.profile.pitch(TAU * k as f64 / 720.0).p).collect();
-    let r_max = r_max(d);
+    let r_max = pitch.iter().map(|p| p.norm()).fold(0.0, f64::max);
     let b0 = pitch[0];
     let follower = match d.spec.follower {
         Follower::Translating => (b0 + Vec2::new(0.0, STEM * r_max), 0.0),
@@ -197,20 +197,12 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
 /// centre (nothing where they coincide: the dwell at the base circle).
 fn swing_arc(g: &mut Group, a: Vec2, from: Vec2, to: Vec2, at: &dyn Fn(Vec2) -> Point, mu: f64) {
     let (u, v) = (from - a, to - a);
-    let sweep = atan2(u.cross(v), u.dot(v));
     let r = u.norm();
-    if (sweep * r / mu).abs() < 0.5 {
+    if (atan2(u.cross(v), u.dot(v)) * r / mu).abs() < 0.5 {
         return;
     }
-    let start = atan2(u.y, u.x);
-    let n = ((sweep.abs() * r / mu) / 2.0).ceil().max(2.0) as usize;
-    let pts: Vec<Point> = (0..=n)
-        .map(|k| {
-            let (s, c) = sin_cos(start + sweep * k as f64 / n as f64);
-            at(a + Vec2::new(c, s) * r)
-        })
-        .collect();
-    g.path(pts, false, THIN);
+    let paper = |w: Vec2| (at(a + w) - at(a)).unit();
+    angle_mark(g, at(a), paper(u), paper(v), r / mu);
 }
 
 /// The follower at the start of the rise (the follower frame is the cam frame at φ = 0).
