@@ -36,14 +36,7 @@ fn the_layout_of_sheet_3_is_clean_and_finite_in_every_language() {
         for lang in Language::ALL {
             let mut p = pipeline::load(&text).unwrap();
             p.info.language = lang;
-            // The worked example writes its title and assumptions in every language; the
-            // fixtures in one, so the Russian check gets Russian ones here.
-            if lang == Language::Ru && name != "worked-example" {
-                p.info.title = "Кулачок".into();
-                p.info.institution = "ТГТУ".into();
-                p.info.designation = "ТММ 03.00.00".into();
-                p.cam.as_mut().unwrap().assumptions.clear();
-            }
+            // The fixtures write their title, institution and assumptions in every language.
             let b = sheet3(&p);
             check_layout(&format!("{name} {lang:?}"), &b.output.scene);
             let l = &b.output.results["layout"];
@@ -204,4 +197,65 @@ fn the_nomogram_merges_coincident_positions_and_marks_each_allowed_angle() {
         assert!(!texts.contains(&lone), "{lone:?} is written apart from its twin: {texts:?}");
     }
     assert_eq!(texts.iter().filter(|t| t.starts_with('α')).count(), 2, "{texts:?}");
+}
+
+/// Each table of the law and of the profiles comes in two halves (rise, return) that may
+/// land in different columns: both carry a title, the second marked as the continuation.
+#[test]
+fn both_halves_of_each_position_table_are_titled() {
+    for (lang, law, profile, continued) in [
+        (Language::Ru, "Закон движения по положениям", "Полярные координаты профилей", "(продолжение)"),
+        (Language::En, "The law by positions", "Polar coordinates of the profiles", "(continued)"),
+    ] {
+        let mut p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+        p.info.language = lang;
+        let b = sheet3(&p);
+        let texts: Vec<String> = b.output.scene.texts().map(|t| t.text.clone()).collect();
+        let all = texts.join("\n");
+        for title in [law, profile] {
+            assert!(all.contains(&format!("{title} {continued}")), "{lang:?}: no continuation title for {title:?}");
+        }
+    }
+}
+
+/// The allowed angle's marks on the nomogram are arcs of 10 mm whose sweep is the allowed
+/// angle of each phase (computed here from the project file's 30° and 45°), and the zone is
+/// hatched: a drawn angle of another size, or no hatching, fails.
+#[test]
+fn the_nomogram_marks_the_allowed_angles_at_their_size_and_hatches_the_zone() {
+    use tmm_sheets::drawing::path::Seg;
+    use tmm_sheets::drawing::scene::Item;
+    let text = std::fs::read_to_string(root().join("fixtures/cams/translating-offset-auto.yaml")).unwrap();
+    let p = pipeline::load(&text).unwrap();
+    let b = sheet3(&p);
+    let g = b.output.scene.groups.iter().find(|g| g.id == "nomogram").unwrap();
+    let mut sweeps: Vec<f64> = g
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            Item::Path { path, .. } => Some(path.segs.iter()),
+            _ => None,
+        })
+        .flatten()
+        .filter_map(|s| match s {
+            Seg::Arc(a) if (a.radii.x - 10.0).abs() < 1e-9 => Some(a.sweep_angle.abs().to_degrees()),
+            _ => None,
+        })
+        .collect();
+    sweeps.sort_by(f64::total_cmp);
+    assert_eq!(sweeps.len(), 2, "{sweeps:?}");
+    assert!((sweeps[0] - 30.0).abs() < 1e-9 && (sweeps[1] - 45.0).abs() < 1e-9, "{sweeps:?}");
+    // The hatching: many short strokes of 0.9 × 2.5 mm.
+    let strokes = g
+        .items
+        .iter()
+        .filter(|i| match i {
+            Item::Path { path, .. } => {
+                path.segs.len() == 1
+                    && matches!(path.segs[0], Seg::Line(q) if ((q - path.start).hypot() - 2.25).abs() < 1e-6)
+            }
+            _ => false,
+        })
+        .count();
+    assert!(strokes >= 20, "{strokes} hatch strokes");
 }

@@ -530,3 +530,40 @@ fn force_subscripts_on_a_russian_sheet_are_russian() {
         assert!(texts.contains(&"ур") && texts.iter().any(|t| t.starts_with('и')), "{name}: no P_ур or P_и");
     }
 }
+
+/// Every sheet of every fixture (the gear and cam ones too) speaks the language it is built
+/// in, the user's texts included (title, institution, assumptions, law names): no Latin word
+/// (English or Uzbek) on a Russian sheet, no Cyrillic letter and no Uzbek ʻ on an English one.
+#[test]
+fn every_sheet_of_every_fixture_speaks_its_language() {
+    let mut names: Vec<String> = fixture_names();
+    for dir in ["gears", "cams"] {
+        let mut more: Vec<String> = std::fs::read_dir(root().join("fixtures").join(dir))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|x| x == "yaml"))
+            .map(|p| format!("{dir}/{}", p.file_stem().unwrap().to_string_lossy()))
+            .collect();
+        more.sort();
+        names.extend(more);
+    }
+    for name in names {
+        for lang in [Language::Ru, Language::En] {
+            let mut p = fixture(&name);
+            p.info.language = lang;
+            for sheet in pipeline::build(&p, &[]).unwrap_or_else(|e| panic!("{name}: {e:#}")) {
+                for t in sheet.output.scene.texts() {
+                    let bad = match lang {
+                        Language::Ru => english_on_russian(&t.text),
+                        _ => t
+                            .text
+                            .chars()
+                            .find(|c| matches!(c, 'А'..='я' | 'Ё' | 'ё' | 'ʻ'))
+                            .map(|c| format!("{c:?} in {:?}", t.text)),
+                    };
+                    assert_eq!(bad, None, "{name} sheet {} in {lang:?}: {:?}", sheet.output.number, t.text);
+                }
+            }
+        }
+    }
+}

@@ -40,6 +40,7 @@ crate::label_set! {
         law_table,
         profile_table,
         results_table,
+        continued,
         sub_pitch,
         sub_work,
         sub_rise,

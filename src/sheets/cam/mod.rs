@@ -451,9 +451,10 @@ fn sheet_table(stem: &str, t: &NumTable, l: &CamLabels, c: &Common, lang: Langua
         })
         .collect();
     let label_w = rows.iter().map(|(x, _)| x.width(CELL_TEXT) + 4.0).fold(14.0, f64::max);
-    let second = stem.ends_with("-return");
+    // The return's half may flow into another column: it names itself as the continuation.
+    let title = table_title(stem, l);
     Table {
-        title: if second { String::new() } else { table_title(stem, l).to_string() },
+        title: if stem.ends_with("-return") { format!("{title} {}", l.continued()) } else { title.to_string() },
         header: if stem == "results" { vec![c.value().into()] } else { t.columns.clone() },
         rows,
         label_w,
