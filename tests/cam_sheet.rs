@@ -259,3 +259,72 @@ fn the_nomogram_marks_the_allowed_angles_at_their_size_and_hatches_the_zone() {
         .count();
     assert!(strokes >= 20, "{strokes} hatch strokes");
 }
+
+/// The phase angles are dimensioned under the displacement as the course draws them: each
+/// value (from the project file: rise 120°, far dwell 30°, return 90°, working angle 240°)
+/// written once, between the position numbers that bound its phase (0–8, 8–9, 9–17, 0–17).
+#[test]
+fn the_phases_are_dimensioned_between_their_positions() {
+    use tmm_sheets::drawing::scene::Item;
+    let text = std::fs::read_to_string(root().join("fixtures/cams/translating-offset-auto.yaml")).unwrap();
+    for lang in Language::ALL {
+        let mut p = pipeline::load(&text).unwrap();
+        p.info.language = lang;
+        let b = sheet3(&p);
+        let g = b.output.scene.groups.iter().find(|g| g.id == "diagrams").unwrap();
+        let texts: Vec<(&str, f64)> = g
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                Item::Text(t) => Some((t.text.as_str(), t.bbox().center().x)),
+                _ => None,
+            })
+            .collect();
+        // The position numbers stand under the displacement's axis first (the nomogram
+        // has its own group).
+        let x_of = |name: &str| texts.iter().find(|t| t.0 == name).unwrap_or_else(|| panic!("no {name:?}")).1;
+        for (value, from, to) in [("120°", "0", "8"), ("30°", "8", "9"), ("90°", "9", "17"), ("240°", "0", "17")] {
+            let tails: Vec<f64> = texts.iter().filter(|t| t.0 == format!("= {value}")).map(|t| t.1).collect();
+            assert_eq!(tails.len(), 1, "{lang:?}: {value} written {} times", tails.len());
+            let (a, b) = (x_of(from), x_of(to));
+            assert!(a < tails[0] && tails[0] < b, "{lang:?}: {value} at {} outside {a}..{b}", tails[0]);
+        }
+    }
+}
+
+/// On the profile every position number stands outside every roller (inside another
+/// roller's circle it reads as that roller's number), in every cam fixture.
+#[test]
+fn the_profiles_position_numbers_stand_outside_the_rollers() {
+    use tmm_sheets::drawing::scene::Item;
+    for (name, text) in cam_projects() {
+        let p = pipeline::load(&text).unwrap();
+        let b = sheet3(&p);
+        let r = &b.output.results;
+        let roller_mm = r["roller_radius"].as_f64().unwrap() / r["profile_mu_l"].as_f64().unwrap();
+        if roller_mm == 0.0 {
+            continue;
+        }
+        let g = b.output.scene.groups.iter().find(|g| g.id == "profile").unwrap();
+        let rollers: Vec<_> = g
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                Item::Circle { c, r, .. } if (r - roller_mm).abs() < 1e-9 => Some(*c),
+                _ => None,
+            })
+            .collect();
+        assert!(rollers.len() >= 16, "{name}: {} rollers", rollers.len());
+        let numbers = g.items.iter().filter_map(|i| match i {
+            Item::Text(t) if t.text.chars().all(|c| c.is_ascii_digit() || c == '≡') => Some(t),
+            _ => None,
+        });
+        for t in numbers {
+            let b = t.core_box();
+            for &c in &rollers {
+                let nearest = kurbo::Point::new(c.x.clamp(b.x0, b.x1), c.y.clamp(b.y0, b.y1));
+                assert!((nearest - c).hypot() >= roller_mm - 1e-6, "{name}: {:?} inside the roller at {c:?}", t.text);
+            }
+        }
+    }
+}

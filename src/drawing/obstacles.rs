@@ -4,6 +4,7 @@
 //! (an arrowhead, a dot) is its outline, which also catches a box that swallows it whole.
 
 use super::scene::Item;
+use crate::num::math::Norm;
 use kurbo::{Point, Rect, Shape};
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{AABB, RTree};
@@ -18,6 +19,9 @@ pub enum Piece {
     Segment(Point, Point),
     /// A text's core box (the letters themselves).
     TextBox(Rect),
+    /// A disc no label may enter (a roller: a number inside another roller's circle reads
+    /// as that roller's).
+    Disc(Point, f64),
 }
 
 type Entry = GeomWithData<Rectangle<[f64; 2]>, usize>;
@@ -106,6 +110,7 @@ impl Obstacles {
             match *p {
                 Piece::Segment(a, b) => strokes += usize::from(segment_meets_rect(a, b, r)),
                 Piece::TextBox(t) => area += t.intersect(r).area().max(0.0),
+                Piece::Disc(c, rad) => strokes += usize::from(disc_meets_rect(c, rad, r)),
             }
         }
         (strokes, area)
@@ -124,6 +129,7 @@ impl Obstacles {
         !self.near(r).any(|(p, _)| match *p {
             Piece::Segment(a, b) => segment_meets_rect(a, b, r),
             Piece::TextBox(t) => t.intersect(r).area() > 0.0,
+            Piece::Disc(c, rad) => disc_meets_rect(c, rad, r),
         })
     }
 
@@ -144,7 +150,14 @@ fn bounds(p: &Piece) -> Rect {
     match *p {
         Piece::Segment(a, b) => Rect::from_points(a, b),
         Piece::TextBox(r) => r,
+        Piece::Disc(c, r) => Rect::from_center_size(c, (2.0 * r, 2.0 * r)),
     }
+}
+
+/// Whether the box `r` reaches inside the disc of centre `c` and radius `rad`.
+fn disc_meets_rect(c: Point, rad: f64, r: Rect) -> bool {
+    let nearest = Point::new(c.x.clamp(r.x0, r.x1), c.y.clamp(r.y0, r.y1));
+    (nearest - c).norm() < rad
 }
 
 /// Whether segments `a`–`b` and `c`–`d` share a point.

@@ -43,6 +43,8 @@ struct Request {
 #[derive(Debug, Default)]
 pub struct Labels {
     requests: Vec<Request>,
+    /// Discs no label may enter.
+    keep_out: Vec<(Point, f64)>,
 }
 
 /// The size of a label's box at lettering height `h` (slant and subscript included): width,
@@ -69,6 +71,11 @@ impl Labels {
         self.requests.push(Request { anchor, pref, label, h, rank });
     }
 
+    /// A disc (paper mm) every label keeps out of, though nothing drawn bounds it there.
+    pub fn keep_out(&mut self, centre: Point, r: f64) {
+        self.keep_out.push((centre, r));
+    }
+
     /// A plain text label.
     pub fn add_text(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64) {
         self.add(anchor, pref, LabelText::new(text, ""), h);
@@ -83,7 +90,10 @@ impl Labels {
     /// returns whether each found a clean spot (the layout measurement reports those that
     /// did not).
     pub fn place(self, g: &mut Group, bounds: Rect) -> Vec<bool> {
-        let drawn = Obstacles::of_items(&g.items);
+        let mut drawn = Obstacles::of_items(&g.items);
+        for &(c, r) in &self.keep_out {
+            drawn.add(Piece::Disc(c, r), usize::MAX);
+        }
         let cands: Vec<Vec<Candidate>> = self.requests.iter().map(|r| candidates(r, bounds)).collect();
         // By rank, then most constrained first: the fewest candidates free against the
         // drawing alone.
@@ -241,7 +251,28 @@ fn rotate(v: Vec2, deg: f64) -> Vec2 {
 mod tests {
     use super::*;
     use crate::drawing::layout;
-    use crate::drawing::scene::Scene;
+    use crate::drawing::scene::{Item, Scene};
+
+    /// A label asked for inside a ring of discs (rollers round a profile) is placed outside
+    /// every disc, though no stroke bounds them.
+    #[test]
+    fn labels_keep_out_of_the_discs_they_are_given() {
+        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+        let mut g = Group::new("g", region);
+        let mut labels = Labels::new();
+        let discs: Vec<(Point, f64)> =
+            (0..6).map(|k| (Point::new(50.0, 50.0) + math::from_angle(k as f64) * 6.0, 7.0)).collect();
+        for &(c, r) in &discs {
+            labels.keep_out(c, r);
+        }
+        labels.add_text(Point::new(50.0, 50.0), Vec2::ZERO, "12", 2.5);
+        assert_eq!(labels.place(&mut g, region), vec![true]);
+        let text = g.items.iter().find_map(|i| if let Item::Text(t) = i { Some(t.bbox()) } else { None }).unwrap();
+        for (c, r) in discs {
+            let nearest = Point::new(c.x.clamp(text.x0, text.x1), c.y.clamp(text.y0, text.y1));
+            assert!((nearest - c).norm() >= r, "the label {text:?} enters the disc at {c:?}");
+        }
+    }
 
     #[test]
     fn labels_keep_off_lines_crossing_at_their_anchor_and_off_each_other() {

@@ -19,8 +19,9 @@ fn blank_local() -> Spanned<LocalText> {
 pub struct InfoSpec {
     /// One text, or one per language (`{uz: …, ru: …, en: …}`).
     pub title: Spanned<LocalText>,
-    #[serde(default = "blank")]
-    pub designation: UserText,
+    /// One text, or one per language (the course's letters differ: MMN, ТММ, TMM).
+    #[serde(default = "blank_local")]
+    pub designation: Spanned<LocalText>,
     #[serde(default = "blank")]
     pub student: UserText,
     #[serde(default = "blank")]
@@ -39,7 +40,8 @@ pub struct InfoSpec {
 pub struct ProjectInfo {
     /// Per language: read it with [`ProjectInfo::title`].
     pub title: LocalText,
-    pub designation: String,
+    /// Per language: read it with [`ProjectInfo::designation`].
+    pub designation: LocalText,
     pub student: String,
     pub group: String,
     pub supervisor: String,
@@ -50,18 +52,17 @@ pub struct ProjectInfo {
 
 impl InfoSpec {
     /// Every one-language text field with its name, for the checks of [`super::text`].
-    pub fn texts(&self) -> [(&'static str, &UserText); 4] {
-        [
-            ("project.designation", &self.designation),
-            ("project.student", &self.student),
-            ("project.group", &self.group),
-            ("project.supervisor", &self.supervisor),
-        ]
+    pub fn texts(&self) -> [(&'static str, &UserText); 3] {
+        [("project.student", &self.student), ("project.group", &self.group), ("project.supervisor", &self.supervisor)]
     }
 
     /// The fields that may be written per language.
-    pub fn local_texts(&self) -> [(&'static str, &Spanned<LocalText>); 2] {
-        [("project.title", &self.title), ("project.institution", &self.institution)]
+    pub fn local_texts(&self) -> [(&'static str, &Spanned<LocalText>); 3] {
+        [
+            ("project.title", &self.title),
+            ("project.designation", &self.designation),
+            ("project.institution", &self.institution),
+        ]
     }
 
     pub fn resolve(&self) -> ProjectInfo {
@@ -81,6 +82,11 @@ impl ProjectInfo {
     /// The project's title in the sheets' language.
     pub fn title(&self) -> &str {
         self.title.get(self.language)
+    }
+
+    /// The designation in the sheets' language.
+    pub fn designation(&self) -> &str {
+        self.designation.get(self.language)
     }
 
     /// The institution in the sheets' language.

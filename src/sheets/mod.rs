@@ -78,7 +78,7 @@ impl Context<'_> {
             &mut tb,
             c,
             &TitleBlock {
-                designation: &self.info.designation,
+                designation: self.info.designation(),
                 sheet_name,
                 project_title: self.info.title(),
                 student: &self.info.student,

@@ -8,14 +8,16 @@ use super::labels::CamLabels;
 use crate::cams::Design;
 use crate::cams::follower::Follower;
 use crate::cams::integrate::Integrated;
+use crate::cams::laws::Program;
 use crate::drawing::fmt;
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Labels;
 use crate::drawing::plot::{Axis, Plot, round_ticks};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text};
+use crate::drawing::symbols::dimension;
 use crate::drawing::text::LabelText;
-use kurbo::{Point, Rect};
+use kurbo::{Point, Rect, Vec2};
 use std::f64::consts::PI;
 
 /// The chosen scales: μ_φ in degrees and radians per mm, the three ordinate scales (the
@@ -80,7 +82,7 @@ pub fn plan(d: &Design, max_w: f64, max_h: f64) -> Plan {
         let k = amax * mu_phi_rad / mu_s;
         let h2 = (ACCELERATION_MM.1 / k).round().clamp(H2_MM.0, H2_MM.1);
         let a = k * h2;
-        let height = p.lift / mu_s + 2.0 * vmax / mu_s + 2.0 * a + 4.0 * GAP + 8.0;
+        let height = p.lift / mu_s + 2.0 * vmax / mu_s + 2.0 * a + 4.0 * GAP + PHASES + 8.0;
         (h2, a, height)
     };
     let mut mu_s = scale::round_up(p.lift / LIFT_MAX_MM);
@@ -176,6 +178,7 @@ pub fn draw(
     s_plot.line(g, &exact(&|phi| p.at(phi).s), THIN);
     s_plot.line(g, &integrated_curve(integrated, |i| &i.s), MAIN);
     number_divisions(&s_plot, integrated, &mut labels);
+    phase_dimensions(g, &s_plot, p, &mut labels, l, lang);
     let s_top = Point::new(area.x0, s_plot.origin.y - p.lift / sc.mu_s);
     if rocker {
         let deg = format!("({} {})", fmt::trimmed(sc.mu_s.to_degrees(), lang), l.unit_deg_per_mm());
@@ -183,7 +186,7 @@ pub fn draw(
     } else {
         scale_text(g, s_top, &[mu("s", sc.mu_s, unit, lang)]);
     }
-    top = s_plot.origin.y + GAP;
+    top = s_plot.origin.y + PHASES + GAP;
 
     // ds/dφ: both signs.
     let v_plot = Plot {
@@ -231,7 +234,8 @@ pub fn draw(
             g.line(a_plot.at(mid.to_degrees(), 0.0), a_plot.at(mid.to_degrees(), a), DASHED);
         }
     }
-    let phi_rad = LabelText::new(format!("= {} {}", fmt::value(sc.mu_phi_rad, lang), l.unit_rad_per_mm()), "");
+    // The radians as the degrees' gloss in brackets, as μ_β's degrees above.
+    let phi_rad = LabelText::new(format!("({} {})", fmt::value(sc.mu_phi_rad, lang), l.unit_rad_per_mm()), "");
     scale_text(
         g,
         Point::new(area.x0, a_plot.origin.y - amax / sc.mu_dds),
@@ -261,6 +265,37 @@ fn number_divisions(plot: &Plot, integrated: &[Integrated; 2], labels: &mut Labe
                 2.5,
             );
         }
+    }
+}
+
+/// Under the displacement's axis: the position numbers, then the phases' dimensions, then the
+/// working angle's, mm below the axis.
+const NUMBERS: f64 = 5.5;
+const PHASE_ROW: f64 = 11.0;
+const WORK_ROW: f64 = 18.0;
+/// The room the phases' dimensions add under the displacement, mm.
+const PHASES: f64 = 10.0;
+
+/// The phase angles as the course dimensions them under the displacement's axis (rise, far
+/// dwell, return), and the working angle under those; extension lines start below the
+/// position numbers that stand at the phases' ends.
+fn phase_dimensions(g: &mut Group, plot: &Plot, p: &Program, labels: &mut Labels, l: &CamLabels, lang: Language) {
+    let (rise, dwell, work) = (p.rise, p.rise + p.far_dwell, p.rise + p.far_dwell + p.ret);
+    let rows = [
+        (0.0, rise, l.sub_rise(), PHASE_ROW),
+        (rise, dwell, l.sub_far_dwell(), PHASE_ROW),
+        (dwell, work, l.sub_return(), PHASE_ROW),
+        (0.0, work, l.sub_working_angle(), WORK_ROW),
+    ];
+    let below = Vec2::new(0.0, NUMBERS);
+    for (a, b, sub, row) in rows {
+        if b - a <= 0.0 {
+            continue;
+        }
+        let (pa, pb) = (plot.at(a.to_degrees(), 0.0) + below, plot.at(b.to_degrees(), 0.0) + below);
+        let mid = dimension(g, pa, pb, Vec2::new(0.0, row - NUMBERS));
+        let text = LabelText::new("φ", sub).with_tail(format!(" = {}°", fmt::trimmed((b - a).to_degrees(), lang)));
+        labels.add(mid, Vec2::new(0.0, -1.0), text, 2.5);
     }
 }
 

@@ -45,6 +45,8 @@ crate::label_set! {
         sub_work,
         sub_rise,
         sub_return,
+        sub_far_dwell,
+        sub_working_angle,
         sub_min,
         sub_roller,
         sub_allowed_rise,

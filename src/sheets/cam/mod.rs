@@ -225,12 +225,13 @@ fn scale_note(g: &mut Group, mu: f64, ratio: Option<String>, c: &Common, lang: L
 
 /// The sheet's regions by content, for the views' boxes `(nomogram, profile)` (metres). The
 /// diagrams' column is as wide as its plan; the tables
-/// not kept in that column go to a strip left of the title block, as low as fits. Two
+/// not kept in that column go to a strip left of the title block, as low as fits. Three
 /// arrangements of the views are tried, and the one with the larger profile wins (then the
-/// larger nomogram):
+/// larger nomogram, then the third):
 /// - the nomogram under the notes in the diagrams' column, the profile alone on the right;
 /// - both on the right side by side, the profile at the largest GOST scale that leaves the
-///   nomogram [`NOMOGRAM_MIN_MM`], the law's tables under the notes when they fit.
+///   nomogram [`NOMOGRAM_MIN_MM`], the law's tables under the notes when they fit;
+/// - both on the right, the nomogram under the profile, the same way.
 fn layout(
     (n_ext, p_ext): ((Vec2, Vec2), (Vec2, Vec2)),
     plan: &diagrams::Plan,
@@ -298,19 +299,38 @@ fn layout(
         let profile = profile + Vec2::new(px - profile.x0, 0.0);
         Layout3 { diagrams, law_tables, tables, nomogram, profile, nomogram_mu, profile_mu }
     });
+    // The nomogram under the profile on the right (a wide, low profile: a rocker's pivots
+    // on their arc above the cam).
+    let mut stacked = None;
+    for mu_p in scale::length_scales() {
+        let Some((_, profile)) = fit_at(p_ext, views, mu_p) else { continue };
+        let rest = Rect::new(views.x0, profile.y1 + GAP, views.x1, views.y1);
+        let Some((mu_n, nomogram)) = fit_view(n_ext, rest, false) else { continue };
+        let enough = longer_side(n_ext, mu_n) >= NOMOGRAM_MIN_MM;
+        if stacked.is_none() || enough {
+            stacked = Some(Layout3 {
+                diagrams,
+                law_tables,
+                tables,
+                nomogram: centred_across(nomogram, views),
+                profile: centred_across(profile, views),
+                nomogram_mu: mu_n,
+                profile_mu: mu_p,
+            });
+        }
+        if enough {
+            break;
+        }
+    }
+    // The larger profile wins, then the larger nomogram; on a tie, the views together on the
+    // right (under a wide, low profile the sheet's middle is otherwise left empty).
     let better =
         |a: &Layout3, b: &Layout3| (a.profile_mu, a.nomogram_mu) < (b.profile_mu * 0.999, b.nomogram_mu * 0.999);
-    match (below, beside) {
-        (Some(a), Some(b)) => {
-            if better(&b, &a) {
-                b
-            } else {
-                a
-            }
-        }
-        (Some(a), None) | (None, Some(a)) => a,
+    let best = [stacked, below, beside].into_iter().flatten().reduce(|a, b| if better(&b, &a) { b } else { a });
+    match best {
+        Some(a) => a,
         // Nothing fits at any scale (an extent of no size): the views at 1:1 side by side.
-        (None, None) => {
+        None => {
             let half = views.width() / 2.0;
             Layout3 {
                 diagrams,

@@ -15,7 +15,7 @@ use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along};
 use crate::drawing::text::LabelText;
-use crate::num::math::Norm;
+use crate::num::math::{self, Norm};
 use kurbo::{Line, ParamCurveNearest, Point, Rect, Vec2};
 
 /// A follower-frame picture on paper: metres → mm, mirrored for a counter-clockwise cam.
@@ -234,8 +234,13 @@ pub fn draw(
         let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(dist * 1e3, lang), c.unit_mm()));
         labels.add(view.at((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
     } else if o.x.abs() > 1e-9 {
-        // The offset as a dimension from the follower's axis to O, below O.
-        let mid = dimension(g, view.at(Vec2::new(0.0, o.y)), view.at(o), Vec2::new(0.0, 8.0));
+        // The offset as a dimension from the follower's axis to O, below O where the zone
+        // between the limiting lines (at the allowed angles from the axis) is wide enough
+        // for it and its arrows, clear of the hatching.
+        let a = &d.spec.allowed;
+        let span = o.x.abs() / view.mu + 20.0;
+        let depth = (span / (math::tan(a.rise) + math::tan(a.ret)) + 2.0).max(8.0);
+        let mid = dimension(g, view.at(Vec2::new(0.0, o.y)), view.at(o), Vec2::new(0.0, depth));
         let t = format!("e = {} {}", fmt::value(o.x.abs() * 1e3, lang), c.unit_mm());
         labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);
     }

@@ -72,11 +72,15 @@ pub fn extent(d: &Design) -> (Vec2, Vec2) {
     let pitch: Vec<Vec2> = (0..720).map(|k| d.profile.pitch(TAU * k as f64 / 720.0).p).collect();
     let r_max = pitch.iter().map(|p| p.norm()).fold(0.0, f64::max);
     let b0 = pitch[0];
-    let follower = match d.spec.follower {
-        Follower::Translating => (b0 + Vec2::new(0.0, STEM * r_max), 0.0),
-        Follower::Rocker { .. } => (Vec2::ZERO, d.centre_distance().unwrap_or_default()),
+    // The translating follower's stem; the rocker's pivots on their arc.
+    let follower: Vec<(Vec2, f64)> = match d.spec.follower {
+        Follower::Translating => vec![(b0 + Vec2::new(0.0, STEM * r_max), 0.0)],
+        Follower::Rocker { length } => {
+            let (from, sweep) = pivot_arc(d);
+            (0..=90).map(|k| (d.profile.carried(Vec2::new(length, 0.0), from + sweep * k as f64 / 90.0), 0.0)).collect()
+        }
     };
-    let (lo, hi) = bounds(pitch.iter().map(|&p| (p, d.roller)).chain([follower]));
+    let (lo, hi) = bounds(pitch.iter().map(|&p| (p, d.roller)).chain(follower));
     let pad = 0.08 * r_max;
     (lo - Vec2::new(pad, pad), hi + Vec2::new(pad, pad))
 }
@@ -120,6 +124,7 @@ pub fn draw(
         let p = pr.pitch(phi).p;
         if !knife {
             g.circle(view.at(p), d.roller / mu, THIN);
+            labels.keep_out(view.at(p), d.roller / mu);
         }
         let out = p * (1.0 + (d.roller + 3.0 * mu) / p.norm());
         if let Some(name) = name {
@@ -138,10 +143,15 @@ pub fn draw(
     // The curves' names.
     let prog = &d.spec.program;
     let far = pr.pitch(prog.rise + prog.far_dwell / 2.0).p;
-    labels.add_ranked(view.at(far), Vec2::new(0.0, -1.0), LabelText::new(l.pitch_profile(), ""), 2.5, 3);
+    // Outward, past the rollers: inside, its leader would cross the working profile.
+    let outward = view.at(far) - view.origin;
+    labels.add_ranked(view.at(far), outward, LabelText::new(l.pitch_profile(), ""), 2.5, 3);
     if !knife {
+        // On the curve itself (its leader reaches it), the text inside the cam, which is
+        // free of the construction.
         let (w, _) = pr.working(d.roller, prog.rise / 2.0);
-        labels.add_ranked(view.at(w * 0.97), Vec2::ZERO, LabelText::new(l.working_profile(), ""), 2.5, 3);
+        let inward = view.origin - view.at(w);
+        labels.add_ranked(view.at(w), inward, LabelText::new(l.working_profile(), ""), 2.5, 3);
     }
     // r_min: a radius into the middle of the near dwell, where the profile is the base circle.
     let near = prog.rise + prog.far_dwell + prog.ret;
@@ -165,16 +175,24 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
     match d.spec.follower {
         Follower::Rocker { length } => {
             let pivot = Vec2::new(length, 0.0);
+            // The pivot's circle where its positions are: the arc from A₀ to the last.
             let a_w = d.centre_distance().unwrap_or_default();
-            g.circle(at(Vec2::ZERO), a_w / mu, AXIS);
+            let (from, sweep) = pivot_arc(d);
+            let o = at(Vec2::ZERO);
+            let (v0, v1) = (at(pr.carried(pivot, from)) - o, at(pr.carried(pivot, from + 1e-3)) - o);
+            // The carried pivot turns by φ; on paper clockwise or not as the view mirrors.
+            let turn = if v0.cross(v1) > 0.0 { 1.0 } else { -1.0 };
+            g.curve(Path::arc(o, a_w / mu, atan2(v0.y, v0.x), turn * sweep), AXIS);
             for (&phi, name) in phis.iter().zip(position_labels(phis)) {
                 let a = pr.carried(pivot, phi);
                 let (start, end) = (pr.carried(b0, phi), pr.pitch(phi).p);
                 g.dot(at(a), 0.5);
                 g.line(at(a), at(end), THIN);
                 swing_arc(g, a, start, end, at, mu);
-                if name.as_deref() == Some("0") {
-                    labels.add_text(at(a), Vec2::new(1.0, -1.0), "A₀", 3.5);
+                // Each pivot position named by its position, outward from O.
+                if let Some(name) = name {
+                    let out = at(a) - at(Vec2::ZERO);
+                    labels.add_ranked(at(a), out, LabelText::new("A", name), 2.5, 1);
                 }
             }
         }
@@ -191,6 +209,15 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
             }
         }
     }
+}
+
+/// The cam angles `(from, sweep)` of the rocker pivot's arc drawn in the inversion: its
+/// positions A_k with a margin each side, the whole circle when they go round.
+fn pivot_arc(d: &Design) -> (f64, f64) {
+    const MARGIN: f64 = 0.15;
+    let p = &d.spec.program;
+    let work = p.rise + p.far_dwell + p.ret;
+    if work + 2.0 * MARGIN >= TAU { (0.0, TAU) } else { (-MARGIN, work + 2.0 * MARGIN) }
 }
 
 /// The arc of radius l round the pivot `a` from the base circle's point to the roller

@@ -260,7 +260,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         &mut tb,
         c,
         &TitleBlock {
-            designation: &inp.info.designation,
+            designation: inp.info.designation(),
             sheet_name: if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() },
             project_title: inp.info.title(),
             student: &inp.info.student,
