@@ -571,3 +571,31 @@ fn every_sheet_of_every_fixture_speaks_its_language() {
         }
     }
 }
+
+/// The title block's role captions (Drawn, Checked, …, Approved) stay inside their 17 mm
+/// column in every language, with room before its rule, and share one height: the Uzbek
+/// "Tasdiqladi" at 2.5 mm would touch the rule.
+#[test]
+fn the_title_blocks_role_captions_fit_their_column() {
+    let tb = frame::title_block_rect();
+    for lang in Language::ALL {
+        let mut p = fixture("worked-example");
+        p.info.language = lang;
+        let r = build(&p);
+        let g = r.output.scene.groups.iter().find(|g| g.id == "title-block").unwrap();
+        let column: Vec<_> = g
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                tmm_sheets::drawing::scene::Item::Text(t) => Some(t),
+                _ => None,
+            })
+            .filter(|t| t.at.x < tb.x0 + 2.0 && t.at.y > tb.y0 + 25.0)
+            .collect();
+        assert_eq!(column.len(), 5, "{lang:?}: {:?}", column.iter().map(|t| &t.text).collect::<Vec<_>>());
+        for t in &column {
+            assert!(t.bbox().x1 <= tb.x0 + 17.0 - 0.3, "{lang:?}: {:?} reaches {}", t.text, t.bbox().x1 - tb.x0);
+            assert!(t.h >= 1.8 && t.h == column[0].h, "{lang:?}: {:?} at {} mm", t.text, t.h);
+        }
+    }
+}

@@ -3,7 +3,7 @@
 
 use super::labels::Common;
 use super::scene::{Anchor, Group, MAIN, THIN, Text};
-use super::text::{Fitted, TooLong, fit, paragraph, wrap};
+use super::text::{Fitted, SLANT, TooLong, fit, paragraph, wrap};
 use crate::num::tol;
 use kurbo::{Point, Rect};
 use serde::Deserialize;
@@ -45,6 +45,27 @@ struct Caption {
     at: [f64; 2],
     h: f64,
     anchor: TemplateAnchor,
+    /// The right edge of a start-anchored caption's cell: the captions with one share one
+    /// height, the largest up to their own at which the longest fits (Uzbek "Tasdiqladi"
+    /// takes 2.4 mm in the 17 mm column).
+    #[serde(default)]
+    right: Option<f64>,
+}
+
+/// Room kept between a caption and its cell's right rule, mm.
+const CAPTION_CLEAR: f64 = 0.4;
+/// The smallest lettering a caption is reduced to, mm (GOST 2.304's smallest).
+const SMALLEST_CAPTION: f64 = 1.8;
+
+impl Caption {
+    /// The largest lettering up to its own, to 0.1 mm, at which the caption fits its cell.
+    fn fitting_height(&self, text: &str) -> f64 {
+        let Some(right) = self.right else { return self.h };
+        // The width is proportional to the height.
+        let per_mm = crate::font::metrics().width(text, crate::font::size_for_cap(1.0)) + SLANT;
+        let h = (right - self.at[0] - CAPTION_CLEAR) / per_mm;
+        ((h * 10.0).floor() / 10.0).clamp(SMALLEST_CAPTION, self.h)
+    }
 }
 
 #[derive(Debug, Deserialize)]
@@ -227,8 +248,11 @@ pub fn title_block(g: &mut Group, l: &Common, tb: &TitleBlock) -> Result<(), Too
             g.line(p(x1, y1), p(x2, y2), pen);
         }
     }
+    let column_h =
+        t.captions.iter().filter(|c| c.right.is_some()).map(|c| c.fitting_height(c.key.text(l))).reduce(f64::min);
     for c in &t.captions {
-        g.text(Text::new(p(c.at[0], c.at[1]), c.key.text(l), c.h, c.anchor.into()));
+        let h = if c.right.is_some() { column_h.unwrap_or(c.h) } else { c.h };
+        g.text(Text::new(p(c.at[0], c.at[1]), c.key.text(l), h, c.anchor.into()));
     }
     let sheet = format!("{} {}", l.tb_sheet_no(), tb.sheet_no);
     let sheets = format!("{} {}", l.tb_sheets(), tb.sheet_count);
