@@ -570,7 +570,12 @@ fn every_sheet_of_every_fixture_speaks_its_language() {
                     assert_eq!(bad, None, "{name} sheet {} in {lang:?}: {:?}", sheet.output.number, t.text);
                     // The Uzbek course letters (MMN: mashina va mexanizmlar nazariyasi) belong
                     // on an Uzbek sheet only, the designation's included.
-                    assert!(lang == Language::Uz || !t.text.contains("MMN"), "{name} sheet {} in {lang:?}: {:?}", sheet.output.number, t.text);
+                    assert!(
+                        lang == Language::Uz || !t.text.contains("MMN"),
+                        "{name} sheet {} in {lang:?}: {:?}",
+                        sheet.output.number,
+                        t.text
+                    );
                 }
             }
         }

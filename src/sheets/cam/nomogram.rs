@@ -245,3 +245,71 @@ pub fn draw(
         labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::drawing::path::Seg;
+    use crate::drawing::scene::Item;
+
+    /// The hatching marks the admissible zone: each stroke starts on the boundary and runs
+    /// into the zone. Tested against the pressure angle computed here, for a translating
+    /// follower whose allowed angles differ (30° on the rise, 45° on the return): a centre C
+    /// is admissible where every B′ of a phase sees C within the phase's allowed angle of
+    /// the direction against the follower's motion (down the axis). A stroke on the wrong
+    /// side has neither end inside.
+    #[test]
+    fn the_hatching_is_on_the_admissible_side_of_the_boundary() {
+        let text = include_str!("../../../fixtures/cams/translating-offset-auto.yaml");
+        let p = crate::project::load(text).unwrap();
+        let d = &p.cam.as_ref().unwrap().design;
+        let phis = positions(d, 8);
+        let ext = extent(d, &phis);
+        let area = Rect::new(0.0, 0.0, 300.0, 300.0);
+        let mu = 0.0005;
+        let mut g = Group::new("nomogram", area);
+        let lang = Language::Uz;
+        draw(&mut g, area, ext, mu, d, &phis, &mut Labels::new(), CamLabels::get(lang), Common::get(lang), lang);
+        let view = centred(area, ext, mu, d.spec.sense == crate::cams::Sense::Ccw);
+        let to_frame = |q: Point| {
+            let x = (q.x - view.origin.x) * mu;
+            Vec2::new(if view.mirror { -x } else { x }, (view.origin.y - q.y) * mu)
+        };
+        // The analog points of each phase, densely, with the phase's allowed angle.
+        let pr = &d.spec.program;
+        let allowed = &d.spec.allowed;
+        let analogs: Vec<(Vec2, f64)> = [(0.0, pr.rise, allowed.rise), (pr.rise + pr.far_dwell, pr.ret, allowed.ret)]
+            .iter()
+            .flat_map(|&(start, len, a)| (0..=400).map(move |k| (start + len * k as f64 / 400.0, a)))
+            .map(|(phi, a)| (d.region.state(phi).analog, a))
+            .collect();
+        // The least margin, radians, by which C meets every phase's allowed angle.
+        let slack = |c: Vec2| {
+            analogs
+                .iter()
+                .map(|&(b, a)| {
+                    let v = c - b; // from B′ to the centre: down and to a side
+                    a - crate::num::math::atan2(v.x.abs(), -v.y)
+                })
+                .fold(f64::INFINITY, f64::min)
+        };
+        let strokes: Vec<(Point, Point)> = g
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                Item::Path { path, .. } if path.segs.len() == 1 => match path.segs[0] {
+                    Seg::Line(q) if ((q - path.start).norm() - 2.25).abs() < 1e-6 => Some((path.start, q)),
+                    _ => None,
+                },
+                _ => None,
+            })
+            .collect();
+        assert!(strokes.len() >= 20, "{} strokes", strokes.len());
+        for (a, b) in strokes {
+            let (sa, sb) = (slack(to_frame(a)), slack(to_frame(b)));
+            let (inner, edge) = if sa > sb { (sa, sb) } else { (sb, sa) };
+            assert!(inner > 1e-3, "a stroke {a:?}–{b:?} outside the zone: margins {sa}, {sb}");
+            assert!(edge > -2e-3, "a stroke {a:?}–{b:?} starts outside the boundary: margin {edge}");
+        }
+    }
+}
