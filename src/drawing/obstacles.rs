@@ -64,6 +64,17 @@ pub fn segments(item: &Item) -> Vec<(Point, Point)> {
     out
 }
 
+/// Half a thin line's width, mm: its ink is within the labels' clearance of its centre line.
+const THIN_HALF: f64 = 0.125;
+
+/// The width of an item's stroke, if it has one.
+fn pen_width(item: &Item) -> Option<f64> {
+    match item {
+        Item::Path { pen, .. } | Item::Circle { pen, filled: false, .. } => Some(pen.width),
+        _ => None,
+    }
+}
+
 fn rect_of(r: Rect) -> Rectangle<[f64; 2]> {
     Rectangle::from_corners([r.x0, r.y0], [r.x1, r.y1])
 }
@@ -79,7 +90,20 @@ impl Obstacles {
         for (k, item) in items.into_iter().enumerate() {
             match item {
                 Item::Text(t) => pieces.push((Piece::TextBox(t.core_box()), k)),
-                _ => pieces.extend(segments(item).into_iter().map(|(a, b)| (Piece::Segment(a, b), k))),
+                _ => {
+                    let segs = segments(item);
+                    // A thick line's ink reaches past its centre line further than a label's
+                    // clearance: its edges are indexed too.
+                    let edge = pen_width(item).map_or(0.0, |w| w / 2.0 - THIN_HALF);
+                    if edge > 0.0 {
+                        for &(a, b) in segs.iter().filter(|(a, b)| (*b - *a).norm() > 0.0) {
+                            let n = (b - a).unit().turn_90() * edge;
+                            pieces.push((Piece::Segment(a + n, b + n), k));
+                            pieces.push((Piece::Segment(a - n, b - n), k));
+                        }
+                    }
+                    pieces.extend(segs.into_iter().map(|(a, b)| (Piece::Segment(a, b), k)));
+                }
             }
         }
         Obstacles::of_pieces(pieces)

@@ -37,6 +37,8 @@ struct Request {
     /// Lower goes first: a class of labels (a mechanism's joint letters) may claim the
     /// best spots before another (its position numbers).
     rank: u8,
+    /// A label naming a line (a curve's name): always on a leader that touches the line.
+    names_line: bool,
 }
 
 /// Labels waiting for the geometry of their group to be complete.
@@ -68,7 +70,13 @@ impl Labels {
 
     /// A label placed after every label of a lower rank.
     pub fn add_ranked(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
-        self.requests.push(Request { anchor, pref, label, h, rank });
+        self.requests.push(Request { anchor, pref, label, h, rank, names_line: false });
+    }
+
+    /// A line's name (a profile's, a circle's) with `anchor` on the line: set off on a leader
+    /// that reaches the line, so that it cannot be taken for a neighbour's name.
+    pub fn add_line_name(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
+        self.requests.push(Request { anchor, pref, label, h, rank, names_line: true });
     }
 
     /// A disc (paper mm) every label keeps out of, though nothing drawn bounds it there.
@@ -139,7 +147,8 @@ impl Labels {
         bounds: Rect,
     ) -> Vec<(Candidate, bool)> {
         let mut obstacles = drawn.clone();
-        let mut out = vec![(Candidate { r: Rect::ZERO, leader: None, cost: 0.0 }, false); self.requests.len()];
+        let mut out =
+            vec![(Candidate { r: Rect::ZERO, leader: None, cost: 0.0, touches: false }, false); self.requests.len()];
         for &i in order {
             // A leader may cross thin lines (out of a fan of links) when no label spot can be
             // reached without: a free box comes first, a clean leader second.
@@ -172,16 +181,27 @@ struct Candidate {
     r: Rect,
     leader: Option<(Point, Point)>,
     cost: f64,
+    /// The leader starts on a line (the one the label names), which it does not cross.
+    touches: bool,
 }
+
+/// How much of a leader that starts on its line is not checked against the drawing, mm.
+const TOUCH: f64 = 0.4;
 
 impl Candidate {
     fn is_free(&self, o: &Obstacles) -> bool {
-        self.box_is_free(o) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke(a, b))
+        self.box_is_free(o) && self.checked_leader().is_none_or(|(a, b)| !o.segment_crosses_stroke(a, b))
     }
 
     /// The box is clear and its leader crosses no text (it may cross lines).
     fn box_is_free(&self, o: &Obstacles) -> bool {
-        o.is_clear(self.r.inflate(CLEAR, CLEAR)) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
+        o.is_clear(self.r.inflate(CLEAR, CLEAR))
+            && self.checked_leader().is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
+    }
+
+    /// The leader as checked: less its start on the named line.
+    fn checked_leader(&self) -> Option<(Point, Point)> {
+        self.leader.map(|(a, b)| if self.touches { (a + (b - a).unit() * TOUCH, b) } else { (a, b) })
     }
 }
 
@@ -193,7 +213,7 @@ fn least_bad(cands: &[Candidate], o: &Obstacles, req: &Request, bounds: Rect) ->
         let (w, up, down) = label_size(&req.label, req.h);
         let x0 = req.anchor.x.min(bounds.x1 - w).max(bounds.x0);
         let y1 = req.anchor.y.max(bounds.y0 + up + down).min(bounds.y1);
-        Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), leader: None, cost: 0.0 }
+        Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), leader: None, cost: 0.0, touches: false }
     };
     cands
         .iter()
@@ -213,6 +233,9 @@ fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
     let base = if req.pref.norm() > tol::PAPER { req.pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
     let mut out = Vec::new();
     for (di, &dist) in DISTANCES.iter().enumerate() {
+        if req.names_line && dist < LEADER_FROM {
+            continue;
+        }
         for k in 0..DIRECTIONS {
             // 0, +1, −1, +2, −2, …: alternate sides of the preferred direction.
             let step = k.div_ceil(2) as f64 * if k % 2 == 1 { 1.0 } else { -1.0 };
@@ -225,20 +248,21 @@ fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
             if !(r.x0 >= bounds.x0 && r.y0 >= bounds.y0 && r.x1 <= bounds.x1 && r.y1 <= bounds.y1) {
                 continue;
             }
-            let leader = (dist >= LEADER_FROM).then(|| leader(req.anchor, r));
+            let gap = if req.names_line { 0.0 } else { LEADER_GAP };
+            let leader = (dist >= LEADER_FROM).then(|| leader(req.anchor, r, gap));
             let cost = di as f64 * 1.0 + turn.abs() / 45.0 * 0.8;
-            out.push(Candidate { r, leader, cost });
+            out.push(Candidate { r, leader, cost, touches: req.names_line });
         }
     }
     out.sort_by(|a, b| a.cost.total_cmp(&b.cost));
     out
 }
 
-/// A leader from near the anchor to the nearest point of the label's box.
-fn leader(anchor: Point, r: Rect) -> (Point, Point) {
+/// A leader from `gap` off the anchor to the nearest point of the label's box.
+fn leader(anchor: Point, r: Rect, gap: f64) -> (Point, Point) {
     let end = Point::new(anchor.x.clamp(r.x0, r.x1), anchor.y.clamp(r.y0, r.y1));
     let d = end - anchor;
-    let start = anchor + d.unit() * LEADER_GAP.min(d.norm() / 2.0);
+    let start = anchor + d.unit() * gap.min(d.norm() / 2.0);
     (start, end)
 }
 
@@ -272,6 +296,28 @@ mod tests {
             let nearest = Point::new(c.x.clamp(text.x0, text.x1), c.y.clamp(text.y0, text.y1));
             assert!((nearest - c).norm() >= r, "the label {text:?} enters the disc at {c:?}");
         }
+    }
+
+    /// A line's name stands off on a leader that starts on the line itself (not short of
+    /// it) and ends on the name's box, the line not counted as crossed.
+    #[test]
+    fn a_lines_name_has_a_leader_from_the_line() {
+        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+        let mut g = Group::new("g", region);
+        let on = Point::new(50.0, 50.0);
+        g.line(Point::new(10.0, 50.0), Point::new(90.0, 50.0), crate::drawing::scene::MAIN);
+        let mut labels = Labels::new();
+        labels.add_line_name(on, Vec2::new(0.0, -1.0), LabelText::new("profile", ""), 2.5, 0);
+        assert_eq!(labels.place(&mut g, region), vec![true]);
+        let text = g.items.iter().find_map(|i| if let Item::Text(t) = i { Some(t.bbox()) } else { None }).unwrap();
+        let leader = g.items.last().and_then(|i| match i {
+            Item::Path { path, .. } => Some((path.start, path.end())),
+            _ => None,
+        });
+        let (a, b) = leader.expect("a leader");
+        assert!((a - on).norm() < 1e-9, "the leader starts at {a:?}, off the line");
+        assert!(text.inflate(0.6, 0.6).contains(b) && text.y1 < on.y, "{b:?} {text:?}");
+        assert!((b - a).norm() >= LEADER_FROM - 1e-9);
     }
 
     #[test]

@@ -109,7 +109,23 @@ pub fn wrap(text: &str, h: f64, width: f64) -> Vec<String> {
     if !cur.is_empty() {
         lines.push(cur);
     }
+    keep_last_word_company(&mut lines, |l| m.width(l, size) <= room);
     lines
+}
+
+/// A paragraph's last line of one word (a widow: "значения" alone under a full line) takes
+/// the word before it along, when that fits and leaves the line above two words or more.
+fn keep_last_word_company(lines: &mut [String], fits: impl Fn(&str) -> bool) {
+    let [.., above, last] = lines else { return };
+    if last.contains(' ') || above.matches(' ').count() < 2 {
+        return;
+    }
+    let Some((kept, moved)) = above.rsplit_once(' ') else { return };
+    let joined = format!("{moved} {last}");
+    if fits(&joined) {
+        *above = kept.to_string();
+        *last = joined;
+    }
 }
 
 /// The slant of GOST type B lettering adds this much width per unit of height (tan 15°).
@@ -191,4 +207,28 @@ pub fn paragraph(g: &mut Group, at: Point, lines: &[String], h: f64, anchor: Anc
         y += LINE_PITCH * h;
     }
     y
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A last line of one word takes the word before it along; the words keep their order
+    /// and every line its width.
+    #[test]
+    fn wrapping_leaves_no_word_alone_on_the_last_line() {
+        let h = 2.5;
+        let width = |s: &str| font::metrics().width(s, font::size_for_cap(h)) + SLANT * h;
+        let text = "one two three four five six seven";
+        let lines = wrap(text, h, width("one two three four five six") + 0.01);
+        assert_eq!(lines, ["one two three four five", "six seven"]);
+        for w in [20.0, 30.0, 45.0, 60.0] {
+            let long = "Thick line — graphical (chord) integration (8 divisions), thin — the exact law";
+            let lines = wrap(long, h, w);
+            assert_eq!(lines.join(" "), long, "{w}");
+            assert!(lines.iter().all(|l| width(l) <= w + 1e-9), "{w}: {lines:?}");
+        }
+        // Two words: nothing to take along.
+        assert_eq!(wrap("alpha beta", h, width("alpha") + 0.01), ["alpha", "beta"]);
+    }
 }

@@ -271,10 +271,10 @@ fn number_divisions(plot: &Plot, integrated: &[Integrated; 2], labels: &mut Labe
 /// Under the displacement's axis: the position numbers, then the phases' dimensions, then the
 /// working angle's, mm below the axis.
 const NUMBERS: f64 = 5.5;
-const PHASE_ROW: f64 = 11.0;
-const WORK_ROW: f64 = 18.0;
+const PHASE_ROW: f64 = 12.5;
+const WORK_ROW: f64 = 20.0;
 /// The room the phases' dimensions add under the displacement, mm.
-const PHASES: f64 = 10.0;
+const PHASES: f64 = 12.0;
 
 /// The phase angles as the course dimensions them under the displacement's axis (rise, far
 /// dwell, return), and the working angle under those; extension lines start below the

@@ -19,6 +19,7 @@ crate::label_set! {
         law_modified_trapezoid,
         law_modified_sine,
         law_custom_note(name, corners),
+        law_custom_return,
         unit_deg_per_mm,
         unit_rad_per_mm,
         unit_per_mm,

@@ -380,7 +380,8 @@ fn centred_across(r: Rect, within: Rect) -> Rect {
 fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLabels, lang: Language) -> Vec<String> {
     let d = &p.design;
     let pr = &d.spec.program;
-    let deg = |x: f64| fmt::value(x.to_degrees(), lang);
+    // Whole degrees as the file gives them (70°, not 70,00°).
+    let deg = |x: f64| fmt::trimmed(x.to_degrees(), lang);
     let (kind, q, dq) = match d.spec.follower {
         Follower::Translating => (l.follower_translating(), "s", "ds/dφ"),
         Follower::Rocker { .. } => (l.follower_rocker(), "β", "dβ/dφ"),
@@ -410,7 +411,12 @@ fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLabels
         {
             let corners: Vec<String> =
                 c.corners().map(|(x, a)| format!("({}; {})", fmt::value(x, lang), fmt::value(a, lang))).collect();
-            out.push(l.law_custom_note(&law_name(p, law, l, lang), &corners.join(", ")));
+            let mut note = l.law_custom_note(&law_name(p, law, l, lang), &corners.join(", "));
+            // The return runs the law backwards: its acceleration analog has the opposite sign.
+            if k == 1 || p.laws.0 == p.laws.1 {
+                note.push_str(l.law_custom_return());
+            }
+            out.push(note);
         }
     }
     out.extend(p.assumptions.iter().map(|a| a.get(lang).to_string()));
@@ -474,12 +480,21 @@ fn sheet_table(stem: &str, t: &NumTable, l: &CamLabels, c: &Common, lang: Langua
     // The return's half may flow into another column: it names itself as the continuation.
     let title = table_title(stem, l);
     Table {
-        title: if stem.ends_with("-return") { format!("{title} {}", l.continued()) } else { title.to_string() },
+        title: if stem.ends_with("-return") { continued_title(title, l.continued()) } else { title.to_string() },
         header: if stem == "results" { vec![c.value().into()] } else { t.columns.clone() },
         rows,
         label_w,
         cell_w: 12.0,
         corner: if stem == "results" { c.quantity().into() } else { c.position_col().into() },
+    }
+}
+
+/// A table's title marked as the continuation: "(continued)" after it, or inside its closing
+/// bracket ("Harakat qonuni (holatlar boʻyicha, davomi)") rather than a second pair.
+fn continued_title(title: &str, continued: &str) -> String {
+    match title.strip_suffix(')') {
+        Some(open) => format!("{open}, {continued})"),
+        None => format!("{title} ({continued})"),
     }
 }
 

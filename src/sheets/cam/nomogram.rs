@@ -13,7 +13,7 @@ use crate::drawing::fmt;
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
-use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along};
+use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along, vector};
 use crate::drawing::text::LabelText;
 use crate::num::math::{self, Norm};
 use kurbo::{Line, ParamCurveNearest, Point, Rect, Vec2};
@@ -221,7 +221,8 @@ pub fn draw(
     // O and r_min.
     g.dot(view.at(o), 0.8);
     labels.add_text(view.at(o), Vec2::new(-1.0, 1.0), "O", 3.5);
-    g.line(view.at(o), view.at(Vec2::ZERO), MAIN);
+    // r_min as a radius: thin, its arrow at B₀ (as on the profile).
+    vector(g, view.at(o), view.at(Vec2::ZERO), THIN);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
         fmt::value(d.centre.r_min * 1e3, lang),

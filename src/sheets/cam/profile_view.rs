@@ -16,7 +16,7 @@ use crate::drawing::labels::{Common, Language};
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
-use crate::drawing::symbols::{angle_mark, frame_pivot, turn_arrow, vector};
+use crate::drawing::symbols::{angle_mark, frame_pivot, hatch, turn_arrow, vector};
 use crate::drawing::text::LabelText;
 use crate::num::bezier::Fitted;
 use crate::num::math::{Norm, atan2, sin_cos};
@@ -29,6 +29,8 @@ pub const MAX_PIECES: usize = 256;
 
 /// The translating follower's stem above the roller, in r_max.
 const STEM: f64 = 0.4;
+/// Between the stem and each side of its guide, mm.
+const GUIDE_GAP_MM: f64 = 2.5;
 
 /// The profiles as Bézier pieces, part by part, fitted once for the notes and the drawing.
 pub struct Pieces {
@@ -126,9 +128,10 @@ pub fn draw(
             g.circle(view.at(p), d.roller / mu, THIN);
             labels.keep_out(view.at(p), d.roller / mu);
         }
-        let out = p * (1.0 + (d.roller + 3.0 * mu) / p.norm());
+        // At the roller's rim (a knife's point), outward: a leader, if any, reaches it.
+        let rim = view.at(p * (1.0 + d.roller / p.norm()));
         if let Some(name) = name {
-            labels.add_text_ranked(view.at(out), Vec2::ZERO, &name, 2.5, 2);
+            labels.add_text_ranked(rim, rim - view.origin, &name, 2.5, 2);
         }
     }
     follower_at_start(g, d, &|v| view.at(v), mu);
@@ -145,20 +148,24 @@ pub fn draw(
     let far = pr.pitch(prog.rise + prog.far_dwell / 2.0).p;
     // Outward, past the rollers: inside, its leader would cross the working profile.
     let outward = view.at(far) - view.origin;
-    labels.add_ranked(view.at(far), outward, LabelText::new(l.pitch_profile(), ""), 2.5, 3);
+    labels.add_line_name(view.at(far), outward, LabelText::new(l.pitch_profile(), ""), 2.5, 3);
     if !knife {
         // On the curve itself (its leader reaches it), the text inside the cam, which is
         // free of the construction.
         let (w, _) = pr.working(d.roller, prog.rise / 2.0);
         let inward = view.origin - view.at(w);
-        labels.add_ranked(view.at(w), inward, LabelText::new(l.working_profile(), ""), 2.5, 3);
+        labels.add_line_name(view.at(w), inward, LabelText::new(l.working_profile(), ""), 2.5, 3);
     }
     // r_min: a radius into the middle of the near dwell, where the profile is the base circle.
     let near = prog.rise + prog.far_dwell + prog.ret;
     let dir = pr.pitch((near + TAU) / 2.0).p.unit();
     let base = dir * d.centre.r_min;
     vector(g, view.origin, view.at(base), THIN);
-    labels.add_ranked(view.at(base * 1.02), Vec2::ZERO, LabelText::new(l.base_circle(), ""), 2.5, 3);
+    // Its name on a leader of its own, a little further round the near dwell (clear of the
+    // radius' arrowhead).
+    let aside = pr.pitch(near + (TAU - near) * 0.7).p.unit() * d.centre.r_min;
+    let out = view.at(aside) - view.origin;
+    labels.add_line_name(view.at(aside), out, LabelText::new(l.base_circle(), ""), 2.5, 3);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
         fmt::value(d.centre.r_min * 1e3, lang),
@@ -242,6 +249,13 @@ fn follower_at_start(g: &mut Group, d: &Design, at: &dyn Fn(Vec2) -> Point, mu: 
             let top = b0 + Vec2::new(0.0, STEM * r_max * 0.8);
             g.line(at(b0), at(top), MAIN);
             g.line(at(b0 - Vec2::new(0.0, 0.1 * r_max)), at(top + Vec2::new(0.0, 0.05 * r_max)), AXIS);
+            // Its guide: the frame either side of the stem, hatched outside.
+            let (lo, hi) = (at(b0 + Vec2::new(0.0, STEM * r_max * 0.4)), at(top));
+            for side in [-1.0, 1.0] {
+                let off = Vec2::new(side * GUIDE_GAP_MM, 0.0);
+                g.line(lo + off, hi + off, MAIN);
+                hatch(g, lo + off, hi + off, Vec2::new(side, 0.0), 2.5);
+            }
         }
         Follower::Rocker { length } => {
             let a = pr.carried(Vec2::new(length, 0.0), 0.0);
