@@ -204,6 +204,8 @@ pub fn frame(g: &mut Group) {
 
 /// Room left between a cell's lines and its text, mm (horizontal, vertical).
 const CELL_PAD: (f64, f64) = (0.75, 0.5);
+/// The name field's margin each side, mm.
+const NAME_PAD: f64 = 2.0;
 
 impl FieldName {
     /// The project file's field the value comes from, for messages.
@@ -284,7 +286,9 @@ fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Common) -> Result<(),
     const GAP: f64 = 2.0;
     /// The sheet's name may take this much of the field's height, mm.
     const SHEET_NAME_H: f64 = 12.0;
-    let w = r.width() - 2.0 * CELL_PAD.0;
+    // Wider margins than a cell's: a centred line as wide as the field reads as touching
+    // its rules.
+    let w = r.width() - 2.0 * NAME_PAD;
     let ours = |text: &str, ht: f64, h: f64| {
         fit(text, w, ht, h).unwrap_or_else(|| Fitted { lines: wrap(text, 2.5, w), h: 2.5 })
     };

@@ -67,9 +67,9 @@ const SHEET: Rect = Rect { x0: 24.0, y0: 9.0, x1: 832.0, y1: 585.0 };
 const LEFT_MAX: f64 = 320.0;
 /// Between regions, mm.
 const GAP: f64 = 6.0;
-/// Room a view needs besides its drawing: its title above and its scale below, its margins.
-const VIEW_TOP: f64 = 10.0;
-const VIEW_BOTTOM: f64 = 8.0;
+/// Room a view needs besides its drawing: its title and its scale above, its margins.
+const VIEW_TOP: f64 = 15.0;
+const VIEW_BOTTOM: f64 = 3.0;
 const VIEW_SIDES: f64 = 8.0;
 /// The nomogram's drawing is at least this long on its longer side when the profile can
 /// be drawn smaller to allow it, mm.
@@ -213,14 +213,15 @@ fn view_area(r: Rect) -> Rect {
     Rect::new(r.x0 + VIEW_SIDES / 2.0, r.y0 + VIEW_TOP, r.x1 - VIEW_SIDES / 2.0, r.y1 - VIEW_BOTTOM)
 }
 
-/// "μ_l = … m/mm" (and the GOST ratio) under a view.
+/// "μ_l = … m/mm" (and the GOST ratio) under a view's title: below the view it read as the
+/// scale of the view under it.
 fn scale_note(g: &mut Group, mu: f64, ratio: Option<String>, c: &Common, lang: Language) {
     let mut tail = format!(" = {} {}", fmt::trimmed(mu, lang), c.unit_m_per_mm());
     if let Some(r) = ratio {
         tail.push_str(&format!(" ({})", fmt::localise(&r, lang)));
     }
     let r = g.region;
-    LabelText::new("μ", "l").with_tail(tail).draw(g, Point::new(r.x0 + 2.0, r.y1 - 2.0), 2.5, Anchor::Start);
+    LabelText::new("μ", "l").with_tail(tail).draw(g, Point::new(r.x0 + 2.0, r.y0 + 10.5), 2.5, Anchor::Start);
 }
 
 /// The sheet's regions by content, for the views' boxes `(nomogram, profile)` (metres). The
