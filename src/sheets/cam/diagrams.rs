@@ -14,7 +14,7 @@ use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Labels;
 use crate::drawing::plot::{Axis, Plot, round_ticks};
 use crate::drawing::scale;
-use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text};
+use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::dimension;
 use crate::drawing::text::LabelText;
 use kurbo::{Point, Rect, Vec2};
@@ -206,7 +206,7 @@ pub fn draw(
     scale_text(g, Point::new(area.x0, v_plot.origin.y - vmax / sc.mu_ds), &[mu(v_name, sc.mu_ds, unit, lang)]);
     // The displacement's pole: rays to the mean ordinates of the velocity's chords.
     let means: Vec<f64> = integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
-    pole(g, &v_plot, sc.h1, &means, sc.mu_ds, "H₁", c, lang);
+    pole(g, &v_plot, sc.h1, &means, sc.mu_ds, "1", c, lang);
     top = v_plot.origin.y + vmax / sc.mu_ds + GAP;
 
     // d²s/dφ²: the given law, with its mid-ordinates.
@@ -242,7 +242,7 @@ pub fn draw(
         &[mu(a_name, sc.mu_dds, unit, lang), mu("φ", sc.mu_phi_deg, l.unit_deg_per_mm(), lang), phi_rad],
     );
     let mids: Vec<f64> = integrated.iter().flat_map(|i| i.mid_dds.iter().copied()).collect();
-    pole(g, &a_plot, sc.h2, &mids, sc.mu_dds, "H₂", c, lang);
+    pole(g, &a_plot, sc.h2, &mids, sc.mu_dds, "2", c, lang);
     labels.place(g, area);
     Drawn { scales: sc, bottom: a_plot.origin.y + amax / sc.mu_dds + GAP }
 }
@@ -336,11 +336,12 @@ fn scale_text(g: &mut Group, at: Point, lines: &[LabelText]) {
 /// The pole at H left of the origin on the x axis, and its rays to the ordinates `ys`
 /// carried to the y axis: each chord of the integral is drawn parallel to its ray.
 #[allow(clippy::too_many_arguments)]
-fn pole(g: &mut Group, plot: &Plot, h: f64, ys: &[f64], mu: f64, name: &str, c: &Common, lang: Language) {
+fn pole(g: &mut Group, plot: &Plot, h: f64, ys: &[f64], mu: f64, index: &str, c: &Common, lang: Language) {
     let p = Point::new(plot.origin.x - h, plot.origin.y);
     g.dot(p, 0.6);
-    let text = format!("{name} = {} {}", fmt::value(h, lang), c.unit_mm());
-    g.text(Text::new(Point::new(p.x - 1.5, p.y + 1.0), text, 2.5, Anchor::End));
+    // H with its index as the sheet's other subscripts, clear of the pole's dot.
+    let text = LabelText::new("H", index).with_tail(format!(" = {} {}", fmt::value(h, lang), c.unit_mm()));
+    text.draw(g, Point::new(p.x - 2.5, p.y + 1.0), 2.5, Anchor::End);
     for &y in ys {
         g.line(p, Point::new(plot.origin.x, plot.origin.y - y / mu), THIN);
     }
