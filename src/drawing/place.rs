@@ -25,6 +25,10 @@ const LEADER_FROM: f64 = 4.0;
 const LEADER_GAP: f64 = 0.8;
 /// Clearance kept between a label's box and any stroke, mm.
 const CLEAR: f64 = 0.25;
+/// More room kept beside a placed position number for the next label, mm (about a space),
+/// and the rank from which labels are position numbers.
+const LABEL_GAP: f64 = 0.7;
+const NUMBERS_RANK: u8 = 2;
 const DIRECTIONS: usize = 24;
 
 /// One label to place.
@@ -160,7 +164,10 @@ impl Labels {
                 Some(c) => (c.clone(), true),
                 None => (least_bad(&cands[i], &obstacles, &self.requests[i], bounds), false),
             };
-            obstacles.add(Piece::TextBox(cand.r), usize::MAX);
+            // Position numbers (rank 2) are set apart from the next label by more than the
+            // clearance: two numbers 0.5 mm apart read as one ("0≡17 16").
+            let gap = if self.requests[i].rank >= NUMBERS_RANK { LABEL_GAP } else { 0.0 };
+            obstacles.add(Piece::TextBox(cand.r.inflate(gap, 0.0)), usize::MAX);
             if let Some((a, b)) = cand.leader {
                 obstacles.add(Piece::Segment(a, b), usize::MAX);
             }
@@ -318,6 +325,33 @@ mod tests {
         assert!((a - on).norm() < 1e-9, "the leader starts at {a:?}, off the line");
         assert!(text.inflate(0.6, 0.6).contains(b) && text.y1 < on.y, "{b:?} {text:?}");
         assert!((b - a).norm() >= LEADER_FROM - 1e-9);
+    }
+
+    /// Position numbers on neighbouring points stand a space apart, not 0.25 mm: "17" and
+    /// "16" side by side must not read as "17 16" run together.
+    #[test]
+    fn position_numbers_keep_a_space_between_them() {
+        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+        // The second point at every distance from 1 to 6 mm from the first.
+        for k in 0..=50 {
+            let mut g = Group::new("g", region);
+            // Lines under and over the anchors (and 2 mm strips beyond them) keep both
+            // numbers in one row, side by side.
+            for y in [42.0, 44.0, 46.0, 50.5, 52.5, 54.5] {
+                g.line(Point::new(10.0, y), Point::new(90.0, y), THIN);
+            }
+            let mut labels = Labels::new();
+            let second = 51.0 + 0.1 * k as f64;
+            labels.add_text_ranked(Point::new(50.0, 50.0), Vec2::new(0.0, -1.0), "17", 2.5, NUMBERS_RANK);
+            labels.add_text_ranked(Point::new(second, 50.0), Vec2::new(0.0, -1.0), "16", 2.5, NUMBERS_RANK);
+            assert_eq!(labels.place(&mut g, region), vec![true, true], "at {second}");
+            let boxes: Vec<Rect> =
+                g.items.iter().filter_map(|i| if let Item::Text(t) = i { Some(t.bbox()) } else { None }).collect();
+            let (a, b) = (boxes[0], boxes[1]);
+            assert!(a.y1 <= 50.5 && a.y0 >= 45.5 && b.y1 <= 50.5 && b.y0 >= 45.5, "at {second}: {a:?} {b:?}");
+            let apart = (b.x0 - a.x1).max(a.x0 - b.x1);
+            assert!(apart >= LABEL_GAP, "at {second}: {apart} mm between {a:?} and {b:?}");
+        }
     }
 
     #[test]

@@ -63,8 +63,9 @@ impl LabelText {
     }
 }
 
-/// Subscript height relative to the symbol (GOST 2.304: indices one size smaller).
-pub const SUB: f64 = 0.7;
+/// Subscript height relative to the symbol (GOST 2.304: indices one size smaller; 2.5 mm
+/// lettering takes 1.8 mm indices, the smallest size, not 1.75).
+pub const SUB: f64 = 0.72;
 
 /// Line pitch of wrapped text, in lettering heights.
 pub const LINE_PITCH: f64 = 1.6;
