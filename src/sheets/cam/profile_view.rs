@@ -210,12 +210,30 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
             }
             // The axis' foot nearest O, and the axis from it past the roller centre.
             let foot = Vec2::new(0.0, d.centre.o.y);
+            let o = at(Vec2::ZERO);
             for &phi in phis {
-                let (f, end) = (pr.carried(foot, phi), pr.pitch(phi).p);
-                g.line(at(f), at(end), THIN);
+                let (f, end) = (at(pr.carried(foot, phi)), at(pr.pitch(phi).p));
+                g.line(outside_circle(o, CENTRE_CLEAR_MM, f, end), end, THIN);
             }
         }
     }
+}
+
+/// Round O, mm, the translating follower's axis lines stop: with a small offset they all
+/// meet there and would hide the cam's bearing.
+const CENTRE_CLEAR_MM: f64 = 6.0;
+
+/// The start of the segment `a`–`b` moved out of the circle of centre `o` and radius `r` if
+/// it lies inside (paper).
+fn outside_circle(o: Point, r: f64, a: Point, b: Point) -> Point {
+    let (len, ao) = ((b - a).norm(), o - a);
+    if ao.norm() >= r || len <= 0.0 {
+        return a;
+    }
+    let u = (b - a) / len;
+    let along = u.dot(ao);
+    let t = along + (along * along - ao.dot(ao) + r * r).max(0.0).sqrt();
+    a + u * t.min(len)
 }
 
 /// The cam angles `(from, sweep)` of the rocker pivot's arc drawn in the inversion: its
