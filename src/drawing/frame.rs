@@ -47,7 +47,7 @@ struct Caption {
     anchor: TemplateAnchor,
     /// The right edge of a start-anchored caption's cell: the captions with one share one
     /// height, the largest up to their own at which the longest fits (Uzbek "Tasdiqladi"
-    /// takes 2.4 mm in the 17 mm column).
+    /// takes 2.3 mm in the 17 mm column).
     #[serde(default)]
     right: Option<f64>,
 }

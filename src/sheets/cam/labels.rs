@@ -33,6 +33,7 @@ crate::label_set! {
         profile_title,
         pitch_profile,
         working_profile,
+        knife_profile,
         base_circle,
         profile_note(dev),
         knife_note,

@@ -148,7 +148,9 @@ pub fn draw(
     let far = pr.pitch(prog.rise + prog.far_dwell / 2.0).p;
     // Outward, past the rollers: inside, its leader would cross the working profile.
     let outward = view.at(far) - view.origin;
-    labels.add_line_name(view.at(far), outward, LabelText::new(l.pitch_profile(), ""), 2.5, 3);
+    // A knife's working profile is its pitch profile: one curve, both names.
+    let name = if knife { l.knife_profile() } else { l.pitch_profile() };
+    labels.add_line_name(view.at(far), outward, LabelText::new(name, ""), 2.5, 3);
     if !knife {
         // On the curve itself (its leader reaches it), the text inside the cam, which is
         // free of the construction.
