@@ -182,14 +182,7 @@ fn the_nomogram_merges_coincident_positions_and_marks_each_allowed_angle() {
     let p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
     let b = sheet3(&p);
     let g = b.output.scene.groups.iter().find(|g| g.id == "nomogram").expect("a nomogram group");
-    let texts: Vec<&str> = g
-        .items
-        .iter()
-        .filter_map(|i| match i {
-            tmm_sheets::drawing::scene::Item::Text(t) => Some(t.text.as_str()),
-            _ => None,
-        })
-        .collect();
+    let texts: Vec<&str> = g.texts().map(|t| t.text.as_str()).collect();
     for merged in ["8≡9", "0≡17"] {
         assert!(texts.contains(&merged), "no {merged:?} among {texts:?}");
     }
@@ -265,21 +258,13 @@ fn the_nomogram_marks_the_allowed_angles_at_their_size_and_hatches_the_zone() {
 /// written once, between the position numbers that bound its phase (0–8, 8–9, 9–17, 0–17).
 #[test]
 fn the_phases_are_dimensioned_between_their_positions() {
-    use tmm_sheets::drawing::scene::Item;
     let text = std::fs::read_to_string(root().join("fixtures/cams/translating-offset-auto.yaml")).unwrap();
     for lang in Language::ALL {
         let mut p = pipeline::load(&text).unwrap();
         p.info.language = lang;
         let b = sheet3(&p);
         let g = b.output.scene.groups.iter().find(|g| g.id == "diagrams").unwrap();
-        let texts: Vec<(&str, f64)> = g
-            .items
-            .iter()
-            .filter_map(|i| match i {
-                Item::Text(t) => Some((t.text.as_str(), t.bbox().center().x)),
-                _ => None,
-            })
-            .collect();
+        let texts: Vec<(&str, f64)> = g.texts().map(|t| (t.text.as_str(), t.bbox().center().x)).collect();
         // The position numbers stand under the displacement's axis first (the nomogram
         // has its own group).
         let x_of = |name: &str| texts.iter().find(|t| t.0 == name).unwrap_or_else(|| panic!("no {name:?}")).1;
@@ -315,10 +300,7 @@ fn the_profiles_position_numbers_stand_outside_the_rollers() {
             })
             .collect();
         assert!(rollers.len() >= 16, "{name}: {} rollers", rollers.len());
-        let numbers = g.items.iter().filter_map(|i| match i {
-            Item::Text(t) if t.text.chars().all(|c| c.is_ascii_digit() || c == '≡') => Some(t),
-            _ => None,
-        });
+        let numbers = g.texts().filter(|t| t.text.chars().all(|c| c.is_ascii_digit() || c == '≡'));
         for t in numbers {
             let b = t.core_box();
             for &c in &rollers {

@@ -593,15 +593,7 @@ fn the_title_blocks_role_captions_fit_their_column() {
         p.info.language = lang;
         let r = build(&p);
         let g = r.output.scene.groups.iter().find(|g| g.id == "title-block").unwrap();
-        let column: Vec<_> = g
-            .items
-            .iter()
-            .filter_map(|i| match i {
-                tmm_sheets::drawing::scene::Item::Text(t) => Some(t),
-                _ => None,
-            })
-            .filter(|t| t.at.x < tb.x0 + 2.0 && t.at.y > tb.y0 + 25.0)
-            .collect();
+        let column: Vec<_> = g.texts().filter(|t| t.at.x < tb.x0 + 2.0 && t.at.y > tb.y0 + 25.0).collect();
         assert_eq!(column.len(), 5, "{lang:?}: {:?}", column.iter().map(|t| &t.text).collect::<Vec<_>>());
         for t in &column {
             assert!(t.bbox().x1 <= tb.x0 + 17.0 - 0.3, "{lang:?}: {:?} reaches {}", t.text, t.bbox().x1 - tb.x0);

@@ -47,13 +47,8 @@ impl Layout {
 pub fn measure(scene: &Scene) -> Layout {
     let mut out = Layout::default();
     let strokes = Obstacles::of_items(scene.groups.iter().flat_map(|g| g.items.iter()).filter(|i| !is_text(i)));
-    let texts: Vec<(&str, &super::scene::Text)> = scene
-        .groups
-        .iter()
-        .flat_map(|g| {
-            g.items.iter().filter_map(move |i| if let Item::Text(t) = i { Some((g.id.as_str(), t)) } else { None })
-        })
-        .collect();
+    let texts: Vec<(&str, &super::scene::Text)> =
+        scene.groups.iter().flat_map(|g| g.texts().map(move |t| (g.id.as_str(), t))).collect();
     for (group, t) in &texts {
         let r = t.core_box().inflate(-TOUCH, -TOUCH);
         let crossed = strokes.near(r).any(|(p, _)| matches!(*p, Piece::Segment(a, b) if segment_meets_rect(a, b, r)));

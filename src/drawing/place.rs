@@ -45,6 +45,13 @@ struct Request {
     names_line: bool,
 }
 
+impl Request {
+    /// A candidate's leader as drawn: a line's name's reaches the line it names.
+    fn drawn_leader(&self, c: &Candidate) -> Option<(Point, Point)> {
+        c.leader.map(|(a, b)| (if self.names_line { self.anchor } else { a }, b))
+    }
+}
+
 /// Labels waiting for the geometry of their group to be complete.
 #[derive(Debug, Default)]
 pub struct Labels {
@@ -134,7 +141,7 @@ impl Labels {
             let (w, up, _) = label_size(&req.label, req.h);
             let base = Point::new(cand.r.x0 + (w - SLANT * req.h) / 2.0, cand.r.y0 + up);
             req.label.draw(g, base, req.h, Anchor::Middle);
-            if let Some((a, b)) = cand.leader {
+            if let Some((a, b)) = req.drawn_leader(&cand) {
                 g.line(a, b, THIN);
             }
             placed.push(clear);
@@ -151,8 +158,7 @@ impl Labels {
         bounds: Rect,
     ) -> Vec<(Candidate, bool)> {
         let mut obstacles = drawn.clone();
-        let mut out =
-            vec![(Candidate { r: Rect::ZERO, leader: None, cost: 0.0, touches: false }, false); self.requests.len()];
+        let mut out = vec![(Candidate { r: Rect::ZERO, leader: None, cost: 0.0 }, false); self.requests.len()];
         for &i in order {
             // A leader may cross thin lines (out of a fan of links) when no label spot can be
             // reached without: a free box comes first, a clean leader second.
@@ -168,7 +174,7 @@ impl Labels {
             // clearance: two numbers 0.5 mm apart read as one ("0≡17 16").
             let gap = if self.requests[i].rank >= NUMBERS_RANK { LABEL_GAP } else { 0.0 };
             obstacles.add(Piece::TextBox(cand.r.inflate(gap, 0.0)), usize::MAX);
-            if let Some((a, b)) = cand.leader {
+            if let Some((a, b)) = self.requests[i].drawn_leader(&cand) {
                 obstacles.add(Piece::Segment(a, b), usize::MAX);
             }
             out[i] = (cand, clear);
@@ -188,27 +194,20 @@ struct Candidate {
     r: Rect,
     leader: Option<(Point, Point)>,
     cost: f64,
-    /// The leader starts on a line (the one the label names), which it does not cross.
-    touches: bool,
 }
 
-/// How much of a leader that starts on its line is not checked against the drawing, mm.
+/// A line's name's leader is checked against the drawing from this far off its line, mm
+/// (drawn from the line itself, [`Labels::add_line_name`]).
 const TOUCH: f64 = 0.4;
 
 impl Candidate {
     fn is_free(&self, o: &Obstacles) -> bool {
-        self.box_is_free(o) && self.checked_leader().is_none_or(|(a, b)| !o.segment_crosses_stroke(a, b))
+        self.box_is_free(o) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke(a, b))
     }
 
     /// The box is clear and its leader crosses no text (it may cross lines).
     fn box_is_free(&self, o: &Obstacles) -> bool {
-        o.is_clear(self.r.inflate(CLEAR, CLEAR))
-            && self.checked_leader().is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
-    }
-
-    /// The leader as checked: less its start on the named line.
-    fn checked_leader(&self) -> Option<(Point, Point)> {
-        self.leader.map(|(a, b)| if self.touches { (a + (b - a).unit() * TOUCH, b) } else { (a, b) })
+        o.is_clear(self.r.inflate(CLEAR, CLEAR)) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
     }
 }
 
@@ -220,7 +219,7 @@ fn least_bad(cands: &[Candidate], o: &Obstacles, req: &Request, bounds: Rect) ->
         let (w, up, down) = label_size(&req.label, req.h);
         let x0 = req.anchor.x.min(bounds.x1 - w).max(bounds.x0);
         let y1 = req.anchor.y.max(bounds.y0 + up + down).min(bounds.y1);
-        Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), leader: None, cost: 0.0, touches: false }
+        Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), leader: None, cost: 0.0 }
     };
     cands
         .iter()
@@ -238,6 +237,7 @@ fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
     let (w, up, down) = label_size(&req.label, req.h);
     let ht = up + down;
     let base = if req.pref.norm() > tol::PAPER { req.pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
+    let gap = if req.names_line { TOUCH } else { LEADER_GAP };
     let mut out = Vec::new();
     for (di, &dist) in DISTANCES.iter().enumerate() {
         if req.names_line && dist < LEADER_FROM {
@@ -255,10 +255,9 @@ fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
             if !(r.x0 >= bounds.x0 && r.y0 >= bounds.y0 && r.x1 <= bounds.x1 && r.y1 <= bounds.y1) {
                 continue;
             }
-            let gap = if req.names_line { 0.0 } else { LEADER_GAP };
             let leader = (dist >= LEADER_FROM).then(|| leader(req.anchor, r, gap));
             let cost = di as f64 * 1.0 + turn.abs() / 45.0 * 0.8;
-            out.push(Candidate { r, leader, cost, touches: req.names_line });
+            out.push(Candidate { r, leader, cost });
         }
     }
     out.sort_by(|a, b| a.cost.total_cmp(&b.cost));
@@ -282,7 +281,7 @@ fn rotate(v: Vec2, deg: f64) -> Vec2 {
 mod tests {
     use super::*;
     use crate::drawing::layout;
-    use crate::drawing::scene::{Item, Scene};
+    use crate::drawing::scene::{Item, Scene, Text};
 
     /// A label asked for inside a ring of discs (rollers round a profile) is placed outside
     /// every disc, though no stroke bounds them.
@@ -298,7 +297,7 @@ mod tests {
         }
         labels.add_text(Point::new(50.0, 50.0), Vec2::ZERO, "12", 2.5);
         assert_eq!(labels.place(&mut g, region), vec![true]);
-        let text = g.items.iter().find_map(|i| if let Item::Text(t) = i { Some(t.bbox()) } else { None }).unwrap();
+        let text = g.texts().next().unwrap().bbox();
         for (c, r) in discs {
             let nearest = Point::new(c.x.clamp(text.x0, text.x1), c.y.clamp(text.y0, text.y1));
             assert!((nearest - c).norm() >= r, "the label {text:?} enters the disc at {c:?}");
@@ -316,7 +315,7 @@ mod tests {
         let mut labels = Labels::new();
         labels.add_line_name(on, Vec2::new(0.0, -1.0), LabelText::new("profile", ""), 2.5, 0);
         assert_eq!(labels.place(&mut g, region), vec![true]);
-        let text = g.items.iter().find_map(|i| if let Item::Text(t) = i { Some(t.bbox()) } else { None }).unwrap();
+        let text = g.texts().next().unwrap().bbox();
         let leader = g.items.last().and_then(|i| match i {
             Item::Path { path, .. } => Some((path.start, path.end())),
             _ => None,
@@ -345,8 +344,7 @@ mod tests {
             labels.add_text_ranked(Point::new(50.0, 50.0), Vec2::new(0.0, -1.0), "17", 2.5, NUMBERS_RANK);
             labels.add_text_ranked(Point::new(second, 50.0), Vec2::new(0.0, -1.0), "16", 2.5, NUMBERS_RANK);
             assert_eq!(labels.place(&mut g, region), vec![true, true], "at {second}");
-            let boxes: Vec<Rect> =
-                g.items.iter().filter_map(|i| if let Item::Text(t) = i { Some(t.bbox()) } else { None }).collect();
+            let boxes: Vec<Rect> = g.texts().map(Text::bbox).collect();
             let (a, b) = (boxes[0], boxes[1]);
             assert!(a.y1 <= 50.5 && a.y0 >= 45.5 && b.y1 <= 50.5 && b.y0 >= 45.5, "at {second}: {a:?} {b:?}");
             let apart = (b.x0 - a.x1).max(a.x0 - b.x1);

@@ -187,6 +187,14 @@ impl Group {
     }
 
     /// Bounding box of everything drawn in the group.
+    /// The group's texts, in drawing order.
+    pub fn texts(&self) -> impl Iterator<Item = &Text> {
+        self.items.iter().filter_map(|i| match i {
+            Item::Text(t) => Some(t),
+            _ => None,
+        })
+    }
+
     pub fn content_bbox(&self) -> Option<Rect> {
         self.items.iter().map(Item::bbox).reduce(|a, b| a.union(b))
     }
@@ -203,9 +211,6 @@ pub struct Scene {
 
 impl Scene {
     pub fn texts(&self) -> impl Iterator<Item = &Text> {
-        self.groups.iter().flat_map(|g| g.items.iter()).filter_map(|i| match i {
-            Item::Text(t) => Some(t),
-            _ => None,
-        })
+        self.groups.iter().flat_map(Group::texts)
     }
 }

@@ -278,20 +278,9 @@ fn layout(
     let views = views_above(tables);
     let law_tables = law_fits.then(|| Rect::new(SHEET.x0, SHEET.y1 - law_h, SHEET.x0 + left_w, SHEET.y1));
     let diagrams = Rect::new(SHEET.x0, SHEET.y0, SHEET.x0 + left_w, law_tables.map_or(SHEET.y1, |r| r.y0 - GAP));
-    let mut beside = None;
-    for mu_p in scale::length_scales() {
-        let Some((_, profile)) = fit_at(p_ext, views, mu_p) else { continue };
-        let rest = Rect::new(views.x0, views.y0, views.x1 - profile.width() - GAP, views.y1);
-        let Some((mu_n, nomogram)) = fit_view(n_ext, rest, false) else { continue };
-        let found = (mu_p, profile, mu_n, nomogram);
-        let enough = longer_side(n_ext, mu_n) >= NOMOGRAM_MIN_MM;
-        if beside.is_none() || enough {
-            beside = Some(found);
-        }
-        if enough {
-            break;
-        }
-    }
+    let beside = profile_and_nomogram((p_ext, n_ext), views, |profile| {
+        Rect::new(views.x0, views.y0, views.x1 - profile.width() - GAP, views.y1)
+    });
     let beside = beside.map(|(profile_mu, profile, nomogram_mu, nomogram)| {
         // The room left over, shared out between and round the two.
         let slack = ((views.width() - profile.width() - nomogram.width() - GAP) / 3.0).max(0.0);
@@ -302,27 +291,18 @@ fn layout(
     });
     // The nomogram under the profile on the right (a wide, low profile: a rocker's pivots
     // on their arc above the cam).
-    let mut stacked = None;
-    for mu_p in scale::length_scales() {
-        let Some((_, profile)) = fit_at(p_ext, views, mu_p) else { continue };
-        let rest = Rect::new(views.x0, profile.y1 + GAP, views.x1, views.y1);
-        let Some((mu_n, nomogram)) = fit_view(n_ext, rest, false) else { continue };
-        let enough = longer_side(n_ext, mu_n) >= NOMOGRAM_MIN_MM;
-        if stacked.is_none() || enough {
-            stacked = Some(Layout3 {
-                diagrams,
-                law_tables,
-                tables,
-                nomogram: centred_across(nomogram, views),
-                profile: centred_across(profile, views),
-                nomogram_mu: mu_n,
-                profile_mu: mu_p,
-            });
-        }
-        if enough {
-            break;
-        }
-    }
+    let stacked = profile_and_nomogram((p_ext, n_ext), views, |profile| {
+        Rect::new(views.x0, profile.y1 + GAP, views.x1, views.y1)
+    })
+    .map(|(profile_mu, profile, nomogram_mu, nomogram)| Layout3 {
+        diagrams,
+        law_tables,
+        tables,
+        nomogram: centred_across(nomogram, views),
+        profile: centred_across(profile, views),
+        nomogram_mu,
+        profile_mu,
+    });
     // The larger profile wins, then the larger nomogram; on a tie, the views together on the
     // right (under a wide, low profile the sheet's middle is otherwise left empty).
     let better =
@@ -344,6 +324,29 @@ fn layout(
             }
         }
     }
+}
+
+/// The profile at the top left of `views` at the largest GOST scale that leaves the
+/// nomogram [`NOMOGRAM_MIN_MM`] in the room `rest(profile)` (else the largest profile with
+/// any nomogram): `(μ_profile, profile, μ_nomogram, nomogram)`.
+fn profile_and_nomogram(
+    (p_ext, n_ext): ((Vec2, Vec2), (Vec2, Vec2)),
+    views: Rect,
+    rest: impl Fn(Rect) -> Rect,
+) -> Option<(f64, Rect, f64, Rect)> {
+    let mut found = None;
+    for mu_p in scale::length_scales() {
+        let Some((_, profile)) = fit_at(p_ext, views, mu_p) else { continue };
+        let Some((mu_n, nomogram)) = fit_view(n_ext, rest(profile), false) else { continue };
+        let enough = longer_side(n_ext, mu_n) >= NOMOGRAM_MIN_MM;
+        if found.is_none() || enough {
+            found = Some((mu_p, profile, mu_n, nomogram));
+        }
+        if enough {
+            break;
+        }
+    }
+    found
 }
 
 /// The longer side of a view's drawing at `mu`, mm.
