@@ -122,4 +122,24 @@ mod tests {
         let out = scene(vec![line((0.0, 18.0), (190.0, 18.0))]);
         assert_eq!(measure(&out).outside_region, 1);
     }
+
+    /// A thick line's ink reaches into a text whose box its centre line only passes beside:
+    /// the letters sitting 0.05 mm under a 0.7 mm line's centre are crossed, under a thin
+    /// line's they are not.
+    #[test]
+    fn a_thick_lines_ink_crossing_a_text_is_counted() {
+        let text = Item::Text(Text::new(Point::new(10.0, 25.15), "A", 5.0, Anchor::Start));
+        let top = match &text {
+            Item::Text(t) => t.core_box().y0,
+            _ => unreachable!(),
+        };
+        let y = top - 0.05;
+        for (pen, crossed) in [(THIN, 0), (crate::drawing::scene::MAIN, 1)] {
+            let line = Item::Path {
+                path: crate::drawing::path::Path::polyline(&[(0.0, y).into(), (90.0, y).into()], false),
+                pen,
+            };
+            assert_eq!(measure(&scene(vec![line, text.clone()])).texts_crossed, crossed, "{pen:?}");
+        }
+    }
 }
