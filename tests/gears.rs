@@ -186,3 +186,17 @@ fn an_undercut_pinion_builds_with_a_warning_and_a_note_on_the_sheet() {
     assert_eq!(b.output.results["pair"]["undercut"][0], true);
     assert!(b.output.scene.texts().any(|t| t.text.contains("xₘᵢₙ")), "the sheet says so");
 }
+
+/// Table 3 flows over two drawn tables (the wheels', the pair's): the second is titled as the
+/// continuation, in every language, not left without a title.
+#[test]
+fn the_pair_table_is_titled_as_table_3_continued() {
+    for (lang, continued) in [(Language::Uz, "davomi)"), (Language::Ru, "продолжение)"), (Language::En, "continued)")]
+    {
+        let mut p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+        p.info.language = lang;
+        let b = sheet2(&p);
+        let g = b.output.scene.groups.iter().find(|g| g.id == "tables").expect("a tables group");
+        assert!(g.texts().any(|t| t.text.ends_with(continued)), "{lang:?}: no title ending {continued:?}");
+    }
+}

@@ -210,6 +210,7 @@ label_set! {
         link_col,
         position_col,
         value,
+        continued,
     }
 }
 

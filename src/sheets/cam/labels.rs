@@ -42,7 +42,6 @@ crate::label_set! {
         law_table,
         profile_table,
         results_table,
-        continued,
         sub_pitch,
         sub_work,
         sub_rise,

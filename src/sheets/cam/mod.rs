@@ -484,21 +484,12 @@ fn sheet_table(stem: &str, t: &NumTable, l: &CamLabels, c: &Common, lang: Langua
     // The return's half may flow into another column: it names itself as the continuation.
     let title = table_title(stem, l);
     Table {
-        title: if stem.ends_with("-return") { continued_title(title, l.continued()) } else { title.to_string() },
+        title: if stem.ends_with("-return") { table::continued_title(title, c.continued()) } else { title.to_string() },
         header: if stem == "results" { vec![c.value().into()] } else { t.columns.clone() },
         rows,
         label_w,
         cell_w: 12.0,
         corner: if stem == "results" { c.quantity().into() } else { c.position_col().into() },
-    }
-}
-
-/// A table's title marked as the continuation: "(continued)" after it, or inside its closing
-/// bracket ("Harakat qonuni (holatlar boʻyicha, davomi)") rather than a second pair.
-fn continued_title(title: &str, continued: &str) -> String {
-    match title.strip_suffix(')') {
-        Some(open) => format!("{open}, {continued})"),
-        None => format!("{title} ({continued})"),
     }
 }
 

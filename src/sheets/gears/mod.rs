@@ -238,8 +238,12 @@ fn sheet_table(stem: &str, t: &NumTable, tolerance: Option<f64>, l: &GearLabels,
         _ => vec![c.value().into()],
     };
     let label_w = rows.iter().map(|(x, _)| x.width(CELL_TEXT) + 4.0).fold(14.0, f64::max);
-    // The pair's table continues the wheels' under the same title.
-    let title = if stem == "pair" { String::new() } else { table_title(stem, l).to_string() };
+    // The pair's table continues the wheels': titled as the continuation.
+    let title = if stem == "pair" {
+        crate::drawing::table::continued_title(table_title(stem, l), c.continued())
+    } else {
+        table_title(stem, l).to_string()
+    };
     Table {
         title,
         header,
