@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{check_layout, english_on_russian, fixture_text, root};
+use common::{check_layout, english_on_russian, fixture_text, root, runs};
 use std::f64::consts::PI;
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::pipeline;
@@ -47,8 +47,8 @@ fn the_layout_of_sheet_3_is_clean_and_finite_in_every_language() {
             let json = serde_json::to_string(&b.output.results).unwrap();
             assert!(!json.contains("null"), "{name} {lang:?}: a non-finite number became null in results.json");
             if lang == Language::Ru {
-                for t in b.output.scene.texts() {
-                    assert_eq!(english_on_russian(&t.text), None, "{name}: English on the Russian sheet: {:?}", t.text);
+                for t in runs(&b.output.scene) {
+                    assert_eq!(english_on_russian(t), None, "{name}: English on the Russian sheet: {t:?}");
                 }
             }
         }
@@ -269,7 +269,8 @@ fn the_phases_are_dimensioned_between_their_positions() {
         // has its own group).
         let x_of = |name: &str| texts.iter().find(|t| t.0 == name).unwrap_or_else(|| panic!("no {name:?}")).1;
         for (value, from, to) in [("120°", "0", "8"), ("30°", "8", "9"), ("90°", "9", "17"), ("240°", "0", "17")] {
-            let tails: Vec<f64> = texts.iter().filter(|t| t.0 == format!("= {value}")).map(|t| t.1).collect();
+            let tails: Vec<f64> =
+                g.texts().filter(|t| t.tail.trim() == format!("= {value}")).map(|t| t.bbox().center().x).collect();
             assert_eq!(tails.len(), 1, "{lang:?}: {value} written {} times", tails.len());
             let (a, b) = (x_of(from), x_of(to));
             assert!(a < tails[0] && tails[0] < b, "{lang:?}: {value} at {} outside {a}..{b}", tails[0]);

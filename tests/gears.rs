@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{english_on_russian, fixture_text, root};
+use common::{english_on_russian, fixture_text, root, runs};
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::pipeline;
 use tmm_sheets::project::Project;
@@ -113,8 +113,8 @@ fn the_layout_of_sheet_2_is_clean_in_every_language() {
                 assert_eq!(l[key], 0, "{name} {lang:?}: {key}: {}", l["problems"]);
             }
             if lang == Language::Ru {
-                for t in b.output.scene.texts() {
-                    assert_eq!(english_on_russian(&t.text), None, "{name}: English on the Russian sheet: {:?}", t.text);
+                for t in runs(&b.output.scene) {
+                    assert_eq!(english_on_russian(t), None, "{name}: English on the Russian sheet: {t:?}");
                 }
             }
         }

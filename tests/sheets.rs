@@ -88,8 +88,8 @@ fn every_language_renders_with_full_glyph_coverage() {
         p.info.language = lang;
         let r = build(&p);
         assert!(r.svg.contains(probe), "{lang:?}: missing {probe}");
-        for t in r.output.scene.texts() {
-            assert!(metrics.covers(&t.text), "{lang:?}: no glyph for some character of {:?}", t.text);
+        for t in common::runs(&r.output.scene) {
+            assert!(metrics.covers(t), "{lang:?}: no glyph for some character of {t:?}");
         }
         check_layout(&format!("{lang:?}"), &r.output.scene);
     }
@@ -289,8 +289,8 @@ fn a_russian_sheet_has_no_english_word_or_unit() {
         p.info.designation = "ТММ 01.00.00".into();
         p.lever.as_mut().unwrap().assumptions.clear();
         let r = build(&p);
-        for t in r.output.scene.texts() {
-            assert_eq!(english_on_russian(&t.text), None, "{name}: English on the Russian sheet: {:?}", t.text);
+        for t in common::runs(&r.output.scene) {
+            assert_eq!(english_on_russian(t), None, "{name}: English on the Russian sheet: {t:?}");
         }
     }
 }
@@ -409,11 +409,13 @@ fn numbers_and_units_are_printed_in_the_sheets_style() {
             p.lever.as_mut().unwrap().assumptions.clear();
             let r = build(&p);
             for t in r.output.scene.texts() {
-                assert_eq!(misprinted_number(&t.text, lang != Language::En), None, "{name} {lang:?}: {:?}", t.text);
+                for part in [&t.text, &t.tail] {
+                    assert_eq!(misprinted_number(part, lang != Language::En), None, "{name} {lang:?}: {:?}", t.plain());
+                }
             }
             // Table 3's rows name their units: "m, кг", "J_S, кг·м²".
             let kg = tmm_sheets::drawing::labels::Common::get(lang).unit_kg();
-            assert!(r.output.scene.texts().any(|t| t.text == format!(", {kg}")), "{name} {lang:?}: no unit in table 3");
+            assert!(r.output.scene.texts().any(|t| t.tail == format!(", {kg}")), "{name} {lang:?}: no unit in table 3");
         }
     }
 }
@@ -453,7 +455,7 @@ fn load_diagrams_tick_the_force_axis_and_mark_phi1() {
             &format!("{:.1}", lever.kinematics.assigned.phi.to_degrees()),
             p.info.language,
         );
-        let marked = forces.items.iter().any(|i| matches!(i, Item::Text(t) if t.text == format!("= {phi}°")));
+        let marked = forces.items.iter().any(|i| matches!(i, Item::Text(t) if t.tail.trim() == format!("= {phi}°")));
         assert!(marked || fa.model.loads.is_empty(), "{name}: φ1 = {phi}° is not marked on the load diagram");
     }
 }
@@ -498,7 +500,7 @@ fn plans_are_drawn_at_round_scales_recorded_with_their_sizes() {
                         tmm_sheets::drawing::fmt::localise(&tmm_sheets::drawing::scale::format(mu), p.info.language)
                     );
                     assert!(
-                        b.scene.texts().any(|t| t.text.starts_with(&written)),
+                        b.scene.texts().any(|t| t.tail.trim_start().starts_with(&written)),
                         "{name}: no own scale {written} written"
                     );
                 }
@@ -522,11 +524,8 @@ fn force_subscripts_on_a_russian_sheet_are_russian() {
             let mut c = t.chars();
             matches!(c.next(), Some('i' | 'm' | 'c' | 'g')) && c.all(|d| d.is_ascii_digit())
         };
-        let texts: Vec<&str> = scene.texts().map(|t| t.text.as_str()).collect();
-        // Subscripts are set one size down, off the GOST series (m, kg are symbols and units).
-        let subscript = |h: f64| ![1.8, 2.5, 3.5, 5.0, 7.0, 10.0, 14.0].iter().any(|s| (h - s).abs() < 1e-9);
-        let found: Vec<&str> =
-            scene.texts().filter(|t| subscript(t.h) && latin(&t.text)).map(|t| t.text.as_str()).collect();
+        let texts: Vec<&str> = scene.texts().map(|t| t.sub.as_str()).collect();
+        let found: Vec<&str> = texts.iter().copied().filter(|t| latin(t)).collect();
         assert!(found.is_empty(), "{name}: Latin force subscripts on a Russian sheet: {found:?}");
         assert!(texts.contains(&"ур") && texts.iter().any(|t| t.starts_with('и')), "{name}: no P_ур or P_и");
     }
@@ -555,26 +554,24 @@ fn every_sheet_of_every_fixture_speaks_its_language() {
             let mut p = fixture(&name);
             p.info.language = lang;
             for sheet in pipeline::build(&p, &[]).unwrap_or_else(|e| panic!("{name}: {e:#}")) {
-                for t in sheet.output.scene.texts() {
+                for t in common::runs(&sheet.output.scene) {
                     // A plain-text subscript ("n_dv") prints its underscore.
-                    assert!(!t.text.contains('_'), "{name} sheet {} in {lang:?}: {:?}", sheet.output.number, t.text);
+                    assert!(!t.contains('_'), "{name} sheet {} in {lang:?}: {t:?}", sheet.output.number);
                     let bad = match lang {
                         Language::Uz => None,
-                        Language::Ru => english_on_russian(&t.text),
+                        Language::Ru => english_on_russian(t),
                         Language::En => t
-                            .text
                             .chars()
                             .find(|c| matches!(c, 'А'..='я' | 'Ё' | 'ё' | 'ʻ'))
-                            .map(|c| format!("{c:?} in {:?}", t.text)),
+                            .map(|c| format!("{c:?} in {t:?}")),
                     };
-                    assert_eq!(bad, None, "{name} sheet {} in {lang:?}: {:?}", sheet.output.number, t.text);
+                    assert_eq!(bad, None, "{name} sheet {} in {lang:?}: {t:?}", sheet.output.number);
                     // The Uzbek course letters (MMN: mashina va mexanizmlar nazariyasi) belong
                     // on an Uzbek sheet only, the designation's included.
                     assert!(
-                        lang == Language::Uz || !t.text.contains("MMN"),
-                        "{name} sheet {} in {lang:?}: {:?}",
-                        sheet.output.number,
-                        t.text
+                        lang == Language::Uz || !t.contains("MMN"),
+                        "{name} sheet {} in {lang:?}: {t:?}",
+                        sheet.output.number
                     );
                 }
             }

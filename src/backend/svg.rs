@@ -5,7 +5,7 @@
 
 use super::BackendError;
 use crate::drawing::path::{Path, Seg};
-use crate::drawing::scene::{Anchor, Item, LineType, Pen, Scene, Text};
+use crate::drawing::scene::{Anchor, Item, LineType, Pen, SUB, SUB_DROP, Scene, Text};
 use crate::font;
 use crate::num::math;
 use std::f64::consts::PI;
@@ -107,10 +107,27 @@ fn text_element(t: &Text) -> Result<String, BackendError> {
     }
     let (x, y) = if transform.is_empty() { (x, y) } else { ("0".into(), "0".into()) };
     Ok(format!(
-        "<text fill=\"#000\" x=\"{x}\" y=\"{y}\" font-size=\"{}\"{anchor}{transform}>{}</text>",
+        "<text fill=\"#000\" x=\"{x}\" y=\"{y}\" font-size=\"{}\"{anchor}{transform}>{}{}</text>",
         num(font::size_for_cap(t.h))?,
-        escape(&t.text)
+        escape(&t.text),
+        subscript_and_tail(t)?
     ))
+}
+
+/// The subscript as a smaller run lowered by its drop, and the tail back on the baseline:
+/// the renderer sets each after the last with its own font.
+fn subscript_and_tail(t: &Text) -> Result<String, BackendError> {
+    let mut out = String::new();
+    let drop = num(t.h * SUB_DROP)?;
+    if !t.sub.is_empty() {
+        let size = num(font::size_for_cap(t.h * SUB))?;
+        out.push_str(&format!("<tspan dy=\"{drop}\" font-size=\"{size}\">{}</tspan>", escape(&t.sub)));
+    }
+    if !t.tail.is_empty() {
+        let back = if t.sub.is_empty() { String::new() } else { format!(" dy=\"-{drop}\"") };
+        out.push_str(&format!("<tspan{back}>{}</tspan>", escape(&t.tail)));
+    }
+    Ok(out)
 }
 
 fn item_element(item: &Item) -> Result<String, BackendError> {

@@ -50,24 +50,33 @@ pub fn measure(scene: &Scene) -> Layout {
     let texts: Vec<(&str, &super::scene::Text)> =
         scene.groups.iter().flat_map(|g| g.texts().map(move |t| (g.id.as_str(), t))).collect();
     for (group, t) in &texts {
-        let r = t.core_box().inflate(-TOUCH, -TOUCH);
-        let crossed = strokes.near(r).any(|(p, _)| matches!(*p, Piece::Segment(a, b) if segment_meets_rect(a, b, r)));
+        let crossed = t.core_boxes().any(|b| {
+            let r = b.inflate(-TOUCH, -TOUCH);
+            strokes.near(r).any(|(p, _)| matches!(*p, Piece::Segment(a, b) if segment_meets_rect(a, b, r)))
+        });
         if crossed {
             out.texts_crossed += 1;
-            out.note(format!("'{group}': a line crosses {:?} at ({:.1}, {:.1}) mm", t.text, t.at.x, t.at.y));
+            out.note(format!("'{group}': a line crosses {:?} at ({:.1}, {:.1}) mm", t.plain(), t.at.x, t.at.y));
         }
     }
-    let boxes =
-        Obstacles::of_pieces(texts.iter().enumerate().map(|(k, (_, t))| (Piece::TextBox(t.core_box()), k)).collect());
-    for (k, (group, t)) in texts.iter().enumerate() {
-        let r = t.core_box();
-        for (_, other) in boxes.near(r) {
+    // Every run's box, tagged with its text: a text's own runs touch, never count.
+    let runs: Vec<(Rect, usize)> =
+        texts.iter().enumerate().flat_map(|(k, (_, t))| t.core_boxes().map(move |b| (b, k))).collect();
+    let boxes = Obstacles::of_pieces(runs.iter().map(|&(b, k)| (Piece::TextBox(b), k)).collect());
+    let mut seen = std::collections::BTreeSet::new();
+    for &(r, k) in &runs {
+        let (group, t) = texts[k];
+        for (p, other) in boxes.near(r) {
             let (og, o) = texts[*other];
-            if *other > k && o.core_box().intersect(r).area() > 1e-6 {
+            let Piece::TextBox(ob) = *p else { continue };
+            if *other > k && ob.intersect(r).area() > 1e-6 && seen.insert((k, *other)) {
                 out.text_overlaps += 1;
                 out.note(format!(
                     "'{group}': {:?} overlaps {:?} ('{og}') at ({:.1}, {:.1}) mm",
-                    t.text, o.text, t.at.x, t.at.y
+                    t.plain(),
+                    o.plain(),
+                    t.at.x,
+                    t.at.y
                 ));
             }
         }

@@ -89,7 +89,7 @@ impl Obstacles {
         let mut pieces = Vec::new();
         for (k, item) in items.into_iter().enumerate() {
             match item {
-                Item::Text(t) => pieces.push((Piece::TextBox(t.core_box()), k)),
+                Item::Text(t) => pieces.extend(t.core_boxes().map(|b| (Piece::TextBox(b), k))),
                 _ => {
                     let segs = segments(item);
                     // A thick line's ink reaches past its centre line further than a label's

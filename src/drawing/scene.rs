@@ -39,12 +39,24 @@ pub enum Anchor {
     End,
 }
 
-/// A line of text. `h` is the GOST lettering height (capital height, mm); `at` is the
-/// anchor point on the baseline.
+/// Subscript height relative to its symbol (GOST 2.304: indices one size smaller; 2.5 mm
+/// lettering takes 1.8 mm indices, the smallest size, not 1.75).
+pub const SUB: f64 = 0.72;
+/// How far a subscript's baseline lies below its symbol's, in the symbol's heights.
+pub const SUB_DROP: f64 = 0.3;
+
+/// A line of text: a symbol or words, an optional subscript and an optional tail after it at
+/// the symbol's height (v_BA, "μ_l = 0,005 m/mm"). One item, so that every backend sets the
+/// subscript after the main text with its own font. `h` is the GOST lettering height
+/// (capital height, mm); `at` is the anchor point on the main text's baseline.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Text {
     pub at: Point,
     pub text: String,
+    /// Set at [`SUB`] of `h`, its baseline [`SUB_DROP`]·h lower.
+    pub sub: String,
+    /// Set after the subscript at `h`, on the main baseline.
+    pub tail: String,
     pub h: f64,
     pub anchor: Anchor,
     /// Rotation in degrees, counter-clockwise on paper.
@@ -53,14 +65,51 @@ pub struct Text {
     pub sloped: bool,
 }
 
+/// One run of a [`Text`]: its text, its lettering height and its baseline's drop below the
+/// main baseline, mm.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Run<'a> {
+    pub text: &'a str,
+    pub h: f64,
+    pub drop: f64,
+}
+
 impl Text {
     pub fn new(at: Point, text: impl Into<String>, h: f64, anchor: Anchor) -> Text {
-        Text { at, text: text.into(), h, anchor, rotate: 0.0, sloped: true }
+        Text { at, text: text.into(), sub: String::new(), tail: String::new(), h, anchor, rotate: 0.0, sloped: true }
     }
 
-    /// Advance width of the text, mm.
-    fn advance(&self) -> f64 {
-        crate::font::metrics().width(&self.text, crate::font::size_for_cap(self.h))
+    /// The same text with a subscript and a tail.
+    pub fn with_sub(mut self, sub: impl Into<String>, tail: impl Into<String>) -> Text {
+        self.sub = sub.into();
+        self.tail = tail.into();
+        self
+    }
+
+    /// The runs in order: the main text, the subscript, the tail (the empty ones left out).
+    pub fn runs(&self) -> impl Iterator<Item = Run<'_>> {
+        let h = self.h;
+        [
+            Run { text: self.text.as_str(), h, drop: 0.0 },
+            Run { text: self.sub.as_str(), h: h * SUB, drop: h * SUB_DROP },
+            Run { text: self.tail.as_str(), h, drop: 0.0 },
+        ]
+        .into_iter()
+        .filter(|r| !r.text.is_empty())
+    }
+
+    /// The text as one string for messages: "v_BA = 1".
+    pub fn plain(&self) -> String {
+        if self.sub.is_empty() {
+            format!("{}{}", self.text, self.tail)
+        } else {
+            format!("{}_{}{}", self.text, self.sub, self.tail)
+        }
+    }
+
+    /// Advance width of every run together, mm.
+    pub fn advance(&self) -> f64 {
+        self.runs().map(|r| run_width(r)).sum()
     }
 
     /// Left edge of a box of width `w` placed by the anchor.
@@ -72,25 +121,54 @@ impl Text {
         }
     }
 
-    /// The box of the letters themselves (advance width × capital height), for overlap
-    /// tests: neighbouring texts such as a symbol and its subscript may touch it, not cross it.
-    pub fn core_box(&self) -> Rect {
-        let w = self.advance();
-        let x0 = self.left(w);
-        let r = Rect::new(x0, self.at.y - self.h, x0 + w, self.at.y);
-        if self.rotate == 0.0 { r } else { rotated_bbox(r, self.at, self.rotate) }
+    /// Each run without its leading spaces, with the left end of its baseline, unrotated
+    /// (the spaces before a tail are room, not letters).
+    fn placed_runs(&self) -> impl Iterator<Item = (Run<'_>, Point)> {
+        let mut x = self.left(self.advance());
+        self.runs().map(move |r| {
+            let letters = Run { text: r.text.trim_start(), ..r };
+            let at = Point::new(x + run_width(r) - run_width(letters), self.at.y + r.drop);
+            x += run_width(r);
+            (letters, at)
+        })
     }
 
-    /// Bounding box of unrotated text: from the descender to the capital height.
-    pub fn bbox(&self) -> Rect {
-        let w = self.advance() + self.h * 0.27; // slant overhang
-        let x0 = self.left(w);
-        let r = Rect::new(x0, self.at.y - self.h * 1.05, x0 + w, self.at.y + self.h * 0.3);
-        if self.rotate == 0.0 {
-            return r;
-        }
-        rotated_bbox(r, self.at, self.rotate)
+    /// The boxes of the letters themselves (advance width × capital height), one a run, for
+    /// overlap tests: a symbol's box and its subscript's touch, a third text may cross
+    /// neither.
+    pub fn core_boxes(&self) -> impl Iterator<Item = Rect> + '_ {
+        self.placed_runs().map(|(r, at)| {
+            let b = Rect::new(at.x, at.y - r.h, at.x + run_width(r), at.y);
+            self.turned(b)
+        })
     }
+
+    /// The union of [`Text::core_boxes`].
+    pub fn core_box(&self) -> Rect {
+        self.core_boxes().reduce(|a, b| a.union(b)).unwrap_or_else(|| Rect::from_points(self.at, self.at))
+    }
+
+    /// Bounding box of every run: from its descender to its capital height, its slant's
+    /// overhang included. A lone run is anchored with its overhang; the runs of a label are
+    /// boxed from where each is set.
+    pub fn bbox(&self) -> Rect {
+        let lone = self.sub.is_empty() && self.tail.is_empty();
+        let boxes = self.placed_runs().map(|(r, at)| {
+            let w = run_width(r) + r.h * 0.27;
+            let x0 = if lone { self.left(w) } else { at.x };
+            self.turned(Rect::new(x0, at.y - r.h * 1.05, x0 + w, at.y + r.h * 0.3))
+        });
+        boxes.reduce(|a, b| a.union(b)).unwrap_or_else(|| Rect::from_points(self.at, self.at))
+    }
+
+    fn turned(&self, r: Rect) -> Rect {
+        if self.rotate == 0.0 { r } else { rotated_bbox(r, self.at, self.rotate) }
+    }
+}
+
+/// A run's advance width, mm.
+fn run_width(r: Run) -> f64 {
+    crate::font::metrics().width(r.text, crate::font::size_for_cap(r.h))
 }
 
 fn rotated_bbox(r: Rect, about: Point, deg: f64) -> Rect {

@@ -1,5 +1,5 @@
-//! Symbols with subscripts (v_BA, ω₂, aⁿ_BA): the subscript is set as its own smaller
-//! text item so that every backend shows it the same way.
+//! Symbols with subscripts (v_BA, ω₂, aⁿ_BA) as one scene text each, so that every backend
+//! sets the subscript after its symbol with its own font; wrapping and fitting text to cells.
 
 use super::scene::{Anchor, Group, Text};
 use crate::font;
@@ -26,46 +26,25 @@ impl LabelText {
 
     /// Width of the symbol, subscript and tail at lettering height `h`, mm.
     pub fn width(&self, h: f64) -> f64 {
-        let (a, b, c) = self.widths(h);
-        a + b + c
+        self.text(Point::ZERO, h, Anchor::Start).advance()
     }
 
-    fn widths(&self, h: f64) -> (f64, f64, f64) {
-        let m = font::metrics();
-        let (size, sub) = (font::size_for_cap(h), font::size_for_cap(h * SUB));
-        (m.width(&self.main, size), m.width(&self.sub, sub), m.width(&self.tail, size))
+    /// The label as one scene text with its baseline at `at`, anchored by `anchor`.
+    pub fn text(&self, at: Point, h: f64, anchor: Anchor) -> Text {
+        Text::new(at, self.main.clone(), h, anchor).with_sub(self.sub.clone(), self.tail.clone())
     }
 
-    /// Draws the symbol with its baseline at `at.y`, anchored horizontally by `anchor`;
+    /// Draws the label with its baseline at `at.y`, anchored horizontally by `anchor`;
     /// returns the bounding box of what it drew.
     pub fn draw(&self, g: &mut Group, at: Point, h: f64, anchor: Anchor) -> Rect {
-        let (wm, ws, wt) = self.widths(h);
-        let total = wm + ws + wt;
-        let x0 = match anchor {
-            Anchor::Start => at.x,
-            Anchor::Middle => at.x - total / 2.0,
-            Anchor::End => at.x - total,
-        };
-        g.text(Text::new(Point::new(x0, at.y), self.main.clone(), h, Anchor::Start));
-        let mut bb = g.items.last().map(|i| i.bbox()).unwrap_or_default();
-        if !self.sub.is_empty() {
-            g.text(Text::new(Point::new(x0 + wm, at.y + h * 0.3), self.sub.clone(), h * SUB, Anchor::Start));
-            bb = bb.union(g.items.last().map(|i| i.bbox()).unwrap_or_default());
-        }
-        if !self.tail.is_empty() {
-            // SVG drops a text's leading white space, so the gap is made by position instead.
-            let trimmed = self.tail.trim_start();
-            let lead = wt - font::metrics().width(trimmed, font::size_for_cap(h));
-            g.text(Text::new(Point::new(x0 + wm + ws + lead, at.y), trimmed, h, Anchor::Start));
-            bb = bb.union(g.items.last().map(|i| i.bbox()).unwrap_or_default());
-        }
+        let t = self.text(at, h, anchor);
+        let bb = t.bbox();
+        g.text(t);
         bb
     }
 }
 
-/// Subscript height relative to the symbol (GOST 2.304: indices one size smaller; 2.5 mm
-/// lettering takes 1.8 mm indices, the smallest size, not 1.75).
-pub const SUB: f64 = 0.72;
+pub use super::scene::SUB;
 
 /// Line pitch of wrapped text, in lettering heights.
 pub const LINE_PITCH: f64 = 1.6;

@@ -143,3 +143,9 @@ pub fn check_layout(name: &str, scene: &Scene) {
         l.problems
     );
 }
+
+/// Every run of every text of a scene (a symbol, its subscript and its tail each on its own),
+/// for checks of what a sheet prints.
+pub fn runs(scene: &Scene) -> impl Iterator<Item = &str> {
+    scene.texts().flat_map(|t| [t.text.as_str(), t.sub.as_str(), t.tail.as_str()]).filter(|r| !r.is_empty())
+}
