@@ -55,12 +55,26 @@ struct Results<'a> {
     title: &'a str,
     #[serde(flatten)]
     sheets: serde_json::Map<String, serde_json::Value>,
+    /// Every value of every note table under its identifier, in the table's unit.
+    answers: serde_json::Map<String, serde_json::Value>,
 }
 
-/// `results.json`: the title and each built sheet's section under `sheet<N>`.
+/// `results.json`: the title, each built sheet's section under `sheet<N>`, and the answers
+/// of the note's tables under their identifiers (`sheet<N>.<table>.<row>.<column>`).
 pub fn results_json(p: &Project, built: &[Built]) -> String {
     let sheets = built.iter().map(|b| (format!("sheet{}", b.output.number), b.output.results.clone())).collect();
-    let r = Results { units: "SI: m, m/s, m/s², rad, rad/s, rad/s², kg, N, N·m", title: p.info.title(), sheets };
+    let answers = built
+        .iter()
+        .flat_map(|b| {
+            let prefix = format!("sheet{}", b.output.number);
+            b.output.tables.iter().flat_map(move |t| t.answers(&prefix)).collect::<Vec<_>>()
+        })
+        .map(|a| (a.id.clone(), serde_json::to_value(&a).expect("an answer serialises")))
+        .collect();
+    let r =
+        Results {
+            units: "SI: m, m/s, m/s², rad, rad/s, rad/s², kg, N, N·m", title: p.info.title(), sheets, answers
+        };
     serde_json::to_string_pretty(&r).expect("results serialise")
 }
 
@@ -106,11 +120,11 @@ pub fn outputs(p: &Project, built: &[Built], formats: Formats) -> Result<Vec<(St
         files.extend(png.map(|x| (format!("{stem}.png"), x)));
         let mut md = String::new();
         for t in &b.output.tables {
-            files.push((format!("{stem}-{}.csv", t.stem), report::csv(&t.table).into_bytes()));
+            files.push((format!("{stem}-{}.csv", t.table.id), report::csv(t, &stem).into_bytes()));
             if !md.is_empty() {
                 md.push('\n');
             }
-            md.push_str(&report::markdown(t));
+            md.push_str(&report::markdown(t, &stem));
         }
         files.push((format!("{stem}-tables.md"), md.into_bytes()));
     }

@@ -138,8 +138,8 @@ fn the_law_table_gives_the_phases_own_acceleration_at_a_jump() {
     let text = std::fs::read_to_string(root().join("fixtures/cams/translating-offset-auto.yaml")).unwrap();
     let p = pipeline::load(&text).unwrap();
     let b = sheet3(&p);
-    let t = b.output.tables.iter().find(|t| t.stem == "law-rise").unwrap();
-    let row = t.table.rows.iter().find(|r| r.symbol == "d²s/dφ²").unwrap();
+    let t = b.output.tables.iter().find(|t| t.table.id == "law-rise").unwrap();
+    let row = t.table.rows.iter().find(|r| r.key == "d2s_dphi2").unwrap();
     let expected = 40.0 * PI * PI / (2.0 * (120f64.to_radians()).powi(2));
     assert!((row.values[0] - expected).abs() < 1e-9, "{} vs {expected}", row.values[0]);
 }

@@ -53,7 +53,7 @@ fn assert_valid(spec: &StageSpec, stage: &Stage) {
     assert_eq!(first_failure(spec, &stage.z, stage.planets), None, "{stage:?}");
     assert_eq!(stage.ratio, ratio_of(&stage.z));
     assert!((3..=8).contains(&stage.planets) || spec.planets == Some(stage.planets));
-    let names: Vec<&str> = stage.conditions.iter().map(|c| c.name).collect();
+    let names: Vec<&str> = stage.conditions.iter().map(|c| c.name.key()).collect();
     assert_eq!(names, NAMES);
     for c in &stage.conditions {
         assert!(c.ok && c.value.is_finite() && c.limit.is_finite(), "{c:?}");
@@ -64,7 +64,7 @@ fn condition<'a>(
     conditions: &'a [tmm_sheets::gears::planetary::Condition],
     name: &str,
 ) -> &'a tmm_sheets::gears::planetary::Condition {
-    conditions.iter().find(|c| c.name == name).unwrap()
+    conditions.iter().find(|c| c.name.key() == name).unwrap()
 }
 
 #[test]
@@ -82,7 +82,7 @@ fn the_guides_set_17_68_153_with_five_planets_fails_the_neighbour_condition() {
     assert!(!n.ok);
     assert_eq!(first_failure(&spec, &[17, 68, 153], 5), Some("neighbours"));
     for c in &conditions {
-        assert_eq!(c.ok, c.name != "neighbours", "{c:?}");
+        assert_eq!(c.ok, c.name.key() != "neighbours", "{c:?}");
     }
     // The integer conditions with their values: 17 + 2·68 = 153, (17 + 153)/5 = 34.
     let coax = condition(&conditions, "coaxiality");

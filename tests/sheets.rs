@@ -240,7 +240,7 @@ fn worked_example_matches_the_reference_sheets() {
     let built = pipeline::build(&p, &[]).unwrap();
     let numbers: Vec<u32> = built.iter().map(|b| b.output.number).collect();
     assert_eq!(numbers, [1, 2, 3], "the worked example has sheets 1, 2 and 3");
-    let stems: Vec<&str> = built[0].output.tables.iter().map(|t| t.stem).collect();
+    let stems: Vec<&str> = built[0].output.tables.iter().map(|t| t.table.id).collect();
     assert_eq!(
         stems,
         ["velocities", "accelerations", "inertia", "reactions", "balancing"],
@@ -250,7 +250,7 @@ fn worked_example_matches_the_reference_sheets() {
         let stem = format!("sheet{}", r.output.number);
         compare_or_update(&format!("{stem}.svg"), &r.svg);
         for t in &r.output.tables {
-            compare_or_update(&format!("{stem}-{}.csv", t.stem), &report::csv(&t.table));
+            compare_or_update(&format!("{stem}-{}.csv", t.table.id), &report::csv(t, &stem));
         }
         let (pdf, png) = pdf_and_png(r, Some(60.0));
         let png = png.unwrap();

@@ -135,12 +135,39 @@ pub enum Relation {
     Within,
 }
 
+/// The conditions a planetary stage must meet.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ConditionKind {
+    Ratio,
+    Coaxiality,
+    Neighbours,
+    Assembly,
+    NoUndercut,
+    RingTeeth,
+    RingPlanetDifference,
+}
+
+impl ConditionKind {
+    /// A stable key: "ratio", "coaxiality", "neighbours", "assembly", "no_undercut",
+    /// "ring_teeth", "ring_planet_difference".
+    pub const fn key(self) -> &'static str {
+        match self {
+            ConditionKind::Ratio => "ratio",
+            ConditionKind::Coaxiality => "coaxiality",
+            ConditionKind::Neighbours => "neighbours",
+            ConditionKind::Assembly => "assembly",
+            ConditionKind::NoUndercut => "no_undercut",
+            ConditionKind::RingTeeth => "ring_teeth",
+            ConditionKind::RingPlanetDifference => "ring_planet_difference",
+        }
+    }
+}
+
 /// One condition of the stage, as the sheet prints it: the two sides and the verdict.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Condition {
-    /// A stable key: "ratio", "coaxiality", "neighbours", "assembly", "no_undercut",
-    /// "ring_teeth", "ring_planet_difference".
-    pub name: &'static str,
+    pub name: ConditionKind,
     /// The left side as computed: the ratio found; z1 + z2 + z2' (z1 + 2z2 for the single
     /// row); sin(π/K); (z1·z2' + z2·z3)/(K·gcd(z2, z2')) ((z1 + z3)/K for the single row);
     /// the smallest external z; z3; z3 − z2'.
@@ -317,13 +344,14 @@ fn within(ratio: f64, required: f64, tolerance: f64) -> bool {
     (ratio - required).abs() <= tolerance * required
 }
 
-fn condition(name: &'static str, value: f64, limit: f64, relation: Relation, ok: bool) -> Condition {
+fn condition(name: ConditionKind, value: f64, limit: f64, relation: Relation, ok: bool) -> Condition {
     Condition { name, value, limit, relation, ok }
 }
 
 /// Every condition of a valid `Teeth` and K, computed without validation (the caller has
 /// validated), so that the search can confirm a candidate without allocating.
 fn conditions(spec: &StageSpec, t: Teeth, k: u32) -> [Condition; 7] {
+    use ConditionKind::*;
     use Relation::*;
     let ratio = t.ratio();
     let sin_k = sin(PI / f64::from(k));
@@ -333,14 +361,14 @@ fn conditions(spec: &StageSpec, t: Teeth, k: u32) -> [Condition; 7] {
     let smallest = t.smallest_external();
     let difference = t.ring_planet_difference();
     [
-        condition("ratio", ratio, spec.ratio_required, Within, within(ratio, spec.ratio_required, spec.tolerance)),
-        condition("coaxiality", t.coaxial_sum() as f64, f64::from(t.ring), Equal, t.coaxial_sum() == u64::from(t.ring)),
-        condition("neighbours", sin_k, neighbours, Greater, sin_k > neighbours),
-        condition("assembly", quotient, quotient.round(), Integer, assembly.is_multiple_of(u128::from(k))),
-        condition("no_undercut", f64::from(smallest), f64::from(spec.z_min), AtLeast, smallest >= spec.z_min),
-        condition("ring_teeth", f64::from(t.ring), f64::from(spec.ring_min), AtLeast, t.ring >= spec.ring_min),
+        condition(Ratio, ratio, spec.ratio_required, Within, within(ratio, spec.ratio_required, spec.tolerance)),
+        condition(Coaxiality, t.coaxial_sum() as f64, f64::from(t.ring), Equal, t.coaxial_sum() == u64::from(t.ring)),
+        condition(Neighbours, sin_k, neighbours, Greater, sin_k > neighbours),
+        condition(Assembly, quotient, quotient.round(), Integer, assembly.is_multiple_of(u128::from(k))),
+        condition(NoUndercut, f64::from(smallest), f64::from(spec.z_min), AtLeast, smallest >= spec.z_min),
+        condition(RingTeeth, f64::from(t.ring), f64::from(spec.ring_min), AtLeast, t.ring >= spec.ring_min),
         condition(
-            "ring_planet_difference",
+            RingPlanetDifference,
             difference as f64,
             f64::from(RING_PLANET_DIFFERENCE),
             Greater,

@@ -1,7 +1,7 @@
 //! Sheet 3's tables for the note: the law at the numbered positions (one table a phase), the
 //! profiles' polar coordinates (mm and degrees, as the drawing is measured) and the results.
 
-use super::{NumTable, Row, row};
+use super::{Column, NumTable, Row, Sub, SubWord, Unit};
 use crate::cams::Design;
 use crate::cams::follower::Follower;
 
@@ -24,8 +24,17 @@ fn analog(d: &Design, x: f64) -> f64 {
     }
 }
 
+fn plain(symbol: &'static str, unit: Unit, values: Vec<f64>) -> Row {
+    Row::new(symbol, Sub::None, unit, values)
+}
+
+/// Columns headed by the positions `first..first + n`.
+fn positions(first: usize, n: usize) -> Vec<Column> {
+    (first..first + n).map(|k| Column::labelled(&k.to_string())).collect()
+}
+
 /// The law and the pressure angle at positions `first..` (cam angles `phis`), as one table.
-pub fn law(d: &Design, name: &str, first: usize, phis: &[f64]) -> NumTable {
+pub fn law(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable {
     let p = &d.spec.program;
     let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
     // Each position from inside its phase: at the ends `at` belongs to the dwell, and where the
@@ -41,39 +50,40 @@ pub fn law(d: &Design, name: &str, first: usize, phis: &[f64]) -> NumTable {
     };
     let col = |f: &dyn Fn(f64, usize) -> f64| phis.iter().enumerate().map(|(k, &phi)| f(phi, k)).collect::<Vec<_>>();
     let (s, v, a) = if rocker { ("β", "dβ/dφ", "d²β/dφ²") } else { ("s", "ds/dφ", "d²s/dφ²") };
-    let (us, uv) = if rocker { ("°", "") } else { ("mm", "mm") };
+    let (us, uv) = if rocker { (Unit::Deg, Unit::None) } else { (Unit::Mm, Unit::Mm) };
     NumTable {
-        name: name.into(),
-        columns: (first..first + phis.len()).map(|k| k.to_string()).collect(),
+        id,
+        columns: positions(first, phis.len()),
         rows: vec![
-            row("φ", "", "°", col(&|phi, _| phi.to_degrees())),
-            row(s, "", us, col(&|phi, k| lift(d, at(phi, k).s))),
-            row(v, "", uv, col(&|phi, k| analog(d, at(phi, k).ds))),
-            row(a, "", uv, col(&|phi, k| analog(d, at(phi, k).dds))),
-            row("α", "", "°", col(&|phi, _| d.profile.pressure_angle_on_profile(phi).to_degrees())),
+            plain("φ", Unit::Deg, col(&|phi, _| phi.to_degrees())),
+            plain(s, us, col(&|phi, k| lift(d, at(phi, k).s))),
+            plain(v, uv, col(&|phi, k| analog(d, at(phi, k).ds))),
+            plain(a, uv, col(&|phi, k| analog(d, at(phi, k).dds))),
+            plain("α", Unit::Deg, col(&|phi, _| d.profile.pressure_angle_on_profile(phi).to_degrees())),
         ],
     }
 }
 
 /// The pitch and working profiles' polar coordinates at the positions (r in mm, θ in
 /// degrees from the start of the rise's radius, turning against the cam).
-pub fn profile(d: &Design, name: &str, first: usize, phis: &[f64]) -> NumTable {
+pub fn profile(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable {
     let pr = &d.profile;
     let polar = |phi: f64, working: bool| {
         let p = if working { pr.working(d.roller, phi).0 } else { pr.pitch(phi).p };
         pr.polar(p)
     };
     let col = |f: &dyn Fn(f64) -> f64| phis.iter().map(|&phi| f(phi)).collect::<Vec<_>>();
+    let (pitch, work) = (|| Sub::Word(SubWord::Pitch), || Sub::Word(SubWord::Work));
     let mut rows = vec![
-        row("φ", "", "°", col(&|phi| phi.to_degrees())),
-        row("r", "pitch", "mm", col(&|phi| polar(phi, false).0 * MM)),
-        row("θ", "pitch", "°", col(&|phi| polar(phi, false).1.to_degrees())),
+        plain("φ", Unit::Deg, col(&|phi| phi.to_degrees())),
+        Row::new("r", pitch(), Unit::Mm, col(&|phi| polar(phi, false).0 * MM)),
+        Row::new("θ", pitch(), Unit::Deg, col(&|phi| polar(phi, false).1.to_degrees())),
     ];
     if d.roller > 0.0 {
-        rows.push(row("r", "work", "mm", col(&|phi| polar(phi, true).0 * MM)));
-        rows.push(row("θ", "work", "°", col(&|phi| polar(phi, true).1.to_degrees())));
+        rows.push(Row::new("r", work(), Unit::Mm, col(&|phi| polar(phi, true).0 * MM)));
+        rows.push(Row::new("θ", work(), Unit::Deg, col(&|phi| polar(phi, true).1.to_degrees())));
     }
-    NumTable { name: name.into(), columns: (first..first + phis.len()).map(|k| k.to_string()).collect(), rows }
+    NumTable { id, columns: positions(first, phis.len()), rows }
 }
 
 /// The results: r_min, the offset, or the rocker's length and swing with the centre distance
@@ -81,31 +91,33 @@ pub fn profile(d: &Design, name: &str, first: usize, phis: &[f64]) -> NumTable {
 /// largest pressure angle, and the drawing's integration errors (percent).
 pub fn results(d: &Design, errors: (f64, f64)) -> NumTable {
     let one = |x: f64| vec![x];
-    let mut rows: Vec<Row> = vec![row("r", "min", "mm", one(d.centre.r_min * MM))];
+    let name = |symbol: &'static str, sub: &str, unit: Unit, x: f64| Row::new(symbol, Sub::name(sub), unit, one(x));
+    let word = |symbol: &'static str, w: SubWord, unit: Unit, x: f64| Row::new(symbol, Sub::Word(w), unit, one(x));
+    let mut rows: Vec<Row> = vec![name("r", "min", Unit::Mm, d.centre.r_min * MM)];
     if let Some(e) = d.offset() {
-        rows.push(row("e", "", "mm", one(e * MM)));
+        rows.push(plain("e", Unit::Mm, one(e * MM)));
     }
     if let Follower::Rocker { length } = d.spec.follower {
-        rows.push(row("l", "", "mm", one(length * MM)));
-        rows.push(row("β", "max", "°", one(d.spec.program.lift.to_degrees())));
+        rows.push(plain("l", Unit::Mm, one(length * MM)));
+        rows.push(name("β", "max", Unit::Deg, d.spec.program.lift.to_degrees()));
     }
     if let (Some(a), Some(psi)) = (d.centre_distance(), d.rocker_start()) {
-        rows.push(row("a", "w", "mm", one(a * MM)));
-        rows.push(row("ψ", "0", "°", one(psi.to_degrees())));
+        rows.push(name("a", "w", Unit::Mm, a * MM));
+        rows.push(name("ψ", "0", Unit::Deg, psi.to_degrees()));
     }
     if d.roller > 0.0 {
-        rows.push(row("r", "roller", "mm", one(d.roller * MM)));
+        rows.push(word("r", SubWord::Roller, Unit::Mm, d.roller * MM));
     }
-    rows.push(row("ρ", "min", "mm", one(d.rho_min * MM)));
-    rows.push(row("α", "allowed_rise", "°", one(d.spec.allowed.rise.to_degrees())));
-    rows.push(row("α", "max_rise", "°", one(d.max_pressure[0].0.to_degrees())));
-    rows.push(row("α", "allowed_return", "°", one(d.spec.allowed.ret.to_degrees())));
-    rows.push(row("α", "max_return", "°", one(d.max_pressure[1].0.to_degrees())));
+    rows.push(name("ρ", "min", Unit::Mm, d.rho_min * MM));
+    rows.push(word("α", SubWord::AllowedRise, Unit::Deg, d.spec.allowed.rise.to_degrees()));
+    rows.push(word("α", SubWord::MaxRise, Unit::Deg, d.max_pressure[0].0.to_degrees()));
+    rows.push(word("α", SubWord::AllowedReturn, Unit::Deg, d.spec.allowed.ret.to_degrees()));
+    rows.push(word("α", SubWord::MaxReturn, Unit::Deg, d.max_pressure[1].0.to_degrees()));
     let (s, v) = match d.spec.follower {
         Follower::Translating => ("δs", "δ(ds/dφ)"),
         Follower::Rocker { .. } => ("δβ", "δ(dβ/dφ)"),
     };
-    rows.push(row(s, "", "%", one(errors.0)));
-    rows.push(row(v, "", "%", one(errors.1)));
-    NumTable { name: "results".into(), columns: vec!["".into()], rows }
+    rows.push(plain(s, Unit::Percent, one(errors.0)).keyed("error_s"));
+    rows.push(plain(v, Unit::Percent, one(errors.1)).keyed("error_ds"));
+    NumTable::single("results", rows)
 }

@@ -1,31 +1,35 @@
 //! Sheet 2's tables for the note: the wheels and the pair (lengths in mm, as the course
 //! writes gears), the planetary stage and its conditions with their numbers.
 
-use super::{NumTable, row};
+use super::{Column, NumTable, Row, Sub, SubWord, Unit};
 use crate::gears::pair::Pair;
 use crate::gears::planetary::Stage;
 
 /// Millimetres per metre: the gear tables are in mm.
 const MM: f64 = 1e3;
 
+fn named(symbol: &'static str, sub: &str, unit: Unit, values: Vec<f64>) -> Row {
+    Row::new(symbol, if sub.is_empty() { Sub::None } else { Sub::name(sub) }, unit, values)
+}
+
 /// Table of the two wheels: one column per wheel.
 pub fn wheels(p: &Pair) -> NumTable {
     let col = |f: &dyn Fn(usize) -> f64| vec![f(0), f(1)];
     let w = &p.wheels;
     NumTable {
-        name: "wheels".into(),
-        columns: vec!["1".into(), "2".into()],
+        id: "wheels",
+        columns: vec![Column::labelled("1"), Column::labelled("2")],
         rows: vec![
-            row("z", "", "", col(&|i| f64::from(w[i].z))),
-            row("x", "", "", col(&|i| w[i].shift)),
-            row("x", "min", "", col(&|i| w[i].x_min)),
-            row("r", "", "mm", col(&|i| w[i].pitch * MM)),
-            row("r", "b", "mm", col(&|i| w[i].base * MM)),
-            row("r", "a", "mm", col(&|i| w[i].tip * MM)),
-            row("r", "f", "mm", col(&|i| w[i].root * MM)),
-            row("r", "w", "mm", col(&|i| w[i].working * MM)),
-            row("s", "", "mm", col(&|i| w[i].tooth_thickness * MM)),
-            row("s", "a", "mm", col(&|i| w[i].tip_thickness * MM)),
+            named("z", "", Unit::None, col(&|i| f64::from(w[i].z))).counted(),
+            named("x", "", Unit::None, col(&|i| w[i].shift)),
+            named("x", "min", Unit::None, col(&|i| w[i].x_min)),
+            named("r", "", Unit::Mm, col(&|i| w[i].pitch * MM)),
+            named("r", "b", Unit::Mm, col(&|i| w[i].base * MM)),
+            named("r", "a", Unit::Mm, col(&|i| w[i].tip * MM)),
+            named("r", "f", Unit::Mm, col(&|i| w[i].root * MM)),
+            named("r", "w", Unit::Mm, col(&|i| w[i].working * MM)),
+            named("s", "", Unit::Mm, col(&|i| w[i].tooth_thickness * MM)),
+            named("s", "a", Unit::Mm, col(&|i| w[i].tip_thickness * MM)),
         ],
     }
 }
@@ -34,52 +38,51 @@ pub fn wheels(p: &Pair) -> NumTable {
 pub fn pair(p: &Pair, eps_drawn: f64) -> NumTable {
     let s = &p.spec;
     let one = |x: f64| vec![x];
-    NumTable {
-        name: "pair".into(),
-        columns: vec!["".into()],
-        rows: vec![
-            row("m", "", "mm", one(s.module * MM)),
-            row("α", "", "°", one(s.pressure_angle.to_degrees())),
-            row("h", "a*", "", one(s.addendum)),
-            row("c*", "", "", one(s.clearance)),
-            row("u", "12", "", one(p.ratio)),
-            row("α", "w", "°", one(p.working_pressure_angle.to_degrees())),
-            row("a", "", "mm", one(p.reference_centre_distance * MM)),
-            row("a", "w", "mm", one(p.centre_distance * MM)),
-            row("y", "", "", one(p.y)),
-            row("Δy", "", "", one(p.delta_y)),
-            row("h", "", "mm", one(p.tooth_height * MM)),
-            row("p", "", "mm", one(p.pitch * MM)),
-            row("p", "b", "mm", one(p.base_pitch * MM)),
-            row("g", "α", "mm", one(p.active_length * MM)),
-            row("ε", "", "", one(p.contact_ratio)),
-            row("ε", "drawn", "", one(eps_drawn)),
+    NumTable::single(
+        "pair",
+        vec![
+            named("m", "", Unit::Mm, one(s.module * MM)),
+            named("α", "", Unit::Deg, one(s.pressure_angle.to_degrees())),
+            named("h", "a*", Unit::None, one(s.addendum)).keyed("h_a_star"),
+            named("c*", "", Unit::None, one(s.clearance)).keyed("c_star"),
+            named("u", "12", Unit::None, one(p.ratio)),
+            named("α", "w", Unit::Deg, one(p.working_pressure_angle.to_degrees())),
+            named("a", "", Unit::Mm, one(p.reference_centre_distance * MM)),
+            named("a", "w", Unit::Mm, one(p.centre_distance * MM)),
+            named("y", "", Unit::None, one(p.y)),
+            named("Δy", "", Unit::None, one(p.delta_y)).keyed("delta_y"),
+            named("h", "", Unit::Mm, one(p.tooth_height * MM)),
+            named("p", "", Unit::Mm, one(p.pitch * MM)),
+            named("p", "b", Unit::Mm, one(p.base_pitch * MM)),
+            named("g", "α", Unit::Mm, one(p.active_length * MM)),
+            named("ε", "", Unit::None, one(p.contact_ratio)),
+            Row::new("ε", Sub::Word(SubWord::Drawn), Unit::None, one(eps_drawn)),
         ],
-    }
+    )
 }
 
 /// The planetary stage: tooth numbers, planets, ratios, pitch radii and the carrier's radius.
 pub fn stage(s: &Stage, module: f64) -> NumTable {
     let names: &[&str] = if s.z.len() == 4 { &["1", "2", "2′", "3"] } else { &["1", "2", "3"] };
-    let mut rows = vec![row("m", "", "mm", vec![module * MM])];
-    rows.extend(names.iter().zip(&s.z).map(|(n, &z)| row("z", *n, "", vec![f64::from(z)])));
-    rows.push(row("K", "", "", vec![f64::from(s.planets)]));
-    rows.push(row("u", "1H", "", vec![s.ratio]));
-    rows.push(row("u", "required", "", vec![s.ratio_required]));
-    rows.extend(names.iter().zip(&s.z).map(|(n, &z)| row("r", *n, "mm", vec![module * f64::from(z) / 2.0 * MM])));
-    rows.push(row("a", "H", "mm", vec![module * f64::from(s.z[0] + s.z[1]) / 2.0 * MM]));
-    NumTable { name: "stage".into(), columns: vec!["".into()], rows }
+    let mut rows = vec![named("m", "", Unit::Mm, vec![module * MM])];
+    rows.extend(names.iter().zip(&s.z).map(|(n, &z)| named("z", n, Unit::None, vec![f64::from(z)]).counted()));
+    rows.push(named("K", "", Unit::None, vec![f64::from(s.planets)]).counted());
+    rows.push(named("u", "1H", Unit::None, vec![s.ratio]));
+    rows.push(Row::new("u", Sub::Word(SubWord::Required), Unit::None, vec![s.ratio_required]));
+    rows.extend(names.iter().zip(&s.z).map(|(n, &z)| named("r", n, Unit::Mm, vec![module * f64::from(z) / 2.0 * MM])));
+    rows.push(named("a", "H", Unit::Mm, vec![module * f64::from(s.z[0] + s.z[1]) / 2.0 * MM]));
+    NumTable::single("planetary", rows)
 }
 
 /// Every condition with its value, limit and whether it is met (1) or not (0).
 pub fn conditions(s: &Stage) -> NumTable {
     NumTable {
-        name: "conditions".into(),
-        columns: vec!["value".into(), "limit".into(), "met".into()],
+        id: "conditions",
+        columns: vec![Column::new("value", "value"), Column::new("limit", "limit"), Column::new("met", "met")],
         rows: s
             .conditions
             .iter()
-            .map(|c| row(c.name, "", "", vec![c.value, c.limit, if c.ok { 1.0 } else { 0.0 }]))
+            .map(|c| Row::condition(c.name, vec![c.value, c.limit, f64::from(u8::from(c.ok))]))
             .collect(),
     }
 }

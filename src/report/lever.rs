@@ -1,7 +1,7 @@
 //! The lever sheet's tables of the explanatory note as numbers: 1-jadval (velocities),
 //! 2-jadval (accelerations) and, with a force analysis, tables 3–5.
 
-use super::{NumTable, Row, row};
+use super::{Column, ForceKind, NumTable, Row, Sub, Unit};
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::kinetostatics::{FRAME, Forces, InertiaLoad, Kind, Part};
 use crate::lever::linkage::{LinkKind, Mechanism};
@@ -21,10 +21,18 @@ fn turning_links(m: &Mechanism) -> Vec<usize> {
 }
 
 /// One row per moving point, one column per position.
-fn point_rows(m: &Mechanism, positions: &[&Position], symbol: &str, unit: &str, of: impl Fn(&Kin) -> f64) -> Vec<Row> {
+fn point_rows(
+    m: &Mechanism,
+    positions: &[&Position],
+    symbol: &'static str,
+    unit: Unit,
+    of: impl Fn(&Kin) -> f64,
+) -> Vec<Row> {
     moving_points(m)
         .into_iter()
-        .map(|id| row(symbol, m.name(id), unit, positions.iter().map(|p| of(&p.state.points[id])).collect()))
+        .map(|id| {
+            Row::new(symbol, Sub::name(m.name(id)), unit, positions.iter().map(|p| of(&p.state.points[id])).collect())
+        })
         .collect()
 }
 
@@ -32,8 +40,8 @@ fn point_rows(m: &Mechanism, positions: &[&Position], symbol: &str, unit: &str, 
 fn link_rows(
     m: &Mechanism,
     positions: &[&Position],
-    symbol: &str,
-    unit: &str,
+    symbol: &'static str,
+    unit: Unit,
     skip_crank: bool,
     of: impl Fn(&LinkKin) -> f64,
 ) -> Vec<Row> {
@@ -41,7 +49,8 @@ fn link_rows(
         .into_iter()
         .filter(|&l| m.links[l].kind != LinkKind::Block && !(skip_crank && m.links[l].kind == LinkKind::Crank))
         .map(|l| {
-            row(symbol, m.links[l].number.to_string(), unit, positions.iter().map(|p| of(&p.state.links[l])).collect())
+            let values = positions.iter().map(|p| of(&p.state.links[l])).collect();
+            Row::new(symbol, Sub::Name(m.links[l].number.to_string()), unit, values)
         })
         .collect()
 }
@@ -53,17 +62,17 @@ fn relation_columns(m: &Mechanism, positions: &[&Position]) -> Vec<Vec<RelationV
     (0..n).map(|i| per_position.iter().map(|x| x[i].clone()).collect()).collect()
 }
 
-fn table(name: &str, positions: &[&Position], rows: Vec<Row>) -> NumTable {
-    NumTable { name: name.into(), columns: positions.iter().map(|p| p.label.clone()).collect(), rows }
+fn table(id: &'static str, positions: &[&Position], rows: Vec<Row>) -> NumTable {
+    NumTable { id, columns: positions.iter().map(|p| Column::labelled(&p.label)).collect(), rows }
 }
 
 /// Table 1: speeds of points, relative speeds and angular velocities, all positions.
 pub fn velocity_table(m: &Mechanism, positions: &[&Position]) -> NumTable {
-    let mut rows = point_rows(m, positions, "v", "m/s", |k| k.v.norm());
+    let mut rows = point_rows(m, positions, "v", Unit::MPerS, |k| k.v.norm());
     for rel in relation_columns(m, positions) {
-        rows.push(row("v", rel[0].name.clone(), "m/s", rel.iter().map(|x| x.v).collect()));
+        rows.push(Row::new("v", Sub::name(rel[0].name.clone()), Unit::MPerS, rel.iter().map(|x| x.v).collect()));
     }
-    rows.extend(link_rows(m, positions, "ω", "1/s", false, |l| l.omega.abs()));
+    rows.extend(link_rows(m, positions, "ω", Unit::PerS, false, |l| l.omega.abs()));
     table("velocities", positions, rows)
 }
 
@@ -71,13 +80,14 @@ pub fn velocity_table(m: &Mechanism, positions: &[&Position]) -> NumTable {
 /// components and angular accelerations, at the plan positions. The crank turns
 /// uniformly (ε1 = 0), so it has no ε row.
 pub fn acceleration_table(m: &Mechanism, positions: &[&Position]) -> NumTable {
-    let mut rows = point_rows(m, positions, "a", "m/s²", |k| k.a.norm());
+    let mut rows = point_rows(m, positions, "a", Unit::MPerS2, |k| k.a.norm());
     for rel in relation_columns(m, positions) {
         let (s1, s2) = if rel[0].sliding { ("aᵏ", "aʳ") } else { ("aⁿ", "aᵗ") };
-        rows.push(row(s1, rel[0].name.clone(), "m/s²", rel.iter().map(|x| x.a_n).collect()));
-        rows.push(row(s2, rel[0].name.clone(), "m/s²", rel.iter().map(|x| x.a_t).collect()));
+        let sub = || Sub::name(rel[0].name.clone());
+        rows.push(Row::new(s1, sub(), Unit::MPerS2, rel.iter().map(|x| x.a_n).collect()));
+        rows.push(Row::new(s2, sub(), Unit::MPerS2, rel.iter().map(|x| x.a_t).collect()));
     }
-    rows.extend(link_rows(m, positions, "ε", "1/s²", true, |l| l.eps.abs()));
+    rows.extend(link_rows(m, positions, "ε", Unit::PerS2, true, |l| l.eps.abs()));
     table("accelerations", positions, rows)
 }
 
@@ -123,49 +133,53 @@ pub fn reactions(m: &Mechanism, f: &Forces) -> Vec<(String, kurbo::Vec2)> {
 /// balancing force found three ways.
 pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {
     let f = &fa.forces;
-    let columns = f.inertia.iter().map(|i| m.links[i.link].number.to_string()).collect();
-    let per = |sym: &str, sub: &str, unit: &str, of: &dyn Fn(&InertiaLoad) -> f64| {
-        row(sym, sub, unit, f.inertia.iter().map(of).collect())
+    let columns = f.inertia.iter().map(|i| Column::labelled(&m.links[i.link].number.to_string())).collect();
+    let per = |sym: &'static str, sub: Sub, unit: Unit, of: &dyn Fn(&InertiaLoad) -> f64| {
+        Row::new(sym, sub, unit, f.inertia.iter().map(of).collect())
     };
     let inertia = NumTable {
-        name: "inertia".into(),
+        id: "inertia",
         columns,
         rows: vec![
-            per("m", "", "kg", &|i| i.mass),
-            per("G", "", "N", &|i| i.weight),
-            per("a", "S", "m/s²", &|i| i.a_s.norm()),
-            per("P", "i", "N", &|i| i.force.norm()),
-            per("ε", "", "1/s²", &|i| i.eps.abs()),
-            per("J", "S", "kg·m²", &|i| i.j),
-            per("M", "i", "N·m", &|i| i.moment.abs()),
+            per("m", Sub::None, Unit::Kg, &|i| i.mass),
+            per("G", Sub::None, Unit::N, &|i| i.weight),
+            per("a", Sub::name("S"), Unit::MPerS2, &|i| i.a_s.norm()),
+            per("P", Sub::Force(ForceKind::Inertia, String::new()), Unit::N, &|i| i.force.norm()),
+            per("ε", Sub::None, Unit::PerS2, &|i| i.eps.abs()),
+            per("J", Sub::name("S"), Unit::KgM2, &|i| i.j),
+            per("M", Sub::Force(ForceKind::Inertia, String::new()), Unit::NM, &|i| i.moment.abs()),
         ],
     };
     let reactions = NumTable {
-        name: "reactions".into(),
-        columns: vec!["x".into(), "y".into(), "|R|".into()],
-        rows: reactions(m, f).into_iter().map(|(sub, r)| row("R", sub, "N", vec![r.x, r.y, r.norm()])).collect(),
+        id: "reactions",
+        columns: vec![Column::new("x", "x"), Column::new("y", "y"), Column::new("abs", "|R|")],
+        rows: reactions(m, f)
+            .into_iter()
+            .map(|(sub, r)| Row::new("R", Sub::Name(sub), Unit::N, vec![r.x, r.y, r.norm()]))
+            .collect(),
     };
+    let balancing = Sub::Force(ForceKind::Balancing, String::new());
     let mut rows = vec![];
     for (load, v) in fa.model.loads.iter().zip(&f.loads) {
-        let n = m.links[load.link].number;
-        rows.push(row("S/H", n.to_string(), "", vec![v.s]));
-        rows.push(row("P", format!("{}{n}", load_letter(load.kind)), "N", vec![v.force.norm()]));
+        let n = m.links[load.link].number.to_string();
+        rows.push(Row::new("S/H", Sub::Name(n.clone()), Unit::None, vec![v.s]).keyed(&format!("S_H_{n}")));
+        rows.push(Row::new("P", Sub::Force(load_kind(load.kind), n), Unit::N, vec![v.force.norm()]));
     }
     rows.extend([
-        row("P", "m", "N", vec![f.p_m]),
-        row("M", "m", "N·m", vec![f.m_m]),
-        row("P′", "m", "N", vec![f.p_m_lever]),
-        row("Δ", "", "%", vec![f.difference_percent()]),
-        row("P″", "m", "N", vec![f.p_m_power]),
+        Row::new("P", balancing.clone(), Unit::N, vec![f.p_m]),
+        Row::new("M", balancing.clone(), Unit::NM, vec![f.m_m]),
+        Row::new("P′", balancing.clone(), Unit::N, vec![f.p_m_lever]).keyed("P_m_lever"),
+        Row::new("Δ", Sub::None, Unit::Percent, vec![f.difference_percent()]).keyed("delta"),
+        Row::new("P″", balancing, Unit::N, vec![f.p_m_power]).keyed("P_m_power"),
     ]);
-    let balance = NumTable { name: "balance".into(), columns: vec!["".into()], rows };
+    let balance = NumTable::single("balancing", rows);
     ForceTables { inertia, reactions, balance }
 }
 
-/// The subscript letter of a load: c for a resistance, g for a gas force.
-pub fn load_letter(kind: LoadKind) -> &'static str {
+/// The kind of a load's force: a resistance or a gas force.
+pub fn load_kind(kind: LoadKind) -> ForceKind {
     match kind {
-        LoadKind::Resistance => "c",
-        LoadKind::Gas => "g",
+        LoadKind::Resistance => ForceKind::Resistance,
+        LoadKind::Gas => ForceKind::Gas,
     }
 }

@@ -5,64 +5,76 @@ pub mod cam;
 pub mod gears;
 pub mod lever;
 
-use serde::Serialize;
+mod table;
+
+pub use table::{Column, ForceKind, NumTable, Quantity, Row, Sub, SubWord, Unit, ascii_key};
+
 use std::fmt::Write;
 
-/// One row of a table: a symbol with a subscript, its unit and a value per column.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Row {
-    pub symbol: String,
-    pub sub: String,
-    pub unit: String,
-    pub values: Vec<f64>,
-}
-
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct NumTable {
-    pub name: String,
-    /// Column headings (position labels, link numbers, components).
-    pub columns: Vec<String>,
-    pub rows: Vec<Row>,
-}
-
-pub(crate) fn row(symbol: &str, sub: impl Into<String>, unit: &str, values: Vec<f64>) -> Row {
-    Row { symbol: symbol.into(), sub: sub.into(), unit: unit.into(), values }
-}
-
-/// A table of a sheet's note: the file stem it is written under, and its title, column
-/// headings and units in the sheet's language (for the Markdown; the CSV stays in SI).
+/// A table of a sheet's note in the sheet's language: the typed table, its title, its
+/// column headings and each row's symbol, subscript and unit as printed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct NoteTable {
-    /// "velocities" → `sheet1-velocities.csv`.
-    pub stem: &'static str,
-    pub title: String,
     pub table: NumTable,
+    pub title: String,
     /// The headings of the symbol and unit columns ("Величина", "Единица").
     pub headings: [String; 2],
+    /// Each row's symbol and subscript as the sheet prints them (P, и2; a condition's name).
+    pub printed: Vec<(String, String)>,
     /// Each row's unit as the sheet writes it.
     pub units: Vec<String>,
+    /// The value columns' headings in the sheet's language.
+    pub column_titles: Vec<String>,
     /// Whether numbers take a decimal comma (Uzbek, Russian) rather than a point.
     pub decimal_comma: bool,
-    /// The value columns' headings in the sheet's language for the Markdown (empty: the
-    /// table's own, which the CSV keeps stable for programs).
-    pub column_titles: Vec<String>,
     /// Whether whole numbers print without decimals (tooth numbers, a centre distance of
     /// 90 mm, 1 for a condition met); otherwise every value has four significant digits.
     pub whole_numbers: bool,
 }
 
-/// A row's quantity as `symbol_sub`, or the symbol alone.
-fn quantity(r: &Row) -> String {
-    if r.sub.is_empty() { r.symbol.clone() } else { format!("{}_{}", r.symbol, r.sub) }
+/// One value of a table under its identifier (`sheet2.pair.epsilon`), in the table's unit.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Answer {
+    #[serde(skip)]
+    pub id: String,
+    pub value: f64,
+    pub unit: &'static str,
 }
 
-/// Full-precision numbers (9 decimals), fields quoted by the `csv` crate where needed.
-pub fn csv(t: &NumTable) -> String {
+impl NoteTable {
+    /// A row's quantity as `symbol_sub`, or the symbol alone.
+    fn quantity(&self, r: usize) -> String {
+        let (symbol, sub) = &self.printed[r];
+        if sub.is_empty() { symbol.clone() } else { format!("{symbol}_{sub}") }
+    }
+
+    /// Every value under its identifier, `prefix` naming the sheet ("sheet1").
+    pub fn answers(&self, prefix: &str) -> Vec<Answer> {
+        let t = &self.table;
+        let cells = t.rows.iter().flat_map(|r| r.values.iter().enumerate().map(move |(c, &v)| (r, c, v)));
+        cells.map(|(r, c, value)| Answer { id: t.cell_id(prefix, r, c), value, unit: r.unit.si() }).collect()
+    }
+}
+
+/// A number as the CSV writes it: nine decimals, a rounded-off zero without its sign.
+fn csv_number(v: f64) -> String {
+    let s = format!("{v:.9}");
+    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') { s[1..].to_string() } else { s }
+}
+
+/// Full-precision numbers (9 decimals), each row under its identifier (`prefix.table.row`;
+/// a value's is that and its column's key, the header's), fields quoted by the `csv` crate
+/// where needed.
+pub fn csv(n: &NoteTable, prefix: &str) -> String {
+    let t = &n.table;
     let mut w = csv::Writer::from_writer(Vec::new());
-    let header = ["quantity", "unit"].into_iter().map(str::to_string).chain(t.columns.iter().cloned());
+    let header =
+        ["id", "quantity", "unit"].into_iter().map(str::to_string).chain(t.columns.iter().map(|c| c.key.clone()));
     w.write_record(header).expect("writing to memory");
-    for r in &t.rows {
-        let cells = [quantity(r), r.unit.clone()].into_iter().chain(r.values.iter().map(|v| format!("{v:.9}")));
+    for (k, r) in t.rows.iter().enumerate() {
+        let id = format!("{prefix}.{}.{}", t.id, r.key);
+        let cells =
+            [id, n.quantity(k), r.unit.si().to_string()].into_iter().chain(r.values.iter().map(|&v| csv_number(v)));
         w.write_record(cells).expect("writing to memory");
     }
     String::from_utf8(w.into_inner().expect("writing to memory")).expect("the cells are UTF-8")
@@ -88,21 +100,29 @@ pub fn md_escape(s: &str) -> String {
 }
 
 /// A table as Markdown in the sheet's language with its title as a heading; values with
-/// four significant figures, as on the sheet.
-pub fn markdown(n: &NoteTable) -> String {
+/// four significant figures, as on the sheet. The table and each row carry their
+/// identifiers as empty anchors, which a renderer does not show.
+pub fn markdown(n: &NoteTable, prefix: &str) -> String {
     let t = &n.table;
     let [quantity, unit] = &n.headings;
-    let mut s = format!("### {}\n\n| {} | {} |", md_escape(&n.title), md_escape(quantity), md_escape(unit));
-    let titles = if n.column_titles.len() == t.columns.len() { &n.column_titles } else { &t.columns };
-    for c in titles {
+    let mut s = format!(
+        "<a id=\"{prefix}.{}\"></a>\n\n### {}\n\n| {} | {} |",
+        t.id,
+        md_escape(&n.title),
+        md_escape(quantity),
+        md_escape(unit)
+    );
+    for c in &n.column_titles {
         let _ = write!(s, " {} |", md_escape(c));
     }
     s.push_str("\n|---|---|");
     s.push_str(&"---:|".repeat(t.columns.len()));
     s.push('\n');
-    for (r, unit) in t.rows.iter().zip(&n.units) {
-        let sub = if r.sub.is_empty() { String::new() } else { format!("<sub>{}</sub>", md_escape(&r.sub)) };
-        let _ = write!(s, "| {}{sub} | {} |", md_escape(&r.symbol), md_escape(unit));
+    for ((k, r), unit) in t.rows.iter().enumerate().zip(&n.units) {
+        let (symbol, sub) = &n.printed[k];
+        let sub = if sub.is_empty() { String::new() } else { format!("<sub>{}</sub>", md_escape(sub)) };
+        let anchor = format!("<a id=\"{prefix}.{}.{}\"></a>", t.id, r.key);
+        let _ = write!(s, "| {anchor}{}{sub} | {} |", md_escape(symbol), md_escape(unit));
         for &v in &r.values {
             let whole = n.whole_numbers && v.fract() == 0.0 && v.abs() < 1e9;
             let v = if whole { format!("{v:.0}") } else { crate::num::digits::significant(v) }.replace('-', "−");
@@ -117,36 +137,39 @@ pub fn markdown(n: &NoteTable) -> String {
 mod tests {
     use super::*;
 
-    fn table(column: &str, sub: &str) -> NumTable {
-        NumTable { name: "t".into(), columns: vec![column.into()], rows: vec![row("v", sub, "m/s", vec![1.0])] }
-    }
-
-    #[test]
-    fn csv_quotes_fields_with_separators_and_quotes() {
-        let s = csv(&table("a,\"b\"", "B,A"));
-        assert_eq!(s, "quantity,unit,\"a,\"\"b\"\"\"\n\"v_B,A\",m/s,1.000000000\n");
-    }
-
-    fn note(t: NumTable, title: &str) -> NoteTable {
-        let units = t.rows.iter().map(|r| r.unit.clone()).collect();
+    fn note(column: &str, sub: &str, title: &str) -> NoteTable {
+        let table = NumTable {
+            id: "t",
+            columns: vec![Column::new("c", column)],
+            rows: vec![
+                Row::new("v", Sub::name(sub), Unit::MPerS, vec![1.0]),
+                Row::new("x", Sub::None, Unit::None, vec![-1e-12]),
+            ],
+        };
         NoteTable {
-            stem: "t",
+            printed: vec![("v".into(), sub.into()), ("x".into(), String::new())],
+            units: vec!["m/s".into(), String::new()],
+            column_titles: vec![column.into()],
             title: title.into(),
-            table: t,
+            table,
             headings: ["q".into(), "u".into()],
-            units,
             decimal_comma: true,
-            column_titles: Vec::new(),
             whole_numbers: false,
         }
     }
 
     #[test]
+    fn csv_quotes_fields_with_separators_and_quotes_and_names_every_row() {
+        let s = csv(&note("a,\"b\"", "B,A", "T"), "sheet9");
+        assert_eq!(s, "id,quantity,unit,c\nsheet9.t.v_B_A,\"v_B,A\",m/s,1.000000000\nsheet9.t.x,x,,0.000000000\n");
+    }
+
+    #[test]
     fn markdown_cells_cannot_break_the_table() {
-        let s = markdown(&note(table("x|y", "<b>*"), "T | 1"));
-        assert!(s.starts_with("### T \\| 1\n"), "{s}");
+        let s = markdown(&note("x|y", "<b>*", "T | 1"), "sheet9");
+        assert!(s.starts_with("<a id=\"sheet9.t\"></a>\n\n### T \\| 1\n"), "{s}");
         assert!(s.contains("| x\\|y |") && s.contains("<sub>&lt;b&gt;\\*</sub>") && s.contains("| 1,000 |"), "{s}");
-        for line in s.lines().skip(2) {
+        for line in s.lines().skip(4) {
             let unescaped = line.replace("\\|", "");
             assert_eq!(unescaped.matches('|').count(), 4, "{line}");
         }

@@ -9,6 +9,8 @@
 pub mod cam;
 pub mod gears;
 pub mod lever;
+pub mod scaffold;
+pub mod words;
 
 use crate::drawing::scene::Scene;
 use crate::drawing::text::TooLong;
@@ -117,7 +119,13 @@ pub enum SheetError {
 /// One sheet, ready to build from its project section.
 pub trait Sheet {
     fn kind(&self) -> SheetKind;
-    fn build(&self, ctx: &Context) -> Result<SheetOutput, SheetError>;
+    /// The sheet's drawings, tables and results, without the frame and the title block.
+    fn compose(&self, ctx: &Context) -> Result<scaffold::Composition, SheetError>;
+    /// The finished sheet: the composition with the frame, the title block and the layout
+    /// measured ([`scaffold::finish`]).
+    fn build(&self, ctx: &Context) -> Result<SheetOutput, SheetError> {
+        scaffold::finish(ctx, self.kind(), self.compose(ctx)?)
+    }
 }
 
 /// Why a requested sheet cannot be built.

@@ -74,20 +74,4 @@ impl CamLabels {
             Standard::ModifiedSine => self.law_modified_sine(),
         }
     }
-
-    /// A table subscript in the sheet's language.
-    pub fn sub<'a>(&'a self, sub: &'a str) -> &'a str {
-        match sub {
-            "pitch" => self.sub_pitch(),
-            "work" => self.sub_work(),
-            "rise" => self.sub_rise(),
-            "return" => self.sub_return(),
-            "roller" => self.sub_roller(),
-            "allowed_rise" => self.sub_allowed_rise(),
-            "allowed_return" => self.sub_allowed_return(),
-            "max_rise" => self.sub_max_rise(),
-            "max_return" => self.sub_max_return(),
-            other => other,
-        }
-    }
 }

@@ -46,31 +46,6 @@ crate::label_set! {
     }
 }
 
-impl GearLabels {
-    /// A table subscript in the sheet's language ("drawn" → "черт").
-    pub fn sub<'a>(&'a self, sub: &'a str) -> &'a str {
-        match sub {
-            "drawn" => self.sub_drawn(),
-            "required" => self.sub_required(),
-            other => other,
-        }
-    }
-
-    /// A planetary condition's name by its key (the key itself if unknown).
-    pub fn condition<'a>(&'a self, key: &'a str) -> &'a str {
-        match key {
-            "ratio" => self.cond_ratio(),
-            "coaxiality" => self.cond_coaxiality(),
-            "neighbours" => self.cond_neighbours(),
-            "assembly" => self.cond_assembly(),
-            "no_undercut" => self.cond_no_undercut(),
-            "ring_teeth" => self.cond_ring_teeth(),
-            "ring_planet_difference" => self.cond_ring_planet_difference(),
-            other => other,
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -5,24 +5,25 @@
 pub mod labels;
 mod mesh_view;
 mod planetary_view;
+mod results;
+mod tables;
 
 pub use mesh_view::{INVOLUTE_PIECES, MeshDrawn};
 
-use super::{COURSE, Context, Sheet, SheetError, SheetKind, SheetOutput};
+use super::scaffold::Composition;
+use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::drawing::fmt;
-use crate::drawing::frame::{self, A1_H, A1_W};
-use crate::drawing::labels::{Common, Language};
-use crate::drawing::layout::{self, Layout};
+use crate::drawing::frame;
+use crate::drawing::labels::Language;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
-use crate::drawing::scene::{Anchor, Group, Scene, Text};
-use crate::drawing::table::{CELL_TEXT, Table};
-use crate::drawing::text::{LabelText, paragraph, wrap};
+use crate::drawing::scene::{Anchor, Group, Text};
+use crate::drawing::table::CELL_TEXT;
+use crate::drawing::text::{paragraph, wrap};
 use crate::gears::pair::PairWarning;
 use crate::gears::tooth::Outline;
 use crate::project::gears::PlanetaryProject;
 use crate::project::{GearsProject, Project};
-use crate::report::{self, NoteTable, NumTable};
 use kurbo::{Point, Rect};
 use labels::GearLabels;
 use mesh_view::{MeshInput, draw_mesh};
@@ -43,12 +44,10 @@ impl GearsSheet<'_> {
 
 /// Everything built for sheet 2.
 pub struct GearsBuild {
-    pub scene: Scene,
+    pub composition: Composition,
     pub mesh: MeshDrawn,
     /// μ_l of the planetary views, m/mm.
     pub planetary_mu: Option<f64>,
-    pub layout: Layout,
-    pub tables: Vec<(&'static str, NumTable)>,
 }
 
 /// Left half: the mesh.
@@ -59,13 +58,42 @@ const RIGHT_X0: f64 = 448.0;
 /// Builds sheet 2.
 pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> {
     let lang = ctx.info.language;
-    let (l, c) = (GearLabels::get(lang), Common::get(lang));
-    let outlines = [Outline::new(&p.pair.spec, &p.pair.wheels[0]), Outline::new(&p.pair.spec, &p.pair.wheels[1])];
-    let inner = frame::inner();
-    let mut fr = Group::new("frame", Rect::new(0.0, 0.0, A1_W, A1_H));
-    frame::frame(&mut fr);
+    let l = GearLabels::get(lang);
+    let (mesh, drawn) = mesh_group(p, lang);
 
-    // The mesh: title on top, notes at the bottom, the drawing between.
+    // The right half: the planetary views on top, the tables below.
+    let mut groups = vec![mesh];
+    let inner = frame::inner();
+    let right = Rect::new(RIGHT_X0, inner.y0 + 4.0, inner.x1 - 4.0, frame::title_block_rect().y0 - 4.0);
+    let mut y_tables = right.y0;
+    let mut planetary_mu = None;
+    if let Some(pl) = &p.planetary {
+        let (g, mu, bottom) = planetary_group(pl, right, l, lang);
+        planetary_mu = Some(mu);
+        groups.push(g);
+        y_tables = bottom + 4.0;
+    }
+    let notes = tables::notes(p, drawn.contact_ratio_drawn, lang);
+    let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
+    groups.push(tables::group(&notes, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, lang));
+
+    let name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
+    let composition = Composition {
+        name: name.to_string(),
+        mu_l: drawn.mu,
+        groups,
+        tables: notes,
+        results: serde_json::Value::Null,
+        diagnostics: Vec::new(),
+        smallest_plan_mm: None,
+    };
+    Ok(GearsBuild { composition, mesh: drawn, planetary_mu })
+}
+
+/// The mesh on the left half: title on top, notes at the bottom, the drawing between.
+fn mesh_group(p: &GearsProject, lang: Language) -> (Group, MeshDrawn) {
+    let l = GearLabels::get(lang);
+    let outlines = [Outline::new(&p.pair.spec, &p.pair.wheels[0]), Outline::new(&p.pair.spec, &p.pair.wheels[1])];
     let notes = mesh_notes(p, l, lang);
     let mut mesh = Group::new("mesh", MESH);
     let mut labels = Labels::new();
@@ -96,28 +124,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         y = paragraph(&mut mesh, Point::new(MESH.x0 + 2.0, y), &wrapped(n), CELL_TEXT, Anchor::Start) + 0.5;
     }
     labels.place(&mut mesh, area);
-
-    // The right half: the planetary views on top, the tables below.
-    let mut groups = vec![fr, mesh];
-    let right = Rect::new(RIGHT_X0, inner.y0 + 4.0, inner.x1 - 4.0, frame::title_block_rect().y0 - 4.0);
-    let mut y_tables = right.y0;
-    let mut planetary_mu = None;
-    if let Some(pl) = &p.planetary {
-        let (g, mu, bottom) = planetary_group(pl, right, l, lang);
-        planetary_mu = Some(mu);
-        groups.push(g);
-        y_tables = bottom + 4.0;
-    }
-    let tables = note_tables_of(p, drawn.contact_ratio_drawn);
-    let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
-    groups.push(tables_group(&tables, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, l, c, lang));
-
-    let sheet_name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
-    let tb = ctx.title_block(c, sheet_name, &fmt::localise(&scale::ratio(drawn.mu), lang), KIND.number)?;
-    groups.push(tb);
-    let scene = Scene { width: A1_W, height: A1_H, title: format!("{} — {sheet_name}", ctx.info.title()), groups };
-    let layout = layout::measure(&scene);
-    Ok(GearsBuild { scene, mesh: drawn, planetary_mu, layout, tables })
+    (mesh, drawn)
 }
 
 /// The notes under the mesh: shifts chosen, warnings, the user's assumptions.
@@ -169,140 +176,23 @@ fn planetary_group(pl: &PlanetaryProject, right: Rect, l: &GearLabels, lang: Lan
     (g, mu, region.y1)
 }
 
-/// The note's tables as numbers, by file stem.
-fn note_tables_of(p: &GearsProject, eps_drawn: f64) -> Vec<(&'static str, NumTable)> {
-    let mut out = vec![("wheels", report::gears::wheels(&p.pair)), ("pair", report::gears::pair(&p.pair, eps_drawn))];
-    if let Some(pl) = &p.planetary {
-        out.push(("planetary", report::gears::stage(&pl.stage, pl.module)));
-        out.push(("conditions", report::gears::conditions(&pl.stage)));
-    }
-    out
-}
-
-fn table_title<'a>(stem: &str, l: &'a GearLabels) -> &'a str {
-    match stem {
-        "wheels" | "pair" => l.pair_table(),
-        "planetary" => l.planetary_table(),
-        _ => l.conditions_table(),
-    }
-}
-
-/// Draws the tables in `region`, in columns left to right.
-fn tables_group(
-    tables: &[(&'static str, NumTable)],
-    region: Rect,
-    tolerance: Option<f64>,
-    l: &GearLabels,
-    c: &Common,
-    lang: Language,
-) -> Group {
-    let drawn = tables.iter().map(|(stem, t)| sheet_table(stem, t, tolerance, l, c, lang));
-    crate::drawing::table::flow("tables", drawn, region, 4.0)
-}
-
-fn sheet_table(stem: &str, t: &NumTable, tolerance: Option<f64>, l: &GearLabels, c: &Common, lang: Language) -> Table {
-    let is_conditions = stem == "conditions";
-    let rows: Vec<(LabelText, Vec<String>)> = t
-        .rows
-        .iter()
-        .map(|r| {
-            let mut label = if is_conditions && r.symbol == "ratio" {
-                // The ratio's condition is the stated tolerance.
-                let tol = tolerance.map(|t| format!(" ±{} %", fmt::trimmed(t * 100.0, lang))).unwrap_or_default();
-                LabelText::new(format!("{}{tol}", l.condition(&r.symbol)), "")
-            } else if is_conditions {
-                LabelText::new(l.condition(&r.symbol), "")
-            } else {
-                LabelText::new(r.symbol.clone(), l.sub(&r.sub))
-            };
-            let unit = c.si_unit(&r.unit);
-            if !unit.is_empty() && !is_conditions {
-                label.tail = format!(", {unit}");
-            }
-            // Counts (z, K, sums of teeth) print as integers.
-            let counts = is_conditions || r.symbol == "z" || r.symbol == "K";
-            let num = |v: f64| {
-                if counts && v.fract() == 0.0 && v.abs() < 1e9 { format!("{v:.0}") } else { fmt::value(v, lang) }
-            };
-            let cells = if is_conditions {
-                vec![num(r.values[0]), num(r.values[1]), (if r.values[2] > 0.5 { l.yes() } else { l.no() }).to_string()]
-            } else {
-                r.values.iter().map(|&v| num(v)).collect()
-            };
-            (label, cells)
-        })
-        .collect();
-    let header = match stem {
-        "wheels" => vec![l.wheel("1"), l.wheel("2")],
-        "conditions" => vec![l.value_col().into(), l.limit_col().into(), l.ok_col().into()],
-        _ => vec![c.value().into()],
-    };
-    let label_w = rows.iter().map(|(x, _)| x.width(CELL_TEXT) + 4.0).fold(14.0, f64::max);
-    // The pair's table continues the wheels': titled as the continuation.
-    let title = if stem == "pair" {
-        crate::drawing::table::continued_title(table_title(stem, l), c.continued())
-    } else {
-        table_title(stem, l).to_string()
-    };
-    Table {
-        title,
-        header,
-        rows,
-        label_w,
-        cell_w: 14.0,
-        corner: if is_conditions { l.condition_col().into() } else { c.quantity().into() },
-    }
-}
-
-impl GearsBuild {
-    /// The note's tables with titles, headings and units in the sheet's language.
-    pub fn note_tables(&self, lang: Language) -> Vec<NoteTable> {
-        let (l, c) = (GearLabels::get(lang), Common::get(lang));
-        self.tables
-            .iter()
-            .map(|(stem, t)| NoteTable {
-                stem,
-                title: table_title(stem, l).to_string(),
-                headings: [c.quantity().into(), c.unit().into()],
-                units: t.rows.iter().map(|r| c.si_unit(&r.unit).to_string()).collect(),
-                table: NumTable {
-                    // Words in the sheet's language: subscripts, and the conditions' names.
-                    rows: t
-                        .rows
-                        .iter()
-                        .map(|r| report::Row {
-                            symbol: if *stem == "conditions" {
-                                l.condition(&r.symbol).to_string()
-                            } else {
-                                r.symbol.clone()
-                            },
-                            sub: l.sub(&r.sub).to_string(),
-                            ..r.clone()
-                        })
-                        .collect(),
-                    ..t.clone()
-                },
-                column_titles: match *stem {
-                    "wheels" => vec![l.wheel("1"), l.wheel("2")],
-                    "conditions" => vec![l.value_col().into(), l.limit_col().into(), l.ok_col().into()],
-                    _ => vec![c.value().into()],
-                },
-                decimal_comma: lang != Language::En,
-                whole_numbers: true,
-            })
-            .collect()
-    }
-}
-
 impl Sheet for GearsSheet<'_> {
     fn kind(&self) -> SheetKind {
         KIND
     }
 
-    fn build(&self, ctx: &Context) -> Result<SheetOutput, SheetError> {
+    fn compose(&self, ctx: &Context) -> Result<Composition, SheetError> {
         let b = build(ctx, self.project)?;
-        let mut diagnostics: Vec<String> = b.layout.problems.iter().map(|p| format!("layout: {p}")).collect();
-        diagnostics.extend(self.project.warnings.iter().filter_map(|w| match w {
+        let results = results::section(self.project, &b);
+        Ok(Composition { results, diagnostics: diagnostics(self.project), ..b.composition })
+    }
+}
+
+/// The pair's warnings that the sheet's notes do not already state.
+fn diagnostics(p: &GearsProject) -> Vec<String> {
+    p.warnings
+        .iter()
+        .filter_map(|w| match w {
             PairWarning::ThinTip { wheel, s_a, limit } => {
                 Some(format!("wheel {wheel}'s tip is thin: s_a = {:.3} mm < 0.25·m = {:.3} mm", s_a * 1e3, limit * 1e3))
             }
@@ -311,81 +201,6 @@ impl Sheet for GearsSheet<'_> {
                 Some(format!("wheel {wheel}'s tip passes the other wheel's N: the contact ends at N (undercut root)"))
             }
             PairWarning::Undercut { .. } => None,
-        }));
-        Ok(SheetOutput {
-            number: KIND.number,
-            tables: b.note_tables(ctx.info.language),
-            results: results(self.project, &b),
-            scene: b.scene,
-            diagnostics,
         })
-    }
-}
-
-/// The sheet's section of `results.json` (SI; angles in degrees with `_deg`).
-pub fn results(p: &GearsProject, b: &GearsBuild) -> serde_json::Value {
-    use serde_json::json;
-    let pr = &p.pair;
-    let wheel = |f: &dyn Fn(usize) -> f64| json!([f(0), f(1)]);
-    let w = &pr.wheels;
-    let mut out = json!({
-        "pair": {
-            "module": pr.spec.module,
-            "z": [w[0].z, w[1].z],
-            "shift": wheel(&|i| w[i].shift),
-            "shift_auto": p.auto_shift,
-            "pressure_angle_deg": pr.spec.pressure_angle.to_degrees(),
-            "working_pressure_angle_deg": pr.working_pressure_angle.to_degrees(),
-            "centre_distance": pr.centre_distance,
-            "reference_centre_distance": pr.reference_centre_distance,
-            "y": pr.y,
-            "delta_y": pr.delta_y,
-            "ratio": pr.ratio,
-            "contact_ratio": pr.contact_ratio,
-            "contact_ratio_drawing": b.mesh.contact_ratio_drawn,
-            "radii": {
-                "pitch": wheel(&|i| w[i].pitch),
-                "base": wheel(&|i| w[i].base),
-                "tip": wheel(&|i| w[i].tip),
-                "root": wheel(&|i| w[i].root),
-                "working": wheel(&|i| w[i].working),
-            },
-            "tooth_height": pr.tooth_height,
-            "pitch": pr.pitch,
-            "base_pitch": pr.base_pitch,
-            "tooth_thickness": wheel(&|i| w[i].tooth_thickness),
-            "tip_thickness": wheel(&|i| w[i].tip_thickness),
-            "undercut": [w[0].undercut, w[1].undercut],
-            "x_min": wheel(&|i| w[i].x_min),
-            "interference": pr.interference,
-        },
-        "drawing": {
-            "mu_l": b.mesh.mu,
-            "tooth_height_mm": b.mesh.tooth_height_mm,
-            "involute_pieces_per_flank": INVOLUTE_PIECES,
-            "involute_deviation": b.mesh.involute_deviation,
-            "fillet_deviation": b.mesh.fillet_deviation,
-            "planetary_mu_l": b.planetary_mu,
-        },
-        "layout": {
-            "texts_crossed": b.layout.texts_crossed,
-            "text_overlaps": b.layout.text_overlaps,
-            "outside_region": b.layout.outside_region,
-            "problems": b.layout.problems.iter().take(20).collect::<Vec<_>>(),
-        },
-    });
-    if let Some(pl) = &p.planetary {
-        let s = &pl.stage;
-        out["planetary"] = json!({
-            "scheme": s.scheme.key(),
-            "z": s.z,
-            "planets": s.planets,
-            "ratio": s.ratio,
-            "ratio_required": s.ratio_required,
-            "tolerance": s.tolerance,
-            "module": pl.module,
-            "conditions": s.conditions.iter().map(|c| json!({"name": c.name, "value": c.value, "limit": c.limit, "ok": c.ok})).collect::<Vec<_>>(),
-        });
-    }
-    out
+        .collect()
 }

@@ -10,9 +10,9 @@ use super::labels::LeverLabels;
 use super::mechanism_view::{MechanismView, View, world_extent};
 use super::plans_view::{PlanCell, Sizing, draw_plan, label_bounds, size_plans};
 use crate::drawing::fmt;
-use crate::drawing::frame::{self, A1_H, A1_W, TitleBlock};
+use crate::drawing::frame;
 use crate::drawing::labels::{Common, Language};
-use crate::drawing::layout::{self, Layout};
+use crate::drawing::layout::Layout;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{AXIS, Anchor, Group, Scene, Text};
@@ -20,9 +20,11 @@ use crate::drawing::table::{CELL_TEXT, Table};
 use crate::drawing::text::{LabelText, TooLong, paragraph, wrap};
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
-use crate::project::{LeverProject, ProjectInfo};
-use crate::report::NumTable;
-use crate::report::lever::{ForceTables, KinematicTables};
+use crate::project::LeverProject;
+use crate::report::NoteTable;
+use crate::report::lever::ForceTables;
+use crate::sheets::scaffold::{self, Composition};
+use crate::sheets::{Context, SheetKind};
 use kurbo::{Point, Rect};
 
 /// The scales chosen for the sheet.
@@ -41,6 +43,9 @@ pub struct Scales {
 
 /// The composed sheet and the scales it chose.
 pub struct Composed {
+    /// The drawings and tables, for the scaffold to finish.
+    pub composition: Composition,
+    /// The whole sheet as measured: the composition in its frame with its title block.
     pub scene: Scene,
     pub scales: Scales,
     pub force_scales: Option<ForceScales>,
@@ -52,15 +57,14 @@ pub struct Composed {
 
 /// Inputs of sheet 1 beyond the kinematics.
 pub struct Input<'a> {
-    pub info: &'a ProjectInfo,
+    pub ctx: &'a Context<'a>,
+    pub kind: SheetKind,
     pub project: &'a LeverProject,
-    /// The note's tables 1 and 2, computed once by the caller.
-    pub tables: &'a KinematicTables,
+    /// The note's tables 1 and 2 (and 3–5 with a force analysis), computed once by the
+    /// caller.
+    pub notes: &'a [NoteTable],
     /// The force analysis and its tables 3–5, when the project asks for one.
     pub forces: Option<&'a (ForceAnalysis, ForceTables)>,
-    /// This sheet's number and the number of sheets of the project, for the title block.
-    pub sheet_no: u32,
-    pub sheet_count: u32,
 }
 
 const TOP: f64 = 12.0;
@@ -103,25 +107,17 @@ const FORCES_WIDTHS: [f64; 3] = [FORCES_MIN_W, 430.0, 390.0];
 /// fit it comfortably.
 fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, bool), TooLong> {
     let m = &inp.project.mechanism;
-    let lang = inp.info.language;
+    let lang = inp.ctx.info.language;
     let (l, c) = (LeverLabels::get(lang), Common::get(lang));
     let inner = frame::inner();
-    let mut groups = Vec::new();
-
-    let mut fr = Group::new("frame", Rect::new(0.0, 0.0, A1_W, A1_H));
-    frame::frame(&mut fr);
 
     // The force drawings' input (tables 3–5 as drawn), to size the regions by.
-    let force_input = inp.forces.map(|(fa, ft)| {
-        let (t3, t4, t5) = (&ft.inertia, &ft.reactions, &ft.balance);
+    let force_input = inp.forces.map(|(fa, _)| {
+        let (t3, t4, t5) = (&inp.notes[2], &inp.notes[3], &inp.notes[4]);
         let tables = vec![
-            Table { corner: c.link_col().into(), ..with_units(sheet_table(t3, l.inertia_table(), lang), t3, c) },
-            Table { cell_w: 16.0, ..sheet_table(t4, l.reaction_table(), lang) },
-            Table {
-                cell_w: 18.0,
-                header: vec![c.value().to_string()],
-                ..with_units(sheet_table(t5, l.balance_table(), lang), t5, c)
-            },
+            Table { corner: c.link_col().into(), ..with_units(sheet_table(t3, lang), t3, lang) },
+            Table { cell_w: 16.0, ..sheet_table(t4, lang) },
+            Table { cell_w: 18.0, header: vec![c.value().to_string()], ..with_units(sheet_table(t5, lang), t5, lang) },
         ];
         ForcesInput { m, fa, state: &k.assigned.state, phi_deg: k.assigned.phi.to_degrees(), l, c, lang, tables }
     });
@@ -183,9 +179,8 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
 
     // Right column: the tables above the title block decide how tall the velocity plans are.
     let right_x0 = left_x1 + 6.0;
-    let (vt, at) = (&inp.tables.velocities, &inp.tables.accelerations);
-    let t1 = Table { corner: c.position_col().into(), ..sheet_table(vt, l.velocity_table(), lang) };
-    let t2 = Table { corner: c.position_col().into(), ..sheet_table(at, l.acceleration_table(), lang) };
+    let t1 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[0], lang) };
+    let t2 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[1], lang) };
     let (w1, h1) = t1.size();
     let (w2, h2) = t2.size();
     let right_w = inner.x1 - 4.0 - right_x0;
@@ -254,32 +249,22 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         extra.push(fg);
         extra.extend(side.filter(|g| !g.items.is_empty()));
     }
-    let organisation = inp.info.organisation();
-    let mut tb = Group::new("title-block", frame::title_block_rect());
-    frame::title_block(
-        &mut tb,
-        c,
-        &TitleBlock {
-            designation: inp.info.designation(),
-            sheet_name: if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() },
-            project_title: inp.info.title(),
-            student: &inp.info.student,
-            supervisor: &inp.info.supervisor,
-            organisation: &organisation,
-            scale: &fmt::localise(&scale::ratio(mu_l), lang),
-            sheet_no: inp.sheet_no,
-            sheet_count: inp.sheet_count,
-        },
-    )?;
-    groups.extend([fr, mech, vel, acc, tables, tb]);
+    let mut groups = vec![mech, vel, acc, tables];
     groups.extend(extra);
-    let title =
-        format!("{} — {}", inp.info.title(), if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() });
-    let scene = Scene { width: A1_W, height: A1_H, title, groups };
-    let mut layout = layout::measure(&scene);
-    layout.smallest_plan_mm = vdrawn.iter().chain(&adrawn).map(|p| p.size_mm[0].max(p.size_mm[1])).reduce(f64::min);
+    let composition = Composition {
+        name: if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() }.to_string(),
+        mu_l,
+        groups,
+        tables: Vec::new(),
+        results: serde_json::Value::Null,
+        diagnostics: Vec::new(),
+        smallest_plan_mm: vdrawn.iter().chain(&adrawn).map(|p| p.size_mm[0].max(p.size_mm[1])).reduce(f64::min),
+    };
+    let scene = scaffold::scene(inp.ctx, inp.kind, &composition)?;
+    let layout = scaffold::measure(&scene, &composition);
     Ok((
         Composed {
+            composition,
             scene,
             layout,
             scales: Scales { mu_l, mu_v, mu_a, velocity_plans: vdrawn, acceleration_plans: adrawn },
@@ -383,18 +368,13 @@ fn plans_region(
     (drawn, sizing.common.then(|| sizing.mu[0]))
 }
 
-fn sheet_table(t: &NumTable, title: &str, lang: Language) -> Table {
-    let rows: Vec<(LabelText, Vec<String>)> = t
-        .rows
-        .iter()
-        .map(|r| {
-            let sub = LeverLabels::get(lang).force_sub(&r.symbol, &r.sub);
-            (LabelText::new(r.symbol.clone(), sub), r.values.iter().map(|&v| fmt::value(v, lang)).collect())
-        })
-        .collect();
+/// A note table as sheet 1 draws it: labels without units (the title names them), cells
+/// at least 11 mm wide.
+fn sheet_table(n: &NoteTable, lang: Language) -> Table {
+    let rows = scaffold::drawn_rows(n, lang, false);
     Table {
-        title: title.to_string(),
-        header: t.columns.clone(),
+        title: n.title.clone(),
+        header: n.column_titles.clone(),
         label_w: label_column(&rows),
         rows,
         cell_w: 11.0,
@@ -403,15 +383,9 @@ fn sheet_table(t: &NumTable, title: &str, lang: Language) -> Table {
 }
 
 /// A table whose rows carry their own units (the title names none): "m, kg", "J_S, kg·m²".
-fn with_units(mut table: Table, t: &NumTable, c: &Common) -> Table {
-    for ((label, _), r) in table.rows.iter_mut().zip(&t.rows) {
-        let unit = c.si_unit(&r.unit);
-        if !unit.is_empty() {
-            label.tail = format!(", {unit}");
-        }
-    }
-    table.label_w = label_column(&table.rows);
-    table
+fn with_units(table: Table, n: &NoteTable, lang: Language) -> Table {
+    let rows = scaffold::drawn_rows(n, lang, true);
+    Table { label_w: label_column(&rows), rows, ..table }
 }
 
 /// The label column's width: the widest label and 1.5 mm either side, at least 14 mm.

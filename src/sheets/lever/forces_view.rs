@@ -23,7 +23,8 @@ use crate::lever::load::{Load, Stroke};
 use crate::lever::plans::{Plan, velocity_plan};
 use crate::num::math::Norm;
 use crate::num::tol;
-use crate::report::lever::load_letter;
+use crate::report::ForceKind;
+use crate::report::lever::load_kind;
 use kurbo::{Point, Rect, Vec2};
 
 /// Longest and shortest force arrow on a group drawing or the lever, mm. A force whose
@@ -306,7 +307,7 @@ fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec
         items.push(value_item(inp, force_label(inp, inner.kind, inner.on), inner.force.norm(), inp.c.unit_n(), false));
     }
     for il in inp.fa.forces.inertia.iter().filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0) {
-        let label = LabelText::new("M", inp.l.force_sub("M", &format!("i{}", inp.m.links[il.link].number)));
+        let label = LabelText::new("M", inp.l.force(ForceKind::Inertia, &inp.m.links[il.link].number.to_string()));
         items.push(value_item(inp, label, il.moment.abs(), inp.c.unit_n_m(), false));
     }
     with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
@@ -410,11 +411,8 @@ fn force_label(inp: &ForcesInput, kind: Kind, on: usize) -> LabelText {
     let n = |l: usize| if l == FRAME { 0 } else { inp.m.links[l].number };
     match kind {
         Kind::Weight => LabelText::new("G", n(on).to_string()),
-        Kind::Inertia => LabelText::new("P", inp.l.force_sub("P", &format!("i{}", n(on)))),
-        Kind::Load(i) => {
-            let sub = format!("{}{}", load_letter(inp.fa.model.loads[i].kind), n(on));
-            LabelText::new("P", inp.l.force_sub("P", &sub))
-        }
+        Kind::Inertia => LabelText::new("P", inp.l.force(ForceKind::Inertia, &n(on).to_string())),
+        Kind::Load(i) => LabelText::new("P", inp.l.force(load_kind(inp.fa.model.loads[i].kind), &n(on).to_string())),
         Kind::Reaction { from, part } => {
             let main = match part {
                 Part::Whole => "R",
@@ -628,7 +626,7 @@ fn draw_group_geometry(
         labels.add(
             mid,
             mid - at,
-            LabelText::new("M", inp.l.force_sub("M", &format!("i{}", m.links[il.link].number))),
+            LabelText::new("M", inp.l.force(ForceKind::Inertia, &m.links[il.link].number.to_string())),
             3.5,
         );
     }

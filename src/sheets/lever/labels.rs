@@ -1,5 +1,7 @@
 //! Sheet 1's texts (`templates/labels/lever.yaml`).
 
+use crate::report::ForceKind;
+
 crate::label_set! {
     /// Every word of sheet 1 that is not shared with the other sheets.
     pub struct LeverLabels = "lever.yaml" {
@@ -40,21 +42,16 @@ crate::label_set! {
 }
 
 impl LeverLabels {
-    /// A force symbol's subscript in the sheet's language: "i2" → "и2", "m" → "ур", "c5" →
-    /// "пс5" on a Russian sheet; other symbols' subscripts as they are.
-    pub fn force_sub(&self, main: &str, sub: &str) -> String {
-        if !matches!(main, "P" | "M" | "P′" | "P″") {
-            return sub.to_string();
-        }
-        let mut chars = sub.chars();
-        let rest: String = chars.clone().skip(1).collect();
-        match chars.next() {
-            Some('i') => format!("{}{rest}", self.sub_inertia()),
-            Some('m') if rest.is_empty() => self.sub_balancing().to_string(),
-            Some('c') => format!("{}{rest}", self.sub_resistance()),
-            Some('g') => format!("{}{rest}", self.sub_gas()),
-            _ => sub.to_string(),
-        }
+    /// A force's subscript in the sheet's language: its kind's letter and the link number
+    /// ("и2" for the inertia force of link 2 on a Russian sheet, "ур" for the balancing one).
+    pub fn force(&self, kind: ForceKind, link: &str) -> String {
+        let letter = match kind {
+            ForceKind::Inertia => self.sub_inertia(),
+            ForceKind::Balancing => self.sub_balancing(),
+            ForceKind::Resistance => self.sub_resistance(),
+            ForceKind::Gas => self.sub_gas(),
+        };
+        format!("{letter}{link}")
     }
 }
 
@@ -70,11 +67,11 @@ mod tests {
         }
         assert_eq!(LeverLabels::get(Language::Uz).position("4′"), "4′-holat");
         let ru = LeverLabels::get(Language::Ru);
+        use ForceKind::*;
         assert_eq!(
-            [ru.force_sub("P", "i2"), ru.force_sub("P′", "m"), ru.force_sub("P", "c5"), ru.force_sub("M", "i4")],
-            ["и2", "ур", "пс5", "и4"]
+            [ru.force(Inertia, "2"), ru.force(Balancing, ""), ru.force(Resistance, "5"), ru.force(Gas, "3")],
+            ["и2", "ур", "пс5", "г3"]
         );
-        assert_eq!(ru.force_sub("R", "12"), "12", "reactions keep their link numbers");
-        assert_eq!(LeverLabels::get(Language::En).force_sub("P", "m"), "m");
+        assert_eq!(LeverLabels::get(Language::En).force(Balancing, ""), "m");
     }
 }

@@ -9,12 +9,13 @@ mod mechanism_view;
 mod plans_view;
 pub mod results;
 
-use super::{COURSE, Context, Sheet, SheetError, SheetKind, SheetOutput};
-use crate::drawing::labels::{Common, Language};
+use super::scaffold::{self, Composition};
+use super::{COURSE, Context, Sheet, SheetError, SheetKind};
+use crate::drawing::labels::Language;
 use crate::lever::analysis::{self, ForceAnalysis, Kinematics};
 use crate::project::{LeverProject, Project};
+use crate::report::NoteTable;
 use crate::report::lever::{ForceTables, KinematicTables, force_tables, kinematic_tables};
-use crate::report::{NoteTable, NumTable};
 use compose::Composed;
 use labels::LeverLabels;
 
@@ -38,6 +39,8 @@ pub struct LeverBuild {
     /// The force analysis at φ1 with tables 3–5, when the project asks for one.
     pub forces: Option<(ForceAnalysis, ForceTables)>,
     pub tables: KinematicTables,
+    /// The note's tables 1–5 in the sheet's language.
+    pub notes: Vec<NoteTable>,
     pub composed: Composed,
 }
 
@@ -54,57 +57,55 @@ pub fn build(ctx: &Context, p: &LeverProject) -> Result<LeverBuild, SheetError> 
         }
         None => None,
     };
-    let input = compose::Input {
-        info: ctx.info,
-        project: p,
-        tables: &tables,
-        forces: forces.as_ref(),
-        sheet_no: KIND.number,
-        sheet_count: ctx.sheet_count,
-    };
+    let notes = note_tables(ctx.info.language, &tables, forces.as_ref().map(|f| &f.1));
+    let input = compose::Input { ctx, kind: KIND, project: p, notes: &notes, forces: forces.as_ref() };
     let composed = compose::compose(&input, &kinematics)?;
-    Ok(LeverBuild { kinematics, forces, tables, composed })
+    Ok(LeverBuild { kinematics, forces, tables, notes, composed })
+}
+
+/// The note's tables with their titles in the sheet's language: 1 and 2, and 3–5 with a
+/// force analysis.
+fn note_tables(lang: Language, k: &KinematicTables, f: Option<&ForceTables>) -> Vec<NoteTable> {
+    let l = LeverLabels::get(lang);
+    let note = |table: &crate::report::NumTable, title: &str| scaffold::note(lang, table.clone(), title, vec![], false);
+    let mut out = vec![note(&k.velocities, l.velocity_table()), note(&k.accelerations, l.acceleration_table())];
+    if let Some(t) = f {
+        out.extend([
+            note(&t.inertia, l.inertia_table()),
+            note(&t.reactions, l.reaction_table()),
+            note(&t.balance, l.balance_table()),
+        ]);
+    }
+    out
 }
 
 impl LeverBuild {
-    /// The note's tables with their titles, headings and units in the sheet's language.
-    pub fn note_tables(&self, lang: Language) -> Vec<NoteTable> {
-        let (l, c) = (LeverLabels::get(lang), Common::get(lang));
-        let note = |stem: &'static str, title: &str, table: &NumTable| NoteTable {
-            stem,
-            title: title.into(),
-            headings: [c.quantity().into(), c.unit().into()],
-            units: table.rows.iter().map(|r| c.si_unit(&r.unit).to_string()).collect(),
-            // Force symbols' subscripts in the sheet's language (P_и on a Russian sheet).
-            table: NumTable {
-                rows: table
-                    .rows
-                    .iter()
-                    .map(|r| crate::report::Row { sub: l.force_sub(&r.symbol, &r.sub), ..r.clone() })
-                    .collect(),
-                ..table.clone()
-            },
-            decimal_comma: lang != Language::En,
-            column_titles: Vec::new(),
-            whole_numbers: false,
-        };
-        let mut out = vec![
-            note("velocities", l.velocity_table(), &self.tables.velocities),
-            note("accelerations", l.acceleration_table(), &self.tables.accelerations),
-        ];
-        if let Some((_, t)) = &self.forces {
-            out.extend([
-                note("inertia", l.inertia_table(), &t.inertia),
-                note("reactions", l.reaction_table(), &t.reactions),
-                note("balancing", l.balance_table(), &t.balance),
-            ]);
-        }
-        out
-    }
-
     /// The sheet's section of `results.json`.
     pub fn results(&self, p: &LeverProject) -> serde_json::Value {
         results::section(&p.mechanism, &self.kinematics, &self.composed, self.forces.as_ref().map(|f| &f.0))
+    }
+
+    /// What the user should know: an output with more extreme positions than the course's
+    /// two.
+    fn diagnostics(&self, p: &LeverProject) -> Vec<String> {
+        let motion = &self.kinematics.motion;
+        if motion.extremes.len() <= 2 {
+            return Vec::new();
+        }
+        let angles: Vec<String> = motion
+            .extremes
+            .iter()
+            .map(|&t| {
+                let phi = (motion.sense * (t - motion.theta0)).rem_euclid(std::f64::consts::TAU);
+                format!("θ = {:.1}° (φ = {:.1}°)", t.to_degrees(), phi.to_degrees())
+            })
+            .collect();
+        vec![format!(
+            "the output ({}) has {} extreme positions per crank turn, at {}: a slider or rocker driven as the course assumes has two, so the scheme is almost surely not the one meant (check the lengths, the guide and the branches)",
+            crate::lever::motion::output_name(&p.mechanism),
+            motion.extremes.len(),
+            angles.join(", ")
+        )]
     }
 }
 
@@ -113,33 +114,11 @@ impl Sheet for LeverSheet<'_> {
         KIND
     }
 
-    fn build(&self, ctx: &Context) -> Result<SheetOutput, SheetError> {
+    fn compose(&self, ctx: &Context) -> Result<Composition, SheetError> {
         let b = build(ctx, self.project)?;
-        let mut diagnostics: Vec<String> = Vec::new();
-        let motion = &b.kinematics.motion;
-        if motion.extremes.len() > 2 {
-            let angles: Vec<String> = motion
-                .extremes
-                .iter()
-                .map(|&t| {
-                    let phi = (motion.sense * (t - motion.theta0)).rem_euclid(std::f64::consts::TAU);
-                    format!("θ = {:.1}° (φ = {:.1}°)", t.to_degrees(), phi.to_degrees())
-                })
-                .collect();
-            diagnostics.push(format!(
-                "the output ({}) has {} extreme positions per crank turn, at {}: a slider or rocker driven as the course assumes has two, so the scheme is almost surely not the one meant (check the lengths, the guide and the branches)",
-                crate::lever::motion::output_name(&self.project.mechanism),
-                motion.extremes.len(),
-                angles.join(", ")
-            ));
-        }
-        diagnostics.extend(b.composed.layout.problems.iter().map(|p| format!("layout: {p}")));
-        Ok(SheetOutput {
-            number: self.kind().number,
-            tables: b.note_tables(ctx.info.language),
-            results: b.results(self.project),
-            scene: b.composed.scene,
-            diagnostics,
-        })
+        let results = b.results(self.project);
+        let diagnostics = b.diagnostics(self.project);
+        let c = b.composed.composition;
+        Ok(Composition { results, diagnostics, tables: b.notes, ..c })
     }
 }

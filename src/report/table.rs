@@ -1,0 +1,279 @@
+//! A table of the explanatory note as typed data: every unit, every subscript word and every
+//! condition is a key that the sheet translates (no string is matched to decide anything),
+//! and every table, row and column has a stable identifier — the answer key that the CSV,
+//! the Markdown, `results.json` and the SVG share (`sheet1.velocities.v_B.3`).
+
+use crate::gears::planetary::ConditionKind;
+use serde::Serialize;
+
+/// A unit as the note's tables write it; the CSV writes [`Unit::si`], a sheet its own
+/// language's word for it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Unit {
+    /// A ratio, a count, a coefficient.
+    None,
+    Mm,
+    MPerS,
+    MPerS2,
+    PerS,
+    PerS2,
+    Kg,
+    KgM2,
+    N,
+    NM,
+    Deg,
+    Percent,
+}
+
+impl Unit {
+    /// The unit as the CSV (for programs) writes it, in SI notation.
+    pub const fn si(self) -> &'static str {
+        match self {
+            Unit::None => "",
+            Unit::Mm => "mm",
+            Unit::MPerS => "m/s",
+            Unit::MPerS2 => "m/s²",
+            Unit::PerS => "1/s",
+            Unit::PerS2 => "1/s²",
+            Unit::Kg => "kg",
+            Unit::KgM2 => "kg·m²",
+            Unit::N => "N",
+            Unit::NM => "N·m",
+            Unit::Deg => "°",
+            Unit::Percent => "%",
+        }
+    }
+}
+
+/// A subscript word that the sheet's language translates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SubWord {
+    /// ε measured on the drawing.
+    Drawn,
+    /// The planetary ratio required.
+    Required,
+    /// The cam's pitch and working profiles.
+    Pitch,
+    Work,
+    Roller,
+    AllowedRise,
+    AllowedReturn,
+    MaxRise,
+    MaxReturn,
+}
+
+impl SubWord {
+    /// The word's part of an identifier.
+    pub const fn key(self) -> &'static str {
+        match self {
+            SubWord::Drawn => "drawn",
+            SubWord::Required => "required",
+            SubWord::Pitch => "pitch",
+            SubWord::Work => "work",
+            SubWord::Roller => "roller",
+            SubWord::AllowedRise => "allowed_rise",
+            SubWord::AllowedReturn => "allowed_return",
+            SubWord::MaxRise => "max_rise",
+            SubWord::MaxReturn => "max_return",
+        }
+    }
+}
+
+/// The kind of a force or moment, whose letter is its subscript (P_i, P_ур on a Russian
+/// sheet).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ForceKind {
+    Inertia,
+    Balancing,
+    Resistance,
+    Gas,
+}
+
+impl ForceKind {
+    /// The letter the identifiers use (the English sheet's).
+    pub const fn key(self) -> &'static str {
+        match self {
+            ForceKind::Inertia => "i",
+            ForceKind::Balancing => "m",
+            ForceKind::Resistance => "c",
+            ForceKind::Gas => "g",
+        }
+    }
+}
+
+/// A symbol's subscript.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Sub {
+    None,
+    /// The same in every language: a point's or relation's name (B, BA, S4), a link or
+    /// wheel number (2, 2′), a standard letter (r_b, α_w).
+    Name(String),
+    Word(SubWord),
+    /// A force's letter and the link number after it (P_i2, P_c5; P_m with none).
+    Force(ForceKind, String),
+}
+
+impl Sub {
+    pub fn name(s: impl Into<String>) -> Sub {
+        Sub::Name(s.into())
+    }
+
+    /// The subscript's part of an identifier.
+    pub fn key(&self) -> String {
+        match self {
+            Sub::None => String::new(),
+            Sub::Name(s) => ascii_key(s),
+            Sub::Word(w) => w.key().to_string(),
+            Sub::Force(k, n) => format!("{}{}", k.key(), ascii_key(n)),
+        }
+    }
+}
+
+/// What a row is: a symbol with its subscript, or a condition by name.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Quantity {
+    /// A symbol as printed in every language ("v", "aⁿ", "ω") and its subscript.
+    Symbol(&'static str, Sub),
+    /// A planetary stage's condition, named in the sheet's language.
+    Condition(ConditionKind),
+}
+
+/// One row of a table: its identifier within the table, what it is, its unit, a value per
+/// column.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// Unique within its table, ASCII: "v_B", "omega_2", "P_m_lever", "neighbours".
+    pub key: String,
+    pub quantity: Quantity,
+    pub unit: Unit,
+    pub values: Vec<f64>,
+    /// A count (tooth numbers, planets, a condition's sides): printed without decimals when
+    /// whole.
+    pub count: bool,
+}
+
+impl Row {
+    /// A row whose key is made from its symbol and subscript ("ω", 2 → "omega_2").
+    pub fn new(symbol: &'static str, sub: Sub, unit: Unit, values: Vec<f64>) -> Row {
+        let key = match sub.key() {
+            s if s.is_empty() => ascii_key(symbol),
+            s => format!("{}_{s}", ascii_key(symbol)),
+        };
+        Row { key, quantity: Quantity::Symbol(symbol, sub), unit, values, count: false }
+    }
+
+    /// The same row under an explicit key (for symbols a rule would name badly: "P′" →
+    /// "P_m_lever").
+    pub fn keyed(mut self, key: &str) -> Row {
+        self.key = key.to_string();
+        self
+    }
+
+    /// The same row marked as a count.
+    pub fn counted(mut self) -> Row {
+        self.count = true;
+        self
+    }
+
+    /// A condition's row: its value, its limit and 1 when it is met, else 0.
+    pub fn condition(kind: ConditionKind, values: Vec<f64>) -> Row {
+        Row { key: kind.key().to_string(), quantity: Quantity::Condition(kind), unit: Unit::None, values, count: true }
+    }
+}
+
+/// A column: its identifier and its heading as every language writes it (a position label
+/// "4′", a link number), or `None` where the sheet names it in its language.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Column {
+    pub key: String,
+    pub heading: String,
+}
+
+impl Column {
+    /// A column headed by a label the same in every language ("0", "4′", "2").
+    pub fn labelled(heading: &str) -> Column {
+        Column { key: ascii_key(heading), heading: heading.to_string() }
+    }
+
+    /// A column with a key and a heading of its own ("abs", "|R|").
+    pub fn new(key: &str, heading: &str) -> Column {
+        Column { key: key.to_string(), heading: heading.to_string() }
+    }
+}
+
+/// A table of numbers with its identifier.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NumTable {
+    /// The table's identifier within its sheet and its files' stem: "velocities" →
+    /// `sheet1-velocities.csv`, answers `sheet1.velocities.…`.
+    pub id: &'static str,
+    pub columns: Vec<Column>,
+    pub rows: Vec<Row>,
+}
+
+impl NumTable {
+    /// A table of one value per row (its column is keyed "value").
+    pub fn single(id: &'static str, rows: Vec<Row>) -> NumTable {
+        NumTable { id, columns: vec![Column::new("value", "")], rows }
+    }
+
+    /// The identifier of a row's value in column `c` under `prefix` ("sheet1"): the
+    /// column's key is left out of a single-column table's.
+    pub fn cell_id(&self, prefix: &str, row: &Row, c: usize) -> String {
+        let base = format!("{prefix}.{}.{}", self.id, row.key);
+        if self.columns.len() == 1 { base } else { format!("{base}.{}", self.columns[c].key) }
+    }
+}
+
+/// An identifier's ASCII form of a printed symbol or name: Greek letters by their names,
+/// modifier letters by their letters, a prime as `p`, other punctuation as `_` (an XML id
+/// and a shell word both take it).
+pub fn ascii_key(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        let name = match c {
+            'α' => "alpha",
+            'β' => "beta",
+            'γ' => "gamma",
+            'δ' => "delta",
+            'Δ' => "Delta",
+            'ε' => "epsilon",
+            'θ' => "theta",
+            'μ' => "mu",
+            'ρ' => "rho",
+            'φ' => "phi",
+            'ψ' => "psi",
+            'ω' => "omega",
+            'ⁿ' => "n",
+            'ᵗ' => "t",
+            'ᵏ' => "k",
+            'ʳ' => "r",
+            '²' => "2",
+            '′' => "p",
+            '″' => "pp",
+            '*' => "star",
+            c if c.is_alphanumeric() || c == '_' || c == '-' => {
+                out.push(c);
+                continue;
+            }
+            _ => "_",
+        };
+        out.push_str(name);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_are_ascii_words() {
+        assert_eq!(Row::new("ω", Sub::name("2"), Unit::PerS, vec![]).key, "omega_2");
+        assert_eq!(Row::new("aⁿ", Sub::name("BA"), Unit::MPerS2, vec![]).key, "an_BA");
+        assert_eq!(Row::new("P", Sub::Force(ForceKind::Resistance, "5".into()), Unit::N, vec![]).key, "P_c5");
+        assert_eq!(Row::new("r", Sub::Word(SubWord::Pitch), Unit::Mm, vec![]).key, "r_pitch");
+        assert_eq!(Column::labelled("4′").key, "4p");
+        assert_eq!(ascii_key("d²s/dφ²"), "d2s_dphi2");
+    }
+}

@@ -1,0 +1,220 @@
+//! Sheet 3's regions, chosen by content: the diagrams' column as wide as its plan, the
+//! tables not kept in that column in a strip left of the title block, and the nomogram and
+//! the profile arranged where each comes out largest.
+
+use super::diagrams;
+use crate::drawing::frame;
+use crate::drawing::scale;
+use crate::drawing::table::{self, Table};
+use kurbo::{Rect, Vec2};
+
+/// The sheet inside its frame, with a 4 mm margin.
+pub const SHEET: Rect = Rect { x0: 24.0, y0: 9.0, x1: 832.0, y1: 585.0 };
+/// The diagrams' column is at most this wide, mm.
+pub const LEFT_MAX: f64 = 320.0;
+/// Between regions, mm.
+const GAP: f64 = 6.0;
+/// Room a view needs besides its drawing: its title and its scale above, its margins.
+const VIEW_TOP: f64 = 15.0;
+const VIEW_BOTTOM: f64 = 3.0;
+const VIEW_SIDES: f64 = 8.0;
+/// The nomogram's drawing is at least this long on its longer side when the profile can
+/// be drawn smaller to allow it, mm.
+const NOMOGRAM_MIN_MM: f64 = 130.0;
+
+/// The regions of the sheet and the views' scales, chosen by content.
+pub struct Regions {
+    pub diagrams: Rect,
+    pub law_tables: Option<Rect>,
+    pub tables: Rect,
+    pub nomogram: Rect,
+    pub profile: Rect,
+    pub nomogram_mu: f64,
+    pub profile_mu: f64,
+}
+
+/// A view's box in metres: its lower and upper corners.
+type Extent = (Vec2, Vec2);
+
+/// What the regions are chosen for: the views' boxes, the diagrams' plan and the height of
+/// the column's texts, the law's tables and the rest.
+pub struct Content<'a> {
+    pub nomogram: Extent,
+    pub profile: Extent,
+    pub plan: &'a diagrams::Plan,
+    pub text_h: f64,
+    pub law: &'a [Table],
+    pub rest: &'a [Table],
+}
+
+/// The room the column and the strip leave.
+struct Frame {
+    left_w: f64,
+    column_used: f64,
+    right_x: f64,
+}
+
+impl Frame {
+    fn of(c: &Content) -> Frame {
+        let left_w = c.plan.width + 4.0;
+        Frame { left_w, column_used: c.text_h + c.plan.height + 10.0, right_x: SHEET.x0 + left_w + GAP }
+    }
+
+    /// The strip for tables of `sizes` left of the title block, as low as fits.
+    fn strip(&self, sizes: &[(f64, f64)]) -> Rect {
+        let tb = frame::title_block_rect();
+        let h = table::flow_height(sizes, tb.x0 - GAP - self.right_x, 3.0).unwrap_or(SHEET.height() / 2.0);
+        Rect::new(self.right_x, SHEET.y1 - h, tb.x0 - GAP, SHEET.y1)
+    }
+
+    /// The room for the views above the strip `tables`.
+    fn views_above(&self, tables: Rect) -> Rect {
+        Rect::new(self.right_x, SHEET.y0, SHEET.x1, tables.y0.min(frame::title_block_rect().y0) - GAP)
+    }
+}
+
+fn sizes(ts: &[Table]) -> Vec<(f64, f64)> {
+    ts.iter().map(Table::size).collect()
+}
+
+/// The sheet's regions. Three arrangements of the views are tried, and the one with the
+/// larger profile wins (then the larger nomogram, then the third):
+/// - the nomogram under the notes in the diagrams' column, the profile alone on the right;
+/// - both on the right side by side, the profile at the largest GOST scale that leaves the
+///   nomogram [`NOMOGRAM_MIN_MM`], the law's tables under the notes when they fit;
+/// - both on the right, the nomogram under the profile, the same way.
+pub fn regions(c: &Content) -> Regions {
+    let f = Frame::of(c);
+    let below = nomogram_in_column(c, &f);
+    // Both on the right.
+    let law_h: f64 = sizes(c.law).iter().map(|s| s.1 + 3.0).sum();
+    let law_fits = f.column_used + law_h <= SHEET.height() && sizes(c.law).iter().all(|s| s.0 <= f.left_w);
+    let all: Vec<(f64, f64)> = sizes(c.law).into_iter().chain(sizes(c.rest)).collect();
+    let rest = sizes(c.rest);
+    let tables = f.strip(if law_fits { &rest } else { &all });
+    let views = f.views_above(tables);
+    let law_tables = law_fits.then(|| Rect::new(SHEET.x0, SHEET.y1 - law_h, SHEET.x0 + f.left_w, SHEET.y1));
+    let diagrams = Rect::new(SHEET.x0, SHEET.y0, SHEET.x0 + f.left_w, law_tables.map_or(SHEET.y1, |r| r.y0 - GAP));
+    let around = |profile_mu, profile, nomogram_mu, nomogram| Regions {
+        diagrams,
+        law_tables,
+        tables,
+        nomogram,
+        profile,
+        nomogram_mu,
+        profile_mu,
+    };
+    let beside = side_by_side(c, views).map(|(pm, p, nm, n)| around(pm, p, nm, n));
+    let stacked = nomogram_under_profile(c, views).map(|(pm, p, nm, n)| around(pm, p, nm, n));
+    // The larger profile wins, then the larger nomogram; on a tie, the views together on the
+    // right (under a wide, low profile the sheet's middle is otherwise left empty).
+    let better =
+        |a: &Regions, b: &Regions| (a.profile_mu, a.nomogram_mu) < (b.profile_mu * 0.999, b.nomogram_mu * 0.999);
+    let best = [stacked, below, beside].into_iter().flatten().reduce(|a, b| if better(&b, &a) { b } else { a });
+    // Nothing fits at any scale (an extent of no size): the views at 1:1 side by side.
+    best.unwrap_or_else(|| {
+        let half = views.width() / 2.0;
+        let nomogram = Rect::new(views.x0, views.y0, views.x0 + half - GAP, views.y1);
+        around(0.001, Rect::new(views.x0 + half, views.y0, views.x1, views.y1), 0.001, nomogram)
+    })
+}
+
+/// The nomogram under the notes in the diagrams' column, the profile alone on the right.
+fn nomogram_in_column(c: &Content, f: &Frame) -> Option<Regions> {
+    let all: Vec<(f64, f64)> = sizes(c.law).into_iter().chain(sizes(c.rest)).collect();
+    let tables = f.strip(&all);
+    let views = f.views_above(tables);
+    let column = Rect::new(SHEET.x0, SHEET.y0 + f.column_used + GAP, SHEET.x0 + f.left_w, SHEET.y1);
+    let n = fit_view(c.nomogram, column, false).filter(|(mu, _)| longer_side(c.nomogram, *mu) >= NOMOGRAM_MIN_MM * 0.6);
+    let p = fit_view(c.profile, views, true);
+    n.zip(p).map(|((nomogram_mu, nomogram), (profile_mu, profile))| Regions {
+        diagrams: Rect::new(SHEET.x0, SHEET.y0, SHEET.x0 + f.left_w, nomogram.y0 - GAP),
+        law_tables: None,
+        tables,
+        nomogram,
+        profile: centred_across(profile, views),
+        nomogram_mu,
+        profile_mu,
+    })
+}
+
+/// Both views on the right side by side, the room left over shared out between and round
+/// the two.
+fn side_by_side(c: &Content, views: Rect) -> Option<(f64, Rect, f64, Rect)> {
+    let found = profile_and_nomogram((c.profile, c.nomogram), views, |profile| {
+        Rect::new(views.x0, views.y0, views.x1 - profile.width() - GAP, views.y1)
+    });
+    found.map(|(profile_mu, profile, nomogram_mu, nomogram)| {
+        let slack = ((views.width() - profile.width() - nomogram.width() - GAP) / 3.0).max(0.0);
+        let nomogram = nomogram + Vec2::new(slack, 0.0);
+        let px = (nomogram.x1 + GAP + slack).min(views.x1 - profile.width());
+        (profile_mu, profile + Vec2::new(px - profile.x0, 0.0), nomogram_mu, nomogram)
+    })
+}
+
+/// The nomogram under the profile on the right (a wide, low profile: a rocker's pivots on
+/// their arc above the cam).
+fn nomogram_under_profile(c: &Content, views: Rect) -> Option<(f64, Rect, f64, Rect)> {
+    let found = profile_and_nomogram((c.profile, c.nomogram), views, |profile| {
+        Rect::new(views.x0, profile.y1 + GAP, views.x1, views.y1)
+    });
+    found.map(|(pm, p, nm, n)| (pm, centred_across(p, views), nm, centred_across(n, views)))
+}
+
+/// Where a view draws: its region less its title, scale and margins.
+pub fn view_area(r: Rect) -> Rect {
+    Rect::new(r.x0 + VIEW_SIDES / 2.0, r.y0 + VIEW_TOP, r.x1 - VIEW_SIDES / 2.0, r.y1 - VIEW_BOTTOM)
+}
+
+/// The profile at the top left of `views` at the largest GOST scale that leaves the
+/// nomogram [`NOMOGRAM_MIN_MM`] in the room `rest(profile)` (else the largest profile with
+/// any nomogram): `(μ_profile, profile, μ_nomogram, nomogram)`.
+fn profile_and_nomogram(
+    (p_ext, n_ext): ((Vec2, Vec2), (Vec2, Vec2)),
+    views: Rect,
+    rest: impl Fn(Rect) -> Rect,
+) -> Option<(f64, Rect, f64, Rect)> {
+    let mut found = None;
+    for mu_p in scale::length_scales() {
+        let Some((_, profile)) = fit_at(p_ext, views, mu_p) else { continue };
+        let Some((mu_n, nomogram)) = fit_view(n_ext, rest(profile), false) else { continue };
+        let enough = longer_side(n_ext, mu_n) >= NOMOGRAM_MIN_MM;
+        if found.is_none() || enough {
+            found = Some((mu_p, profile, mu_n, nomogram));
+        }
+        if enough {
+            break;
+        }
+    }
+    found
+}
+
+/// The longer side of a view's drawing at `mu`, mm.
+fn longer_side((lo, hi): (Vec2, Vec2), mu: f64) -> f64 {
+    ((hi.x - lo.x) / mu).max((hi.y - lo.y) / mu)
+}
+
+/// The region a view of the box `ext` (metres) takes at `mu` at the top left of `room`, if it
+/// fits there.
+fn fit_at((lo, hi): (Vec2, Vec2), room: Rect, mu: f64) -> Option<(f64, Rect)> {
+    let (w, h) = ((hi.x - lo.x) / mu + VIEW_SIDES, (hi.y - lo.y) / mu + VIEW_TOP + VIEW_BOTTOM);
+    (w <= room.width() && h <= room.height()).then(|| (mu, Rect::new(room.x0, room.y0, room.x0 + w, room.y0 + h)))
+}
+
+/// The largest scale at which a view of the box `ext` fits `room` — a GOST one, or of the
+/// round series — and its region there.
+fn fit_view(ext: (Vec2, Vec2), room: Rect, gost: bool) -> Option<(f64, Rect)> {
+    let (lo, hi) = ext;
+    let need =
+        ((hi.x - lo.x) / (room.width() - VIEW_SIDES)).max((hi.y - lo.y) / (room.height() - VIEW_TOP - VIEW_BOTTOM));
+    if !(need.is_finite() && need > 0.0) {
+        return None;
+    }
+    let mu = if gost { scale::length_scale(need) } else { scale::round_up(need) };
+    fit_at(ext, room, mu)
+}
+
+/// `r` moved to the middle of `within` across.
+fn centred_across(r: Rect, within: Rect) -> Rect {
+    r + Vec2::new(within.x0 + (within.width() - r.width()) / 2.0 - r.x0, 0.0)
+}

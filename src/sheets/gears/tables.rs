@@ -1,0 +1,66 @@
+//! Sheet 2's tables: the wheels and the pair, the planetary stage and its conditions, as the
+//! note writes them and as the sheet draws them.
+
+use super::labels::GearLabels;
+use crate::drawing::fmt;
+use crate::drawing::labels::{Common, Language};
+use crate::drawing::scene::Group;
+use crate::drawing::table::{self, CELL_TEXT, Table};
+use crate::drawing::text::LabelText;
+use crate::gears::planetary::ConditionKind;
+use crate::project::GearsProject;
+use crate::report::{self, NoteTable, Quantity};
+use crate::sheets::scaffold;
+use kurbo::Rect;
+
+/// The note's tables in the sheet's language; `eps_drawn` is the contact ratio measured on
+/// the drawing.
+pub fn notes(p: &GearsProject, eps_drawn: f64, lang: Language) -> Vec<NoteTable> {
+    let (l, c) = (GearLabels::get(lang), Common::get(lang));
+    let mut out = vec![
+        scaffold::note(lang, report::gears::wheels(&p.pair), l.pair_table(), vec![l.wheel("1"), l.wheel("2")], true),
+        scaffold::note(lang, report::gears::pair(&p.pair, eps_drawn), l.pair_table(), vec![c.value().into()], true),
+    ];
+    if let Some(pl) = &p.planetary {
+        let stage = report::gears::stage(&pl.stage, pl.module);
+        out.push(scaffold::note(lang, stage, l.planetary_table(), vec![c.value().into()], true));
+        let columns = vec![l.value_col().into(), l.limit_col().into(), l.ok_col().into()];
+        out.push(scaffold::note(lang, report::gears::conditions(&pl.stage), l.conditions_table(), columns, true));
+    }
+    out
+}
+
+/// Draws the tables in `region`, in columns left to right.
+pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, lang: Language) -> Group {
+    let drawn = notes.iter().map(|n| sheet_table(n, tolerance, lang));
+    table::flow("tables", drawn, region, 4.0)
+}
+
+/// A table as sheet 2 draws it: units after the symbols, the conditions' verdicts in words,
+/// the ratio's condition with its tolerance, the pair's table as the wheels' continuation.
+fn sheet_table(n: &NoteTable, tolerance: Option<f64>, lang: Language) -> Table {
+    let (l, c) = (GearLabels::get(lang), Common::get(lang));
+    let conditions = n.table.id == "conditions";
+    let mut rows = scaffold::drawn_rows(n, lang, !conditions);
+    for ((label, cells), r) in rows.iter_mut().zip(&n.table.rows) {
+        if r.quantity == Quantity::Condition(ConditionKind::Ratio) {
+            // The ratio's condition is the stated tolerance.
+            let tol = tolerance.map(|t| format!(" ±{} %", fmt::trimmed(t * 100.0, lang))).unwrap_or_default();
+            *label = LabelText::new(format!("{}{tol}", label.main), "");
+        }
+        if conditions {
+            cells[2] = (if r.values[2] > 0.5 { l.yes() } else { l.no() }).to_string();
+        }
+    }
+    let label_w = rows.iter().map(|(x, _)| x.width(CELL_TEXT) + 4.0).fold(14.0, f64::max);
+    // The pair's table continues the wheels': titled as the continuation.
+    let title = if n.table.id == "pair" { table::continued_title(&n.title, c.continued()) } else { n.title.clone() };
+    Table {
+        title,
+        header: n.column_titles.clone(),
+        rows,
+        label_w,
+        cell_w: 14.0,
+        corner: if conditions { l.condition_col().into() } else { c.quantity().into() },
+    }
+}

@@ -1,0 +1,119 @@
+//! What every sheet shares, done once: a sheet module composes its drawings, note tables and
+//! results ([`Composition`]); [`finish`] adds the frame and the title block, measures the
+//! layout, gathers the diagnostics and the `layout` block of the results. The note tables'
+//! keys become words here ([`note`], [`drawn_rows`]).
+
+use super::{Context, SheetError, SheetKind, SheetOutput, words};
+use crate::drawing::fmt;
+use crate::drawing::frame::{self, A1_H, A1_W};
+use crate::drawing::labels::{Common, Language};
+use crate::drawing::layout::{self, Layout};
+use crate::drawing::scale;
+use crate::drawing::scene::{Group, Scene};
+use crate::drawing::text::{LabelText, TooLong};
+use crate::report::{NoteTable, NumTable, Row};
+use kurbo::Rect;
+
+/// A sheet as its module composes it: everything but the frame and the title block.
+pub struct Composition {
+    /// The sheet's name, in the title block and the document's title.
+    pub name: String,
+    /// The scale the title block states: the main view's μ_l, m/mm.
+    pub mu_l: f64,
+    /// The drawings, tables and notes, in drawing order.
+    pub groups: Vec<Group>,
+    /// The note's tables, in order.
+    pub tables: Vec<NoteTable>,
+    /// The sheet's section of `results.json`, from its typed results; [`finish`] adds the
+    /// `layout` block.
+    pub results: serde_json::Value,
+    /// What the user should know about this sheet besides its layout.
+    pub diagnostics: Vec<String>,
+    /// The longer side of the smallest velocity or acceleration plan, mm (sheet 1).
+    pub smallest_plan_mm: Option<f64>,
+}
+
+/// The whole sheet: the frame, the composition's groups, the title block.
+pub fn scene(ctx: &Context, kind: SheetKind, c: &Composition) -> Result<Scene, TooLong> {
+    let lang = ctx.info.language;
+    let mut fr = Group::new("frame", Rect::new(0.0, 0.0, A1_W, A1_H));
+    frame::frame(&mut fr);
+    let tb = ctx.title_block(Common::get(lang), &c.name, &fmt::localise(&scale::ratio(c.mu_l), lang), kind.number)?;
+    let mut groups = Vec::with_capacity(c.groups.len() + 2);
+    groups.push(fr);
+    groups.extend(c.groups.iter().cloned());
+    groups.push(tb);
+    Ok(Scene { width: A1_W, height: A1_H, title: format!("{} — {}", ctx.info.title(), c.name), groups })
+}
+
+/// The layout measurement of the whole sheet (see [`layout::measure`]).
+pub fn measure(scene: &Scene, c: &Composition) -> Layout {
+    let mut layout = layout::measure(scene);
+    layout.smallest_plan_mm = c.smallest_plan_mm;
+    layout
+}
+
+/// The finished sheet: the scene with its frame and title block, the layout measured and
+/// reported (in the results and as diagnostics).
+pub fn finish(ctx: &Context, kind: SheetKind, c: Composition) -> Result<SheetOutput, SheetError> {
+    let scene = scene(ctx, kind, &c)?;
+    let layout = measure(&scene, &c);
+    let Composition { tables, mut results, mut diagnostics, .. } = c;
+    diagnostics.extend(layout.problems.iter().map(|p| format!("layout: {p}")));
+    if let serde_json::Value::Object(map) = &mut results {
+        map.insert("layout".into(), serde_json::to_value(&layout).expect("the layout serialises"));
+    }
+    Ok(SheetOutput { number: kind.number, scene, tables, results, diagnostics })
+}
+
+/// A table of the note in `lang`: titled `title`, its value columns headed `column_titles`
+/// (the table's own headings when empty), its rows' symbols, subscripts and units in words.
+pub fn note(
+    lang: Language,
+    table: NumTable,
+    title: &str,
+    column_titles: Vec<String>,
+    whole_numbers: bool,
+) -> NoteTable {
+    let c = Common::get(lang);
+    let printed = table.rows.iter().map(|r| words::quantity(lang, &r.quantity)).collect();
+    let units = table.rows.iter().map(|r| words::unit(lang, r.unit).to_string()).collect();
+    let column_titles = if column_titles.is_empty() {
+        table.columns.iter().map(|c| c.heading.clone()).collect()
+    } else {
+        column_titles
+    };
+    NoteTable {
+        title: title.to_string(),
+        headings: [c.quantity().into(), c.unit().into()],
+        printed,
+        units,
+        column_titles,
+        decimal_comma: lang != Language::En,
+        whole_numbers,
+        table,
+    }
+}
+
+/// A value as a drawn table prints it: a whole count without decimals, anything else with
+/// four significant digits.
+pub fn cell(r: &Row, v: f64, lang: Language) -> String {
+    if r.count && v.fract() == 0.0 && v.abs() < 1e9 { format!("{v:.0}") } else { fmt::value(v, lang) }
+}
+
+/// The rows of a drawn table: each quantity as a label (with ", unit" after it when
+/// `unit_tails` and the row has a unit), its values printed by [`cell`].
+pub fn drawn_rows(n: &NoteTable, lang: Language, unit_tails: bool) -> Vec<(LabelText, Vec<String>)> {
+    n.table
+        .rows
+        .iter()
+        .zip(n.printed.iter().zip(&n.units))
+        .map(|(r, ((symbol, sub), unit))| {
+            let mut label = LabelText::new(symbol.clone(), sub.clone());
+            if unit_tails && !unit.is_empty() {
+                label.tail = format!(", {unit}");
+            }
+            (label, r.values.iter().map(|&v| cell(r, v, lang)).collect())
+        })
+        .collect()
+}
