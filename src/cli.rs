@@ -1,15 +1,21 @@
 //! The command line: `tmm [build [PROJECT.yaml]] [-o DIR] [--sheet N]…`.
 //!
-//! Exit codes: 0 built; 1 the project was refused (unreadable, invalid, or a mechanism that
-//! cannot be analysed); 2 a command-line usage error; 3 the outputs could not be written.
+//! Exit codes: 0 built; 1 the project was refused (unreadable, too large, not UTF-8, invalid,
+//! or a mechanism that cannot be analysed); 2 a command-line usage error (clap's own, and a
+//! sheet number or PNG resolution out of range); 3 the outputs could not be written.
+
+pub mod write;
 
 use crate::drawing::labels::Language;
 use crate::pipeline::{self, DEFAULT_PROJECT, Formats};
+use crate::sheets::COURSE;
 use anyhow::{Context, Result, bail};
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use std::collections::BTreeSet;
+use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+
+pub use write::MANIFEST;
 
 #[derive(Parser)]
 #[command(name = "tmm", version, about = "Drawing sheets of the TMM course project, computed exactly")]
@@ -37,13 +43,13 @@ struct BuildArgs {
     output: PathBuf,
     /// Sheets to build, by number, comma-separated (default: every sheet the project has a
     /// section for).
-    #[arg(long = "sheet", value_delimiter = ',')]
+    #[arg(long = "sheet", value_delimiter = ',', value_parser = parse_sheet)]
     sheets: Vec<u32>,
     /// Label language, overriding the project file's.
     #[arg(long, value_enum)]
     lang: Option<Lang>,
     /// Resolution of the PNG preview, dots per inch (10–600).
-    #[arg(long, default_value_t = 100.0)]
+    #[arg(long, default_value_t = 100.0, value_parser = parse_png_dpi)]
     png_dpi: f64,
     /// Skip the PNG preview.
     #[arg(long)]
@@ -60,9 +66,12 @@ enum Lang {
     En,
 }
 
-/// The file in the output directory that lists what the last build wrote, so that the next
-/// build removes what it no longer writes (and nothing else).
-pub const MANIFEST: &str = ".tmm-outputs";
+/// The PNG preview's resolutions accepted, dots per inch.
+const PNG_DPI: std::ops::RangeInclusive<f64> = 10.0..=600.0;
+
+/// The largest project file read. A course project is a few kilobytes; the limit keeps a
+/// wrong path (`/dev/zero`, a video) from filling the memory before the parser refuses it.
+const PROJECT_LIMIT: u64 = 16 * 1024 * 1024;
 
 /// A failure, by whose it is: the input's (exit 1) or the output's (exit 3).
 enum Failure {
@@ -107,21 +116,15 @@ fn build(args: &BuildArgs) -> Result<(), Failure> {
     }
     let formats = Formats { pdf: !args.no_pdf, png_dpi: (!args.no_png).then_some(args.png_dpi) };
     let files = pipeline::outputs(&project, &built, formats).map_err(|e| Failure::Output(e.into()))?;
-    write_all(&args.output, &files).map_err(Failure::Output)?;
+    write::write_outputs(&args.output, &files).map_err(Failure::Output)?;
     let numbers: Vec<String> = built.iter().map(|b| b.output.number.to_string()).collect();
     println!("{name}: sheet {} written to {} ({} files)", numbers.join(", "), args.output.display(), files.len());
     Ok(())
 }
 
 fn load(args: &BuildArgs) -> Result<(crate::project::Project, String)> {
-    if !(10.0..=600.0).contains(&args.png_dpi) {
-        bail!("--png-dpi must lie between 10 and 600, got {}", args.png_dpi);
-    }
     let (text, name) = match &args.project {
-        Some(p) => (
-            std::fs::read_to_string(p).with_context(|| format!("cannot read {}", p.display()))?,
-            p.display().to_string(),
-        ),
+        Some(p) => (read_project(p)?, p.display().to_string()),
         None => (DEFAULT_PROJECT.to_string(), "the worked example".to_string()),
     };
     let mut project = pipeline::load(&text).with_context(|| format!("in {name}"))?;
@@ -135,31 +138,52 @@ fn load(args: &BuildArgs) -> Result<(crate::project::Project, String)> {
     Ok((project, name))
 }
 
-/// Writes the files, removes those the previous build listed and this one did not write,
-/// and records the new list.
-fn write_all(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<()> {
-    std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let previous = read_manifest(dir);
-    for (name, bytes) in files {
-        let p = dir.join(name);
-        std::fs::write(&p, bytes).with_context(|| format!("cannot write {}", p.display()))?;
+/// A `--sheet` value: the number of one of the course's sheets. A sheet of the course that
+/// the project has no section for is the project's error (exit 1), found when building.
+fn parse_sheet(value: &str) -> Result<u32, String> {
+    let numbers = || COURSE.iter().map(|k| k.number);
+    let (first, last) = (numbers().min().unwrap_or(0), numbers().max().unwrap_or(0));
+    let range = format!("the course project has sheets {first} to {last}");
+    match value.trim().parse::<u32>() {
+        Ok(n) if numbers().any(|k| k == n) => Ok(n),
+        Ok(n) => Err(format!("there is no sheet {n}: {range}")),
+        Err(_) => Err(format!("not a sheet number: {range}")),
     }
-    let now: BTreeSet<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
-    for stale in previous.iter().filter(|n| !now.contains(n.as_str())) {
-        let p = dir.join(stale);
-        if p.is_file() {
-            std::fs::remove_file(&p).with_context(|| format!("cannot remove the stale output {}", p.display()))?;
-        }
-    }
-    let list: String = now.iter().map(|n| format!("{n}\n")).collect();
-    let p = dir.join(MANIFEST);
-    std::fs::write(&p, list).with_context(|| format!("cannot write {}", p.display()))
 }
 
-/// The names the previous build wrote; only plain file names are trusted (a hand-edited
-/// manifest cannot make a build delete anything outside the directory).
-fn read_manifest(dir: &Path) -> Vec<String> {
-    let Ok(text) = std::fs::read_to_string(dir.join(MANIFEST)) else { return Vec::new() };
-    let plain = |n: &&str| !n.is_empty() && !n.starts_with('.') && !n.contains(['/', '\\']) && *n != MANIFEST;
-    text.lines().map(str::trim).filter(plain).map(str::to_string).collect()
+/// A `--png-dpi` value: a finite number of dots per inch within [`PNG_DPI`].
+fn parse_png_dpi(value: &str) -> Result<f64, String> {
+    match value.trim().parse::<f64>() {
+        Ok(dpi) if dpi.is_finite() && PNG_DPI.contains(&dpi) => Ok(dpi),
+        _ => Err(format!(
+            "the PNG resolution must be a number of dots per inch from {} to {}",
+            PNG_DPI.start(),
+            PNG_DPI.end()
+        )),
+    }
+}
+
+/// The project file's text: at most [`PROJECT_LIMIT`] bytes (read through a limit, since a
+/// device or a pipe reports no size), in UTF-8.
+fn read_project(path: &Path) -> Result<String> {
+    let cannot = || format!("cannot read {}", path.display());
+    let file = std::fs::File::open(path).with_context(cannot)?;
+    let mut bytes = Vec::new();
+    file.take(PROJECT_LIMIT + 1).read_to_end(&mut bytes).with_context(cannot)?;
+    if bytes.len() as u64 > PROJECT_LIMIT {
+        bail!("cannot read {}: larger than {} MiB, the limit for a project file", path.display(), PROJECT_LIMIT >> 20);
+    }
+    String::from_utf8(bytes).map_err(|e| not_utf8(path, &e))
+}
+
+/// Names the first byte that is not UTF-8, by offset and line, so that the user can find the
+/// character their editor saved in a legacy code page.
+fn not_utf8(path: &Path, e: &std::string::FromUtf8Error) -> anyhow::Error {
+    let at = e.utf8_error().valid_up_to();
+    let line = e.as_bytes()[..at].iter().filter(|&&b| b == b'\n').count() + 1;
+    anyhow::anyhow!(
+        "cannot read {}: not UTF-8 text (an invalid byte 0x{:02X} at byte offset {at}, line {line}); save it as UTF-8",
+        path.display(),
+        e.as_bytes()[at]
+    )
 }

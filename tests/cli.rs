@@ -38,6 +38,7 @@ fn default_build_writes_every_output_and_says_so_on_stdout() {
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(stdout.contains("sheet 1, 2, 3 written to") && stdout.contains("(27 files)"), "{stdout}");
     let expected = [
+        ".tmm-lock",
         ".tmm-outputs",
         "results.json",
         "sheet1-accelerations.csv",
@@ -68,7 +69,7 @@ fn default_build_writes_every_output_and_says_so_on_stdout() {
         "sheet3.svg",
     ];
     assert_eq!(listing(&out), expected);
-    for f in &expected[1..] {
+    for f in &expected[2..] {
         assert!(std::fs::metadata(out.join(f)).unwrap().len() > 100, "{f} is empty");
     }
     let json: serde_json::Value =
@@ -105,6 +106,7 @@ fn a_rebuild_leaves_no_stale_outputs_and_touches_nothing_else() {
     assert_eq!(
         listing(&out),
         [
+            ".tmm-lock",
             ".tmm-outputs",
             "kinematics.yaml",
             "notes.txt",
@@ -134,8 +136,6 @@ fn errors_name_the_cause_with_documented_exit_codes() {
         "{}",
         String::from_utf8_lossy(&o.stderr)
     );
-    let o = run(&["--sheet", "4"], &out);
-    assert!(String::from_utf8_lossy(&o.stderr).contains("there is no sheet 4: the course project has sheets 1 to 3"));
     let bad = temp_dir("bad").with_extension("yaml");
     std::fs::write(&bad, "project: {title: x}\nmechanism: {frame: [], crank: {pivot: O}}\n").unwrap();
     let o = tmm().arg("build").arg(&bad).output().unwrap();
@@ -143,7 +143,7 @@ fn errors_name_the_cause_with_documented_exit_codes() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("line 2") && err.contains("missing field"), "{err}");
     assert!(!err.contains("panicked"));
-    // 2: a usage error.
+    // 2: a usage error (more in `out_of_range_options_are_usage_errors`).
     assert_eq!(tmm().args(["--no-such-flag"]).output().unwrap().status.code(), Some(2));
     // 3: the outputs cannot be written (the output "folder" is a file).
     let o = tmm().args(["--no-png", "--no-pdf", "-o"]).arg(&bad).output().unwrap();
@@ -172,4 +172,45 @@ fn example_prints_a_project_that_builds() {
     assert!(o.status.success());
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(tmm_sheets::pipeline::load(&text).is_ok());
+}
+
+/// `--sheet` and `--png-dpi` outside what the README allows are usage errors (exit 2), named
+/// with the option and the allowed values, and nothing is built or written.
+#[test]
+fn out_of_range_options_are_usage_errors() {
+    let numbers: Vec<u32> = tmm_sheets::sheets::COURSE.iter().map(|k| k.number).collect();
+    let (first, last) = (numbers[0], numbers[numbers.len() - 1]);
+    let beyond = (last + 1).to_string();
+    let sheets = format!("sheets {first} to {last}");
+    let out = temp_dir("usage");
+    let cases: [(&[&str], &[&str]); 9] = [
+        (&["--sheet", "0"], &["--sheet", "there is no sheet 0", &sheets]),
+        (&["--sheet", &beyond], &["--sheet", &format!("there is no sheet {beyond}"), &sheets]),
+        (&["--sheet", "1,x"], &["--sheet", "not a sheet number", &sheets]),
+        (&["--png-dpi", "0"], &["--png-dpi", "from 10 to 600"]),
+        (&["--png-dpi", "601"], &["--png-dpi", "from 10 to 600"]),
+        (&["--png-dpi", "9.99"], &["--png-dpi", "from 10 to 600"]),
+        (&["--png-dpi", "NaN"], &["--png-dpi", "from 10 to 600"]),
+        (&["--png-dpi", "inf"], &["--png-dpi", "from 10 to 600"]),
+        (&["build", "--png-dpi=-inf"], &["--png-dpi", "from 10 to 600"]),
+    ];
+    for (args, needles) in cases {
+        let o = run(args, &out);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        for n in needles {
+            assert!(err.contains(n), "{args:?}: {n:?} missing from: {err}");
+        }
+        assert!(!out.exists(), "{args:?}: a usage error writes nothing");
+    }
+}
+
+/// The ends of the documented ranges are accepted.
+#[test]
+fn the_ends_of_the_ranges_are_accepted() {
+    let out = temp_dir("ends");
+    let o = run(&["--sheet", "2", "--png-dpi", "10", "--no-pdf"], &out);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(out.join("sheet2.png").exists());
+    let _ = std::fs::remove_dir_all(&out);
 }
