@@ -8,7 +8,6 @@ pub mod write;
 
 use crate::drawing::labels::Language;
 use crate::pipeline::{self, DEFAULT_PROJECT, Formats};
-use crate::sheets::COURSE;
 use anyhow::{Context, Result, bail};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::io::Read;
@@ -141,7 +140,7 @@ fn load(args: &BuildArgs) -> Result<(crate::project::Project, String)> {
 /// A `--sheet` value: the number of one of the course's sheets. A sheet of the course that
 /// the project has no section for is the project's error (exit 1), found when building.
 fn parse_sheet(value: &str) -> Result<u32, String> {
-    let numbers = || COURSE.iter().map(|k| k.number);
+    let numbers = pipeline::sheet_numbers;
     let (first, last) = (numbers().min().unwrap_or(0), numbers().max().unwrap_or(0));
     let range = format!("the course project has sheets {first} to {last}");
     match value.trim().parse::<u32>() {

@@ -23,6 +23,11 @@ pub enum Error {
     Backend(#[from] raster::BackendError),
 }
 
+/// The numbers of the course project's sheets, in order (for checking a request).
+pub fn sheet_numbers() -> impl Iterator<Item = u32> {
+    COURSE.iter().map(|k| k.number)
+}
+
 /// Parses and resolves a project file.
 pub fn load(text: &str) -> Result<Project, Error> {
     Ok(project::load(text)?)

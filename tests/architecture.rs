@@ -23,7 +23,7 @@ const ALLOWED: [(&str, &[&str]); 13] = [
     ("sheets", &["num", "font", "lever", "gears", "cams", "drawing", "report", "project"]),
     ("backend", &["num", "font", "drawing::scene", "drawing::path"]),
     ("pipeline", &["num", "project", "sheets", "backend", "report"]),
-    ("cli", &["pipeline", "project", "drawing::labels::Language", "sheets::COURSE"]),
+    ("cli", &["pipeline", "project", "drawing::labels::Language"]),
     ("lib", &["*"]),
 ];
 
