@@ -10,6 +10,7 @@
 //! positive, or the velocity turns negative (the follower would move back during the rise).
 
 use super::laws::{Derivs, Standard};
+use crate::num::digits::sig;
 
 /// A law given by its acceleration analog's corners, normalised to s(1) = 1.
 #[derive(Debug, Clone, PartialEq)]
@@ -39,21 +40,30 @@ pub enum LawError {
     #[error("corner {index}: a third corner at x = {x}; a jump takes exactly two corners")]
     TripleCorner { index: usize, x: f64 },
     #[error(
-        "the velocity analog does not return to zero at the phase's end: the acceleration's net area is {net:.6} of its total area {total:.6}; the areas above and below the axis must be equal"
+        "the velocity analog does not return to zero at the phase's end: the acceleration's net area is {} against its total area {} ({} of it, at most {}); the areas above and below the axis must be equal",
+        sig(*.net, 3), sig(*.total, 6), sig(.net / .total, 2), sig(TOL, 1)
     )]
     VelocityDoesNotClose { net: f64, total: f64 },
     #[error(
-        "this acceleration analog does not rise: the displacement it gives at the phase's end is {0:.6} (it must be positive; is the sign of a reversed?)"
+        "this acceleration analog does not rise: the displacement it gives at the phase's end is {} (it must be positive; is the sign of a reversed?)",
+        sig(*.0, 3)
     )]
     NoRise(f64),
     #[error(
-        "the velocity analog is negative at x = {x:.4} ({v:.4} of the peak): the follower would move back during the rise"
+        "the velocity analog is negative at x = {} ({} of the peak): the follower would move back during the rise",
+        sig(*.x, 6), sig(*.v, 2)
     )]
     MovesBack { x: f64, v: f64 },
 }
 
-/// Relative tolerance of the closure and sign checks: the corners' own rounding.
-const TOL: f64 = 1e-9;
+/// Relative tolerance of the closure and sign checks: the corners' own rounding, so that a law
+/// copied from a figure to 6 significant digits is accepted. Each a written to 6 digits is off
+/// by at most half a unit of its 6th digit, 5·10⁻⁶ of |a|; the net area, the integral of a, is
+/// then off by at most 5·10⁻⁶ of the total area, the integral of |a|; twice that leaves room
+/// for the x's rounding (multiples of 1/8 are exact). A law that speeds up once and slows down
+/// once (its total area twice its peak velocity) is then left with at most 5·10⁻⁶ of its peak
+/// velocity at the phase's end, which the law sets to zero: nothing a sheet can show.
+const TOL: f64 = 1e-5;
 
 impl Custom {
     /// A law from its corners (x, a); `replaces` names the built-in law it stands for.

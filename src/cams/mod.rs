@@ -1,7 +1,14 @@
 //! The cam of sheet 3, pure and in SI: the follower's laws of motion ([`laws`]), its motion
 //! in its own frame ([`follower`]), the exact minimum-radius centre ([`radius`]), the
 //! profiles by inversion ([`profile`]) and the course's graphical integration
-//! ([`integrate`]). [`design`] runs them in order for one cam.
+//! ([`integrate`]). [`design`] runs them in order for one cam, after the closed-form bound on
+//! its size ([`size`]).
+//!
+//! **Memory.** Nothing here allocates by the cam's size or its ratios: the centre's search and
+//! every maximum over φ sample a fixed [`radius::SAMPLES`] + 1 points a phase (a few kB each,
+//! freed before the next), a custom law holds its corners as written, the integration its
+//! [`integrate::DIVISIONS`] + 1 points a phase, and a profile's Bézier fit at most the
+//! `max_pieces` its caller asks for a part. A design takes well under a megabyte.
 //!
 //! Everything is computed for a cam turning clockwise; a counter-clockwise cam is the mirror
 //! image, applied by [`Sense::apply`] to finished coordinates.
@@ -12,6 +19,7 @@ pub mod integrate;
 pub mod laws;
 pub mod profile;
 pub mod radius;
+pub mod size;
 
 use crate::num::math::Norm;
 use follower::Follower;
@@ -73,6 +81,8 @@ pub struct CamSpec {
 pub enum CamError {
     #[error(transparent)]
     Radius(#[from] RadiusError),
+    #[error(transparent)]
+    TooLarge(#[from] size::TooLarge),
     #[error(
         "the roller radius {r_mm:.3} mm is not below the pitch profile's smallest convex radius of curvature ρ_min = {rho_mm:.3} mm: the working profile would be undercut"
     )]
@@ -135,9 +145,11 @@ impl Design {
     }
 }
 
-/// Designs the cam: the exact centre, the profile, the roller, the pressure angles.
+/// Designs the cam: the exact centre, the profile, the roller, the pressure angles. A cam over
+/// [`size::SIZE_MAX`] is refused before anything is sampled.
 pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
     let region = Region::new(spec.follower, &spec.program, spec.allowed)?;
+    size::check(spec.follower, &spec.program, spec.allowed, spec.placement)?;
     let centre = region.nearest(spec.placement)?;
     let profile = Profile { follower: spec.follower, program: spec.program.clone(), o: centre.o };
     let (rho_min_phi, rho_min) = profile.min_convex_radius();

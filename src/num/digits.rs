@@ -28,6 +28,32 @@ pub fn significant(x: f64) -> String {
     s
 }
 
+/// `x` to `digits` significant digits (at least one), trailing zeros dropped, for a message:
+/// plain between 10⁻⁴ and 10⁶, else in scientific notation (`-2e-9`, `1.23e9`), so that neither
+/// a tiny imbalance nor a huge size prints as a row of zeros or of hundreds of digits.
+pub fn sig(x: f64, digits: usize) -> String {
+    if !x.is_finite() || x == 0.0 {
+        return format!("{x}");
+    }
+    let digits = digits.max(1);
+    // The exponent after rounding (9.996e5 to three digits is 1.00e6).
+    let sci = format!("{:.*e}", digits - 1, x);
+    let (mantissa, exponent) = sci.split_once('e').unwrap_or((&sci, "0"));
+    let exponent: i32 = exponent.parse().unwrap_or(0);
+    if (-4..6).contains(&exponent) {
+        let rounded: f64 = sci.parse().unwrap_or(x);
+        let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
+        trim_zeros(format!("{rounded:.decimals$}"))
+    } else {
+        format!("{}e{exponent}", trim_zeros(mantissa.to_string()))
+    }
+}
+
+/// A decimal's trailing zeros (and a point left bare) dropped.
+fn trim_zeros(s: String) -> String {
+    if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -42,5 +68,19 @@ mod tests {
         assert_eq!(significant(f64::NAN), "0");
         assert_eq!(significant(0.99999), "1.000", "rounding up to the next power keeps four digits");
         assert_eq!(significant(-9.99996), "-10.00");
+    }
+
+    #[test]
+    fn significant_digits_in_plain_or_scientific_notation() {
+        assert_eq!(sig(4580.123456789, 3), "4580");
+        assert_eq!(sig(4586.0, 3), "4590");
+        assert_eq!(sig(-2.0e-9, 2), "-2e-9");
+        assert_eq!(sig(1.2e9, 3), "1.2e9");
+        assert_eq!(sig(0.6, 6), "0.6");
+        assert_eq!(sig(-0.000123456, 3), "-0.000123");
+        assert_eq!(sig(999_960.0, 3), "1e6", "rounding up to the next power changes the notation");
+        assert_eq!(sig(1e300, 3), "1e300");
+        assert_eq!(sig(0.0, 3), "0");
+        assert_eq!(sig(5.0, 0), "5");
     }
 }

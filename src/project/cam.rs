@@ -17,14 +17,15 @@
 //!   assumptions: []
 //! ```
 
+use super::cam_design;
 use super::text::{self, Lines};
 use super::values::{Finite, LocalText};
 use super::{ModelError, Warning, at, invalid, warning};
 use crate::cams::follower::Follower;
 use crate::cams::integrate;
 use crate::cams::laws::{Custom, Law, LawError, Program, ProgramError, Standard};
-use crate::cams::radius::{Allowed, Phase, Placement, RadiusError};
-use crate::cams::{CamError, CamSpec, CamWarning, Roller, Sense};
+use crate::cams::radius::{Allowed, Phase, Placement};
+use crate::cams::{CamSpec, CamWarning, Roller, Sense};
 use crate::num::limits::{LENGTH_LOOKS_LIKE_MM, LENGTH_TINY};
 use serde::Deserialize;
 use serde::de::{self, Deserializer, IntoDeserializer, MapAccess, Visitor};
@@ -282,20 +283,16 @@ const FIELD: &str = "cam";
 const COURSE_ALLOWED_DEG: (f64, f64) = (30.0, 50.0);
 /// A swing above this (degrees) is almost surely a mistake.
 const SWING_PLAUSIBLE_MAX_DEG: f64 = 60.0;
-/// The largest cam the design is asked for, metres: a bound on the cam centre's distance
-/// from the roller centre B₀ when the centre is searched for. The search works to an
-/// absolute 1e-12 m, which the spacing of doubles stops resolving beyond a few kilometres
-/// (the search would then never end); no course cam comes near it, and a cam this size means
-/// a unit or a phase written wrong.
-const SIZE_MAX: f64 = 1e3;
-
-/// The follower as resolved, with where its lift was written.
-struct FollowerInput {
+/// The follower as resolved, with where its lift, its length (the stroke or the rocker's) and
+/// a given offset were written.
+pub(super) struct FollowerInput {
     follower: Follower,
     /// Metres or radians.
     lift: f64,
-    lift_loc: Location,
-    lift_field: &'static str,
+    pub(super) lift_loc: Location,
+    pub(super) lift_field: &'static str,
+    pub(super) length: (Location, &'static str),
+    pub(super) offset_loc: Option<Location>,
     placement: Placement,
     offset_auto: bool,
 }
@@ -333,36 +330,7 @@ pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Resu
         invalid(loc, field, e.to_string())
     })?;
     let cam = CamSpec { follower: f.follower, program, allowed, placement: f.placement, roller, sense };
-    if let Some(size) = size_bound(&cam)
-        && (size.is_nan() || size > SIZE_MAX)
-    {
-        return Err(invalid(
-            spec.referenced,
-            FIELD,
-            format!(
-                "this cam would be too large to design: its centre could lie up to {size:.3e} m from the roller (at most {SIZE_MAX} m): check that lengths are in metres and angles in degrees, that no phase is tiny, and that the swing is not nearly twice the allowed pressure angle"
-            ),
-        ));
-    }
-    let design = crate::cams::design(&cam).map_err(|e| {
-        let (loc, field) = match &e {
-            CamError::RollerTooLarge { .. } | CamError::Roller(_) => (roller_loc, "cam.roller"),
-            CamError::Radius(RadiusError::SwingTooLarge { .. }) => (f.lift_loc, f.lift_field),
-            CamError::Radius(RadiusError::Allowed(_)) => (at(&c.pressure_angle_deg), "cam.pressure_angle_deg"),
-            CamError::Radius(RadiusError::OffsetOfRocker) => (at(&c.follower), "cam.follower"),
-        };
-        invalid(loc, field, e.to_string())
-    })?;
-    if !(design.centre.r_min.is_finite() && design.centre.r_min > 0.0 && !design.rho_min.is_nan()) {
-        return Err(invalid(
-            spec.referenced,
-            FIELD,
-            format!(
-                "the cam cannot be designed from this input (r_min = {} m, ρ_min = {} m): check the phases, the lift and the pressure angle",
-                design.centre.r_min, design.rho_min
-            ),
-        ));
-    }
+    let design = cam_design::design(spec, &cam, &f, roller_loc)?;
     for w in &design.warnings {
         warnings.push(warning(roller_loc, "cam.roller", cam_warning(w)));
     }
@@ -376,30 +344,6 @@ pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Resu
         offset_auto: f.offset_auto,
         assumptions,
     })
-}
-
-/// An upper bound on the distance of a searched-for cam centre from B₀, metres: every
-/// velocity-analog point B′ lies within |B′|max of B₀, and the admissible region's floor above
-/// B₀ is at most |B′|max·(1 + cot γ), γ the smallest angle of a wedge's side to the viewing
-/// direction ([`crate::cams::radius`]). `None` when the centre is not searched for (a given
-/// offset) or when the design refuses the swing itself.
-fn size_bound(spec: &CamSpec) -> Option<f64> {
-    if spec.placement != Placement::Free {
-        return None;
-    }
-    let p = &spec.program;
-    // The largest |ds/dφ| (or |dβ/dφ|) over both phases.
-    let rate = (p.lift * p.rise_law.peaks().0 / p.rise).max(p.lift * p.return_law.peaks().0 / p.ret);
-    let (smallest, largest) = (spec.allowed.rise.min(spec.allowed.ret), spec.allowed.rise.max(spec.allowed.ret));
-    let (reach, half) = match spec.follower {
-        Follower::Translating => (p.lift + rate, 0.0),
-        Follower::Rocker { length } => (length * (2.0 + rate), p.lift / 2.0),
-    };
-    let gamma = (smallest - half).min(std::f64::consts::PI - largest - half);
-    if gamma <= 1e-9 * smallest {
-        return None;
-    }
-    Some(reach * (1.0 + 1.0 / crate::num::math::tan(gamma)))
 }
 
 fn cam_warning(w: &CamWarning) -> String {
@@ -483,6 +427,8 @@ fn follower(spec: &Spanned<FollowerFileSpec>, warnings: &mut Vec<Warning>) -> Re
                 lift: s.to_radians(),
                 lift_loc: at(swing),
                 lift_field: "cam.follower.rocker.swing_deg",
+                length: (at(length), "cam.follower.rocker.length"),
+                offset_loc: None,
                 placement: Placement::Free,
                 offset_auto: false,
             })
@@ -525,6 +471,8 @@ fn follower(spec: &Spanned<FollowerFileSpec>, warnings: &mut Vec<Warning>) -> Re
                 lift: stroke.value.0,
                 lift_loc: at(stroke),
                 lift_field: "cam.follower.translating.stroke",
+                length: (at(stroke), "cam.follower.translating.stroke"),
+                offset_loc: t.value.offset.as_ref().map(at),
                 placement,
                 offset_auto,
             })
@@ -597,9 +545,11 @@ fn law_table(spec: Option<&Spanned<LawTable>>, warnings: &mut Vec<Warning>) -> R
     let mut out: Vec<UserLaw> = Vec::new();
     for (spanned_key, def) in &spec.value.0 {
         let key = &spanned_key.value;
-        let field = format!("cam.laws.{key}");
+        let field = format!("cam.laws.{}", key.escape_debug());
         let replaces = Standard::by_key(key);
         let canonical = replaces.map_or(key.trim().to_string(), |s| s.key().to_string());
+        // A new law's key is printed on the sheet when it has no name.
+        text::check(&field, spanned_key, Lines::One)?;
         if replaces.is_none() {
             new_law_key(key).map_err(|why| invalid(at(spanned_key), &field, why))?;
         }

@@ -7,6 +7,7 @@
 //! surely a mistake gives a [`Warning`].
 
 pub mod cam;
+mod cam_design;
 pub mod forces;
 pub mod gears;
 pub mod info;
