@@ -106,8 +106,7 @@ fn build(args: &BuildArgs) -> Result<(), Failure> {
     for w in &project.warnings {
         eprintln!("warning: in {name}: {w}");
     }
-    let built =
-        pipeline::build(&project, &args.sheets).with_context(|| format!("in {name}")).map_err(Failure::Input)?;
+    let built = pipeline::build(&project, &args.sheets).map_err(|e| refused(e, &name)).map_err(Failure::Input)?;
     for b in &built {
         for d in &b.output.diagnostics {
             eprintln!("warning: sheet {}: {d}", b.output.number);
@@ -126,7 +125,7 @@ fn load(args: &BuildArgs) -> Result<(crate::project::Project, String)> {
         Some(p) => (read_project(p)?, p.display().to_string()),
         None => (DEFAULT_PROJECT.to_string(), "the worked example".to_string()),
     };
-    let mut project = pipeline::load(&text).with_context(|| format!("in {name}"))?;
+    let mut project = pipeline::load_for(&text, &args.sheets).map_err(|e| refused(e, &name))?;
     if let Some(l) = args.lang {
         project.info.language = match l {
             Lang::Uz => Language::Uz,
@@ -135,6 +134,24 @@ fn load(args: &BuildArgs) -> Result<(crate::project::Project, String)> {
         };
     }
     Ok((project, name))
+}
+
+/// A refusal as the user reads it: where (file, line, column), the field and the cause, and
+/// when it refuses some sheets only, how to build the others.
+fn refused(e: pipeline::Error, name: &str) -> anyhow::Error {
+    let pipeline::Error::Refused(r) = &e else { return anyhow::Error::from(e) };
+    let pipeline::Refused { refusal, blocks, buildable } = &**r;
+    let mut text = format!("in {name}: {refusal}");
+    let others: Vec<String> = buildable.iter().filter(|n| !blocks.contains(n)).map(u32::to_string).collect();
+    if !others.is_empty() {
+        let blocked: Vec<String> = blocks.iter().map(u32::to_string).collect();
+        text.push_str(&format!(
+            "\n  (this refuses sheet {} only: `--sheet {}` builds the others)",
+            blocked.join(", "),
+            others.join(",")
+        ));
+    }
+    anyhow::anyhow!(text)
 }
 
 /// A `--sheet` value: the number of one of the course's sheets. A sheet of the course that

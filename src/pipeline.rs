@@ -3,9 +3,9 @@
 //! what it needs, and never names a sheet.
 
 use crate::backend::{raster, svg};
-use crate::project::{self, ModelError, Project};
+use crate::project::{self, Project, Refusal, Warning};
 use crate::report;
-use crate::sheets::{self, COURSE, Context, SelectError, SheetError, SheetOutput};
+use crate::sheets::{self, COURSE, Context, SheetOutput};
 use serde::Serialize;
 
 /// The guide's worked example (the vibrating conveyor), embedded as the default project.
@@ -13,14 +13,32 @@ pub const DEFAULT_PROJECT: &str = include_str!("../fixtures/worked-example.yaml"
 
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
-    #[error("project file")]
-    Project(#[from] ModelError),
-    #[error(transparent)]
-    Select(#[from] SelectError),
-    #[error("sheet {number}")]
-    Sheet { number: u32, source: SheetError },
+    /// The project, or a sheet asked for, is refused.
+    #[error("{}", .0.refusal)]
+    Refused(Box<Refused>),
     #[error("output")]
     Backend(#[from] raster::BackendError),
+}
+
+/// A refusal (kind, field, place, cause) and what it means for the sheets.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Refused {
+    pub refusal: Refusal,
+    /// The sheets it keeps from being built (every sheet when the whole file is refused).
+    pub blocks: Vec<u32>,
+    /// The sheets the project has a resolved section for (empty when the file is refused
+    /// as a whole).
+    pub buildable: Vec<u32>,
+}
+
+impl From<Refusal> for Error {
+    fn from(refusal: Refusal) -> Error {
+        let blocks = match refusal.section {
+            Some(section) => COURSE.iter().filter(|k| k.section == section).map(|k| k.number).collect(),
+            None => sheet_numbers().collect(),
+        };
+        Error::Refused(Box::new(Refused { refusal, blocks, buildable: Vec::new() }))
+    }
 }
 
 /// The numbers of the course project's sheets, in order (for checking a request).
@@ -28,9 +46,41 @@ pub fn sheet_numbers() -> impl Iterator<Item = u32> {
     COURSE.iter().map(|k| k.number)
 }
 
-/// Parses and resolves a project file.
+/// The sheets a project has a resolved section for.
+fn buildable(p: &Project) -> Vec<u32> {
+    COURSE.iter().filter(|k| (k.make)(p).is_some()).map(|k| k.number).collect()
+}
+
+/// Parses and resolves a project file; any refused section refuses it.
 pub fn load(text: &str) -> Result<Project, Error> {
-    Ok(project::load(text)?)
+    load_for(text, &[])
+}
+
+/// Parses and resolves a project file for building the `requested` sheets (every sheet
+/// when empty): a refused section of a sheet not requested is a warning, not an error.
+pub fn load_for(text: &str, requested: &[u32]) -> Result<Project, Error> {
+    let (mut project, refused) = project::load_sections(text)?;
+    let buildable = buildable(&project);
+    for refusal in refused {
+        let Error::Refused(mut r) = Error::from(refusal) else { unreachable!("a refusal converts to Refused") };
+        if requested.is_empty() || r.blocks.iter().any(|b| requested.contains(b)) {
+            r.buildable = buildable;
+            return Err(Error::Refused(r));
+        }
+        let Refused { refusal, blocks, .. } = *r;
+        let sheets: Vec<String> = blocks.iter().map(u32::to_string).collect();
+        project.warnings.push(Warning {
+            line: refusal.line,
+            column: refusal.column,
+            field: refusal.path.clone(),
+            message: format!(
+                "{} (so sheet {} cannot be built; it was not asked for)",
+                refusal.cause,
+                sheets.join(", ")
+            ),
+        });
+    }
+    Ok(project)
 }
 
 /// A built sheet and its SVG text.
@@ -43,11 +93,18 @@ pub struct Built {
 /// Builds the `requested` sheets (all the project has sections for when empty), in order.
 pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
     let ctx = Context { info: &p.info, sheet_count: COURSE.len() as u32 };
-    sheets::select(p, requested)?
+    let refused = |r: Refusal| match Error::from(r) {
+        Error::Refused(mut r) => {
+            r.buildable = buildable(p);
+            Error::Refused(r)
+        }
+        other => other,
+    };
+    sheets::select(p, requested)
+        .map_err(|e| refused(e.refusal()))?
         .iter()
         .map(|sheet| {
-            let number = sheet.kind().number;
-            let output = sheet.build(&ctx).map_err(|source| Error::Sheet { number, source })?;
+            let output = sheet.build(&ctx).map_err(|e| refused(e.refusal(sheet.kind(), &p.places)))?;
             let svg = svg::write(&output.scene)?;
             Ok(Built { output, svg })
         })

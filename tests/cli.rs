@@ -141,7 +141,7 @@ fn errors_name_the_cause_with_documented_exit_codes() {
     let o = tmm().arg("build").arg(&bad).output().unwrap();
     assert_eq!(o.status.code(), Some(1));
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("line 2") && err.contains("missing field"), "{err}");
+    assert!(err.contains("line 2") && err.contains("mechanism.crank: the key `pin` is missing"), "{err}");
     assert!(!err.contains("panicked"));
     // 2: a usage error (more in `out_of_range_options_are_usage_errors`).
     assert_eq!(tmm().args(["--no-such-flag"]).output().unwrap().status.code(), Some(2));
@@ -213,4 +213,30 @@ fn the_ends_of_the_ranges_are_accepted() {
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(out.join("sheet2.png").exists());
     let _ = std::fs::remove_dir_all(&out);
+}
+
+/// A wrong `cam` section refuses sheet 3 only: the default build is refused (exit 1), naming
+/// the field and how to build the others; `--sheet 1,2` builds them with a warning that
+/// names the field.
+#[test]
+fn a_wrong_section_refuses_its_own_sheet_only() {
+    let text = std::fs::read_to_string(fixture("worked-example")).unwrap().replacen("law: sine", "law: wobbly", 1);
+    let file = temp_dir("cam-wrong").with_extension("yaml");
+    std::fs::write(&file, &text).unwrap();
+    let out = temp_dir("cam-wrong-out");
+    let o = tmm().arg("build").arg(&file).args(["--no-png", "--no-pdf", "-o"]).arg(&out).output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("cam.law: unknown law 'wobbly'") && err.contains("`--sheet 1,2` builds the others"), "{err}");
+    let o = tmm()
+        .arg("build")
+        .arg(&file)
+        .args(["--sheet", "1,2", "--no-png", "--no-pdf", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.contains("warning:") && err.contains("cam.law") && err.contains("sheet 3 cannot be built"), "{err}");
+    assert!(out.join("sheet1.svg").exists() && out.join("sheet2.svg").exists() && !out.join("sheet3.svg").exists());
 }

@@ -17,6 +17,7 @@
 
 use super::follower::{Follower, State, pressure_angle};
 use super::laws::Program;
+use crate::num::digits::sig;
 use crate::num::math::{atan2, tan};
 use crate::num::roots::minimise;
 use kurbo::Vec2;
@@ -75,10 +76,12 @@ impl Phase {
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RadiusError {
-    #[error("the allowed pressure angle must be between 0° and 90°, not {0}°")]
+    #[error("the allowed pressure angle must be between 0° and 90°, not {}°", sig(*.0, 4))]
     Allowed(f64),
     #[error(
-        "the swing ({swing_deg:.3}°) is at least twice the allowed pressure angle ({allowed_deg:.3}°): no cam centre keeps the pressure angle within it over the whole swing"
+        "the swing ({}°) is at least twice the allowed pressure angle ({}°): no cam centre keeps the pressure angle within it over the whole swing",
+        sig(*.swing_deg, 4),
+        sig(*.allowed_deg, 4)
     )]
     SwingTooLarge { swing_deg: f64, allowed_deg: f64 },
     #[error("a rocker's cam centre is always chosen: an offset applies to a translating follower only")]

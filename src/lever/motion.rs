@@ -8,6 +8,7 @@
 
 use super::dyads::DyadFailure;
 use super::linkage::{Mechanism, Output, PointId, State, StepFailure};
+use crate::num::digits::fixed;
 use crate::num::math::{self, Norm};
 use crate::num::roots::{self, RootError};
 use crate::num::tol;
@@ -44,19 +45,22 @@ pub struct Angles {
 
 impl std::fmt::Display for Angles {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let deg = |x: f64| fixed(x, 2);
         let (a, b) = self.theta_deg;
         if a == b {
-            write!(f, "the absolute crank angle θ = {a:.2}° (from the x axis, counter-clockwise)")?;
+            write!(f, "the absolute crank angle θ = {}° (from the x axis, counter-clockwise)", deg(a))?;
         } else {
             let turning = if self.sense > 0.0 { "counter-clockwise" } else { "clockwise" };
             write!(
                 f,
-                "absolute crank angles θ from {a:.2}° to {b:.2}° as the crank turns {turning} (θ from the x axis, counter-clockwise)"
+                "absolute crank angles θ from {}° to {}° as the crank turns {turning} (θ from the x axis, counter-clockwise)",
+                deg(a),
+                deg(b)
             )?;
         }
         match self.phi_deg {
-            Some((a, b)) if a == b => write!(f, ", the course angle φ = {a:.2}° from position 0"),
-            Some((a, b)) => write!(f, ", course angles φ = {a:.2}° to {b:.2}° from position 0"),
+            Some((a, b)) if a == b => write!(f, ", the course angle φ = {}° from position 0", deg(a)),
+            Some((a, b)) => write!(f, ", course angles φ = {}° to {}° from position 0", deg(a), deg(b)),
             None => Ok(()),
         }
     }
@@ -64,12 +68,13 @@ impl std::fmt::Display for Angles {
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum MotionError {
+    // `index`: the Assur group's place in the mechanism's list (None: the crank).
     #[error("{group} cannot be assembled at any crank angle ({detail} at {angles})")]
-    NeverAssembles { group: String, angles: Angles, detail: String },
+    NeverAssembles { group: String, index: Option<usize>, angles: Angles, detail: String },
     #[error("{group} cannot be assembled for {angles}: {detail}")]
-    CannotAssemble { group: String, angles: Angles, detail: String },
+    CannotAssemble { group: String, index: Option<usize>, angles: Angles, detail: String },
     #[error("{group} passes through a dead point at {angles} ({detail}): its velocities are unbounded there")]
-    DeadPoint { group: String, angles: Angles, detail: String },
+    DeadPoint { group: String, index: Option<usize>, angles: Angles, detail: String },
     #[error("the output ({output}) has no extreme position over a full crank turn; give `start_deg` to fix position 0")]
     NoExtreme { output: String },
     #[error("finding {what}: {detail}")]
@@ -280,7 +285,7 @@ fn assembly_error(m: &Mechanism, f: StepFailure, u: f64, sense: f64, start: Star
     while to < u + TAU && !ok(to + step) {
         to += step;
     }
-    let group = describe_step(m, f.step);
+    let (group, index) = (describe_step(m, f.step), m.group_of_step(f.step));
     let detail = describe_failure(&f.why);
     let theta_deg = |x: f64| (sense * x).rem_euclid(TAU).to_degrees();
     let phi_deg = |x: f64| match start {
@@ -290,13 +295,13 @@ fn assembly_error(m: &Mechanism, f: StepFailure, u: f64, sense: f64, start: Star
     let angles =
         |a: f64, b: f64| Angles { theta_deg: (theta_deg(a), theta_deg(b)), phi_deg: phi_deg(a).zip(phi_deg(b)), sense };
     if to - from >= TAU - step {
-        return MotionError::NeverAssembles { group, angles: angles(u, u), detail };
+        return MotionError::NeverAssembles { group, index, angles: angles(u, u), detail };
     }
     if matches!(f.why, DyadFailure::DeadPoint { .. }) {
-        return MotionError::DeadPoint { group, angles: angles(u, u), detail };
+        return MotionError::DeadPoint { group, index, angles: angles(u, u), detail };
     }
     let (from, to) = (edge(from - step, from), edge(to + step, to));
-    MotionError::CannotAssemble { group, angles: angles(from, to), detail }
+    MotionError::CannotAssemble { group, index, angles: angles(from, to), detail }
 }
 
 /// The smallest and largest value of p·`axis` that `point` reaches over a turn (a slider's
@@ -325,9 +330,10 @@ pub fn sample_at(m: &Mechanism, motion: &Motion, phi: f64) -> Result<State, Moti
         let phi = phi.to_degrees();
         let angles = Angles { theta_deg: (theta, theta), phi_deg: Some((phi, phi)), sense: motion.sense };
         let (group, detail) = (describe_step(m, f.step), describe_failure(&f.why));
+        let index = m.group_of_step(f.step);
         match f.why {
-            DyadFailure::DeadPoint { .. } => MotionError::DeadPoint { group, angles, detail },
-            _ => MotionError::CannotAssemble { group, angles, detail },
+            DyadFailure::DeadPoint { .. } => MotionError::DeadPoint { group, index, angles, detail },
+            _ => MotionError::CannotAssemble { group, index, angles, detail },
         }
     })
 }

@@ -32,7 +32,10 @@ pub fn significant(x: f64) -> String {
 /// plain between 10⁻⁴ and 10⁶, else in scientific notation (`-2e-9`, `1.23e9`), so that neither
 /// a tiny imbalance nor a huge size prints as a row of zeros or of hundreds of digits.
 pub fn sig(x: f64, digits: usize) -> String {
-    if !x.is_finite() || x == 0.0 {
+    if x == 0.0 {
+        return "0".into();
+    }
+    if !x.is_finite() {
         return format!("{x}");
     }
     let digits = digits.max(1);
@@ -43,10 +46,19 @@ pub fn sig(x: f64, digits: usize) -> String {
     if (-4..6).contains(&exponent) {
         let rounded: f64 = sci.parse().unwrap_or(x);
         let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
-        trim_zeros(format!("{rounded:.decimals$}"))
+        let s = trim_zeros(format!("{rounded:.decimals$}"));
+        // A value that rounds to zero at these digits has no sign ("-0.00°" read as a bug).
+        if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') { "0".into() } else { s }
     } else {
         format!("{}e{exponent}", trim_zeros(mantissa.to_string()))
     }
+}
+
+/// `x` with `decimals` fixed decimals for a message, a value that rounds to zero without its
+/// sign (`0.00°`, never `-0.00°`).
+pub fn fixed(x: f64, decimals: usize) -> String {
+    let s = format!("{x:.decimals$}");
+    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') { s[1..].to_string() } else { s }
 }
 
 /// A decimal's trailing zeros (and a point left bare) dropped.

@@ -20,7 +20,7 @@
 use super::cam_design;
 use super::text::{self, Lines};
 use super::values::{Finite, LocalText};
-use super::{ModelError, Warning, at, invalid, warning};
+use super::{Refusal, Warning, at, invalid, warning};
 use crate::cams::follower::Follower;
 use crate::cams::integrate;
 use crate::cams::laws::{Custom, Law, LawError, Program, ProgramError, Standard};
@@ -298,7 +298,7 @@ pub(super) struct FollowerInput {
 }
 
 /// Resolves the section and designs the cam.
-pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Result<CamProject, ModelError> {
+pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Result<CamProject, Refusal> {
     let c = &spec.value;
     let f = follower(&c.follower, warnings)?;
     let phases = phases(&c.phases_deg)?;
@@ -393,7 +393,7 @@ fn plausible_length(v: &Spanned<Finite>, field: &str, what: &str, warnings: &mut
     }
 }
 
-fn follower(spec: &Spanned<FollowerFileSpec>, warnings: &mut Vec<Warning>) -> Result<FollowerInput, ModelError> {
+fn follower(spec: &Spanned<FollowerFileSpec>, warnings: &mut Vec<Warning>) -> Result<FollowerInput, Refusal> {
     match (&spec.value.rocker, &spec.value.translating) {
         (Some(r), None) => {
             let (length, swing) = (&r.value.length, &r.value.swing_deg);
@@ -497,7 +497,7 @@ struct Phases {
     ret: f64,
 }
 
-fn phases(spec: &Spanned<PhasesFileSpec>) -> Result<Phases, ModelError> {
+fn phases(spec: &Spanned<PhasesFileSpec>) -> Result<Phases, Refusal> {
     let p = &spec.value;
     for (v, field, name) in [(&p.rise, "cam.phases_deg.rise", "rise"), (&p.ret, "cam.phases_deg.return", "return")] {
         if v.value.0 <= 0.0 {
@@ -540,7 +540,7 @@ struct UserLaw {
 
 /// Resolves the `laws` table: each key to the built-in law it replaces (by key or the guide's
 /// number) or to a new key, each corner list to a law.
-fn law_table(spec: Option<&Spanned<LawTable>>, warnings: &mut Vec<Warning>) -> Result<Vec<UserLaw>, ModelError> {
+fn law_table(spec: Option<&Spanned<LawTable>>, warnings: &mut Vec<Warning>) -> Result<Vec<UserLaw>, Refusal> {
     let Some(spec) = spec else { return Ok(Vec::new()) };
     let mut out: Vec<UserLaw> = Vec::new();
     for (spanned_key, def) in &spec.value.0 {
@@ -626,7 +626,7 @@ fn known_laws(table: &[UserLaw]) -> String {
     format!("known: {}; or the guide's number 1–6", keys.join(", "))
 }
 
-fn law(v: &Scalar, loc: Location, field: &str, table: &[UserLaw]) -> Result<Law, ModelError> {
+fn law(v: &Scalar, loc: Location, field: &str, table: &[UserLaw]) -> Result<Law, Refusal> {
     let key = match v {
         Scalar::Word(w) => Some(w.trim().to_string()),
         Scalar::Number(x) if x.fract() == 0.0 && (1.0..=6.0).contains(x) => Some(format!("{x}")),
@@ -647,7 +647,7 @@ fn law(v: &Scalar, loc: Location, field: &str, table: &[UserLaw]) -> Result<Law,
     })
 }
 
-fn laws(spec: &Spanned<PerPhase>, table: &[UserLaw]) -> Result<(Law, Law), ModelError> {
+fn laws(spec: &Spanned<PerPhase>, table: &[UserLaw]) -> Result<(Law, Law), Refusal> {
     match &spec.value {
         PerPhase::Both(v) => {
             let l = law(v, at(spec), "cam.law", table)?;
@@ -659,7 +659,7 @@ fn laws(spec: &Spanned<PerPhase>, table: &[UserLaw]) -> Result<(Law, Law), Model
     }
 }
 
-fn allowed_angle(v: &Scalar, loc: Location, field: &str, warnings: &mut Vec<Warning>) -> Result<f64, ModelError> {
+fn allowed_angle(v: &Scalar, loc: Location, field: &str, warnings: &mut Vec<Warning>) -> Result<f64, Refusal> {
     let a = match v {
         Scalar::Number(a) => *a,
         Scalar::Word(w) => {
@@ -688,7 +688,7 @@ fn allowed_angle(v: &Scalar, loc: Location, field: &str, warnings: &mut Vec<Warn
     Ok(a.to_radians())
 }
 
-fn allowed(spec: &Spanned<PerPhase>, warnings: &mut Vec<Warning>) -> Result<Allowed, ModelError> {
+fn allowed(spec: &Spanned<PerPhase>, warnings: &mut Vec<Warning>) -> Result<Allowed, Refusal> {
     match &spec.value {
         PerPhase::Both(v) => {
             let a = allowed_angle(v, at(spec), "cam.pressure_angle_deg", warnings)?;
@@ -702,7 +702,7 @@ fn allowed(spec: &Spanned<PerPhase>, warnings: &mut Vec<Warning>) -> Result<Allo
 }
 
 /// The roller asked for, and where (the section's line when it is the default).
-fn roller(spec: Option<&Spanned<Scalar>>, section: Location) -> Result<(Roller, Location), ModelError> {
+fn roller(spec: Option<&Spanned<Scalar>>, section: Location) -> Result<(Roller, Location), Refusal> {
     let Some(s) = spec else {
         return Ok((Roller::Auto, section));
     };

@@ -4,7 +4,7 @@
 //! the input that makes it so (a phase, a stroke, an allowed angle, …).
 
 use super::cam::{CamSpecFile, FollowerInput, PerPhase};
-use super::{ModelError, at, invalid};
+use super::{Kind, Refusal, at, invalid};
 use crate::cams::radius::{Phase, RadiusError};
 use crate::cams::size::Cause;
 use crate::cams::{CamError, CamSpec, Design};
@@ -17,7 +17,7 @@ pub(super) fn design(
     cam: &CamSpec,
     f: &FollowerInput,
     roller: Location,
-) -> Result<Design, ModelError> {
+) -> Result<Design, Refusal> {
     let c = &spec.value;
     let design = crate::cams::design(cam).map_err(|e| {
         let (loc, field) = match &e {
@@ -27,7 +27,8 @@ pub(super) fn design(
             CamError::Radius(RadiusError::OffsetOfRocker) => (at(&c.follower), "cam.follower".into()),
             CamError::TooLarge(t) => cause_site(c, f, t.cause),
         };
-        invalid(loc, field, e.to_string())
+        let kind = if matches!(e, CamError::Roller(_)) { Kind::Value } else { Kind::Design };
+        invalid(loc, field, e.to_string()).kind(kind)
     })?;
     if !(design.centre.r_min.is_finite() && design.centre.r_min > 0.0 && !design.rho_min.is_nan()) {
         return Err(invalid(
@@ -37,7 +38,8 @@ pub(super) fn design(
                 "the cam cannot be designed from this input (r_min = {} m, ρ_min = {} m): check the phases, the lift and the pressure angle",
                 design.centre.r_min, design.rho_min
             ),
-        ));
+        )
+        .kind(Kind::Design));
     }
     Ok(design)
 }

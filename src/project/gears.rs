@@ -6,9 +6,10 @@
 
 use super::text;
 use super::values::{Finite, LocalText, Positive};
-use super::{ModelError, Warning, at, invalid, warning};
+use super::{Kind, Refusal, Warning, at, invalid, warning};
 use crate::gears::pair::{Pair, PairError, PairSpec, PairWarning};
 use crate::gears::planetary::{self, Scheme, Stage, StageError, StageSpec};
+use crate::num::digits::sig;
 use serde::Deserialize;
 use serde_saphyr::{Location, Spanned};
 
@@ -47,11 +48,48 @@ pub struct PairFileSpec {
     pub clearance: Option<Spanned<Positive>>,
 }
 
-#[derive(Debug, Clone, Deserialize)]
-#[serde(untagged)]
+/// The profile shifts: `[x1, x2]`, or a word (`auto`).
+#[derive(Debug, Clone)]
 pub enum ShiftSpec {
     Values([Finite; 2]),
     Word(String),
+}
+
+/// The largest planetary tolerance accepted, percent.
+const TOLERANCE_PERCENT_MAX: f64 = 50.0;
+
+struct ShiftVisitor;
+
+impl<'de> serde::de::Visitor<'de> for ShiftVisitor {
+    type Value = ShiftSpec;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("two profile shifts `[x1, x2]` or `auto`")
+    }
+
+    fn visit_str<E: serde::de::Error>(self, s: &str) -> Result<ShiftSpec, E> {
+        Ok(ShiftSpec::Word(s.to_string()))
+    }
+
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<ShiftSpec, A::Error> {
+        let mut values = Vec::new();
+        while let Some(x) = seq.next_element::<Finite>()? {
+            values.push(x);
+        }
+        match values[..] {
+            [x1, x2] => Ok(ShiftSpec::Values([x1, x2])),
+            _ => Err(serde::de::Error::custom(format!(
+                "{} shift(s): give two, `[x1, x2]` (one per wheel), or `auto`",
+                values.len()
+            ))),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for ShiftSpec {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(ShiftVisitor)
+    }
 }
 
 #[derive(Debug, Clone, Deserialize)]
@@ -101,7 +139,7 @@ pub fn resolve(
     spec: &Spanned<GearsSpec>,
     crank_rpm: Option<f64>,
     warnings: &mut Vec<Warning>,
-) -> Result<GearsProject, ModelError> {
+) -> Result<GearsProject, Refusal> {
     let g = &spec.value;
     let (pair_spec, auto_shift) = pair_spec(&g.pair)?;
     let pair = Pair::new(&pair_spec).map_err(|e| pair_error(&g.pair, e))?;
@@ -142,7 +180,7 @@ fn course_x_min(spec: &PairSpec, z: u32) -> f64 {
     spec.addendum * (z_lim - f64::from(z)) / z_lim
 }
 
-fn pair_spec(p: &Spanned<PairFileSpec>) -> Result<(PairSpec, [bool; 2]), ModelError> {
+fn pair_spec(p: &Spanned<PairFileSpec>) -> Result<(PairSpec, [bool; 2]), Refusal> {
     let f = &p.value;
     let module = f.module.value.0 * 1e-3;
     let z = [f.z[0].value, f.z[1].value];
@@ -192,17 +230,19 @@ fn pair_spec(p: &Spanned<PairFileSpec>) -> Result<(PairSpec, [bool; 2]), ModelEr
     Ok((spec, auto))
 }
 
-fn pair_error(p: &Spanned<PairFileSpec>, e: PairError) -> ModelError {
+fn pair_error(p: &Spanned<PairFileSpec>, e: PairError) -> Refusal {
     let f = &p.value;
-    let (loc, field): (Location, &str) = match &e {
-        PairError::TooFewTeeth { wheel, .. } => (at(&f.z[wheel - 1]), "gears.pair.z"),
-        PairError::Module(_) => (at(&f.module), "gears.pair.module"),
-        PairError::Parameter { field, .. } => (p.referenced, field),
+    let (loc, field, kind): (Location, String, Kind) = match &e {
+        PairError::TooFewTeeth { wheel, .. } => {
+            (at(&f.z[wheel - 1]), format!("gears.pair.z[{}]", wheel - 1), Kind::Value)
+        }
+        PairError::Module(_) => (at(&f.module), "gears.pair.module".into(), Kind::Value),
+        PairError::Parameter { field, .. } => (p.referenced, field.to_string(), Kind::Value),
         PairError::NoWorkingAngle { .. } | PairError::Pointed { .. } | PairError::NotContinuous { .. } => {
-            (f.shift.as_ref().map_or(p.referenced, |s| s.referenced), "gears.pair.shift")
+            (f.shift.as_ref().map_or(p.referenced, |s| s.referenced), "gears.pair.shift".into(), Kind::Design)
         }
     };
-    invalid(loc, field, e.to_string())
+    invalid(loc, field, e.to_string()).kind(kind)
 }
 
 fn planetary_project(
@@ -211,7 +251,7 @@ fn planetary_project(
     motor: Option<f64>,
     output: Option<f64>,
     section: Location,
-) -> Result<PlanetaryProject, ModelError> {
+) -> Result<PlanetaryProject, Refusal> {
     let f = &p.value;
     let scheme = Scheme::ALL.into_iter().find(|s| s.key() == f.scheme.value).ok_or_else(|| {
         let known: Vec<&str> = Scheme::ALL.iter().map(|s| s.key()).collect();
@@ -248,6 +288,17 @@ fn planetary_project(
         spec.planets = Some(k.value);
     }
     if let Some(t) = &f.tolerance_percent {
+        // The course accepts a few percent; beyond half the ratio it would not be a ratio.
+        if t.value.0 > TOLERANCE_PERCENT_MAX {
+            return Err(invalid(
+                t.referenced,
+                "gears.planetary.tolerance_percent",
+                format!(
+                    "{} % is outside 0…{TOLERANCE_PERCENT_MAX} % (the course allows a few percent)",
+                    sig(t.value.0, 4)
+                ),
+            ));
+        }
         spec.tolerance = t.value.0 / 100.0;
     }
     let stage = planetary::synthesise(&spec).map_err(|e| {
@@ -255,16 +306,18 @@ fn planetary_project(
             StageError::BadPlanets { .. } => {
                 (f.planets.as_ref().map_or(p.referenced, |k| k.referenced), "gears.planetary.planets")
             }
+            _ if f.ratio.is_some() => (ratio_loc, "gears.planetary.ratio"),
             _ => (ratio_loc, "gears.planetary"),
         };
+        let kind = if matches!(e, StageError::NoSet { .. }) { Kind::Design } else { Kind::Value };
         // Say where a derived ratio came from: a wrong speed is the usual cause.
         let from = match (ratio_given, motor, output) {
-            (false, Some(n_m), Some(n_1)) => {
+            (false, Some(n_m), Some(n_1)) if !matches!(e, StageError::BadPlanets { .. }) => {
                 format!(" (u_pl = n_motor / n1 / u_12 = {n_m} / {n_1:.4} / {:.4} = {ratio:.4})", pair.ratio)
             }
             _ => String::new(),
         };
-        invalid(loc, field, format!("{e}{from}"))
+        invalid(loc, field, format!("{e}{from}")).kind(kind)
     })?;
     Ok(PlanetaryProject { module: f.module.value.0 * 1e-3, stage, ratio_given })
 }

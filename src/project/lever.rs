@@ -6,7 +6,8 @@ use super::forces::ForcesSpec;
 use super::mechanism::*;
 use super::text::{self, Lines};
 use super::values::Name;
-use super::{ModelError, Warning, at, invalid, warning};
+use super::{Kind, Places, Refusal, Warning, at, invalid, warning};
+use crate::lever::analysis::AnalysisError;
 use crate::lever::kinetostatics::ForceModel;
 use crate::lever::linkage::{Group, Link, LinkId, LinkKind, Mechanism, Output, PointId, Step};
 use crate::lever::{DyadKind, Settings, Start};
@@ -34,21 +35,24 @@ struct Builder {
 }
 
 impl Builder {
-    fn new_point(&mut self, name: &Name, field: &str) -> Result<PointId, ModelError> {
+    fn new_point(&mut self, name: &Name, field: &str) -> Result<PointId, Refusal> {
         if name.value.trim().is_empty() {
             return Err(invalid(at(name), field, "a point name must not be empty"));
         }
         if self.m.point_id(&name.value).is_some() {
-            return Err(invalid(at(name), field, format!("point '{}' is defined twice", name.value)));
+            return Err(
+                invalid(at(name), field, format!("point '{}' is defined twice", name.value)).kind(Kind::Reference)
+            );
         }
         self.m.point_names.push(name.value.clone());
         Ok(self.m.point_names.len() - 1)
     }
 
-    fn known_point(&self, name: &Name, field: &str) -> Result<PointId, ModelError> {
+    fn known_point(&self, name: &Name, field: &str) -> Result<PointId, Refusal> {
         self.m.point_id(&name.value).ok_or_else(|| {
             let known = self.m.point_names.join(", ");
             invalid(at(name), field, format!("unknown point '{}' (points defined before it: {known})", name.value))
+                .kind(Kind::Reference)
         })
     }
 
@@ -59,12 +63,12 @@ impl Builder {
         points: Vec<PointId>,
         loc: Location,
         field: &str,
-    ) -> Result<LinkId, ModelError> {
+    ) -> Result<LinkId, Refusal> {
         if number == 0 {
             return Err(invalid(loc, field, "link 0 is the frame; moving links are numbered from 1"));
         }
         if self.m.link_by_number(number).is_some() {
-            return Err(invalid(loc, field, format!("link {number} is used twice")));
+            return Err(invalid(loc, field, format!("link {number} is used twice")).kind(Kind::Reference));
         }
         self.m.links.push(Link { number, kind, points });
         Ok(self.m.links.len() - 1)
@@ -81,7 +85,7 @@ pub fn resolve(
     analysis: Option<&Spanned<AnalysisSpec>>,
     forces: Option<&Spanned<ForcesSpec>>,
     warnings: &mut Vec<Warning>,
-) -> Result<LeverProject, ModelError> {
+) -> Result<LeverProject, Refusal> {
     let spec = &spec.value;
     check_texts(spec)?;
     plausibility(spec, warnings);
@@ -100,19 +104,20 @@ pub fn resolve(
             size: 0.0,
         },
     };
-    for fp in &spec.frame {
-        let id = b.new_point(&fp.name, "mechanism.frame.name")?;
+    for (i, fp) in spec.frame.iter().enumerate() {
+        let id = b.new_point(&fp.name, &format!("mechanism.frame[{i}].name"))?;
         b.m.frame.push((id, Vec2::new(fp.at[0].0, fp.at[1].0)));
     }
     let c = &spec.crank;
     let pivot = b.known_point(&c.pivot, "mechanism.crank.pivot")?;
     if !b.is_frame(pivot) {
-        return Err(invalid(at(&c.pivot), "mechanism.crank.pivot", "the crank must turn about a frame point"));
+        return Err(invalid(at(&c.pivot), "mechanism.crank.pivot", "the crank must turn about a frame point")
+            .kind(Kind::Reference));
     }
     let pin = b.new_point(&c.pin, "mechanism.crank.pin")?;
     let link = b.new_link(c.link, LinkKind::Crank, vec![pivot, pin], at(&c.pin), "mechanism.crank.link")?;
     b.m.steps.push(Step::Crank { pivot, pin, length: c.length.value.0, link });
-    let mut pending: Vec<&PointSpec> = spec.points.iter().collect();
+    let mut pending: Vec<(usize, &PointSpec)> = spec.points.iter().enumerate().collect();
     attach_ready(&mut b, &mut pending)?;
     let mut kulisa_lengths = vec![];
     for (gi, g) in spec.groups.iter().enumerate() {
@@ -122,17 +127,18 @@ pub fn resolve(
         }
         attach_ready(&mut b, &mut pending)?;
     }
-    if let Some(p) = pending.first() {
-        let why = if b.m.link_by_number(p.link.value).is_none() {
-            format!("link {} is not formed by the crank or any group", p.link.value)
+    if let Some(&(i, p)) = pending.first() {
+        let (field, why) = if b.m.link_by_number(p.link.value).is_none() {
+            ("link", format!("link {} is not formed by the crank or any group", p.link.value))
         } else {
-            "it refers to a point that is never defined on that link".to_string()
+            ("from", "it refers to a point that is never defined on that link".to_string())
         };
         return Err(invalid(
             at(&p.name),
-            "mechanism.points",
+            format!("mechanism.points[{i}].{field}"),
             format!("point '{}' cannot be placed: {why}", p.name.value),
-        ));
+        )
+        .kind(Kind::Reference));
     }
     b.m.output = resolve_output(&b, spec)?;
     b.m.size = b.m.measure_size();
@@ -144,19 +150,22 @@ pub fn resolve(
 }
 
 /// Point names and assumptions reach the sheet: the checks of [`text`].
-fn check_texts(spec: &MechanismSpec) -> Result<(), ModelError> {
-    let mut names: Vec<(&str, &Name)> = spec.frame.iter().map(|f| ("mechanism.frame.name", &f.name)).collect();
-    names.push(("mechanism.crank.pin", &spec.crank.pin));
-    names.extend(spec.points.iter().map(|p| ("mechanism.points.name", &p.name)));
-    for g in &spec.groups {
+fn check_texts(spec: &MechanismSpec) -> Result<(), Refusal> {
+    let mut names: Vec<(String, &Name)> =
+        spec.frame.iter().enumerate().map(|(i, f)| (format!("mechanism.frame[{i}].name"), &f.name)).collect();
+    names.push(("mechanism.crank.pin".into(), &spec.crank.pin));
+    names.extend(spec.points.iter().enumerate().map(|(i, p)| (format!("mechanism.points[{i}].name"), &p.name)));
+    for (i, g) in spec.groups.iter().enumerate() {
         match &g.value {
-            GroupSpec::Rrr(r) => names.push(("mechanism.groups.rrr.point", &r.point)),
-            GroupSpec::Rrp(r) => names.push(("mechanism.groups.rrp.point", &r.point)),
-            GroupSpec::Rpr(r) => names.extend(r.image.as_ref().map(|n| ("mechanism.groups.rpr.image", n))),
+            GroupSpec::Rrr(r) => names.push((format!("mechanism.groups[{i}].rrr.point"), &r.point)),
+            GroupSpec::Rrp(r) => names.push((format!("mechanism.groups[{i}].rrp.point"), &r.point)),
+            GroupSpec::Rpr(r) => {
+                names.extend(r.image.as_ref().map(|n| (format!("mechanism.groups[{i}].rpr.image"), n)))
+            }
         }
     }
     for (field, n) in names {
-        text::check(field, n, Lines::One)?;
+        text::check(&field, n, Lines::One)?;
     }
     for (i, a) in spec.assumptions.iter().enumerate() {
         text::check_local(&format!("mechanism.assumptions[{i}]"), a, Lines::Many)?;
@@ -227,7 +236,7 @@ fn plausibility(spec: &MechanismSpec, warnings: &mut Vec<Warning>) {
 }
 
 /// |ω1|, 1/s, from `rpm` (ω = π·n/30) or `omega`: exactly one of them.
-fn crank_speed(c: &CrankSpec) -> Result<f64, ModelError> {
+fn crank_speed(c: &CrankSpec) -> Result<f64, Refusal> {
     match (&c.rpm, &c.omega) {
         (Some(n), None) => Ok(std::f64::consts::PI * n.value.0 / 30.0),
         (None, Some(w)) => Ok(w.value.0),
@@ -242,11 +251,7 @@ fn crank_speed(c: &CrankSpec) -> Result<f64, ModelError> {
     }
 }
 
-fn add_group(
-    b: &mut Builder,
-    g: &Spanned<GroupSpec>,
-    field: &str,
-) -> Result<Option<(LinkId, Option<f64>)>, ModelError> {
+fn add_group(b: &mut Builder, g: &Spanned<GroupSpec>, field: &str) -> Result<Option<(LinkId, Option<f64>)>, Refusal> {
     let step = b.m.steps.len();
     let loc = at(g);
     let (kind, links, point, inputs, kulisa) = match &g.value {
@@ -302,22 +307,22 @@ fn add_group(
 }
 
 /// Adds, in the file's order, every pending point whose link and reference points exist.
-fn attach_ready(b: &mut Builder, pending: &mut Vec<&PointSpec>) -> Result<(), ModelError> {
+fn attach_ready(b: &mut Builder, pending: &mut Vec<(usize, &PointSpec)>) -> Result<(), Refusal> {
     loop {
-        let ready = pending.iter().position(|p| {
+        let ready = pending.iter().position(|(_, p)| {
             let link_ok = b.m.link_by_number(p.link.value).is_some();
             let refs_ok = b.m.point_id(&p.from.value).is_some()
                 && p.toward.as_ref().is_none_or(|t| b.m.point_id(&t.value).is_some());
             link_ok && refs_ok
         });
         let Some(i) = ready else { return Ok(()) };
-        let p = pending.remove(i);
-        attach(b, p)?;
+        let (index, p) = pending.remove(i);
+        attach(b, index, p)?;
     }
 }
 
-fn attach(b: &mut Builder, p: &PointSpec) -> Result<(), ModelError> {
-    let field = format!("mechanism.points[{}]", p.name.value);
+fn attach(b: &mut Builder, index: usize, p: &PointSpec) -> Result<(), Refusal> {
+    let field = format!("mechanism.points[{index}]");
     let link = b.m.link_by_number(p.link.value).expect("checked by attach_ready");
     let from = b.known_point(&p.from, &format!("{field}.from"))?;
     let on_link = |id: PointId, b: &Builder| b.m.links[link].points.contains(&id);
@@ -326,7 +331,8 @@ fn attach(b: &mut Builder, p: &PointSpec) -> Result<(), ModelError> {
             at(&p.from),
             format!("{field}.from"),
             format!("point '{}' is not on link {}", p.from.value, p.link.value),
-        ));
+        )
+        .kind(Kind::Reference));
     }
     let (toward, distance) = match &p.toward {
         None => {
@@ -342,7 +348,8 @@ fn attach(b: &mut Builder, p: &PointSpec) -> Result<(), ModelError> {
                     at(t),
                     format!("{field}.toward"),
                     format!("point '{}' must be another point of link {}", t.value, p.link.value),
-                ));
+                )
+                .kind(Kind::Reference));
             }
             let d = match (p.ratio, p.distance) {
                 (Some(r), None) => {
@@ -398,11 +405,11 @@ fn link_span(b: &Builder, x: PointId, y: PointId) -> Option<f64> {
     })
 }
 
-fn resolve_output(b: &Builder, spec: &MechanismSpec) -> Result<Output, ModelError> {
+fn resolve_output(b: &Builder, spec: &MechanismSpec) -> Result<Output, Refusal> {
     if let Some(n) = &spec.output_link {
-        let link =
-            b.m.link_by_number(n.value)
-                .ok_or_else(|| invalid(at(n), "mechanism.output_link", format!("no link {}", n.value)))?;
+        let link = b.m.link_by_number(n.value).ok_or_else(|| {
+            invalid(at(n), "mechanism.output_link", format!("no link {}", n.value)).kind(Kind::Reference)
+        })?;
         return Ok(Output::Rocker { link });
     }
     let slider_of = |id: PointId| {
@@ -419,6 +426,7 @@ fn resolve_output(b: &Builder, spec: &MechanismSpec) -> Result<Output, ModelErro
                 "mechanism.output_point",
                 format!("'{}' is not a slider point; use output_link for a rocker", n.value),
             )
+            .kind(Kind::Reference)
         });
     }
     let Some(last) = b.m.groups.last() else {
@@ -434,7 +442,7 @@ fn resolve_output(b: &Builder, spec: &MechanismSpec) -> Result<Output, ModelErro
     })
 }
 
-fn settings(a: &AnalysisSpec, sense: f64) -> Result<Settings, ModelError> {
+fn settings(a: &AnalysisSpec, sense: f64) -> Result<Settings, Refusal> {
     let n = a.positions.value;
     if n != 8 && n != 12 {
         return Err(invalid(
@@ -489,4 +497,25 @@ fn settings(a: &AnalysisSpec, sense: f64) -> Result<Settings, ModelError> {
         assigned_deg: a.assigned_deg.as_ref().map(|d| d.value.0),
         acceleration_plans,
     })
+}
+
+/// A sheet-1 analysis error as a refusal of the field that causes it: an Assur group that
+/// cannot be assembled or passes a dead point is its entry in `mechanism.groups` (the crank,
+/// `mechanism.crank`), a force analysis that has no solution is φ1 (`analysis.assigned_deg`),
+/// a load on a slider that does not move is the load.
+pub fn refusal_of_analysis(e: &AnalysisError, places: &Places) -> Refusal {
+    use crate::lever::motion::MotionError as M;
+    let path = match e {
+        AnalysisError::Motion(M::NeverAssembles { index, .. })
+        | AnalysisError::Motion(M::CannotAssemble { index, .. })
+        | AnalysisError::Motion(M::DeadPoint { index, .. }) => match index {
+            Some(g) => format!("mechanism.groups[{g}]"),
+            None => "mechanism.crank".to_string(),
+        },
+        AnalysisError::Motion(M::NoExtreme { .. }) => "analysis.start".to_string(),
+        AnalysisError::Motion(M::Search { .. }) | AnalysisError::NotFinite { .. } => "mechanism".to_string(),
+        AnalysisError::Force { .. } | AnalysisError::ForceNotFinite { .. } => "analysis.assigned_deg".to_string(),
+        AnalysisError::ZeroStroke { .. } => "forces.loads".to_string(),
+    };
+    Refusal::new(Kind::Design, (0, 0), path, e.to_string()).placed(places)
 }

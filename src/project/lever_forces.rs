@@ -4,7 +4,7 @@
 use super::forces::*;
 use super::mechanism::Along;
 use super::values::Name;
-use super::{ModelError, Warning, at, invalid, warning};
+use super::{Kind, Refusal, Warning, at, invalid, warning};
 use crate::lever::indicators::{self, Indicator};
 use crate::lever::kinetostatics::{ForceModel, LinkMass};
 use crate::lever::linkage::{LinkId, LinkKind, Mechanism, PointId, Step};
@@ -20,20 +20,22 @@ pub fn build_forces(
     spec: &Spanned<ForcesSpec>,
     m: &Mechanism,
     warnings: &mut Vec<Warning>,
-) -> Result<ForceModel, ModelError> {
+) -> Result<ForceModel, Refusal> {
     let f = &spec.value;
     let mut masses: Vec<LinkMass> = Vec::new();
     for (i, lm) in f.links.iter().enumerate() {
         let field = format!("forces.links[{i}]");
         let link = m.link_by_number(lm.link.value).ok_or_else(|| {
             invalid(at(&lm.link), format!("{field}.link"), format!("there is no link {}", lm.link.value))
+                .kind(Kind::Reference)
         })?;
         if masses.iter().any(|x| x.link == link) {
             return Err(invalid(
                 at(&lm.link),
                 format!("{field}.link"),
                 format!("link {} is listed twice", lm.link.value),
-            ));
+            )
+            .kind(Kind::Reference));
         }
         let mass = link_mass(m, lm, link, &field, warnings)?;
         if mass.mass > limits::MASS_PLAUSIBLE_MAX {
@@ -70,7 +72,7 @@ fn link_mass(
     link: LinkId,
     field: &str,
     warnings: &mut Vec<Warning>,
-) -> Result<LinkMass, ModelError> {
+) -> Result<LinkMass, Refusal> {
     let loc = at(&lm.link);
     let full = full_length(m, link);
     let length = || {
@@ -183,7 +185,7 @@ fn defined_length(m: &Mechanism, link: LinkId) -> Option<f64> {
 }
 
 /// The slider of an RRP group at `name`: (link, point, guide point, guide direction).
-fn slider(m: &Mechanism, name: &Name, field: &str) -> Result<(LinkId, PointId, Vec2, Vec2), ModelError> {
+fn slider(m: &Mechanism, name: &Name, field: &str) -> Result<(LinkId, PointId, Vec2, Vec2), Refusal> {
     let found = m.point_id(&name.value).and_then(|id| {
         m.steps.iter().find_map(|s| match *s {
             Step::Rrp { d, through, dir, links, .. } if d == id => Some((links[1], d, through, dir)),
@@ -199,10 +201,11 @@ fn slider(m: &Mechanism, name: &Name, field: &str) -> Result<(LinkId, PointId, V
                 name.value
             ),
         )
+        .kind(Kind::Reference)
     })
 }
 
-fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, ModelError> {
+fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, Refusal> {
     match &spec.value {
         LoadSpec::Resistance(r) => {
             let (link, point, through, dir) = slider(m, &r.point, &format!("{field}.resistance.point"))?;
@@ -257,7 +260,7 @@ fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, Mo
     }
 }
 
-fn indicator(g: &GasSpec, field: &str) -> Result<Indicator, ModelError> {
+fn indicator(g: &GasSpec, field: &str) -> Result<Indicator, Refusal> {
     let loc = at(&g.indicator);
     let revolution = g.revolution.as_ref().map_or(1, |r| r.value);
     if let Some(r) = g.revolution.as_ref().filter(|r| r.value != 1 && r.value != 2) {
@@ -289,7 +292,7 @@ fn indicator(g: &GasSpec, field: &str) -> Result<Indicator, ModelError> {
 
 /// A written diagram, checked: at least two rows, stroke fractions from 0 to 1, strictly
 /// increasing.
-fn diagram(d: &DiagramSpec, field: &str) -> Result<Curve, ModelError> {
+fn diagram(d: &DiagramSpec, field: &str) -> Result<Curve, Refusal> {
     let rows: Vec<(f64, f64)> = d.value.iter().map(|r| (r[0].0, r[1].0)).collect();
     let bad = |msg: String| Err(invalid(at(d), field, msg));
     if rows.len() < 2 {

@@ -14,40 +14,56 @@ pub mod info;
 mod lever;
 mod lever_forces;
 pub mod mechanism;
+pub mod places;
+mod refusal;
 pub mod text;
 pub mod values;
+mod yaml;
 
 pub use cam::CamProject;
 pub use gears::GearsProject;
 pub use info::ProjectInfo;
-pub use lever::LeverProject;
+pub use lever::{LeverProject, refusal_of_analysis};
+pub use places::Places;
+pub use refusal::{Kind, Refusal, Warning};
+
+pub(crate) use refusal::{invalid, warning};
 
 use forces::ForcesSpec;
 use info::InfoSpec;
 use mechanism::{AnalysisSpec, MechanismSpec};
 use serde::Deserialize;
+use serde::de::IgnoredAny;
 use serde_saphyr::{Location, Spanned};
 
-/// The file as written.
-#[derive(Debug, Clone, Deserialize)]
+/// The file's top level. Each sheet's sections are read on their own (the others as
+/// [`IgnoredAny`]), so that a broken `cam` section leaves sheets 1 and 2 buildable.
+#[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct ProjectFile {
-    pub project: InfoSpec,
+struct Sections<P, M, A, F, G, C> {
+    project: P,
     /// The lever mechanism of sheet 1.
-    #[serde(default)]
-    pub mechanism: Option<Spanned<MechanismSpec>>,
-    #[serde(default)]
-    pub analysis: Option<Spanned<AnalysisSpec>>,
+    #[serde(default = "Option::default")]
+    mechanism: Option<M>,
+    #[serde(default = "Option::default")]
+    analysis: Option<A>,
     /// The force analysis at φ1 (`analysis.assigned_deg`); absent: sheet 1 has kinematics only.
-    #[serde(default)]
-    pub forces: Option<Spanned<ForcesSpec>>,
+    #[serde(default = "Option::default")]
+    forces: Option<F>,
     /// The external pair and the planetary stage of sheet 2.
-    #[serde(default)]
-    pub gears: Option<Spanned<gears::GearsSpec>>,
+    #[serde(default = "Option::default")]
+    gears: Option<G>,
     /// The cam of sheet 3.
-    #[serde(default)]
-    pub cam: Option<Spanned<cam::CamSpecFile>>,
+    #[serde(default = "Option::default")]
+    cam: Option<C>,
 }
+
+type Any = IgnoredAny;
+type Shape = Sections<Any, Any, Any, Any, Any, Any>;
+type InfoPart = Sections<InfoSpec, Any, Any, Any, Any, Any>;
+type LeverPart = Sections<Any, Spanned<MechanismSpec>, Spanned<AnalysisSpec>, Spanned<ForcesSpec>, Any, Any>;
+type GearsPart = Sections<Any, Any, Any, Any, Spanned<gears::GearsSpec>, Any>;
+type CamPart = Sections<Any, Any, Any, Any, Any, Spanned<cam::CamSpecFile>>;
 
 /// A resolved project: what each sheet needs, and the warnings about its input.
 #[derive(Debug, Clone)]
@@ -60,26 +76,8 @@ pub struct Project {
     /// Sheet 3's cam, when the file has a `cam` section.
     pub cam: Option<CamProject>,
     pub warnings: Vec<Warning>,
-}
-
-/// An error in the user's project file, always with where it is.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum ModelError {
-    /// The YAML does not parse or does not fit the schema (the message has line and column).
-    #[error("{0}")]
-    Yaml(String),
-    #[error("line {line}, column {column}: {field}: {message}")]
-    Invalid { line: u64, column: u64, field: String, message: String },
-}
-
-/// Input that builds but is almost surely a mistake (printed; the build continues).
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("line {line}, column {column}: {field}: {message}")]
-pub struct Warning {
-    pub line: u64,
-    pub column: u64,
-    pub field: String,
-    pub message: String,
+    /// Where every field is written, to place a refusal found later by its field.
+    pub places: Places,
 }
 
 /// Where a value was written, for error messages.
@@ -87,66 +85,168 @@ pub(crate) fn at<T>(s: &Spanned<T>) -> Location {
     s.referenced
 }
 
-pub(crate) fn invalid(loc: Location, field: impl Into<String>, message: impl Into<String>) -> ModelError {
-    ModelError::Invalid { line: loc.line(), column: loc.column(), field: field.into(), message: message.into() }
-}
-
-pub(crate) fn warning(loc: Location, field: impl Into<String>, message: impl Into<String>) -> Warning {
-    Warning { line: loc.line(), column: loc.column(), field: field.into(), message: message.into() }
-}
-
-/// Parses a project file from YAML text.
-pub fn parse(text: &str) -> Result<ProjectFile, ModelError> {
-    serde_saphyr::from_str(text).map_err(|e| {
-        let msg = e.to_string();
-        ModelError::Yaml(msg.strip_prefix("error: ").unwrap_or(&msg).to_string())
-    })
-}
-
-/// Parses and resolves a project file.
-pub fn load(text: &str) -> Result<Project, ModelError> {
-    resolve(&parse(text)?)
-}
-
-/// Checks the file's text and resolves each section it has.
-pub fn resolve(file: &ProjectFile) -> Result<Project, ModelError> {
-    for (field, t) in file.project.texts() {
-        text::check(field, t, text::Lines::One)?;
+/// The section a field's path belongs to: the lever's three sections are one.
+fn section_of(path: &str) -> Option<&'static str> {
+    match path.split(['.', '[']).next() {
+        Some("mechanism" | "analysis" | "forces") => Some("mechanism"),
+        Some("gears") => Some("gears"),
+        Some("cam") => Some("cam"),
+        _ => None,
     }
-    for (field, t) in file.project.local_texts() {
-        text::check_local(field, t, text::Lines::One)?;
+}
+
+/// Parses and resolves a project file; refuses it when any section is refused.
+pub fn load(text: &str) -> Result<Project, Refusal> {
+    let (project, refused) = load_sections(text)?;
+    match refused.into_iter().next() {
+        Some(r) => Err(r),
+        None => Ok(project),
     }
-    let mut warnings = Vec::new();
-    let lever = match &file.mechanism {
-        Some(m) => Some(lever::resolve(m, file.analysis.as_ref(), file.forces.as_ref(), &mut warnings)?),
-        None => {
-            let orphan = [
-                file.analysis.as_ref().map(|a| ("analysis", a.referenced)),
-                file.forces.as_ref().map(|f| ("forces", f.referenced)),
-            ];
-            if let Some((section, loc)) = orphan.into_iter().flatten().next() {
-                return Err(invalid(
-                    loc,
-                    section,
-                    "this section belongs to the lever mechanism: add a `mechanism` section",
-                ));
-            }
-            None
-        }
-    };
-    let crank_rpm = lever.as_ref().map(|l| l.mechanism.omega1.abs() * 30.0 / std::f64::consts::PI);
-    let gears = match &file.gears {
-        Some(g) => Some(gears::resolve(g, crank_rpm, &mut warnings)?),
-        None => None,
-    };
-    let cam = match &file.cam {
-        Some(c) => Some(cam::resolve(c, &mut warnings)?),
-        None => None,
-    };
-    if lever.is_none() && gears.is_none() && cam.is_none() {
-        return Err(ModelError::Yaml(
-            "the project has nothing to draw: add a `mechanism` section (sheet 1), a `gears` section (sheet 2) or a `cam` section (sheet 3); `tmm example` prints one".into(),
+}
+
+/// Parses and resolves a project file section by section: the project, and the refusal of
+/// each section that cannot be resolved (its sheet cannot be built; the others can). A
+/// refusal of the whole file (its syntax, its top level, the `project` section) is the error.
+pub fn load_sections(text: &str) -> Result<(Project, Vec<Refusal>), Refusal> {
+    let places = Places::of(text);
+    let blank = |l: &str| l.trim().is_empty() || l.trim_start().starts_with('#');
+    if places.is_empty() && text.lines().all(blank) {
+        return Err(Refusal::new(
+            Kind::Section,
+            (1, 1),
+            "",
+            "the file is empty: a project file starts with a `project` section; `tmm example` prints one",
         ));
     }
-    Ok(Project { info: file.project.resolve(), lever, gears, cam, warnings })
+    yaml::read::<Shape>(text, &places)?;
+    let duplicates: Vec<Refusal> = places
+        .duplicates
+        .iter()
+        .map(|d| {
+            let cause = format!("the key `{}` is written twice in one mapping", d.key);
+            let r = Refusal::new(Kind::Key, (d.line, d.column), d.path.clone(), cause);
+            match section_of(&d.path) {
+                Some(s) => r.in_section(s),
+                None => r,
+            }
+        })
+        .collect();
+    if let Some(global) = duplicates.iter().find(|r| r.section.is_none()) {
+        return Err(global.clone());
+    }
+    let info = resolve_info(&yaml::read::<InfoPart>(text, &places)?.project)?;
+    let mut warnings = Vec::new();
+    let mut refused: Vec<Refusal> = Vec::new();
+    let mut sections = Sectioned { duplicates: &duplicates, places: &places, refused: &mut refused };
+    let lever = sections.take("mechanism", read_lever(text, &places, &mut warnings));
+    let crank_rpm = match &lever {
+        Some(l) => Some(l.mechanism.omega1.abs() * 30.0 / std::f64::consts::PI),
+        None => written_crank_rpm(text, &places),
+    };
+    let gears = read_gears(text, &places, crank_rpm, &mut warnings).map_err(|r| {
+        // n1 defaults to the crank's speed: say why it is missing when the crank is refused.
+        let mechanism_refused = sections.refused.iter().any(|m| m.section == Some("mechanism"));
+        if r.path == "gears.output_rpm" && crank_rpm.is_none() && mechanism_refused {
+            let cause =
+                format!("{} (the crank's speed would give it, but the `mechanism` section is refused)", r.cause);
+            Refusal { cause, ..r }
+        } else {
+            r
+        }
+    });
+    let gears = sections.take("gears", gears);
+    let cam = sections.take("cam", read_cam(text, &places, &mut warnings));
+    if lever.is_none() && gears.is_none() && cam.is_none() && refused.is_empty() {
+        return Err(Refusal::new(
+            Kind::Section,
+            (1, 1),
+            "",
+            "the project has nothing to draw: add a `mechanism` section (sheet 1), a `gears` section (sheet 2) or a `cam` section (sheet 3); `tmm example` prints one",
+        ));
+    }
+    refused.sort_by_key(|r| (r.line, r.column));
+    Ok((Project { info, lever, gears, cam, warnings, places }, refused))
+}
+
+/// Collects the sections' refusals: a key written twice in a section refuses it first.
+struct Sectioned<'a> {
+    duplicates: &'a [Refusal],
+    places: &'a Places,
+    refused: &'a mut Vec<Refusal>,
+}
+
+impl Sectioned<'_> {
+    /// The section's value, or `None` with its refusal recorded.
+    fn take<T>(&mut self, section: &'static str, result: Result<Option<T>, Refusal>) -> Option<T> {
+        let duplicate = self.duplicates.iter().find(|r| r.section == Some(section)).cloned();
+        match duplicate.map(Err).unwrap_or(result) {
+            Ok(v) => v,
+            Err(r) => {
+                self.refused.push(r.in_section(section).placed(self.places));
+                None
+            }
+        }
+    }
+}
+
+/// Checks the `project` section's texts and resolves it.
+fn resolve_info(spec: &InfoSpec) -> Result<ProjectInfo, Refusal> {
+    for (field, t) in spec.texts() {
+        text::check(field, t, text::Lines::One)?;
+    }
+    for (field, t) in spec.local_texts() {
+        text::check_local(field, t, text::Lines::One)?;
+    }
+    Ok(spec.resolve())
+}
+
+/// Sheet 1's sections, when the file has a `mechanism` (an `analysis` or `forces` section
+/// without one is refused).
+fn read_lever(text: &str, places: &Places, warnings: &mut Vec<Warning>) -> Result<Option<LeverProject>, Refusal> {
+    let part: LeverPart = yaml::read(text, places)?;
+    match &part.mechanism {
+        Some(m) => Ok(Some(lever::resolve(m, part.analysis.as_ref(), part.forces.as_ref(), warnings)?)),
+        None => {
+            let orphan = [
+                part.analysis.as_ref().map(|a| ("analysis", a.referenced)),
+                part.forces.as_ref().map(|f| ("forces", f.referenced)),
+            ];
+            match orphan.into_iter().flatten().next() {
+                Some((section, loc)) => {
+                    Err(invalid(loc, section, "this section belongs to the lever mechanism: add a `mechanism` section")
+                        .kind(Kind::Section))
+                }
+                None => Ok(None),
+            }
+        }
+    }
+}
+
+/// The crank's speed as written, rev/min, when the mechanism section is refused for
+/// another reason: sheet 2 takes n1 from it all the same.
+fn written_crank_rpm(text: &str, places: &Places) -> Option<f64> {
+    let part: LeverPart = yaml::read(text, places).ok()?;
+    let crank = &part.mechanism?.value.crank;
+    match (&crank.rpm, &crank.omega) {
+        (Some(n), None) => Some(n.value.0),
+        (None, Some(w)) => Some(w.value.0 * 30.0 / std::f64::consts::PI),
+        _ => None,
+    }
+}
+
+/// Sheet 2's section; `crank_rpm` is the mechanism's crank speed when there is one.
+fn read_gears(
+    text: &str,
+    places: &Places,
+    crank_rpm: Option<f64>,
+    warnings: &mut Vec<Warning>,
+) -> Result<Option<GearsProject>, Refusal> {
+    let part: GearsPart = yaml::read(text, places)?;
+    part.gears.as_ref().map(|g| gears::resolve(g, crank_rpm, warnings)).transpose()
+}
+
+/// Sheet 3's section.
+fn read_cam(text: &str, places: &Places, warnings: &mut Vec<Warning>) -> Result<Option<CamProject>, Refusal> {
+    let part: CamPart = yaml::read(text, places)?;
+    part.cam.as_ref().map(|c| cam::resolve(c, warnings)).transpose()
 }

@@ -3,7 +3,7 @@
 //! empty box, or vanish). Each refusal names the field, the character and where it is.
 
 use super::values::{LocalText, UserText};
-use super::{ModelError, invalid};
+use super::{Kind, Refusal, invalid};
 use crate::font;
 use serde_saphyr::{Location, Spanned};
 
@@ -24,12 +24,12 @@ fn describe(c: char) -> String {
 
 /// Refuses control characters (but line breaks and tabs in [`Lines::Many`] fields) and
 /// characters without a glyph in the sheets' font. Linear in the text's length.
-pub fn check(field: &str, t: &UserText, lines: Lines) -> Result<(), ModelError> {
+pub fn check(field: &str, t: &UserText, lines: Lines) -> Result<(), Refusal> {
     check_str(field, &t.value, t.referenced, lines)
 }
 
 /// [`check`] for each language's text (the field named with the language's key).
-pub fn check_local(field: &str, t: &Spanned<LocalText>, lines: Lines) -> Result<(), ModelError> {
+pub fn check_local(field: &str, t: &Spanned<LocalText>, lines: Lines) -> Result<(), Refusal> {
     for (lang, text) in t.value.texts() {
         let field = match lang {
             Some(l) => format!("{field}.{}", l.key()),
@@ -41,7 +41,7 @@ pub fn check_local(field: &str, t: &Spanned<LocalText>, lines: Lines) -> Result<
 }
 
 /// A section's `assumptions`, each checked as free text (`<section>.assumptions[i]`).
-pub fn assumptions(section: &str, texts: &[Spanned<LocalText>]) -> Result<Vec<LocalText>, ModelError> {
+pub fn assumptions(section: &str, texts: &[Spanned<LocalText>]) -> Result<Vec<LocalText>, Refusal> {
     texts
         .iter()
         .enumerate()
@@ -49,7 +49,7 @@ pub fn assumptions(section: &str, texts: &[Spanned<LocalText>]) -> Result<Vec<Lo
         .collect()
 }
 
-fn check_str(field: &str, text: &str, at: Location, lines: Lines) -> Result<(), ModelError> {
+fn check_str(field: &str, text: &str, at: Location, lines: Lines) -> Result<(), Refusal> {
     let metrics = font::metrics();
     for (i, c) in text.chars().enumerate() {
         let breaks = matches!(c, '\n' | '\t' | '\r');
@@ -64,7 +64,7 @@ fn check_str(field: &str, text: &str, at: Location, lines: Lines) -> Result<(), 
         } else {
             continue;
         };
-        return Err(invalid(at, field, format!("{why} (character {} of the text)", i + 1)));
+        return Err(invalid(at, field, format!("{why} (character {} of the text)", i + 1)).kind(Kind::Text));
     }
     Ok(())
 }

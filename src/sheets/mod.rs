@@ -15,7 +15,7 @@ pub mod words;
 use crate::drawing::scene::Scene;
 use crate::drawing::text::TooLong;
 use crate::lever::analysis::AnalysisError;
-use crate::project::{Project, ProjectInfo};
+use crate::project::{Kind, Places, Project, ProjectInfo, Refusal};
 use crate::report::NoteTable;
 
 /// The course project's sheets: number, what the sheet draws, the section it needs, and
@@ -116,6 +116,22 @@ pub enum SheetError {
     TooLong(#[from] TooLong),
 }
 
+impl SheetError {
+    /// The error as a refusal of the field that causes it, placed in the project file.
+    pub fn refusal(&self, kind: SheetKind, places: &Places) -> Refusal {
+        let r = match self {
+            SheetError::Lever(e) => crate::project::refusal_of_analysis(e, places),
+            SheetError::TooLong(t) => {
+                let text = t.to_string();
+                let cause = text.strip_prefix(&format!("{}: ", t.field)).unwrap_or(&text);
+                Refusal::new(Kind::Text, (0, 0), t.field.clone(), cause).placed(places)
+            }
+        };
+        // A title-block text is on every sheet: refusing it refuses them all.
+        if r.path.starts_with("project") { r } else { r.in_section(kind.section) }
+    }
+}
+
 /// One sheet, ready to build from its project section.
 pub trait Sheet {
     fn kind(&self) -> SheetKind;
@@ -137,6 +153,17 @@ pub enum SelectError {
     NotAvailable(SheetKind),
     #[error("sheet {number} ({subject}) needs a `{section}` section in the project file", number = .0.number, subject = .0.subject, section = .0.section)]
     MissingSection(SheetKind),
+}
+
+impl SelectError {
+    /// The error as a refusal of the project (a sheet it cannot have).
+    pub fn refusal(&self) -> Refusal {
+        let path = match self {
+            SelectError::MissingSection(k) => k.section,
+            _ => "",
+        };
+        Refusal::new(Kind::Section, (1, 1), path, self.to_string())
+    }
 }
 
 /// The sheets to build: the requested ones (each must exist and have its section), or, with
