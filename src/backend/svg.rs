@@ -3,9 +3,9 @@
 //! randomness. A non-finite number anywhere in the scene is refused, naming its group,
 //! rather than written as something else.
 
-use super::BackendError;
+use super::{BackendError, shapes};
 use crate::drawing::path::{Path, Seg};
-use crate::drawing::scene::{Anchor, Item, LineType, Pen, SUB, SUB_DROP, Scene, Text};
+use crate::drawing::scene::{Anchor, Item, Pen, SUB, SUB_DROP, Scene, Text};
 use crate::font;
 use crate::num::math;
 use kurbo::Arc;
@@ -53,10 +53,11 @@ pub fn escape(s: &str) -> String {
 }
 
 fn stroke_attrs(pen: &Pen) -> Result<String, BackendError> {
-    let dash = match pen.line {
-        LineType::Solid => "",
-        LineType::Dashed => " stroke-dasharray=\"4 1.5\"",
-        LineType::DashDot => " stroke-dasharray=\"10 1.5 0.5 1.5\"",
+    let dash = match shapes::dash_array(pen.line) {
+        None => String::new(),
+        Some(a) => {
+            format!(" stroke-dasharray=\"{}\"", a.iter().map(|&x| num(x)).collect::<Result<Vec<_>, _>>()?.join(" "))
+        }
     };
     Ok(format!("stroke=\"#000\" stroke-width=\"{}\"{dash}", num(pen.width)?))
 }
