@@ -1,11 +1,11 @@
 //! Benchmarks (`cargo bench`): the exact solver over a full turn, the force analysis,
-//! sheet 1 to SVG, and SVG to PDF and PNG, on the guide's worked example (the six-bar
+//! sheet 1 to SVG, and the scene to PDF and PNG, on the guide's worked example (the six-bar
 //! vibrating conveyor).
 #![allow(clippy::disallowed_methods)]
 
 use std::f64::consts::TAU;
 use tmm_sheets::lever::{State, analysis, kinetostatics};
-use tmm_sheets::pipeline::{self, DEFAULT_PROJECT, Formats};
+use tmm_sheets::pipeline::{self, DEFAULT_PROJECT, Format};
 
 fn main() {
     divan::main();
@@ -45,21 +45,15 @@ fn sheet1_to_svg(bencher: divan::Bencher) {
 }
 
 #[divan::bench(sample_count = 10)]
-fn svg_to_pdf(bencher: divan::Bencher) {
+fn scene_to_pdf(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap();
     let b = pipeline::build(&p, &[1]).unwrap().remove(0);
-    bencher.bench_local(|| {
-        divan::black_box(pipeline::render(&b, Formats { pdf: true, png_dpi: None }).unwrap().pdf.map(|x| x.len()))
-    });
+    bencher.bench_local(|| divan::black_box(pipeline::render(&b, Format::Pdf).unwrap().len()));
 }
 
 #[divan::bench(sample_count = 5)]
-fn svg_to_png_100dpi(bencher: divan::Bencher) {
+fn scene_to_png_100dpi(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap();
     let b = pipeline::build(&p, &[1]).unwrap().remove(0);
-    bencher.bench_local(|| {
-        divan::black_box(
-            pipeline::render(&b, Formats { pdf: false, png_dpi: Some(100.0) }).unwrap().png.map(|x| x.len()),
-        )
-    });
+    bencher.bench_local(|| divan::black_box(pipeline::render(&b, Format::Png { dpi: 100.0 }).unwrap().len()));
 }

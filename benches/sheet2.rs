@@ -7,7 +7,7 @@ use tmm_sheets::gears::pair::{Pair, PairSpec};
 use tmm_sheets::gears::planetary::{Scheme, StageSpec, synthesise};
 use tmm_sheets::gears::tooth::Outline;
 use tmm_sheets::num::bezier;
-use tmm_sheets::pipeline::{self, DEFAULT_PROJECT, Formats};
+use tmm_sheets::pipeline::{self, DEFAULT_PROJECT, Format};
 
 fn main() {
     deviation_table();
@@ -57,10 +57,8 @@ fn sheet2_to_svg(bencher: divan::Bencher) {
 }
 
 #[divan::bench(sample_count = 10)]
-fn sheet2_svg_to_pdf(bencher: divan::Bencher) {
+fn sheet2_scene_to_pdf(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap();
     let b = pipeline::build(&p, &[2]).unwrap().remove(0);
-    bencher.bench_local(|| {
-        divan::black_box(pipeline::render(&b, Formats { pdf: true, png_dpi: None }).unwrap().pdf.map(|x| x.len()))
-    });
+    bencher.bench_local(|| divan::black_box(pipeline::render(&b, Format::Pdf).unwrap().len()));
 }

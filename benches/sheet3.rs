@@ -8,7 +8,7 @@ use tmm_sheets::cams::integrate::chords;
 use tmm_sheets::cams::radius::Phase;
 use tmm_sheets::cams::{Design, design};
 use tmm_sheets::num::bezier;
-use tmm_sheets::pipeline::{self, DEFAULT_PROJECT, Formats};
+use tmm_sheets::pipeline::{self, DEFAULT_PROJECT, Format};
 
 fn main() {
     tables();
@@ -62,10 +62,8 @@ fn sheet3_to_svg(bencher: divan::Bencher) {
 }
 
 #[divan::bench(sample_count = 10)]
-fn sheet3_svg_to_pdf(bencher: divan::Bencher) {
+fn sheet3_scene_to_pdf(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap();
     let b = pipeline::build(&p, &[3]).unwrap().remove(0);
-    bencher.bench_local(|| {
-        divan::black_box(pipeline::render(&b, Formats { pdf: true, png_dpi: None }).unwrap().pdf.map(|x| x.len()))
-    });
+    bencher.bench_local(|| divan::black_box(pipeline::render(&b, Format::Pdf).unwrap().len()));
 }

@@ -7,7 +7,7 @@
 pub mod write;
 
 use crate::drawing::labels::Language;
-use crate::pipeline::{self, DEFAULT_PROJECT, Formats};
+use crate::pipeline::{self, DEFAULT_PROJECT};
 use anyhow::{Context, Result, bail};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::io::Read;
@@ -112,8 +112,8 @@ fn build(args: &BuildArgs) -> Result<(), Failure> {
             eprintln!("warning: sheet {}: {d}", b.output.number);
         }
     }
-    let formats = Formats { pdf: !args.no_pdf, png_dpi: (!args.no_png).then_some(args.png_dpi) };
-    let files = pipeline::outputs(&project, &built, formats).map_err(|e| Failure::Output(e.into()))?;
+    let formats = pipeline::formats(!args.no_pdf, (!args.no_png).then_some(args.png_dpi));
+    let files = pipeline::outputs(&project, &built, &formats).map_err(|e| Failure::Output(e.into()))?;
     write::write_outputs(&args.output, &files).map_err(Failure::Output)?;
     let numbers: Vec<String> = built.iter().map(|b| b.output.number.to_string()).collect();
     println!("{name}: sheet {} written to {} ({} files)", numbers.join(", "), args.output.display(), files.len());

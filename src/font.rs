@@ -27,11 +27,21 @@ pub const CAP_HEIGHT: f64 = 1493.0 / 2048.0;
 /// Cyrillic, punctuation, sub- and superscripts, arrows, mathematical operators).
 const TABLE_END: u32 = 0x2400;
 
+/// One glyph of the font: its id and its advance in font units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Glyph {
+    pub id: u32,
+    pub advance: f64,
+}
+
 /// Advance widths of the font, for laying out and measuring text without a renderer.
 pub struct Metrics {
     font: FontRef<'static>,
-    /// Advance in font units of each code point below [`TABLE_END`]; `None`: no glyph.
-    table: Vec<Option<u16>>,
+    /// Glyph and advance in font units of each code point below [`TABLE_END`]; `None`: no
+    /// glyph.
+    table: Vec<Option<Glyph>>,
+    /// The advance of `.notdef`, the missing-glyph box.
+    notdef: f64,
     units_per_em: f64,
 }
 
@@ -39,36 +49,54 @@ impl Metrics {
     pub fn load() -> Metrics {
         let font = FontRef::new(BYTES).expect("the vendored font parses");
         let units_per_em = f64::from(font.metrics(Size::unscaled(), LocationRef::default()).units_per_em);
-        let mut m = Metrics { font, table: Vec::new(), units_per_em };
+        let notdef = font.glyph_metrics(Size::unscaled(), LocationRef::default()).advance_width(Default::default());
+        let mut m = Metrics { font, table: Vec::new(), notdef: f64::from(notdef.unwrap_or(0.0)), units_per_em };
         m.table = (0..TABLE_END).map(|c| char::from_u32(c).and_then(|c| m.lookup(c))).collect();
         m
     }
 
-    /// The advance of `c` in font units from the font's tables; `None` if it has no glyph.
-    fn lookup(&self, c: char) -> Option<u16> {
+    /// The glyph of `c` and its advance from the font's tables; `None` if it has no glyph.
+    fn lookup(&self, c: char) -> Option<Glyph> {
         // Some cmap formats answer glyph 0 (.notdef) for an unmapped character.
         let glyph = self.font.charmap().map(c).filter(|g| g.to_u32() != 0)?;
         let advance = self.font.glyph_metrics(Size::unscaled(), LocationRef::default()).advance_width(glyph)?;
-        Some(advance as u16) // unscaled advances are whole font units
+        // Unscaled advances are whole font units.
+        Some(Glyph { id: glyph.to_u32(), advance: f64::from(advance) })
     }
 
-    fn advance(&self, c: char) -> Option<u16> {
+    fn entry(&self, c: char) -> Option<Glyph> {
         match self.table.get(c as usize) {
-            Some(&a) => a,
+            Some(&g) => g,
             None => self.lookup(c),
         }
+    }
+
+    fn advance(&self, c: char) -> Option<f64> {
+        self.entry(c).map(|g| g.advance)
     }
 
     /// Width of `text` set at font size `size` (same unit as `size`); a character without
     /// a glyph counts as the font's missing-glyph box (its `.notdef` advance).
     pub fn width(&self, text: &str, size: f64) -> f64 {
-        let notdef = self
-            .font
-            .glyph_metrics(Size::unscaled(), LocationRef::default())
-            .advance_width(Default::default())
-            .unwrap_or(0.0);
-        let units: f64 = text.chars().map(|c| self.advance(c).map_or(f64::from(notdef), f64::from)).sum();
+        let units: f64 = text.chars().map(|c| self.advance(c).unwrap_or(self.notdef)).sum();
         units * size / self.units_per_em
+    }
+
+    /// The glyph that sets `c` and its advance in font units: the advance [`Metrics::width`]
+    /// counts, so a backend placing glyphs one after another ends where the layout measured.
+    /// A character without a glyph is set as `.notdef` (glyph 0).
+    pub fn glyph(&self, c: char) -> Glyph {
+        self.entry(c).unwrap_or(Glyph { id: 0, advance: self.notdef })
+    }
+
+    /// Font units per em: a glyph's advance in units times size / this is its advance at size.
+    pub fn units_per_em(&self) -> f64 {
+        self.units_per_em
+    }
+
+    /// The parsed font, for drawing glyph outlines.
+    pub fn font(&self) -> &FontRef<'static> {
+        &self.font
     }
 
     /// Whether `c` has a glyph (white space always counts as covered).
@@ -122,8 +150,8 @@ mod tests {
     fn widths_are_the_fonts_advances() {
         let m = metrics();
         assert_eq!(m.units_per_em, 2048.0);
-        assert_eq!(m.width("H", 2048.0), f64::from(m.advance('H').unwrap()));
-        assert_eq!(m.width("Hi", 2048.0), f64::from(m.advance('H').unwrap() + m.advance('i').unwrap()));
+        assert_eq!(m.width("H", 2048.0), m.advance('H').unwrap());
+        assert_eq!(m.width("Hi", 2048.0), m.advance('H').unwrap() + m.advance('i').unwrap());
         assert!(m.covers("oʻgʻ Ўў Ҳҳ μ ω ε φ π √ − ² ⁿ ᵗ ᵏ ʳ ′ ⌀"));
         assert!(!m.has_glyph('中') && !m.has_glyph('あ'));
     }

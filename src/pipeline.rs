@@ -2,7 +2,8 @@
 //! benchmarks share. It builds the sheets [`sheets::select`] picks, each computing only
 //! what it needs, and never names a sheet.
 
-use crate::backend::{raster, svg};
+pub use crate::backend::Format;
+use crate::backend::{self, BackendError, svg};
 use crate::project::{self, Project, Refusal, Warning};
 use crate::report;
 use crate::sheets::{self, COURSE, Context, SheetOutput};
@@ -17,7 +18,7 @@ pub enum Error {
     #[error("{}", .0.refusal)]
     Refused(Box<Refused>),
     #[error("output")]
-    Backend(#[from] raster::BackendError),
+    Backend(#[from] BackendError),
 }
 
 /// A refusal (kind, field, place, cause) and what it means for the sheets.
@@ -140,46 +141,35 @@ pub fn results_json(p: &Project, built: &[Built]) -> String {
     serde_json::to_string_pretty(&r).expect("results serialise")
 }
 
-/// Which of the slower formats to produce besides the SVG.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Formats {
-    pub pdf: bool,
-    /// The PNG preview's resolution, dots per inch; `None`: no PNG.
-    pub png_dpi: Option<f64>,
-}
-
-/// A sheet's PDF and PNG, each when asked for.
-#[derive(Debug, Clone, Default)]
-pub struct Rendered {
-    pub pdf: Option<Vec<u8>>,
-    pub png: Option<Vec<u8>>,
-}
-
-/// The PDF and PNG of a built sheet, only those asked for (the usvg tree is parsed once).
-pub fn render(b: &Built, formats: Formats) -> Result<Rendered, Error> {
-    if !formats.pdf && formats.png_dpi.is_none() {
-        return Ok(Rendered::default());
+/// The formats a build writes: the SVG always, then the PDF and the PNG preview (at
+/// `png_dpi`) when asked for, in that order.
+pub fn formats(pdf: bool, png_dpi: Option<f64>) -> Vec<Format> {
+    let mut f = vec![Format::Svg];
+    if pdf {
+        f.push(Format::Pdf);
     }
-    let (w, h) = (b.output.scene.width, b.output.scene.height);
-    let tree = raster::parse(&b.svg)?;
-    let pdf = if formats.pdf { Some(raster::pdf(&tree, w, h)?) } else { None };
-    let png = match formats.png_dpi {
-        Some(dpi) => Some(raster::png(&tree, w, h, dpi)?),
-        None => None,
-    };
-    Ok(Rendered { pdf, png })
+    f.extend(png_dpi.map(|dpi| Format::Png { dpi }));
+    f
 }
 
-/// Every output file of a build as (name, bytes), in a fixed order: per sheet its SVG, PDF,
-/// PNG, tables as CSV and Markdown; then `results.json`.
-pub fn outputs(p: &Project, built: &[Built], formats: Formats) -> Result<Vec<(String, Vec<u8>)>, Error> {
+/// A built sheet in one format: its SVG as [`build`] wrote it, or what the format's backend
+/// draws from the scene.
+pub fn render(b: &Built, format: Format) -> Result<Vec<u8>, Error> {
+    match format {
+        Format::Svg => Ok(b.svg.clone().into_bytes()),
+        _ => Ok(backend::write(&b.output.scene, format)?),
+    }
+}
+
+/// Every output file of a build as (name, bytes), in a fixed order: per sheet its drawing in
+/// each of `formats` in their order, its tables as CSV and Markdown; then `results.json`.
+pub fn outputs(p: &Project, built: &[Built], formats: &[Format]) -> Result<Vec<(String, Vec<u8>)>, Error> {
     let mut files = Vec::new();
     for b in built {
         let stem = format!("sheet{}", b.output.number);
-        files.push((format!("{stem}.svg"), b.svg.clone().into_bytes()));
-        let Rendered { pdf, png } = render(b, formats)?;
-        files.extend(pdf.map(|x| (format!("{stem}.pdf"), x)));
-        files.extend(png.map(|x| (format!("{stem}.png"), x)));
+        for &f in formats {
+            files.push((format!("{stem}.{}", f.extension()), render(b, f)?));
+        }
         let mut md = String::new();
         for t in &b.output.tables {
             files.push((format!("{stem}-{}.csv", t.table.id), report::csv(t, &stem).into_bytes()));

@@ -5,15 +5,15 @@
 #![allow(clippy::disallowed_methods)]
 
 mod common;
+mod svg_raster;
 
 use common::{check_layout, english_on_russian, fixture, fixture_names, root};
 use kurbo::Rect;
 use std::path::Path;
-use tmm_sheets::backend::raster;
 use tmm_sheets::drawing::frame;
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::drawing::scene::Item;
-use tmm_sheets::pipeline::{self, Built, Formats};
+use tmm_sheets::pipeline::{self, Built, Format};
 use tmm_sheets::project::Project;
 use tmm_sheets::report;
 
@@ -21,9 +21,12 @@ fn build(p: &Project) -> Built {
     pipeline::build(p, &[]).unwrap().remove(0)
 }
 
-fn pdf_and_png(b: &Built, png_dpi: Option<f64>) -> (Vec<u8>, Option<Vec<u8>>) {
-    let r = pipeline::render(b, Formats { pdf: true, png_dpi }).unwrap();
-    (r.pdf.unwrap(), r.png)
+fn pdf(b: &Built) -> Vec<u8> {
+    pipeline::render(b, Format::Pdf).unwrap()
+}
+
+fn png(b: &Built, dpi: f64) -> Vec<u8> {
+    pipeline::render(b, Format::Png { dpi }).unwrap()
 }
 
 #[test]
@@ -31,9 +34,7 @@ fn the_same_input_gives_byte_identical_svg_and_pdf() {
     let p = fixture("worked-example");
     let (a, b) = (build(&p), build(&p));
     assert_eq!(a.svg, b.svg);
-    let (pa, _) = pdf_and_png(&a, None);
-    let (pb, _) = pdf_and_png(&b, None);
-    assert!(pa == pb, "PDF bytes differ between two runs");
+    assert!(pdf(&a) == pdf(&b), "PDF bytes differ between two runs");
 }
 
 fn count_usvg(group: &usvg::Group, paths: &mut usize, texts: &mut usize) {
@@ -56,7 +57,7 @@ fn svg_parses_back_with_every_path_and_text_and_no_nan() {
         assert!(r.svg.contains(" 0 0 1 ") || r.svg.contains(" 0 0 0 "), "{name}: no arc command");
         let fit = r.output.results["trajectory_fit_error_mm"].as_f64().unwrap();
         assert!(fit <= 0.01, "{name}: trajectories {fit} mm from the exact paths");
-        let tree = raster::parse(&r.svg).unwrap();
+        let tree = svg_raster::parse(&r.svg);
         let (mut paths, mut texts) = (0, 0);
         count_usvg(tree.root(), &mut paths, &mut texts);
         let items = r.output.scene.groups.iter().flat_map(|g| &g.items);
@@ -98,7 +99,7 @@ fn every_language_renders_with_full_glyph_coverage() {
 #[test]
 fn pdf_is_one_a1_page_with_embedded_text() {
     let r = build(&fixture("worked-example"));
-    let (pdf, png) = pdf_and_png(&r, Some(20.0));
+    let (pdf, png) = (pdf(&r), png(&r, 20.0));
     assert!(pdf.starts_with(b"%PDF-"));
     let text = String::from_utf8_lossy(&pdf);
     let mb = text.find("/MediaBox").expect("a media box");
@@ -118,7 +119,6 @@ fn pdf_is_one_a1_page_with_embedded_text() {
     );
     assert!(text.contains("/Count 1"), "exactly one page");
     assert!(text.contains("/FontFile2") || text.contains("/FontFile3"), "the font is embedded");
-    let png = png.unwrap();
     assert!(png.starts_with(b"\x89PNG"));
 }
 
@@ -168,8 +168,7 @@ fn write_failure_images(name: &str, expected: &[u8], actual: &[u8]) -> String {
 }
 
 fn preview(svg: &str, dpi: f64) -> Vec<u8> {
-    let tree = raster::parse(svg).unwrap();
-    raster::png(&tree, 841.0, 594.0, dpi).unwrap()
+    svg_raster::png(svg, 841.0, 594.0, dpi)
 }
 
 fn compare_or_update(file: &str, actual: &str) {
@@ -252,8 +251,7 @@ fn worked_example_matches_the_reference_sheets() {
         for t in &r.output.tables {
             compare_or_update(&format!("{stem}-{}.csv", t.table.id), &report::csv(t, &stem));
         }
-        let (pdf, png) = pdf_and_png(r, Some(60.0));
-        let png = png.unwrap();
+        let (pdf, png) = (pdf(r), png(r, 60.0));
         let (pdf_name, png_name) = (format!("{stem}.pdf"), format!("{stem}.png"));
         if std::env::var_os("UPDATE").is_some() {
             std::fs::write(reference_dir().join(&pdf_name), pdf).unwrap();
@@ -328,7 +326,7 @@ fn xml_special_characters_in_user_text_are_escaped() {
     p.info.title = "A & B <C> \"D\" 'E'".into();
     let r = build(&p);
     assert!(r.svg.contains("A &amp; B &lt;C&gt; &quot;D&quot; &apos;E&apos;"));
-    let tree = raster::parse(&r.svg).unwrap();
+    let tree = svg_raster::parse(&r.svg);
     let (mut paths, mut texts) = (0, 0);
     count_usvg(tree.root(), &mut paths, &mut texts);
     assert!(texts > 100);

@@ -3,13 +3,13 @@
 //! randomness. A non-finite number anywhere in the scene is refused, naming its group,
 //! rather than written as something else.
 
-use super::BackendError;
+use super::{BackendError, shapes};
 use crate::drawing::path::{Path, Seg};
-use crate::drawing::scene::{Anchor, Item, LineType, Pen, SUB, SUB_DROP, Scene, Text};
+use crate::drawing::scene::{Anchor, Item, Pen, SUB, SUB_DROP, Scene, Text};
 use crate::font;
 use crate::num::math;
+use kurbo::Arc;
 use std::f64::consts::PI;
-use std::fmt::Write;
 
 /// Digits after the decimal point for paper millimetres (1 µm).
 const DECIMALS: usize = 3;
@@ -53,10 +53,11 @@ pub fn escape(s: &str) -> String {
 }
 
 fn stroke_attrs(pen: &Pen) -> Result<String, BackendError> {
-    let dash = match pen.line {
-        LineType::Solid => "",
-        LineType::Dashed => " stroke-dasharray=\"4 1.5\"",
-        LineType::DashDot => " stroke-dasharray=\"10 1.5 0.5 1.5\"",
+    let dash = match shapes::dash_array(pen.line) {
+        None => String::new(),
+        Some(a) => {
+            format!(" stroke-dasharray=\"{}\"", a.iter().map(|&x| num(x)).collect::<Result<Vec<_>, _>>()?.join(" "))
+        }
     };
     Ok(format!("stroke=\"#000\" stroke-width=\"{}\"{dash}", num(pen.width)?))
 }
@@ -65,26 +66,46 @@ fn stroke_attrs(pen: &Pen) -> Result<String, BackendError> {
 fn path_d(p: &Path) -> Result<String, BackendError> {
     let mut d = format!("M{} {}", num(p.start.x)?, num(p.start.y)?);
     for s in &p.segs {
-        match s {
-            Seg::Line(q) => write!(d, "L{} {}", num(q.x)?, num(q.y)?),
+        let command = match s {
+            Seg::Line(q) => format!("L{} {}", num(q.x)?, num(q.y)?),
             Seg::Cubic(a, b, c) => {
-                write!(d, "C{} {} {} {} {} {}", num(a.x)?, num(a.y)?, num(b.x)?, num(b.y)?, num(c.x)?, num(c.y)?)
+                format!("C{} {} {} {} {} {}", num(a.x)?, num(a.y)?, num(b.x)?, num(b.y)?, num(c.x)?, num(c.y)?)
             }
-            Seg::Arc(a) => {
-                let end = a.center + math::from_angle(a.start_angle + a.sweep_angle) * a.radii.x;
-                let large = u8::from(a.sweep_angle.abs() > PI);
-                // Paper y points down, so a growing angle is SVG's positive (clockwise) sweep.
-                let sweep = u8::from(a.sweep_angle > 0.0);
-                let r = num(a.radii.x)?;
-                write!(d, "A{r} {r} 0 {large} {sweep} {} {}", num(end.x)?, num(end.y)?)
-            }
-        }
-        .expect("writing to a String");
+            Seg::Arc(a) => arc_commands(a)?,
+        };
+        d.push_str(&command);
     }
     if p.closed {
         d.push('Z');
     }
     Ok(d)
+}
+
+/// An arc as `A` commands. An arc whose ends are written as one point (a whole circle) is
+/// written as two halves: a renderer draws nothing for an `A` that ends where it starts
+/// (SVG 1.1, F.6.2).
+fn arc_commands(a: &Arc) -> Result<String, BackendError> {
+    let at = |angle: f64| -> Result<(String, String), BackendError> {
+        let p = a.center + math::from_angle(angle) * a.radii.x;
+        Ok((num(p.x)?, num(p.y)?))
+    };
+    let closes = a.sweep_angle != 0.0 && at(a.start_angle)? == at(a.start_angle + a.sweep_angle)?;
+    if closes {
+        let half = a.sweep_angle / 2.0;
+        Ok(arc_command(a, a.start_angle, half)? + &arc_command(a, a.start_angle + half, half)?)
+    } else {
+        arc_command(a, a.start_angle, a.sweep_angle)
+    }
+}
+
+/// One `A` command along `a`'s circle from `start` through `sweep` (radians).
+fn arc_command(a: &Arc, start: f64, sweep: f64) -> Result<String, BackendError> {
+    let end = a.center + math::from_angle(start + sweep) * a.radii.x;
+    let large = u8::from(sweep.abs() > PI);
+    // Paper y points down, so a growing angle is SVG's positive (clockwise) sweep.
+    let clockwise = u8::from(sweep > 0.0);
+    let r = num(a.radii.x)?;
+    Ok(format!("A{r} {r} 0 {large} {clockwise} {} {}", num(end.x)?, num(end.y)?))
 }
 
 fn text_element(t: &Text) -> Result<String, BackendError> {
@@ -213,6 +234,13 @@ mod tests {
             write(&scene(vec![Item::Path { path: arc, pen: THIN }, Item::Path { path: cubic, pen: THIN }])).unwrap();
         assert!(svg.contains("d=\"M7 5A2 2 0 1 0 5 7\""), "{svg}");
         assert!(svg.contains("d=\"M0 0C1 2 3 2 4 0\""), "{svg}");
+    }
+
+    #[test]
+    fn a_whole_circle_is_two_half_arcs_since_an_arc_to_its_start_draws_nothing() {
+        let circle = Path::arc(Point::new(5.0, 5.0), 2.0, PI / 2.0, 2.0 * PI);
+        let svg = write(&scene(vec![Item::Path { path: circle, pen: THIN }])).unwrap();
+        assert!(svg.contains("d=\"M5 7A2 2 0 0 1 5 3A2 2 0 0 1 5 7\""), "{svg}");
     }
 
     #[test]

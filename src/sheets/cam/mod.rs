@@ -1,6 +1,6 @@
 //! Sheet 3: the cam. The law's three diagrams by graphical integration on the left with the
 //! notes under them, the nomogram of the minimum radius and the profile arranged where each
-//! comes out largest ([`regions`]), the tables in a strip left of the title block.
+//! comes out largest (`regions.rs`), the tables in a strip left of the title block.
 
 mod diagrams;
 pub mod labels;
