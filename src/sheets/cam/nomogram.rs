@@ -5,12 +5,11 @@
 //! boundary of the admissible zone, and the centre O with r_min (and e, or the pivot and the
 //! centre distance).
 
-use super::labels::CamLabels;
-use crate::cams::Design;
+use super::labels::CamWords;
 use crate::cams::follower::Follower;
 use crate::cams::radius::Phase;
+use crate::cams::{Design, Sense};
 use crate::drawing::fmt;
-use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along, vector};
@@ -127,26 +126,50 @@ pub fn centred(area: Rect, (lo, hi): (Vec2, Vec2), mu: f64, mirror: bool) -> Vie
     View { origin: Point::new(centre.x - mx / mu, centre.y + cy / mu), mu, mirror }
 }
 
-/// Draws the nomogram of the box `(lo, hi)` ([`extent`]) centred in `area` at `mu` m/mm.
-#[allow(clippy::too_many_arguments)]
-pub fn draw(
-    g: &mut Group,
-    area: Rect,
-    (lo, hi): (Vec2, Vec2),
-    mu: f64,
-    d: &Design,
-    phis: &[f64],
-    labels: &mut Labels,
-    l: &CamLabels,
-    c: &Common,
-    lang: Language,
-) {
-    let mirror = d.spec.sense == crate::cams::Sense::Ccw;
-    let view = centred(area, (lo, hi), mu, mirror);
-    let r = &d.region;
-    let o = d.centre.o;
+/// Where a view of the follower (or cam) frame goes: its box in the world (metres), centred
+/// in `area` at `mu` m/mm.
+#[derive(Debug, Clone, Copy)]
+pub struct Placement {
+    pub area: Rect,
+    pub extent: (Vec2, Vec2),
+    pub mu: f64,
+}
 
-    // The follower: its axis, or the rocker's pivot, arc and lines.
+impl Placement {
+    /// The view, mirrored for a counter-clockwise cam.
+    pub fn view(&self, sense: Sense) -> View {
+        centred(self.area, self.extent, self.mu, sense == Sense::Ccw)
+    }
+}
+
+/// Draws the nomogram of the box [`extent`] as `at` places it.
+pub fn draw(g: &mut Group, at: &Placement, d: &Design, phis: &[f64], labels: &mut Labels, words: &CamWords) {
+    let view = at.view(d.spec.sense);
+    draw_follower(g, labels, view, at.extent, d, phis);
+    draw_positions(g, labels, view, d, phis);
+    // The B′ curve, exact.
+    for ph in Phase::BOTH {
+        let (a, b) = ph.span(&d.spec.program);
+        let pts: Vec<Point> =
+            (0..=200).map(|k| view.at(d.region.state(a + (b - a) * k as f64 / 200.0).analog)).collect();
+        g.path(pts, false, MAIN);
+    }
+    let limiting = draw_limiting_lines(g, labels, view, at.extent, d, words);
+    draw_zone_boundary(g, view, at.extent, d, &limiting);
+    labels.add_text_ranked(
+        view.at(d.centre.o + d.region.d * (0.4 * d.centre.r_min)),
+        Vec2::ZERO,
+        words.sheet.zone(),
+        2.5,
+        3,
+    );
+    draw_centre(g, labels, view, d, words);
+}
+
+/// The follower: its axis, or the rocker's pivot, the arc of its roller's centre and its
+/// lines to the positions.
+fn draw_follower(g: &mut Group, labels: &mut Labels, view: View, (lo, hi): (Vec2, Vec2), d: &Design, phis: &[f64]) {
+    let r = &d.region;
     match d.spec.follower {
         Follower::Translating => {
             g.line(view.at(Vec2::new(0.0, lo.y)), view.at(Vec2::new(0.0, hi.y)), AXIS);
@@ -164,7 +187,11 @@ pub fn draw(
             }
         }
     }
-    // The positions and their analog segments; positions drawn at one point share a label.
+}
+
+/// The positions and their analog segments; positions drawn at one point share a label.
+fn draw_positions(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis: &[f64]) {
+    let r = &d.region;
     let analogs: Vec<Point> = phis.iter().map(|&phi| view.at(r.state(phi).analog)).collect();
     for ((&phi, &at), name) in phis
         .iter()
@@ -177,18 +204,24 @@ pub fn draw(
             labels.add_text_ranked(at, Vec2::ZERO, &name, 2.5, 2);
         }
     }
-    // The B′ curve, exact.
-    for ph in Phase::BOTH {
-        let (a, b) = ph.span(&d.spec.program);
-        let pts: Vec<Point> = (0..=200).map(|k| view.at(r.state(a + (b - a) * k as f64 / 200.0).analog)).collect();
-        g.path(pts, false, MAIN);
-    }
-    // The limiting lines through the most binding B′, to the picture's edge, each with its
-    // angle from the wedge's axis (the direction opposite the follower's motion there).
+}
+
+/// The limiting lines through the most binding B′, to the picture's edge, each with its
+/// angle from the wedge's axis (the direction opposite the follower's motion there); returns
+/// them on paper.
+fn draw_limiting_lines(
+    g: &mut Group,
+    labels: &mut Labels,
+    view: View,
+    (lo, hi): (Vec2, Vec2),
+    d: &Design,
+    words: &CamWords,
+) -> Vec<Line> {
+    let r = &d.region;
     let paper = |v: Vec2| (view.at(v) - view.at(Vec2::ZERO)).unit();
     let mut limiting = Vec::new();
     for (ph, left) in [(Phase::Rise, true), (Phase::Return, false)] {
-        let (apex, dir, phi) = r.limiting_ray(ph, left, o);
+        let (apex, dir, phi) = r.limiting_ray(ph, left, d.centre.o);
         let end = apex + dir * exit(apex, dir, lo, hi);
         let (a, b) = (view.at(apex), view.at(end));
         g.line(a, b, THIN);
@@ -197,12 +230,18 @@ pub fn draw(
         g.line(a, a + axis * (ANGLE_MARK_MM + 4.0), THIN);
         let at = angle_mark(g, a, axis, paper(dir), ANGLE_MARK_MM);
         let alpha = ph.allowed(&d.spec.allowed).to_degrees();
-        let sub = if ph == Phase::Rise { l.sub_rise() } else { l.sub_return() };
-        let text = LabelText::new("α", sub).with_tail(format!(" = {}°", fmt::value(alpha, lang)));
+        let sub = if ph == Phase::Rise { words.sheet.sub_rise() } else { words.sheet.sub_return() };
+        let text = LabelText::new("α", sub).with_tail(format!(" = {}°", fmt::value(alpha, words.lang)));
         labels.add_ranked(at, at - a, text, 2.5, 1);
     }
-    // The zone's exact boundary across the picture, hatched on the zone's side; dashed where
-    // it does not run along a limiting line.
+    limiting
+}
+
+/// The zone's exact boundary across the picture, hatched on the zone's side; dashed where
+/// it does not run along a limiting line.
+fn draw_zone_boundary(g: &mut Group, view: View, (lo, hi): (Vec2, Vec2), d: &Design, limiting: &[Line]) {
+    let r = &d.region;
+    let paper = |v: Vec2| (view.at(v) - view.at(Vec2::ZERO)).unit();
     let span = (hi - lo).norm();
     let us: Vec<f64> = (0..=BOUNDARY_POINTS).map(|k| span * (2.0 * k as f64 / BOUNDARY_POINTS as f64 - 1.0)).collect();
     let boundary: Vec<Point> = us
@@ -217,11 +256,15 @@ pub fn draw(
     for run in boundary.split(on_limiting).filter(|run| run.len() >= 2) {
         g.path(run.to_vec(), false, DASHED);
     }
-    labels.add_text_ranked(view.at(o + r.d * (0.4 * d.centre.r_min)), Vec2::ZERO, l.zone(), 2.5, 3);
-    // O and r_min.
+}
+
+/// O and r_min as a radius (thin, its arrow at B₀ as on the profile), and the rocker's
+/// centre distance or the translating follower's offset.
+fn draw_centre(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words: &CamWords) {
+    let (l, c, lang) = (words.sheet, words.common, words.lang);
+    let o = d.centre.o;
     g.dot(view.at(o), 0.8);
     labels.add_text(view.at(o), Vec2::new(-1.0, 1.0), "O", 3.5);
-    // r_min as a radius: thin, its arrow at B₀ (as on the profile).
     vector(g, view.at(o), view.at(Vec2::ZERO), THIN);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
@@ -269,9 +312,9 @@ mod tests {
         let area = Rect::new(0.0, 0.0, 300.0, 300.0);
         let mu = 0.0005;
         let mut g = Group::new("nomogram", area);
-        let lang = Language::Uz;
-        draw(&mut g, area, ext, mu, d, &phis, &mut Labels::new(), CamLabels::get(lang), Common::get(lang), lang);
-        let view = centred(area, ext, mu, d.spec.sense == crate::cams::Sense::Ccw);
+        let at = Placement { area, extent: ext, mu };
+        draw(&mut g, &at, d, &phis, &mut Labels::new(), &CamWords::new(crate::drawing::labels::Language::Uz));
+        let view = at.view(d.spec.sense);
         let to_frame = |q: Point| {
             let x = (q.x - view.origin.x) * mu;
             Vec2::new(if view.mirror { -x } else { x }, (view.origin.y - q.y) * mu)

@@ -7,12 +7,11 @@
 //! profile (the rollers' envelope as Bézier pieces), the base circle with r_min, the follower
 //! in the start position and the cam's sense of rotation.
 
-use super::labels::CamLabels;
-use super::nomogram::{bounds, centred, position_labels};
+use super::labels::{CamLabels, CamWords};
+use super::nomogram::{Placement, View, bounds, position_labels};
+use crate::cams::Design;
 use crate::cams::follower::Follower;
-use crate::cams::{Design, Sense};
 use crate::drawing::fmt;
-use crate::drawing::labels::{Common, Language};
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
@@ -20,7 +19,7 @@ use crate::drawing::symbols::{angle_mark, frame_pivot, hatch, turn_arrow, vector
 use crate::drawing::text::LabelText;
 use crate::num::bezier::Fitted;
 use crate::num::math::{Norm, atan2, sin_cos};
-use kurbo::{Affine, CubicBez, Point, Rect, Vec2};
+use kurbo::{Affine, CubicBez, Point, Vec2};
 use std::f64::consts::TAU;
 
 /// The profiles' accuracy, metres, and the most pieces a part may take.
@@ -87,33 +86,36 @@ pub fn extent(d: &Design) -> (Vec2, Vec2) {
     (lo - Vec2::new(pad, pad), hi + Vec2::new(pad, pad))
 }
 
-/// Draws the profile of the box `(lo, hi)` ([`extent`]) centred in `area` at the GOST scale
-/// `mu` m/mm.
-#[allow(clippy::too_many_arguments)]
+/// Draws the profile of the box [`extent`] as `at` places it (at a GOST scale).
 pub fn draw(
     g: &mut Group,
-    area: Rect,
-    (lo, hi): (Vec2, Vec2),
-    mu: f64,
+    at: &Placement,
     d: &Design,
     pieces: &Pieces,
     phis: &[f64],
     labels: &mut Labels,
-    l: &CamLabels,
-    c: &Common,
-    lang: Language,
+    words: &CamWords,
 ) -> ProfileDrawn {
-    let mirror = d.spec.sense == Sense::Ccw;
-    let view = centred(area, (lo, hi), mu, mirror);
-    let pr = &d.profile;
+    let mu = at.mu;
+    let view = at.view(d.spec.sense);
+    inversion(g, d, phis, &|v| view.at(v), mu, labels);
+    draw_profiles(g, view, d, pieces);
+    draw_rollers(g, labels, view, d, phis);
+    follower_at_start(g, d, &|v| view.at(v), mu);
+    draw_rotation(g, labels, view, d);
+    name_profiles(labels, view, d, words.sheet);
+    draw_r_min(g, labels, view, d, words);
+    ProfileDrawn { mu, pieces: pieces.count, deviation: pieces.deviation }
+}
+
+/// The base circle and the profiles.
+fn draw_profiles(g: &mut Group, view: View, d: &Design, pieces: &Pieces) {
+    let mu = view.mu;
     // To paper: the cam frame's metres through the view (mirror and y up).
-    let sx = if mirror { -1.0 / mu } else { 1.0 / mu };
+    let sx = if view.mirror { -1.0 / mu } else { 1.0 / mu };
     let to_paper = Affine::new([sx, 0.0, 0.0, -1.0 / mu, view.origin.x, view.origin.y]);
     let path_of = |cubics: &[CubicBez]| Path::cubics(&cubics.iter().map(|c| to_paper * *c).collect::<Vec<_>>());
     let knife = d.roller == 0.0;
-
-    inversion(g, d, phis, &|v| view.at(v), mu, labels);
-    // The base circle and the profiles.
     g.circle(view.origin, d.centre.r_min / mu, DASHED);
     for f in &pieces.pitch {
         g.curve(path_of(&f.cubics), if knife { MAIN } else { THIN });
@@ -121,10 +123,14 @@ pub fn draw(
     for f in pieces.working.iter().flatten() {
         g.curve(path_of(&f.cubics), MAIN);
     }
-    // The numbered positions: the rollers and their numbers outside them.
+}
+
+/// The numbered positions: the rollers and their numbers outside them.
+fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis: &[f64]) {
+    let mu = view.mu;
     for (&phi, name) in phis.iter().zip(position_labels(phis)) {
-        let p = pr.pitch(phi).p;
-        if !knife {
+        let p = d.profile.pitch(phi).p;
+        if d.roller != 0.0 {
             g.circle(view.at(p), d.roller / mu, THIN);
             labels.keep_out(view.at(p), d.roller / mu);
         }
@@ -134,21 +140,27 @@ pub fn draw(
             labels.add_text_ranked(rim, rim - view.origin, &name, 2.5, 2);
         }
     }
-    follower_at_start(g, d, &|v| view.at(v), mu);
-    // O, and the sense of rotation with ω beside its arrow.
+}
+
+/// O, and the sense of rotation with ω beside its arrow.
+fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, d: &Design) {
     frame_pivot(g, view.origin, 1.5);
     labels.add_text(view.origin, Vec2::new(-1.0, 1.0), "O", 3.5);
-    let arrow_r = (0.25 * d.centre.r_min / mu).max(6.0);
-    turn_arrow(g, view.origin, arrow_r, 200.0, 60.0, mirror, THIN);
-    let (s, c_) = sin_cos(if mirror { 170.0f64 } else { 230.0f64 }.to_radians());
-    let out = Vec2::new(c_, s);
+    let arrow_r = (0.25 * d.centre.r_min / view.mu).max(6.0);
+    turn_arrow(g, view.origin, arrow_r, 200.0, 60.0, view.mirror, THIN);
+    let (s, c) = sin_cos(if view.mirror { 170.0f64 } else { 230.0f64 }.to_radians());
+    let out = Vec2::new(c, s);
     labels.add_text_ranked(view.origin + out * arrow_r, out, "ω", 3.5, 0);
-    // The curves' names.
-    let prog = &d.spec.program;
+}
+
+/// The profiles' names.
+fn name_profiles(labels: &mut Labels, view: View, d: &Design, l: &CamLabels) {
+    let (pr, prog) = (&d.profile, &d.spec.program);
     let far = pr.pitch(prog.rise + prog.far_dwell / 2.0).p;
     // Outward, past the rollers: inside, its leader would cross the working profile.
     let outward = view.at(far) - view.origin;
     // A knife's working profile is its pitch profile: one curve, both names.
+    let knife = d.roller == 0.0;
     let name = if knife { l.knife_profile() } else { l.pitch_profile() };
     labels.add_line_name(view.at(far), outward, LabelText::new(name, ""), 2.5, 3);
     if !knife {
@@ -158,23 +170,27 @@ pub fn draw(
         let inward = view.origin - view.at(w);
         labels.add_line_name(view.at(w), inward, LabelText::new(l.working_profile(), ""), 2.5, 3);
     }
-    // r_min: a radius into the middle of the near dwell, where the profile is the base circle.
+}
+
+/// r_min: a radius into the middle of the near dwell, where the profile is the base circle,
+/// with the base circle's name on a leader of its own a little further round (clear of the
+/// radius' arrowhead).
+fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words: &CamWords) {
+    let (pr, prog) = (&d.profile, &d.spec.program);
+    let l = words.sheet;
     let near = prog.rise + prog.far_dwell + prog.ret;
     let dir = pr.pitch((near + TAU) / 2.0).p.unit();
     let base = dir * d.centre.r_min;
     vector(g, view.origin, view.at(base), THIN);
-    // Its name on a leader of its own, a little further round the near dwell (clear of the
-    // radius' arrowhead).
     let aside = pr.pitch(near + (TAU - near) * 0.7).p.unit() * d.centre.r_min;
     let out = view.at(aside) - view.origin;
     labels.add_line_name(view.at(aside), out, LabelText::new(l.base_circle(), ""), 2.5, 3);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
-        fmt::value(d.centre.r_min * 1e3, lang),
-        c.unit_mm()
+        fmt::value(d.centre.r_min * 1e3, words.lang),
+        words.common.unit_mm()
     ));
     labels.add_ranked(view.at(base * 0.55), Vec2::ZERO, r_text, 2.5, 1);
-    ProfileDrawn { mu, pieces: pieces.count, deviation: pieces.deviation }
 }
 
 /// The inversion's construction for each numbered position (cam frame through `at`).

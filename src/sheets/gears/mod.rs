@@ -7,14 +7,15 @@ mod mesh_view;
 mod planetary_view;
 mod results;
 mod tables;
+mod teeth_view;
 
-pub use mesh_view::{INVOLUTE_PIECES, MeshDrawn};
+pub use mesh_view::MeshDrawn;
+pub use teeth_view::INVOLUTE_PIECES;
 
 use super::scaffold::Composition;
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::drawing::fmt;
 use crate::drawing::frame;
-use crate::drawing::labels::Language;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
@@ -25,7 +26,7 @@ use crate::gears::tooth::Outline;
 use crate::project::gears::PlanetaryProject;
 use crate::project::{GearsProject, Project};
 use kurbo::{Point, Rect};
-use labels::GearLabels;
+use labels::GearWords;
 use mesh_view::{MeshInput, draw_mesh};
 
 /// This sheet's place in the course.
@@ -57,9 +58,9 @@ const RIGHT_X0: f64 = 448.0;
 
 /// Builds sheet 2.
 pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> {
-    let lang = ctx.info.language;
-    let l = GearLabels::get(lang);
-    let (mesh, drawn) = mesh_group(p, lang);
+    let words = GearWords::new(ctx.info.language);
+    let l = words.sheet;
+    let (mesh, drawn) = mesh_group(p, &words);
 
     // The right half: the planetary views on top, the tables below.
     let mut groups = vec![mesh];
@@ -68,14 +69,14 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let mut y_tables = right.y0;
     let mut planetary_mu = None;
     if let Some(pl) = &p.planetary {
-        let (g, mu, bottom) = planetary_group(pl, right, l, lang);
+        let (g, mu, bottom) = planetary_group(pl, right, &words);
         planetary_mu = Some(mu);
         groups.push(g);
         y_tables = bottom + 4.0;
     }
-    let notes = tables::notes(p, drawn.contact_ratio_drawn, lang);
+    let notes = tables::notes(p, drawn.contact_ratio_drawn, &words);
     let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
-    groups.push(tables::group(&notes, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, lang));
+    groups.push(tables::group(&notes, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, &words));
 
     let name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
     let composition = Composition {
@@ -91,10 +92,10 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
 }
 
 /// The mesh on the left half: title on top, notes at the bottom, the drawing between.
-fn mesh_group(p: &GearsProject, lang: Language) -> (Group, MeshDrawn) {
-    let l = GearLabels::get(lang);
+fn mesh_group(p: &GearsProject, words: &GearWords) -> (Group, MeshDrawn) {
+    let (l, lang) = (words.sheet, words.lang);
     let outlines = [Outline::new(&p.pair.spec, &p.pair.wheels[0]), Outline::new(&p.pair.spec, &p.pair.wheels[1])];
-    let notes = mesh_notes(p, l, lang);
+    let notes = mesh_notes(p, words);
     let mut mesh = Group::new("mesh", MESH);
     let mut labels = Labels::new();
     let title = l.mesh_title(
@@ -128,7 +129,8 @@ fn mesh_group(p: &GearsProject, lang: Language) -> (Group, MeshDrawn) {
 }
 
 /// The notes under the mesh: shifts chosen, warnings, the user's assumptions.
-fn mesh_notes(p: &GearsProject, l: &GearLabels, lang: Language) -> Vec<String> {
+fn mesh_notes(p: &GearsProject, words: &GearWords) -> Vec<String> {
+    let (l, lang) = (words.sheet, words.lang);
     let v = |x: f64| fmt::value(x, lang);
     let mut out = vec![l.active_note().to_string()];
     for (i, w) in p.pair.wheels.iter().enumerate() {
@@ -149,7 +151,8 @@ fn mesh_notes(p: &GearsProject, l: &GearLabels, lang: Language) -> Vec<String> {
 }
 
 /// The planetary views in the top of `right`; returns the group, its μ_l and its bottom.
-fn planetary_group(pl: &PlanetaryProject, right: Rect, l: &GearLabels, lang: Language) -> (Group, f64, f64) {
+fn planetary_group(pl: &PlanetaryProject, right: Rect, words: &GearWords) -> (Group, f64, f64) {
+    let (l, lang) = (words.sheet, words.lang);
     let s = &pl.stage;
     let size = (right.width() * 0.5 - 10.0).min(190.0);
     let mu = planetary_view::scale_for(s, pl.module, size);

@@ -39,12 +39,26 @@ pub fn scale_for(s: &Stage, m: f64, size: f64) -> f64 {
     crate::drawing::scale::length_scale(2.0 * extent(s, m) / size)
 }
 
+/// The stage as drawn: its radii, the module (m) and paper mm per metre.
+struct Drawn<'a> {
+    stage: &'a Stage,
+    r: Radii,
+    m: f64,
+    k: f64,
+    /// A double planet (two gears on each planet's axle).
+    double: bool,
+}
+
 /// Draws the front view centred in `front` and the kinematic scheme in `side`, at μ_l `mu`.
 pub fn draw(g: &mut Group, front: Rect, side: Rect, s: &Stage, m: f64, mu: f64, labels: &mut Labels) {
-    let r = radii(s, m);
-    let k = 1.0 / mu;
-    let double = s.z.len() == 4;
-    // Front view.
+    let drawn = Drawn { stage: s, r: radii(s, m), m, k: 1.0 / mu, double: s.z.len() == 4 };
+    front_view(g, front, &drawn, labels);
+    kinematic_scheme(g, side, &drawn, labels);
+}
+
+/// The front view: the pitch circles, the ring's rim, the carrier's circle and arms.
+fn front_view(g: &mut Group, front: Rect, st: &Drawn, labels: &mut Labels) {
+    let (s, r, m, k, double) = (st.stage, &st.r, st.m, st.k, st.double);
     let o = front.center();
     let ext = k * extent(s, m) + 4.0;
     g.line(o - Vec2::new(ext, 0.0), o + Vec2::new(ext, 0.0), AXIS);
@@ -79,8 +93,13 @@ pub fn draw(g: &mut Group, front: Rect, side: Rect, s: &Stage, m: f64, mu: f64, 
     }
     labels.add_text_ranked(o + Vec2::new(k * r.ring * 0.71, k * r.ring * 0.71), Vec2::new(1.0, 1.0), "3", 3.5, 0);
     labels.add_text_ranked(o + Vec2::new(0.0, -k * r.carrier * 0.5), Vec2::new(1.0, 0.0), "H", 3.5, 0);
+}
 
-    // Side view: the axis across, the scheme symmetric about it.
+/// The side view as a kinematic scheme, symmetric about the axis across: the input shaft
+/// and the sun, the planets' rims on the carrier, the fixed ring held by the frame, the
+/// carrier H and the output shaft, the bearings.
+fn kinematic_scheme(g: &mut Group, side: Rect, st: &Drawn, labels: &mut Labels) {
+    let (r, k, double) = (&st.r, st.k, st.double);
     let c = Point::new(side.x0 + 0.15 * side.width(), side.center().y);
     let x_sun = c.x + 0.25 * side.width();
     let x_ring = if double { x_sun + 16.0 } else { x_sun };
@@ -106,20 +125,7 @@ pub fn draw(g: &mut Group, front: Rect, side: Rect, s: &Stage, m: f64, mu: f64, 
             rim(g, x_ring, k * r.planet2);
         }
         g.line(Point::new(x_sun - 6.0, ya), Point::new(x_h, ya), MAIN);
-        // The fixed ring: its rim, turned back toward the planet, held by the frame.
-        let yr = c.y + side_sign * k * r.ring;
-        g.path(
-            vec![
-                Point::new(x_ring - 5.0, yr + side_sign * gap),
-                Point::new(x_ring, yr + side_sign * gap),
-                Point::new(x_ring, yr + side_sign * 8.0),
-            ],
-            false,
-            MAIN,
-        );
-        let yf = yr + side_sign * 8.0;
-        g.line(Point::new(x_ring - 6.0, yf), Point::new(x_ring + 6.0, yf), MAIN);
-        symbols::hatch(g, Point::new(x_ring - 6.0, yf), Point::new(x_ring + 6.0, yf), Vec2::new(0.0, side_sign), 2.0);
+        fixed_ring(g, x_ring, c.y + side_sign * k * r.ring, side_sign, gap);
     }
     // The carrier H and the output shaft.
     g.line(Point::new(x_h, c.y - k * r.carrier), Point::new(x_h, c.y + k * r.carrier), MAIN);
@@ -141,4 +147,21 @@ pub fn draw(g: &mut Group, front: Rect, side: Rect, s: &Stage, m: f64, mu: f64, 
     }
     lab(labels, Point::new(x_ring, c.y - k * r.ring - 4.0), "3", Vec2::new(1.0, 0.0));
     lab(labels, Point::new(x_h, c.y - k * r.carrier * 0.5), "H", Vec2::new(1.0, 0.0));
+}
+
+/// The fixed ring's rim at `yr` on one side (`side_sign` ±1), turned back toward the planet,
+/// held by the frame.
+fn fixed_ring(g: &mut Group, x_ring: f64, yr: f64, side_sign: f64, gap: f64) {
+    g.path(
+        vec![
+            Point::new(x_ring - 5.0, yr + side_sign * gap),
+            Point::new(x_ring, yr + side_sign * gap),
+            Point::new(x_ring, yr + side_sign * 8.0),
+        ],
+        false,
+        MAIN,
+    );
+    let yf = yr + side_sign * 8.0;
+    g.line(Point::new(x_ring - 6.0, yf), Point::new(x_ring + 6.0, yf), MAIN);
+    symbols::hatch(g, Point::new(x_ring - 6.0, yf), Point::new(x_ring + 6.0, yf), Vec2::new(0.0, side_sign), 2.0);
 }
