@@ -22,6 +22,7 @@ pub mod radius;
 pub mod size;
 
 use crate::num::math::Norm;
+use crate::num::tol;
 use follower::Follower;
 use kurbo::Vec2;
 use laws::Program;
@@ -178,7 +179,7 @@ pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
                 warnings.push(CamWarning::RollerNearCurvature { r, rho_min });
             }
             let share = r / centre.r_min;
-            if share < COURSE_SHARE.0 - 1e-9 || share > COURSE_SHARE.1 + 1e-9 {
+            if share < COURSE_SHARE.0 - tol::RANGE_EDGE || share > COURSE_SHARE.1 + tol::RANGE_EDGE {
                 warnings.push(CamWarning::RollerOutsideCourse { r, r_min: centre.r_min });
             }
             r
@@ -194,5 +195,5 @@ pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
 fn round_down_mm(r: f64) -> f64 {
     let mm = r * 1e3;
     let step = if mm >= 2.0 { 1.0 } else { 0.1 };
-    ((mm / step + 1e-9).floor() * step).max(step.min(mm)) / 1e3
+    ((mm / step + tol::WHOLE_STEP).floor() * step).max(step.min(mm)) / 1e3
 }

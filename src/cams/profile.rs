@@ -17,6 +17,7 @@ use super::radius::sup;
 use crate::num::bezier::{self, Fitted};
 use crate::num::math::Norm;
 use crate::num::math::{atan2, sin_cos};
+use crate::num::tol;
 use kurbo::Vec2;
 use std::f64::consts::PI;
 
@@ -121,7 +122,7 @@ impl Profile {
         let exact = |phi: f64| if r == 0.0 { (self.pitch(phi).p, self.pitch(phi).dp) } else { self.working(r, phi) };
         parts(&self.program)
             .into_iter()
-            .filter(|(a, b)| b - a > 1e-12)
+            .filter(|(a, b)| b - a > tol::ANGLE_ROUND_OFF)
             .map(|(a, b)| bezier::fit_within(&exact, a, b, tol, max_pieces))
             .collect()
     }

@@ -43,7 +43,11 @@ pub fn next_round(mu: f64) -> f64 {
 
 /// The largest value of the round series below `mu`.
 pub fn previous_round(mu: f64) -> f64 {
-    [0.5, 0.625, 0.8].iter().map(|f| round_up(mu * f)).filter(|&m| m < mu * (1.0 - 1e-9)).fold(mu * 0.5, f64::max)
+    [0.5, 0.625, 0.8]
+        .iter()
+        .map(|f| round_up(mu * f))
+        .filter(|&m| m < mu * (1.0 - tol::SAME_SCALE))
+        .fold(mu * 0.5, f64::max)
 }
 
 /// Every GOST 2.302 μ_l (m/mm), the largest drawing first.

@@ -10,6 +10,7 @@
 
 use super::pair::{PairSpec, Wheel, inv};
 use crate::num::math::{Norm, acos, atan2, cos, from_angle, sin, tan};
+use crate::num::tol;
 use kurbo::Vec2;
 use std::f64::consts::PI;
 
@@ -180,7 +181,7 @@ impl Outline {
                     } else {
                         b = mid;
                     }
-                    if (b - a).abs() <= f64::EPSILON * a.abs().max(1e-300) {
+                    if (b - a).abs() <= tol::LAST_BIT * a.abs().max(tol::LAST_BIT_FLOOR) {
                         break;
                     }
                 }

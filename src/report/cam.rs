@@ -4,6 +4,7 @@
 use super::{Column, NumTable, Row, Sub, SubWord, Unit};
 use crate::cams::Design;
 use crate::cams::follower::Follower;
+use crate::num::tol;
 
 const MM: f64 = 1e3;
 
@@ -41,9 +42,9 @@ pub fn law(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable
     // acceleration jumps the table gives the phase's own value.
     let at = |phi: f64, k: usize| {
         p.at(if k + 1 == phis.len() {
-            phi - 1e-12
+            phi - tol::INSIDE_PHASE
         } else if k == 0 {
-            phi + 1e-12
+            phi + tol::INSIDE_PHASE
         } else {
             phi
         })

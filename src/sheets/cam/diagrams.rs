@@ -17,6 +17,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::dimension;
 use crate::drawing::text::LabelText;
+use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 use std::f64::consts::PI;
 
@@ -188,7 +189,7 @@ impl Stack<'_> {
         (0..=n)
             .map(|k| {
                 // Just inside the working angle at its end, where `at` belongs to the near dwell.
-                let phi = (work * k as f64 / n as f64).min(work - 1e-12);
+                let phi = (work * k as f64 / n as f64).min(work - tol::INSIDE_PHASE);
                 (phi.to_degrees(), f(phi))
             })
             .collect()

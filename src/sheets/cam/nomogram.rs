@@ -15,6 +15,7 @@ use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along, vector};
 use crate::drawing::text::LabelText;
 use crate::num::math::{self, Norm};
+use crate::num::tol;
 use kurbo::{Line, ParamCurveNearest, Point, Rect, Vec2};
 
 /// A follower-frame picture on paper: metres → mm, mirrored for a counter-clockwise cam.
@@ -48,7 +49,7 @@ pub fn positions(d: &Design, divisions: usize) -> Vec<f64> {
 /// before it (the rise's end and the return's start without a far dwell) shares its label
 /// ("8≡9") and gets none of its own.
 pub fn position_labels(phis: &[f64]) -> Vec<Option<String>> {
-    merged_labels(phis.len(), |j, k| (phis[j] - phis[k]).abs() < 1e-12)
+    merged_labels(phis.len(), |j, k| (phis[j] - phis[k]).abs() < tol::ANGLE_ROUND_OFF)
 }
 
 /// Positions closer than this on paper (mm) are one point to the reader and share a label.
@@ -98,9 +99,9 @@ fn extent_points(d: &Design, phis: &[f64]) -> Vec<Vec2> {
 /// How far a ray from `p` (inside the box) along the unit `dir` runs before it leaves the box.
 fn exit(p: Vec2, dir: Vec2, lo: Vec2, hi: Vec2) -> f64 {
     let along = |p: f64, d: f64, lo: f64, hi: f64| {
-        if d > 1e-12 {
+        if d > tol::ALONG_SIDE {
             (hi - p) / d
-        } else if d < -1e-12 {
+        } else if d < -tol::ALONG_SIDE {
             (lo - p) / d
         } else {
             f64::INFINITY
@@ -277,7 +278,7 @@ fn draw_centre(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words
         let dist = d.centre_distance().unwrap_or_default();
         let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(dist * 1e3, lang), c.unit_mm()));
         labels.add(view.at((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
-    } else if o.x.abs() > 1e-9 {
+    } else if o.x.abs() > tol::ZERO_OFFSET {
         // The offset as a dimension from the follower's axis to O, below O where the zone
         // between the limiting lines (at the allowed angles from the axis) is wide enough
         // for it and its arrows, clear of the hatching.

@@ -19,11 +19,12 @@ use crate::drawing::symbols::{angle_mark, frame_pivot, hatch, turn_arrow, vector
 use crate::drawing::text::LabelText;
 use crate::num::bezier::Fitted;
 use crate::num::math::{Norm, atan2, sin_cos};
+use crate::num::tol;
 use kurbo::{Affine, CubicBez, Point, Vec2};
 use std::f64::consts::TAU;
 
-/// The profiles' accuracy, metres, and the most pieces a part may take.
-pub const PROFILE_TOL: f64 = 1e-6;
+/// The profiles' accuracy, metres ([`tol::PROFILE_FIT`]), and the most pieces a part may take.
+pub const PROFILE_TOL: f64 = tol::PROFILE_FIT;
 pub const MAX_PIECES: usize = 256;
 
 /// The translating follower's stem above the roller, in r_max.
@@ -204,7 +205,7 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
             let a_w = d.centre_distance().unwrap_or_default();
             let (from, sweep) = pivot_arc(d);
             let o = at(Vec2::ZERO);
-            let (v0, v1) = (at(pr.carried(pivot, from)) - o, at(pr.carried(pivot, from + 1e-3)) - o);
+            let (v0, v1) = (at(pr.carried(pivot, from)) - o, at(pr.carried(pivot, from + PROBE_TURN)) - o);
             // The carried pivot turns by φ; on paper clockwise or not as the view mirrors.
             let turn = if v0.cross(v1) > 0.0 { 1.0 } else { -1.0 };
             g.curve(Path::arc(o, a_w / mu, atan2(v0.y, v0.x), turn * sweep), AXIS);
@@ -223,7 +224,7 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
         }
         Follower::Translating => {
             let e = d.centre.o.x.abs();
-            if e * 1e3 > 1e-9 {
+            if e * 1e3 > tol::OFFSET_CIRCLE_MM {
                 g.circle(at(Vec2::ZERO), e / mu, AXIS);
             }
             // The axis' foot nearest O, and the axis from it past the roller centre.
@@ -236,6 +237,10 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
         }
     }
 }
+
+/// A small turn of the cam, rad, that shows which way the carried pivot runs on paper: far
+/// above round-off, far below the pivot's arc.
+const PROBE_TURN: f64 = 1e-3;
 
 /// Round O, mm, the translating follower's axis lines stop: with a small offset they all
 /// meet there and would hide the cam's bearing.

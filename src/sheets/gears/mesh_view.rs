@@ -16,6 +16,7 @@ use crate::drawing::text::LabelText;
 use crate::gears::pair::Pair;
 use crate::gears::tooth::{Outline, polar};
 use crate::num::math::{Norm, cos, from_angle, sin, tan};
+use crate::num::tol;
 use kurbo::{CubicBez, Point, Rect, Vec2};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -208,7 +209,7 @@ fn draw_circles(g: &mut Group, v: View, area: Rect, p: &Pair) -> Vec<(Point, Lab
             (w.base, THIN, LabelText::new("r", format!("b{n}"))),
             (w.pitch, AXIS, LabelText::new("r", n.clone())),
         ];
-        if (w.working - w.pitch).abs() > 1e-9 {
+        if (w.working - w.pitch).abs() > tol::SAME_CIRCLE {
             set.push((w.working, AXIS, LabelText::new("r", format!("w{n}"))));
         }
         for (r, pen, label) in set {

@@ -8,13 +8,12 @@ use crate::drawing::scene::Group;
 use crate::gears::tooth::Outline;
 use crate::num::bezier;
 use crate::num::math::{cos, from_angle, sin};
+use crate::num::tol;
 use kurbo::{Arc, CubicBez, Point, Vec2};
 use std::f64::consts::PI;
 
 /// Cubic pieces per involute flank (the measured deviation is stated on the sheet).
 pub const INVOLUTE_PIECES: usize = 2;
-/// The fillet is fitted to this distance (metres), far below any drawn line.
-const FILLET_TOL: f64 = 1e-7;
 
 /// One wheel's fitted half-flank (upper, in the tooth frame, from the root up to the tip).
 pub(super) struct Flank {
@@ -27,7 +26,7 @@ pub(super) fn flank(o: &Outline) -> (Flank, f64, f64) {
     let fil = |phi: f64| o.fillet(phi);
     let involute = bezier::fit(&inv, o.t_low, o.t_tip, INVOLUTE_PIECES);
     let dev_i = bezier::deviation(&inv, o.t_low, o.t_tip, &involute);
-    let f = bezier::fit_within(&fil, o.phi_root, o.phi_join, FILLET_TOL, 64);
+    let f = bezier::fit_within(&fil, o.phi_root, o.phi_join, tol::FILLET_FIT, 64);
     (Flank { fillet: f.cubics, involute }, dev_i, f.deviation)
 }
 
@@ -46,7 +45,7 @@ pub(super) fn rot(v: Vec2, a: f64) -> Vec2 {
 
 /// Appends an arc about world centre `c` (radius r) from world angle a0 to a1.
 fn push_arc(path: &mut Path, v: View, c: Vec2, r: f64, a0: f64, a1: f64) {
-    if (a1 - a0).abs() < 1e-12 {
+    if (a1 - a0).abs() < tol::ANGLE_ROUND_OFF {
         return;
     }
     path.segs.push(Seg::Arc(Arc::new(v.p(c), (v.k * r, v.k * r), -a0, -(a1 - a0), 0.0)));

@@ -59,7 +59,7 @@ impl Arrows {
         // A force on a slider starts at the block's outline, not under it.
         let exit = self.blocks.iter().find(|b| (b.0 - at).norm() < 0.5).map_or(0.0, |&(_, u, hl, hw)| {
             let (along, across) = (d.dot(u).abs(), d.dot(u.turn_90()).abs());
-            (hl / along.max(1e-9)).min(hw / across.max(1e-9))
+            (hl / along.max(tol::PARALLEL_SIN)).min(hw / across.max(tol::PARALLEL_SIN))
         });
         let mut start = at + d * exit;
         let along_link = self.links.iter().any(|&(a, b)| {
