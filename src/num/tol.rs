@@ -2,6 +2,12 @@
 //! extent, the largest force of a polygon, a slider's stroke) the tolerance is relative to
 //! it, so that the same mechanism drawn in millimetres or in kilometres decides alike.
 
+use super::Near;
+
+/// Relative: what `assert_near!` allows when no tolerance is given, the round-off of a few
+/// dozen operations on doubles (2.2·10⁻¹⁶ each).
+pub const NEAR: Near = Near::rel(1e-12);
+
 /// Two course angles closer than this (rad) are the same position: φ1 on a drawn position.
 pub const SAME_ANGLE: f64 = 1e-9;
 
