@@ -17,7 +17,7 @@
 
 use super::follower::{Follower, State, pressure_angle};
 use super::laws::Program;
-use crate::num::math::{atan2, tan};
+use crate::num::math::{atan2, rotate, tan};
 use crate::num::roots::minimise;
 use crate::num::tol;
 use kurbo::Vec2;
@@ -259,11 +259,6 @@ impl Region {
 /// +1 when `across` is `d` turned counter-clockwise, −1 otherwise.
 fn orientation(across: Vec2, d: Vec2) -> f64 {
     if d.cross(across) > 0.0 { 1.0 } else { -1.0 }
-}
-
-fn rotate(v: Vec2, a: f64) -> Vec2 {
-    let (s, c) = crate::num::math::sin_cos(a);
-    Vec2::new(v.x * c - v.y * s, v.x * s + v.y * c)
 }
 
 /// The maximum of `f` on [a, b]: sampled, then each sampled local maximum refined between

@@ -14,25 +14,10 @@ use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along, vector};
 use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
 use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::{Line, ParamCurveNearest, Point, Rect, Vec2};
-
-/// A follower-frame picture on paper: metres → mm, mirrored for a counter-clockwise cam.
-#[derive(Debug, Clone, Copy)]
-pub struct View {
-    pub origin: Point,
-    /// m per paper mm.
-    pub mu: f64,
-    pub mirror: bool,
-}
-
-impl View {
-    pub fn at(&self, v: Vec2) -> Point {
-        let x = if self.mirror { -v.x } else { v.x };
-        Point::new(self.origin.x + x / self.mu, self.origin.y - v.y / self.mu)
-    }
-}
 
 /// The cam angles of the numbered positions: each phase's division points.
 pub fn positions(d: &Design, divisions: usize) -> Vec<f64> {
@@ -124,7 +109,7 @@ pub fn centred(area: Rect, (lo, hi): (Vec2, Vec2), mu: f64, mirror: bool) -> Vie
     let (cx, cy) = ((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0);
     let mx = if mirror { -cx } else { cx };
     let centre = area.center();
-    View { origin: Point::new(centre.x - mx / mu, centre.y + cy / mu), mu, mirror }
+    View::new(Point::new(centre.x - mx / mu, centre.y + cy / mu), mu).mirrored(mirror)
 }
 
 /// Where a view of the follower (or cam) frame goes: its box in the world (metres), centred
@@ -152,13 +137,13 @@ pub fn draw(g: &mut Group, at: &Placement, d: &Design, phis: &[f64], labels: &mu
     for ph in Phase::BOTH {
         let (a, b) = ph.span(&d.spec.program);
         let pts: Vec<Point> =
-            (0..=200).map(|k| view.at(d.region.state(a + (b - a) * k as f64 / 200.0).analog)).collect();
+            (0..=200).map(|k| view.p(d.region.state(a + (b - a) * k as f64 / 200.0).analog)).collect();
         g.path(pts, false, MAIN);
     }
     let limiting = draw_limiting_lines(g, labels, view, at.extent, d, words);
     draw_zone_boundary(g, view, at.extent, d, &limiting);
     labels.add_text_ranked(
-        view.at(d.centre.o + d.region.d * (0.4 * d.centre.r_min)),
+        view.p(d.centre.o + d.region.d * (0.4 * d.centre.r_min)),
         Vec2::ZERO,
         words.sheet.zone(),
         2.5,
@@ -173,18 +158,18 @@ fn draw_follower(g: &mut Group, labels: &mut Labels, view: View, (lo, hi): (Vec2
     let r = &d.region;
     match d.spec.follower {
         Follower::Translating => {
-            g.line(view.at(Vec2::new(0.0, lo.y)), view.at(Vec2::new(0.0, hi.y)), AXIS);
+            g.line(view.p(Vec2::new(0.0, lo.y)), view.p(Vec2::new(0.0, hi.y)), AXIS);
         }
         Follower::Rocker { length } => {
             let a = Vec2::new(length, 0.0);
-            frame_pivot(g, view.at(a), 1.5);
-            labels.add_text(view.at(a), Vec2::new(1.0, -1.0), "A", 3.5);
+            frame_pivot(g, view.p(a), 1.5);
+            labels.add_text(view.p(a), Vec2::new(1.0, -1.0), "A", 3.5);
             let arc: Vec<Point> = (0..=60)
-                .map(|k| view.at(r.state(phis[0] + (phis[phis.len() / 2 - 1] - phis[0]) * k as f64 / 60.0).b))
+                .map(|k| view.p(r.state(phis[0] + (phis[phis.len() / 2 - 1] - phis[0]) * k as f64 / 60.0).b))
                 .collect();
             g.path(arc, false, THIN);
             for &phi in phis {
-                g.line(view.at(a), view.at(r.state(phi).b), THIN);
+                g.line(view.p(a), view.p(r.state(phi).b), THIN);
             }
         }
     }
@@ -193,13 +178,13 @@ fn draw_follower(g: &mut Group, labels: &mut Labels, view: View, (lo, hi): (Vec2
 /// The positions and their analog segments; positions drawn at one point share a label.
 fn draw_positions(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis: &[f64]) {
     let r = &d.region;
-    let analogs: Vec<Point> = phis.iter().map(|&phi| view.at(r.state(phi).analog)).collect();
+    let analogs: Vec<Point> = phis.iter().map(|&phi| view.p(r.state(phi).analog)).collect();
     for ((&phi, &at), name) in phis
         .iter()
         .zip(&analogs)
         .zip(merged_labels(analogs.len(), |j, k| (analogs[j] - analogs[k]).norm() < SAME_POINT_MM))
     {
-        g.line(view.at(r.state(phi).b), at, THIN);
+        g.line(view.p(r.state(phi).b), at, THIN);
         g.dot(at, 0.45);
         if let Some(name) = name {
             labels.add_text_ranked(at, Vec2::ZERO, &name, 2.5, 2);
@@ -219,12 +204,12 @@ fn draw_limiting_lines(
     words: &CamWords,
 ) -> Vec<Line> {
     let r = &d.region;
-    let paper = |v: Vec2| (view.at(v) - view.at(Vec2::ZERO)).unit();
+    let paper = |v: Vec2| (view.p(v) - view.p(Vec2::ZERO)).unit();
     let mut limiting = Vec::new();
     for (ph, left) in [(Phase::Rise, true), (Phase::Return, false)] {
         let (apex, dir, phi) = r.limiting_ray(ph, left, d.centre.o);
         let end = apex + dir * exit(apex, dir, lo, hi);
-        let (a, b) = (view.at(apex), view.at(end));
+        let (a, b) = (view.p(apex), view.p(end));
         g.line(a, b, THIN);
         limiting.push(Line::new(a, b));
         let axis = paper(-r.state(phi).t);
@@ -242,7 +227,7 @@ fn draw_limiting_lines(
 /// it does not run along a limiting line.
 fn draw_zone_boundary(g: &mut Group, view: View, (lo, hi): (Vec2, Vec2), d: &Design, limiting: &[Line]) {
     let r = &d.region;
-    let paper = |v: Vec2| (view.at(v) - view.at(Vec2::ZERO)).unit();
+    let paper = |v: Vec2| (view.p(v) - view.p(Vec2::ZERO)).unit();
     let span = (hi - lo).norm();
     let us: Vec<f64> = (0..=BOUNDARY_POINTS).map(|k| span * (2.0 * k as f64 / BOUNDARY_POINTS as f64 - 1.0)).collect();
     let boundary: Vec<Point> = us
@@ -250,7 +235,7 @@ fn draw_zone_boundary(g: &mut Group, view: View, (lo, hi): (Vec2, Vec2), d: &Des
         .zip(r.floors(&us))
         .map(|(&u, w)| r.point(u, w))
         .filter(|p| p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y)
-        .map(|p| view.at(p))
+        .map(|p| view.p(p))
         .collect();
     hatch_along(g, &boundary, paper(r.d), HATCH_STEP_MM);
     let on_limiting = |p: &Point| limiting.iter().any(|l| l.nearest(*p, 0.0).distance_sq < ON_LINE_MM * ON_LINE_MM);
@@ -264,28 +249,28 @@ fn draw_zone_boundary(g: &mut Group, view: View, (lo, hi): (Vec2, Vec2), d: &Des
 fn draw_centre(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words: &CamWords) {
     let (l, c, lang) = (words.sheet, words.common, words.lang);
     let o = d.centre.o;
-    g.dot(view.at(o), 0.8);
-    labels.add_text(view.at(o), Vec2::new(-1.0, 1.0), "O", 3.5);
-    vector(g, view.at(o), view.at(Vec2::ZERO), THIN);
+    g.dot(view.p(o), 0.8);
+    labels.add_text(view.p(o), Vec2::new(-1.0, 1.0), "O", 3.5);
+    vector(g, view.p(o), view.p(Vec2::ZERO), THIN);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
         fmt::value(d.centre.r_min * 1e3, lang),
         c.unit_mm()
     ));
-    labels.add(view.at(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5);
+    labels.add(view.p(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5);
     if let Some(a) = d.spec.follower.pivot() {
-        g.line(view.at(o), view.at(a), DASHED);
+        g.line(view.p(o), view.p(a), DASHED);
         let dist = d.centre_distance().unwrap_or_default();
         let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(dist * 1e3, lang), c.unit_mm()));
-        labels.add(view.at((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
+        labels.add(view.p((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
     } else if o.x.abs() > tol::ZERO_OFFSET {
         // The offset as a dimension from the follower's axis to O, below O where the zone
         // between the limiting lines (at the allowed angles from the axis) is wide enough
         // for it and its arrows, clear of the hatching.
         let a = &d.spec.allowed;
-        let span = o.x.abs() / view.mu + 20.0;
+        let span = view.len(o.x.abs()) + 20.0;
         let depth = (span / (math::tan(a.rise) + math::tan(a.ret)) + 2.0).max(8.0);
-        let mid = dimension(g, view.at(Vec2::new(0.0, o.y)), view.at(o), Vec2::new(0.0, depth));
+        let mid = dimension(g, view.p(Vec2::new(0.0, o.y)), view.p(o), Vec2::new(0.0, depth));
         let t = format!("e = {} {}", fmt::value(o.x.abs() * 1e3, lang), c.unit_mm());
         labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);
     }

@@ -8,7 +8,7 @@
 //! in the start position and the cam's sense of rotation.
 
 use super::labels::{CamLabels, CamWords};
-use super::nomogram::{Placement, View, bounds, position_labels};
+use super::nomogram::{Placement, bounds, position_labels};
 use crate::cams::Design;
 use crate::cams::follower::Follower;
 use crate::drawing::fmt;
@@ -17,10 +17,11 @@ use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, frame_pivot, hatch, turn_arrow, vector};
 use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
 use crate::num::bezier::Fitted;
 use crate::num::math::{Norm, atan2, sin_cos};
 use crate::num::tol;
-use kurbo::{Affine, CubicBez, Point, Vec2};
+use kurbo::{CubicBez, Point, Vec2};
 use std::f64::consts::TAU;
 
 /// The profiles' accuracy, metres ([`tol::PROFILE_FIT`]), and the most pieces a part may take.
@@ -99,10 +100,10 @@ pub fn draw(
 ) -> ProfileDrawn {
     let mu = at.mu;
     let view = at.view(d.spec.sense);
-    inversion(g, d, phis, &|v| view.at(v), mu, labels);
+    inversion(g, d, phis, &|v| view.p(v), mu, labels);
     draw_profiles(g, view, d, pieces);
     draw_rollers(g, labels, view, d, phis);
-    follower_at_start(g, d, &|v| view.at(v), mu);
+    follower_at_start(g, d, &|v| view.p(v), mu);
     draw_rotation(g, labels, view, d);
     name_profiles(labels, view, d, words.sheet);
     draw_r_min(g, labels, view, d, words);
@@ -111,13 +112,9 @@ pub fn draw(
 
 /// The base circle and the profiles.
 fn draw_profiles(g: &mut Group, view: View, d: &Design, pieces: &Pieces) {
-    let mu = view.mu;
-    // To paper: the cam frame's metres through the view (mirror and y up).
-    let sx = if view.mirror { -1.0 / mu } else { 1.0 / mu };
-    let to_paper = Affine::new([sx, 0.0, 0.0, -1.0 / mu, view.origin.x, view.origin.y]);
-    let path_of = |cubics: &[CubicBez]| Path::cubics(&cubics.iter().map(|c| to_paper * *c).collect::<Vec<_>>());
+    let path_of = |cubics: &[CubicBez]| Path::cubics(&cubics.iter().map(|c| view.cubic(c)).collect::<Vec<_>>());
     let knife = d.roller == 0.0;
-    g.circle(view.origin, d.centre.r_min / mu, DASHED);
+    g.circle(view.origin, view.len(d.centre.r_min), DASHED);
     for f in &pieces.pitch {
         g.curve(path_of(&f.cubics), if knife { MAIN } else { THIN });
     }
@@ -128,15 +125,14 @@ fn draw_profiles(g: &mut Group, view: View, d: &Design, pieces: &Pieces) {
 
 /// The numbered positions: the rollers and their numbers outside them.
 fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis: &[f64]) {
-    let mu = view.mu;
     for (&phi, name) in phis.iter().zip(position_labels(phis)) {
         let p = d.profile.pitch(phi).p;
         if d.roller != 0.0 {
-            g.circle(view.at(p), d.roller / mu, THIN);
-            labels.keep_out(view.at(p), d.roller / mu);
+            g.circle(view.p(p), view.len(d.roller), THIN);
+            labels.keep_out(view.p(p), view.len(d.roller));
         }
         // At the roller's rim (a knife's point), outward: a leader, if any, reaches it.
-        let rim = view.at(p * (1.0 + d.roller / p.norm()));
+        let rim = view.p(p * (1.0 + d.roller / p.norm()));
         if let Some(name) = name {
             labels.add_text_ranked(rim, rim - view.origin, &name, 2.5, 2);
         }
@@ -159,17 +155,17 @@ fn name_profiles(labels: &mut Labels, view: View, d: &Design, l: &CamLabels) {
     let (pr, prog) = (&d.profile, &d.spec.program);
     let far = pr.pitch(prog.rise + prog.far_dwell / 2.0).p;
     // Outward, past the rollers: inside, its leader would cross the working profile.
-    let outward = view.at(far) - view.origin;
+    let outward = view.p(far) - view.origin;
     // A knife's working profile is its pitch profile: one curve, both names.
     let knife = d.roller == 0.0;
     let name = if knife { l.knife_profile() } else { l.pitch_profile() };
-    labels.add_line_name(view.at(far), outward, LabelText::new(name, ""), 2.5, 3);
+    labels.add_line_name(view.p(far), outward, LabelText::new(name, ""), 2.5, 3);
     if !knife {
         // On the curve itself (its leader reaches it), the text inside the cam, which is
         // free of the construction.
         let (w, _) = pr.working(d.roller, prog.rise / 2.0);
-        let inward = view.origin - view.at(w);
-        labels.add_line_name(view.at(w), inward, LabelText::new(l.working_profile(), ""), 2.5, 3);
+        let inward = view.origin - view.p(w);
+        labels.add_line_name(view.p(w), inward, LabelText::new(l.working_profile(), ""), 2.5, 3);
     }
 }
 
@@ -182,16 +178,16 @@ fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words:
     let near = prog.rise + prog.far_dwell + prog.ret;
     let dir = pr.pitch((near + TAU) / 2.0).p.unit();
     let base = dir * d.centre.r_min;
-    vector(g, view.origin, view.at(base), THIN);
+    vector(g, view.origin, view.p(base), THIN);
     let aside = pr.pitch(near + (TAU - near) * 0.7).p.unit() * d.centre.r_min;
-    let out = view.at(aside) - view.origin;
-    labels.add_line_name(view.at(aside), out, LabelText::new(l.base_circle(), ""), 2.5, 3);
+    let out = view.p(aside) - view.origin;
+    labels.add_line_name(view.p(aside), out, LabelText::new(l.base_circle(), ""), 2.5, 3);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
         fmt::value(d.centre.r_min * 1e3, words.lang),
         words.common.unit_mm()
     ));
-    labels.add_ranked(view.at(base * 0.55), Vec2::ZERO, r_text, 2.5, 1);
+    labels.add_ranked(view.p(base * 0.55), Vec2::ZERO, r_text, 2.5, 1);
 }
 
 /// The inversion's construction for each numbered position (cam frame through `at`).

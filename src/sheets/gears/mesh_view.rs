@@ -7,15 +7,16 @@
 //! (0, r_w1). Wheel 1 turns counter-clockwise and drives; the contact runs from B1 (on
 //! wheel 2's tip circle, toward N1) to B2.
 
-use super::teeth_view::{Flank, active_flanks, flank, map_cubic, rot, teeth_path};
+use super::teeth_view::{Flank, active_flanks, flank, map_cubic, teeth_path};
 use crate::drawing::obstacles::segment_meets_rect;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, Group, MAIN, Pen, THIN};
 use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
 use crate::gears::pair::Pair;
 use crate::gears::tooth::{Outline, polar};
-use crate::num::math::{Norm, cos, from_angle, sin, tan};
+use crate::num::math::{Norm, cos, from_angle, rotate, sin, tan};
 use crate::num::tol;
 use kurbo::{CubicBez, Point, Rect, Vec2};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
@@ -35,21 +36,6 @@ pub struct MeshDrawn {
     pub fillet_deviation: f64,
     /// The tooth height on paper, mm.
     pub tooth_height_mm: f64,
-}
-
-/// World → paper.
-#[derive(Clone, Copy)]
-pub(super) struct View {
-    /// Paper position of the world origin (O1).
-    pub(super) o: Point,
-    /// Paper mm per metre.
-    pub(super) k: f64,
-}
-
-impl View {
-    pub(super) fn p(&self, w: Vec2) -> Point {
-        Point::new(self.o.x + self.k * w.x, self.o.y - self.k * w.y)
-    }
 }
 
 /// The largest arc of a circle (paper centre `c`, radius r) around paper angle `mid` that
@@ -145,8 +131,7 @@ const ALPHA_ARC_MM: f64 = 28.0;
 pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels) -> MeshDrawn {
     let p = inp.pair;
     let mu = crate::drawing::scale::length_scale_below(p.tooth_height / 50.0);
-    let k = 1.0 / mu; // paper mm per metre
-    let (v, pp) = placement(p, area, k);
+    let (v, pp) = placement(p, area, mu);
     let centres = tooth_centres(inp);
     let (fl1, dev1, fd1) = flank(inp.outlines[0]);
     let (fl2, dev2, fd2) = flank(inp.outlines[1]);
@@ -169,31 +154,32 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
         contact_ratio_drawn,
         involute_deviation: dev1.max(dev2),
         fillet_deviation: fd1.max(fd2),
-        tooth_height_mm: p.tooth_height * k,
+        // Paper mm per metre times metres, as results.json has always had it (`/ mu` can
+        // differ in the last bit).
+        tooth_height_mm: p.tooth_height * (1.0 / mu),
     }
 }
 
-/// The view of the pair in `area` at `k` paper mm per metre, and P on paper: P in the
-/// middle across; both centres on the sheet when they fit, else P in the middle.
-fn placement(p: &Pair, area: Rect, k: f64) -> (View, Point) {
+/// The view of the pair in `area` at μ_l `mu`, and P on paper: P in the middle across; both
+/// centres on the sheet when they fit, else P in the middle.
+fn placement(p: &Pair, area: Rect, mu: f64) -> (View, Point) {
     let [w1, w2] = &p.wheels;
-    let span = k * p.centre_distance;
+    let span = p.centre_distance / mu;
     let py = if span + 24.0 <= area.height() {
-        area.y0 + 12.0 + k * w2.working + (area.height() - span - 24.0) / 2.0
+        area.y0 + 12.0 + w2.working / mu + (area.height() - span - 24.0) / 2.0
     } else {
         area.center().y
     };
     let pp = Point::new(area.center().x, py);
-    (View { o: Point::new(pp.x, pp.y + k * w1.working), k }, pp)
+    (View::new(Point::new(pp.x, pp.y + w1.working / mu), mu), pp)
 }
 
 /// Both wheels' circles, clipped to `area`; returns where each circle's name goes.
 fn draw_circles(g: &mut Group, v: View, area: Rect, p: &Pair) -> Vec<(Point, LabelText)> {
-    let k = v.k;
     let [w1, w2] = &p.wheels;
     let mut circle = |c: Vec2, r: f64, mid: f64, pen: Pen| {
-        if let Some((a0, sweep)) = visible_arc(v.p(c), k * r, mid, area) {
-            g.curve(Path::arc(v.p(c), k * r, a0, sweep), pen);
+        if let Some((a0, sweep)) = visible_arc(v.p(c), v.len(r), mid, area) {
+            g.curve(Path::arc(v.p(c), v.len(r), a0, sweep), pen);
             Some((a0, sweep))
         } else {
             None
@@ -214,7 +200,7 @@ fn draw_circles(g: &mut Group, v: View, area: Rect, p: &Pair) -> Vec<(Point, Lab
         }
         for (r, pen, label) in set {
             if let Some((a0, sweep)) = circle(c, r, mid, pen) {
-                circle_labels.push((crate::drawing::path::on_circle(v.p(c), k * r, a0 + sweep * 0.04), label));
+                circle_labels.push((crate::drawing::path::on_circle(v.p(c), v.len(r), a0 + sweep * 0.04), label));
             }
         }
     }
@@ -239,13 +225,12 @@ fn draw_teeth(g: &mut Group, v: View, inp: &MeshInput, flanks: [&Flank; 2], cent
 /// The line of centres, τ–τ through P, the line of action with its active part B1B2 thick,
 /// the points on it and the angle α_w; returns τ–τ's half length, mm.
 fn draw_lines(g: &mut Group, v: View, area: Rect, pp: Point, p: &Pair, m: &MeshPoints) -> f64 {
-    let k = v.k;
     let a_w = p.centre_distance;
     let o1 = Vec2::ZERO;
     clipped_line(g, v.p(o1 - Vec2::new(0.0, 0.02 * a_w)), v.p(m.o2 + Vec2::new(0.0, 0.02 * a_w)), area, AXIS);
-    let tau = 0.45 * area.width().min(k * 2.2 * p.spec.module * 10.0).max(60.0);
+    let tau = 0.45 * area.width().min(v.len(2.2 * p.spec.module * 10.0)).max(60.0);
     g.line(pp - Vec2::new(tau, 0.0), pp + Vec2::new(tau, 0.0), THIN);
-    let ext = 8.0 / k;
+    let ext = 8.0 * v.mu; // 8 mm on paper
     clipped_line(g, v.p(m.n1 - m.dir * ext), v.p(m.n2 + m.dir * ext), area, THIN);
     g.line(v.p(m.b1), v.p(m.b2), ACTIVE);
     for q in [m.n1, m.n2] {
@@ -272,11 +257,11 @@ fn draw_arc_of_action(g: &mut Group, v: View, inp: &MeshInput, fl1: &Flank, c_co
     let (d1, d2) = (turn_to(m.b1), turn_to(m.b2));
     for d in [d1, d2] {
         let cs: Vec<CubicBez> =
-            fl1.involute.iter().map(|x| map_cubic(x, |q| v.p(o1 + rot(q, c_contact + d)))).collect();
+            fl1.involute.iter().map(|x| map_cubic(x, |q| v.p(o1 + rotate(q, c_contact + d)))).collect();
         g.curve(Path::cubics(&cs), THIN);
     }
     let (e1, e2) = (FRAC_PI_2 + d1, FRAC_PI_2 + d2);
-    let rw = v.k * w1.working;
+    let rw = v.len(w1.working);
     g.curve(Path::arc(v.p(o1), rw, -e1, -(e2 - e1)), ACTIVE);
     // Measured on the drawing: the drawn ends, as written (to 1 µm), against the drawn pitch.
     let round = |q: Point| Point::new((q.x * 1e3).round() / 1e3, (q.y * 1e3).round() / 1e3);
@@ -385,7 +370,7 @@ mod tests {
                             for k in 0..=200 {
                                 let p = kurbo::ParamCurve::eval(c, f64::from(k) / 200.0).to_vec2();
                                 let p = if mirror { Vec2::new(p.x, -p.y) } else { p };
-                                let q = o[i] + rot(p, cc);
+                                let q = o[i] + rotate(p, cc);
                                 let d = depth(&outlines[j], o[j], centres[j][1], q);
                                 worst = worst.max(d);
                                 touch = touch.min(-d);

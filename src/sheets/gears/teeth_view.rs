@@ -2,12 +2,13 @@
 //! number of Bézier pieces, the fillet within a tolerance), three teeth per wheel as one path
 //! from the middle of a space to the middle of a space, the active flanks thick.
 
-use super::mesh_view::{ACTIVE, View};
+use super::mesh_view::ACTIVE;
 use crate::drawing::path::{Path, Seg};
 use crate::drawing::scene::Group;
+use crate::drawing::view::View;
 use crate::gears::tooth::Outline;
 use crate::num::bezier;
-use crate::num::math::{cos, from_angle, sin};
+use crate::num::math::{from_angle, rotate};
 use crate::num::tol;
 use kurbo::{Arc, CubicBez, Point, Vec2};
 use std::f64::consts::PI;
@@ -38,17 +39,12 @@ fn reversed(cs: &[CubicBez]) -> Vec<CubicBez> {
     cs.iter().rev().map(|c| CubicBez::new(c.p3, c.p2, c.p1, c.p0)).collect()
 }
 
-pub(super) fn rot(v: Vec2, a: f64) -> Vec2 {
-    let (s, c) = (sin(a), cos(a));
-    Vec2::new(c * v.x - s * v.y, s * v.x + c * v.y)
-}
-
 /// Appends an arc about world centre `c` (radius r) from world angle a0 to a1.
 fn push_arc(path: &mut Path, v: View, c: Vec2, r: f64, a0: f64, a1: f64) {
     if (a1 - a0).abs() < tol::ANGLE_ROUND_OFF {
         return;
     }
-    path.segs.push(Seg::Arc(Arc::new(v.p(c), (v.k * r, v.k * r), -a0, -(a1 - a0), 0.0)));
+    path.segs.push(Seg::Arc(Arc::new(v.p(c), (v.len(r), v.len(r)), -a0, -(a1 - a0), 0.0)));
 }
 
 fn push_cubics(path: &mut Path, cs: &[CubicBez]) {
@@ -64,7 +60,7 @@ pub(super) fn teeth_path(v: View, c: Vec2, o: &Outline, fl: &Flank, centres: &[f
     let mut path = Path::new(v.p(c + from_angle(first) * o.root));
     let mut at = first;
     for &cc in centres {
-        let world = |mirror: bool| move |p: Vec2| v.p(c + rot(if mirror { Vec2::new(p.x, -p.y) } else { p }, cc));
+        let world = |mirror: bool| move |p: Vec2| v.p(c + rotate(if mirror { Vec2::new(p.x, -p.y) } else { p }, cc));
         push_arc(&mut path, v, c, o.root, at, cc - o.root_from);
         let lower = |cs: &[CubicBez]| cs.iter().map(|x| map_cubic(x, world(true))).collect::<Vec<_>>();
         push_cubics(&mut path, &lower(&fl.fillet));
@@ -86,7 +82,7 @@ pub(super) fn active_flanks(g: &mut Group, v: View, c: Vec2, o: &Outline, r_low:
     let inv = |t: f64| o.involute(t);
     let cs = bezier::fit(&inv, t0, o.t_tip, INVOLUTE_PIECES);
     for &cc in centres {
-        let pieces: Vec<CubicBez> = cs.iter().map(|x| map_cubic(x, |p| v.p(c + rot(p, cc)))).collect();
+        let pieces: Vec<CubicBez> = cs.iter().map(|x| map_cubic(x, |p| v.p(c + rotate(p, cc)))).collect();
         g.curve(Path::cubics(&pieces), ACTIVE);
     }
 }
@@ -103,7 +99,7 @@ mod tests {
         let pair = Pair::new(&spec).unwrap();
         let o = Outline::new(&spec, &pair.wheels[0]);
         let (fl, _, _) = flank(&o);
-        let v = View { o: Point::new(400.0, 390.0), k: 6000.0 };
+        let v = View::new(Point::new(400.0, 390.0), 1.0 / 6000.0);
         let path = teeth_path(v, Vec2::ZERO, &o, &fl, &[1.2, 1.57, 1.94]);
         let mut end = path.start;
         for s in &path.segs {

@@ -7,7 +7,7 @@
 
 use super::forces_view::{ForceScales, ForcesInput, draw_forces, fit_comfortably};
 use super::labels::LeverWords;
-use super::mechanism_view::{MechanismView, View, world_extent};
+use super::mechanism_view::{MechanismView, world_extent};
 use super::note_tables::{note_tables, sheet_table, tables_group, with_units};
 use super::plans_view::{PlanCell, Sizing, draw_plan, label_bounds, size_plans};
 use crate::drawing::fmt;
@@ -18,6 +18,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{AXIS, Anchor, Group, Scene, Text};
 use crate::drawing::table::Table;
 use crate::drawing::text::{LabelText, TooLong};
+use crate::drawing::view::View;
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
 use crate::project::LeverProject;
@@ -254,7 +255,7 @@ fn mechanism_group(
     mechanism_header(&mut group, region, mu_l, k, words);
     trajectory_legend(&mut group, region, words);
     let mut labels = Labels::new();
-    MechanismView { m, k, view: View { mu: mu_l, origin }, kulisa: &inp.project.kulisa_lengths }
+    MechanismView { m, k, view: View::new(origin, mu_l), kulisa: &inp.project.kulisa_lengths }
         .draw(&mut group, &mut labels);
     labels.place(&mut group, region.inflate(-0.5, -0.5));
     MechanismDrawn { group, region, mu_l, comfortable: comfortable.is_some() }

@@ -7,6 +7,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{Group, THIN, VECTOR};
 use crate::drawing::symbols::vector;
 use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
 use crate::num::math::Norm;
 use crate::num::tol;
 use kurbo::{Point, Vec2};
@@ -16,13 +17,11 @@ pub(super) fn arrow_scale(largest: f64) -> f64 {
     scale::round_up(largest.max(f64::MIN_POSITIVE) / ARROW_MAX)
 }
 
-pub(super) fn paper_dir(v: Vec2) -> Vec2 {
-    Vec2::new(v.x, -v.y)
-}
-
 /// Force arrows of one drawing, kept apart: an arrow along a link is drawn beside it, and
 /// one from the same point in (nearly) the same direction as an earlier one beside that.
 pub(super) struct Arrows {
+    /// The drawing's world-to-paper map.
+    pub(super) view: View,
     /// The drawing's link lines, paper mm.
     pub(super) links: Vec<(Point, Point)>,
     /// Slider blocks: centre, unit direction along the block, half length and half width.
@@ -54,7 +53,7 @@ impl Arrows {
         }
         let natural = f / self.mu_f;
         let len = natural.clamp(ARROW_MIN, ARROW_MAX);
-        let d = paper_dir(force) / f;
+        let d = self.view.dir(force) / f;
         let n = d.turn_90();
         // A force on a slider starts at the block's outline, not under it.
         let exit = self.blocks.iter().find(|b| (b.0 - at).norm() < 0.5).map_or(0.0, |&(_, u, hl, hw)| {

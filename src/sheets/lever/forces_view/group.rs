@@ -2,13 +2,13 @@
 //! and inertia moments) beside its force polygon, the vector equation, the legend and the
 //! scales under them.
 
-use super::arrows::{Arrows, arrow_scale, paper_dir};
+use super::arrows::{Arrows, arrow_scale};
 use super::cells::Sizes;
 use super::legend::{
     cell_title, equation_lines, force_label, scale_item, text_rows, value_item, with_semicolon, with_short_note,
     wrap_items,
 };
-use super::polygon::{bbox_of, chain, draw_polygon, view};
+use super::polygon::{bbox_of, chain, draw_polygon};
 use super::{ARROW_MAX, ARROW_MIN, ForcesInput, LINE};
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
@@ -16,6 +16,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{Group, MAIN, THIN};
 use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, slider};
 use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
 use crate::lever::kinetostatics::Polygon;
 use crate::lever::linkage::LinkKind;
 use crate::num::math::Norm;
@@ -159,7 +160,8 @@ fn draw_group_geometry(
     r: Rect,
     layout: &GroupLayout,
 ) {
-    let p = view(layout.world, r, layout.mu_l);
+    let view = View::centred(layout.world, r, layout.mu_l);
+    let p = |v: Vec2| view.p(v);
     let m = inp.m;
     let mut link_lines = Vec::new();
     let mut blocks = Vec::new();
@@ -170,14 +172,14 @@ fn draw_group_geometry(
         match link.kind {
             LinkKind::Slider => {
                 let dir = inp.state.links[l].dir;
-                slider(g, p(inp.state.points[first].p), paper_dir(dir), 10.0, 5.0, MAIN);
+                slider(g, p(inp.state.points[first].p), view.dir(dir), 10.0, 5.0, MAIN);
                 let c = p(inp.state.points[first].p);
-                let u = paper_dir(dir);
+                let u = view.dir(dir);
                 blocks.push((c, u.unit(), 5.0, 2.5));
                 g.line(c - u * 14.0 + u.turn_90() * 2.5, c + u * 14.0 + u.turn_90() * 2.5, THIN);
             }
             LinkKind::Block => {
-                let (c, u) = (p(inp.state.points[first].p), paper_dir(inp.state.links[l].dir));
+                let (c, u) = (p(inp.state.points[first].p), view.dir(inp.state.links[l].dir));
                 slider(g, c, u, 8.0, 4.0, MAIN);
                 blocks.push((c, u.unit(), 4.0, 2.0));
             }
@@ -219,7 +221,7 @@ fn draw_group_geometry(
             3.5,
         );
     }
-    let mut arrows = Arrows { links: link_lines, blocks, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
+    let mut arrows = Arrows { view, links: link_lines, blocks, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
     for t in &poly.terms {
         arrows.arrow(g, labels, p(t.at), t.force, force_label(inp, t.kind, t.on));
     }

@@ -7,6 +7,7 @@ use super::legend::force_label;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{DASHED, Group, VECTOR};
 use crate::drawing::symbols::vector;
+use crate::drawing::view::View;
 use crate::lever::kinetostatics::Polygon;
 use crate::num::math::Norm;
 use crate::num::tol;
@@ -25,13 +26,6 @@ pub(super) fn bbox_of(pts: &[Vec2]) -> Rect {
     pts.iter().fold(Rect::from_points(Point::ZERO, Point::ZERO), |r, p| r.union_pt(p.to_point()))
 }
 
-/// World to paper for a drawing of world box `wb` centred in `r` at scale `mu`.
-pub(super) fn view(wb: Rect, r: Rect, mu: f64) -> impl Fn(Vec2) -> Point {
-    let c = r.center();
-    let wc = wb.center();
-    move |v: Vec2| Point::new(c.x + (v.x - wc.x) / mu, c.y - (v.y - wc.y) / mu)
-}
-
 pub(super) fn draw_polygon(
     g: &mut Group,
     labels: &mut Labels,
@@ -40,7 +34,8 @@ pub(super) fn draw_polygon(
     layout: &GroupLayout,
     r: Rect,
 ) {
-    let p = view(layout.chain_box, r, layout.mu_p);
+    let view = View::centred(layout.chain_box, r, layout.mu_p);
+    let p = |v: Vec2| view.p(v);
     let pts = &layout.chain;
     // Labels stand outside the polygon: beside each side, away from the vertices' centre.
     let centre = {

@@ -10,10 +10,11 @@ use crate::drawing::fmt;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::Group;
 use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
 use crate::lever::plans::Plan;
 use crate::num::math::Norm;
 use crate::sheets::lever::plans_view::{PlanCell, draw_plan};
-use kurbo::{Point, Rect, Vec2};
+use kurbo::{Rect, Vec2};
 
 /// Lines under the lever besides its legend: μ_v and μ_F, P′ₘ, Δ.
 pub(super) const LEVER_LINES: usize = 3;
@@ -58,8 +59,9 @@ pub(super) fn draw_lever(
     let cell =
         PlanCell { cell: plan_cell, title: inp.words.sheet.lever_title(), plan, mu, pole: "p", scale_line: None };
     let pole = draw_plan(g, &cell, labels);
-    let at = |v: Vec2| Point::new(pole.x + v.x / mu, pole.y - v.y / mu);
-    let mut arrows = Arrows { links: Vec::new(), blocks: Vec::new(), drawn: Vec::new(), mu_f, h: 2.5 };
+    let view = View::new(pole, mu);
+    let at = |v: Vec2| view.p(v);
+    let mut arrows = Arrows { view, links: Vec::new(), blocks: Vec::new(), drawn: Vec::new(), mu_f, h: 2.5 };
     for l in &f.lever {
         let label = if l.couple { couple_label(inp, l.on) } else { force_label(inp, l.kind, l.on) };
         arrows.arrow(g, labels, at(l.image), l.force, label);
