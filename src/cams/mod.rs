@@ -23,6 +23,7 @@ pub mod size;
 
 use crate::num::math::Norm;
 use crate::num::tol;
+use crate::num::units::{metres, mm};
 use follower::Follower;
 use kurbo::Vec2;
 use laws::Program;
@@ -173,7 +174,7 @@ pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
                 return Err(CamError::Roller(r));
             }
             if r >= rho_min {
-                return Err(CamError::RollerTooLarge { r_mm: r * 1e3, rho_mm: rho_min * 1e3 });
+                return Err(CamError::RollerTooLarge { r_mm: mm(r), rho_mm: mm(rho_min) });
             }
             if r > CURVATURE_MARGIN * rho_min {
                 warnings.push(CamWarning::RollerNearCurvature { r, rho_min });
@@ -193,7 +194,7 @@ pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
 
 /// A radius rounded down to a whole millimetre when it is at least 2 mm, to 0.1 mm below.
 fn round_down_mm(r: f64) -> f64 {
-    let mm = r * 1e3;
-    let step = if mm >= 2.0 { 1.0 } else { 0.1 };
-    ((mm / step + tol::WHOLE_STEP).floor() * step).max(step.min(mm)) / 1e3
+    let r_mm = mm(r);
+    let step = if r_mm >= 2.0 { 1.0 } else { 0.1 };
+    metres(((r_mm / step + tol::WHOLE_STEP).floor() * step).max(step.min(r_mm)))
 }

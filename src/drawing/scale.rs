@@ -3,6 +3,7 @@
 
 use crate::num::math;
 use crate::num::tol;
+use crate::num::units::mm;
 
 const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
 
@@ -84,7 +85,7 @@ pub fn format(mu: f64) -> String {
 
 /// A length scale μ_l (m/mm) as a GOST 2.302 ratio: 0.005 m/mm is 1:5, 0.0005 m/mm is 2:1.
 pub fn ratio(mu_l: f64) -> String {
-    let k = mu_l * 1000.0; // real millimetres per paper millimetre
+    let k = mm(mu_l); // real millimetres per paper millimetre
     if k >= EXACT { format!("1:{}", format(k)) } else { format!("{}:1", format(1.0 / k)) }
 }
 

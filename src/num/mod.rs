@@ -10,5 +10,6 @@ pub mod math;
 pub mod near;
 pub mod roots;
 pub mod tol;
+pub mod units;
 
 pub use near::Near;

@@ -18,6 +18,7 @@ use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::dimension;
 use crate::drawing::text::LabelText;
 use crate::num::tol;
+use crate::num::units;
 use kurbo::{Point, Rect, Vec2};
 use std::f64::consts::PI;
 
@@ -355,7 +356,7 @@ fn phase_dimensions(g: &mut Group, plot: &Plot, p: &Program, labels: &mut Labels
 /// The displacement's ticks in the tables' units, round there: mm for a translating
 /// follower, degrees for a rocker (the values stay in SI for the plot).
 fn lift_ticks(lift: f64, mu_s: f64, rocker: bool, lang: Language) -> Vec<(f64, String)> {
-    let k = if rocker { 180.0 / PI } else { 1e3 };
+    let k = if rocker { 180.0 / PI } else { units::MM_PER_M };
     round_ticks(0.0, lift * k, mu_s * k, lang).into_iter().map(|(v, t)| (v / k, t)).collect()
 }
 

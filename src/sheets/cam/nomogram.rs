@@ -17,6 +17,7 @@ use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::num::math::{self, Norm};
 use crate::num::tol;
+use crate::num::units::mm;
 use kurbo::{Line, ParamCurveNearest, Point, Rect, Vec2};
 
 /// The cam angles of the numbered positions: each phase's division points.
@@ -254,14 +255,14 @@ fn draw_centre(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words
     vector(g, view.p(o), view.p(Vec2::ZERO), THIN);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
-        fmt::value(d.centre.r_min * 1e3, lang),
+        fmt::value(mm(d.centre.r_min), lang),
         c.unit_mm()
     ));
     labels.add(view.p(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5);
     if let Some(a) = d.spec.follower.pivot() {
         g.line(view.p(o), view.p(a), DASHED);
         let dist = d.centre_distance().unwrap_or_default();
-        let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(dist * 1e3, lang), c.unit_mm()));
+        let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(mm(dist), lang), c.unit_mm()));
         labels.add(view.p((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
     } else if o.x.abs() > tol::ZERO_OFFSET {
         // The offset as a dimension from the follower's axis to O, below O where the zone
@@ -271,7 +272,7 @@ fn draw_centre(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words
         let span = view.len(o.x.abs()) + 20.0;
         let depth = (span / (math::tan(a.rise) + math::tan(a.ret)) + 2.0).max(8.0);
         let mid = dimension(g, view.p(Vec2::new(0.0, o.y)), view.p(o), Vec2::new(0.0, depth));
-        let t = format!("e = {} {}", fmt::value(o.x.abs() * 1e3, lang), c.unit_mm());
+        let t = format!("e = {} {}", fmt::value(mm(o.x.abs()), lang), c.unit_mm());
         labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);
     }
 }

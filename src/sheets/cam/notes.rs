@@ -6,6 +6,7 @@ use crate::cams::follower::Follower;
 use crate::cams::laws::Law;
 use crate::cams::{CamWarning, Design};
 use crate::drawing::fmt;
+use crate::num::units::mm;
 use crate::project::CamProject;
 
 /// The notes under the diagrams: the phases, the integration, the nomogram's and the
@@ -36,7 +37,7 @@ pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, words: &C
     }
     for w in &d.warnings {
         if let CamWarning::RollerBelowCourse { r, rho_min, .. } = w {
-            out.push(l.roller_reduced(&fmt::value(r * 1e3, lang), &fmt::value(rho_min * 1e3, lang)));
+            out.push(l.roller_reduced(&fmt::value(mm(*r), lang), &fmt::value(mm(*rho_min), lang)));
         }
     }
     for (k, law) in [&p.laws.0, &p.laws.1].into_iter().enumerate() {

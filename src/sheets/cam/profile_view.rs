@@ -21,6 +21,7 @@ use crate::drawing::view::View;
 use crate::num::bezier::Fitted;
 use crate::num::math::{Norm, atan2, sin_cos};
 use crate::num::tol;
+use crate::num::units::mm;
 use kurbo::{CubicBez, Point, Vec2};
 use std::f64::consts::TAU;
 
@@ -184,7 +185,7 @@ fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words:
     labels.add_line_name(view.p(aside), out, LabelText::new(l.base_circle(), ""), 2.5, 3);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
-        fmt::value(d.centre.r_min * 1e3, words.lang),
+        fmt::value(mm(d.centre.r_min), words.lang),
         words.common.unit_mm()
     ));
     labels.add_ranked(view.p(base * 0.55), Vec2::ZERO, r_text, 2.5, 1);
@@ -220,7 +221,7 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
         }
         Follower::Translating => {
             let e = d.centre.o.x.abs();
-            if e * 1e3 > tol::OFFSET_CIRCLE_MM {
+            if mm(e) > tol::OFFSET_CIRCLE_MM {
                 g.circle(at(Vec2::ZERO), e / mu, AXIS);
             }
             // The axis' foot nearest O, and the axis from it past the roller centre.

@@ -23,6 +23,7 @@ use crate::drawing::table::CELL_TEXT;
 use crate::drawing::text::{paragraph, wrap};
 use crate::gears::pair::PairWarning;
 use crate::gears::tooth::Outline;
+use crate::num::units::mm;
 use crate::project::gears::PlanetaryProject;
 use crate::project::{GearsProject, Project};
 use kurbo::{Point, Rect};
@@ -99,7 +100,7 @@ fn mesh_group(p: &GearsProject, words: &GearWords) -> (Group, MeshDrawn) {
     let mut mesh = Group::new("mesh", MESH);
     let mut labels = Labels::new();
     let title = l.mesh_title(
-        &fmt::trimmed(p.pair.spec.module * 1e3, lang),
+        &fmt::trimmed(mm(p.pair.spec.module), lang),
         &p.pair.wheels[0].z.to_string(),
         &p.pair.wheels[1].z.to_string(),
     );
@@ -141,7 +142,7 @@ fn mesh_notes(p: &GearsProject, words: &GearWords) -> Vec<String> {
     for w in &p.warnings {
         out.push(match w {
             PairWarning::Undercut { wheel, x, x_min } => l.undercut_note(&wheel.to_string(), &v(*x), &v(*x_min)),
-            PairWarning::ThinTip { wheel, s_a, .. } => l.thin_tip_note(&wheel.to_string(), &v(s_a * 1e3)),
+            PairWarning::ThinTip { wheel, s_a, .. } => l.thin_tip_note(&wheel.to_string(), &v(mm(*s_a))),
             PairWarning::LowContactRatio { eps } => l.low_ratio_note(&v(*eps)),
             PairWarning::Interference { wheel } => l.interference_note(&wheel.to_string()),
         });
@@ -197,7 +198,7 @@ fn diagnostics(p: &GearsProject) -> Vec<String> {
         .iter()
         .filter_map(|w| match w {
             PairWarning::ThinTip { wheel, s_a, limit } => {
-                Some(format!("wheel {wheel}'s tip is thin: s_a = {:.3} mm < 0.25·m = {:.3} mm", s_a * 1e3, limit * 1e3))
+                Some(format!("wheel {wheel}'s tip is thin: s_a = {:.3} mm < 0.25·m = {:.3} mm", mm(*s_a), mm(*limit)))
             }
             PairWarning::LowContactRatio { eps } => Some(format!("the contact ratio {eps:.3} is below 1.2")),
             PairWarning::Interference { wheel } => {
