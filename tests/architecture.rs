@@ -45,8 +45,13 @@ fn crate_paths(text: &str) -> Vec<String> {
         let rest = &text[i + 7..];
         let end = rest.find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':')).unwrap_or(rest.len());
         let path = rest[..end].trim_end_matches(':');
-        // `#[macro_export]` puts the drawing kit's `label_set!` at the crate root.
-        out.push(if path == "label_set" { "drawing::label_set".to_string() } else { path.to_string() });
+        // `#[macro_export]` puts the drawing kit's `label_set!` and num's `assert_near!` at the
+        // crate root.
+        out.push(match path {
+            "label_set" => "drawing::label_set".to_string(),
+            "assert_near" => "num::assert_near".to_string(),
+            _ => path.to_string(),
+        });
     }
     out
 }

@@ -7,10 +7,12 @@
 mod common;
 
 use common::root;
+use tmm_sheets::assert_near;
 use tmm_sheets::cams::follower::Follower;
 use tmm_sheets::cams::laws::{Custom, Law, LawError, Program, Standard};
 use tmm_sheets::cams::radius::{Allowed, Placement};
 use tmm_sheets::cams::{CamSpec, Roller, Sense, design};
+use tmm_sheets::num::Near;
 use tmm_sheets::project::{self, Project};
 
 fn custom(corners: &[(f64, f64)]) -> Custom {
@@ -55,18 +57,20 @@ fn corners_of_the_guides_straight_laws_reproduce_their_closed_forms() {
 #[test]
 fn an_asymmetric_law_integrates_as_by_hand() {
     let c = custom(&[(0.0, 2.0), (0.25, 2.0), (0.25, -2.0 / 3.0), (1.0, -2.0 / 3.0)]);
-    let close = |a: f64, b: f64| (a - b).abs() < 1e-14;
-    assert!(close(c.eval(0.25).s, 0.25), "{:?}", c.eval(0.25));
-    assert!(close(c.eval(0.5).s, 2.0 / 3.0), "{:?}", c.eval(0.5));
-    assert!(close(c.eval(0.25).ds, 2.0));
-    assert!(close(c.eval(0.1).dds, 8.0) && close(c.eval(0.6).dds, -8.0 / 3.0));
+    let tol = Near::abs(1e-14);
+    assert_near!(c.eval(0.25).s, 0.25, tol);
+    assert_near!(c.eval(0.5).s, 2.0 / 3.0, tol);
+    assert_near!(c.eval(0.25).ds, 2.0, tol);
+    assert_near!(c.eval(0.1).dds, 8.0, tol);
+    assert_near!(c.eval(0.6).dds, -8.0 / 3.0, tol);
     assert_eq!(c.peaks(), (2.0, 8.0));
     let (a, b) = (c.eval(1.0), c.eval(0.0));
     assert_eq!((a.s, a.ds, b.s, b.ds), (1.0, 0.0, 0.0, 0.0));
     // The normalised corners, as the sheet lists them.
     let corners: Vec<_> = c.corners().collect();
     assert_eq!(corners.len(), 4);
-    assert!(close(corners[0].1, 8.0) && close(corners[3].1, -8.0 / 3.0));
+    assert_near!(corners[0].1, 8.0, tol);
+    assert_near!(corners[3].1, -8.0 / 3.0, tol);
 }
 
 #[test]

@@ -7,6 +7,7 @@
 mod common;
 
 use common::{fixture_text, root};
+use tmm_sheets::assert_near;
 use tmm_sheets::cams::follower::Follower;
 use tmm_sheets::cams::laws::{Law, Standard as S};
 use tmm_sheets::cams::radius::Placement;
@@ -21,10 +22,6 @@ fn load(text: &str) -> Project {
 fn cam_fixture(name: &str) -> Project {
     let text = std::fs::read_to_string(root().join("fixtures/cams").join(format!("{name}.yaml"))).unwrap();
     load(&text)
-}
-
-fn close(a: f64, b: f64) -> bool {
-    (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0)
 }
 
 /// A cam-only project; the cam section starts on line 6, one key a line.
@@ -84,17 +81,18 @@ fn the_worked_example_has_the_guides_cam() {
     let c = cam(&p);
     let spec = &c.design.spec;
     assert_eq!(spec.follower, Follower::Rocker { length: 0.105 });
-    assert!(close(spec.program.lift, 25f64.to_radians()));
-    assert!(close(spec.program.rise, 70f64.to_radians()));
-    assert!(close(spec.program.far_dwell, 10f64.to_radians()));
-    assert!(close(spec.program.ret, 70f64.to_radians()));
+    assert_near!(spec.program.lift, 25f64.to_radians());
+    assert_near!(spec.program.rise, 70f64.to_radians());
+    assert_near!(spec.program.far_dwell, 10f64.to_radians());
+    assert_near!(spec.program.ret, 70f64.to_radians());
     assert_eq!(c.laws, (Law::Standard(S::Sine), Law::Standard(S::Sine)));
     assert_eq!(
         (spec.program.rise_law.clone(), spec.program.return_law.clone()),
         (Law::Standard(S::Sine), Law::Standard(S::Sine))
     );
     assert_eq!(c.laws.0.guide_number(), Some(4));
-    assert!(close(spec.allowed.rise, 45f64.to_radians()) && close(spec.allowed.ret, 45f64.to_radians()));
+    assert_near!(spec.allowed.rise, 45f64.to_radians());
+    assert_near!(spec.allowed.ret, 45f64.to_radians());
     assert_eq!(spec.placement, Placement::Free);
     assert_eq!(spec.roller, Roller::Auto);
     assert_eq!(spec.sense, Sense::Ccw);
@@ -114,17 +112,18 @@ fn the_translating_fixture_has_auto_offset_and_two_laws() {
     let c = cam(&p);
     let spec = &c.design.spec;
     assert_eq!(spec.follower, Follower::Translating);
-    assert!(close(spec.program.lift, 0.04));
-    assert!(close(spec.program.rise, 120f64.to_radians()));
-    assert!(close(spec.program.far_dwell, 30f64.to_radians()));
-    assert!(close(spec.program.ret, 90f64.to_radians()));
+    assert_near!(spec.program.lift, 0.04);
+    assert_near!(spec.program.rise, 120f64.to_radians());
+    assert_near!(spec.program.far_dwell, 30f64.to_radians());
+    assert_near!(spec.program.ret, 90f64.to_radians());
     assert_eq!(c.laws, (Law::Standard(S::Cosine), Law::Standard(S::Polynomial345)));
-    assert!(close(spec.allowed.rise, 30f64.to_radians()) && close(spec.allowed.ret, 45f64.to_radians()));
+    assert_near!(spec.allowed.rise, 30f64.to_radians());
+    assert_near!(spec.allowed.ret, 45f64.to_radians());
     assert_eq!(spec.placement, Placement::Free);
     assert_eq!(spec.roller, Roller::Radius(0.008));
     assert_eq!(spec.sense, Sense::Cw);
     assert!(!c.roller_auto && c.offset_auto);
-    assert!(close(c.design.roller, 0.008));
+    assert_near!(c.design.roller, 0.008);
     assert!(c.design.offset().is_some_and(f64::is_finite));
 }
 
@@ -135,10 +134,10 @@ fn the_knife_rocker_fixture_has_no_roller_and_no_far_dwell() {
     let c = cam(&p);
     let spec = &c.design.spec;
     assert_eq!(spec.follower, Follower::Rocker { length: 0.12 });
-    assert!(close(spec.program.lift, 20f64.to_radians()));
-    assert!(close(spec.program.rise, 90f64.to_radians()));
+    assert_near!(spec.program.lift, 20f64.to_radians());
+    assert_near!(spec.program.rise, 90f64.to_radians());
     assert_eq!(spec.program.far_dwell, 0.0);
-    assert!(close(spec.program.ret, 60f64.to_radians()));
+    assert_near!(spec.program.ret, 60f64.to_radians());
     assert_eq!(c.laws, (Law::Standard(S::LinearlyDecreasing), Law::Standard(S::LinearlyDecreasing)));
     assert_eq!(spec.roller, Roller::Knife);
     assert_eq!(c.design.roller, 0.0);

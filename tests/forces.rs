@@ -5,11 +5,13 @@
 
 mod common;
 
-use common::{close, fixture_names, lever, lever_of};
+use common::{fixture_names, lever, lever_of};
 use proptest::prelude::*;
+use tmm_sheets::assert_near;
 use tmm_sheets::lever::analysis;
 use tmm_sheets::lever::kinetostatics::{self, FRAME, Forces, Kind};
 use tmm_sheets::lever::motion;
+use tmm_sheets::num::Near;
 
 fn largest_force(f: &Forces) -> f64 {
     f.applied.iter().map(|a| a.force.hypot()).fold(0.0, f64::max)
@@ -103,8 +105,9 @@ fn every_polygon_closes() {
 fn balancing_force_agrees_three_ways_on_every_fixture() {
     for name in fixture_names() {
         let (_, f) = analysed(&name);
-        assert!(close(f.p_m, f.p_m_lever, 1e-9, 1e-9), "{name}: kinetostatics {} vs lever {}", f.p_m, f.p_m_lever);
-        assert!(close(f.p_m, f.p_m_power, 1e-9, 1e-9), "{name}: kinetostatics {} vs power {}", f.p_m, f.p_m_power);
+        let tol = Near::rel(1e-9).floor(1e-9);
+        assert_near!(f.p_m, f.p_m_lever, tol, "{name}: kinetostatics against the lever");
+        assert_near!(f.p_m, f.p_m_power, tol, "{name}: kinetostatics against the power balance");
     }
 }
 
@@ -125,8 +128,9 @@ proptest! {
         let p = lever(name);
         let k = analysis::kinematics(&p.mechanism, &p.settings).expect("kinematics");
         let f = p_m_at(&p, &k, phi);
-        prop_assert!(close(f.p_m, f.p_m_power, 1e-9, 1e-9 * largest_force(&f)), "{} at φ = {}: {} vs {}", name, phi, f.p_m, f.p_m_power);
-        prop_assert!(close(f.p_m, f.p_m_lever, 1e-9, 1e-9 * largest_force(&f)));
+        let tol = Near::rel(1e-9).floor(1e-9 * largest_force(&f));
+        prop_assert!(tol.holds(f.p_m, f.p_m_power), "{} at φ = {}: {} vs {}", name, phi, f.p_m, f.p_m_power);
+        prop_assert!(tol.holds(f.p_m, f.p_m_lever));
     }
 }
 
@@ -160,6 +164,6 @@ forces:
         let expected = force * (phi + beta).sin() / beta.cos();
         // The gas pushes the piston towards the crank (−x); at θ in (0, 180°) the piston moves
         // towards the crank, so the gas drives and the balancing force opposes the motion.
-        assert!(close(f.p_m, -expected, 1e-12, 1e-9), "θ = {deg}°: P_m = {} vs closed form {}", f.p_m, -expected);
+        assert_near!(f.p_m, -expected, Near::rel(1e-12).floor(1e-9), "θ = {deg}°: P_m against the closed form");
     }
 }

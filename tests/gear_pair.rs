@@ -10,6 +10,7 @@
 #![allow(clippy::disallowed_methods)]
 
 use std::f64::consts::PI;
+use tmm_sheets::assert_near;
 use tmm_sheets::gears::pair::{Pair, PairError, PairSpec, PairWarning, inv, inv_inverse};
 
 const MM: f64 = 1e3;
@@ -26,10 +27,6 @@ fn as_printed(actual: f64, printed: f64, decimals: i32, what: &str) {
         (actual - printed).abs() <= half_unit * (1.0 + 1e-9),
         "{what}: computed {actual:.9}, the source prints {printed} (±{half_unit:e})"
     );
-}
-
-fn rel_close(a: f64, b: f64, rel: f64, what: &str) {
-    assert!((a - b).abs() <= rel * a.abs().max(b.abs()), "{what}: {a:e} vs {b:e} (relative {rel:e})");
 }
 
 fn shifted(module: f64, z: [u32; 2], shift: [f64; 2]) -> PairSpec {
@@ -113,14 +110,14 @@ fn khk_profile_shifted_spur_pair_matches_the_published_table() {
 
     // KHK's tip formula d_a = d + 2m(1 + y − x_other), from the code's own y: the same radii.
     let [x1, x2] = p.spec.shift;
-    rel_close(w1.tip, w1.pitch + m * (1.0 + p.y - x2), 1e-14, "KHK h_a1 = (1 + y − x2)m");
-    rel_close(w2.tip, w2.pitch + m * (1.0 + p.y - x1), 1e-14, "KHK h_a2 = (1 + y − x1)m");
+    assert_near!(w1.tip, w1.pitch + m * (1.0 + p.y - x2), 1e-14, "KHK h_a1 = (1 + y − x2)m");
+    assert_near!(w2.tip, w2.pitch + m * (1.0 + p.y - x1), 1e-14, "KHK h_a2 = (1 + y − x1)m");
     // KHK's y = (z1 + z2)/2 · (cos α / cos α_w − 1).
     let y_khk = 36.0 / 2.0 * (20f64.to_radians().cos() / p.working_pressure_angle.cos() - 1.0);
     assert!((p.y - y_khk).abs() <= 1e-13, "y {} vs KHK's formula {y_khk}", p.y);
     // No interference in this mesh, so ε is the textbook closed form.
     assert_eq!(p.interference, [false, false]);
-    rel_close(p.contact_ratio, contact_ratio_closed_form(&p), 1e-12, "ε_α closed form");
+    assert_near!(p.contact_ratio, contact_ratio_closed_form(&p), 1e-12, "ε_α closed form");
     // The undercut limits the Bolsover tests expect (x_min = 1 − z·sin²α/2).
     as_printed(w1.x_min, 0.29813, 5, "x_min, z = 12");
     as_printed(w2.x_min, -0.40373, 5, "x_min, z = 24");
@@ -192,10 +189,10 @@ fn khk_profile_shifted_helical_pair_in_the_transverse_plane_matches_the_publishe
     as_printed(p.contact_ratio, 1.294, 3, "ε_α (transverse)");
     // Exact: α_wt = 23.112634°, a_w = 125.000001 mm, d_a = 48.15391 / 213.84224 mm, ε_α = 1.293911.
     assert_eq!(p.interference, [false, false]);
-    rel_close(p.contact_ratio, contact_ratio_closed_form(&p), 1e-12, "ε_α closed form");
+    assert_near!(p.contact_ratio, contact_ratio_closed_form(&p), 1e-12, "ε_α closed form");
     // KHK's h_a1 = (1 + y_n − x_n2)·m_n, h_a2 = (1 + y_n − x_n1)·m_n.
-    rel_close(w1.tip, w1.pitch + m_n * (1.0 + y_n - 0.0), 1e-14, "KHK h_a1");
-    rel_close(w2.tip, w2.pitch + m_n * (1.0 + y_n - 0.09809), 1e-14, "KHK h_a2");
+    assert_near!(w1.tip, w1.pitch + m_n * (1.0 + y_n - 0.0), 1e-14, "KHK h_a1");
+    assert_near!(w2.tip, w2.pitch + m_n * (1.0 + y_n - 0.09809), 1e-14, "KHK h_a2");
 }
 
 // ---------------------------------------------------------------------------------------
@@ -256,12 +253,12 @@ fn working_angle_satisfies_the_involute_equation_to_the_last_bits() {
         let lhs = inv_std(p.working_pressure_angle);
         assert!((lhs - rhs).abs() <= 1e-15, "{z:?} {x:?}: inv α_w {lhs:e} vs {rhs:e} ({:e})", lhs - rhs);
         let a = 4e-3 * (z1 + z2) / 2.0;
-        rel_close(p.reference_centre_distance, a, 1e-15, "a");
-        rel_close(p.centre_distance * p.working_pressure_angle.cos(), a * alpha.cos(), 1e-15, "a_w cos α_w");
-        rel_close(p.wheels[0].working + p.wheels[1].working, p.centre_distance, 1e-14, "r_w1 + r_w2 = a_w");
-        rel_close(p.wheels[1].working / p.wheels[0].working, z2 / z1, 1e-14, "r_w2 / r_w1 = u");
+        assert_near!(p.reference_centre_distance, a, 1e-15, "a");
+        assert_near!(p.centre_distance * p.working_pressure_angle.cos(), a * alpha.cos(), 1e-15, "a_w cos α_w");
+        assert_near!(p.wheels[0].working + p.wheels[1].working, p.centre_distance, 1e-14, "r_w1 + r_w2 = a_w");
+        assert_near!(p.wheels[1].working / p.wheels[0].working, z2 / z1, 1e-14, "r_w2 / r_w1 = u");
         // y and Δy by their definitions, and the radial clearance c*·m on both sides.
-        rel_close(p.y, (p.centre_distance - a) / 4e-3, 1e-12, "y");
+        assert_near!(p.y, (p.centre_distance - a) / 4e-3, 1e-12, "y");
         assert!((p.delta_y - (x[0] + x[1] - p.y)).abs() <= 1e-14, "Δy");
         for (i, j) in [(0, 1), (1, 0)] {
             let gap = p.centre_distance - p.wheels[i].tip - p.wheels[j].root;
@@ -294,7 +291,7 @@ fn tooth_thickness_on_the_pitch_and_tip_circles() {
         let alpha = 20f64.to_radians();
         for (i, w) in p.wheels.iter().enumerate() {
             let s = module * (PI / 2.0 + 2.0 * x[i] * alpha.tan());
-            rel_close(w.tooth_thickness, s, 1e-15, "s on the pitch circle");
+            assert_near!(w.tooth_thickness, s, 1e-15, "s on the pitch circle");
             let r = module * f64::from(z[i]) / 2.0;
             let rb = r * alpha.cos();
             let psi_b = s / (2.0 * r) + inv_std(alpha);

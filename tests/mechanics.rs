@@ -5,12 +5,14 @@
 
 mod common;
 
-use common::{close, fixture_names, lever, lever_of};
+use common::{fixture_names, lever, lever_of};
 use kurbo::Vec2;
 use std::f64::consts::TAU;
+use tmm_sheets::assert_near;
 use tmm_sheets::lever::linkage::{Mechanism, State, Step};
 use tmm_sheets::lever::motion::{Start, analyse_motion};
 use tmm_sheets::lever::plans::{SegKind, acceleration_plan, relations, velocity_plan};
+use tmm_sheets::num::Near;
 
 /// Residual of every constraint of every step, metres.
 fn closure_residual(m: &Mechanism, s: &State) -> f64 {
@@ -92,8 +94,8 @@ fn velocities_and_accelerations_match_finite_differences() {
                 let e_fd = (sp.links[l].omega - sm.links[l].omega) / (2.0 * dt);
                 let wscale = s.links.iter().map(|k| k.omega.abs()).fold(1e-3, f64::max);
                 let escale = s.links.iter().map(|k| k.eps.abs()).fold(1e-3, f64::max);
-                assert!(close(w_fd, s.links[l].omega, 1e-6, 1e-6 * wscale), "{name} ω of link {l}");
-                assert!(close(e_fd, s.links[l].eps, 1e-6, 1e-6 * escale), "{name} ε of link {l}");
+                assert_near!(w_fd, s.links[l].omega, Near::rel(1e-6).floor(1e-6 * wscale), "{name} ω of link {l}");
+                assert_near!(e_fd, s.links[l].eps, Near::rel(1e-6).floor(1e-6 * escale), "{name} ε of link {l}");
             }
         }
     }

@@ -11,15 +11,17 @@
 
 mod common;
 
-use common::{close, fixture_names, lever, lever_of};
+use common::{fixture_names, lever, lever_of};
 use kurbo::Vec2;
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 use std::sync::OnceLock;
+use tmm_sheets::assert_near;
 use tmm_sheets::lever::analysis;
 use tmm_sheets::lever::kinetostatics::{self, ForceModel};
 use tmm_sheets::lever::linkage::{Mechanism, State};
 use tmm_sheets::lever::motion::{self, Motion};
+use tmm_sheets::num::Near;
 
 /// Crank rotation between the two solutions of the central difference, h = |ω1|·dt (rad).
 ///
@@ -328,7 +330,7 @@ forces:
             f_work,
             f_idle,
         };
-        assert!(close(p.mechanism.omega1, hand.omega, 1e-12, 0.0), "ω1 = {}", p.mechanism.omega1);
+        assert_near!(p.mechanism.omega1, hand.omega, 1e-12, "ω1");
         let kin = analysis::kinematics(&p.mechanism, &p.settings).expect("kinematics");
         let model =
             analysis::place_loads(&p.mechanism, &kin.motion, p.forces.as_ref().expect("forces")).expect("loads placed");
@@ -338,12 +340,7 @@ forces:
             let s = p.mechanism.solve(theta).expect("assembles");
             let f = kinetostatics::analyse(&p.mechanism, &s, &model).expect("solvable");
             let expected = hand.p_m(theta);
-            assert!(
-                close(f.p_m, expected, 1e-9, 1e-12),
-                "{sense}, θ = {deg}°: P_m = {} N, by hand {expected} N (Δ = {:e})",
-                f.p_m,
-                (f.p_m - expected) / expected
-            );
+            assert_near!(f.p_m, expected, Near::rel(1e-9).floor(1e-12), "{sense}, θ = {deg}°: P_m against the hand's");
         }
     }
 }

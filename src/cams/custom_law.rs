@@ -11,6 +11,7 @@
 
 use super::laws::{Derivs, Standard};
 use crate::num::digits::sig;
+use crate::num::tol;
 
 /// A law given by its acceleration analog's corners, normalised to s(1) = 1.
 #[derive(Debug, Clone, PartialEq)]
@@ -63,7 +64,7 @@ pub enum LawError {
 /// for the x's rounding (multiples of 1/8 are exact). A law that speeds up once and slows down
 /// once (its total area twice its peak velocity) is then left with at most 5·10⁻⁶ of its peak
 /// velocity at the phase's end, which the law sets to zero: nothing a sheet can show.
-const TOL: f64 = 1e-5;
+const TOL: f64 = tol::CUSTOM_LAW_AREA;
 
 impl Custom {
     /// A law from its corners (x, a); `replaces` names the built-in law it stands for.

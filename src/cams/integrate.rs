@@ -15,6 +15,7 @@
 
 use super::laws::Program;
 use super::radius::Phase;
+use crate::num::tol;
 
 /// The course's divisions of each phase (the guide's eight).
 pub const DIVISIONS: usize = 8;
@@ -89,7 +90,7 @@ impl Integrated {
         let (mut ds, mut s) = (0.0f64, 0.0f64);
         for (k, &phi) in self.phi.iter().enumerate() {
             // Just inside the phase at its end: `at` belongs to the next part there.
-            let inside = if k == n { phi - 1e-12 } else { phi };
+            let inside = if k == n { phi - tol::INSIDE_PHASE } else { phi };
             let exact = program.at(inside);
             ds = ds.max((self.ds[k] - exact.ds).abs());
             s = s.max((self.s[k] - exact.s).abs());

@@ -29,6 +29,7 @@
 //! whose appendix shows another law 5 can give it. [`Law`] is either kind.
 
 use crate::num::math::{cos, sin};
+use crate::num::tol;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -300,7 +301,7 @@ impl Program {
             return Err(ProgramError::Dwell(far_dwell.to_degrees()));
         }
         let total = rise + far_dwell + ret;
-        if total > 2.0 * PI + 1e-12 {
+        if total > 2.0 * PI + tol::ANGLE_ROUND_OFF {
             return Err(ProgramError::OverTurn(total.to_degrees()));
         }
         if !(lift.is_finite() && lift > 0.0) {

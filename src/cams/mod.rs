@@ -22,6 +22,8 @@ pub mod radius;
 pub mod size;
 
 use crate::num::math::Norm;
+use crate::num::tol;
+use crate::num::units::{metres, mm};
 use follower::Follower;
 use kurbo::Vec2;
 use laws::Program;
@@ -172,13 +174,13 @@ pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
                 return Err(CamError::Roller(r));
             }
             if r >= rho_min {
-                return Err(CamError::RollerTooLarge { r_mm: r * 1e3, rho_mm: rho_min * 1e3 });
+                return Err(CamError::RollerTooLarge { r_mm: mm(r), rho_mm: mm(rho_min) });
             }
             if r > CURVATURE_MARGIN * rho_min {
                 warnings.push(CamWarning::RollerNearCurvature { r, rho_min });
             }
             let share = r / centre.r_min;
-            if share < COURSE_SHARE.0 - 1e-9 || share > COURSE_SHARE.1 + 1e-9 {
+            if share < COURSE_SHARE.0 - tol::RANGE_EDGE || share > COURSE_SHARE.1 + tol::RANGE_EDGE {
                 warnings.push(CamWarning::RollerOutsideCourse { r, r_min: centre.r_min });
             }
             r
@@ -192,7 +194,7 @@ pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
 
 /// A radius rounded down to a whole millimetre when it is at least 2 mm, to 0.1 mm below.
 fn round_down_mm(r: f64) -> f64 {
-    let mm = r * 1e3;
-    let step = if mm >= 2.0 { 1.0 } else { 0.1 };
-    ((mm / step + 1e-9).floor() * step).max(step.min(mm)) / 1e3
+    let r_mm = mm(r);
+    let step = if r_mm >= 2.0 { 1.0 } else { 0.1 };
+    metres(((r_mm / step + tol::WHOLE_STEP).floor() * step).max(step.min(r_mm)))
 }

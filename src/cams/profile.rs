@@ -16,7 +16,8 @@ use super::laws::Program;
 use super::radius::sup;
 use crate::num::bezier::{self, Fitted};
 use crate::num::math::Norm;
-use crate::num::math::{atan2, sin_cos};
+use crate::num::math::{atan2, rotate};
+use crate::num::tol;
 use kurbo::Vec2;
 use std::f64::consts::PI;
 
@@ -40,11 +41,6 @@ fn quarter(v: Vec2) -> Vec2 {
     Vec2::new(-v.y, v.x)
 }
 
-fn rot(v: Vec2, phi: f64) -> Vec2 {
-    let (s, c) = sin_cos(phi);
-    Vec2::new(v.x * c - v.y * s, v.x * s + v.y * c)
-}
-
 /// The four parts of a turn: each is smooth, joints may have curvature jumps.
 pub fn parts(p: &Program) -> [(f64, f64); 4] {
     let (a, b, c) = (p.rise, p.rise + p.far_dwell, p.rise + p.far_dwell + p.ret);
@@ -59,7 +55,11 @@ impl Profile {
     pub fn pitch(&self, phi: f64) -> PitchPoint {
         let s = self.state(phi);
         let x = s.b - self.o;
-        PitchPoint { p: rot(x, phi), dp: rot(quarter(x) + s.db, phi), ddp: rot(-x + quarter(s.db) * 2.0 + s.ddb, phi) }
+        PitchPoint {
+            p: rotate(x, phi),
+            dp: rotate(quarter(x) + s.db, phi),
+            ddp: rotate(-x + quarter(s.db) * 2.0 + s.ddb, phi),
+        }
     }
 
     /// The pitch profile's signed curvature, 1/m (positive where it is convex).
@@ -72,7 +72,7 @@ impl Profile {
     /// (the rocker's pivot sweeps the circle of radius a_w, the translating follower's axis
     /// stays tangent to the circle of radius e).
     pub fn carried(&self, x: Vec2, phi: f64) -> Vec2 {
-        rot(x - self.o, phi)
+        rotate(x - self.o, phi)
     }
 
     /// The smallest radius of curvature over the convex parts, and its φ (a turn
@@ -101,7 +101,7 @@ impl Profile {
     /// Independent of the analog construction the centre was found with.
     pub fn pressure_angle_on_profile(&self, phi: f64) -> f64 {
         let q = self.pitch(phi);
-        let normal = rot(quarter(q.dp), -phi);
+        let normal = rotate(quarter(q.dp), -phi);
         let t = self.state(phi).t;
         let a = atan2(t.cross(normal), t.dot(normal)).abs();
         a.min(PI - a)
@@ -121,7 +121,7 @@ impl Profile {
         let exact = |phi: f64| if r == 0.0 { (self.pitch(phi).p, self.pitch(phi).dp) } else { self.working(r, phi) };
         parts(&self.program)
             .into_iter()
-            .filter(|(a, b)| b - a > 1e-12)
+            .filter(|(a, b)| b - a > tol::ANGLE_ROUND_OFF)
             .map(|(a, b)| bezier::fit_within(&exact, a, b, tol, max_pieces))
             .collect()
     }

@@ -18,17 +18,17 @@
 use super::follower::{Follower, State, pressure_angle};
 use super::laws::Program;
 use crate::num::digits::sig;
-use crate::num::math::{atan2, tan};
+use crate::num::math::{atan2, rotate, tan};
 use crate::num::roots::minimise;
+use crate::num::tol;
 use kurbo::Vec2;
 
 /// Samples of φ per phase before refinement.
 pub const SAMPLES: usize = 360;
-/// Where the searches stop: φ to 1e-11 rad (a smooth maximum's value is then exact to
-/// ~1e-22 of its curvature), the centre's column to 1e-12 m. Both stay well above the
-/// spacing of doubles near their values, which a golden section cannot shrink past.
-const PHI_TOL: f64 = 1e-11;
-const U_TOL: f64 = 1e-12;
+/// Where the searches stop: φ to [`tol::CAM_ANGLE_SEARCH`], the centre's column to
+/// [`tol::CENTRE_SEARCH`].
+const PHI_TOL: f64 = tol::CAM_ANGLE_SEARCH;
+const U_TOL: f64 = tol::CENTRE_SEARCH;
 
 /// The allowed pressure angles, radians, each in (0, 90°).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -141,7 +141,7 @@ impl Region {
                 let half = program.lift / 2.0;
                 let smallest = allowed.rise.min(allowed.ret);
                 // d must lie strictly inside every wedge: the motion turns by the swing.
-                if half >= smallest * (1.0 - 1e-9) {
+                if half >= smallest * (1.0 - tol::STRICTLY_INSIDE) {
                     return Err(RadiusError::SwingTooLarge {
                         swing_deg: program.lift.to_degrees(),
                         allowed_deg: smallest.to_degrees(),
@@ -216,9 +216,14 @@ impl Region {
             (Placement::Offset(e), Follower::Translating) => e,
             (Placement::Free, _) => {
                 // |u*| ≤ r_min ≤ W(0): the column through B₀ bounds the search.
-                let bound = self.floor(0.0).max(0.0) * (1.0 + 1e-9) + 1e-12;
-                let m = minimise(|u| Ok::<_, ()>(column(u).0), -bound, bound, U_TOL.max(bound * 1e-14))
-                    .unwrap_or_else(|_| unreachable!("the column never fails"));
+                let bound = self.floor(0.0).max(0.0) * (1.0 + tol::BRACKET_MARGIN) + tol::CENTRE_SEARCH;
+                let m = minimise(
+                    |u| Ok::<_, ()>(column(u).0),
+                    -bound,
+                    bound,
+                    U_TOL.max(bound * tol::CENTRE_SEARCH_RELATIVE),
+                )
+                .unwrap_or_else(|_| unreachable!("the column never fails"));
                 m.x
             }
         };
@@ -257,11 +262,6 @@ impl Region {
 /// +1 when `across` is `d` turned counter-clockwise, −1 otherwise.
 fn orientation(across: Vec2, d: Vec2) -> f64 {
     if d.cross(across) > 0.0 { 1.0 } else { -1.0 }
-}
-
-fn rotate(v: Vec2, a: f64) -> Vec2 {
-    let (s, c) = crate::num::math::sin_cos(a);
-    Vec2::new(v.x * c - v.y * s, v.x * s + v.y * c)
 }
 
 /// The maximum of `f` on [a, b]: sampled, then each sampled local maximum refined between

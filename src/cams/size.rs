@@ -27,6 +27,7 @@ use super::laws::{Law, Program};
 use super::radius::{Allowed, Phase, Placement};
 use crate::num::digits::sig;
 use crate::num::math::{sin, tan};
+use crate::num::tol;
 
 /// The largest distance from the cam centre of anything the sheet draws, metres: at GOST's
 /// smallest scale, 1:10 000, a cam this size is 200 mm across on paper.
@@ -135,7 +136,7 @@ fn smallest_side_angle(follower: Follower, program: &Program, allowed: Allowed) 
         Follower::Rocker { .. } => program.lift / 2.0,
     };
     let ok = |a: f64| a > 0.0 && a < std::f64::consts::FRAC_PI_2;
-    (ok(allowed.rise) && ok(allowed.ret) && half < smallest * (1.0 - 1e-9)).then_some(smallest - half)
+    (ok(allowed.rise) && ok(allowed.ret) && half < smallest * (1.0 - tol::STRICTLY_INSIDE)).then_some(smallest - half)
 }
 
 /// A phase's law and angle, radians.

@@ -33,6 +33,37 @@ impl Language {
     }
 }
 
+/// A label set declared with [`crate::label_set!`]: the set for a language, loaded once.
+pub trait LabelSet: 'static {
+    fn get(lang: Language) -> &'static Self;
+}
+
+/// A sheet's language with the words every sheet shares and the sheet's own: what a function
+/// that writes a word, a unit or a number needs, passed as one reference rather than three
+/// parameters.
+#[derive(Debug)]
+pub struct Wording<S: 'static> {
+    pub lang: Language,
+    /// Units, table corners, the title block.
+    pub common: &'static Common,
+    /// The sheet's own label set.
+    pub sheet: &'static S,
+}
+
+impl<S: LabelSet> Wording<S> {
+    pub fn new(lang: Language) -> Wording<S> {
+        Wording { lang, common: Common::get(lang), sheet: S::get(lang) }
+    }
+}
+
+impl<S: 'static> Clone for Wording<S> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<S: 'static> Copy for Wording<S> {}
+
 /// One label in the three languages, as written in a template.
 #[derive(Debug, Clone, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -159,6 +190,12 @@ macro_rules! label_set {
             }
 
             $($crate::label_set!(@accessor $key $(($($param),+))?);)+
+        }
+
+        impl $crate::drawing::labels::LabelSet for $name {
+            fn get(lang: $crate::drawing::labels::Language) -> &'static $name {
+                $name::get(lang)
+            }
         }
     };
     (@accessor $key:ident) => {

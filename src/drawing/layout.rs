@@ -4,6 +4,7 @@
 
 use super::obstacles::{Obstacles, Piece, segment_meets_rect};
 use super::scene::{Item, Scene};
+use crate::num::tol;
 use kurbo::Rect;
 
 /// A text's box is shrunk by this much before testing: a line touching the letters' box
@@ -69,7 +70,7 @@ pub fn measure(scene: &Scene) -> Layout {
         for (p, other) in boxes.near(r) {
             let (og, o) = texts[*other];
             let Piece::TextBox(ob) = *p else { continue };
-            if *other > k && ob.intersect(r).area() > 1e-6 && seen.insert((k, *other)) {
+            if *other > k && ob.intersect(r).area() > tol::TEXT_OVERLAP_AREA && seen.insert((k, *other)) {
                 out.text_overlaps += 1;
                 out.note(format!(
                     "'{group}': {:?} overlaps {:?} ('{og}') at ({:.1}, {:.1}) mm",

@@ -6,10 +6,8 @@
 //! is made (a trajectory's fit, an arc never: arcs are exact).
 
 use crate::num::math;
+use crate::num::tol;
 use kurbo::{Arc, BezPath, CubicBez, Point, Rect, Shape};
-
-/// How far the Bézier form of an arc may stray from the arc for measuring (mm).
-pub const ARC_MEASURE_ACCURACY: f64 = 1e-4;
 
 /// One piece of a path, starting where the previous one ends.
 #[derive(Debug, Clone, PartialEq)]
@@ -68,7 +66,7 @@ impl Path {
         }
     }
 
-    /// The path as kurbo Béziers (arcs within [`ARC_MEASURE_ACCURACY`]), for measuring.
+    /// The path as kurbo Béziers (arcs within [`tol::ARC_MEASURE`]), for measuring.
     pub fn to_bez(&self) -> BezPath {
         let mut b = BezPath::new();
         b.move_to(self.start);
@@ -76,7 +74,7 @@ impl Path {
             match s {
                 Seg::Line(p) => b.line_to(*p),
                 Seg::Cubic(p1, p2, p3) => b.curve_to(*p1, *p2, *p3),
-                Seg::Arc(a) => a.append_iter(ARC_MEASURE_ACCURACY).for_each(|el| b.push(el)),
+                Seg::Arc(a) => a.append_iter(tol::ARC_MEASURE).for_each(|el| b.push(el)),
             }
         }
         if self.closed {

@@ -247,7 +247,7 @@ fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
             // 0, +1, −1, +2, −2, …: alternate sides of the preferred direction.
             let step = k.div_ceil(2) as f64 * if k % 2 == 1 { 1.0 } else { -1.0 };
             let turn = step * 360.0 / DIRECTIONS as f64;
-            let d = rotate(base, turn);
+            let d = math::rotate(base, turn.to_radians());
             // The box's nearest point stands `dist` from the anchor along `d` (a superellipse
             // around the anchor: boxes beside, above and diagonal all keep the gap).
             let centre = req.anchor + Vec2::new(d.x * (w / 2.0 + dist), d.y * (ht / 2.0 + dist));
@@ -270,11 +270,6 @@ fn leader(anchor: Point, r: Rect, gap: f64) -> (Point, Point) {
     let d = end - anchor;
     let start = anchor + d.unit() * gap.min(d.norm() / 2.0);
     (start, end)
-}
-
-fn rotate(v: Vec2, deg: f64) -> Vec2 {
-    let (s, c) = math::sin_cos(deg.to_radians());
-    Vec2::new(c * v.x - s * v.y, s * v.x + c * v.y)
 }
 
 #[cfg(test)]

@@ -3,6 +3,7 @@
 
 use crate::num::math;
 use crate::num::tol;
+use crate::num::units::mm;
 
 const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
 
@@ -43,7 +44,11 @@ pub fn next_round(mu: f64) -> f64 {
 
 /// The largest value of the round series below `mu`.
 pub fn previous_round(mu: f64) -> f64 {
-    [0.5, 0.625, 0.8].iter().map(|f| round_up(mu * f)).filter(|&m| m < mu * (1.0 - 1e-9)).fold(mu * 0.5, f64::max)
+    [0.5, 0.625, 0.8]
+        .iter()
+        .map(|f| round_up(mu * f))
+        .filter(|&m| m < mu * (1.0 - tol::SAME_SCALE))
+        .fold(mu * 0.5, f64::max)
 }
 
 /// Every GOST 2.302 μ_l (m/mm), the largest drawing first.
@@ -80,7 +85,7 @@ pub fn format(mu: f64) -> String {
 
 /// A length scale μ_l (m/mm) as a GOST 2.302 ratio: 0.005 m/mm is 1:5, 0.0005 m/mm is 2:1.
 pub fn ratio(mu_l: f64) -> String {
-    let k = mu_l * 1000.0; // real millimetres per paper millimetre
+    let k = mm(mu_l); // real millimetres per paper millimetre
     if k >= EXACT { format!("1:{}", format(k)) } else { format!("{}:1", format(1.0 / k)) }
 }
 

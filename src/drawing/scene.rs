@@ -5,7 +5,7 @@
 
 pub use super::path::{Path, Seg};
 use crate::num::math;
-use kurbo::{Point, Rect, Vec2};
+use kurbo::{Point, Rect};
 
 /// GOST 2.303 line types.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -172,11 +172,7 @@ fn run_width(r: Run) -> f64 {
 }
 
 fn rotated_bbox(r: Rect, about: Point, deg: f64) -> Rect {
-    let (s, c) = math::sin_cos(-deg.to_radians());
-    let rot = |p: Point| {
-        let d = p - about;
-        about + Vec2::new(c * d.x - s * d.y, s * d.x + c * d.y)
-    };
+    let rot = |p: Point| about + math::rotate(p - about, -deg.to_radians());
     let pts = [r.origin(), Point::new(r.x1, r.y0), Point::new(r.x1, r.y1), Point::new(r.x0, r.y1)].map(rot);
     pts.iter().skip(1).fold(Rect::from_points(pts[0], pts[0]), |acc, &p| acc.union_pt(p))
 }

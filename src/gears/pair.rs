@@ -7,6 +7,7 @@
 //! radial clearance stays c*·m.
 
 use crate::num::math::{acos, cbrt, cos, sin, tan};
+use crate::num::units::mm;
 use std::f64::consts::PI;
 
 /// The involute function inv α = tan α − α.
@@ -185,7 +186,7 @@ impl Pair {
         let wheels = [wheel(0), wheel(1)];
         for (i, w) in wheels.iter().enumerate() {
             if w.tip_thickness <= 0.0 {
-                return Err(PairError::Pointed { wheel: i + 1, s_a_mm: w.tip_thickness * 1e3, x: w.shift });
+                return Err(PairError::Pointed { wheel: i + 1, s_a_mm: mm(w.tip_thickness), x: w.shift });
             }
         }
         let line = a_w * sin(alpha_w);

@@ -9,7 +9,8 @@
 //! involute: the outline then takes the involute down to their crossing only (undercut).
 
 use super::pair::{PairSpec, Wheel, inv};
-use crate::num::math::{Norm, acos, atan2, cos, from_angle, sin, tan};
+use crate::num::math::{Norm, acos, atan2, cos, from_angle, rotate, sin, tan};
+use crate::num::tol;
 use kurbo::Vec2;
 use std::f64::consts::PI;
 
@@ -54,11 +55,6 @@ pub struct Outline {
 /// A point of a curve and its derivative with respect to the curve's parameter.
 pub type PointTangent = (Vec2, Vec2);
 
-fn rot(v: Vec2, a: f64) -> Vec2 {
-    let (s, c) = (sin(a), cos(a));
-    Vec2::new(c * v.x - s * v.y, s * v.x + c * v.y)
-}
-
 fn perp(v: Vec2) -> Vec2 {
     Vec2::new(-v.y, v.x)
 }
@@ -89,7 +85,7 @@ impl Rack {
     fn in_wheel_frame(&self, phi: f64, (f, df): PointTangent) -> PointTangent {
         let w = Vec2::new(f.x - self.r * phi, f.y + self.r);
         let dw = df - Vec2::new(self.r, 0.0);
-        (rot(w, -phi), rot(dw - perp(w), -phi))
+        (rotate(w, -phi), rotate(dw - perp(w), -phi))
     }
 }
 
@@ -136,7 +132,7 @@ impl Outline {
     /// The upper flank's fillet at rack parameter φ, and d/dφ.
     pub fn fillet(&self, phi: f64) -> PointTangent {
         let (p, d) = self.rack.in_wheel_frame(phi, self.rack.fillet_rack(phi));
-        (rot(p, self.turn), rot(d, self.turn))
+        (rotate(p, self.turn), rotate(d, self.turn))
     }
 
     /// The involute's polar angle at radius `r` ≥ r_b.
@@ -180,7 +176,7 @@ impl Outline {
                     } else {
                         b = mid;
                     }
-                    if (b - a).abs() <= f64::EPSILON * a.abs().max(1e-300) {
+                    if (b - a).abs() <= tol::LAST_BIT * a.abs().max(tol::LAST_BIT_FLOOR) {
                         break;
                     }
                 }
@@ -301,7 +297,7 @@ mod tests {
             for k in 0..=n {
                 let phi = -1.2 + 2.4 * f64::from(k) / f64::from(n);
                 for &pt in &pts {
-                    let q = rot(rot(Vec2::new(pt.x - rack.r * phi, pt.y + rack.r), -phi), o.turn);
+                    let q = rotate(rotate(Vec2::new(pt.x - rack.r * phi, pt.y + rack.r), -phi), o.turn);
                     let r = q.norm();
                     if r < r_lo || r >= r_hi {
                         continue;

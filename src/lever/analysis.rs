@@ -14,10 +14,8 @@ use std::f64::consts::TAU;
 /// Samples per turn of the centre-of-mass trajectories in `results.json` (1° steps).
 pub const TRAJECTORY_SAMPLES: usize = 360;
 
-/// How closely the drawn trajectories follow the exact paths, relative to the extent of the
-/// mechanism's motion: on a sheet, where that extent is at most ~450 mm, 10⁻⁵ of it is at
-/// most 0.0045 mm (the sheet states the measured value).
-pub const TRAJECTORY_FIT: f64 = 1e-5;
+/// How closely the drawn trajectories follow the exact paths ([`tol::TRAJECTORY_FIT`]).
+pub use crate::num::tol::TRAJECTORY_FIT;
 
 /// A centre of mass's path over a turn.
 #[derive(Debug, Clone, PartialEq)]

@@ -275,7 +275,8 @@ impl Mechanism {
                     Some(k) => d * k,
                     None => d * (distance / d.hypot2().sqrt()),
                 };
-                let r = along.rotate(angle);
+                // A point on the line of the joints stays exactly on it.
+                let r = if angle == 0.0 { along } else { math::rotate(along, angle) };
                 let lk = s.links[link];
                 s.points[point] = Kin {
                     p: base.p + r,
@@ -324,20 +325,5 @@ impl Mechanism {
             Output::Slider { point, dir } => (s.points[point].p.dot(dir), s.points[point].v.dot(dir)),
             Output::Rocker { link } => (s.links[link].angle(), s.links[link].omega),
         }
-    }
-}
-
-/// Rotation of a vector by `angle` radians (counter-clockwise).
-trait Rotate {
-    fn rotate(self, angle: f64) -> Self;
-}
-
-impl Rotate for Vec2 {
-    fn rotate(self, angle: f64) -> Self {
-        if angle == 0.0 {
-            return self;
-        }
-        let (s, c) = math::sin_cos(angle);
-        Vec2::new(c * self.x - s * self.y, s * self.x + c * self.y)
     }
 }

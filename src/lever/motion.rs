@@ -12,6 +12,7 @@ use crate::num::digits::fixed;
 use crate::num::math::{self, Norm};
 use crate::num::roots::{self, RootError};
 use crate::num::tol;
+use crate::num::tol::ANGLE_RESOLUTION;
 use kurbo::Vec2;
 use std::convert::Infallible;
 use std::f64::consts::TAU;
@@ -20,9 +21,6 @@ use std::f64::consts::TAU;
 /// lock-up window narrower than a step is found by minimising each group's reach margin
 /// around its sampled minima ([`analyse_motion`]).
 const SCAN_SAMPLES: usize = 720;
-
-/// Resolution of the angles found by search, rad.
-const ANGLE_RESOLUTION: f64 = 1e-12;
 
 /// Which extreme of the output coordinate is position 0.
 #[derive(Debug, Clone, Copy, PartialEq)]

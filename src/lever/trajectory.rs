@@ -5,6 +5,7 @@
 use super::linkage::{Mechanism, PointId};
 use super::motion::{self, Motion, MotionError};
 use crate::num::math::Norm;
+use crate::num::tol;
 use kurbo::{CubicBez, ParamCurve, Point, Vec2};
 use std::f64::consts::TAU;
 
@@ -91,5 +92,5 @@ fn piece(
 /// The point of a cubic nearest to `p` and its distance (for checking a fit densely).
 pub fn distance_to(cubics: &[CubicBez], p: Point) -> f64 {
     use kurbo::ParamCurveNearest;
-    cubics.iter().map(|c| c.nearest(p, 1e-12).distance_sq).fold(f64::INFINITY, f64::min).sqrt()
+    cubics.iter().map(|c| c.nearest(p, tol::NEAREST).distance_sq).fold(f64::INFINITY, f64::min).sqrt()
 }

@@ -7,6 +7,7 @@
 //! assumed: the largest distance from densely sampled exact points to the nearest point of
 //! the pieces.
 
+use super::tol;
 use kurbo::{CubicBez, ParamCurveNearest, Point, Vec2};
 
 /// The exact curve: its point and derivative at a parameter.
@@ -43,7 +44,7 @@ fn piece(exact: &impl Exact, a: f64, b: f64) -> CubicBez {
     let mut c = build(lengths(p0, p3, t0, t1, &samples, &us));
     for _ in 0..REFITS {
         for (u, s) in us.iter_mut().zip(&samples) {
-            *u = c.nearest(s.to_point(), 1e-12).t;
+            *u = c.nearest(s.to_point(), tol::NEAREST).t;
         }
         c = build(lengths(p0, p3, t0, t1, &samples, &us));
     }
@@ -72,12 +73,12 @@ fn lengths(p0: Vec2, p3: Vec2, t0: Vec2, t1: Vec2, samples: &[Vec2], us: &[f64])
     let det = m00 * m11 - m01 * m01;
     let scale = m00.max(m11).max(f64::MIN_POSITIVE);
     let third = 1.0 / 3.0;
-    let (alpha, beta) = if det > 1e-12 * scale * scale {
+    let (alpha, beta) = if det > tol::SINGULAR * scale * scale {
         ((r0 * m11 - r1 * m01) / det, (m00 * r1 - m01 * r0) / det)
-    } else if m11 > 1e-12 * scale {
+    } else if m11 > tol::SINGULAR * scale {
         // A zero tangent at the start (the involute's cusp): only β is free.
         (third, r1 / m11)
-    } else if m00 > 1e-12 * scale {
+    } else if m00 > tol::SINGULAR * scale {
         (r0 / m00, third)
     } else {
         (third, third)
@@ -100,7 +101,7 @@ pub fn deviation(exact: &impl Exact, a: f64, b: f64, cubics: &[CubicBez]) -> f64
 
 /// The distance from `p` to the nearest point of the pieces.
 pub fn nearest(cubics: &[CubicBez], p: Point) -> f64 {
-    cubics.iter().map(|c| c.nearest(p, 1e-13).distance_sq).fold(f64::INFINITY, f64::min).sqrt()
+    cubics.iter().map(|c| c.nearest(p, tol::NEAREST_MEASURE).distance_sq).fold(f64::INFINITY, f64::min).sqrt()
 }
 
 /// A fit and its measured deviation.

@@ -2,18 +2,13 @@
 //! recomputed from others (J_S = 0.001800 and ε = 4467 give M = 8.040, where three fixed
 //! decimals printed J_S = 0.002 and M = 8.93).
 
-use super::math;
-
-/// Magnitudes below this print as 0: round-off of a quantity that is zero (a velocity at
-/// an extreme position, Δ of two exact computations). The course's smallest real values
-/// (moments of inertia of 10⁻⁴ kg·m²) are far above it.
-pub const NOISE: f64 = 1e-7;
+use super::{math, tol};
 
 /// `x` with four significant digits and at most nine decimals, a point and a hyphen-minus.
 pub fn significant(x: f64) -> String {
     let a = x.abs();
     // Also catches NaN, which never reaches an output (the writers refuse it).
-    if a.is_nan() || a < NOISE {
+    if a.is_nan() || a < tol::PRINTED_ZERO {
         return "0".into();
     }
     let magnitude = math::log10(a).floor() as i32;

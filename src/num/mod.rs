@@ -1,10 +1,15 @@
 //! Numerical ground rules shared by every domain: the limits of accepted input, named
-//! tolerances with their units, the one root finder, and the mathematical functions whose
-//! results reach an output (platform-independent).
+//! tolerances with their units (and [`Near`] with `assert_near!` for the tests), the one
+//! root finder, and the mathematical functions whose results reach an output
+//! (platform-independent).
 
 pub mod bezier;
 pub mod digits;
 pub mod limits;
 pub mod math;
+pub mod near;
 pub mod roots;
 pub mod tol;
+pub mod units;
+
+pub use near::Near;

@@ -4,14 +4,14 @@
 use super::{Column, NumTable, Row, Sub, SubWord, Unit};
 use crate::cams::Design;
 use crate::cams::follower::Follower;
-
-const MM: f64 = 1e3;
+use crate::num::tol;
+use crate::num::units::mm;
 
 /// The lift's unit as the tables write it: mm for a translating follower (as its drawing is
 /// measured), ° for a rocker.
 fn lift(d: &Design, x: f64) -> f64 {
     match d.spec.follower {
-        Follower::Translating => x * MM,
+        Follower::Translating => mm(x),
         Follower::Rocker { .. } => x.to_degrees(),
     }
 }
@@ -19,7 +19,7 @@ fn lift(d: &Design, x: f64) -> f64 {
 /// The analogs' unit: mm for a translating follower, none for a rocker (radians per radian).
 fn analog(d: &Design, x: f64) -> f64 {
     match d.spec.follower {
-        Follower::Translating => x * MM,
+        Follower::Translating => mm(x),
         Follower::Rocker { .. } => x,
     }
 }
@@ -41,9 +41,9 @@ pub fn law(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable
     // acceleration jumps the table gives the phase's own value.
     let at = |phi: f64, k: usize| {
         p.at(if k + 1 == phis.len() {
-            phi - 1e-12
+            phi - tol::INSIDE_PHASE
         } else if k == 0 {
-            phi + 1e-12
+            phi + tol::INSIDE_PHASE
         } else {
             phi
         })
@@ -76,11 +76,11 @@ pub fn profile(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumT
     let (pitch, work) = (|| Sub::Word(SubWord::Pitch), || Sub::Word(SubWord::Work));
     let mut rows = vec![
         plain("φ", Unit::Deg, col(&|phi| phi.to_degrees())),
-        Row::new("r", pitch(), Unit::Mm, col(&|phi| polar(phi, false).0 * MM)),
+        Row::new("r", pitch(), Unit::Mm, col(&|phi| mm(polar(phi, false).0))),
         Row::new("θ", pitch(), Unit::Deg, col(&|phi| polar(phi, false).1.to_degrees())),
     ];
     if d.roller > 0.0 {
-        rows.push(Row::new("r", work(), Unit::Mm, col(&|phi| polar(phi, true).0 * MM)));
+        rows.push(Row::new("r", work(), Unit::Mm, col(&|phi| mm(polar(phi, true).0))));
         rows.push(Row::new("θ", work(), Unit::Deg, col(&|phi| polar(phi, true).1.to_degrees())));
     }
     NumTable { id, columns: positions(first, phis.len()), rows }
@@ -93,22 +93,22 @@ pub fn results(d: &Design, errors: (f64, f64)) -> NumTable {
     let one = |x: f64| vec![x];
     let name = |symbol: &'static str, sub: &str, unit: Unit, x: f64| Row::new(symbol, Sub::name(sub), unit, one(x));
     let word = |symbol: &'static str, w: SubWord, unit: Unit, x: f64| Row::new(symbol, Sub::Word(w), unit, one(x));
-    let mut rows: Vec<Row> = vec![name("r", "min", Unit::Mm, d.centre.r_min * MM)];
+    let mut rows: Vec<Row> = vec![name("r", "min", Unit::Mm, mm(d.centre.r_min))];
     if let Some(e) = d.offset() {
-        rows.push(plain("e", Unit::Mm, one(e * MM)));
+        rows.push(plain("e", Unit::Mm, one(mm(e))));
     }
     if let Follower::Rocker { length } = d.spec.follower {
-        rows.push(plain("l", Unit::Mm, one(length * MM)));
+        rows.push(plain("l", Unit::Mm, one(mm(length))));
         rows.push(name("β", "max", Unit::Deg, d.spec.program.lift.to_degrees()));
     }
     if let (Some(a), Some(psi)) = (d.centre_distance(), d.rocker_start()) {
-        rows.push(name("a", "w", Unit::Mm, a * MM));
+        rows.push(name("a", "w", Unit::Mm, mm(a)));
         rows.push(name("ψ", "0", Unit::Deg, psi.to_degrees()));
     }
     if d.roller > 0.0 {
-        rows.push(word("r", SubWord::Roller, Unit::Mm, d.roller * MM));
+        rows.push(word("r", SubWord::Roller, Unit::Mm, mm(d.roller)));
     }
-    rows.push(name("ρ", "min", Unit::Mm, d.rho_min * MM));
+    rows.push(name("ρ", "min", Unit::Mm, mm(d.rho_min)));
     rows.push(word("α", SubWord::AllowedRise, Unit::Deg, d.spec.allowed.rise.to_degrees()));
     rows.push(word("α", SubWord::MaxRise, Unit::Deg, d.max_pressure[0].0.to_degrees()));
     rows.push(word("α", SubWord::AllowedReturn, Unit::Deg, d.spec.allowed.ret.to_degrees()));

@@ -4,9 +4,7 @@
 use super::{Column, NumTable, Row, Sub, SubWord, Unit};
 use crate::gears::pair::Pair;
 use crate::gears::planetary::Stage;
-
-/// Millimetres per metre: the gear tables are in mm.
-const MM: f64 = 1e3;
+use crate::num::units::mm;
 
 fn named(symbol: &'static str, sub: &str, unit: Unit, values: Vec<f64>) -> Row {
     Row::new(symbol, if sub.is_empty() { Sub::None } else { Sub::name(sub) }, unit, values)
@@ -23,13 +21,13 @@ pub fn wheels(p: &Pair) -> NumTable {
             named("z", "", Unit::None, col(&|i| f64::from(w[i].z))).counted(),
             named("x", "", Unit::None, col(&|i| w[i].shift)),
             named("x", "min", Unit::None, col(&|i| w[i].x_min)),
-            named("r", "", Unit::Mm, col(&|i| w[i].pitch * MM)),
-            named("r", "b", Unit::Mm, col(&|i| w[i].base * MM)),
-            named("r", "a", Unit::Mm, col(&|i| w[i].tip * MM)),
-            named("r", "f", Unit::Mm, col(&|i| w[i].root * MM)),
-            named("r", "w", Unit::Mm, col(&|i| w[i].working * MM)),
-            named("s", "", Unit::Mm, col(&|i| w[i].tooth_thickness * MM)),
-            named("s", "a", Unit::Mm, col(&|i| w[i].tip_thickness * MM)),
+            named("r", "", Unit::Mm, col(&|i| mm(w[i].pitch))),
+            named("r", "b", Unit::Mm, col(&|i| mm(w[i].base))),
+            named("r", "a", Unit::Mm, col(&|i| mm(w[i].tip))),
+            named("r", "f", Unit::Mm, col(&|i| mm(w[i].root))),
+            named("r", "w", Unit::Mm, col(&|i| mm(w[i].working))),
+            named("s", "", Unit::Mm, col(&|i| mm(w[i].tooth_thickness))),
+            named("s", "a", Unit::Mm, col(&|i| mm(w[i].tip_thickness))),
         ],
     }
 }
@@ -41,20 +39,20 @@ pub fn pair(p: &Pair, eps_drawn: f64) -> NumTable {
     NumTable::single(
         "pair",
         vec![
-            named("m", "", Unit::Mm, one(s.module * MM)),
+            named("m", "", Unit::Mm, one(mm(s.module))),
             named("α", "", Unit::Deg, one(s.pressure_angle.to_degrees())),
             named("h", "a*", Unit::None, one(s.addendum)).keyed("h_a_star"),
             named("c*", "", Unit::None, one(s.clearance)).keyed("c_star"),
             named("u", "12", Unit::None, one(p.ratio)),
             named("α", "w", Unit::Deg, one(p.working_pressure_angle.to_degrees())),
-            named("a", "", Unit::Mm, one(p.reference_centre_distance * MM)),
-            named("a", "w", Unit::Mm, one(p.centre_distance * MM)),
+            named("a", "", Unit::Mm, one(mm(p.reference_centre_distance))),
+            named("a", "w", Unit::Mm, one(mm(p.centre_distance))),
             named("y", "", Unit::None, one(p.y)),
             named("Δy", "", Unit::None, one(p.delta_y)).keyed("delta_y"),
-            named("h", "", Unit::Mm, one(p.tooth_height * MM)),
-            named("p", "", Unit::Mm, one(p.pitch * MM)),
-            named("p", "b", Unit::Mm, one(p.base_pitch * MM)),
-            named("g", "α", Unit::Mm, one(p.active_length * MM)),
+            named("h", "", Unit::Mm, one(mm(p.tooth_height))),
+            named("p", "", Unit::Mm, one(mm(p.pitch))),
+            named("p", "b", Unit::Mm, one(mm(p.base_pitch))),
+            named("g", "α", Unit::Mm, one(mm(p.active_length))),
             named("ε", "", Unit::None, one(p.contact_ratio)),
             Row::new("ε", Sub::Word(SubWord::Drawn), Unit::None, one(eps_drawn)),
         ],
@@ -64,13 +62,13 @@ pub fn pair(p: &Pair, eps_drawn: f64) -> NumTable {
 /// The planetary stage: tooth numbers, planets, ratios, pitch radii and the carrier's radius.
 pub fn stage(s: &Stage, module: f64) -> NumTable {
     let names: &[&str] = if s.z.len() == 4 { &["1", "2", "2′", "3"] } else { &["1", "2", "3"] };
-    let mut rows = vec![named("m", "", Unit::Mm, vec![module * MM])];
+    let mut rows = vec![named("m", "", Unit::Mm, vec![mm(module)])];
     rows.extend(names.iter().zip(&s.z).map(|(n, &z)| named("z", n, Unit::None, vec![f64::from(z)]).counted()));
     rows.push(named("K", "", Unit::None, vec![f64::from(s.planets)]).counted());
     rows.push(named("u", "1H", Unit::None, vec![s.ratio]));
     rows.push(Row::new("u", Sub::Word(SubWord::Required), Unit::None, vec![s.ratio_required]));
-    rows.extend(names.iter().zip(&s.z).map(|(n, &z)| named("r", n, Unit::Mm, vec![module * f64::from(z) / 2.0 * MM])));
-    rows.push(named("a", "H", Unit::Mm, vec![module * f64::from(s.z[0] + s.z[1]) / 2.0 * MM]));
+    rows.extend(names.iter().zip(&s.z).map(|(n, &z)| named("r", n, Unit::Mm, vec![mm(module * f64::from(z) / 2.0)])));
+    rows.push(named("a", "H", Unit::Mm, vec![mm(module * f64::from(s.z[0] + s.z[1]) / 2.0)]));
     NumTable::single("planetary", rows)
 }
 

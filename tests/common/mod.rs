@@ -53,11 +53,6 @@ pub fn build_lever(p: &Project) -> LeverBuild {
     lever::build(&ctx, p.lever.as_ref().expect("a mechanism section")).unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// Relative closeness with an absolute floor.
-pub fn close(a: f64, b: f64, rel: f64, floor: f64) -> bool {
-    (a - b).abs() <= rel * a.abs().max(b.abs()) + floor
-}
-
 /// Latin words a Russian sheet must not show: a run of two or more Latin letters with a
 /// lowercase one ("mm", "working"), or a unit "N"/"m"/"s"/"kg" after a number or a comma
 /// ("0,5 N", "P, N"). Symbols and plan letters ("m", "p=b=s3"), min/max and a derivative's

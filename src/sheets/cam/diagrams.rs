@@ -4,19 +4,21 @@
 //! (thick), each with its pole at H to the left of its origin and the rays to the mid-ordinates,
 //! the exact curves thin over them. Every scale is written to the left of its graph.
 
-use super::labels::CamLabels;
+use super::labels::CamWords;
 use crate::cams::Design;
 use crate::cams::follower::Follower;
 use crate::cams::integrate::Integrated;
 use crate::cams::laws::Program;
 use crate::drawing::fmt;
-use crate::drawing::labels::{Common, Language};
+use crate::drawing::labels::Language;
 use crate::drawing::place::Labels;
 use crate::drawing::plot::{Axis, Plot, round_ticks};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::dimension;
 use crate::drawing::text::LabelText;
+use crate::num::tol;
+use crate::num::units;
 use kurbo::{Point, Rect, Vec2};
 use std::f64::consts::PI;
 
@@ -120,131 +122,182 @@ const GAP: f64 = 14.0;
 
 /// Draws the three diagrams of `plan` from the top left of `area`; the poles take the room
 /// at its left.
-#[allow(clippy::too_many_arguments)]
 pub fn draw(
     g: &mut Group,
     area: Rect,
     plan: &Plan,
     d: &Design,
     integrated: &[Integrated; 2],
-    l: &CamLabels,
-    c: &Common,
-    lang: Language,
+    words: &CamWords,
 ) -> Drawn {
     let sc = plan.scales;
     let p = &d.spec.program;
-    let work = p.rise + p.far_dwell + p.ret;
-    let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
     let (vmax, amax) = peaks(d);
-    // Room left of the poles for their names.
-    let x0 = area.x0 + sc.h1.max(sc.h2) + POLE_NAME;
-    let x_axis = || Axis {
-        lo: 0.0,
-        hi: work.to_degrees(),
-        mu: sc.mu_phi_deg,
-        name: "φ".into(),
-        ticks: division_ticks(integrated),
+    let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
+    let names = if rocker { ["β", "dβ/dφ", "d²β/dφ²"] } else { ["s", "ds/dφ", "d²s/dφ²"] };
+    let stack = Stack {
+        sc,
+        p,
+        integrated,
+        // Room left of the poles for their names.
+        x0: area.x0 + sc.h1.max(sc.h2) + POLE_NAME,
+        left: area.x0,
+        work: p.rise + p.far_dwell + p.ret,
+        peaks: (vmax, amax),
+        rocker,
+        names,
+        words,
     };
-    let (s_name, v_name, a_name) =
-        if rocker { ("β", "dβ/dφ", "d²β/dφ²") } else { ("s", "ds/dφ", "d²s/dφ²") };
-    let exact = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
+    let mut labels = Labels::new();
+    let top = stack.displacement(g, &mut labels, area.y0);
+    let top = stack.velocity(g, top);
+    let bottom = stack.acceleration(g, top);
+    labels.place(g, area);
+    Drawn { scales: sc, bottom }
+}
+
+/// What the three stacked diagrams share: the scales, the law, the integration, the x of
+/// their origins and of the scales' texts, the working angle, the peaks of ds/dφ and
+/// d²s/dφ², and the names of the quantities (β for a rocker).
+struct Stack<'a> {
+    sc: Scales,
+    p: &'a Program,
+    integrated: &'a [Integrated; 2],
+    x0: f64,
+    left: f64,
+    work: f64,
+    peaks: (f64, f64),
+    rocker: bool,
+    names: [&'static str; 3],
+    words: &'a CamWords,
+}
+
+impl Stack<'_> {
+    fn x_axis(&self) -> Axis {
+        Axis {
+            lo: 0.0,
+            hi: self.work.to_degrees(),
+            mu: self.sc.mu_phi_deg,
+            name: "φ".into(),
+            ticks: division_ticks(self.integrated),
+        }
+    }
+
+    /// An exact curve over the working angle, four points a degree.
+    fn exact(&self, f: &dyn Fn(f64) -> f64) -> Vec<(f64, f64)> {
+        let work = self.work;
         let n = (work.to_degrees() * 4.0).ceil() as usize;
         (0..=n)
             .map(|k| {
                 // Just inside the working angle at its end, where `at` belongs to the near dwell.
-                let phi = (work * k as f64 / n as f64).min(work - 1e-12);
+                let phi = (work * k as f64 / n as f64).min(work - tol::INSIDE_PHASE);
                 (phi.to_degrees(), f(phi))
             })
             .collect()
-    };
-    // A translating follower's scales are all m/mm; a rocker's analogs have no unit.
-    let unit = if rocker { l.unit_per_mm() } else { c.unit_m_per_mm() };
-    let mut top = area.y0;
-
-    // s(φ): the lift above the axis.
-    let s_plot = Plot {
-        origin: Point::new(x0, top + GAP + p.lift / sc.mu_s),
-        x: x_axis(),
-        y: Axis {
-            lo: 0.0,
-            hi: p.lift,
-            mu: sc.mu_s,
-            name: format!("{s_name}, {}", if rocker { l.unit_deg() } else { c.unit_mm() }),
-            ticks: lift_ticks(p.lift, sc.mu_s, rocker, lang),
-        },
-    };
-    s_plot.draw_axes(g);
-    let mut labels = Labels::new();
-    s_plot.line(g, &exact(&|phi| p.at(phi).s), THIN);
-    s_plot.line(g, &integrated_curve(integrated, |i| &i.s), MAIN);
-    number_divisions(&s_plot, integrated, &mut labels);
-    phase_dimensions(g, &s_plot, p, &mut labels, l, lang);
-    let s_top = Point::new(area.x0, s_plot.origin.y - p.lift / sc.mu_s);
-    if rocker {
-        let deg = format!("({} {})", fmt::trimmed(sc.mu_s.to_degrees(), lang), l.unit_deg_per_mm());
-        scale_text(g, s_top, &[mu("β", sc.mu_s, l.unit_rad_per_mm(), lang), LabelText::new(deg, "")]);
-    } else {
-        scale_text(g, s_top, &[mu("s", sc.mu_s, unit, lang)]);
     }
-    top = s_plot.origin.y + PHASES + GAP;
 
-    // ds/dφ: both signs.
-    let v_plot = Plot {
-        origin: Point::new(x0, top + vmax / sc.mu_ds + 4.0),
-        x: x_axis(),
-        y: Axis {
-            lo: -vmax,
-            hi: vmax,
-            mu: sc.mu_ds,
-            name: v_name.into(),
-            ticks: unlabelled(round_ticks(-vmax, vmax, sc.mu_ds, lang)),
-        },
-    };
-    v_plot.draw_axes(g);
-    v_plot.line(g, &exact(&|phi| p.at(phi).ds), THIN);
-    v_plot.line(g, &integrated_curve(integrated, |i| &i.ds), MAIN);
-    scale_text(g, Point::new(area.x0, v_plot.origin.y - vmax / sc.mu_ds), &[mu(v_name, sc.mu_ds, unit, lang)]);
-    // The displacement's pole: rays to the mean ordinates of the velocity's chords.
-    let means: Vec<f64> = integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
-    pole(g, &v_plot, sc.h1, &means, sc.mu_ds, "1", c, lang);
-    top = v_plot.origin.y + vmax / sc.mu_ds + GAP;
+    /// A translating follower's scales are all m/mm; a rocker's analogs have no unit.
+    fn unit(&self) -> &str {
+        if self.rocker { self.words.sheet.unit_per_mm() } else { self.words.common.unit_m_per_mm() }
+    }
 
-    // d²s/dφ²: the given law, with its mid-ordinates.
-    let a_plot = Plot {
-        origin: Point::new(x0, top + amax / sc.mu_dds + 4.0),
-        x: x_axis(),
-        y: Axis {
-            lo: -amax,
-            hi: amax,
-            mu: sc.mu_dds,
-            name: a_name.into(),
-            ticks: unlabelled(round_ticks(-amax, amax, sc.mu_dds, lang)),
-        },
-    };
-    a_plot.draw_axes(g);
-    // From the axis and back to it: the near dwell's s″ = 0 on both sides of the working angle
-    // (a law that starts or ends with a jump shows it).
-    let mut a_exact = exact(&|phi| p.at(phi).dds);
-    a_exact.insert(0, (0.0, 0.0));
-    a_exact.push((work.to_degrees(), 0.0));
-    a_plot.line(g, &a_exact, MAIN);
-    for i in integrated {
-        for (k, &a) in i.mid_dds.iter().enumerate() {
-            let mid = (i.phi[k] + i.phi[k + 1]) / 2.0;
-            g.line(a_plot.at(mid.to_degrees(), 0.0), a_plot.at(mid.to_degrees(), a), DASHED);
+    /// s(φ): the lift above the axis, from `top`; returns the next diagram's top.
+    fn displacement(&self, g: &mut Group, labels: &mut Labels, top: f64) -> f64 {
+        let (sc, p, w) = (self.sc, self.p, self.words);
+        let (l, lang) = (w.sheet, w.lang);
+        let s_plot = Plot {
+            origin: Point::new(self.x0, top + GAP + p.lift / sc.mu_s),
+            x: self.x_axis(),
+            y: Axis {
+                lo: 0.0,
+                hi: p.lift,
+                mu: sc.mu_s,
+                name: format!("{}, {}", self.names[0], if self.rocker { l.unit_deg() } else { w.common.unit_mm() }),
+                ticks: lift_ticks(p.lift, sc.mu_s, self.rocker, lang),
+            },
+        };
+        s_plot.draw_axes(g);
+        s_plot.line(g, &self.exact(&|phi| p.at(phi).s), THIN);
+        s_plot.line(g, &integrated_curve(self.integrated, |i| &i.s), MAIN);
+        number_divisions(&s_plot, self.integrated, labels);
+        phase_dimensions(g, &s_plot, p, labels, w);
+        let s_top = Point::new(self.left, s_plot.origin.y - p.lift / sc.mu_s);
+        if self.rocker {
+            let deg = format!("({} {})", fmt::trimmed(sc.mu_s.to_degrees(), lang), l.unit_deg_per_mm());
+            scale_text(g, s_top, &[mu("β", sc.mu_s, l.unit_rad_per_mm(), lang), LabelText::new(deg, "")]);
+        } else {
+            scale_text(g, s_top, &[mu("s", sc.mu_s, self.unit(), lang)]);
         }
+        s_plot.origin.y + PHASES + GAP
     }
-    // The radians as the degrees' gloss in brackets, as μ_β's degrees above.
-    let phi_rad = LabelText::new(format!("({} {})", fmt::value(sc.mu_phi_rad, lang), l.unit_rad_per_mm()), "");
-    scale_text(
-        g,
-        Point::new(area.x0, a_plot.origin.y - amax / sc.mu_dds),
-        &[mu(a_name, sc.mu_dds, unit, lang), mu("φ", sc.mu_phi_deg, l.unit_deg_per_mm(), lang), phi_rad],
-    );
-    let mids: Vec<f64> = integrated.iter().flat_map(|i| i.mid_dds.iter().copied()).collect();
-    pole(g, &a_plot, sc.h2, &mids, sc.mu_dds, "2", c, lang);
-    labels.place(g, area);
-    Drawn { scales: sc, bottom: a_plot.origin.y + amax / sc.mu_dds + GAP }
+
+    /// ds/dφ, both signs, with the displacement's pole: rays to the mean ordinates of the
+    /// velocity's chords; returns the next diagram's top.
+    fn velocity(&self, g: &mut Group, top: f64) -> f64 {
+        let (sc, p, lang) = (self.sc, self.p, self.words.lang);
+        let (vmax, name) = (self.peaks.0, self.names[1]);
+        let v_plot = Plot {
+            origin: Point::new(self.x0, top + vmax / sc.mu_ds + 4.0),
+            x: self.x_axis(),
+            y: Axis {
+                lo: -vmax,
+                hi: vmax,
+                mu: sc.mu_ds,
+                name: name.into(),
+                ticks: unlabelled(round_ticks(-vmax, vmax, sc.mu_ds, lang)),
+            },
+        };
+        v_plot.draw_axes(g);
+        v_plot.line(g, &self.exact(&|phi| p.at(phi).ds), THIN);
+        v_plot.line(g, &integrated_curve(self.integrated, |i| &i.ds), MAIN);
+        let at = Point::new(self.left, v_plot.origin.y - vmax / sc.mu_ds);
+        scale_text(g, at, &[mu(name, sc.mu_ds, self.unit(), lang)]);
+        let means: Vec<f64> =
+            self.integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
+        pole(g, &v_plot, Pole { h: sc.h1, index: "1" }, &means, sc.mu_ds, self.words);
+        v_plot.origin.y + vmax / sc.mu_ds + GAP
+    }
+
+    /// d²s/dφ²: the given law, with its mid-ordinates and its pole; returns the bottom.
+    fn acceleration(&self, g: &mut Group, top: f64) -> f64 {
+        let (sc, p, lang) = (self.sc, self.p, self.words.lang);
+        let l = self.words.sheet;
+        let (amax, name) = (self.peaks.1, self.names[2]);
+        let a_plot = Plot {
+            origin: Point::new(self.x0, top + amax / sc.mu_dds + 4.0),
+            x: self.x_axis(),
+            y: Axis {
+                lo: -amax,
+                hi: amax,
+                mu: sc.mu_dds,
+                name: name.into(),
+                ticks: unlabelled(round_ticks(-amax, amax, sc.mu_dds, lang)),
+            },
+        };
+        a_plot.draw_axes(g);
+        // From the axis and back to it: the near dwell's s″ = 0 on both sides of the working
+        // angle (a law that starts or ends with a jump shows it).
+        let mut a_exact = self.exact(&|phi| p.at(phi).dds);
+        a_exact.insert(0, (0.0, 0.0));
+        a_exact.push((self.work.to_degrees(), 0.0));
+        a_plot.line(g, &a_exact, MAIN);
+        for i in self.integrated {
+            for (k, &a) in i.mid_dds.iter().enumerate() {
+                let mid = (i.phi[k] + i.phi[k + 1]) / 2.0;
+                g.line(a_plot.at(mid.to_degrees(), 0.0), a_plot.at(mid.to_degrees(), a), DASHED);
+            }
+        }
+        // The radians as the degrees' gloss in brackets, as μ_β's degrees above.
+        let phi_rad = LabelText::new(format!("({} {})", fmt::value(sc.mu_phi_rad, lang), l.unit_rad_per_mm()), "");
+        scale_text(
+            g,
+            Point::new(self.left, a_plot.origin.y - amax / sc.mu_dds),
+            &[mu(name, sc.mu_dds, self.unit(), lang), mu("φ", sc.mu_phi_deg, l.unit_deg_per_mm(), lang), phi_rad],
+        );
+        let mids: Vec<f64> = self.integrated.iter().flat_map(|i| i.mid_dds.iter().copied()).collect();
+        pole(g, &a_plot, Pole { h: sc.h2, index: "2" }, &mids, sc.mu_dds, self.words);
+        a_plot.origin.y + amax / sc.mu_dds + GAP
+    }
 }
 
 /// The division points along the x axis; their numbers are placed as labels, clear of the
@@ -279,7 +332,8 @@ const PHASES: f64 = 12.0;
 /// The phase angles as the course dimensions them under the displacement's axis (rise, far
 /// dwell, return), and the working angle under those; extension lines start below the
 /// position numbers that stand at the phases' ends.
-fn phase_dimensions(g: &mut Group, plot: &Plot, p: &Program, labels: &mut Labels, l: &CamLabels, lang: Language) {
+fn phase_dimensions(g: &mut Group, plot: &Plot, p: &Program, labels: &mut Labels, words: &CamWords) {
+    let (l, lang) = (words.sheet, words.lang);
     let (rise, dwell, work) = (p.rise, p.rise + p.far_dwell, p.rise + p.far_dwell + p.ret);
     let rows = [
         (0.0, rise, l.sub_rise(), PHASE_ROW),
@@ -302,7 +356,7 @@ fn phase_dimensions(g: &mut Group, plot: &Plot, p: &Program, labels: &mut Labels
 /// The displacement's ticks in the tables' units, round there: mm for a translating
 /// follower, degrees for a rocker (the values stay in SI for the plot).
 fn lift_ticks(lift: f64, mu_s: f64, rocker: bool, lang: Language) -> Vec<(f64, String)> {
-    let k = if rocker { 180.0 / PI } else { 1e3 };
+    let k = if rocker { 180.0 / PI } else { units::MM_PER_M };
     round_ticks(0.0, lift * k, mu_s * k, lang).into_iter().map(|(v, t)| (v / k, t)).collect()
 }
 
@@ -333,14 +387,24 @@ fn scale_text(g: &mut Group, at: Point, lines: &[LabelText]) {
     }
 }
 
-/// The pole at H left of the origin on the x axis, and its rays to the ordinates `ys`
-/// carried to the y axis: each chord of the integral is drawn parallel to its ray.
-#[allow(clippy::too_many_arguments)]
-fn pole(g: &mut Group, plot: &Plot, h: f64, ys: &[f64], mu: f64, index: &str, c: &Common, lang: Language) {
+/// A pole: its distance H from the origin, mm, and its index.
+struct Pole<'a> {
+    h: f64,
+    index: &'a str,
+}
+
+/// The pole at H left of the origin on the x axis, and its rays to the ordinates `ys` (at
+/// `mu` a mm) carried to the y axis: each chord of the integral is drawn parallel to its ray.
+fn pole(g: &mut Group, plot: &Plot, pole: Pole, ys: &[f64], mu: f64, words: &CamWords) {
+    let h = pole.h;
     let p = Point::new(plot.origin.x - h, plot.origin.y);
     g.dot(p, 0.6);
     // H with its index as the sheet's other subscripts, clear of the pole's dot.
-    let text = LabelText::new("H", index).with_tail(format!(" = {} {}", fmt::value(h, lang), c.unit_mm()));
+    let text = LabelText::new("H", pole.index).with_tail(format!(
+        " = {} {}",
+        fmt::value(h, words.lang),
+        words.common.unit_mm()
+    ));
     text.draw(g, Point::new(p.x - 2.5, p.y + 1.0), 2.5, Anchor::End);
     for &y in ys {
         g.line(p, Point::new(plot.origin.x, plot.origin.y - y / mu), THIN);

@@ -1,6 +1,10 @@
 //! Sheet 3's texts (`templates/labels/cam.yaml`).
 
 use crate::cams::laws::Standard;
+use crate::drawing::labels::Wording;
+
+/// Sheet 3's language with its words.
+pub type CamWords = Wording<CamLabels>;
 
 crate::label_set! {
     /// Every word of sheet 3 that is not shared with the other sheets.

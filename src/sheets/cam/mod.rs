@@ -19,7 +19,6 @@ use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::cams::follower::Follower;
 use crate::cams::integrate::{self, Integrated};
 use crate::drawing::fmt;
-use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
@@ -27,7 +26,8 @@ use crate::drawing::table::{self, CELL_TEXT, Table};
 use crate::drawing::text::{LabelText, block_height, paragraph, wrap};
 use crate::project::{CamProject, Project};
 use kurbo::{Point, Rect};
-use labels::CamLabels;
+use labels::CamWords;
+use nomogram::Placement;
 use regions::{Content, LEFT_MAX, Regions, SHEET, view_area};
 
 /// This sheet's place in the course.
@@ -70,21 +70,21 @@ struct Column {
 }
 
 /// The title over the diagrams: the law's name (or both phases' laws).
-fn laws_title(p: &CamProject, lang: Language) -> String {
-    let l = CamLabels::get(lang);
+fn laws_title(p: &CamProject, words: &CamWords) -> String {
+    let l = words.sheet;
     let rocker = matches!(p.design.spec.follower, Follower::Rocker { .. });
     if p.laws.0 == p.laws.1 {
-        let name = notes::law_name(p, &p.laws.0, l, lang);
+        let name = notes::law_name(p, &p.laws.0, words);
         if rocker { l.laws_title_rocker(&name) } else { l.laws_title(&name) }
     } else {
-        l.laws_title_two(&notes::law_name(p, &p.laws.0, l, lang), &notes::law_name(p, &p.laws.1, l, lang))
+        l.laws_title_two(&notes::law_name(p, &p.laws.0, words), &notes::law_name(p, &p.laws.1, words))
     }
 }
 
 /// Plans the column: the diagrams as large as the column leaves them after the texts.
-fn plan_column(p: &CamProject, errors: (f64, f64), deviation: f64, lang: Language) -> Column {
-    let title = laws_title(p, lang);
-    let notes = notes::sheet_notes(p, errors, deviation, CamLabels::get(lang), lang);
+fn plan_column(p: &CamProject, errors: (f64, f64), deviation: f64, words: &CamWords) -> Column {
+    let title = laws_title(p, words);
+    let notes = notes::sheet_notes(p, errors, deviation, words);
     let title_lines = wrap(&title, 3.5, LEFT_MAX - 4.0);
     let notes_h =
         |w: f64| notes.iter().map(|n| block_height(wrap(n, CELL_TEXT, w).len(), CELL_TEXT) + 1.0).sum::<f64>();
@@ -96,15 +96,15 @@ fn plan_column(p: &CamProject, errors: (f64, f64), deviation: f64, lang: Languag
 
 /// Builds sheet 3.
 pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
-    let lang = ctx.info.language;
-    let l = CamLabels::get(lang);
+    let words = CamWords::new(ctx.info.language);
+    let (l, lang) = (words.sheet, words.lang);
     let d = &p.design;
     let integrated = integrate::turn(&d.spec.program, DIVISIONS);
     let errors = diagrams::error_percent(d, &integrated);
     let phis = nomogram::positions(d, DIVISIONS);
     let notes = tables::notes(d, &phis, errors, lang);
     let fitted = profile_view::fit(d);
-    let column = plan_column(p, errors, fitted.deviation, lang);
+    let column = plan_column(p, errors, fitted.deviation, &words);
     let (law, rest): (Vec<_>, Vec<_>) = notes.iter().partition(|n| tables::is_law(n));
     let drawn = |ns: Vec<&crate::report::NoteTable>| -> Vec<Table> {
         ns.into_iter().map(|n| tables::sheet_table(n, lang)).collect()
@@ -120,18 +120,18 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         rest: &rest,
     };
     let lay = regions::regions(&content);
-    let (dg, scales) = diagrams_group(&lay, &column, p, &integrated, lang);
+    let (dg, scales) = diagrams_group(&lay, &column, p, &integrated, &words);
     let mut nm = view_group("nomogram", lay.nomogram, l.nomogram_title());
     let mut nl = Labels::new();
-    let c = Common::get(lang);
-    nomogram::draw(&mut nm, view_area(lay.nomogram), extents.0, lay.nomogram_mu, d, &phis, &mut nl, l, c, lang);
-    scale_note(&mut nm, lay.nomogram_mu, None, c, lang);
+    let at = Placement { area: view_area(lay.nomogram), extent: extents.0, mu: lay.nomogram_mu };
+    nomogram::draw(&mut nm, &at, d, &phis, &mut nl, &words);
+    scale_note(&mut nm, lay.nomogram_mu, None, &words);
     nl.place(&mut nm, lay.nomogram);
     let mut pv = view_group("profile", lay.profile, l.profile_title());
     let mut pl = Labels::new();
-    let area = view_area(lay.profile);
-    let prof = profile_view::draw(&mut pv, area, extents.1, lay.profile_mu, d, &fitted, &phis, &mut pl, l, c, lang);
-    scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), c, lang);
+    let at = Placement { area: view_area(lay.profile), extent: extents.1, mu: lay.profile_mu };
+    let prof = profile_view::draw(&mut pv, &at, d, &fitted, &phis, &mut pl, &words);
+    scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), &words);
     pl.place(&mut pv, lay.profile);
     let mut groups = vec![dg, nm, pv];
     groups.extend(table_groups(&lay, law, rest));
@@ -163,15 +163,14 @@ fn diagrams_group(
     column: &Column,
     p: &CamProject,
     integrated: &[Integrated; 2],
-    lang: Language,
+    words: &CamWords,
 ) -> (Group, Scales) {
-    let (l, c) = (CamLabels::get(lang), Common::get(lang));
     let width = lay.diagrams.width() - 4.0;
     let mut dg = Group::new("diagrams", lay.diagrams);
     let at = Point::new(lay.diagrams.x0 + 2.0, lay.diagrams.y0 + 5.0);
     let mut y = paragraph(&mut dg, at, &wrap(&column.title, 3.5, width), 3.5, Anchor::Start);
     let area = Rect::new(lay.diagrams.x0 + 2.0, y + 2.0, lay.diagrams.x1, y + 2.0 + column.plan.height);
-    let drawn = diagrams::draw(&mut dg, area, &column.plan, &p.design, integrated, l, c, lang);
+    let drawn = diagrams::draw(&mut dg, area, &column.plan, &p.design, integrated, words);
     y = drawn.bottom + 4.0;
     for n in &column.notes {
         let at = Point::new(lay.diagrams.x0 + 2.0, y);
@@ -199,8 +198,9 @@ fn view_group(id: &str, region: Rect, title: &str) -> Group {
 
 /// "μ_l = … m/mm" (and the GOST ratio) under a view's title: below the view it read as the
 /// scale of the view under it.
-fn scale_note(g: &mut Group, mu: f64, ratio: Option<String>, c: &Common, lang: Language) {
-    let mut tail = format!(" = {} {}", fmt::trimmed(mu, lang), c.unit_m_per_mm());
+fn scale_note(g: &mut Group, mu: f64, ratio: Option<String>, words: &CamWords) {
+    let lang = words.lang;
+    let mut tail = format!(" = {} {}", fmt::trimmed(mu, lang), words.common.unit_m_per_mm());
     if let Some(r) = ratio {
         tail.push_str(&format!(" ({})", fmt::localise(&r, lang)));
     }

@@ -5,34 +5,20 @@
 //! boundary of the admissible zone, and the centre O with r_min (and e, or the pivot and the
 //! centre distance).
 
-use super::labels::CamLabels;
-use crate::cams::Design;
+use super::labels::CamWords;
 use crate::cams::follower::Follower;
 use crate::cams::radius::Phase;
+use crate::cams::{Design, Sense};
 use crate::drawing::fmt;
-use crate::drawing::labels::{Common, Language};
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along, vector};
 use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
 use crate::num::math::{self, Norm};
+use crate::num::tol;
+use crate::num::units::mm;
 use kurbo::{Line, ParamCurveNearest, Point, Rect, Vec2};
-
-/// A follower-frame picture on paper: metres → mm, mirrored for a counter-clockwise cam.
-#[derive(Debug, Clone, Copy)]
-pub struct View {
-    pub origin: Point,
-    /// m per paper mm.
-    pub mu: f64,
-    pub mirror: bool,
-}
-
-impl View {
-    pub fn at(&self, v: Vec2) -> Point {
-        let x = if self.mirror { -v.x } else { v.x };
-        Point::new(self.origin.x + x / self.mu, self.origin.y - v.y / self.mu)
-    }
-}
 
 /// The cam angles of the numbered positions: each phase's division points.
 pub fn positions(d: &Design, divisions: usize) -> Vec<f64> {
@@ -49,7 +35,7 @@ pub fn positions(d: &Design, divisions: usize) -> Vec<f64> {
 /// before it (the rise's end and the return's start without a far dwell) shares its label
 /// ("8≡9") and gets none of its own.
 pub fn position_labels(phis: &[f64]) -> Vec<Option<String>> {
-    merged_labels(phis.len(), |j, k| (phis[j] - phis[k]).abs() < 1e-12)
+    merged_labels(phis.len(), |j, k| (phis[j] - phis[k]).abs() < tol::ANGLE_ROUND_OFF)
 }
 
 /// Positions closer than this on paper (mm) are one point to the reader and share a label.
@@ -99,9 +85,9 @@ fn extent_points(d: &Design, phis: &[f64]) -> Vec<Vec2> {
 /// How far a ray from `p` (inside the box) along the unit `dir` runs before it leaves the box.
 fn exit(p: Vec2, dir: Vec2, lo: Vec2, hi: Vec2) -> f64 {
     let along = |p: f64, d: f64, lo: f64, hi: f64| {
-        if d > 1e-12 {
+        if d > tol::ALONG_SIDE {
             (hi - p) / d
-        } else if d < -1e-12 {
+        } else if d < -tol::ALONG_SIDE {
             (lo - p) / d
         } else {
             f64::INFINITY
@@ -124,85 +110,125 @@ pub fn centred(area: Rect, (lo, hi): (Vec2, Vec2), mu: f64, mirror: bool) -> Vie
     let (cx, cy) = ((lo.x + hi.x) / 2.0, (lo.y + hi.y) / 2.0);
     let mx = if mirror { -cx } else { cx };
     let centre = area.center();
-    View { origin: Point::new(centre.x - mx / mu, centre.y + cy / mu), mu, mirror }
+    View::new(Point::new(centre.x - mx / mu, centre.y + cy / mu), mu).mirrored(mirror)
 }
 
-/// Draws the nomogram of the box `(lo, hi)` ([`extent`]) centred in `area` at `mu` m/mm.
-#[allow(clippy::too_many_arguments)]
-pub fn draw(
-    g: &mut Group,
-    area: Rect,
-    (lo, hi): (Vec2, Vec2),
-    mu: f64,
-    d: &Design,
-    phis: &[f64],
-    labels: &mut Labels,
-    l: &CamLabels,
-    c: &Common,
-    lang: Language,
-) {
-    let mirror = d.spec.sense == crate::cams::Sense::Ccw;
-    let view = centred(area, (lo, hi), mu, mirror);
-    let r = &d.region;
-    let o = d.centre.o;
+/// Where a view of the follower (or cam) frame goes: its box in the world (metres), centred
+/// in `area` at `mu` m/mm.
+#[derive(Debug, Clone, Copy)]
+pub struct Placement {
+    pub area: Rect,
+    pub extent: (Vec2, Vec2),
+    pub mu: f64,
+}
 
-    // The follower: its axis, or the rocker's pivot, arc and lines.
+impl Placement {
+    /// The view, mirrored for a counter-clockwise cam.
+    pub fn view(&self, sense: Sense) -> View {
+        centred(self.area, self.extent, self.mu, sense == Sense::Ccw)
+    }
+}
+
+/// Draws the nomogram of the box [`extent`] as `at` places it.
+pub fn draw(g: &mut Group, at: &Placement, d: &Design, phis: &[f64], labels: &mut Labels, words: &CamWords) {
+    let view = at.view(d.spec.sense);
+    draw_follower(g, labels, view, at.extent, d, phis);
+    draw_positions(g, labels, view, d, phis);
+    // The B′ curve, exact.
+    for ph in Phase::BOTH {
+        let (a, b) = ph.span(&d.spec.program);
+        let pts: Vec<Point> =
+            (0..=200).map(|k| view.p(d.region.state(a + (b - a) * k as f64 / 200.0).analog)).collect();
+        g.path(pts, false, MAIN);
+    }
+    let limiting = draw_limiting_lines(g, labels, view, at.extent, d, words);
+    draw_zone_boundary(g, view, at.extent, d, &limiting);
+    labels.add_text_ranked(
+        view.p(d.centre.o + d.region.d * (0.4 * d.centre.r_min)),
+        Vec2::ZERO,
+        words.sheet.zone(),
+        2.5,
+        3,
+    );
+    draw_centre(g, labels, view, d, words);
+}
+
+/// The follower: its axis, or the rocker's pivot, the arc of its roller's centre and its
+/// lines to the positions.
+fn draw_follower(g: &mut Group, labels: &mut Labels, view: View, (lo, hi): (Vec2, Vec2), d: &Design, phis: &[f64]) {
+    let r = &d.region;
     match d.spec.follower {
         Follower::Translating => {
-            g.line(view.at(Vec2::new(0.0, lo.y)), view.at(Vec2::new(0.0, hi.y)), AXIS);
+            g.line(view.p(Vec2::new(0.0, lo.y)), view.p(Vec2::new(0.0, hi.y)), AXIS);
         }
         Follower::Rocker { length } => {
             let a = Vec2::new(length, 0.0);
-            frame_pivot(g, view.at(a), 1.5);
-            labels.add_text(view.at(a), Vec2::new(1.0, -1.0), "A", 3.5);
+            frame_pivot(g, view.p(a), 1.5);
+            labels.add_text(view.p(a), Vec2::new(1.0, -1.0), "A", 3.5);
             let arc: Vec<Point> = (0..=60)
-                .map(|k| view.at(r.state(phis[0] + (phis[phis.len() / 2 - 1] - phis[0]) * k as f64 / 60.0).b))
+                .map(|k| view.p(r.state(phis[0] + (phis[phis.len() / 2 - 1] - phis[0]) * k as f64 / 60.0).b))
                 .collect();
             g.path(arc, false, THIN);
             for &phi in phis {
-                g.line(view.at(a), view.at(r.state(phi).b), THIN);
+                g.line(view.p(a), view.p(r.state(phi).b), THIN);
             }
         }
     }
-    // The positions and their analog segments; positions drawn at one point share a label.
-    let analogs: Vec<Point> = phis.iter().map(|&phi| view.at(r.state(phi).analog)).collect();
+}
+
+/// The positions and their analog segments; positions drawn at one point share a label.
+fn draw_positions(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis: &[f64]) {
+    let r = &d.region;
+    let analogs: Vec<Point> = phis.iter().map(|&phi| view.p(r.state(phi).analog)).collect();
     for ((&phi, &at), name) in phis
         .iter()
         .zip(&analogs)
         .zip(merged_labels(analogs.len(), |j, k| (analogs[j] - analogs[k]).norm() < SAME_POINT_MM))
     {
-        g.line(view.at(r.state(phi).b), at, THIN);
+        g.line(view.p(r.state(phi).b), at, THIN);
         g.dot(at, 0.45);
         if let Some(name) = name {
             labels.add_text_ranked(at, Vec2::ZERO, &name, 2.5, 2);
         }
     }
-    // The B′ curve, exact.
-    for ph in Phase::BOTH {
-        let (a, b) = ph.span(&d.spec.program);
-        let pts: Vec<Point> = (0..=200).map(|k| view.at(r.state(a + (b - a) * k as f64 / 200.0).analog)).collect();
-        g.path(pts, false, MAIN);
-    }
-    // The limiting lines through the most binding B′, to the picture's edge, each with its
-    // angle from the wedge's axis (the direction opposite the follower's motion there).
-    let paper = |v: Vec2| (view.at(v) - view.at(Vec2::ZERO)).unit();
+}
+
+/// The limiting lines through the most binding B′, to the picture's edge, each with its
+/// angle from the wedge's axis (the direction opposite the follower's motion there); returns
+/// them on paper.
+fn draw_limiting_lines(
+    g: &mut Group,
+    labels: &mut Labels,
+    view: View,
+    (lo, hi): (Vec2, Vec2),
+    d: &Design,
+    words: &CamWords,
+) -> Vec<Line> {
+    let r = &d.region;
+    let paper = |v: Vec2| (view.p(v) - view.p(Vec2::ZERO)).unit();
     let mut limiting = Vec::new();
     for (ph, left) in [(Phase::Rise, true), (Phase::Return, false)] {
-        let (apex, dir, phi) = r.limiting_ray(ph, left, o);
+        let (apex, dir, phi) = r.limiting_ray(ph, left, d.centre.o);
         let end = apex + dir * exit(apex, dir, lo, hi);
-        let (a, b) = (view.at(apex), view.at(end));
+        let (a, b) = (view.p(apex), view.p(end));
         g.line(a, b, THIN);
         limiting.push(Line::new(a, b));
         let axis = paper(-r.state(phi).t);
         g.line(a, a + axis * (ANGLE_MARK_MM + 4.0), THIN);
         let at = angle_mark(g, a, axis, paper(dir), ANGLE_MARK_MM);
         let alpha = ph.allowed(&d.spec.allowed).to_degrees();
-        let sub = if ph == Phase::Rise { l.sub_rise() } else { l.sub_return() };
-        let text = LabelText::new("α", sub).with_tail(format!(" = {}°", fmt::value(alpha, lang)));
+        let sub = if ph == Phase::Rise { words.sheet.sub_rise() } else { words.sheet.sub_return() };
+        let text = LabelText::new("α", sub).with_tail(format!(" = {}°", fmt::value(alpha, words.lang)));
         labels.add_ranked(at, at - a, text, 2.5, 1);
     }
-    // The zone's exact boundary across the picture, hatched on the zone's side; dashed where
-    // it does not run along a limiting line.
+    limiting
+}
+
+/// The zone's exact boundary across the picture, hatched on the zone's side; dashed where
+/// it does not run along a limiting line.
+fn draw_zone_boundary(g: &mut Group, view: View, (lo, hi): (Vec2, Vec2), d: &Design, limiting: &[Line]) {
+    let r = &d.region;
+    let paper = |v: Vec2| (view.p(v) - view.p(Vec2::ZERO)).unit();
     let span = (hi - lo).norm();
     let us: Vec<f64> = (0..=BOUNDARY_POINTS).map(|k| span * (2.0 * k as f64 / BOUNDARY_POINTS as f64 - 1.0)).collect();
     let boundary: Vec<Point> = us
@@ -210,39 +236,43 @@ pub fn draw(
         .zip(r.floors(&us))
         .map(|(&u, w)| r.point(u, w))
         .filter(|p| p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y)
-        .map(|p| view.at(p))
+        .map(|p| view.p(p))
         .collect();
     hatch_along(g, &boundary, paper(r.d), HATCH_STEP_MM);
     let on_limiting = |p: &Point| limiting.iter().any(|l| l.nearest(*p, 0.0).distance_sq < ON_LINE_MM * ON_LINE_MM);
     for run in boundary.split(on_limiting).filter(|run| run.len() >= 2) {
         g.path(run.to_vec(), false, DASHED);
     }
-    labels.add_text_ranked(view.at(o + r.d * (0.4 * d.centre.r_min)), Vec2::ZERO, l.zone(), 2.5, 3);
-    // O and r_min.
-    g.dot(view.at(o), 0.8);
-    labels.add_text(view.at(o), Vec2::new(-1.0, 1.0), "O", 3.5);
-    // r_min as a radius: thin, its arrow at B₀ (as on the profile).
-    vector(g, view.at(o), view.at(Vec2::ZERO), THIN);
+}
+
+/// O and r_min as a radius (thin, its arrow at B₀ as on the profile), and the rocker's
+/// centre distance or the translating follower's offset.
+fn draw_centre(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words: &CamWords) {
+    let (l, c, lang) = (words.sheet, words.common, words.lang);
+    let o = d.centre.o;
+    g.dot(view.p(o), 0.8);
+    labels.add_text(view.p(o), Vec2::new(-1.0, 1.0), "O", 3.5);
+    vector(g, view.p(o), view.p(Vec2::ZERO), THIN);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
-        fmt::value(d.centre.r_min * 1e3, lang),
+        fmt::value(mm(d.centre.r_min), lang),
         c.unit_mm()
     ));
-    labels.add(view.at(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5);
+    labels.add(view.p(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5);
     if let Some(a) = d.spec.follower.pivot() {
-        g.line(view.at(o), view.at(a), DASHED);
+        g.line(view.p(o), view.p(a), DASHED);
         let dist = d.centre_distance().unwrap_or_default();
-        let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(dist * 1e3, lang), c.unit_mm()));
-        labels.add(view.at((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
-    } else if o.x.abs() > 1e-9 {
+        let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(mm(dist), lang), c.unit_mm()));
+        labels.add(view.p((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
+    } else if o.x.abs() > tol::ZERO_OFFSET {
         // The offset as a dimension from the follower's axis to O, below O where the zone
         // between the limiting lines (at the allowed angles from the axis) is wide enough
         // for it and its arrows, clear of the hatching.
         let a = &d.spec.allowed;
-        let span = o.x.abs() / view.mu + 20.0;
+        let span = view.len(o.x.abs()) + 20.0;
         let depth = (span / (math::tan(a.rise) + math::tan(a.ret)) + 2.0).max(8.0);
-        let mid = dimension(g, view.at(Vec2::new(0.0, o.y)), view.at(o), Vec2::new(0.0, depth));
-        let t = format!("e = {} {}", fmt::value(o.x.abs() * 1e3, lang), c.unit_mm());
+        let mid = dimension(g, view.p(Vec2::new(0.0, o.y)), view.p(o), Vec2::new(0.0, depth));
+        let t = format!("e = {} {}", fmt::value(mm(o.x.abs()), lang), c.unit_mm());
         labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);
     }
 }
@@ -269,9 +299,9 @@ mod tests {
         let area = Rect::new(0.0, 0.0, 300.0, 300.0);
         let mu = 0.0005;
         let mut g = Group::new("nomogram", area);
-        let lang = Language::Uz;
-        draw(&mut g, area, ext, mu, d, &phis, &mut Labels::new(), CamLabels::get(lang), Common::get(lang), lang);
-        let view = centred(area, ext, mu, d.spec.sense == crate::cams::Sense::Ccw);
+        let at = Placement { area, extent: ext, mu };
+        draw(&mut g, &at, d, &phis, &mut Labels::new(), &CamWords::new(crate::drawing::labels::Language::Uz));
+        let view = at.view(d.spec.sense);
         let to_frame = |q: Point| {
             let x = (q.x - view.origin.x) * mu;
             Vec2::new(if view.mirror { -x } else { x }, (view.origin.y - q.y) * mu)

@@ -1,17 +1,18 @@
 //! Sheet 3's notes under the diagrams, in the sheet's language.
 
 use super::DIVISIONS;
-use super::labels::CamLabels;
+use super::labels::CamWords;
 use crate::cams::follower::Follower;
 use crate::cams::laws::Law;
 use crate::cams::{CamWarning, Design};
 use crate::drawing::fmt;
-use crate::drawing::labels::Language;
+use crate::num::units::mm;
 use crate::project::CamProject;
 
 /// The notes under the diagrams: the phases, the integration, the nomogram's and the
 /// profile's accuracy, the roller, the user's assumptions.
-pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLabels, lang: Language) -> Vec<String> {
+pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, words: &CamWords) -> Vec<String> {
+    let (l, lang) = (words.sheet, words.lang);
     let d = &p.design;
     let pr = &d.spec.program;
     // Whole degrees as the file gives them (70°, not 70,00°).
@@ -26,7 +27,7 @@ pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLa
             l.phases(&deg(pr.rise), &deg(pr.far_dwell), &deg(pr.ret), &deg(pr.rise + pr.far_dwell + pr.ret))
         ),
         l.integration_note(&DIVISIONS.to_string(), q, dq, &fmt::value(errors.0, lang), &fmt::value(errors.1, lang)),
-        l.nomogram_note(&allowed_angles(d, l, lang)),
+        l.nomogram_note(&allowed_angles(d, words)),
     ];
     if d.roller == 0.0 {
         let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
@@ -36,7 +37,7 @@ pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLa
     }
     for w in &d.warnings {
         if let CamWarning::RollerBelowCourse { r, rho_min, .. } = w {
-            out.push(l.roller_reduced(&fmt::value(r * 1e3, lang), &fmt::value(rho_min * 1e3, lang)));
+            out.push(l.roller_reduced(&fmt::value(mm(*r), lang), &fmt::value(mm(*rho_min), lang)));
         }
     }
     for (k, law) in [&p.laws.0, &p.laws.1].into_iter().enumerate() {
@@ -45,7 +46,7 @@ pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLa
         {
             let corners: Vec<String> =
                 c.corners().map(|(x, a)| format!("({}; {})", fmt::value(x, lang), fmt::value(a, lang))).collect();
-            let mut note = l.law_custom_note(&law_name(p, law, l, lang), &corners.join(", "));
+            let mut note = l.law_custom_note(&law_name(p, law, words), &corners.join(", "));
             // The return runs the law backwards: its acceleration analog has the opposite sign.
             if k == 1 || p.laws.0 == p.laws.1 {
                 note.push_str(l.law_custom_return());
@@ -58,19 +59,20 @@ pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, l: &CamLa
 }
 
 /// The allowed pressure angle as the note states it: one value, or each phase's.
-fn allowed_angles(d: &Design, l: &CamLabels, lang: Language) -> String {
-    let deg = |x: f64| format!("{}°", fmt::value(x.to_degrees(), lang));
+fn allowed_angles(d: &Design, words: &CamWords) -> String {
+    let deg = |x: f64| format!("{}°", fmt::value(x.to_degrees(), words.lang));
     let a = &d.spec.allowed;
-    if a.rise == a.ret { deg(a.rise) } else { l.angles_two(&deg(a.rise), &deg(a.ret)) }
+    if a.rise == a.ret { deg(a.rise) } else { words.sheet.angles_two(&deg(a.rise), &deg(a.ret)) }
 }
 
 /// A law's name on the sheet: the built-in law's in the sheet's language; for a law of the
 /// project's table, the name the file gives, else the replaced law's, else its key.
-pub fn law_name(p: &CamProject, law: &Law, l: &CamLabels, lang: Language) -> String {
+pub fn law_name(p: &CamProject, law: &Law, words: &CamWords) -> String {
+    let l = words.sheet;
     match law {
         Law::Standard(s) => l.law(*s).to_string(),
         Law::Custom(c) => match p.law_names.iter().find(|(k, _)| k == c.key()) {
-            Some((_, name)) => name.get(lang).to_string(),
+            Some((_, name)) => name.get(words.lang).to_string(),
             None => c.replaces().map_or_else(|| c.key().to_string(), |s| l.law(s).to_string()),
         },
     }

@@ -7,24 +7,26 @@
 //! profile (the rollers' envelope as Bézier pieces), the base circle with r_min, the follower
 //! in the start position and the cam's sense of rotation.
 
-use super::labels::CamLabels;
-use super::nomogram::{bounds, centred, position_labels};
+use super::labels::{CamLabels, CamWords};
+use super::nomogram::{Placement, bounds, position_labels};
+use crate::cams::Design;
 use crate::cams::follower::Follower;
-use crate::cams::{Design, Sense};
 use crate::drawing::fmt;
-use crate::drawing::labels::{Common, Language};
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, frame_pivot, hatch, turn_arrow, vector};
 use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
 use crate::num::bezier::Fitted;
 use crate::num::math::{Norm, atan2, sin_cos};
-use kurbo::{Affine, CubicBez, Point, Rect, Vec2};
+use crate::num::tol;
+use crate::num::units::mm;
+use kurbo::{CubicBez, Point, Vec2};
 use std::f64::consts::TAU;
 
-/// The profiles' accuracy, metres, and the most pieces a part may take.
-pub const PROFILE_TOL: f64 = 1e-6;
+/// The profiles' accuracy, metres ([`tol::PROFILE_FIT`]), and the most pieces a part may take.
+pub const PROFILE_TOL: f64 = tol::PROFILE_FIT;
 pub const MAX_PIECES: usize = 256;
 
 /// The translating follower's stem above the roller, in r_max.
@@ -87,94 +89,106 @@ pub fn extent(d: &Design) -> (Vec2, Vec2) {
     (lo - Vec2::new(pad, pad), hi + Vec2::new(pad, pad))
 }
 
-/// Draws the profile of the box `(lo, hi)` ([`extent`]) centred in `area` at the GOST scale
-/// `mu` m/mm.
-#[allow(clippy::too_many_arguments)]
+/// Draws the profile of the box [`extent`] as `at` places it (at a GOST scale).
 pub fn draw(
     g: &mut Group,
-    area: Rect,
-    (lo, hi): (Vec2, Vec2),
-    mu: f64,
+    at: &Placement,
     d: &Design,
     pieces: &Pieces,
     phis: &[f64],
     labels: &mut Labels,
-    l: &CamLabels,
-    c: &Common,
-    lang: Language,
+    words: &CamWords,
 ) -> ProfileDrawn {
-    let mirror = d.spec.sense == Sense::Ccw;
-    let view = centred(area, (lo, hi), mu, mirror);
-    let pr = &d.profile;
-    // To paper: the cam frame's metres through the view (mirror and y up).
-    let sx = if mirror { -1.0 / mu } else { 1.0 / mu };
-    let to_paper = Affine::new([sx, 0.0, 0.0, -1.0 / mu, view.origin.x, view.origin.y]);
-    let path_of = |cubics: &[CubicBez]| Path::cubics(&cubics.iter().map(|c| to_paper * *c).collect::<Vec<_>>());
-    let knife = d.roller == 0.0;
+    let mu = at.mu;
+    let view = at.view(d.spec.sense);
+    inversion(g, d, phis, &|v| view.p(v), mu, labels);
+    draw_profiles(g, view, d, pieces);
+    draw_rollers(g, labels, view, d, phis);
+    follower_at_start(g, d, &|v| view.p(v), mu);
+    draw_rotation(g, labels, view, d);
+    name_profiles(labels, view, d, words.sheet);
+    draw_r_min(g, labels, view, d, words);
+    ProfileDrawn { mu, pieces: pieces.count, deviation: pieces.deviation }
+}
 
-    inversion(g, d, phis, &|v| view.at(v), mu, labels);
-    // The base circle and the profiles.
-    g.circle(view.origin, d.centre.r_min / mu, DASHED);
+/// The base circle and the profiles.
+fn draw_profiles(g: &mut Group, view: View, d: &Design, pieces: &Pieces) {
+    let path_of = |cubics: &[CubicBez]| Path::cubics(&cubics.iter().map(|c| view.cubic(c)).collect::<Vec<_>>());
+    let knife = d.roller == 0.0;
+    g.circle(view.origin, view.len(d.centre.r_min), DASHED);
     for f in &pieces.pitch {
         g.curve(path_of(&f.cubics), if knife { MAIN } else { THIN });
     }
     for f in pieces.working.iter().flatten() {
         g.curve(path_of(&f.cubics), MAIN);
     }
-    // The numbered positions: the rollers and their numbers outside them.
+}
+
+/// The numbered positions: the rollers and their numbers outside them.
+fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis: &[f64]) {
     for (&phi, name) in phis.iter().zip(position_labels(phis)) {
-        let p = pr.pitch(phi).p;
-        if !knife {
-            g.circle(view.at(p), d.roller / mu, THIN);
-            labels.keep_out(view.at(p), d.roller / mu);
+        let p = d.profile.pitch(phi).p;
+        if d.roller != 0.0 {
+            g.circle(view.p(p), view.len(d.roller), THIN);
+            labels.keep_out(view.p(p), view.len(d.roller));
         }
         // At the roller's rim (a knife's point), outward: a leader, if any, reaches it.
-        let rim = view.at(p * (1.0 + d.roller / p.norm()));
+        let rim = view.p(p * (1.0 + d.roller / p.norm()));
         if let Some(name) = name {
             labels.add_text_ranked(rim, rim - view.origin, &name, 2.5, 2);
         }
     }
-    follower_at_start(g, d, &|v| view.at(v), mu);
-    // O, and the sense of rotation with ω beside its arrow.
+}
+
+/// O, and the sense of rotation with ω beside its arrow.
+fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, d: &Design) {
     frame_pivot(g, view.origin, 1.5);
     labels.add_text(view.origin, Vec2::new(-1.0, 1.0), "O", 3.5);
-    let arrow_r = (0.25 * d.centre.r_min / mu).max(6.0);
-    turn_arrow(g, view.origin, arrow_r, 200.0, 60.0, mirror, THIN);
-    let (s, c_) = sin_cos(if mirror { 170.0f64 } else { 230.0f64 }.to_radians());
-    let out = Vec2::new(c_, s);
+    let arrow_r = (0.25 * d.centre.r_min / view.mu).max(6.0);
+    turn_arrow(g, view.origin, arrow_r, 200.0, 60.0, view.mirror, THIN);
+    let (s, c) = sin_cos(if view.mirror { 170.0f64 } else { 230.0f64 }.to_radians());
+    let out = Vec2::new(c, s);
     labels.add_text_ranked(view.origin + out * arrow_r, out, "ω", 3.5, 0);
-    // The curves' names.
-    let prog = &d.spec.program;
+}
+
+/// The profiles' names.
+fn name_profiles(labels: &mut Labels, view: View, d: &Design, l: &CamLabels) {
+    let (pr, prog) = (&d.profile, &d.spec.program);
     let far = pr.pitch(prog.rise + prog.far_dwell / 2.0).p;
     // Outward, past the rollers: inside, its leader would cross the working profile.
-    let outward = view.at(far) - view.origin;
+    let outward = view.p(far) - view.origin;
     // A knife's working profile is its pitch profile: one curve, both names.
+    let knife = d.roller == 0.0;
     let name = if knife { l.knife_profile() } else { l.pitch_profile() };
-    labels.add_line_name(view.at(far), outward, LabelText::new(name, ""), 2.5, 3);
+    labels.add_line_name(view.p(far), outward, LabelText::new(name, ""), 2.5, 3);
     if !knife {
         // On the curve itself (its leader reaches it), the text inside the cam, which is
         // free of the construction.
         let (w, _) = pr.working(d.roller, prog.rise / 2.0);
-        let inward = view.origin - view.at(w);
-        labels.add_line_name(view.at(w), inward, LabelText::new(l.working_profile(), ""), 2.5, 3);
+        let inward = view.origin - view.p(w);
+        labels.add_line_name(view.p(w), inward, LabelText::new(l.working_profile(), ""), 2.5, 3);
     }
-    // r_min: a radius into the middle of the near dwell, where the profile is the base circle.
+}
+
+/// r_min: a radius into the middle of the near dwell, where the profile is the base circle,
+/// with the base circle's name on a leader of its own a little further round (clear of the
+/// radius' arrowhead).
+fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words: &CamWords) {
+    let (pr, prog) = (&d.profile, &d.spec.program);
+    let l = words.sheet;
     let near = prog.rise + prog.far_dwell + prog.ret;
     let dir = pr.pitch((near + TAU) / 2.0).p.unit();
     let base = dir * d.centre.r_min;
-    vector(g, view.origin, view.at(base), THIN);
-    // Its name on a leader of its own, a little further round the near dwell (clear of the
-    // radius' arrowhead).
+    vector(g, view.origin, view.p(base), THIN);
     let aside = pr.pitch(near + (TAU - near) * 0.7).p.unit() * d.centre.r_min;
-    let out = view.at(aside) - view.origin;
-    labels.add_line_name(view.at(aside), out, LabelText::new(l.base_circle(), ""), 2.5, 3);
+    let out = view.p(aside) - view.origin;
+    labels.add_line_name(view.p(aside), out, LabelText::new(l.base_circle(), ""), 2.5, 3);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
-        fmt::value(d.centre.r_min * 1e3, lang),
-        c.unit_mm()
+        fmt::value(mm(d.centre.r_min), words.lang),
+        words.common.unit_mm()
     ));
-    labels.add_ranked(view.at(base * 0.55), Vec2::ZERO, r_text, 2.5, 1);
-    ProfileDrawn { mu, pieces: pieces.count, deviation: pieces.deviation }
+    labels.add_ranked(view.p(base * 0.55), Vec2::ZERO, r_text, 2.5, 1);
 }
 
 /// The inversion's construction for each numbered position (cam frame through `at`).
@@ -188,7 +202,7 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
             let a_w = d.centre_distance().unwrap_or_default();
             let (from, sweep) = pivot_arc(d);
             let o = at(Vec2::ZERO);
-            let (v0, v1) = (at(pr.carried(pivot, from)) - o, at(pr.carried(pivot, from + 1e-3)) - o);
+            let (v0, v1) = (at(pr.carried(pivot, from)) - o, at(pr.carried(pivot, from + PROBE_TURN)) - o);
             // The carried pivot turns by φ; on paper clockwise or not as the view mirrors.
             let turn = if v0.cross(v1) > 0.0 { 1.0 } else { -1.0 };
             g.curve(Path::arc(o, a_w / mu, atan2(v0.y, v0.x), turn * sweep), AXIS);
@@ -207,7 +221,7 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
         }
         Follower::Translating => {
             let e = d.centre.o.x.abs();
-            if e * 1e3 > 1e-9 {
+            if mm(e) > tol::OFFSET_CIRCLE_MM {
                 g.circle(at(Vec2::ZERO), e / mu, AXIS);
             }
             // The axis' foot nearest O, and the axis from it past the roller centre.
@@ -220,6 +234,10 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
         }
     }
 }
+
+/// A small turn of the cam, rad, that shows which way the carried pivot runs on paper: far
+/// above round-off, far below the pivot's arc.
+const PROBE_TURN: f64 = 1e-3;
 
 /// Round O, mm, the translating follower's axis lines stop: with a small offset they all
 /// meet there and would hide the cam's bearing.

@@ -1,5 +1,10 @@
 //! Sheet 2's texts (`templates/labels/gears.yaml`).
 
+use crate::drawing::labels::Wording;
+
+/// Sheet 2's language with its words.
+pub type GearWords = Wording<GearLabels>;
+
 crate::label_set! {
     /// Every word of sheet 2 that is not shared with the other sheets.
     pub struct GearLabels = "gears.yaml" {

@@ -7,14 +7,15 @@ mod mesh_view;
 mod planetary_view;
 mod results;
 mod tables;
+mod teeth_view;
 
-pub use mesh_view::{INVOLUTE_PIECES, MeshDrawn};
+pub use mesh_view::MeshDrawn;
+pub use teeth_view::INVOLUTE_PIECES;
 
 use super::scaffold::Composition;
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::drawing::fmt;
 use crate::drawing::frame;
-use crate::drawing::labels::Language;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
@@ -22,10 +23,11 @@ use crate::drawing::table::CELL_TEXT;
 use crate::drawing::text::{paragraph, wrap};
 use crate::gears::pair::PairWarning;
 use crate::gears::tooth::Outline;
+use crate::num::units::mm;
 use crate::project::gears::PlanetaryProject;
 use crate::project::{GearsProject, Project};
 use kurbo::{Point, Rect};
-use labels::GearLabels;
+use labels::GearWords;
 use mesh_view::{MeshInput, draw_mesh};
 
 /// This sheet's place in the course.
@@ -57,9 +59,9 @@ const RIGHT_X0: f64 = 448.0;
 
 /// Builds sheet 2.
 pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> {
-    let lang = ctx.info.language;
-    let l = GearLabels::get(lang);
-    let (mesh, drawn) = mesh_group(p, lang);
+    let words = GearWords::new(ctx.info.language);
+    let l = words.sheet;
+    let (mesh, drawn) = mesh_group(p, &words);
 
     // The right half: the planetary views on top, the tables below.
     let mut groups = vec![mesh];
@@ -68,14 +70,14 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let mut y_tables = right.y0;
     let mut planetary_mu = None;
     if let Some(pl) = &p.planetary {
-        let (g, mu, bottom) = planetary_group(pl, right, l, lang);
+        let (g, mu, bottom) = planetary_group(pl, right, &words);
         planetary_mu = Some(mu);
         groups.push(g);
         y_tables = bottom + 4.0;
     }
-    let notes = tables::notes(p, drawn.contact_ratio_drawn, lang);
+    let notes = tables::notes(p, drawn.contact_ratio_drawn, &words);
     let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
-    groups.push(tables::group(&notes, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, lang));
+    groups.push(tables::group(&notes, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, &words));
 
     let name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
     let composition = Composition {
@@ -91,14 +93,14 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
 }
 
 /// The mesh on the left half: title on top, notes at the bottom, the drawing between.
-fn mesh_group(p: &GearsProject, lang: Language) -> (Group, MeshDrawn) {
-    let l = GearLabels::get(lang);
+fn mesh_group(p: &GearsProject, words: &GearWords) -> (Group, MeshDrawn) {
+    let (l, lang) = (words.sheet, words.lang);
     let outlines = [Outline::new(&p.pair.spec, &p.pair.wheels[0]), Outline::new(&p.pair.spec, &p.pair.wheels[1])];
-    let notes = mesh_notes(p, l, lang);
+    let notes = mesh_notes(p, words);
     let mut mesh = Group::new("mesh", MESH);
     let mut labels = Labels::new();
     let title = l.mesh_title(
-        &fmt::trimmed(p.pair.spec.module * 1e3, lang),
+        &fmt::trimmed(mm(p.pair.spec.module), lang),
         &p.pair.wheels[0].z.to_string(),
         &p.pair.wheels[1].z.to_string(),
     );
@@ -128,7 +130,8 @@ fn mesh_group(p: &GearsProject, lang: Language) -> (Group, MeshDrawn) {
 }
 
 /// The notes under the mesh: shifts chosen, warnings, the user's assumptions.
-fn mesh_notes(p: &GearsProject, l: &GearLabels, lang: Language) -> Vec<String> {
+fn mesh_notes(p: &GearsProject, words: &GearWords) -> Vec<String> {
+    let (l, lang) = (words.sheet, words.lang);
     let v = |x: f64| fmt::value(x, lang);
     let mut out = vec![l.active_note().to_string()];
     for (i, w) in p.pair.wheels.iter().enumerate() {
@@ -139,7 +142,7 @@ fn mesh_notes(p: &GearsProject, l: &GearLabels, lang: Language) -> Vec<String> {
     for w in &p.warnings {
         out.push(match w {
             PairWarning::Undercut { wheel, x, x_min } => l.undercut_note(&wheel.to_string(), &v(*x), &v(*x_min)),
-            PairWarning::ThinTip { wheel, s_a, .. } => l.thin_tip_note(&wheel.to_string(), &v(s_a * 1e3)),
+            PairWarning::ThinTip { wheel, s_a, .. } => l.thin_tip_note(&wheel.to_string(), &v(mm(*s_a))),
             PairWarning::LowContactRatio { eps } => l.low_ratio_note(&v(*eps)),
             PairWarning::Interference { wheel } => l.interference_note(&wheel.to_string()),
         });
@@ -149,7 +152,8 @@ fn mesh_notes(p: &GearsProject, l: &GearLabels, lang: Language) -> Vec<String> {
 }
 
 /// The planetary views in the top of `right`; returns the group, its μ_l and its bottom.
-fn planetary_group(pl: &PlanetaryProject, right: Rect, l: &GearLabels, lang: Language) -> (Group, f64, f64) {
+fn planetary_group(pl: &PlanetaryProject, right: Rect, words: &GearWords) -> (Group, f64, f64) {
+    let (l, lang) = (words.sheet, words.lang);
     let s = &pl.stage;
     let size = (right.width() * 0.5 - 10.0).min(190.0);
     let mu = planetary_view::scale_for(s, pl.module, size);
@@ -194,7 +198,7 @@ fn diagnostics(p: &GearsProject) -> Vec<String> {
         .iter()
         .filter_map(|w| match w {
             PairWarning::ThinTip { wheel, s_a, limit } => {
-                Some(format!("wheel {wheel}'s tip is thin: s_a = {:.3} mm < 0.25·m = {:.3} mm", s_a * 1e3, limit * 1e3))
+                Some(format!("wheel {wheel}'s tip is thin: s_a = {:.3} mm < 0.25·m = {:.3} mm", mm(*s_a), mm(*limit)))
             }
             PairWarning::LowContactRatio { eps } => Some(format!("the contact ratio {eps:.3} is below 1.2")),
             PairWarning::Interference { wheel } => {

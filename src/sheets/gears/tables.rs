@@ -1,9 +1,8 @@
 //! Sheet 2's tables: the wheels and the pair, the planetary stage and its conditions, as the
 //! note writes them and as the sheet draws them.
 
-use super::labels::GearLabels;
+use super::labels::GearWords;
 use crate::drawing::fmt;
-use crate::drawing::labels::{Common, Language};
 use crate::drawing::scene::Group;
 use crate::drawing::table::{self, CELL_TEXT, Table};
 use crate::drawing::text::LabelText;
@@ -15,8 +14,8 @@ use kurbo::Rect;
 
 /// The note's tables in the sheet's language; `eps_drawn` is the contact ratio measured on
 /// the drawing.
-pub fn notes(p: &GearsProject, eps_drawn: f64, lang: Language) -> Vec<NoteTable> {
-    let (l, c) = (GearLabels::get(lang), Common::get(lang));
+pub fn notes(p: &GearsProject, eps_drawn: f64, words: &GearWords) -> Vec<NoteTable> {
+    let (l, c, lang) = (words.sheet, words.common, words.lang);
     let mut out = vec![
         scaffold::note(lang, report::gears::wheels(&p.pair), l.pair_table(), vec![l.wheel("1"), l.wheel("2")], true),
         scaffold::note(lang, report::gears::pair(&p.pair, eps_drawn), l.pair_table(), vec![c.value().into()], true),
@@ -31,15 +30,15 @@ pub fn notes(p: &GearsProject, eps_drawn: f64, lang: Language) -> Vec<NoteTable>
 }
 
 /// Draws the tables in `region`, in columns left to right.
-pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, lang: Language) -> Group {
-    let drawn = notes.iter().map(|n| sheet_table(n, tolerance, lang));
+pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &GearWords) -> Group {
+    let drawn = notes.iter().map(|n| sheet_table(n, tolerance, words));
     table::flow("tables", drawn, region, 4.0)
 }
 
 /// A table as sheet 2 draws it: units after the symbols, the conditions' verdicts in words,
 /// the ratio's condition with its tolerance, the pair's table as the wheels' continuation.
-fn sheet_table(n: &NoteTable, tolerance: Option<f64>, lang: Language) -> Table {
-    let (l, c) = (GearLabels::get(lang), Common::get(lang));
+fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords) -> Table {
+    let (l, c, lang) = (words.sheet, words.common, words.lang);
     let conditions = n.table.id == "conditions";
     let mut rows = scaffold::drawn_rows(n, lang, !conditions);
     for ((label, cells), r) in rows.iter_mut().zip(&n.table.rows) {

@@ -6,18 +6,19 @@
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
 use super::forces_view::{ForceScales, ForcesInput, draw_forces, fit_comfortably};
-use super::labels::LeverLabels;
-use super::mechanism_view::{MechanismView, View, world_extent};
+use super::labels::LeverWords;
+use super::mechanism_view::{MechanismView, world_extent};
+use super::note_tables::{note_tables, sheet_table, tables_group, with_units};
 use super::plans_view::{PlanCell, Sizing, draw_plan, label_bounds, size_plans};
 use crate::drawing::fmt;
 use crate::drawing::frame;
-use crate::drawing::labels::{Common, Language};
 use crate::drawing::layout::Layout;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{AXIS, Anchor, Group, Scene, Text};
-use crate::drawing::table::{CELL_TEXT, Table};
-use crate::drawing::text::{LabelText, TooLong, paragraph, wrap};
+use crate::drawing::table::Table;
+use crate::drawing::text::{LabelText, TooLong};
+use crate::drawing::view::View;
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
 use crate::project::LeverProject;
@@ -106,151 +107,58 @@ const FORCES_WIDTHS: [f64; 3] = [FORCES_MIN_W, 430.0, 390.0];
 /// [`compose`] with a force column at least `forces_w` wide; also whether the force drawings
 /// fit it comfortably.
 fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, bool), TooLong> {
-    let m = &inp.project.mechanism;
-    let lang = inp.ctx.info.language;
-    let (l, c) = (LeverLabels::get(lang), Common::get(lang));
+    let words = LeverWords::new(inp.ctx.info.language);
     let inner = frame::inner();
-
-    // The force drawings' input (tables 3–5 as drawn), to size the regions by.
-    let force_input = inp.forces.map(|(fa, _)| {
-        let (t3, t4, t5) = (&inp.notes[2], &inp.notes[3], &inp.notes[4]);
-        let tables = vec![
-            Table { corner: c.link_col().into(), ..with_units(sheet_table(t3, lang), t3, lang) },
-            Table { cell_w: 16.0, ..sheet_table(t4, lang) },
-            Table { cell_w: 18.0, header: vec![c.value().to_string()], ..with_units(sheet_table(t5, lang), t5, lang) },
-        ];
-        ForcesInput { m, fa, state: &k.assigned.state, phi_deg: k.assigned.phi.to_degrees(), l, c, lang, tables }
-    });
-
-    // Mechanism: the largest GOST μ_l that fits its box, the region shrunk to the drawing.
-    // With a force analysis the box is the tallest that leaves the force drawings below it
-    // room without cramping them.
-    let world = world_extent(m, k, &inp.project.kulisa_lengths);
-    let force_region_below =
-        |mech: Rect| Rect::new(inner.x0 + 5.0, mech.y1 + 4.0, mech.x1.max(inner.x0 + 5.0 + forces_w), inner.y1 - 4.0);
-    let heights: &[f64] = if force_input.is_some() { &MECH_HEIGHTS_FORCES } else { &[MECH_MAX_H] };
-    let fits = |h: f64| {
-        let (r, _, _) = mechanism_region(world, h, inner);
-        let below = force_region_below(r);
-        force_input.as_ref().is_none_or(|fi| fit_comfortably(fi, below, side_region(r, below)))
-    };
-    let comfortable = heights.iter().copied().find(|&h| fits(h));
-    let max_h = comfortable.unwrap_or(heights[heights.len() - 1]);
-    let (mech_region, mu_l, draw_h) = mechanism_region(world, max_h, inner);
-    let mut mech = Group::new("mechanism", mech_region);
-    let origin = Point::new(
-        mech_region.center().x - world.center().x / mu_l,
-        mech_region.y0 + HEADER + MECH_PAD + draw_h / 2.0 + world.center().y / mu_l,
-    );
-    region_header(
-        &mut mech,
-        mech_region,
-        l.positions_title(),
-        &[
-            LabelText::new("μ", "l").with_tail(format!(
-                " = {} {}",
-                fmt::localise(&scale::format(mu_l), lang),
-                c.unit_m_per_mm()
-            )),
-            LabelText::new(format!("{}: {}", l.structure(), k.structure.formula), ""),
-            LabelText::new(
-                format!(
-                    "W = 3·{} − 2·{} − {} = {}",
-                    k.structure.moving_links, k.structure.p5, k.structure.p4, k.structure.dof
-                ),
-                "",
-            ),
-        ],
-    );
-    // The legend shows the trajectories' own line type, then says what it is.
-    let legend_y = mech_region.y1 - 2.0;
-    let sample = (Point::new(mech_region.x0 + 2.0, legend_y - 1.2), Point::new(mech_region.x0 + 16.0, legend_y - 1.2));
-    mech.line(sample.0, sample.1, AXIS);
-    mech.text(Text::new(Point::new(mech_region.x0 + 18.0, legend_y), l.trajectories(), 2.5, Anchor::Start));
-    let mut labels = Labels::new();
-    MechanismView { m, k, view: View { mu: mu_l, origin }, kulisa: &inp.project.kulisa_lengths }
-        .draw(&mut mech, &mut labels);
-    labels.place(&mut mech, mech_region.inflate(-0.5, -0.5));
-
+    let force_input = force_input(inp, k, &words);
+    let mech = mechanism_group(inp, k, &words, force_input.as_ref(), Column { width: forces_w, inner });
     // With a force analysis, its drawings fill the left column below the mechanism and the
     // acceleration plans move to the right column.
-    let force_region = inp.forces.map(|_| force_region_below(mech_region));
-    let left_x1 = force_region.map_or(mech_region.x1, |r| r.x1);
+    let force_region = inp.forces.map(|_| force_region_below(mech.region, Column { width: forces_w, inner }));
+    let left_x1 = force_region.map_or(mech.region.x1, |r| r.x1);
 
     // Right column: the tables above the title block decide how tall the velocity plans are.
     let right_x0 = left_x1 + 6.0;
-    let t1 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[0], lang) };
-    let t2 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[1], lang) };
-    let (w1, h1) = t1.size();
-    let (w2, h2) = t2.size();
-    let right_w = inner.x1 - 4.0 - right_x0;
-    let side_by_side = 1.0 + w1 + 8.0 + w2 + 1.0 <= right_w;
-    let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
-    let assumptions: Vec<String> = inp.project.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
-    let notes_lines = notes_height(&assumptions, right_w);
-    if notes_lines > NOTES_MAX_H {
-        let all = assumptions.join(" ");
-        return Err(TooLong::new("mechanism.assumptions", &all, "notes above the title block", (right_w, NOTES_MAX_H)));
-    }
-    let tables_top = frame::title_block_rect().y0 - 3.0 - notes_lines - tables_h - 4.0;
+    let notes = note_tables(inp, &words, (right_x0, inner.x1 - 4.0))?;
+    let plans_bottom = notes.region.y0 - 6.0;
+    let vel_bottom = if force_region.is_some() { TOP + (plans_bottom - TOP) * 0.58 } else { plans_bottom };
+    let (l, c) = (words.sheet, words.common);
 
     // Velocity plans: every position, one common μ_v.
-    let plans_bottom = tables_top - 6.0;
-    let vel_bottom = if force_region.is_some() { TOP + (plans_bottom - TOP) * 0.58 } else { plans_bottom };
     let vel_region = Rect::new(right_x0, TOP, inner.x1 - 4.0, vel_bottom);
-    let vplans: Vec<_> = k.positions.iter().map(|p| velocity_plan(m, &p.state)).collect();
-    let mut vel = Group::new("velocity-plans", vel_region);
-    let (vdrawn, mu_v) = plans_region(
-        &mut vel,
-        vel_region,
-        &vplans,
-        k.positions.iter().collect(),
-        "p",
-        lang,
-        (l.velocity_plans(), "v", c.unit_v_per_mm()),
-    );
+    let vplans: Vec<_> = k.positions.iter().map(|p| velocity_plan(&inp.project.mechanism, &p.state)).collect();
+    let velocity = PlansRegion {
+        id: "velocity-plans",
+        region: vel_region,
+        title: l.velocity_plans(),
+        pole: "p",
+        symbol: "v",
+        unit: c.unit_v_per_mm(),
+    };
+    let (vel, vdrawn, mu_v) = plans_group(&velocity, &vplans, k.positions.iter().collect(), &words);
 
     // Acceleration plans: the chosen positions, one common μ_a.
     let acc_region = match force_region {
         Some(_) => Rect::new(right_x0, vel_bottom + 4.0, inner.x1 - 4.0, plans_bottom),
-        None => Rect::new(inner.x0 + 5.0, mech_region.y1 + 4.0, mech_region.x1, inner.y1 - 4.0),
+        None => Rect::new(inner.x0 + 5.0, mech.region.y1 + 4.0, mech.region.x1, inner.y1 - 4.0),
     };
-    let aplans: Vec<_> = k.acceleration.iter().map(|&i| acceleration_plan(m, &k.positions[i].state)).collect();
-    let mut acc = Group::new("acceleration-plans", acc_region);
-    let (adrawn, mu_a) = plans_region(
-        &mut acc,
-        acc_region,
-        &aplans,
-        k.acceleration.iter().map(|&i| &k.positions[i]).collect(),
-        "π",
-        lang,
-        (l.acceleration_plans(), "a", c.unit_a_per_mm()),
-    );
-
-    // Tables and notes.
-    let tables_region = Rect::new(right_x0, tables_top, inner.x1 - 4.0, frame::title_block_rect().y0 - 3.0);
-    let mut tables = Group::new("tables", tables_region);
-    let r1 = t1.draw(&mut tables, Point::new(tables_region.x0 + 1.0, tables_region.y0));
-    let at2 = if side_by_side {
-        Point::new(r1.x1 + 8.0, tables_region.y0)
-    } else {
-        Point::new(tables_region.x0 + 1.0, r1.y1 + 6.0)
+    let aplans: Vec<_> =
+        k.acceleration.iter().map(|&i| acceleration_plan(&inp.project.mechanism, &k.positions[i].state)).collect();
+    let acceleration = PlansRegion {
+        id: "acceleration-plans",
+        region: acc_region,
+        title: l.acceleration_plans(),
+        pole: "π",
+        symbol: "a",
+        unit: c.unit_a_per_mm(),
     };
-    let r2 = t2.draw(&mut tables, at2);
-    let notes_top = r1.y1.max(r2.y1) + 4.0;
-    notes(&mut tables, l, c, &assumptions, Rect::new(tables_region.x0, notes_top, tables_region.x1, tables_region.y1));
+    let positions = k.acceleration.iter().map(|&i| &k.positions[i]).collect();
+    let (acc, adrawn, mu_a) = plans_group(&acceleration, &aplans, positions, &words);
 
-    let mut force_scales = None;
-    let mut extra = Vec::new();
-    if let (Some(region), Some(input)) = (force_region, &force_input) {
-        let mut fg = Group::new("forces", region);
-        let mut side = side_region(mech_region, region).map(|r| Group::new("forces-beside-mechanism", r));
-        force_scales = Some(draw_forces(&mut fg, side.as_mut(), input));
-        extra.push(fg);
-        extra.extend(side.filter(|g| !g.items.is_empty()));
-    }
-    let mut groups = vec![mech, vel, acc, tables];
-    groups.extend(extra);
+    let tables = tables_group(&notes, &words);
+    let (forces, force_scales) = force_groups(force_region, force_input.as_ref(), mech.region);
+    let mu_l = mech.mu_l;
+    let mut groups = vec![mech.group, vel, acc, tables];
+    groups.extend(forces);
     let composition = Composition {
         name: if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() }.to_string(),
         mu_l,
@@ -271,8 +179,130 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
             force_scales,
             trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
         },
-        comfortable.is_some(),
+        mech.comfortable,
     ))
+}
+
+/// The left column's least width for the force drawings and the frame's inside, mm.
+#[derive(Clone, Copy)]
+struct Column {
+    width: f64,
+    inner: Rect,
+}
+
+/// The force drawings' input (tables 3–5 as drawn), to size the regions by.
+fn force_input<'a>(inp: &'a Input, k: &'a Kinematics, words: &LeverWords) -> Option<ForcesInput<'a>> {
+    let (c, lang) = (words.common, words.lang);
+    inp.forces.map(|(fa, _)| {
+        let (t3, t4, t5) = (&inp.notes[2], &inp.notes[3], &inp.notes[4]);
+        let tables = vec![
+            Table { corner: c.link_col().into(), ..with_units(sheet_table(t3, lang), t3, lang) },
+            Table { cell_w: 16.0, ..sheet_table(t4, lang) },
+            Table { cell_w: 18.0, header: vec![c.value().to_string()], ..with_units(sheet_table(t5, lang), t5, lang) },
+        ];
+        ForcesInput {
+            m: &inp.project.mechanism,
+            fa,
+            state: &k.assigned.state,
+            phi_deg: k.assigned.phi.to_degrees(),
+            words: *words,
+            tables,
+        }
+    })
+}
+
+/// The region of the force drawings below the mechanism's, at least as wide as the column.
+fn force_region_below(mech: Rect, column: Column) -> Rect {
+    let inner = column.inner;
+    Rect::new(inner.x0 + 5.0, mech.y1 + 4.0, mech.x1.max(inner.x0 + 5.0 + column.width), inner.y1 - 4.0)
+}
+
+/// The mechanism drawn in its region.
+struct MechanismDrawn {
+    group: Group,
+    region: Rect,
+    mu_l: f64,
+    /// Whether the force drawings fit below it comfortably.
+    comfortable: bool,
+}
+
+/// The mechanism: the largest GOST μ_l that fits its box, the region shrunk to the drawing.
+/// With a force analysis the box is the tallest that leaves the force drawings below it
+/// room without cramping them.
+fn mechanism_group(
+    inp: &Input,
+    k: &Kinematics,
+    words: &LeverWords,
+    forces: Option<&ForcesInput>,
+    column: Column,
+) -> MechanismDrawn {
+    let m = &inp.project.mechanism;
+    let world = world_extent(m, k, &inp.project.kulisa_lengths);
+    let heights: &[f64] = if forces.is_some() { &MECH_HEIGHTS_FORCES } else { &[MECH_MAX_H] };
+    let fits = |h: f64| {
+        let (r, _, _) = mechanism_region(world, h, column.inner);
+        let below = force_region_below(r, column);
+        forces.is_none_or(|fi| fit_comfortably(fi, below, side_region(r, below)))
+    };
+    let comfortable = heights.iter().copied().find(|&h| fits(h));
+    let max_h = comfortable.unwrap_or(heights[heights.len() - 1]);
+    let (region, mu_l, draw_h) = mechanism_region(world, max_h, column.inner);
+    let mut group = Group::new("mechanism", region);
+    let origin = Point::new(
+        region.center().x - world.center().x / mu_l,
+        region.y0 + HEADER + MECH_PAD + draw_h / 2.0 + world.center().y / mu_l,
+    );
+    mechanism_header(&mut group, region, mu_l, k, words);
+    trajectory_legend(&mut group, region, words);
+    let mut labels = Labels::new();
+    MechanismView { m, k, view: View::new(origin, mu_l), kulisa: &inp.project.kulisa_lengths }
+        .draw(&mut group, &mut labels);
+    labels.place(&mut group, region.inflate(-0.5, -0.5));
+    MechanismDrawn { group, region, mu_l, comfortable: comfortable.is_some() }
+}
+
+/// The mechanism's title, μ_l, the structure formula and the degrees of freedom.
+fn mechanism_header(g: &mut Group, region: Rect, mu_l: f64, k: &Kinematics, words: &LeverWords) {
+    let (l, c, lang) = (words.sheet, words.common, words.lang);
+    let s = &k.structure;
+    region_header(
+        g,
+        region,
+        l.positions_title(),
+        &[
+            LabelText::new("μ", "l").with_tail(format!(
+                " = {} {}",
+                fmt::localise(&scale::format(mu_l), lang),
+                c.unit_m_per_mm()
+            )),
+            LabelText::new(format!("{}: {}", l.structure(), s.formula), ""),
+            LabelText::new(format!("W = 3·{} − 2·{} − {} = {}", s.moving_links, s.p5, s.p4, s.dof), ""),
+        ],
+    );
+}
+
+/// The legend shows the trajectories' own line type, then says what it is.
+fn trajectory_legend(g: &mut Group, region: Rect, words: &LeverWords) {
+    let legend_y = region.y1 - 2.0;
+    let sample = (Point::new(region.x0 + 2.0, legend_y - 1.2), Point::new(region.x0 + 16.0, legend_y - 1.2));
+    g.line(sample.0, sample.1, AXIS);
+    g.text(Text::new(Point::new(region.x0 + 18.0, legend_y), words.sheet.trajectories(), 2.5, Anchor::Start));
+}
+/// The force drawings below the mechanism and, when it leaves room, beside it.
+fn force_groups(
+    region: Option<Rect>,
+    input: Option<&ForcesInput>,
+    mech_region: Rect,
+) -> (Vec<Group>, Option<ForceScales>) {
+    let (Some(region), Some(input)) = (region, input) else {
+        return (Vec::new(), None);
+    };
+    let mut fg = Group::new("forces", region);
+    let mut side = side_region(mech_region, region).map(|r| Group::new("forces-beside-mechanism", r));
+    let scales = draw_forces(&mut fg, side.as_mut(), input);
+    let mut out = vec![fg];
+    out.extend(side.filter(|g| !g.items.is_empty()));
+    (out, Some(scales))
 }
 
 /// The room beside a narrow mechanism drawing, above the force region, for force cells.
@@ -298,10 +328,6 @@ fn mechanism_region(world: Rect, max_h: f64, inner: Rect) -> (Rect, f64, f64) {
     );
     (r, mu_l, draw_h)
 }
-
-/// The notes (the exactness note and the assumptions) may take this much height, mm.
-const NOTES_MAX_H: f64 = 60.0;
-
 /// A region's title (5 mm) and its line of scale and formula (3.5 mm).
 fn region_header(g: &mut Group, r: Rect, title: &str, lines: &[LabelText]) {
     g.text(Text::new(Point::new(r.x0 + 2.0, r.y0 + 6.0), title, 5.0, Anchor::Start));
@@ -322,42 +348,57 @@ pub struct PlanDrawn {
     pub size_mm: [f64; 2],
 }
 
-/// Draws plans in cells filling `region` below its header (see [`size_plans`]); returns
-/// what each plan became and the scale they share, if one.
-#[allow(clippy::too_many_arguments)]
-fn plans_region(
-    g: &mut Group,
+/// A region of plans: its group's id and region, its title, the plans' pole and the
+/// quantity and unit of their scale.
+struct PlansRegion<'a> {
+    id: &'a str,
     region: Rect,
+    title: &'a str,
+    pole: &'a str,
+    symbol: &'a str,
+    unit: &'a str,
+}
+
+/// Draws plans in cells filling the region below its header (see [`size_plans`]); returns
+/// the group, what each plan became and the scale they share, if one.
+fn plans_group(
+    r: &PlansRegion,
     plans: &[Plan],
     positions: Vec<&Position>,
-    pole: &str,
-    lang: Language,
-    (title, sym, unit): (&str, &str, &str),
-) -> (Vec<PlanDrawn>, Option<f64>) {
-    let body = Rect::new(region.x0, region.y0 + HEADER, region.x1, region.y1);
+    words: &LeverWords,
+) -> (Group, Vec<PlanDrawn>, Option<f64>) {
+    let (l, lang) = (words.sheet, words.lang);
+    let mut g = Group::new(r.id, r.region);
+    let body = Rect::new(r.region.x0, r.region.y0 + HEADER, r.region.x1, r.region.y1);
     let scale_line = |mu: f64| {
-        LabelText::new("μ", sym).with_tail(format!(" = {} {}", fmt::localise(&scale::format(mu), lang), unit))
+        LabelText::new("μ", r.symbol).with_tail(format!(" = {} {}", fmt::localise(&scale::format(mu), lang), r.unit))
     };
-    let l = LeverLabels::get(lang);
     // A cell holds its title (3.5 mm) and a scale line (2.5 mm) of the longest value.
     let min_w = positions
         .iter()
         .map(|p| LabelText::new(l.position(&p.label), "").width(3.5))
         .fold(scale_line(0.0025).width(2.5), f64::max)
         + 5.0;
-    let sizing: Sizing = size_plans(body, plans, pole, min_w);
+    let sizing: Sizing = size_plans(body, plans, r.pole, min_w);
     let header = if sizing.common {
         scale_line(sizing.mu[0])
     } else {
-        LabelText::new("μ", sym).with_tail(format!(": {}", l.own_scales()))
+        LabelText::new("μ", r.symbol).with_tail(format!(": {}", l.own_scales()))
     };
-    region_header(g, region, title, &[header]);
+    region_header(&mut g, r.region, r.title, &[header]);
     for ((plan, &cell), (pos, &mu)) in plans.iter().zip(&sizing.cells).zip(positions.iter().zip(&sizing.mu)) {
         let mut labels = Labels::new();
         let title = l.position(&pos.label);
-        let c = PlanCell { cell, title: &title, plan, mu, pole, scale_line: (!sizing.common).then(|| scale_line(mu)) };
-        draw_plan(g, &c, &mut labels);
-        labels.place(g, label_bounds(cell));
+        let c = PlanCell {
+            cell,
+            title: &title,
+            plan,
+            mu,
+            pole: r.pole,
+            scale_line: (!sizing.common).then(|| scale_line(mu)),
+        };
+        draw_plan(&mut g, &c, &mut labels);
+        labels.place(&mut g, label_bounds(cell));
     }
     let drawn = positions
         .iter()
@@ -365,52 +406,5 @@ fn plans_region(
         .zip(&sizing.mu)
         .map(|((p, size_mm), &mu)| PlanDrawn { position: p.label.clone(), mu, size_mm })
         .collect();
-    (drawn, sizing.common.then(|| sizing.mu[0]))
-}
-
-/// A note table as sheet 1 draws it: labels without units (the title names them), cells
-/// at least 11 mm wide.
-fn sheet_table(n: &NoteTable, lang: Language) -> Table {
-    let rows = scaffold::drawn_rows(n, lang, false);
-    Table {
-        title: n.title.clone(),
-        header: n.column_titles.clone(),
-        label_w: label_column(&rows),
-        rows,
-        cell_w: 11.0,
-        corner: String::new(),
-    }
-}
-
-/// A table whose rows carry their own units (the title names none): "m, kg", "J_S, kg·m²".
-fn with_units(table: Table, n: &NoteTable, lang: Language) -> Table {
-    let rows = scaffold::drawn_rows(n, lang, true);
-    Table { label_w: label_column(&rows), rows, ..table }
-}
-
-/// The label column's width: the widest label and 1.5 mm either side, at least 14 mm.
-fn label_column(rows: &[(LabelText, Vec<String>)]) -> f64 {
-    rows.iter().map(|(l, _)| l.width(CELL_TEXT) + 3.0 + CELL_TEXT * crate::drawing::text::SLANT).fold(14.0, f64::max)
-}
-
-/// Height the notes need in a column of width `w`.
-fn notes_height(assumptions: &[String], w: f64) -> f64 {
-    let lines: usize = assumptions.iter().map(|a| wrap(a, 2.5, w - 2.0).len()).sum();
-    10.0 + if assumptions.is_empty() { 0.0 } else { 4.5 + lines as f64 * 4.0 + assumptions.len() as f64 }
-}
-
-fn notes(g: &mut Group, l: &LeverLabels, c: &Common, assumptions: &[String], r: Rect) {
-    let mut y = r.y0 + 3.5;
-    let w = r.width() - 2.0;
-    g.text(Text::new(Point::new(r.x0, y), l.exact_note(), 2.5, Anchor::Start));
-    y += 6.0;
-    if assumptions.is_empty() {
-        return;
-    }
-    g.text(Text::new(Point::new(r.x0, y), format!("{}:", c.assumed()), 2.5, Anchor::Start));
-    y += 4.5;
-    for a in assumptions {
-        let lines = wrap(a, 2.5, w);
-        y = paragraph(g, Point::new(r.x0, y), &lines, 2.5, Anchor::Start) + 1.0;
-    }
+    (g, drawn, sizing.common.then(|| sizing.mu[0]))
 }

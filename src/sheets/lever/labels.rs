@@ -1,6 +1,10 @@
 //! Sheet 1's texts (`templates/labels/lever.yaml`).
 
+use crate::drawing::labels::Wording;
 use crate::report::ForceKind;
+
+/// Sheet 1's language with its words.
+pub type LeverWords = Wording<LeverLabels>;
 
 crate::label_set! {
     /// Every word of sheet 1 that is not shared with the other sheets.

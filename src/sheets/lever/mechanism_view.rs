@@ -8,6 +8,7 @@ use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, Group, MAIN, Pen, THIN};
 use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, hatch, slider};
 use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
 use crate::lever::analysis::{Kinematics, Position};
 use crate::lever::linkage::{LinkKind, Mechanism, PointId, Step};
 use crate::num::math::{self, Norm};
@@ -18,24 +19,6 @@ use kurbo::{CubicBez, Point, Rect, Vec2};
 const SLIDER: (f64, f64) = (10.0, 5.0);
 const BLOCK: (f64, f64) = (7.0, 4.0);
 const JOINT_R: f64 = 1.0;
-
-/// World (metres, y up) to paper (mm, y down) at scale `mu` (m/mm).
-#[derive(Debug, Clone, Copy)]
-pub struct View {
-    pub mu: f64,
-    /// Paper position of the world origin.
-    pub origin: Point,
-}
-
-impl View {
-    pub fn p(&self, v: Vec2) -> Point {
-        Point::new(self.origin.x + v.x / self.mu, self.origin.y - v.y / self.mu)
-    }
-    /// A world direction as a paper direction.
-    pub fn dir(&self, v: Vec2) -> Vec2 {
-        Vec2::new(v.x, -v.y)
-    }
-}
 
 /// Drawn length of a kulisa: given, or its longest reach to the block plus 15 %.
 fn kulisa_len(k: &Kinematics, c: PointId, a3: PointId, given: Option<f64>) -> f64 {
@@ -115,7 +98,7 @@ impl MechanismView<'_> {
     fn crank_circle(&self, g: &mut Group) {
         let crank = self.m.crank();
         let c = self.k.assigned.state.points[crank.pivot].p;
-        g.circle(self.view.p(c), crank.length / self.view.mu, THIN);
+        g.circle(self.view.p(c), self.view.len(crank.length), THIN);
     }
 
     /// Each guide: its axis (dash-dot) over the slider's travel and a hatched frame line.

@@ -6,6 +6,7 @@ pub mod compose;
 pub mod forces_view;
 pub mod labels;
 mod mechanism_view;
+mod note_tables;
 mod plans_view;
 pub mod results;
 

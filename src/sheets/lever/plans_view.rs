@@ -15,6 +15,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, Pen, THIN, Text, VECTOR};
 use crate::drawing::symbols::vector;
 use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
 use crate::lever::plans::{Plan, SegKind};
 use crate::num::math::Norm;
 use crate::num::tol;
@@ -248,7 +249,8 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
     let area_c = inner.inflate(-MARGIN, -MARGIN).center();
     // Paper position of the pole: the plan's box centred in the cell.
     let pole_p = Point::new(area_c.x - (bb.center().x) / mu, area_c.y + (bb.center().y) / mu);
-    let p = |v: Vec2| Point::new(pole_p.x + v.x / mu, pole_p.y - v.y / mu);
+    let view = View::new(pole_p, mu);
+    let p = |v: Vec2| view.p(v);
     for s in &plan.segs {
         vector(g, p(s.from), p(s.to), pen_of(s.kind));
     }

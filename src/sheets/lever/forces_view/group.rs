@@ -1,0 +1,238 @@
+//! A group drawing (an Assur group or the crank, apart at its length scale, with its forces
+//! and inertia moments) beside its force polygon, the vector equation, the legend and the
+//! scales under them.
+
+use super::arrows::{Arrows, arrow_scale};
+use super::cells::Sizes;
+use super::legend::{
+    cell_title, equation_lines, force_label, scale_item, text_rows, value_item, with_semicolon, with_short_note,
+    wrap_items,
+};
+use super::polygon::{bbox_of, chain, draw_polygon};
+use super::{ARROW_MAX, ARROW_MIN, ForcesInput, LINE};
+use crate::drawing::obstacles::Obstacles;
+use crate::drawing::place::Labels;
+use crate::drawing::scale;
+use crate::drawing::scene::{Group, MAIN, THIN};
+use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, slider};
+use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
+use crate::lever::kinetostatics::Polygon;
+use crate::lever::linkage::LinkKind;
+use crate::num::math::Norm;
+use crate::report::ForceKind;
+use crate::sheets::lever::mechanism_view::split_name;
+use kurbo::{Point, Rect, Vec2};
+
+/// Room around a group drawing for its arrows and labels, mm.
+const PAD: f64 = ARROW_MAX + 6.0;
+/// Room around a force polygon for its labels, mm.
+const POLY_PAD: f64 = 9.0;
+const CELL_TITLE: f64 = 8.0;
+
+/// What sizes a group cell and then draws it: computed once per layout attempt.
+pub(super) struct GroupLayout {
+    /// The group's points in the world, m.
+    pub(super) world: Rect,
+    pub(super) mu_l: f64,
+    /// Width of the group drawing with its room for arrows, mm.
+    pub(super) drawing_w: f64,
+    pub(super) mu_p: f64,
+    /// Scale of the force arrows on the group drawing, N/mm.
+    pub(super) mu_f: f64,
+    /// The polygon's vertices in newtons, from its start, and their box.
+    pub(super) chain: Vec<Vec2>,
+    pub(super) chain_box: Rect,
+    pub(super) equation: Vec<Vec<LabelText>>,
+    /// Each force's symbol and value, wrapped into lines.
+    pub(super) legend: Vec<Vec<LabelText>>,
+}
+
+/// The world box of a polygon's group (or the crank): its links' points.
+pub(super) fn world_box(inp: &ForcesInput, poly: &Polygon) -> Rect {
+    let pts = drawn_points(inp, poly);
+    let first = pts.first().map_or(Point::ZERO, |p| p.to_point());
+    pts.iter().fold(Rect::from_points(first, first), |r, p| r.union_pt(p.to_point()))
+}
+
+pub(super) fn links_of(inp: &ForcesInput, poly: &Polygon) -> Vec<usize> {
+    match poly.group {
+        Some(gi) => inp.m.groups[gi].links.to_vec(),
+        None => vec![inp.m.crank().link],
+    }
+}
+
+fn drawn_points(inp: &ForcesInput, poly: &Polygon) -> Vec<Vec2> {
+    links_of(inp, poly).iter().flat_map(|&l| inp.m.links[l].points.iter().map(|&p| inp.state.points[p].p)).collect()
+}
+
+/// The legend of a group drawing: every force on it and the inner reaction with their
+/// values, the inertia moments, and the note on short arrows when one is.
+fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec<Vec<LabelText>> {
+    let mut items = Vec::new();
+    let mut short = false;
+    for t in poly.terms.iter().filter(|t| t.force.norm() > 0.0) {
+        let f = t.force.norm();
+        let s = f / mu_f < ARROW_MIN;
+        short |= s;
+        items.push(value_item(inp, force_label(inp, t.kind, t.on), f, inp.words.common.unit_n(), s));
+    }
+    if let Some(inner) = &poly.inner {
+        items.push(value_item(
+            inp,
+            force_label(inp, inner.kind, inner.on),
+            inner.force.norm(),
+            inp.words.common.unit_n(),
+            false,
+        ));
+    }
+    for il in inp.fa.forces.inertia.iter().filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0) {
+        let label =
+            LabelText::new("M", inp.words.sheet.force(ForceKind::Inertia, &inp.m.links[il.link].number.to_string()));
+        items.push(value_item(inp, label, il.moment.abs(), inp.words.common.unit_n_m(), false));
+    }
+    with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
+}
+
+pub(super) fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes) -> (GroupLayout, f64, f64) {
+    let world = world_box(inp, poly);
+    let mu_l = s.mu_l(world);
+    let (drawing_w, drawing_h) = (world.width() / mu_l + 2.0 * PAD, world.height() / mu_l + 2.0 * PAD);
+    let chain = chain(poly);
+    let chain_box = bbox_of(&chain);
+    let mu_p = scale::round_up(chain_box.width().max(chain_box.height()) / s.poly_box);
+    let mu_f = arrow_scale(poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max));
+    let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
+    let w = (drawing_w + poly_w).max(120.0);
+    let equation = equation_lines(inp, poly, w - 4.0);
+    let legend = group_legend(inp, poly, mu_f, w - 4.0);
+    let text_lines = equation.len() + legend.len() + SCALE_LINES;
+    let h = CELL_TITLE + drawing_h.max(poly_h) + LINE * text_lines as f64 + 2.0;
+    (GroupLayout { world, mu_l, drawing_w, mu_p, mu_f, chain, chain_box, equation, legend }, w, h)
+}
+
+/// Lines of scales under a group drawing: μ_l, μ_F and μ_P.
+const SCALE_LINES: usize = 2;
+
+fn group_title(inp: &ForcesInput, poly: &Polygon) -> String {
+    match poly.group {
+        Some(gi) => {
+            let links = inp.m.groups[gi].links.map(|l| inp.m.links[l].number);
+            inp.words.sheet.group(&format!("II({},{})", links[0], links[1]))
+        }
+        None => inp.words.sheet.driving_link().to_string(),
+    }
+}
+
+pub(super) fn draw_group_cell(
+    g: &mut Group,
+    labels: &mut Labels,
+    r: Rect,
+    inp: &ForcesInput,
+    poly: &Polygon,
+    layout: &GroupLayout,
+) {
+    cell_title(g, r, &group_title(inp, poly));
+    let top = r.y0 + CELL_TITLE;
+    let lines = layout.equation.len() + layout.legend.len() + SCALE_LINES;
+    let bottom = r.y1 - LINE * lines as f64 - 2.0;
+    let geo = Rect::new(r.x0, top, r.x0 + layout.drawing_w, bottom);
+    draw_group_geometry(g, labels, inp, poly, geo, layout);
+    let pr = Rect::new(r.x0 + layout.drawing_w, top, r.x1, bottom);
+    draw_polygon(g, labels, inp, poly, layout, pr);
+    let scales = vec![
+        vec![
+            with_semicolon(scale_item(inp, "l", layout.mu_l, inp.words.common.unit_m_per_mm())),
+            scale_item(inp, "F", layout.mu_f, inp.words.common.unit_n_per_mm()),
+        ],
+        vec![scale_item(inp, "P", layout.mu_p, inp.words.common.unit_n_per_mm())],
+    ];
+    let y = text_rows(g, r.x0 + 2.0, bottom + LINE, &layout.equation);
+    let y = text_rows(g, r.x0 + 2.0, y, &layout.legend);
+    text_rows(g, r.x0 + 2.0, y, &scales);
+}
+
+fn draw_group_geometry(
+    g: &mut Group,
+    labels: &mut Labels,
+    inp: &ForcesInput,
+    poly: &Polygon,
+    r: Rect,
+    layout: &GroupLayout,
+) {
+    let view = View::centred(layout.world, r, layout.mu_l);
+    let p = |v: Vec2| view.p(v);
+    let m = inp.m;
+    let mut link_lines = Vec::new();
+    let mut blocks = Vec::new();
+    for &l in &links_of(inp, poly) {
+        let link = &m.links[l];
+        let joints: Vec<usize> = link.points.iter().copied().filter(|&q| !m.is_mass_centre(q)).collect();
+        let Some(&first) = joints.first() else { continue };
+        match link.kind {
+            LinkKind::Slider => {
+                let dir = inp.state.links[l].dir;
+                slider(g, p(inp.state.points[first].p), view.dir(dir), 10.0, 5.0, MAIN);
+                let c = p(inp.state.points[first].p);
+                let u = view.dir(dir);
+                blocks.push((c, u.unit(), 5.0, 2.5));
+                g.line(c - u * 14.0 + u.turn_90() * 2.5, c + u * 14.0 + u.turn_90() * 2.5, THIN);
+            }
+            LinkKind::Block => {
+                let (c, u) = (p(inp.state.points[first].p), view.dir(inp.state.links[l].dir));
+                slider(g, c, u, 8.0, 4.0, MAIN);
+                blocks.push((c, u.unit(), 4.0, 2.0));
+            }
+            _ => {
+                for &q in &joints[1..] {
+                    let (a, b) = (p(inp.state.points[first].p), p(inp.state.points[q].p));
+                    g.line(a, b, MAIN);
+                    link_lines.push((a, b));
+                }
+            }
+        }
+    }
+    // A joint shared by the group's two links is drawn and named once.
+    let mut points: Vec<usize> = Vec::new();
+    for &l in &links_of(inp, poly) {
+        points.extend(m.links[l].points.iter().filter(|q| !points.contains(q)).collect::<Vec<_>>());
+    }
+    for &q in &points {
+        let at = p(inp.state.points[q].p);
+        if m.is_frame(q) {
+            frame_pivot(g, at, 1.2);
+        } else if m.is_mass_centre(q) {
+            g.dot(at, 0.6);
+        } else {
+            g.circle(at, 1.0, THIN);
+        }
+    }
+    let mut drawn = Obstacles::of_items(&g.items);
+    for il in inp.fa.forces.inertia.iter().filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0) {
+        let centre = m.mass_centres.iter().find(|c| c.0 == il.link).map_or(m.links[il.link].points[0], |c| c.1);
+        let at = p(inp.state.points[centre].p);
+        let start = clear_turn_arrow(g, &mut drawn, at, MOMENT_R, 200.0, MOMENT_SWEEP, il.moment > 0.0, THIN);
+        let sign = if il.moment > 0.0 { -1.0 } else { 1.0 };
+        let mid = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP / 2.0).to_radians()) * MOMENT_R;
+        labels.add(
+            mid,
+            mid - at,
+            LabelText::new("M", inp.words.sheet.force(ForceKind::Inertia, &m.links[il.link].number.to_string())),
+            3.5,
+        );
+    }
+    let mut arrows = Arrows { view, links: link_lines, blocks, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
+    for t in &poly.terms {
+        arrows.arrow(g, labels, p(t.at), t.force, force_label(inp, t.kind, t.on));
+    }
+    // The letters last: they keep clear of the arrows.
+    for &q in &points {
+        let at = p(inp.state.points[q].p);
+        let (main, sub) = split_name(m.name(q));
+        labels.add(at, Vec2::new(-1.0, -1.0), LabelText::new(main, sub), 3.5);
+    }
+}
+
+/// Radius and sweep of an inertia moment's arc, mm and degrees.
+const MOMENT_R: f64 = 6.0;
+const MOMENT_SWEEP: f64 = 120.0;

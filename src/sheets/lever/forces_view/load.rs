@@ -1,0 +1,78 @@
+//! A load diagram: the force on a slider against S/H over both strokes, the analysed
+//! position marked.
+
+use super::legend::{cell_title, scale_item, text_rows};
+use super::{ForcesInput, LINE};
+use crate::drawing::fmt;
+use crate::drawing::place::Labels;
+use crate::drawing::plot::{Axis, Plot, round_ticks};
+use crate::drawing::scale;
+use crate::drawing::scene::{DASHED, Group, MAIN, THIN};
+use crate::drawing::text::LabelText;
+use crate::lever::load::{Load, Stroke};
+use kurbo::{Rect, Vec2};
+
+/// A load diagram: force against S/H for both strokes, the analysed position marked.
+pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, i: usize) {
+    let load: &Load = &inp.fa.model.loads[i];
+    let value = inp.fa.forces.loads[i];
+    let n = inp.m.links[load.link].number;
+    let lang = inp.words.lang;
+    cell_title(g, r, &inp.words.sheet.load_title(&n.to_string()));
+    let area = Rect::new(r.x0 + 20.0, r.y0 + 20.0, r.x1 - 14.0, r.y1 - 22.0);
+    let signed = |b: usize, y: f64| y * load.branches[b].scale;
+    let values =
+        || load.branches.iter().enumerate().flat_map(|(b, br)| br.curve.points.iter().map(move |p| signed(b, p.1)));
+    let (least, most) = values().fold((f64::MAX, f64::MIN), |(lo, hi), y| (lo.min(y), hi.max(y)));
+    // The drawing spans zero, where the S/H axis runs.
+    let (lo, hi) = (least.min(0.0), most.max(0.0));
+    let mu = scale::round_up((hi - lo) / area.height());
+    let x = Axis {
+        lo: 0.0,
+        hi: 1.0,
+        mu: 1.0 / area.width(),
+        name: "S/H".into(),
+        ticks: [0.0, 0.5, 1.0].map(|v| (v, fmt::localise(&format!("{v}"), lang))).to_vec(),
+    };
+    let y =
+        Axis { lo, hi, mu, name: format!("P, {}", inp.words.common.unit_n()), ticks: round_ticks(lo, hi, mu, lang) };
+    let plot = Plot::in_area(Rect::new(area.x0, area.y1 - (hi - lo) / mu, area.x1, area.y1), x, y);
+    plot.draw_axes(g);
+    let mut names = Vec::new();
+    for (b, br) in load.branches.iter().enumerate() {
+        let data: Vec<(f64, f64)> = br.curve.points.iter().map(|&(s, y)| (s, signed(b, y))).collect();
+        plot.line(g, &data, if b == 0 { MAIN } else { DASHED });
+        let name = match br.name {
+            Stroke::Working => inp.words.sheet.stroke_working(),
+            Stroke::Idle => inp.words.sheet.stroke_idle(),
+            Stroke::TowardHead => inp.words.sheet.stroke_toward_head(),
+            Stroke::AwayFromHead => inp.words.sheet.stroke_away_from_head(),
+            Stroke::Expansion => inp.words.sheet.stroke_expansion(),
+            Stroke::Exhaust => inp.words.sheet.stroke_exhaust(),
+            Stroke::Intake => inp.words.sheet.stroke_intake(),
+            Stroke::Compression => inp.words.sheet.stroke_compression(),
+        };
+        // Named at a third of the stroke, on the side away from the other branch.
+        let (s, y) = data[data.len() / 3];
+        names.push((plot.at(s, y), Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name));
+    }
+    let along = value.force.dot(load.axis);
+    let mark = plot.at(value.s, along);
+    g.line(plot.at(value.s, 0.0), mark, THIN);
+    g.circle(mark, 1.0, MAIN);
+    for (at, pref, name) in names {
+        labels.add_text(at, pref, name, 2.5);
+    }
+    let phi = fmt::localise(&format!("{:.1}", inp.phi_deg), lang);
+    labels.add(mark, Vec2::new(1.0, -1.0), LabelText::new("φ", "1").with_tail(format!(" = {phi}°")), 2.5);
+    let lines = [
+        vec![LabelText::new("φ", "1").with_tail(format!(
+            ": S/H = {}, P = {} {}",
+            fmt::value(value.s, lang),
+            fmt::value(along, lang),
+            inp.words.common.unit_n()
+        ))],
+        vec![scale_item(inp, "P", mu, inp.words.common.unit_n_per_mm())],
+    ];
+    text_rows(g, r.x0 + 2.0, r.y1 - 2.0 - LINE, &lines);
+}

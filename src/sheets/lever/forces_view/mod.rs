@@ -1,0 +1,141 @@
+//! The force analysis on sheet 1: each Assur group and the crank drawn apart at one length
+//! scale with their forces, each force polygon at its own round μ_P with its vector
+//! equation, the Zhukovsky lever, the load diagrams and tables 3–5. The cells are packed
+//! in rows; when they do not fit, the drawings get smaller scales, never smaller text.
+
+mod arrows;
+mod cells;
+mod group;
+mod legend;
+mod load;
+mod polygon;
+mod zhukovsky;
+
+use super::labels::LeverWords;
+use crate::drawing::fmt;
+use crate::drawing::place::Labels;
+use crate::drawing::scene::{Anchor, Group, Text};
+use crate::drawing::table::Table;
+use crate::lever::analysis::ForceAnalysis;
+use crate::lever::linkage::{Mechanism, State};
+use cells::{Cell, Content, Sizes, cells, pack};
+use kurbo::{Point, Rect};
+
+/// Longest and shortest force arrow on a group drawing or the lever, mm. A force whose
+/// arrow would be shorter is drawn at the minimum with its value written.
+const ARROW_MAX: f64 = 20.0;
+const ARROW_MIN: f64 = 7.0;
+/// Between the lines of text under a drawing, mm.
+const LINE: f64 = 5.5;
+
+pub struct ForcesInput<'a> {
+    pub m: &'a Mechanism,
+    pub fa: &'a ForceAnalysis,
+    /// The state at φ1.
+    pub state: &'a State,
+    pub phi_deg: f64,
+    pub words: LeverWords,
+    /// Tables 3–5 as drawn.
+    pub tables: Vec<Table>,
+}
+
+/// The scales the force drawings got.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct ForceScales {
+    /// Length scale of each group drawing (groups from the last, then the crank), m/mm.
+    pub mu_l: Vec<f64>,
+    /// μ_P of each polygon (groups from the last, then the crank), N/mm.
+    pub mu_p: Vec<f64>,
+    /// The scale of the force arrows on each group drawing, N/mm.
+    pub mu_f: Vec<f64>,
+    /// Velocity scale of the Zhukovsky lever, (m/s)/mm.
+    pub mu_lever: f64,
+    /// The scale of the force arrows on the lever, N/mm.
+    pub mu_f_lever: f64,
+}
+
+/// Draws the force analysis into `main` (the region below the mechanism, titled) and, when
+/// the mechanism leaves room beside it, `side`; returns the scales the drawings got.
+pub fn draw_forces(main: &mut Group, mut side: Option<&mut Group>, inp: &ForcesInput) -> ForceScales {
+    let region = main.region;
+    let title = inp.words.sheet.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.words.lang));
+    main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
+    let bodies = bodies(region, side.as_ref().map(|g| g.region));
+    let (cells, at, _) = arrange(inp, &bodies, DRAWN, SHRINK_TRIES);
+    let mut scales = ForceScales { mu_l: vec![], mu_p: vec![], mu_f: vec![], mu_lever: 0.0, mu_f_lever: 0.0 };
+    for (cell, &(body, origin)) in cells.iter().zip(&at) {
+        let g: &mut Group = match (body, side.as_deref_mut()) {
+            (1, Some(sg)) => sg,
+            _ => &mut *main,
+        };
+        let r = Rect::new(origin.x, origin.y, origin.x + cell.w, origin.y + cell.h);
+        // Each cell places its own labels inside itself, so cells never collide.
+        let mut labels = Labels::new();
+        match cell.content {
+            Content::Polygon(i, ref layout) => {
+                group::draw_group_cell(g, &mut labels, r, inp, &inp.fa.forces.polygons[i], layout);
+                scales.mu_l.push(layout.mu_l);
+                scales.mu_p.push(layout.mu_p);
+                scales.mu_f.push(layout.mu_f);
+            }
+            Content::Lever(ref plan, mu, mu_f) => {
+                zhukovsky::draw_lever(g, &mut labels, r, inp, plan, (mu, mu_f));
+                scales.mu_lever = mu;
+                scales.mu_f_lever = mu_f;
+            }
+            Content::Load(i) => load::draw_load(g, &mut labels, r, inp, i),
+            Content::Table(i) => {
+                inp.tables[i].draw(g, origin);
+            }
+        }
+        labels.place(g, r.inflate(-0.5, -0.5));
+    }
+    scales
+}
+
+/// The areas the cells may use: the main region below its title, then the side region.
+fn bodies(main: Rect, side: Option<Rect>) -> Vec<Rect> {
+    let mut out = vec![Rect::new(main.x0, main.y0 + 10.0, main.x1, main.y1)];
+    out.extend(side);
+    out
+}
+
+/// How many times the drawings may shrink by 10 % to fit; a region that needs more than
+/// [`COMFORTABLE`] shrinks is cramped.
+const SHRINK_TRIES: usize = 12;
+const COMFORTABLE: usize = 3;
+/// The sizes a comfortable layout starts from (the mechanism above gets the rest), and the
+/// larger ones the drawings start from, shrinking until they fit what they got.
+const COMFORTABLE_START: Sizes = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0 };
+const DRAWN: Sizes = Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0 };
+
+/// Cells packed into the bodies, shrinking the drawings up to `tries − 1` times until they
+/// fit; the last attempt is returned even if it does not (the layout measurement then
+/// reports it), with whether it fits.
+fn arrange(inp: &ForcesInput, bodies: &[Rect], start: Sizes, tries: usize) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
+    let widest = inp
+        .fa
+        .forces
+        .polygons
+        .iter()
+        .map(|p| group::world_box(inp, p))
+        .map(|b| b.width().max(b.height()))
+        .fold(0.0, f64::max);
+    let mut attempt = Sizes { widest, ..start };
+    let mut k = 0;
+    loop {
+        let cells = cells(inp, attempt);
+        let (at, ok) = pack(&cells, bodies);
+        k += 1;
+        if ok || k >= tries {
+            return (cells, at, ok);
+        }
+        attempt = attempt.shrunk();
+    }
+}
+
+/// Whether the force drawings fit the main region (and the side region, if any) without
+/// being cramped.
+pub fn fit_comfortably(inp: &ForcesInput, main: Rect, side: Option<Rect>) -> bool {
+    arrange(inp, &bodies(main, side), COMFORTABLE_START, COMFORTABLE + 1).2
+}

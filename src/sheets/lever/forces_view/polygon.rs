@@ -1,0 +1,67 @@
+//! A force polygon at its own round μ_P: the chain of forces from its start, the inner
+//! reaction dashed, labels outside the polygon.
+
+use super::ForcesInput;
+use super::group::GroupLayout;
+use super::legend::force_label;
+use crate::drawing::place::Labels;
+use crate::drawing::scene::{DASHED, Group, VECTOR};
+use crate::drawing::symbols::vector;
+use crate::drawing::view::View;
+use crate::lever::kinetostatics::Polygon;
+use crate::num::math::Norm;
+use crate::num::tol;
+use kurbo::{Point, Rect, Vec2};
+
+/// Extent of a polygon's chain of vectors, in newtons, from its start.
+pub(super) fn chain(poly: &Polygon) -> Vec<Vec2> {
+    let mut pts = vec![Vec2::ZERO];
+    for t in &poly.terms {
+        pts.push(*pts.last().expect("starts with the origin") + t.force);
+    }
+    pts
+}
+
+pub(super) fn bbox_of(pts: &[Vec2]) -> Rect {
+    pts.iter().fold(Rect::from_points(Point::ZERO, Point::ZERO), |r, p| r.union_pt(p.to_point()))
+}
+
+pub(super) fn draw_polygon(
+    g: &mut Group,
+    labels: &mut Labels,
+    inp: &ForcesInput,
+    poly: &Polygon,
+    layout: &GroupLayout,
+    r: Rect,
+) {
+    let view = View::centred(layout.chain_box, r, layout.mu_p);
+    let p = |v: Vec2| view.p(v);
+    let pts = &layout.chain;
+    // Labels stand outside the polygon: beside each side, away from the vertices' centre.
+    let centre = {
+        let n = pts.len().max(1) as f64;
+        let c = pts.iter().fold(Vec2::ZERO, |acc, &v| acc + v) / n;
+        p(c)
+    };
+    let outward = |a: Point, b: Point| {
+        let n = (b - a).turn_90();
+        if n.dot(a.midpoint(b) - centre) < 0.0 { -n } else { n }
+    };
+    for (k, t) in poly.terms.iter().enumerate() {
+        let (a, b) = (p(pts[k]), p(pts[k + 1]));
+        if (b - a).norm() < tol::PAPER_INVISIBLE {
+            continue;
+        }
+        vector(g, a, b, VECTOR);
+        labels.add(a.midpoint(b), outward(a, b), force_label(inp, t.kind, t.on), 3.5);
+    }
+    if let Some(inner) = &poly.inner {
+        let (a, b) = (p(pts[poly.split]), p(pts[0]));
+        if (b - a).norm() >= tol::PAPER_INVISIBLE {
+            vector(g, a, b, DASHED);
+            // The inner reaction runs inside the polygon: its label beside it, either side.
+            labels.add(a.midpoint(b), (b - a).turn_90(), force_label(inp, inner.kind, inner.on), 3.5);
+        }
+    }
+    g.dot(p(pts[0]), 0.5);
+}

@@ -1,0 +1,109 @@
+//! Tables 1 and 2 and the notes above the title block on sheet 1, and the note's tables as
+//! sheet 1 draws them (labels without units but where a table's rows carry their own).
+
+use super::compose::Input;
+use super::labels::LeverWords;
+use crate::drawing::frame;
+use crate::drawing::labels::Language;
+use crate::drawing::scene::{Anchor, Group, Text};
+use crate::drawing::table::{CELL_TEXT, Table};
+use crate::drawing::text::{LabelText, TooLong, paragraph, wrap};
+use crate::report::NoteTable;
+use crate::sheets::scaffold;
+use kurbo::{Point, Rect};
+
+/// Tables 1 and 2 and the notes under them, above the title block.
+pub(super) struct NoteTables {
+    t1: Table,
+    t2: Table,
+    side_by_side: bool,
+    assumptions: Vec<String>,
+    /// The region they take: as wide as the column, from their top to the title block.
+    pub(super) region: Rect,
+}
+
+/// Tables 1 and 2 side by side when the column (`across`: its left and right x) is wide enough,
+/// else one above the other, and the notes under them; refuses assumptions too long for
+/// the room above the title block.
+pub(super) fn note_tables(inp: &Input, words: &LeverWords, across: (f64, f64)) -> Result<NoteTables, TooLong> {
+    let (c, lang) = (words.common, words.lang);
+    let t1 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[0], lang) };
+    let t2 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[1], lang) };
+    let (w1, h1) = t1.size();
+    let (w2, h2) = t2.size();
+    let right_w = across.1 - across.0;
+    let side_by_side = 1.0 + w1 + 8.0 + w2 + 1.0 <= right_w;
+    let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
+    let assumptions: Vec<String> = inp.project.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
+    let notes_lines = notes_height(&assumptions, right_w);
+    if notes_lines > NOTES_MAX_H {
+        let all = assumptions.join(" ");
+        return Err(TooLong::new("mechanism.assumptions", &all, "notes above the title block", (right_w, NOTES_MAX_H)));
+    }
+    let top = frame::title_block_rect().y0 - 3.0 - notes_lines - tables_h - 4.0;
+    let region = Rect::new(across.0, top, across.1, frame::title_block_rect().y0 - 3.0);
+    Ok(NoteTables { t1, t2, side_by_side, assumptions, region })
+}
+
+/// Tables 1 and 2 and the notes, drawn.
+pub(super) fn tables_group(n: &NoteTables, words: &LeverWords) -> Group {
+    let r = n.region;
+    let mut tables = Group::new("tables", r);
+    let r1 = n.t1.draw(&mut tables, Point::new(r.x0 + 1.0, r.y0));
+    let at2 = if n.side_by_side { Point::new(r1.x1 + 8.0, r.y0) } else { Point::new(r.x0 + 1.0, r1.y1 + 6.0) };
+    let r2 = n.t2.draw(&mut tables, at2);
+    let notes_top = r1.y1.max(r2.y1) + 4.0;
+    notes(&mut tables, words, &n.assumptions, Rect::new(r.x0, notes_top, r.x1, r.y1));
+    tables
+}
+
+/// The notes (the exactness note and the assumptions) may take this much height, mm.
+const NOTES_MAX_H: f64 = 60.0;
+
+/// A note table as sheet 1 draws it: labels without units (the title names them), cells
+/// at least 11 mm wide.
+pub(super) fn sheet_table(n: &NoteTable, lang: Language) -> Table {
+    let rows = scaffold::drawn_rows(n, lang, false);
+    Table {
+        title: n.title.clone(),
+        header: n.column_titles.clone(),
+        label_w: label_column(&rows),
+        rows,
+        cell_w: 11.0,
+        corner: String::new(),
+    }
+}
+
+/// A table whose rows carry their own units (the title names none): "m, kg", "J_S, kg·m²".
+pub(super) fn with_units(table: Table, n: &NoteTable, lang: Language) -> Table {
+    let rows = scaffold::drawn_rows(n, lang, true);
+    Table { label_w: label_column(&rows), rows, ..table }
+}
+
+/// The label column's width: the widest label and 1.5 mm either side, at least 14 mm.
+fn label_column(rows: &[(LabelText, Vec<String>)]) -> f64 {
+    rows.iter().map(|(l, _)| l.width(CELL_TEXT) + 3.0 + CELL_TEXT * crate::drawing::text::SLANT).fold(14.0, f64::max)
+}
+
+/// Height the notes need in a column of width `w`.
+fn notes_height(assumptions: &[String], w: f64) -> f64 {
+    let lines: usize = assumptions.iter().map(|a| wrap(a, 2.5, w - 2.0).len()).sum();
+    10.0 + if assumptions.is_empty() { 0.0 } else { 4.5 + lines as f64 * 4.0 + assumptions.len() as f64 }
+}
+
+fn notes(g: &mut Group, words: &LeverWords, assumptions: &[String], r: Rect) {
+    let (l, c) = (words.sheet, words.common);
+    let mut y = r.y0 + 3.5;
+    let w = r.width() - 2.0;
+    g.text(Text::new(Point::new(r.x0, y), l.exact_note(), 2.5, Anchor::Start));
+    y += 6.0;
+    if assumptions.is_empty() {
+        return;
+    }
+    g.text(Text::new(Point::new(r.x0, y), format!("{}:", c.assumed()), 2.5, Anchor::Start));
+    y += 4.5;
+    for a in assumptions {
+        let lines = wrap(a, 2.5, w);
+        y = paragraph(g, Point::new(r.x0, y), &lines, 2.5, Anchor::Start) + 1.0;
+    }
+}
