@@ -2,10 +2,12 @@
 //! Mechanisms, computed exactly and drawn the way the course requires.
 //!
 //! Layers, each depending only on the ones before it:
-//! [`project`] (the project file) → pure SI domains ([`lever`]; [`num`] under them all) →
-//! [`sheets`] (composition into a [`drawing`] scene of paper millimetres) → [`backend`]
-//! (SVG, PDF, PNG bytes) and [`report`] (tables); [`pipeline`] runs the sheets a project
-//! has, [`cli`] writes their files.
+//! [`project`] (the project file, refused as data: [`project::Refusal`]) → pure SI domains
+//! ([`lever`] for sheet 1, [`gears`] for sheet 2, [`cams`] for sheet 3; [`num`] under them
+//! all) → [`sheets`] (each sheet's composition into a [`drawing`] scene of paper
+//! millimetres, finished by one scaffold) → [`backend`] (SVG, PDF, PNG bytes, each read from
+//! the scene) and [`report`] (typed tables under their answer keys); [`pipeline`] runs the
+//! sheets a project has, [`cli`] writes their files safely. [`font`] is the one embedded font.
 //!
 //! ```
 //! use tmm_sheets::pipeline;

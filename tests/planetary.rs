@@ -347,3 +347,19 @@ proptest! {
         let _ = scheme.ratio(&z);
     }
 }
+
+/// The README's rule, on the case that tells "the smallest ring" from "the smallest reducer":
+/// 17/46/22/85 and 22/46/17/85 have the same ring and the same ratio, but the first one's
+/// planet z2 reaches to z1 + 2·z2 = 109 modules and the second one's to 114, so the first is
+/// the smaller reducer and is chosen, though the second would take more planets.
+#[test]
+fn the_double_planet_prefers_the_smaller_outer_size_over_a_same_ring() {
+    let u = ratio_of(&[17, 46, 22, 85]);
+    assert_eq!(u, ratio_of(&[22, 46, 17, 85]));
+    let spec = StageSpec::course(Scheme::DoublePlanet, u);
+    let stage = synthesise(&spec).unwrap();
+    assert_valid(&spec, &stage);
+    assert_eq!((stage.z.as_slice(), stage.planets), (&[17, 46, 22, 85][..], 3));
+    // The other set is valid too, with four planets, and has the same ring.
+    assert_eq!(first_failure(&spec, &[22, 46, 17, 85], 4), None);
+}

@@ -1,4 +1,4 @@
-//! The guide's load tables, digitised as printed (seeds/001_…, appendices 1 and 2). Each
+//! The guide's load tables, digitised as printed (the course guide, ToshDTU 2014, appendices 1 and 2). Each
 //! row is (S/H, p/p_max) with S measured from the cylinder head (the top dead centre).
 //! docs/errata.md records how the transcription's broken rows were read.
 
