@@ -235,11 +235,15 @@ impl MechanismView<'_> {
             };
             let lk = st.links[li];
             let along = self.view.dir(lk.dir).arg().to_degrees();
-            for (value, r, sym) in [(lk.omega, SENSE_R.0, "ω"), (lk.eps, SENSE_R.1, "ε")] {
-                // Relative to the crank's ω1 and ω1²: a link at rest turns neither way.
-                let w1 = self.m.omega1.abs();
-                let zero = if sym == "ω" { tol::ZERO_SPEED * w1 } else { tol::ZERO_SPEED * w1 * w1 };
-                if value.abs() <= zero || (link.kind == LinkKind::Crank && sym == "ε") {
+            // Relative to the crank's ω1 and ω1²: a link at rest turns neither way. The
+            // crank turns uniformly, so it has no ε arrow.
+            let w1 = self.m.omega1.abs();
+            let turns = [
+                (lk.omega, SENSE_R.0, "ω", tol::ZERO_SPEED * w1, true),
+                (lk.eps, SENSE_R.1, "ε", tol::ZERO_SPEED * w1 * w1, link.kind != LinkKind::Crank),
+            ];
+            for (value, r, sym, zero, drawn_here) in turns {
+                if !drawn_here || value.abs() <= zero {
                     continue;
                 }
                 let ccw = value > 0.0;
