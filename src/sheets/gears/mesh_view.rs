@@ -7,7 +7,7 @@
 //! (0, r_w1). Wheel 1 turns counter-clockwise and drives; the contact runs from B1 (on
 //! wheel 2's tip circle, toward N1) to B2.
 
-use super::teeth_view::{Flank, active_flanks, flank, map_cubic, teeth_path};
+use super::teeth_view::{ACTIVE, Flank, active_flanks, flank, map_cubic, teeth_path};
 use crate::drawing::obstacles::segment_meets_rect;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
@@ -21,8 +21,6 @@ use crate::num::tol;
 use kurbo::{CubicBez, Point, Rect, Vec2};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
-/// Active profiles and the active line of action.
-pub(super) const ACTIVE: Pen = Pen { width: 1.2, line: crate::drawing::scene::LineType::Solid };
 /// How the mesh was drawn and what was measured on it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MeshDrawn {

@@ -2,14 +2,16 @@
 //! number of Bézier pieces, the fillet within a tolerance), three teeth per wheel as one path
 //! from the middle of a space to the middle of a space, the active flanks thick.
 
-use super::mesh_view::ACTIVE;
 use crate::drawing::path::{Path, Seg};
-use crate::drawing::scene::Group;
+use crate::drawing::scene::{Group, LineType, Pen};
 use crate::drawing::view::View;
 use crate::gears::tooth::Outline;
 use crate::num::bezier;
 use crate::num::math::{from_angle, rotate};
 use crate::num::tol;
+
+/// Active profiles and the active line of action (the mesh view draws the line with it).
+pub(super) const ACTIVE: Pen = Pen { width: 1.2, line: LineType::Solid };
 use kurbo::{Arc, CubicBez, Point, Vec2};
 use std::f64::consts::PI;
 
