@@ -88,7 +88,7 @@ pub fn measure(scene: &Scene) -> Layout {
         let region = g.region.inflate(EDGE, EDGE);
         for item in &g.items {
             let bb = item.bbox();
-            if !inside(page, bb) {
+            if !inside(page.inflate(EDGE, EDGE), bb) {
                 out.outside_region += 1;
                 out.note(format!("'{}': an item leaves the page: {bb:?} not in {page:?}", g.id));
             } else if !inside(region, bb) {
