@@ -175,3 +175,28 @@ fn every_key_has_its_word_in_every_language() {
     assert_eq!(Unit::KgM2.si(), "kg·m²");
     assert_eq!(report::ascii_key("ε"), "epsilon");
 }
+
+/// Every CSV of every fixture names each of its columns in its header (no empty cell after
+/// `quantity,unit`) and writes a value that rounds to zero without a minus sign.
+#[test]
+fn csv_headers_name_every_column_and_no_value_is_minus_zero() {
+    for (name, p) in all_fixtures() {
+        let b = built(&p, Language::Uz);
+        for (file, bytes) in pipeline::outputs(&p, &b, &[pipeline::Format::Svg]).unwrap() {
+            if !file.ends_with(".csv") {
+                continue;
+            }
+            let text = String::from_utf8(bytes).unwrap();
+            let mut reader = csv::Reader::from_reader(text.as_bytes());
+            let header = reader.headers().unwrap().clone();
+            assert!(header.iter().all(|h| !h.trim().is_empty()), "{name}: {file}: {header:?}");
+            for record in reader.records() {
+                let record = record.unwrap();
+                for cell in record.iter().skip(3) {
+                    let minus_zero = cell.starts_with('-') && cell[1..].chars().all(|c| c == '0' || c == '.');
+                    assert!(!minus_zero, "{name}: {file}: {cell} in {record:?}");
+                }
+            }
+        }
+    }
+}

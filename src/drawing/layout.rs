@@ -1,5 +1,5 @@
 //! The sheet measures its own layout: texts crossed by a drawn line, texts overlapping
-//! each other, items leaving their region. A teacher sends a sheet back for any of them, so
+//! each other, items leaving their region or the page. A teacher sends a sheet back for any of them, so
 //! `results.json` reports the counts and the tests hold them at zero.
 
 use super::obstacles::{Obstacles, Piece, segment_meets_rect};
@@ -22,7 +22,8 @@ pub struct Layout {
     pub texts_crossed: usize,
     /// Pairs of texts whose letters overlap.
     pub text_overlaps: usize,
-    /// Items not inside their group's region.
+    /// Items not inside their group's region, or not on the page (a region may itself have
+    /// grown off the page with what it holds); an item leaving both counts once.
     pub outside_region: usize,
     /// The shortest side of the smallest velocity or acceleration plan, mm (a sheet without
     /// plans has none).
@@ -82,12 +83,17 @@ pub fn measure(scene: &Scene) -> Layout {
             }
         }
     }
+    let page = Rect::new(0.0, 0.0, scene.width, scene.height);
     for g in &scene.groups {
         let region = g.region.inflate(EDGE, EDGE);
         for item in &g.items {
-            if !inside(region, item.bbox()) {
+            let bb = item.bbox();
+            if !inside(page.inflate(EDGE, EDGE), bb) {
                 out.outside_region += 1;
-                out.note(format!("'{}': an item leaves the region: {:?} not in {:?}", g.id, item.bbox(), g.region));
+                out.note(format!("'{}': an item leaves the page: {bb:?} not in {page:?}", g.id));
+            } else if !inside(region, bb) {
+                out.outside_region += 1;
+                out.note(format!("'{}': an item leaves the region: {bb:?} not in {:?}", g.id, g.region));
             }
         }
     }
@@ -131,6 +137,23 @@ mod tests {
         assert_eq!(measure(&overlap).text_overlaps, 1);
         let out = scene(vec![line((0.0, 18.0), (190.0, 18.0))]);
         assert_eq!(measure(&out).outside_region, 1);
+    }
+
+    /// A region grown off the page with what it holds (notes set under the page's edge)
+    /// keeps its items inside it: they are counted for leaving the page, once each.
+    #[test]
+    fn an_item_off_the_page_is_counted_even_inside_its_region() {
+        let mut s = scene(vec![Item::Text(Text::new(Point::new(10.0, 20.0), "on the page", 2.5, Anchor::Start))]);
+        assert!(measure(&s).is_clean());
+        s.groups[0].region = Rect::new(0.0, 0.0, 100.0, 200.0);
+        s.groups[0].items.push(Item::Text(Text::new(Point::new(10.0, 150.0), "below", 2.5, Anchor::Start)));
+        s.groups[0].items.push(Item::Text(Text::new(Point::new(10.0, 101.0), "across the edge", 2.5, Anchor::Start)));
+        let m = measure(&s);
+        assert_eq!(m.outside_region, 2, "{m:?}");
+        assert!(m.problems.iter().all(|p| p.contains("leaves the page")), "{m:?}");
+        s.groups[0].region = Rect::new(0.0, 0.0, 50.0, 200.0);
+        s.groups[0].items.push(Item::Text(Text::new(Point::new(60.0, 60.0), "beside", 2.5, Anchor::Start)));
+        assert_eq!(measure(&s).outside_region, 3, "leaving the page and the region counts once");
     }
 
     /// A thick line's ink reaches into a text whose box its centre line only passes beside:

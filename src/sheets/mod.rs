@@ -9,6 +9,7 @@
 pub mod cam;
 pub mod gears;
 pub mod lever;
+pub mod notes;
 pub mod scaffold;
 pub mod words;
 

@@ -14,6 +14,7 @@ mod tables;
 pub use diagrams::Scales;
 pub use profile_view::{MAX_PIECES, PROFILE_TOL};
 
+use super::notes::Room;
 use super::scaffold::Composition;
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::cams::follower::Follower;
@@ -23,7 +24,7 @@ use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::table::{self, CELL_TEXT, Table};
-use crate::drawing::text::{LabelText, block_height, paragraph, wrap};
+use crate::drawing::text::{LINE_PITCH, LabelText, TooLong, paragraph, wrap};
 use crate::project::{CamProject, Project};
 use kurbo::{Point, Rect};
 use labels::CamWords;
@@ -81,17 +82,27 @@ fn laws_title(p: &CamProject, words: &CamWords) -> String {
     }
 }
 
-/// Plans the column: the diagrams as large as the column leaves them after the texts.
-fn plan_column(p: &CamProject, errors: (f64, f64), deviation: f64, words: &CamWords) -> Column {
+/// The notes under the diagrams (the sheet's and the assumptions) may take this much
+/// height, mm: the diagrams keep the rest of the column at the course's scales.
+const NOTES_MAX_H: f64 = 80.0;
+
+/// Plans the column: the diagrams as large as the column leaves them after the texts;
+/// refuses assumptions that would make the notes taller than [`NOTES_MAX_H`].
+fn plan_column(p: &CamProject, errors: (f64, f64), deviation: f64, words: &CamWords) -> Result<Column, TooLong> {
     let title = laws_title(p, words);
     let notes = notes::sheet_notes(p, errors, deviation, words);
     let title_lines = wrap(&title, 3.5, LEFT_MAX - 4.0);
+    // As `diagrams_group` sets them: each note's lines at their pitch, 1 mm after each.
     let notes_h =
-        |w: f64| notes.iter().map(|n| block_height(wrap(n, CELL_TEXT, w).len(), CELL_TEXT) + 1.0).sum::<f64>();
-    let head = 5.0 + block_height(title_lines.len(), 3.5) + 2.0;
+        |w: f64| notes.iter().map(|n| wrap(n, CELL_TEXT, w).len() as f64 * LINE_PITCH * CELL_TEXT + 1.0).sum::<f64>();
+    let head = 5.0 + title_lines.len() as f64 * LINE_PITCH * 3.5 + 2.0;
     let plan = diagrams::plan(&p.design, LEFT_MAX - 4.0, SHEET.height() - head - notes_h(LEFT_MAX - 4.0) - 8.0);
-    let text_h = head + notes_h(plan.width.max(200.0));
-    Column { title, notes, plan, text_h }
+    // The notes are set as wide as the diagrams.
+    let drawn_h = notes_h(plan.width);
+    let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(words.lang).to_string()).collect();
+    let room = Room { field: "cam.assumptions", place: "notes under the diagrams", size: (plan.width, NOTES_MAX_H) };
+    room.check(&assumptions, drawn_h)?;
+    Ok(Column { title, notes, plan, text_h: head + drawn_h })
 }
 
 /// Builds sheet 3.
@@ -104,7 +115,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let phis = nomogram::positions(d, DIVISIONS);
     let notes = tables::notes(d, &phis, errors, lang);
     let fitted = profile_view::fit(d);
-    let column = plan_column(p, errors, fitted.deviation, &words);
+    let column = plan_column(p, errors, fitted.deviation, &words)?;
     let (law, rest): (Vec<_>, Vec<_>) = notes.iter().partition(|n| tables::is_law(n));
     let drawn = |ns: Vec<&crate::report::NoteTable>| -> Vec<Table> {
         ns.into_iter().map(|n| tables::sheet_table(n, lang)).collect()

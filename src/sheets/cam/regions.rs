@@ -57,7 +57,9 @@ struct Frame {
 impl Frame {
     fn of(c: &Content) -> Frame {
         let left_w = c.plan.width + 4.0;
-        Frame { left_w, column_used: c.text_h + c.plan.height + 10.0, right_x: SHEET.x0 + left_w + GAP }
+        // 4 mm between the diagrams and the notes, 1 mm under the last note: the height of
+        // the column's group as `diagrams_group` draws it.
+        Frame { left_w, column_used: c.text_h + c.plan.height + 5.0, right_x: SHEET.x0 + left_w + GAP }
     }
 
     /// The strip for tables of `sizes` left of the title block, as low as fits.
@@ -88,7 +90,7 @@ pub fn regions(c: &Content) -> Regions {
     let below = nomogram_in_column(c, &f);
     // Both on the right.
     let law_h: f64 = sizes(c.law).iter().map(|s| s.1 + 3.0).sum();
-    let law_fits = f.column_used + law_h <= SHEET.height() && sizes(c.law).iter().all(|s| s.0 <= f.left_w);
+    let law_fits = f.column_used + GAP + law_h <= SHEET.height() && sizes(c.law).iter().all(|s| s.0 <= f.left_w);
     let all: Vec<(f64, f64)> = sizes(c.law).into_iter().chain(sizes(c.rest)).collect();
     let rest = sizes(c.rest);
     let tables = f.strip(if law_fits { &rest } else { &all });

@@ -12,6 +12,7 @@ mod teeth_view;
 pub use mesh_view::MeshDrawn;
 pub use teeth_view::INVOLUTE_PIECES;
 
+use super::notes::Room;
 use super::scaffold::Composition;
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::drawing::fmt;
@@ -20,7 +21,7 @@ use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::table::CELL_TEXT;
-use crate::drawing::text::{paragraph, wrap};
+use crate::drawing::text::{TooLong, paragraph, wrap};
 use crate::gears::pair::PairWarning;
 use crate::gears::tooth::Outline;
 use crate::num::units::mm;
@@ -61,7 +62,7 @@ const RIGHT_X0: f64 = 448.0;
 pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> {
     let words = GearWords::new(ctx.info.language);
     let l = words.sheet;
-    let (mesh, drawn) = mesh_group(p, &words);
+    let (mesh, drawn) = mesh_group(p, &words)?;
 
     // The right half: the planetary views on top, the tables below.
     let mut groups = vec![mesh];
@@ -92,8 +93,14 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     Ok(GearsBuild { composition, mesh: drawn, planetary_mu })
 }
 
-/// The mesh on the left half: title on top, notes at the bottom, the drawing between.
-fn mesh_group(p: &GearsProject, words: &GearWords) -> (Group, MeshDrawn) {
+/// The notes under the mesh (its results, the sheet's notes and the assumptions) may take
+/// this much height, mm: the mesh keeps the rest of the half; its teeth, drawn at a fixed
+/// scale, are not shrunk to make room.
+const NOTES_MAX_H: f64 = 100.0;
+
+/// The mesh on the left half: title on top, notes at the bottom, the drawing between;
+/// refuses assumptions that would make the notes taller than [`NOTES_MAX_H`].
+fn mesh_group(p: &GearsProject, words: &GearWords) -> Result<(Group, MeshDrawn), TooLong> {
     let (l, lang) = (words.sheet, words.lang);
     let outlines = [Outline::new(&p.pair.spec, &p.pair.wheels[0]), Outline::new(&p.pair.spec, &p.pair.wheels[1])];
     let notes = mesh_notes(p, words);
@@ -110,6 +117,9 @@ fn mesh_group(p: &GearsProject, words: &GearWords) -> (Group, MeshDrawn) {
     let wrapped = |n: &str| wrap(n, CELL_TEXT, notes_w);
     let lines: usize = 4 + notes.iter().map(|n| wrapped(n).len()).sum::<usize>();
     let notes_h = lines as f64 * CELL_TEXT * crate::drawing::text::LINE_PITCH + lines as f64 * 0.5 + 6.0;
+    let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
+    let room = Room { field: "gears.assumptions", place: "notes under the mesh", size: (notes_w, NOTES_MAX_H) };
+    room.check(&assumptions, notes_h)?;
     let area = Rect::new(MESH.x0 + 2.0, MESH.y0 + 10.0, MESH.x1 - 2.0, MESH.y1 - notes_h);
     let drawn =
         draw_mesh(&mut mesh, area, &MeshInput { pair: &p.pair, outlines: [&outlines[0], &outlines[1]] }, &mut labels);
@@ -126,7 +136,7 @@ fn mesh_group(p: &GearsProject, words: &GearWords) -> (Group, MeshDrawn) {
         y = paragraph(&mut mesh, Point::new(MESH.x0 + 2.0, y), &wrapped(n), CELL_TEXT, Anchor::Start) + 0.5;
     }
     labels.place(&mut mesh, area);
-    (mesh, drawn)
+    Ok((mesh, drawn))
 }
 
 /// The notes under the mesh: shifts chosen, warnings, the user's assumptions.

@@ -9,6 +9,7 @@ use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::table::{CELL_TEXT, Table};
 use crate::drawing::text::{LabelText, TooLong, paragraph, wrap};
 use crate::report::NoteTable;
+use crate::sheets::notes::Room;
 use crate::sheets::scaffold;
 use kurbo::{Point, Rect};
 
@@ -36,10 +37,9 @@ pub(super) fn note_tables(inp: &Input, words: &LeverWords, across: (f64, f64)) -
     let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
     let assumptions: Vec<String> = inp.project.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
     let notes_lines = notes_height(&assumptions, right_w);
-    if notes_lines > NOTES_MAX_H {
-        let all = assumptions.join(" ");
-        return Err(TooLong::new("mechanism.assumptions", &all, "notes above the title block", (right_w, NOTES_MAX_H)));
-    }
+    let room =
+        Room { field: "mechanism.assumptions", place: "notes above the title block", size: (right_w, NOTES_MAX_H) };
+    room.check(&assumptions, notes_lines)?;
     let top = frame::title_block_rect().y0 - 3.0 - notes_lines - tables_h - 4.0;
     let region = Rect::new(across.0, top, across.1, frame::title_block_rect().y0 - 3.0);
     Ok(NoteTables { t1, t2, side_by_side, assumptions, region })
