@@ -109,7 +109,7 @@ fn build(args: &BuildArgs) -> Result<(), Failure> {
     let built = pipeline::build(&project, &args.sheets).map_err(|e| refused(e, &name)).map_err(Failure::Input)?;
     for b in &built {
         for d in &b.output.diagnostics {
-            eprintln!("warning: sheet {}: {d}", b.output.number);
+            eprintln!("warning: in {name}: sheet {}, {d}", b.output.number);
         }
     }
     let formats = pipeline::formats(!args.no_pdf, (!args.no_png).then_some(args.png_dpi));

@@ -58,7 +58,7 @@ pub fn measure(scene: &Scene) -> Layout {
         });
         if crossed {
             out.texts_crossed += 1;
-            out.note(format!("'{group}': a line crosses {:?} at ({:.1}, {:.1}) mm", t.plain(), t.at.x, t.at.y));
+            out.note(format!("drawing '{group}': a line crosses “{}” at ({:.1}, {:.1}) mm", t.plain(), t.at.x, t.at.y));
         }
     }
     // Every run's box, tagged with its text: a text's own runs touch, never count.
@@ -74,7 +74,7 @@ pub fn measure(scene: &Scene) -> Layout {
             if *other > k && ob.intersect(r).area() > tol::TEXT_OVERLAP_AREA && seen.insert((k, *other)) {
                 out.text_overlaps += 1;
                 out.note(format!(
-                    "'{group}': {:?} overlaps {:?} ('{og}') at ({:.1}, {:.1}) mm",
+                    "drawing '{group}': “{}” overlaps “{}” ('{og}') at ({:.1}, {:.1}) mm",
                     t.plain(),
                     o.plain(),
                     t.at.x,
@@ -90,10 +90,21 @@ pub fn measure(scene: &Scene) -> Layout {
             let bb = item.bbox();
             if !inside(page.inflate(EDGE, EDGE), bb) {
                 out.outside_region += 1;
-                out.note(format!("'{}': an item leaves the page: {bb:?} not in {page:?}", g.id));
+                out.note(format!(
+                    "drawing '{}': {} leaves the page by {:.1} mm",
+                    g.id,
+                    extent(bb),
+                    overshoot(page, bb)
+                ));
             } else if !inside(region, bb) {
                 out.outside_region += 1;
-                out.note(format!("'{}': an item leaves the region: {bb:?} not in {:?}", g.id, g.region));
+                out.note(format!(
+                    "drawing '{}': {} leaves its region {} by {:.1} mm",
+                    g.id,
+                    extent(bb),
+                    extent(g.region),
+                    overshoot(g.region, bb)
+                ));
             }
         }
     }
@@ -106,6 +117,16 @@ fn is_text(i: &Item) -> bool {
 
 fn inside(outer: Rect, r: Rect) -> bool {
     r.x0 >= outer.x0 && r.y0 >= outer.y0 && r.x1 <= outer.x1 && r.y1 <= outer.y1
+}
+
+/// A box as a reader finds it on the sheet: its corners in paper millimetres.
+fn extent(r: Rect) -> String {
+    format!("({:.1}, {:.1})–({:.1}, {:.1}) mm", r.x0, r.y0, r.x1, r.y1)
+}
+
+/// How far `inner` reaches past `outer` on its worst side, mm.
+fn overshoot(outer: Rect, inner: Rect) -> f64 {
+    [outer.x0 - inner.x0, inner.x1 - outer.x1, outer.y0 - inner.y0, inner.y1 - outer.y1].into_iter().fold(0.0, f64::max)
 }
 
 #[cfg(test)]
@@ -137,6 +158,12 @@ mod tests {
         assert_eq!(measure(&overlap).text_overlaps, 1);
         let out = scene(vec![line((0.0, 18.0), (190.0, 18.0))]);
         assert_eq!(measure(&out).outside_region, 1);
+        // Each problem names the drawing and says where in paper mm, in a reader's words.
+        for m in [measure(&crossed), measure(&overlap), measure(&out)] {
+            let p = &m.problems[0];
+            assert!(p.starts_with("drawing 'g': ") && p.contains(" mm") && !p.contains('{'), "{p}");
+        }
+        assert!(measure(&out).problems[0].contains("by 90.1 mm"), "{:?}", measure(&out).problems);
     }
 
     /// A region grown off the page with what it holds (notes set under the page's edge)
