@@ -1,18 +1,16 @@
 //! The project file (YAML) and its resolution into the domains' inputs.
 //!
 //! One file per section of the file format (`info`, `mechanism`, `forces`, `gears`, `cam`);
-//! `lever` and `lever_forces` resolve the lever sections into [`crate::lever`] types, `gears`
+//! `lever` resolves the lever sections into [`crate::lever`] types, `gears`
 //! sheet 2's section and `cam` sheet 3's, checking every cross-reference with its line and
 //! column. Text that reaches a sheet is checked in [`text`]; input that is valid but almost
 //! surely a mistake gives a [`Warning`].
 
 pub mod cam;
-mod cam_design;
 pub mod forces;
 pub mod gears;
 pub mod info;
 mod lever;
-mod lever_forces;
 pub mod mechanism;
 pub mod places;
 mod refusal;

@@ -3,8 +3,9 @@
 //! profile at `roller`, a swing no centre can serve at `swing_deg`, a cam too large to draw at
 //! the input that makes it so (a phase, a stroke, an allowed angle, …).
 
-use super::cam::{CamSpecFile, FollowerInput, PerPhase};
-use super::{Kind, Refusal, at, invalid};
+use super::super::{Kind, Refusal, at, invalid};
+use super::follower::FollowerInput;
+use super::spec::{CamSpecFile, PerPhase};
 use crate::cams::radius::{Phase, RadiusError};
 use crate::cams::size::Cause;
 use crate::cams::{CamError, CamSpec, Design};

@@ -1,10 +1,10 @@
 //! Turns the project file's `forces` section into the mechanics' [`ForceModel`]: masses with
 //! their centres, moments of inertia (given, or m·l²/12), and the loads on sliders.
 
-use super::forces::*;
-use super::mechanism::Along;
-use super::values::Name;
-use super::{Kind, Refusal, Warning, at, invalid, warning};
+use super::super::forces::*;
+use super::super::mechanism::Along;
+use super::super::values::Name;
+use super::super::{Kind, Refusal, Warning, at, invalid, warning};
 use crate::lever::indicators::{self, Indicator};
 use crate::lever::kinetostatics::{ForceModel, LinkMass};
 use crate::lever::linkage::{LinkId, LinkKind, Mechanism, PointId, Step};

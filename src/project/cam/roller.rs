@@ -1,0 +1,64 @@
+//! The cam's roller as written (`auto`, a radius in metres, or `knife`) and the design's
+//! warnings about it in the course's words.
+
+use super::super::{Refusal, at, invalid};
+use super::spec::Scalar;
+use crate::cams::{CamWarning, Roller};
+use serde_saphyr::{Location, Spanned};
+
+/// The roller asked for, and where (the section's line when it is the default).
+pub(super) fn roller(spec: Option<&Spanned<Scalar>>, section: Location) -> Result<(Roller, Location), Refusal> {
+    let Some(s) = spec else {
+        return Ok((Roller::Auto, section));
+    };
+    let loc = at(s);
+    let roller = match &s.value {
+        Scalar::Number(r) if *r > 0.0 => Roller::Radius(*r),
+        Scalar::Number(r) => {
+            return Err(invalid(
+                loc,
+                "cam.roller",
+                format!("the roller radius must be positive (metres), not {r}; `knife` for a knife edge"),
+            ));
+        }
+        Scalar::Word(w) => match w.trim() {
+            "auto" => Roller::Auto,
+            "knife" => Roller::Knife,
+            _ => {
+                return Err(invalid(
+                    loc,
+                    "cam.roller",
+                    format!("'{w}': give `auto`, a radius in metres, or `knife` (a knife edge)"),
+                ));
+            }
+        },
+    };
+    Ok((roller, loc))
+}
+
+/// The design's warning about the roller, for the project's warnings.
+pub(super) fn cam_warning(w: &CamWarning) -> String {
+    match *w {
+        CamWarning::RollerBelowCourse { r, r_min, rho_min } => format!(
+            "the automatic roller is {:.1} mm, below the course's 0.25·r_min = {:.3} mm (r_min = {:.3} mm), to stay under 0.7·ρ_min (ρ_min = {:.3} mm, the pitch profile's smallest convex radius of curvature)",
+            r * 1e3,
+            0.25 * r_min * 1e3,
+            r_min * 1e3,
+            rho_min * 1e3
+        ),
+        CamWarning::RollerNearCurvature { r, rho_min } => format!(
+            "the roller ({:.3} mm) is above 0.8·ρ_min = {:.3} mm (ρ_min = {:.3} mm, the pitch profile's smallest convex radius of curvature): the working profile is nearly pointed there",
+            r * 1e3,
+            0.8 * rho_min * 1e3,
+            rho_min * 1e3
+        ),
+        CamWarning::RollerOutsideCourse { r, r_min } => format!(
+            "the roller ({:.3} mm) is {:.3}·r_min, outside the course's 0.25–0.4·r_min = {:.3}–{:.3} mm (r_min = {:.3} mm)",
+            r * 1e3,
+            r / r_min,
+            0.25 * r_min * 1e3,
+            0.4 * r_min * 1e3,
+            r_min * 1e3
+        ),
+    }
+}
