@@ -9,7 +9,8 @@ use super::values::{Finite, LocalText, Positive};
 use super::{Kind, Refusal, Warning, at, invalid, warning};
 use crate::gears::pair::{Pair, PairError, PairSpec, PairWarning};
 use crate::gears::planetary::{self, Scheme, Stage, StageError, StageSpec};
-use crate::num::digits::sig;
+use crate::num::digits::{fixed, sig, written};
+use crate::num::units::metres;
 use serde::Deserialize;
 use serde_saphyr::{Location, Spanned};
 
@@ -156,8 +157,10 @@ pub fn resolve(
                 at(&g.pair),
                 "gears.pair.shift",
                 format!(
-                    "wheel {wheel} (z = {}) is undercut at x = {x} (x_min = {x_min:.4}); the sheet draws the undercut (`shift: auto` avoids it)",
-                    pair_spec.z[wheel - 1]
+                    "wheel {wheel} (z = {}) is undercut at x = {} (x_min = {}); the sheet draws the undercut (`shift: auto` avoids it)",
+                    pair_spec.z[wheel - 1],
+                    written(*x),
+                    fixed(*x_min, 4)
                 ),
             ));
         }
@@ -182,7 +185,7 @@ fn course_x_min(spec: &PairSpec, z: u32) -> f64 {
 
 fn pair_spec(p: &Spanned<PairFileSpec>) -> Result<(PairSpec, [bool; 2]), Refusal> {
     let f = &p.value;
-    let module = f.module.value.0 * 1e-3;
+    let module = metres(f.module.value.0);
     let z = [f.z[0].value, f.z[1].value];
     for (i, zi) in f.z.iter().enumerate() {
         if zi.value < 5 {
@@ -313,11 +316,17 @@ fn planetary_project(
         // Say where a derived ratio came from: a wrong speed is the usual cause.
         let from = match (ratio_given, motor, output) {
             (false, Some(n_m), Some(n_1)) if !matches!(e, StageError::BadPlanets { .. }) => {
-                format!(" (u_pl = n_motor / n1 / u_12 = {n_m} / {n_1:.4} / {:.4} = {ratio:.4})", pair.ratio)
+                format!(
+                    " (u_pl = n_motor / n1 / u_12 = {} / {} / {} = {})",
+                    written(n_m),
+                    fixed(n_1, 4),
+                    fixed(pair.ratio, 4),
+                    fixed(ratio, 4)
+                )
             }
             _ => String::new(),
         };
         invalid(loc, field, format!("{e}{from}")).kind(kind)
     })?;
-    Ok(PlanetaryProject { module: f.module.value.0 * 1e-3, stage, ratio_given })
+    Ok(PlanetaryProject { module: metres(f.module.value.0), stage, ratio_given })
 }

@@ -4,6 +4,7 @@
 use super::super::{Refusal, Warning, at, invalid, warning};
 use super::spec::{PerPhase, PhasesFileSpec, Scalar};
 use crate::cams::radius::Allowed;
+use crate::num::digits::written;
 use serde_saphyr::{Location, Spanned};
 
 /// The course's range of allowed pressure angles, degrees.
@@ -23,7 +24,7 @@ pub(super) fn phases(spec: &Spanned<PhasesFileSpec>) -> Result<Phases, Refusal> 
             return Err(invalid(
                 at(v),
                 field,
-                format!("the {name} phase must be a positive angle (degrees), not {}°", v.value.0),
+                format!("the {name} phase must be a positive angle (degrees), not {}°", written(v.value.0)),
             ));
         }
     }
@@ -34,7 +35,7 @@ pub(super) fn phases(spec: &Spanned<PhasesFileSpec>) -> Result<Phases, Refusal> 
         return Err(invalid(
             at(d),
             "cam.phases_deg.far_dwell",
-            format!("the far dwell must be an angle ≥ 0 (degrees; 0 or absent for none), not {dwell}°"),
+            format!("the far dwell must be an angle ≥ 0 (degrees; 0 or absent for none), not {}°", written(dwell)),
         ));
     }
     let total = p.rise.value.0 + dwell + p.ret.value.0;
@@ -43,8 +44,11 @@ pub(super) fn phases(spec: &Spanned<PhasesFileSpec>) -> Result<Phases, Refusal> 
             at(spec),
             "cam.phases_deg",
             format!(
-                "rise + far dwell + return = {} + {dwell} + {} = {total}° exceeds a turn (360°); the near dwell is the rest of the turn",
-                p.rise.value.0, p.ret.value.0
+                "rise + far dwell + return = {} + {} + {} = {}° exceeds a turn (360°); the near dwell is the rest of the turn",
+                written(p.rise.value.0),
+                written(dwell),
+                written(p.ret.value.0),
+                written(total)
             ),
         ));
     }
@@ -66,7 +70,7 @@ fn allowed_angle(v: &Scalar, loc: Location, field: &str, warnings: &mut Vec<Warn
         return Err(invalid(
             loc,
             field,
-            format!("the allowed pressure angle must lie between 0° and 90° (exclusive), not {a}°"),
+            format!("the allowed pressure angle must lie between 0° and 90° (exclusive), not {}°", written(a)),
         ));
     }
     let (lo, hi) = COURSE_ALLOWED_DEG;
@@ -74,7 +78,12 @@ fn allowed_angle(v: &Scalar, loc: Location, field: &str, warnings: &mut Vec<Warn
         warnings.push(warning(
             loc,
             field,
-            format!("an allowed pressure angle of {a}° is outside the course's {lo}–{hi}°"),
+            format!(
+                "an allowed pressure angle of {}° is outside the course's {}–{}°",
+                written(a),
+                written(lo),
+                written(hi)
+            ),
         ));
     }
     Ok(a.to_radians())

@@ -9,6 +9,7 @@ use super::spec::{CamSpecFile, PerPhase};
 use crate::cams::radius::{Phase, RadiusError};
 use crate::cams::size::Cause;
 use crate::cams::{CamError, CamSpec, Design};
+use crate::num::digits::sig;
 use serde_saphyr::{Location, Spanned};
 
 /// Designs `cam`, resolved from `spec`; `f` and `roller` say where the follower and the roller
@@ -37,7 +38,8 @@ pub(super) fn design(
             "cam",
             format!(
                 "the cam cannot be designed from this input (r_min = {} m, ρ_min = {} m): check the phases, the lift and the pressure angle",
-                design.centre.r_min, design.rho_min
+                sig(design.centre.r_min, 4),
+                sig(design.rho_min, 4)
             ),
         )
         .kind(Kind::Design));

@@ -7,7 +7,9 @@ use super::super::{Refusal, Warning, at, invalid, warning};
 use super::spec::{FollowerFileSpec, RockerFileSpec, Scalar, TranslatingFileSpec};
 use crate::cams::follower::Follower;
 use crate::cams::radius::Placement;
+use crate::num::digits::{sig, written};
 use crate::num::limits::{LENGTH_LOOKS_LIKE_MM, LENGTH_TINY};
+use crate::num::units::{metres, mm};
 use serde_saphyr::{Location, Spanned};
 
 /// A swing above this (degrees) is almost surely a mistake.
@@ -34,15 +36,16 @@ fn plausible_length(v: &Spanned<Finite>, field: &str, what: &str, warnings: &mut
             at(v),
             field,
             format!(
-                "a {what} of {x} m looks like millimetres written as metres: lengths are in metres ({} m?)",
-                x * 1e-3
+                "a {what} of {} m looks like millimetres written as metres: lengths are in metres ({} m?)",
+                written(x),
+                written(metres(x))
             ),
         ));
     } else if x < LENGTH_TINY {
         warnings.push(warning(
             at(v),
             field,
-            format!("a {what} of {x} m ({} mm) is implausibly small: lengths are in metres", x * 1e3),
+            format!("a {what} of {} m ({} mm) is implausibly small: lengths are in metres", written(x), sig(mm(x), 4)),
         ));
     }
 }
@@ -75,7 +78,7 @@ fn rocker(r: &RockerFileSpec, warnings: &mut Vec<Warning>) -> Result<FollowerInp
         return Err(invalid(
             at(length),
             "cam.follower.rocker.length",
-            format!("the rocker's length must be positive (metres), not {}", length.value.0),
+            format!("the rocker's length must be positive (metres), not {}", written(length.value.0)),
         ));
     }
     let s = swing.value.0;
@@ -83,7 +86,7 @@ fn rocker(r: &RockerFileSpec, warnings: &mut Vec<Warning>) -> Result<FollowerInp
         return Err(invalid(
             at(swing),
             "cam.follower.rocker.swing_deg",
-            format!("the swing must be an angle between 0° and 180° (exclusive), not {s}°"),
+            format!("the swing must be an angle between 0° and 180° (exclusive), not {}°", written(s)),
         ));
     }
     plausible_length(length, "cam.follower.rocker.length", "rocker length", warnings);
@@ -92,7 +95,9 @@ fn rocker(r: &RockerFileSpec, warnings: &mut Vec<Warning>) -> Result<FollowerInp
             at(swing),
             "cam.follower.rocker.swing_deg",
             format!(
-                "a swing of {s}° is unusually large for a cam's rocker (the course's are below {SWING_PLAUSIBLE_MAX_DEG}°)"
+                "a swing of {}° is unusually large for a cam's rocker (the course's are below {}°)",
+                written(s),
+                written(SWING_PLAUSIBLE_MAX_DEG)
             ),
         ));
     }
@@ -115,7 +120,7 @@ fn translating(t: &TranslatingFileSpec, warnings: &mut Vec<Warning>) -> Result<F
         return Err(invalid(
             at(stroke),
             "cam.follower.translating.stroke",
-            format!("the stroke must be positive (metres), not {}", stroke.value.0),
+            format!("the stroke must be positive (metres), not {}", written(stroke.value.0)),
         ));
     }
     plausible_length(stroke, "cam.follower.translating.stroke", "stroke", warnings);
@@ -141,7 +146,10 @@ fn offset(spec: Option<&Spanned<Scalar>>, warnings: &mut Vec<Warning>) -> Result
                 warnings.push(warning(
                     loc,
                     "cam.follower.translating.offset",
-                    format!("an offset of {e} m looks like millimetres written as metres: lengths are in metres"),
+                    format!(
+                        "an offset of {} m looks like millimetres written as metres: lengths are in metres",
+                        written(*e)
+                    ),
                 ));
             }
             Ok((Placement::Offset(*e), false))

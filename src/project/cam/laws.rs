@@ -9,6 +9,7 @@ use super::spec::{LawTable, PerPhase, Scalar};
 use crate::cams::integrate;
 use crate::cams::laws::{Custom, Law, LawError, Program, Standard};
 use crate::cams::radius::Phase;
+use crate::num::digits::{fixed, written};
 use serde_saphyr::{Location, Spanned};
 
 /// A law of the file's `laws` table, with its name.
@@ -67,13 +68,15 @@ pub(super) fn law_table(
 /// A corner between the course's divisions of the phase is cut off by the chord
 /// integration (it samples s″ at the divisions' middles): says so with the error it makes.
 fn corner_between_divisions(law: &Custom) -> Option<String> {
-    let n = integrate::DIVISIONS as f64;
+    let divisions = integrate::DIVISIONS;
+    let n = divisions as f64;
     let (x, _) = law.corners().find(|(x, _)| ((x * n).round() - x * n).abs() > 1e-9)?;
     let program = Program::new(1.0, 0.0, 1.0, (law.clone(), law.clone()), 1.0).ok()?;
     let error = integrate::chords(&program, Phase::Rise, integrate::DIVISIONS).error(&program).s;
     Some(format!(
-        "a corner at x = {x} lies between the course's {n} divisions of the phase (multiples of 1/{n}): the graphical integration cuts it off and misses the displacement by up to {:.1} % of the lift; corners at the divisions are drawn exactly",
-        error * 100.0
+        "a corner at x = {} lies between the course's {divisions} divisions of the phase (multiples of 1/{divisions}): the graphical integration cuts it off and misses the displacement by up to {} % of the lift; corners at the divisions are drawn exactly",
+        written(x),
+        fixed(error * 100.0, 1)
     ))
 }
 
@@ -123,7 +126,7 @@ fn law(v: &Scalar, loc: Location, field: &str, table: &[UserLaw]) -> Result<Law,
     found.ok_or_else(|| {
         let shown = match v {
             Scalar::Word(w) => format!("'{w}'"),
-            Scalar::Number(x) => format!("{x}"),
+            Scalar::Number(x) => written(*x),
         };
         invalid(loc, field, format!("unknown law {shown} ({})", known_laws(table)))
     })

@@ -4,6 +4,8 @@
 use super::super::{Refusal, at, invalid};
 use super::spec::Scalar;
 use crate::cams::{CamWarning, Roller};
+use crate::num::digits::{fixed, written};
+use crate::num::units::mm;
 use serde_saphyr::{Location, Spanned};
 
 /// The roller asked for, and where (the section's line when it is the default).
@@ -18,7 +20,7 @@ pub(super) fn roller(spec: Option<&Spanned<Scalar>>, section: Location) -> Resul
             return Err(invalid(
                 loc,
                 "cam.roller",
-                format!("the roller radius must be positive (metres), not {r}; `knife` for a knife edge"),
+                format!("the roller radius must be positive (metres), not {}; `knife` for a knife edge", written(*r)),
             ));
         }
         Scalar::Word(w) => match w.trim() {
@@ -40,25 +42,25 @@ pub(super) fn roller(spec: Option<&Spanned<Scalar>>, section: Location) -> Resul
 pub(super) fn cam_warning(w: &CamWarning) -> String {
     match *w {
         CamWarning::RollerBelowCourse { r, r_min, rho_min } => format!(
-            "the automatic roller is {:.1} mm, below the course's 0.25·r_min = {:.3} mm (r_min = {:.3} mm), to stay under 0.7·ρ_min (ρ_min = {:.3} mm, the pitch profile's smallest convex radius of curvature)",
-            r * 1e3,
-            0.25 * r_min * 1e3,
-            r_min * 1e3,
-            rho_min * 1e3
+            "the automatic roller is {} mm, below the course's 0.25·r_min = {} mm (r_min = {} mm), to stay under 0.7·ρ_min (ρ_min = {} mm, the pitch profile's smallest convex radius of curvature)",
+            fixed(mm(r), 1),
+            fixed(mm(0.25 * r_min), 3),
+            fixed(mm(r_min), 3),
+            fixed(mm(rho_min), 3)
         ),
         CamWarning::RollerNearCurvature { r, rho_min } => format!(
-            "the roller ({:.3} mm) is above 0.8·ρ_min = {:.3} mm (ρ_min = {:.3} mm, the pitch profile's smallest convex radius of curvature): the working profile is nearly pointed there",
-            r * 1e3,
-            0.8 * rho_min * 1e3,
-            rho_min * 1e3
+            "the roller ({} mm) is above 0.8·ρ_min = {} mm (ρ_min = {} mm, the pitch profile's smallest convex radius of curvature): the working profile is nearly pointed there",
+            fixed(mm(r), 3),
+            fixed(mm(0.8 * rho_min), 3),
+            fixed(mm(rho_min), 3)
         ),
         CamWarning::RollerOutsideCourse { r, r_min } => format!(
-            "the roller ({:.3} mm) is {:.3}·r_min, outside the course's 0.25–0.4·r_min = {:.3}–{:.3} mm (r_min = {:.3} mm)",
-            r * 1e3,
-            r / r_min,
-            0.25 * r_min * 1e3,
-            0.4 * r_min * 1e3,
-            r_min * 1e3
+            "the roller ({} mm) is {}·r_min, outside the course's 0.25–0.4·r_min = {}–{} mm (r_min = {} mm)",
+            fixed(mm(r), 3),
+            fixed(r / r_min, 3),
+            fixed(mm(0.25 * r_min), 3),
+            fixed(mm(0.4 * r_min), 3),
+            fixed(mm(r_min), 3)
         ),
     }
 }

@@ -63,7 +63,10 @@ impl<'de> Deserialize<'de> for LawKey {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         match d.deserialize_any(ScalarVisitor)? {
             Scalar::Word(w) => Ok(LawKey(w)),
-            Scalar::Number(x) => Ok(LawKey(format!("{x}"))),
+            // A whole number as written (the guide's 1–6); another number in scientific
+            // notation, exact and short for 1e-300 (a number is refused as a new law's key).
+            Scalar::Number(x) if x.fract() == 0.0 && x.abs() < 1e15 => Ok(LawKey(format!("{x}"))),
+            Scalar::Number(x) => Ok(LawKey(format!("{x:e}"))),
         }
     }
 }

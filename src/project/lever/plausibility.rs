@@ -3,8 +3,10 @@
 
 use super::super::mechanism::*;
 use super::super::{Warning, at, warning};
+use crate::num::digits::{sig, written};
 use crate::num::limits;
 use crate::num::math::Norm;
+use crate::num::units::mm;
 use kurbo::Vec2;
 use serde_saphyr::Location;
 
@@ -16,15 +18,20 @@ pub(super) fn plausibility(spec: &MechanismSpec, warnings: &mut Vec<Warning>) {
                 loc,
                 field,
                 format!(
-                    "{x} m is longer than {} m: lengths are in metres; is it millimetres?",
-                    limits::LENGTH_LOOKS_LIKE_MM
+                    "{} m is longer than {} m: lengths are in metres; is it millimetres?",
+                    written(x),
+                    written(limits::LENGTH_LOOKS_LIKE_MM)
                 ),
             ));
         } else if x > 0.0 && x < limits::LENGTH_TINY {
             warnings.push(warning(
                 loc,
                 field,
-                format!("{x} m is shorter than {} mm: lengths are in metres", limits::LENGTH_TINY * 1e3),
+                format!(
+                    "{} m is shorter than {} mm: lengths are in metres",
+                    written(x),
+                    written(mm(limits::LENGTH_TINY))
+                ),
             ));
         }
     };
@@ -44,8 +51,9 @@ pub(super) fn plausibility(spec: &MechanismSpec, warnings: &mut Vec<Warning>) {
                 at(&f.name),
                 "mechanism.frame.at",
                 format!(
-                    "point {} lies {r} m from the origin: coordinates are in metres; is it millimetres?",
-                    f.name.value
+                    "point {} lies {} m from the origin: coordinates are in metres; is it millimetres?",
+                    f.name.value,
+                    sig(r, 4)
                 ),
             ));
         }
@@ -56,7 +64,11 @@ pub(super) fn plausibility(spec: &MechanismSpec, warnings: &mut Vec<Warning>) {
         warnings.push(warning(
             at(n),
             "mechanism.crank.rpm",
-            format!("{} rev/min is above {:e}: is the crank speed in rev/min?", n.value.0, limits::RPM_PLAUSIBLE_MAX),
+            format!(
+                "{} rev/min is above {}: is the crank speed in rev/min?",
+                written(n.value.0),
+                written(limits::RPM_PLAUSIBLE_MAX)
+            ),
         ));
     }
     if let Some(w) = &spec.crank.omega
@@ -65,7 +77,11 @@ pub(super) fn plausibility(spec: &MechanismSpec, warnings: &mut Vec<Warning>) {
         warnings.push(warning(
             at(w),
             "mechanism.crank.omega",
-            format!("ω1 = {} 1/s is above {:e} rev/min: is ω1 in 1/s (rad/s)?", w.value.0, limits::RPM_PLAUSIBLE_MAX),
+            format!(
+                "ω1 = {} 1/s is above {} rev/min: is ω1 in 1/s (rad/s)?",
+                written(w.value.0),
+                written(limits::RPM_PLAUSIBLE_MAX)
+            ),
         ));
     }
 }

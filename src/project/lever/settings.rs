@@ -4,6 +4,7 @@
 use super::super::mechanism::*;
 use super::super::{Refusal, at, invalid};
 use crate::lever::{Settings, Start};
+use crate::num::digits::written;
 
 pub(super) fn settings(a: &AnalysisSpec, sense: f64) -> Result<Settings, Refusal> {
     let n = a.positions.value;
@@ -20,7 +21,11 @@ pub(super) fn settings(a: &AnalysisSpec, sense: f64) -> Result<Settings, Refusal
         None => Start::Min,
     };
     if let Some(d) = a.assigned_deg.as_ref().filter(|d| !(0.0..360.0).contains(&d.value.0)) {
-        return Err(invalid(at(d), "analysis.assigned_deg", format!("φ1 must lie in 0…360°, got {}°", d.value.0)));
+        return Err(invalid(
+            at(d),
+            "analysis.assigned_deg",
+            format!("φ1 must lie in 0…360°, got {}°", written(d.value.0)),
+        ));
     }
     let acceleration_plans = match &a.acceleration_plans {
         Some(list) => {
