@@ -10,6 +10,7 @@ use super::{Kind, Refusal, Warning, at, invalid, warning};
 use crate::gears::pair::{Pair, PairError, PairSpec, PairWarning};
 use crate::gears::planetary::{self, Scheme, Stage, StageError, StageSpec};
 use crate::num::digits::{fixed, sig, written};
+use crate::num::tol;
 use crate::num::units::metres;
 use serde::Deserialize;
 use serde_saphyr::{Location, Spanned};
@@ -111,6 +112,14 @@ pub struct PlanetaryFileSpec {
     pub tolerance_percent: Option<Spanned<Positive>>,
 }
 
+/// The crank's speed, rev/min, and the field it is written in (`mechanism.crank.rpm`, or
+/// `mechanism.crank.omega` in 1/s): sheet 2's n1 unless `output_rpm` gives another.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CrankSpeed {
+    pub rpm: f64,
+    pub field: &'static str,
+}
+
 /// Everything sheet 2 needs.
 #[derive(Debug, Clone)]
 pub struct GearsProject {
@@ -135,10 +144,10 @@ pub struct PlanetaryProject {
 
 const FIELD: &str = "gears";
 
-/// Resolves the section; `crank_rpm` is the mechanism's crank speed when there is one.
+/// Resolves the section; `crank` is the mechanism's crank speed when there is one.
 pub fn resolve(
     spec: &Spanned<GearsSpec>,
-    crank_rpm: Option<f64>,
+    crank: Option<CrankSpeed>,
     warnings: &mut Vec<Warning>,
 ) -> Result<GearsProject, Refusal> {
     let g = &spec.value;
@@ -166,13 +175,35 @@ pub fn resolve(
         }
     }
     let motor_rpm = g.motor_rpm.as_ref().map(|n| n.value.0);
-    let output_rpm = g.output_rpm.as_ref().map(|n| n.value.0).or(crank_rpm);
+    if let (Some(n1), Some(crank)) = (&g.output_rpm, crank) {
+        warnings.extend(speeds_differ(n1, crank));
+    }
+    let output_rpm = g.output_rpm.as_ref().map(|n| n.value.0).or(crank.map(|c| c.rpm));
     let planetary = match &g.planetary {
         Some(p) => Some(planetary_project(p, &pair, motor_rpm, output_rpm, spec.referenced)?),
         None => None,
     };
     let assumptions = text::assumptions(FIELD, &g.assumptions)?;
     Ok(GearsProject { pair, auto_shift, warnings: pair_warnings, motor_rpm, output_rpm, planetary, assumptions })
+}
+
+/// `output_rpm` written besides a crank that turns at another speed: sheets 1 and 2 would
+/// then compute with different speeds of one machine.
+fn speeds_differ(n1: &Spanned<Positive>, crank: CrankSpeed) -> Option<Warning> {
+    let (n, c) = (n1.value.0, crank.rpm);
+    if (n - c).abs() <= tol::SAME_SPEED * n.abs().max(c.abs()) {
+        return None;
+    }
+    Some(warning(
+        at(n1),
+        "gears.output_rpm",
+        format!(
+            "n1 = {} rev/min, but the crank turns at {} rev/min ({}): sheets 1 and 2 then use different speeds; leave `output_rpm` out to take the crank's",
+            written(n),
+            written(c),
+            crank.field
+        ),
+    ))
 }
 
 /// The course's undercut limit h_a*·(z_lim − z)/z_lim, z_lim = ⌊2h_a*/sin²α⌋ (17 for the
