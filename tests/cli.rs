@@ -166,6 +166,35 @@ fn warnings_are_printed_and_the_build_continues() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
+/// `gears.output_rpm` beside a crank that turns at another speed: a warning at
+/// `output_rpm`'s line naming both speeds, and the build goes on; the crank's own speed
+/// (also given as ω1 in 1/s) is no warning.
+#[test]
+fn an_output_speed_other_than_the_cranks_is_warned_about() {
+    let text = std::fs::read_to_string(fixture("worked-example")).unwrap();
+    let line = text.lines().position(|l| l.starts_with("  motor_rpm: 750")).unwrap() + 2;
+    let build = |text: &str, name: &str| {
+        let (out, file) = (temp_dir(name), temp_dir(&format!("{name}-file")).with_extension("yaml"));
+        std::fs::write(&file, text).unwrap();
+        let o = run(&["build", file.to_str().unwrap(), "--sheet", "2", "--no-png", "--no-pdf"], &out);
+        let _ = (std::fs::remove_file(&file), std::fs::remove_dir_all(&out));
+        (o.status.code(), String::from_utf8_lossy(&o.stderr).into_owned())
+    };
+    let (code, err) = build(&text.replace("  motor_rpm: 750", "  motor_rpm: 750\n  output_rpm: 60"), "rpm-differs");
+    assert_eq!(code, Some(0), "{err}");
+    let expected = format!(
+        "warning: in {}: line {line}, column 15: gears.output_rpm: n1 = 60 rev/min, but the crank turns at 70 rev/min (mechanism.crank.rpm): sheets 1 and 2 then use different speeds",
+        temp_dir("rpm-differs-file").with_extension("yaml").display()
+    );
+    assert!(err.contains(&expected), "{err}");
+    let same = text
+        .replace("  motor_rpm: 750", "  motor_rpm: 750\n  output_rpm: 70")
+        .replace("rpm: 70,", "omega: 7.330382858376184,");
+    let (code, err) = build(&same, "rpm-same");
+    assert_eq!(code, Some(0), "{err}");
+    assert!(!err.contains("output_rpm"), "{err}");
+}
+
 #[test]
 fn example_prints_a_project_that_builds() {
     let o = tmm().arg("example").output().unwrap();

@@ -81,3 +81,46 @@ mechanism:
     let usual = pipeline::build(&common::fixture("crank-slider-axial"), &[]).expect("builds");
     assert!(!usual[0].output.diagnostics.iter().any(|d| d.contains("extreme positions")));
 }
+
+/// Every warning and refusal of `text`, as printed.
+fn messages(text: &str) -> Vec<String> {
+    match tmm_sheets::project::load_sections(text) {
+        Ok((p, refused)) => {
+            p.warnings.iter().map(|w| w.to_string()).chain(refused.iter().map(|r| r.to_string())).collect()
+        }
+        Err(r) => vec![r.to_string()],
+    }
+}
+
+/// The longest run of digits in `s`.
+fn longest_digit_run(s: &str) -> usize {
+    s.split(|c: char| !c.is_ascii_digit()).map(str::len).max().unwrap_or(0)
+}
+
+/// A hostile length (10⁻³⁰⁰ m, or 10⁻⁹ m written with its last bit) is printed short in every
+/// message about it, in metres and in millimetres (not as hundreds of digits, nor as
+/// 0.0000010000000000000002 mm), and no message prints a negative zero.
+#[test]
+fn hostile_tiny_lengths_print_as_short_numbers() {
+    let lever = fixture_text("worked-example");
+    let translating = fixture_text("cams/translating-offset-auto");
+    let rocker = fixture_text("cams/knife-rocker");
+    let mut cases = Vec::new();
+    for tiny in ["1e-300", "1.0000000000000002e-9"] {
+        cases.push(lever.replace("length: 0.12, rpm: 70", &format!("length: {tiny}, rpm: 70")));
+        cases.push(lever.replace("lengths: [0.46, 0.39]", &format!("lengths: [{tiny}, 0.39]")));
+        cases.push(translating.replace("stroke: 0.04, offset: auto", &format!("stroke: {tiny}, offset: auto")));
+        cases.push(translating.replace("stroke: 0.04, offset: auto", &format!("stroke: 0.04, offset: {tiny}")));
+        cases.push(translating.replace("roller: 0.008", &format!("roller: {tiny}")));
+        cases.push(rocker.replace("length: 0.12, swing_deg: 20", &format!("length: {tiny}, swing_deg: 20")));
+    }
+    for text in &cases {
+        assert_ne!(text, &lever, "the substitution must change the file");
+        let all = messages(text);
+        assert!(!all.is_empty(), "a hostile length gives a warning or a refusal:\n{text}");
+        for m in all {
+            assert!(longest_digit_run(&m) <= 8, "a number of more than 8 digits in: {m}");
+            assert!(!m.contains("-0"), "a negative zero in: {m}");
+        }
+    }
+}

@@ -32,13 +32,17 @@ pub struct Custom {
 pub enum LawError {
     #[error("an acceleration analog needs at least two corners, not {0}")]
     TooFewCorners(usize),
-    #[error("corner {index}: ({x}, {a}) is not a finite number pair")]
+    #[error("corner {index}: ({}, {}) is not a finite number pair", sig(*.x, 6), sig(*.a, 6))]
     NotFinite { index: usize, x: f64, a: f64 },
-    #[error("the corners must run from x = 0 to x = 1 (the phase), not from {first} to {last}")]
+    #[error("the corners must run from x = 0 to x = 1 (the phase), not from {} to {}", sig(*.first, 6), sig(*.last, 6))]
     Ends { first: f64, last: f64 },
-    #[error("corner {index}: x = {x} is below the corner before it ({prev}): x must not decrease")]
+    #[error(
+        "corner {index}: x = {} is below the corner before it ({}): x must not decrease",
+        sig(*.x, 6),
+        sig(*.prev, 6)
+    )]
     Decreasing { index: usize, x: f64, prev: f64 },
-    #[error("corner {index}: a third corner at x = {x}; a jump takes exactly two corners")]
+    #[error("corner {index}: a third corner at x = {}; a jump takes exactly two corners", sig(*.x, 6))]
     TripleCorner { index: usize, x: f64 },
     #[error(
         "the velocity analog does not return to zero at the phase's end: the acceleration's net area is {} against its total area {} ({} of it, at most {}); the areas above and below the axis must be equal",

@@ -28,6 +28,7 @@
 //! through corners ([`Custom`]): the figure of the guide's appendix is lost, so a teacher
 //! whose appendix shows another law 5 can give it. [`Law`] is either kind.
 
+use crate::num::digits::sig;
 use crate::num::math::{cos, sin};
 use crate::num::tol;
 use std::f64::consts::PI;
@@ -274,13 +275,13 @@ pub struct Program {
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ProgramError {
-    #[error("the {phase} phase must be a positive angle, not {deg}°")]
+    #[error("the {phase} phase must be a positive angle, not {}°", sig(*.deg, 6))]
     Phase { phase: &'static str, deg: f64 },
-    #[error("the far dwell must be an angle ≥ 0, not {0}°")]
+    #[error("the far dwell must be an angle ≥ 0, not {}°", sig(*.0, 6))]
     Dwell(f64),
-    #[error("rise + far dwell + return = {0:.4}° exceeds a turn (360°)")]
+    #[error("rise + far dwell + return = {}° exceeds a turn (360°)", sig(*.0, 6))]
     OverTurn(f64),
-    #[error("the lift must be positive and finite, not {0}")]
+    #[error("the lift must be positive and finite, not {}", sig(*.0, 6))]
     Lift(f64),
 }
 

@@ -21,6 +21,7 @@ pub mod profile;
 pub mod radius;
 pub mod size;
 
+use crate::num::digits::sig;
 use crate::num::math::Norm;
 use crate::num::tol;
 use crate::num::units::{metres, mm};
@@ -86,10 +87,12 @@ pub enum CamError {
     #[error(transparent)]
     TooLarge(#[from] size::TooLarge),
     #[error(
-        "the roller radius {r_mm:.3} mm is not below the pitch profile's smallest convex radius of curvature ρ_min = {rho_mm:.3} mm: the working profile would be undercut"
+        "the roller radius {} mm is not below the pitch profile's smallest convex radius of curvature ρ_min = {} mm: the working profile would be undercut",
+        sig(*.r_mm, 4),
+        sig(*.rho_mm, 4)
     )]
     RollerTooLarge { r_mm: f64, rho_mm: f64 },
-    #[error("the roller radius must be positive and finite, not {0} m")]
+    #[error("the roller radius must be positive and finite, not {} m", sig(*.0, 6))]
     Roller(f64),
 }
 

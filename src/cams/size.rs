@@ -25,7 +25,7 @@
 use super::follower::Follower;
 use super::laws::{Law, Program};
 use super::radius::{Allowed, Phase, Placement};
-use crate::num::digits::sig;
+use crate::num::digits::{sig, written};
 use crate::num::math::{sin, tan};
 use crate::num::tol;
 
@@ -85,11 +85,6 @@ impl std::error::Error for TooLarge {}
 /// A computed length for a message, three significant digits: kilometres from 1 km.
 fn metres(x: f64) -> String {
     if x.abs() >= 1e3 { format!("{} km", sig(x / 1e3, 3)) } else { format!("{} m", sig(x, 3)) }
-}
-
-/// A number as the file wrote it (a degree's round trip through radians is below 9 digits).
-fn given(x: f64) -> String {
-    sig(x, 9)
 }
 
 /// What the course's cams are like, for naming the input most out of range: lengths (strokes,
@@ -187,11 +182,11 @@ fn explain(cause: Cause, follower: Follower, program: &Program, allowed: Allowed
         };
         format!("the velocity analog {name} reaches {}", metres(l * phase_analog(program, p)))
     };
-    let deg = |x: f64| given(x.to_degrees());
+    let deg = |x: f64| written(x.to_degrees());
     match (cause, follower, placement) {
-        (Cause::Length, Follower::Translating, _) => format!("a stroke of {} m", given(program.lift)),
-        (Cause::Length, Follower::Rocker { length }, _) => format!("a rocker {} m long", given(length)),
-        (Cause::Offset, _, Placement::Offset(e)) => format!("an offset of {} m", given(e)),
+        (Cause::Length, Follower::Translating, _) => format!("a stroke of {} m", written(program.lift)),
+        (Cause::Length, Follower::Rocker { length }, _) => format!("a rocker {} m long", written(length)),
+        (Cause::Offset, _, Placement::Offset(e)) => format!("an offset of {} m", written(e)),
         (Cause::Offset, ..) => "the offset".into(),
         (Cause::Phase(p), ..) => {
             format!("over a {} of only {}°, {}", phase_name(p), deg(law_of(program, p).1), analog(p))

@@ -6,6 +6,7 @@
 //! set at the centre distance of zero backlash, and their tips shortened by Δy·m so that the
 //! radial clearance stays c*·m.
 
+use crate::num::digits::{fixed, sig};
 use crate::num::math::{acos, cbrt, cos, sin, tan};
 use crate::num::units::mm;
 use std::f64::consts::PI;
@@ -151,17 +152,27 @@ pub struct Pair {
 pub enum PairError {
     #[error("z{wheel} = {z}: a wheel needs at least 5 teeth")]
     TooFewTeeth { wheel: usize, z: u32 },
-    #[error("the module must be positive and finite, not {0} m")]
+    #[error("the module must be positive and finite, not {} m", sig(*.0, 6))]
     Module(f64),
-    #[error("{field} = {value} is outside {range}")]
+    #[error("{field} = {} is outside {range}", sig(*.value, 6))]
     Parameter { field: &'static str, value: f64, range: &'static str },
     #[error(
-        "the shifts x1 + x2 = {sum} give inv α_w = {inv_w:.6} < 0: the wheels cannot mesh without backlash at any centre distance (raise x1 + x2 above {limit:.4})"
+        "the shifts x1 + x2 = {} give inv α_w = {} < 0: the wheels cannot mesh without backlash at any centre distance (raise x1 + x2 above {})",
+        sig(*.sum, 6),
+        sig(*.inv_w, 4),
+        fixed(*.limit, 4)
     )]
     NoWorkingAngle { sum: f64, inv_w: f64, limit: f64 },
-    #[error("wheel {wheel}'s teeth are pointed: the tip thickness is {s_a_mm:.3} mm (lower x{wheel} = {x})")]
+    #[error(
+        "wheel {wheel}'s teeth are pointed: the tip thickness is {} mm (lower x{wheel} = {})",
+        fixed(*.s_a_mm, 3),
+        sig(*.x, 6)
+    )]
     Pointed { wheel: usize, s_a_mm: f64, x: f64 },
-    #[error("the contact ratio is {eps:.3} < 1: the mesh is not continuous (B1B2 shorter than the base pitch)")]
+    #[error(
+        "the contact ratio is {} < 1: the mesh is not continuous (B1B2 shorter than the base pitch)",
+        fixed(*.eps, 3)
+    )]
     NotContinuous { eps: f64 },
 }
 

@@ -6,6 +6,7 @@ use super::linkage::{Mechanism, PointId, State};
 use super::motion::{self, Motion, MotionError, Start};
 use super::structure::{self, Structure};
 use super::trajectory;
+use crate::num::digits::{fixed, sig};
 use crate::num::math::Norm;
 use crate::num::tol;
 use kurbo::Vec2;
@@ -70,18 +71,21 @@ pub struct Kinematics {
 pub enum AnalysisError {
     #[error(transparent)]
     Motion(#[from] MotionError),
-    #[error("force analysis at φ1 = {phi_deg:.2}°: {error}")]
+    #[error("force analysis at φ1 = {}°: {error}", fixed(*.phi_deg, 2))]
     Force { phi_deg: f64, error: ForceError },
     #[error(
-        "the solution at the course angle φ = {phi_deg:.2}° is not finite (point {point}); the mechanism is too close to a singular position"
+        "the solution at the course angle φ = {}° is not finite (point {point}); the mechanism is too close to a singular position",
+        fixed(*.phi_deg, 2)
     )]
     NotFinite { phi_deg: f64, point: String },
     #[error(
-        "the load on slider {point} (line {line} of the project file): the slider does not move (its stroke is {stroke:.3e} m), so the load's position in the stroke, S/H, is undefined"
+        "the load on slider {point} (line {line} of the project file): the slider does not move (its stroke is {} m), so the load's position in the stroke, S/H, is undefined",
+        sig(*.stroke, 3)
     )]
     ZeroStroke { point: String, line: u64, stroke: f64 },
     #[error(
-        "force analysis at φ1 = {phi_deg:.2}°: {what} is not finite; the mechanism is too close to a singular position"
+        "force analysis at φ1 = {}°: {what} is not finite; the mechanism is too close to a singular position",
+        fixed(*.phi_deg, 2)
     )]
     ForceNotFinite { phi_deg: f64, what: String },
 }

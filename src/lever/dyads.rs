@@ -6,18 +6,27 @@
 //! derivative equations (2×2 linear systems), never from finite differences.
 
 use super::kin::{Kin, LinkKin};
+use crate::num::digits::sig;
 use crate::num::math;
 use crate::num::tol::DEAD_POINT_SIN;
 use kurbo::Vec2;
 
 /// Why a dyad has no solution at the requested configuration.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum DyadFailure {
     /// The two circles (or the circle and the guide line) do not meet.
+    #[error(
+        "the joints are {} m apart, the links reach only {}…{} m",
+        sig(*.distance, 4),
+        sig(*.reach_min, 4),
+        sig(*.reach_max, 4)
+    )]
     NoIntersection { distance: f64, reach_min: f64, reach_max: f64 },
     /// The dyad is exactly at a dead point (transmission angle 0° or 180°).
+    #[error("transmission angle {}°", sig(*.transmission_deg, 3))]
     DeadPoint { transmission_deg: f64 },
     /// The slider block of a kulisa passes through the kulisa's pivot.
+    #[error("the block is {} m from the kulisa pivot", sig(*.distance, 3))]
     BlockAtPivot { distance: f64 },
 }
 

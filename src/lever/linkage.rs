@@ -157,7 +157,7 @@ pub struct State {
 /// A failed step: which one, and why. [`super::motion`] turns it into a message that names
 /// the Assur group and the crank angles.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("step {} of the mechanism has no solution: {why:?}", step + 1)]
+#[error("step {} of the mechanism has no solution: {why}", step + 1)]
 pub struct StepFailure {
     pub step: usize,
     pub why: DyadFailure,

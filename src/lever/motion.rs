@@ -113,20 +113,6 @@ pub fn describe_step(m: &Mechanism, step: usize) -> String {
     }
 }
 
-fn describe_failure(why: &DyadFailure) -> String {
-    match why {
-        DyadFailure::NoIntersection { distance, reach_min, reach_max } => {
-            format!("the joints are {distance:.4} m apart, the links reach only {reach_min:.4}…{reach_max:.4} m")
-        }
-        DyadFailure::DeadPoint { transmission_deg } => {
-            format!("transmission angle {transmission_deg:.2e}°")
-        }
-        DyadFailure::BlockAtPivot { distance } => {
-            format!("the block is {distance:.2e} m from the kulisa pivot")
-        }
-    }
-}
-
 /// Checks that the mechanism assembles over a whole turn and finds position 0.
 pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion, MotionError> {
     // Scan in u from absolute θ = 0 in the sense of rotation: θ = sense·u.
@@ -284,7 +270,7 @@ fn assembly_error(m: &Mechanism, f: StepFailure, u: f64, sense: f64, start: Star
         to += step;
     }
     let (group, index) = (describe_step(m, f.step), m.group_of_step(f.step));
-    let detail = describe_failure(&f.why);
+    let detail = f.why.to_string();
     let theta_deg = |x: f64| (sense * x).rem_euclid(TAU).to_degrees();
     let phi_deg = |x: f64| match start {
         Start::Angle(t0) => Some((sense * (sense * x - t0)).rem_euclid(TAU).to_degrees()),
@@ -327,7 +313,7 @@ pub fn sample_at(m: &Mechanism, motion: &Motion, phi: f64) -> Result<State, Moti
         let theta = motion.theta(phi).rem_euclid(TAU).to_degrees();
         let phi = phi.to_degrees();
         let angles = Angles { theta_deg: (theta, theta), phi_deg: Some((phi, phi)), sense: motion.sense };
-        let (group, detail) = (describe_step(m, f.step), describe_failure(&f.why));
+        let (group, detail) = (describe_step(m, f.step), f.why.to_string());
         let index = m.group_of_step(f.step);
         match f.why {
             DyadFailure::DeadPoint { .. } => MotionError::DeadPoint { group, index, angles, detail },

@@ -49,6 +49,13 @@ pub fn sig(x: f64, digits: usize) -> String {
     }
 }
 
+/// A number of the project file as it was written, for a message: [`sig`] to nine digits, so
+/// that a value written with up to nine digits (or a degree's round trip through radians)
+/// reads back as written, and 1e-300 as `1e-300`.
+pub fn written(x: f64) -> String {
+    sig(x, 9)
+}
+
 /// `x` with `decimals` fixed decimals for a message, a value that rounds to zero without its
 /// sign (`0.00°`, never `-0.00°`).
 pub fn fixed(x: f64, decimals: usize) -> String {
@@ -89,5 +96,14 @@ mod tests {
         assert_eq!(sig(1e300, 3), "1e300");
         assert_eq!(sig(0.0, 3), "0");
         assert_eq!(sig(5.0, 0), "5");
+    }
+
+    #[test]
+    fn written_numbers_read_back_as_written_and_short() {
+        assert_eq!(written(0.123456789), "0.123456789");
+        assert_eq!(written(1e-300), "1e-300");
+        assert_eq!(written(1.0000000000000002e-9), "1e-9");
+        assert_eq!(written(25f64.to_radians().to_degrees()), "25");
+        assert_eq!(written(-0.0), "0");
     }
 }

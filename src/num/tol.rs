@@ -36,6 +36,10 @@ pub const ZERO_FORCE: f64 = 1e-12;
 /// the way its acceleration points.
 pub const ZERO_SPEED: f64 = 1e-9;
 
+/// Relative to the larger: two speeds within this fraction of each other are one (sheet 2's
+/// n1 as written and the crank's, which may come from ω1 in 1/s through π/30).
+pub const SAME_SPEED: f64 = 1e-9;
+
 /// Relative: a scale factor within this fraction of a round value is that value.
 pub const ROUND_VALUE: f64 = 1e-12;
 

@@ -3,6 +3,7 @@
 
 use super::mechanism::Along;
 use super::values::{Finite, Name, NonNegative, Positive};
+use crate::num::digits::{sig, written};
 use crate::num::limits::INPUT_MAX;
 use serde::{Deserialize, Deserializer};
 use serde_saphyr::Spanned;
@@ -53,7 +54,11 @@ impl<'de> Deserialize<'de> for Inertia {
                 if x.is_finite() && (0.0..=INPUT_MAX).contains(&x) {
                     Ok(Inertia::Value(x))
                 } else {
-                    Err(E::custom(format!("expected a moment of inertia from 0 to {INPUT_MAX:e} kg·m², got {x}")))
+                    Err(E::custom(format!(
+                        "expected a moment of inertia from 0 to {} kg·m², got {}",
+                        sig(INPUT_MAX, 3),
+                        written(x)
+                    )))
                 }
             }
             fn visit_i64<E: serde::de::Error>(self, x: i64) -> Result<Inertia, E> {

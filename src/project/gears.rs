@@ -9,7 +9,9 @@ use super::values::{Finite, LocalText, Positive};
 use super::{Kind, Refusal, Warning, at, invalid, warning};
 use crate::gears::pair::{Pair, PairError, PairSpec, PairWarning};
 use crate::gears::planetary::{self, Scheme, Stage, StageError, StageSpec};
-use crate::num::digits::sig;
+use crate::num::digits::{fixed, sig, written};
+use crate::num::tol;
+use crate::num::units::metres;
 use serde::Deserialize;
 use serde_saphyr::{Location, Spanned};
 
@@ -110,6 +112,14 @@ pub struct PlanetaryFileSpec {
     pub tolerance_percent: Option<Spanned<Positive>>,
 }
 
+/// The crank's speed, rev/min, and the field it is written in (`mechanism.crank.rpm`, or
+/// `mechanism.crank.omega` in 1/s): sheet 2's n1 unless `output_rpm` gives another.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CrankSpeed {
+    pub rpm: f64,
+    pub field: &'static str,
+}
+
 /// Everything sheet 2 needs.
 #[derive(Debug, Clone)]
 pub struct GearsProject {
@@ -134,10 +144,10 @@ pub struct PlanetaryProject {
 
 const FIELD: &str = "gears";
 
-/// Resolves the section; `crank_rpm` is the mechanism's crank speed when there is one.
+/// Resolves the section; `crank` is the mechanism's crank speed when there is one.
 pub fn resolve(
     spec: &Spanned<GearsSpec>,
-    crank_rpm: Option<f64>,
+    crank: Option<CrankSpeed>,
     warnings: &mut Vec<Warning>,
 ) -> Result<GearsProject, Refusal> {
     let g = &spec.value;
@@ -156,20 +166,44 @@ pub fn resolve(
                 at(&g.pair),
                 "gears.pair.shift",
                 format!(
-                    "wheel {wheel} (z = {}) is undercut at x = {x} (x_min = {x_min:.4}); the sheet draws the undercut (`shift: auto` avoids it)",
-                    pair_spec.z[wheel - 1]
+                    "wheel {wheel} (z = {}) is undercut at x = {} (x_min = {}); the sheet draws the undercut (`shift: auto` avoids it)",
+                    pair_spec.z[wheel - 1],
+                    written(*x),
+                    fixed(*x_min, 4)
                 ),
             ));
         }
     }
     let motor_rpm = g.motor_rpm.as_ref().map(|n| n.value.0);
-    let output_rpm = g.output_rpm.as_ref().map(|n| n.value.0).or(crank_rpm);
+    if let (Some(n1), Some(crank)) = (&g.output_rpm, crank) {
+        warnings.extend(speeds_differ(n1, crank));
+    }
+    let output_rpm = g.output_rpm.as_ref().map(|n| n.value.0).or(crank.map(|c| c.rpm));
     let planetary = match &g.planetary {
         Some(p) => Some(planetary_project(p, &pair, motor_rpm, output_rpm, spec.referenced)?),
         None => None,
     };
     let assumptions = text::assumptions(FIELD, &g.assumptions)?;
     Ok(GearsProject { pair, auto_shift, warnings: pair_warnings, motor_rpm, output_rpm, planetary, assumptions })
+}
+
+/// `output_rpm` written besides a crank that turns at another speed: sheets 1 and 2 would
+/// then compute with different speeds of one machine.
+fn speeds_differ(n1: &Spanned<Positive>, crank: CrankSpeed) -> Option<Warning> {
+    let (n, c) = (n1.value.0, crank.rpm);
+    if (n - c).abs() <= tol::SAME_SPEED * n.abs().max(c.abs()) {
+        return None;
+    }
+    Some(warning(
+        at(n1),
+        "gears.output_rpm",
+        format!(
+            "n1 = {} rev/min, but the crank turns at {} rev/min ({}): sheets 1 and 2 then use different speeds; leave `output_rpm` out to take the crank's",
+            written(n),
+            written(c),
+            crank.field
+        ),
+    ))
 }
 
 /// The course's undercut limit h_a*·(z_lim − z)/z_lim, z_lim = ⌊2h_a*/sin²α⌋ (17 for the
@@ -182,7 +216,7 @@ fn course_x_min(spec: &PairSpec, z: u32) -> f64 {
 
 fn pair_spec(p: &Spanned<PairFileSpec>) -> Result<(PairSpec, [bool; 2]), Refusal> {
     let f = &p.value;
-    let module = f.module.value.0 * 1e-3;
+    let module = metres(f.module.value.0);
     let z = [f.z[0].value, f.z[1].value];
     for (i, zi) in f.z.iter().enumerate() {
         if zi.value < 5 {
@@ -313,11 +347,17 @@ fn planetary_project(
         // Say where a derived ratio came from: a wrong speed is the usual cause.
         let from = match (ratio_given, motor, output) {
             (false, Some(n_m), Some(n_1)) if !matches!(e, StageError::BadPlanets { .. }) => {
-                format!(" (u_pl = n_motor / n1 / u_12 = {n_m} / {n_1:.4} / {:.4} = {ratio:.4})", pair.ratio)
+                format!(
+                    " (u_pl = n_motor / n1 / u_12 = {} / {} / {} = {})",
+                    written(n_m),
+                    fixed(n_1, 4),
+                    fixed(pair.ratio, 4),
+                    fixed(ratio, 4)
+                )
             }
             _ => String::new(),
         };
         invalid(loc, field, format!("{e}{from}")).kind(kind)
     })?;
-    Ok(PlanetaryProject { module: f.module.value.0 * 1e-3, stage, ratio_given })
+    Ok(PlanetaryProject { module: metres(f.module.value.0), stage, ratio_given })
 }

@@ -1,18 +1,16 @@
 //! The project file (YAML) and its resolution into the domains' inputs.
 //!
 //! One file per section of the file format (`info`, `mechanism`, `forces`, `gears`, `cam`);
-//! `lever` and `lever_forces` resolve the lever sections into [`crate::lever`] types, `gears`
+//! `lever` resolves the lever sections into [`crate::lever`] types, `gears`
 //! sheet 2's section and `cam` sheet 3's, checking every cross-reference with its line and
 //! column. Text that reaches a sheet is checked in [`text`]; input that is valid but almost
 //! surely a mistake gives a [`Warning`].
 
 pub mod cam;
-mod cam_design;
 pub mod forces;
 pub mod gears;
 pub mod info;
 mod lever;
-mod lever_forces;
 pub mod mechanism;
 pub mod places;
 mod refusal;
@@ -143,7 +141,10 @@ pub fn load_sections(text: &str) -> Result<(Project, Vec<Refusal>), Refusal> {
         Some(l) => Some(l.mechanism.omega1.abs() * 30.0 / std::f64::consts::PI),
         None => written_crank_rpm(text, &places),
     };
-    let gears = read_gears(text, &places, crank_rpm, &mut warnings).map_err(|r| {
+    let omega = places.has("mechanism.crank.omega");
+    let field = if omega { "mechanism.crank.omega" } else { "mechanism.crank.rpm" };
+    let crank = crank_rpm.map(|rpm| gears::CrankSpeed { rpm, field });
+    let gears = read_gears(text, &places, crank, &mut warnings).map_err(|r| {
         // n1 defaults to the crank's speed: say why it is missing when the crank is refused.
         let mechanism_refused = sections.refused.iter().any(|m| m.section == Some("mechanism"));
         if r.path == "gears.output_rpm" && crank_rpm.is_none() && mechanism_refused {
@@ -234,15 +235,15 @@ fn written_crank_rpm(text: &str, places: &Places) -> Option<f64> {
     }
 }
 
-/// Sheet 2's section; `crank_rpm` is the mechanism's crank speed when there is one.
+/// Sheet 2's section; `crank` is the mechanism's crank speed when there is one.
 fn read_gears(
     text: &str,
     places: &Places,
-    crank_rpm: Option<f64>,
+    crank: Option<gears::CrankSpeed>,
     warnings: &mut Vec<Warning>,
 ) -> Result<Option<GearsProject>, Refusal> {
     let part: GearsPart = yaml::read(text, places)?;
-    part.gears.as_ref().map(|g| gears::resolve(g, crank_rpm, warnings)).transpose()
+    part.gears.as_ref().map(|g| gears::resolve(g, crank, warnings)).transpose()
 }
 
 /// Sheet 3's section.

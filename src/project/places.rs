@@ -156,6 +156,11 @@ impl Places {
         inside.map(|n| n.path.clone()).unwrap_or_else(|| self.path_at(line, column))
     }
 
+    /// Whether `path` itself is written in the file.
+    pub fn has(&self, path: &str) -> bool {
+        self.nodes.iter().any(|n| n.path == path)
+    }
+
     /// Where `path` is written (its first node), else where its nearest written ancestor is.
     pub fn place_of(&self, path: &str) -> Option<(u64, u64)> {
         let mut p = path;
@@ -186,6 +191,7 @@ mod tests {
         assert_eq!(p.place_of("gears.pair.z[1]"), Some((4, 29)));
         assert_eq!(p.place_of("gears.pair.shift"), Some((4, 3)), "a field not written: its mapping's key");
         assert_eq!(p.place_of("cam"), None);
+        assert!(p.has("gears.pair.module") && !p.has("gears.pair.shift"));
         assert_eq!(p.mapping_at(4, 33), "gears.pair", "the pair's closing brace");
         assert_eq!(p.path_at(4, 33), "gears.pair");
         assert!(p.duplicates.is_empty());

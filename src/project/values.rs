@@ -5,6 +5,7 @@
 //! at its line instead of ending as `inf` in an output.
 
 use crate::drawing::labels::Language;
+use crate::num::digits::{sig, written};
 use crate::num::limits::INPUT_MAX;
 use serde::{Deserialize, Deserializer};
 use serde_saphyr::Spanned;
@@ -18,15 +19,17 @@ pub type UserText = Spanned<String>;
 fn number<'de, D: Deserializer<'de>>(d: D, ok: impl Fn(f64) -> bool, what: &str) -> Result<f64, D::Error> {
     let x = f64::deserialize(d)?;
     if !x.is_finite() {
-        return Err(serde::de::Error::custom(format!("expected {what}, got {x}")));
+        return Err(serde::de::Error::custom(format!("expected {what}, got {}", written(x))));
     }
     if x.abs() > INPUT_MAX {
         return Err(serde::de::Error::custom(format!(
-            "{x:e} is too large: numbers in a project file are SI units and must lie within ±{INPUT_MAX:e}"
+            "{} is too large: numbers in a project file are SI units and must lie within ±{}",
+            written(x),
+            sig(INPUT_MAX, 3)
         )));
     }
     if !ok(x) {
-        return Err(serde::de::Error::custom(format!("expected {what}, got {x}")));
+        return Err(serde::de::Error::custom(format!("expected {what}, got {}", written(x))));
     }
     Ok(x)
 }

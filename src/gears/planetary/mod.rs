@@ -20,6 +20,8 @@ pub use conditions::{Condition, ConditionKind, Relation, check};
 pub use scheme::Scheme;
 pub use search::synthesise;
 
+use crate::num::digits::{fixed, sig};
+
 /// The planets searched when the user does not fix K: fewer than 3 leaves the carrier
 /// unbalanced, more than 8 crowds the planets of the course's small sun gears.
 pub const PLANETS_SEARCHED: std::ops::RangeInclusive<u32> = 3..=8;
@@ -99,7 +101,11 @@ pub struct Stage {
 /// Why no stage is given.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum StageError {
-    #[error("the planetary ratio must be a finite number above 1 and at most {RATIO_MAX}, not {ratio}")]
+    #[error(
+        "the planetary ratio must be a finite number above 1 and at most {}, not {}",
+        sig(RATIO_MAX, 6),
+        sig(*.ratio, 6)
+    )]
     BadRatio { ratio: f64 },
     #[error("{}", no_set_message(*.scheme, *.ratio, *.tolerance, *.reachable, *.planets, *.z_max))]
     NoSet {
@@ -118,12 +124,12 @@ pub enum StageError {
     BadPlanets { planets: u32 },
     #[error("the {scheme} scheme takes {expected} tooth numbers, each at least 1; got {got:?}")]
     BadTeeth { scheme: Scheme, expected: usize, got: Vec<u32> },
-    #[error("{field} = {value} is outside {range}")]
+    #[error("{field} = {} is outside {range}", sig(*.value, 6))]
     BadParameter { field: &'static str, value: f64, range: &'static str },
 }
 
 fn percent(tolerance: f64) -> String {
-    let text = format!("{:.3}", tolerance * 100.0);
+    let text = fixed(tolerance * 100.0, 3);
     text.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
@@ -142,16 +148,23 @@ fn no_set_message(
     };
     let free_k = if planets.is_some() { "leave the number of planets to the program, " } else { "" };
     let searched = format!(
-        "no {scheme} tooth set with z ≤ {z_max} and {k} gives u = {ratio:.4} within ±{} % with every condition met",
+        "no {scheme} tooth set with z ≤ {z_max} and {k} gives u = {} within ±{} % with every condition met",
+        fixed(ratio, 4),
         percent(tolerance)
     );
     let hint = match reachable {
         None => format!("no set of this scheme meets the conditions at all: {free_k}choose the other scheme"),
         Some((lo, hi)) if ratio * (1.0 + tolerance) < lo || ratio * (1.0 - tolerance) > hi => {
-            format!("this scheme reaches only u = {lo:.3}…{hi:.3}: {free_k}choose the other scheme or another ratio")
+            format!(
+                "this scheme reaches only u = {}…{}: {free_k}choose the other scheme or another ratio",
+                fixed(lo, 3),
+                fixed(hi, 3)
+            )
         }
         Some((lo, hi)) => format!(
-            "the scheme reaches u = {lo:.3}…{hi:.3} but no set falls within the tolerance: widen the tolerance, {free_k}or choose the other scheme"
+            "the scheme reaches u = {}…{} but no set falls within the tolerance: widen the tolerance, {free_k}or choose the other scheme",
+            fixed(lo, 3),
+            fixed(hi, 3)
         ),
     };
     format!("{searched}; {hint}")

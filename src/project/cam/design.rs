@@ -3,11 +3,13 @@
 //! profile at `roller`, a swing no centre can serve at `swing_deg`, a cam too large to draw at
 //! the input that makes it so (a phase, a stroke, an allowed angle, …).
 
-use super::cam::{CamSpecFile, FollowerInput, PerPhase};
-use super::{Kind, Refusal, at, invalid};
+use super::super::{Kind, Refusal, at, invalid};
+use super::follower::FollowerInput;
+use super::spec::{CamSpecFile, PerPhase};
 use crate::cams::radius::{Phase, RadiusError};
 use crate::cams::size::Cause;
 use crate::cams::{CamError, CamSpec, Design};
+use crate::num::digits::sig;
 use serde_saphyr::{Location, Spanned};
 
 /// Designs `cam`, resolved from `spec`; `f` and `roller` say where the follower and the roller
@@ -36,7 +38,8 @@ pub(super) fn design(
             "cam",
             format!(
                 "the cam cannot be designed from this input (r_min = {} m, ρ_min = {} m): check the phases, the lift and the pressure angle",
-                design.centre.r_min, design.rho_min
+                sig(design.centre.r_min, 4),
+                sig(design.rho_min, 4)
             ),
         )
         .kind(Kind::Design));

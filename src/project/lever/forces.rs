@@ -1,14 +1,15 @@
 //! Turns the project file's `forces` section into the mechanics' [`ForceModel`]: masses with
 //! their centres, moments of inertia (given, or m·l²/12), and the loads on sliders.
 
-use super::forces::*;
-use super::mechanism::Along;
-use super::values::Name;
-use super::{Kind, Refusal, Warning, at, invalid, warning};
+use super::super::forces::*;
+use super::super::mechanism::Along;
+use super::super::values::Name;
+use super::super::{Kind, Refusal, Warning, at, invalid, warning};
 use crate::lever::indicators::{self, Indicator};
 use crate::lever::kinetostatics::{ForceModel, LinkMass};
 use crate::lever::linkage::{LinkId, LinkKind, Mechanism, PointId, Step};
 use crate::lever::load::{Branch, Curve, Load, LoadKind, Stroke};
+use crate::num::digits::written;
 use crate::num::limits;
 use crate::num::math::Norm;
 use kurbo::Vec2;
@@ -42,7 +43,11 @@ pub fn build_forces(
             warnings.push(warning(
                 at(&lm.link),
                 &field,
-                format!("{} kg is more than {:e} kg: masses are in kilograms", mass.mass, limits::MASS_PLAUSIBLE_MAX),
+                format!(
+                    "{} kg is more than {} kg: masses are in kilograms",
+                    written(mass.mass),
+                    written(limits::MASS_PLAUSIBLE_MAX)
+                ),
             ));
         }
         masses.push(mass);
@@ -302,16 +307,16 @@ fn diagram(d: &DiagramSpec, field: &str) -> Result<Curve, Refusal> {
         return bad(format!(
             "the stroke fractions must increase: row {} ({}) does not come after row {} ({})",
             w + 2,
-            rows[w + 1].0,
+            written(rows[w + 1].0),
             w + 1,
-            rows[w].0
+            written(rows[w].0)
         ));
     }
     if rows[0].0 != 0.0 || rows[rows.len() - 1].0 != 1.0 {
         return bad(format!(
             "the stroke fractions must run from 0 to 1, not {} to {}",
-            rows[0].0,
-            rows[rows.len() - 1].0
+            written(rows[0].0),
+            written(rows[rows.len() - 1].0)
         ));
     }
     Ok(Curve { points: rows })
