@@ -298,24 +298,7 @@ fn planetary_project(
     if !(0.05..=100.0).contains(&f.module.value.0) {
         return Err(invalid(at(&f.module), "gears.planetary.module", "the module is in millimetres: 0.05…100 mm"));
     }
-    let (ratio, ratio_given) = match (&f.ratio, motor, output) {
-        (Some(r), _, _) => (r.value.0, true),
-        (None, Some(n_m), Some(n_1)) => (n_m / n_1 / pair.ratio, false),
-        (None, None, _) => {
-            return Err(invalid(
-                section,
-                "gears.motor_rpm",
-                "the planetary stage needs its ratio: give `motor_rpm` (and `output_rpm` or a mechanism's crank), or `planetary.ratio`",
-            ));
-        }
-        (None, Some(_), None) => {
-            return Err(invalid(
-                section,
-                "gears.output_rpm",
-                "the planetary stage needs n1: give `output_rpm`, a mechanism whose crank turns at it, or `planetary.ratio`",
-            ));
-        }
-    };
+    let (ratio, ratio_given) = stage_ratio(f, pair, motor, output, section)?;
     let ratio_loc = f.ratio.as_ref().map_or(p.referenced, |r| r.referenced);
     let mut spec = StageSpec::course(scheme, ratio);
     if let Some(k) = &f.planets {
@@ -360,4 +343,29 @@ fn planetary_project(
         invalid(loc, field, format!("{e}{from}")).kind(kind)
     })?;
     Ok(PlanetaryProject { module: metres(f.module.value.0), stage, ratio_given })
+}
+
+/// The stage's ratio: given as `planetary.ratio`, or derived from the speeds as the course
+/// does (u_pl = n_motor / n1 / u_12); `true` when given.
+fn stage_ratio(
+    f: &PlanetaryFileSpec,
+    pair: &Pair,
+    motor: Option<f64>,
+    output: Option<f64>,
+    section: Location,
+) -> Result<(f64, bool), Refusal> {
+    match (&f.ratio, motor, output) {
+        (Some(r), _, _) => Ok((r.value.0, true)),
+        (None, Some(n_m), Some(n_1)) => Ok((n_m / n_1 / pair.ratio, false)),
+        (None, None, _) => Err(invalid(
+            section,
+            "gears.motor_rpm",
+            "the planetary stage needs its ratio: give `motor_rpm` (and `output_rpm` or a mechanism's crank), or `planetary.ratio`",
+        )),
+        (None, Some(_), None) => Err(invalid(
+            section,
+            "gears.output_rpm",
+            "the planetary stage needs n1: give `output_rpm`, a mechanism whose crank turns at it, or `planetary.ratio`",
+        )),
+    }
 }
