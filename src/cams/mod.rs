@@ -26,28 +26,13 @@ use crate::num::math::Norm;
 use crate::num::tol;
 use crate::num::units::{metres, mm};
 use follower::Follower;
-use kurbo::Vec2;
 use laws::Program;
 use profile::Profile;
 use radius::{Allowed, Centre, Phase, Placement, RadiusError, Region};
 
-/// The cam's sense of rotation.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Sense {
-    Cw,
-    Ccw,
-}
-
-impl Sense {
-    /// A point computed for a clockwise cam, in this sense's picture (its mirror for ccw).
-    pub fn apply(self, v: Vec2) -> Vec2 {
-        match self {
-            Sense::Cw => v,
-            Sense::Ccw => Vec2::new(-v.x, v.y),
-        }
-    }
-}
+/// The cam's sense of rotation (the domain computes a clockwise cam; [`Sense::apply`] turns
+/// its points into the picture of a counter-clockwise one).
+pub use crate::num::Sense;
 
 /// The roller as asked for.
 #[derive(Debug, Clone, Copy, PartialEq)]

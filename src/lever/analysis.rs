@@ -6,6 +6,7 @@ use super::linkage::{Mechanism, PointId, State};
 use super::motion::{self, Motion, MotionError, Start};
 use super::structure::{self, Structure};
 use super::trajectory;
+use crate::num::Sense;
 use crate::num::digits::{fixed, sig};
 use crate::num::math::Norm;
 use crate::num::tol;
@@ -31,8 +32,8 @@ pub struct Trajectory {
 /// What to analyse: the crank's sense, position 0, the drawn positions and φ1.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
-    /// +1 counter-clockwise, −1 clockwise.
-    pub sense: f64,
+    /// The crank's sense of rotation.
+    pub sense: Sense,
     pub start: Start,
     /// 12 (every 30°) or 8 (every 45°).
     pub positions: usize,

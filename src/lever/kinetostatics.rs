@@ -436,7 +436,7 @@ fn zhukovsky(
     pin: PointId,
     v_a: Vec2,
 ) -> (Vec<LeverForce>, Vec<f64>, f64) {
-    let sense = m.omega1.signum();
+    let sense = m.sense().sign();
     let turn = |v: Vec2| v.turn_90() * sense;
     let mut lever: Vec<LeverForce> = applied
         .iter()

@@ -3,6 +3,7 @@
 
 use super::dyads::{self, DyadFailure};
 use super::kin::{Kin, LinkKin};
+use crate::num::Sense;
 use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::Vec2;
@@ -173,6 +174,11 @@ pub struct Crank {
 }
 
 impl Mechanism {
+    /// The crank's sense of rotation, the sign of ω1.
+    pub fn sense(&self) -> Sense {
+        Sense::of(self.omega1)
+    }
+
     /// The crank, which the model always makes the first step.
     pub fn crank(&self) -> Crank {
         match self.steps.first() {

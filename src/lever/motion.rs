@@ -8,6 +8,7 @@
 
 use super::dyads::DyadFailure;
 use super::linkage::{Mechanism, Output, PointId, State, StepFailure};
+use crate::num::Sense;
 use crate::num::digits::fixed;
 use crate::num::math::{self, Norm};
 use crate::num::roots::{self, RootError};
@@ -37,8 +38,8 @@ pub enum Start {
 pub struct Angles {
     pub theta_deg: (f64, f64),
     pub phi_deg: Option<(f64, f64)>,
-    /// +1 when the crank turns counter-clockwise: a range runs the way the crank turns.
-    pub sense: f64,
+    /// The crank's sense: a range runs the way the crank turns.
+    pub sense: Sense,
 }
 
 impl std::fmt::Display for Angles {
@@ -48,7 +49,7 @@ impl std::fmt::Display for Angles {
         if a == b {
             write!(f, "the absolute crank angle θ = {}° (from the x axis, counter-clockwise)", deg(a))?;
         } else {
-            let turning = if self.sense > 0.0 { "counter-clockwise" } else { "clockwise" };
+            let turning = self.sense.word();
             write!(
                 f,
                 "absolute crank angles θ from {}° to {}° as the crank turns {turning} (θ from the x axis, counter-clockwise)",
@@ -84,8 +85,8 @@ pub enum MotionError {
 pub struct Motion {
     /// Absolute crank angle of position 0, radians.
     pub theta0: f64,
-    /// +1 counter-clockwise, −1 clockwise.
-    pub sense: f64,
+    /// The crank's sense of rotation.
+    pub sense: Sense,
     /// Course angle of the other extreme position, when the output has extremes.
     pub other_extreme: Option<f64>,
     /// Absolute crank angles (radians) of every extreme position of the output over a turn.
@@ -96,7 +97,7 @@ pub struct Motion {
 
 impl Motion {
     pub fn theta(&self, phi: f64) -> f64 {
-        self.theta0 + self.sense * phi
+        self.theta0 + self.sense.sign() * phi
     }
 }
 
@@ -114,9 +115,9 @@ pub fn describe_step(m: &Mechanism, step: usize) -> String {
 }
 
 /// Checks that the mechanism assembles over a whole turn and finds position 0.
-pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion, MotionError> {
+pub fn analyse_motion(m: &Mechanism, sense: Sense, start: Start) -> Result<Motion, MotionError> {
     // Scan in u from absolute θ = 0 in the sense of rotation: θ = sense·u.
-    let theta_of = |u: f64| sense * u;
+    let theta_of = |u: f64| sense.sign() * u;
     let fail = |f: StepFailure, u: f64| assembly_error(m, f, u, sense, start);
     let mut states = Vec::with_capacity(SCAN_SAMPLES);
     for k in 0..SCAN_SAMPLES {
@@ -138,7 +139,7 @@ pub fn analyse_motion(m: &Mechanism, sense: f64, start: Start) -> Result<Motion,
     let other_of = |theta0: f64| {
         roots
             .iter()
-            .map(|&(u, _)| (sense * (theta_of(u) - theta0)).rem_euclid(TAU))
+            .map(|&(u, _)| (sense.sign() * (theta_of(u) - theta0)).rem_euclid(TAU))
             .find(|d| d.abs() > tol::SAME_ANGLE && (TAU - d).abs() > tol::SAME_ANGLE)
     };
     let theta0 = match start {
@@ -253,8 +254,9 @@ fn extremes(
 
 /// Turns a failure at scan parameter `u` (θ = sense·u) into an error naming the group and
 /// the range of angles, found by bisection, over which it fails.
-fn assembly_error(m: &Mechanism, f: StepFailure, u: f64, sense: f64, start: Start) -> MotionError {
-    let ok = |x: f64| m.solve(sense * x).is_ok();
+fn assembly_error(m: &Mechanism, f: StepFailure, u: f64, sense: Sense, start: Start) -> MotionError {
+    let s = sense.sign();
+    let ok = |x: f64| m.solve(s * x).is_ok();
     let step = TAU / SCAN_SAMPLES as f64;
     // +1 where it assembles, −1 where it does not: the edge is a sign change.
     let edge = |good: f64, bad: f64| {
@@ -271,9 +273,9 @@ fn assembly_error(m: &Mechanism, f: StepFailure, u: f64, sense: f64, start: Star
     }
     let (group, index) = (describe_step(m, f.step), m.group_of_step(f.step));
     let detail = f.why.to_string();
-    let theta_deg = |x: f64| (sense * x).rem_euclid(TAU).to_degrees();
+    let theta_deg = |x: f64| (s * x).rem_euclid(TAU).to_degrees();
     let phi_deg = |x: f64| match start {
-        Start::Angle(t0) => Some((sense * (sense * x - t0)).rem_euclid(TAU).to_degrees()),
+        Start::Angle(t0) => Some((s * (s * x - t0)).rem_euclid(TAU).to_degrees()),
         _ => None,
     };
     let angles =

@@ -6,6 +6,7 @@
 
 use super::kin::relative;
 use super::linkage::{LinkId, Mechanism, PointId, State, Step};
+use crate::num::Sense;
 use crate::num::math::Norm;
 use kurbo::Vec2;
 
@@ -93,10 +94,10 @@ impl Plan {
     fn seg(&mut self, from: Vec2, to: Vec2, kind: SegKind) {
         self.segs.push(Seg { from, to, kind });
     }
-    /// The plan turned 90° counter-clockwise (`sense` = 1) or clockwise (−1) about its pole,
+    /// The plan turned 90° in `sense` about its pole,
     /// as the Zhukovsky lever uses it.
-    pub fn turned(&self, sense: f64) -> Plan {
-        let t = |v: Vec2| v.turn_90() * sense;
+    pub fn turned(&self, sense: Sense) -> Plan {
+        let t = |v: Vec2| v.turn_90() * sense.sign();
         Plan {
             images: self.images.iter().map(|i| Image { label: i.label.clone(), at: t(i.at) }).collect(),
             segs: self.segs.iter().map(|s| Seg { from: t(s.from), to: t(s.to), kind: s.kind }).collect(),

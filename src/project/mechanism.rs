@@ -3,6 +3,7 @@
 //! which positions the sheet draws.
 
 use super::values::{Finite, LocalText, Name, Positive};
+use crate::num::Sense;
 use serde::Deserialize;
 use serde_saphyr::Spanned;
 
@@ -34,15 +35,6 @@ pub struct FramePoint {
     pub at: [Finite; 2],
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Sense {
-    /// Counter-clockwise.
-    Ccw,
-    /// Clockwise.
-    Cw,
-}
-
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CrankSpec {
@@ -55,6 +47,7 @@ pub struct CrankSpec {
     /// ω1, 1/s (rad/s), as some tasks give it; or `rpm`.
     #[serde(default)]
     pub omega: Option<Spanned<Positive>>,
+    /// `ccw` or `cw`.
     pub sense: Sense,
     #[serde(default = "one")]
     pub link: u32,

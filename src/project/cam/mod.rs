@@ -62,17 +62,7 @@ pub fn resolve(spec: &Spanned<CamSpecFile>, warnings: &mut Vec<Warning>) -> Resu
     let laws = laws::laws(&c.law, &table)?;
     let allowed = angles::allowed(&c.pressure_angle_deg, warnings)?;
     let (roller, roller_loc) = roller::roller(c.roller.as_ref(), spec.referenced)?;
-    let sense = match c.sense.as_ref().map(|s| (s.value.trim(), s.referenced)) {
-        None | Some(("ccw", _)) => Sense::Ccw,
-        Some(("cw", _)) => Sense::Cw,
-        Some((other, loc)) => {
-            return Err(invalid(
-                loc,
-                "cam.sense",
-                format!("unknown sense '{other}': the cam turns `cw` (clockwise) or `ccw` (counter-clockwise)"),
-            ));
-        }
-    };
+    let sense = c.sense.as_ref().map_or(Sense::Ccw, |s| s.value);
     let program = Program::new(phases.rise, phases.far_dwell, phases.ret, laws.clone(), f.lift).map_err(|e| {
         let (loc, field) = match &e {
             ProgramError::Phase { phase: "rise", .. } => (at(&c.phases_deg.value.rise), "cam.phases_deg.rise"),

@@ -3,6 +3,7 @@
 //! phases or for each, the `laws` table in the file's order.
 
 use super::super::values::{Finite, LocalText};
+use crate::num::Sense;
 use serde::Deserialize;
 use serde::de::{self, Deserializer, IntoDeserializer, MapAccess, Visitor};
 use serde_saphyr::Spanned;
@@ -33,7 +34,7 @@ pub struct CamSpecFile {
     pub pressure_angle_deg: Spanned<PerPhase>,
     /// The cam's sense of rotation: `cw` or `ccw` (default).
     #[serde(default)]
-    pub sense: Option<Spanned<String>>,
+    pub sense: Option<Spanned<Sense>>,
     /// Printed on the sheet: what was assumed where the source is silent or contradicts itself.
     #[serde(default)]
     /// Each one text, or one per language.

@@ -42,8 +42,8 @@ pub fn resolve(
     let spec = &spec.value;
     check_texts(spec)?;
     plausibility::plausibility(spec, warnings);
-    let sense = if spec.crank.sense == Sense::Ccw { 1.0 } else { -1.0 };
-    let omega1 = sense * crank_speed(&spec.crank)?;
+    let sense = spec.crank.sense;
+    let omega1 = sense.sign() * crank_speed(&spec.crank)?;
     let mut b = build::Builder {
         m: Mechanism {
             point_names: vec![],

@@ -4,9 +4,10 @@
 use super::super::mechanism::*;
 use super::super::{Refusal, at, invalid};
 use crate::lever::{Settings, Start};
+use crate::num::Sense;
 use crate::num::digits::written;
 
-pub(super) fn settings(a: &AnalysisSpec, sense: f64) -> Result<Settings, Refusal> {
+pub(super) fn settings(a: &AnalysisSpec, sense: Sense) -> Result<Settings, Refusal> {
     let n = a.positions.value;
     if n != 8 && n != 12 {
         return Err(invalid(

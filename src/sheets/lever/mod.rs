@@ -97,7 +97,7 @@ impl LeverBuild {
             .extremes
             .iter()
             .map(|&t| {
-                let phi = (motion.sense * (t - motion.theta0)).rem_euclid(std::f64::consts::TAU);
+                let phi = (motion.sense.sign() * (t - motion.theta0)).rem_euclid(std::f64::consts::TAU);
                 format!("θ = {:.1}° (φ = {:.1}°)", t.to_degrees(), phi.to_degrees())
             })
             .collect();

@@ -7,6 +7,7 @@ use super::forces_view::ForceScales;
 use crate::lever::Mechanism;
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{RelationValues, relation_values};
+use crate::num::Sense;
 use crate::report::lever::reactions;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -39,7 +40,7 @@ struct PositionOut {
 #[derive(Serialize)]
 struct Sheet1Out<'a> {
     omega1: f64,
-    crank_sense: &'static str,
+    crank_sense: Sense,
     position0_crank_angle_deg: f64,
     other_extreme_phi_deg: Option<f64>,
     structure: &'a crate::lever::structure::Structure,
@@ -171,7 +172,7 @@ pub fn section(
 ) -> serde_json::Value {
     let out = Sheet1Out {
         omega1: m.omega1,
-        crank_sense: if k.motion.sense > 0.0 { "ccw" } else { "cw" },
+        crank_sense: k.motion.sense,
         position0_crank_angle_deg: k.motion.theta0.to_degrees().rem_euclid(360.0),
         other_extreme_phi_deg: k.motion.other_extreme.map(f64::to_degrees),
         structure: &k.structure,

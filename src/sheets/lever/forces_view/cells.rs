@@ -70,7 +70,7 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
         let (layout, w, h) = group_layout(inp, poly, s);
         out.push(Cell { w, h, content: Content::Polygon(i, layout) });
     }
-    let lever = velocity_plan(inp.m, inp.state).turned(inp.m.omega1.signum());
+    let lever = velocity_plan(inp.m, inp.state).turned(inp.m.sense());
     let bb = plan_bbox(&lever);
     let mu = scale::round_up(bb.width().max(bb.height()) / s.lever_box);
     let mu_f = lever_arrow_scale(inp);

@@ -67,7 +67,7 @@ pub(super) fn draw_lever(
         arrows.arrow(g, labels, at(l.image), l.force, label);
     }
     let crank = inp.m.crank();
-    let a_img = inp.state.points[crank.pin].v.turn_90() * inp.m.omega1.signum();
+    let a_img = inp.state.points[crank.pin].v.turn_90() * inp.m.sense().sign();
     arrows.arrow(g, labels, at(a_img), f.dir_m * f.p_m_lever, LabelText::new("P′", inp.words.sheet.sub_balancing()));
     let lang = inp.words.lang;
     let lines = [
