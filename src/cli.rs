@@ -1,9 +1,15 @@
-//! The command line: `tmm [build [PROJECT.yaml]] [-o DIR] [--sheet N]…`.
+//! The command line: `tmm [build [PROJECT.yaml | --task T --variant V | --all]] [-o DIR]
+//! [--sheet N]…`, `tmm list [--task T]`, `tmm init --task T --variant V`.
 //!
 //! Exit codes: 0 built; 1 the project was refused (unreadable, too large, not UTF-8, invalid,
-//! or a mechanism that cannot be analysed); 2 a command-line usage error (clap's own, and a
-//! sheet number or PNG resolution out of range); 3 the outputs could not be written.
+//! or a mechanism that cannot be analysed; a catalogue variant incomplete in the guide; in a
+//! batch, any variant refused); 2 a command-line usage error (clap's own, a sheet number or
+//! PNG resolution out of range, a task or variant the catalogue does not have); 3 the outputs
+//! could not be written.
 
+mod batch;
+mod catalogue;
+mod summary;
 pub mod write;
 
 use crate::drawing::labels::Language;
@@ -23,6 +29,10 @@ struct Cli {
     command: Option<Command>,
     #[command(flatten)]
     build: BuildArgs,
+    /// A catalogue folder to read instead of the one built in (the same form as the
+    /// repository's `catalogue/`).
+    #[arg(long, global = true, value_name = "DIR")]
+    catalogue: Option<PathBuf>,
 }
 
 #[derive(Subcommand)]
@@ -31,12 +41,59 @@ enum Command {
     Build(BuildArgs),
     /// Print the embedded worked example's project file, to start a project from.
     Example,
+    /// List the guide's tasks (with `--task`, one task's variants).
+    List(ListArgs),
+    /// Write the project file of a task's variant, every value commented with its source.
+    Init(InitArgs),
+}
+
+#[derive(Args)]
+struct ListArgs {
+    /// A task's number (1–15) or practice set (P1–P3): list its variants.
+    #[arg(long)]
+    task: Option<String>,
+    /// Language of the listing (default Uzbek).
+    #[arg(long, value_enum)]
+    lang: Option<Lang>,
+}
+
+#[derive(Args)]
+struct InitArgs {
+    /// The task's number (1–15) or practice set (P1–P3).
+    #[arg(long)]
+    task: String,
+    /// The variant's number.
+    #[arg(long)]
+    variant: u32,
+    /// The file to write (default: print to stdout).
+    #[arg(short, long)]
+    output: Option<PathBuf>,
+    /// Replace the file if it exists.
+    #[arg(long)]
+    force: bool,
+    /// Language of the comments and of the sheets (default Uzbek).
+    #[arg(long, value_enum)]
+    lang: Option<Lang>,
 }
 
 #[derive(Args, Clone)]
 struct BuildArgs {
     /// Project file (YAML). Without it, the worked example embedded in the program.
+    #[arg(conflicts_with_all = ["task", "all"])]
     project: Option<PathBuf>,
+    /// Build a variant of the guide's task from the catalogue (with `--variant`).
+    #[arg(long, requires = "variant", conflicts_with = "all")]
+    task: Option<String>,
+    /// The variant of `--task`.
+    #[arg(long, requires = "task")]
+    variant: Option<u32>,
+    /// Build every variant of every task into DIR/task-NN/variant-NN/, with summary.csv and
+    /// summary.md.
+    #[arg(long)]
+    all: bool,
+    /// Threads for `--all` (default: every core).
+    #[arg(short, long, requires = "all")]
+    jobs: Option<usize>,
     /// Output directory.
     #[arg(short, long, default_value = "out")]
     output: PathBuf,
@@ -72,37 +129,137 @@ const PNG_DPI: std::ops::RangeInclusive<f64> = 10.0..=600.0;
 /// wrong path (`/dev/zero`, a video) from filling the memory before the parser refuses it.
 const PROJECT_LIMIT: u64 = 16 * 1024 * 1024;
 
-/// A failure, by whose it is: the input's (exit 1) or the output's (exit 3).
+/// A failure, by whose it is: the input's (exit 1), the command line's (exit 2) or the
+/// output's (exit 3).
 enum Failure {
     Input(anyhow::Error),
+    Usage(anyhow::Error),
     Output(anyhow::Error),
 }
 
 pub fn run() -> ExitCode {
     let cli = Cli::parse(); // usage errors exit with 2
+    let dir = cli.catalogue.as_deref();
     let result = match cli.command {
         Some(Command::Example) => {
             print!("{DEFAULT_PROJECT}");
             Ok(())
         }
-        Some(Command::Build(args)) => build(&args),
-        None => build(&cli.build),
+        Some(Command::List(args)) => list(&args, dir),
+        Some(Command::Init(args)) => init(&args, dir),
+        Some(Command::Build(args)) => build(&args, dir),
+        None => build(&cli.build, dir),
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(Failure::Input(e)) => {
-            eprintln!("error: {e:#}");
-            ExitCode::from(1)
+    let (e, code) = match result {
+        Ok(()) => return ExitCode::SUCCESS,
+        Err(Failure::Input(e)) => (e, 1),
+        Err(Failure::Usage(e)) => (e, 2),
+        Err(Failure::Output(e)) => (e, 3),
+    };
+    eprintln!("error: {e:#}");
+    ExitCode::from(code)
+}
+
+fn language(lang: Option<Lang>) -> Option<Language> {
+    lang.map(|l| match l {
+        Lang::Uz => Language::Uz,
+        Lang::Ru => Language::Ru,
+        Lang::En => Language::En,
+    })
+}
+
+fn list(args: &ListArgs, dir: Option<&Path>) -> Result<(), Failure> {
+    let cat = catalogue::load(dir).map_err(Failure::Input)?;
+    let lang = language(args.lang).unwrap_or_default();
+    let text = match &args.task {
+        Some(t) => catalogue::list_task(cat.task(t).map_err(|e| Failure::Usage(anyhow::anyhow!(e)))?, lang),
+        None => catalogue::list(&cat, lang),
+    };
+    print!("{}", text.map_err(Failure::Input)?);
+    Ok(())
+}
+
+/// A catalogue variant's project text and the name messages call it by.
+fn variant_text(dir: Option<&Path>, task: &str, variant: u32, lang: Language) -> Result<(String, String), Failure> {
+    let cat = catalogue::load(dir).map_err(Failure::Input)?;
+    let t = cat.task(task).map_err(|e| Failure::Usage(anyhow::anyhow!(e)))?;
+    t.row(variant).map_err(|e| Failure::Usage(anyhow::anyhow!(e)))?;
+    let command = format!("tmm init --task {} --variant {variant}", t.id());
+    match t.project(variant, lang, &command).map_err(|e| Failure::Input(anyhow::anyhow!(e)))? {
+        crate::catalogue::Variant::Project { text, left_out } => {
+            if !left_out.is_empty() {
+                eprintln!(
+                    "warning: task {} variant {variant} is incomplete in the guide: left out {}",
+                    t.id(),
+                    left_out.join("; ")
+                );
+            }
+            Ok((text, format!("task {} variant {variant}", t.id())))
         }
-        Err(Failure::Output(e)) => {
-            eprintln!("error: {e:#}");
-            ExitCode::from(3)
-        }
+        crate::catalogue::Variant::Incomplete { message } => Err(Failure::Input(anyhow::anyhow!(message))),
     }
 }
 
-fn build(args: &BuildArgs) -> Result<(), Failure> {
-    let (project, name) = load(args).map_err(Failure::Input)?;
+fn init(args: &InitArgs, dir: Option<&Path>) -> Result<(), Failure> {
+    let (text, name) = variant_text(dir, &args.task, args.variant, language(args.lang).unwrap_or_default())?;
+    // The variant as the program reads it: a refusal is the student's to know before editing.
+    if let Err(e) = pipeline::load(&text) {
+        eprintln!("warning: {}", refused(e, &name));
+    }
+    let Some(path) = &args.output else {
+        print!("{text}");
+        return Ok(());
+    };
+    if path.exists() && !args.force {
+        return Err(Failure::Output(anyhow::anyhow!(
+            "{} exists: a project file may hold your edits; `--force` replaces it",
+            path.display()
+        )));
+    }
+    std::fs::write(path, &text).with_context(|| format!("cannot write {}", path.display())).map_err(Failure::Output)?;
+    println!("{name}: written to {}", path.display());
+    Ok(())
+}
+
+/// `tmm build --all`: every variant, the summary, exit 1 when any was refused.
+fn build_all(args: &BuildArgs, dir: Option<&Path>) -> Result<(), Failure> {
+    let cat = catalogue::load(dir).map_err(Failure::Input)?;
+    let formats = pipeline::formats(!args.no_pdf, (!args.no_png).then_some(args.png_dpi));
+    let lang = args.lang.map(|l| language(Some(l)).unwrap_or_default());
+    let run = batch::Batch { output: &args.output, formats, lang };
+    let start = std::time::Instant::now();
+    let outcomes = batch::run(&cat, &run, args.jobs).map_err(Failure::Output)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let jobs = args.jobs.unwrap_or_else(rayon::current_num_threads);
+    let files = [
+        ("summary.csv".to_string(), summary::csv(&outcomes).into_bytes()),
+        ("summary.md".to_string(), summary::markdown(&outcomes, seconds, jobs).into_bytes()),
+    ];
+    write::write_outputs(&args.output, &files).map_err(Failure::Output)?;
+    let (status, _) = summary::counts(&outcomes);
+    let counts: Vec<String> = status.iter().map(|(s, n)| format!("{n} {}", s.key())).collect();
+    println!(
+        "{} variants in {seconds:.1} s: {}; summary in {}",
+        outcomes.len(),
+        counts.join(", "),
+        args.output.join("summary.md").display()
+    );
+    if status.contains_key(&batch::Status::Failed) {
+        return Err(Failure::Output(anyhow::anyhow!(
+            "some variants' files could not be written (summary.md names them)"
+        )));
+    }
+    if status.contains_key(&batch::Status::Refused) {
+        return Err(Failure::Input(anyhow::anyhow!("some variants were refused (summary.md names them and why)")));
+    }
+    Ok(())
+}
+
+fn build(args: &BuildArgs, dir: Option<&Path>) -> Result<(), Failure> {
+    if args.all {
+        return build_all(args, dir);
+    }
+    let (project, name) = load(args, dir)?;
     for w in &project.warnings {
         eprintln!("warning: in {name}: {w}");
     }
@@ -120,18 +277,15 @@ fn build(args: &BuildArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-fn load(args: &BuildArgs) -> Result<(crate::project::Project, String)> {
-    let (text, name) = match &args.project {
-        Some(p) => (read_project(p)?, p.display().to_string()),
-        None => (DEFAULT_PROJECT.to_string(), "the worked example".to_string()),
+fn load(args: &BuildArgs, dir: Option<&Path>) -> Result<(crate::project::Project, String), Failure> {
+    let (text, name) = match (&args.project, &args.task, args.variant) {
+        (Some(p), _, _) => (read_project(p).map_err(Failure::Input)?, p.display().to_string()),
+        (None, Some(t), Some(v)) => variant_text(dir, t, v, language(args.lang).unwrap_or_default())?,
+        _ => (DEFAULT_PROJECT.to_string(), "the worked example".to_string()),
     };
-    let mut project = pipeline::load_for(&text, &args.sheets).map_err(|e| refused(e, &name))?;
-    if let Some(l) = args.lang {
-        project.info.language = match l {
-            Lang::Uz => Language::Uz,
-            Lang::Ru => Language::Ru,
-            Lang::En => Language::En,
-        };
+    let mut project = pipeline::load_for(&text, &args.sheets).map_err(|e| Failure::Input(refused(e, &name)))?;
+    if let Some(l) = language(args.lang) {
+        project.info.language = l;
     }
     Ok((project, name))
 }

@@ -27,6 +27,7 @@
 
 pub mod backend;
 pub mod cams;
+pub mod catalogue;
 pub mod cli;
 pub mod drawing;
 pub mod font;
