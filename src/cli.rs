@@ -196,7 +196,7 @@ fn variant_text(dir: Option<&Path>, task: &str, variant: u32, lang: Language) ->
             }
             Ok((text, format!("task {} variant {variant}", t.id())))
         }
-        crate::catalogue::Variant::Incomplete { message } => Err(Failure::Input(anyhow::anyhow!(message))),
+        crate::catalogue::Variant::Incomplete { message, .. } => Err(Failure::Input(anyhow::anyhow!(message))),
     }
 }
 

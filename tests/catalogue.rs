@@ -36,7 +36,8 @@ fn init_writes_every_value_with_its_table_and_applies_the_errata() {
     ));
     assert!(y.contains("#   L_O1A: 1.60 → 0.160: test: the decimal comma slipped"), "the header lists the errata");
     // kN to N and mm to m through the template's expressions, each computed value named.
-    assert!(y.contains("force: 3500}") && y.contains("# computed: p_max*1000 = 3500"), "{y}");
+    assert!(y.contains("force: 3500}") && y.contains("# P_cmax = 3.5 kN (resistance): table 7.1, variant 3"), "{y}");
+    assert!(y.contains("# p_n = 3500 N (resistance in newtons): computed: p_max*1000 = 3500"), "a derived value: {y}");
     assert!(y.contains("stroke: 0.04}"), "{y}");
     // A constant of the task's notes, with its source.
     assert!(y.contains("# m_pl = 2 mm (planetary module): note d)"), "{y}");
@@ -47,7 +48,7 @@ fn init_writes_every_value_with_its_table_and_applies_the_errata() {
 fn init_comments_in_the_chosen_language_with_decimal_commas() {
     let y = text(&tmm(&["init", "--task", "7", "--variant", "1", "--lang", "ru"]).stdout);
     assert!(y.contains("# L_O1A = 0,120 м (кривошип): табл. 7.1, вариант 1"), "{y}");
-    assert!(y.contains("# вычислено: p_max*1000 = 3000"), "{y}");
+    assert!(y.contains("# вычислено: h/1000 = 0,035"), "{y}");
     let y = text(&tmm(&["init", "--task", "7", "--variant", "1"]).stdout);
     assert!(y.contains("# n_1 = 50 ayl/min (krivoship): 7.1-jadval, 1-variant"), "Uzbek by default: {y}");
 }
@@ -107,10 +108,14 @@ fn list_shows_the_tasks_and_a_tasks_variants_with_the_incomplete_ones() {
     let o = tmm(&["list", "--lang", "en"]);
     assert_eq!(o.status.code(), Some(0));
     let l = text(&o.stdout);
-    assert!(l.contains("7    Crank-slider press  crank-slider mechanism  1–5       5           4"), "{l}");
-    assert!(l.contains("7: 4-5: test: a lost cell"), "{l}");
+    assert!(l.contains("7    Crank-slider press  crank-slider mechanism  1–5       5           4        none"), "{l}");
+    assert!(l.contains("No. 7, 4–5: test: a lost cell"), "{l}");
     let l = text(&tmm(&["list", "--task", "7", "--lang", "ru"]).stdout);
     assert!(l.contains("3        7.1    48           0,160*    0,52     40"), "{l}");
+    assert!(
+        l.contains("5: неполные: L_AB, m_2, J_S2, m_3, P_cmax, m, z_1"),
+        "lost columns, never a derived value: {l}"
+    );
     assert!(l.contains("* вариант 3, L_O1A: 1,60 → 0,160"), "{l}");
 }
 

@@ -28,6 +28,10 @@ pub(super) struct Meta {
     pub key_columns: Vec<String>,
     #[serde(default)]
     pub constants: Vec<Constant>,
+    /// Values computed from the columns and constants, in order, for the template to use by
+    /// name (a scheme's pivot from the printed dimensions, a mass from q·l).
+    #[serde(default)]
+    pub derived: Vec<Derived>,
     #[serde(default)]
     pub lost: Vec<Lost>,
     /// Variants whose printed data the program refuses, and why the guide's data explain it
@@ -60,6 +64,17 @@ pub struct Constant {
     pub unit: String,
     pub what: Entry,
     pub source: Entry,
+}
+
+/// A value computed from others: `{key: x_o3, expression: "c + l_o2b", what: {…}}`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Derived {
+    pub key: String,
+    pub expression: String,
+    #[serde(default)]
+    pub unit: String,
+    pub what: Entry,
 }
 
 /// Why some variants lack values.
@@ -192,8 +207,13 @@ pub fn printed(cell: &str, lang: Language) -> String {
 
 /// A unit as the catalogue writes it (the printed one, in English) in `lang`.
 pub fn unit(unit: &str, lang: Language) -> String {
-    const UNITS: [(&str, &str, &str); 8] = [
+    const UNITS: [(&str, &str, &str); 13] = [
         ("rev/min", "ayl/min", "об/мин"),
+        ("m/s²", "m/s²", "м/с²"),
+        ("m/s", "m/s", "м/с"),
+        ("1/s", "1/s", "1/с"),
+        ("N·m", "N·m", "Н·м"),
+        ("N", "N", "Н"),
         ("kg·m²", "kg·m²", "кг·м²"),
         ("kg/m", "kg/m", "кг/м"),
         ("kN", "kN", "кН"),

@@ -7,7 +7,7 @@ mod data;
 mod template;
 mod words;
 
-pub use data::{Column, Constant, Erratum, Lost, Row};
+pub use data::{Column, Constant, Derived, Erratum, Lost, Row};
 pub use template::Unfilled;
 pub use words::CatalogueWords;
 
@@ -43,7 +43,11 @@ pub enum Variant {
     Project { text: String, left_out: Vec<String> },
     /// The guide lost values the template needs: their printed names and why (the task's
     /// `lost` notes for this variant).
-    Incomplete { message: String },
+    Incomplete {
+        message: String,
+        /// The lost values' printed names, comma-separated.
+        lost: String,
+    },
 }
 
 impl Catalogue {
@@ -163,9 +167,19 @@ impl Task {
         let w = CatalogueWords::get(lang);
         let known = self.known(row, lang);
         let computed = |e: &str, v: &str| w.computed(e, &data::printed(v, lang));
-        match template::fill(&self.meta.template, &known, &computed) {
+        let filled = template::fill(&template_in(&self.meta.template, lang), &known, &computed);
+        let filled = filled.map(|sections| {
+            let expand = |keys: Vec<String>| self.lost_columns(keys, &known);
+            sections.into_iter().map(|s| template::Section { key: s.key, filled: s.filled.map_err(expand) }).collect()
+        });
+        match filled.map_err(|e| match e {
+            Unfilled::Missing(keys) => Unfilled::Missing(self.lost_columns(keys, &known)),
+            other => other,
+        }) {
             Ok(sections) => Ok(self.assemble(row, sections, lang, command)),
-            Err(Unfilled::Missing(keys)) => Ok(Variant::Incomplete { message: self.incomplete(row, &keys, lang) }),
+            Err(Unfilled::Missing(keys)) => {
+                Ok(Variant::Incomplete { message: self.incomplete(row, &keys, lang), lost: self.printed_names(&keys) })
+            }
             Err(Unfilled::Invalid { line, expression, reason }) => {
                 Err(format!("catalogue/{}/task.yaml: template line {line}: `${{{expression}}}`: {reason}", self.folder))
             }
@@ -182,18 +196,42 @@ impl Task {
                 Ok(text) => body.push_str(&text),
                 Err(keys) => {
                     let names = self.printed_names(&keys);
-                    let why = if names.is_empty() { s.key.clone() } else { format!("{} ({names})", s.key) };
-                    body.push_str(&format!("# {}: {}\n\n", s.key, CatalogueWords::get(lang).left_out(&names)));
+                    let w = CatalogueWords::get(lang);
+                    let (why, said) = if names.is_empty() {
+                        (s.key.clone(), w.left_out_with_mechanism().to_string())
+                    } else {
+                        (format!("{} ({names})", s.key), w.left_out(&names))
+                    };
+                    body.push_str(&format!("# {}: {said}\n\n", s.key));
                     left_out.push(why);
                 }
             }
         }
+        let body: String = body.lines().filter(|l| *l != DROPPED).map(|l| format!("{l}\n")).collect();
         let body = with_language(&body, lang);
         let mut header = self.header(row, lang, command);
         if !left_out.is_empty() {
             header.push_str(&format!("# {}\n", CatalogueWords::get(lang).partial(&left_out.join("; "))));
         }
         Variant::Project { text: format!("{header}{body}"), left_out }
+    }
+
+    /// Lost keys as the lost columns behind them: a derived value by the lost columns it is
+    /// computed from.
+    fn lost_columns(&self, keys: Vec<String>, known: &BTreeMap<String, Known>) -> Vec<String> {
+        let mut out: Vec<String> = Vec::new();
+        let mut todo = keys;
+        todo.reverse();
+        while let Some(k) = todo.pop() {
+            if let Some(d) = self.meta.derived.iter().find(|d| d.key == k) {
+                let mut inputs = template::keys_of(&d.expression).unwrap_or_default();
+                inputs.reverse();
+                todo.extend(inputs);
+            } else if known.get(&k).is_some_and(|n| n.value.is_none()) && !out.contains(&k) {
+                out.push(k);
+            }
+        }
+        out
     }
 
     /// Keys by their printed names, comma-separated.
@@ -231,6 +269,24 @@ impl Task {
         for c in &self.meta.constants {
             let note = format!("{} ({}): {}", constant(c, lang), c.what.pick(lang), c.source.pick(lang));
             out.insert(c.key.clone(), Known { value: Some(c.value), note: tidy(&note) });
+        }
+        for d in &self.meta.derived {
+            // Checked when the catalogue is read: the expression parses and names known keys.
+            let value = template::evaluate(&d.expression, &out, &mut Vec::new()).ok().flatten().map(|(x, _)| x);
+            let shown = value.map_or("—".to_string(), |x| printed_number(x, lang));
+            let unit = data::unit(&d.unit, lang);
+            let computed = w.computed(&d.expression, &shown);
+            // The values it is computed from are named too, each on its own comment line.
+            let mut lines: Vec<String> = Vec::new();
+            for k in template::keys_of(&d.expression).unwrap_or_default() {
+                for l in out.get(&k).map_or("", |n| n.note.as_str()).lines() {
+                    if !lines.iter().any(|x| x == l) {
+                        lines.push(l.to_string());
+                    }
+                }
+            }
+            lines.push(tidy(&format!("{} = {shown} {unit} ({}): {computed}", d.key, d.what.pick(lang))));
+            out.insert(d.key.clone(), Known { value, note: lines.join("\n") });
         }
         out
     }
@@ -284,6 +340,16 @@ impl Task {
         let mut keys: Vec<&str> =
             m.columns.iter().map(|c| c.key.as_str()).chain(m.constants.iter().map(|c| c.key.as_str())).collect();
         keys.push("variant");
+        for d in &m.derived {
+            let names = template::keys_of(&d.expression).map_err(|why| format!("derived `{}`: {why}", d.key))?;
+            if let Some(n) = names.iter().find(|n| !keys.contains(&n.as_str())) {
+                return Err(format!(
+                    "derived `{}`: `{n}` is not a column, a constant or an earlier derived value",
+                    d.key
+                ));
+            }
+            keys.push(&d.key);
+        }
         keys.sort_unstable();
         if let Some(w) = keys.windows(2).find(|w| w[0] == w[1]) {
             return Err(format!("the key `{}` is defined twice", w[0]));
@@ -330,6 +396,24 @@ impl Task {
         Ok(())
     }
 }
+
+/// The template for a file in `lang`: its own comments are written in English (they document
+/// the preset; everything they tell a student is in the uz/ru/en assumptions), so in Uzbek or
+/// Russian each becomes a [`DROPPED`] line — dropped after filling, the template's line
+/// numbers kept for its messages.
+fn template_in(template: &str, lang: Language) -> String {
+    if lang == Language::En {
+        return template.to_string();
+    }
+    template
+        .lines()
+        .map(|l| if l.trim_start().starts_with('#') { DROPPED } else { l })
+        .map(|l| format!("{l}\n"))
+        .collect()
+}
+
+/// A template line left out of the file (see [`template_in`]).
+const DROPPED: &str = "\u{1}";
 
 /// The project file with `project.language` set to `lang`: the language the student chose
 /// for the comments is the sheets' too.
@@ -378,6 +462,11 @@ fn tidy(note: &str) -> String {
 /// A number as the catalogue prints it for a reader: a decimal comma in Uzbek and Russian.
 pub fn printed_number(x: f64, lang: Language) -> String {
     data::printed(&template::number(x), lang)
+}
+
+/// The variants a range text names ("1-15, 31"), as a task's notes write them.
+pub fn variant_range(text: &str) -> Option<Vec<u32>> {
+    data::range(text)
 }
 
 /// A cell's text as the guide prints it in `lang`.

@@ -51,8 +51,8 @@ pub fn all_expressions(template: &str) -> Vec<(usize, String)> {
         .collect()
 }
 
-/// Evaluates one expression over `known`.
-fn evaluate(
+/// Evaluates one expression over `known`: `Ok(None)` when a value it uses is lost.
+pub fn evaluate(
     expression: &str,
     known: &BTreeMap<String, Known>,
     missing: &mut Vec<String>,
@@ -190,9 +190,10 @@ fn fill_line(
         let Some((x, names)) = evaluated else { continue };
         text.push_str(&number(x));
         for n in &names {
-            let note = known[n].note.clone();
-            if !notes.contains(&note) {
-                notes.push(note);
+            for note in known[n].note.lines() {
+                if !notes.iter().any(|x| x == note) {
+                    notes.push(note.to_string());
+                }
             }
         }
         let note = computed(expression.trim(), &number(x));

@@ -29,6 +29,9 @@ crate::label_set! {
         left_out(names),
         partial(sections),
         col_partial,
+        refused_as_printed,
+        left_out_with_mechanism,
+        col_status,
     }
 }
 

@@ -142,7 +142,7 @@ fn build_variant(task: &Task, variant: u32, batch: &Batch, o: &mut Outcome) -> R
     let command = format!("tmm init --task {} --variant {variant}", task.id());
     let mut partial = false;
     let text = match task.project(variant, lang, &command).map_err(|e| anyhow!(e))? {
-        Variant::Incomplete { message } => {
+        Variant::Incomplete { message, .. } => {
             o.status = Status::Incomplete;
             o.refusal = Some(("incomplete".into(), message));
             return Ok(());

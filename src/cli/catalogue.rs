@@ -58,13 +58,13 @@ pub fn ranges(numbers: &[u32]) -> String {
     out.join(", ")
 }
 
-/// The variants of a task the guide leaves incomplete, with why, and those it leaves
-/// incomplete in part (some sheets' values lost), with the sections left out.
+/// The variants of a task the guide leaves incomplete, with the values lost, and those it
+/// leaves incomplete in part (some sheets' values lost), with the sections left out.
 fn incomplete(task: &Task, lang: Language) -> Result<(Vec<(u32, String)>, Vec<(u32, String)>)> {
     let (mut whole, mut part) = (Vec::new(), Vec::new());
     for v in task.variants() {
         match task.project(v, lang, "").map_err(|e| anyhow!(e))? {
-            Variant::Incomplete { message } => whole.push((v, message)),
+            Variant::Incomplete { lost, .. } => whole.push((v, lost)),
             Variant::Project { left_out, .. } if !left_out.is_empty() => part.push((v, left_out.join("; "))),
             Variant::Project { .. } => {}
         }
@@ -92,7 +92,26 @@ fn aligned(rows: &[Vec<String>]) -> String {
     out
 }
 
-/// `tmm list`: the tasks, their machines, variants and the incomplete ones.
+/// A range note's variants as the listing writes them: "1–15, 31".
+fn shown_range(text: &str) -> String {
+    crate::catalogue::variant_range(text).map_or(text.to_string(), |v| ranges(&v))
+}
+
+/// Lines that say the same for several variants, said once with the variants' ranges:
+/// (variants, text) in order of first appearance.
+fn grouped(items: impl IntoIterator<Item = (u32, String)>) -> Vec<(String, String)> {
+    let mut groups: Vec<(Vec<u32>, String)> = Vec::new();
+    for (v, text) in items {
+        match groups.iter_mut().find(|(_, t)| *t == text) {
+            Some((vs, _)) => vs.push(v),
+            None => groups.push((vec![v], text)),
+        }
+    }
+    groups.into_iter().map(|(vs, t)| (ranges(&vs), t)).collect()
+}
+
+/// `tmm list`: the tasks, their machines, variants, the incomplete ones and those the
+/// program refuses as printed, with why.
 pub fn list(cat: &Catalogue, lang: Language) -> Result<String> {
     let w = CatalogueWords::get(lang);
     let mut out = String::new();
@@ -107,29 +126,34 @@ pub fn list(cat: &Catalogue, lang: Language) -> Result<String> {
             w.col_variants().into(),
             w.col_incomplete().into(),
             w.col_partial().into(),
+            w.refused_as_printed().into(),
         ]];
         let mut why = Vec::new();
         for t in cat.tasks.iter().filter(|t| t.is_practice() == practice) {
             let all: Vec<u32> = t.variants().collect();
             let (missing, part) = incomplete(t, lang)?;
-            let shown = |list: &[(u32, String)]| {
-                let numbers: Vec<u32> = list.iter().map(|m| m.0).collect();
-                if numbers.is_empty() { w.none().to_string() } else { ranges(&numbers) }
-            };
+            let shown = |numbers: Vec<u32>| if numbers.is_empty() { w.none().to_string() } else { ranges(&numbers) };
+            let refused: Vec<u32> = all.iter().copied().filter(|&v| t.refusal_explained(v).is_some()).collect();
             rows.push(vec![
                 t.id(),
                 t.name(lang).into(),
                 t.kind(lang).into(),
                 ranges(&all),
-                shown(&missing),
-                shown(&part),
+                shown(missing.iter().map(|m| m.0).collect()),
+                shown(part.iter().map(|m| m.0).collect()),
+                shown(refused),
             ]);
             let mut reasons: Vec<String> =
-                t.lost().iter().map(|l| format!("{}: {}", l.variants, l.why.pick(lang))).collect();
+                t.lost().iter().map(|l| format!("{}: {}", shown_range(&l.variants), l.why.pick(lang))).collect();
             if reasons.is_empty() {
-                reasons.extend(missing.iter().map(|(_, m)| m.clone()));
+                reasons.extend(grouped(missing).into_iter().map(|(v, m)| format!("{v}: {}: {m}", w.col_incomplete())));
             }
-            why.extend(reasons.into_iter().map(|r| format!("  {}: {r}", t.id())));
+            reasons.extend(
+                t.refused()
+                    .iter()
+                    .map(|l| format!("{}: {}: {}", shown_range(&l.variants), w.refused_as_printed(), l.why.pick(lang))),
+            );
+            why.extend(reasons.into_iter().map(|r| format!("  {} {}, {r}", w.col_task(), t.id())));
         }
         out.push_str(&aligned(&rows));
         for line in why {
@@ -142,7 +166,8 @@ pub fn list(cat: &Catalogue, lang: Language) -> Result<String> {
     Ok(out)
 }
 
-/// `tmm list --task T`: the task's constants, and each variant's key data and status.
+/// `tmm list --task T`: the task's constants, each variant's key data and status, the
+/// corrections, and why variants are incomplete or refused.
 pub fn list_task(task: &Task, lang: Language) -> Result<String> {
     let w = CatalogueWords::get(lang);
     let mut out = format!("{} {} — {} ({})\n", w.col_task(), task.id(), task.name(lang), task.kind(lang));
@@ -157,7 +182,7 @@ pub fn list_task(task: &Task, lang: Language) -> Result<String> {
     let keys: Vec<_> = task.key_columns().collect();
     let mut head = vec![w.col_variant().to_string(), w.col_table().to_string()];
     head.extend(keys.iter().map(|(_, c)| crate::catalogue::heading(c, lang)));
-    head.push(String::new());
+    head.push(w.col_status().to_string());
     let mut rows = vec![head];
     let (missing, part) = incomplete(task, lang)?;
     for r in &task.rows {
@@ -168,27 +193,37 @@ pub fn list_task(task: &Task, lang: Language) -> Result<String> {
             row.push(if erratum.is_some() { format!("{shown}*") } else { shown });
         }
         let status = if missing.iter().any(|m| m.0 == r.variant) {
-            w.col_incomplete().to_string()
+            w.col_incomplete()
         } else if part.iter().any(|m| m.0 == r.variant) {
-            w.col_partial().to_string()
+            w.col_partial()
+        } else if task.refusal_explained(r.variant).is_some() {
+            w.refused_as_printed()
         } else {
-            String::new()
+            ""
         };
-        row.push(status);
+        row.push(status.to_string());
         rows.push(row);
     }
     out.push_str(&aligned(&rows));
-    for e in &task.errata {
+    let p = |s: &Option<String>| s.as_deref().map_or("—".into(), |s| crate::catalogue::printed_cell(s, lang));
+    let errata = task.errata.iter().map(|e| {
         let name = task.columns().iter().find(|c| c.key == e.column).map_or(e.column.as_str(), |c| c.printed.as_str());
-        let p = |s: &Option<String>| s.as_deref().map_or("—".into(), |s| crate::catalogue::printed_cell(s, lang));
-        writeln!(out, "* {} {}, {name}: {} → {}", w.col_variant(), e.variant, p(&e.printed), p(&e.corrected)).ok();
-        writeln!(out, "    {}", e.reason.pick(lang)).ok();
+        (e.variant, format!("{name}: {} → {}\n    {}", p(&e.printed), p(&e.corrected), e.reason.pick(lang)))
+    });
+    for (v, text) in grouped(errata) {
+        writeln!(out, "* {} {v}, {text}", w.col_variant()).ok();
     }
-    for (v, m) in &missing {
-        writeln!(out, "{v}: {m}").ok();
+    for (v, m) in grouped(missing) {
+        writeln!(out, "{v}: {}: {m}", w.col_incomplete()).ok();
     }
-    for (v, m) in &part {
+    for l in task.lost() {
+        writeln!(out, "{}: {}", shown_range(&l.variants), l.why.pick(lang)).ok();
+    }
+    for (v, m) in grouped(part) {
         writeln!(out, "{v}: {}: {m}", w.col_partial()).ok();
+    }
+    for l in task.refused() {
+        writeln!(out, "{}: {}: {}", shown_range(&l.variants), w.refused_as_printed(), l.why.pick(lang)).ok();
     }
     Ok(out)
 }

@@ -1,0 +1,129 @@
+//! The embedded catalogue against the guide: every task and practice set with all its
+//! variants, rows typed here from the guide's text (seed 001, tab-separated, decimal commas)
+//! compared with the data files, the known misprints corrected with their printed values
+//! kept, and every variant either a project the program reads or incomplete in the guide —
+//! never a template fault — with every refusal one the task's notes explain.
+
+use tmm_sheets::catalogue::{Catalogue, Task, Variant};
+use tmm_sheets::drawing::labels::Language;
+use tmm_sheets::pipeline;
+use tmm_sheets::project::Kind;
+
+fn catalogue() -> Catalogue {
+    Catalogue::embedded().expect("the embedded catalogue reads")
+}
+
+#[test]
+fn every_task_of_the_guide_and_every_practice_set_has_all_its_variants() {
+    let cat = catalogue();
+    let ids: Vec<String> = cat.tasks.iter().map(Task::id).collect();
+    let mut expected: Vec<String> = (1..=15).map(|n| n.to_string()).collect();
+    expected.extend(["P1", "P2", "P3"].map(String::from));
+    assert_eq!(ids, expected);
+    for t in &cat.tasks {
+        let n = if t.is_practice() { 30 } else { 45 };
+        assert_eq!(t.variants().collect::<Vec<_>>(), (1..=n).collect::<Vec<u32>>(), "task {}", t.id());
+        for lang in Language::ALL {
+            assert!(!t.name(lang).is_empty() && !t.kind(lang).is_empty(), "task {} names in {lang:?}", t.id());
+        }
+    }
+}
+
+/// Rows as the guide prints them (copied from its text), with the task's column keys in
+/// the printed order (`None` where the data file holds a column the row does not print).
+const GUIDE_ROWS: &[(&str, &str)] = &[
+    ("1", "1\t1465\t150\t0,20\t0,9\t40\t200\t2,7\t50\t38\t30\t4,5\t19\t32\t9\t30\t100\t20\t1"),
+    ("1", "17\t1465\t160\t0,14\t0,7\t29\t180\t1,7\t37\t32\t300\t4\t22\t30\t8\t37\t80\t20\t3"),
+    ("1", "45\t1500\t210\t0,12\t0,85\t31\t180\t2,5\t36\t30\t60\t4,5\t20\t32\t8\t30\t105\t20\t2"),
+    ("7", "12\t960\t54\t0,140\t0,55\t40\t62\t1,0\t3,1\t22\t28\t7\t50\t90\t6"),
+    ("7", "38\t1420\t60\t0,110\t0,48\t45\t60\t1,12\t2,8\t19\t34\t6\t30\t100\t4"),
+    ("10", "4\t950\t70\t0,8\t0,32\t0,28\t0,43\t0,20\t0,14\t1,2\t13\t20\t24\t5\t20\t0,12\t80\t40\t4"),
+    ("10", "31\t950\t50\t0,06\t0,33\t0,30\t0,44\t0,10\t0,15\t1,4\t15\t18\t32\t4\t30\t0,12\t90\t40\t3"),
+    ("12", "16\t750\t40\t0,65\t0,18\t0,19\t0,28\t0,160\t0,090\t0,17\t50\t20\t19\t23\t4\t21\t120\t15\t2"),
+    ("12", "40\t730\t46\t0,095\t0,27\t0,28\t0,38\t0,205\t0,135\t0,22\t58\t37\t19\t27\t5\t16\t100\t30\t6"),
+    ("13", "20\t750\t3.8\t0.39\t1800\t0.762\t7.3\t1.3\t0.0018\t4.5\t30\t19\t34\t6\t5.0\t3\t5\t20\t0.068\t75\t45\t2"),
+    // The kinematics manual (seed 000), table 1.
+    ("P1", "1\t0,050\t0,140\t50\t0,5"),
+];
+
+#[test]
+fn rows_typed_from_the_guide_are_in_the_data_files_as_printed() {
+    let cat = catalogue();
+    for (task, line) in GUIDE_ROWS {
+        let t = cat.task(task).unwrap();
+        let printed: Vec<f64> = line.split('\t').map(|c| c.replace(',', ".").parse().unwrap()).collect();
+        let row = t.row(printed[0] as u32).unwrap();
+        let cells: Vec<f64> = row.cells.iter().map(|c| c.as_deref().unwrap().parse().unwrap()).collect();
+        assert_eq!(cells, printed[1..], "task {task} variant {}", printed[0]);
+    }
+}
+
+#[test]
+fn the_known_misprints_are_corrected_and_their_printed_values_kept() {
+    let cat = catalogue();
+    // (task, variant, column, printed, corrected) — TASKS.md's list; 12.2 variant 16 is
+    // corrected to 0,05 (table 12.2 repeats table 12.1's rows, errata.csv says why).
+    let known = [
+        ("10", 4, "l_oa", "0.8", "0.08"),
+        ("12", 16, "l_oa", "0.65", "0.05"),
+        ("11", 21, "n_dv", "300", "3000"),
+        ("11", 30, "n_dv", "300", "3000"),
+    ];
+    for (task, variant, column, printed, corrected) in known {
+        let t = cat.task(task).unwrap();
+        let e = t.errata_of(variant).find(|e| e.column == column).unwrap_or_else(|| panic!("{task}/{variant}"));
+        assert_eq!((e.printed.as_deref(), e.corrected.as_deref()), (Some(printed), Some(corrected)));
+        let i = t.columns().iter().position(|c| c.key == column).unwrap();
+        assert_eq!(t.row(variant).unwrap().cells[i].as_deref(), Some(printed), "the data file keeps the print");
+        assert_eq!(t.cell(t.row(variant).unwrap(), i).0.as_deref(), Some(corrected), "the project uses the correction");
+        assert!(!e.reason.en.is_empty() && !e.reason.ru.is_empty() && !e.reason.uz.is_empty());
+    }
+    // 8.1 variant 10: J = 0,22 (the column J_S2 = J_S4 of task 8).
+    let t = cat.task("8").unwrap();
+    let e = t.errata_of(10).next().expect("task 8 variant 10's J");
+    assert_eq!((e.printed.as_deref(), e.corrected.as_deref()), (Some("0.22"), Some("0.022")));
+}
+
+/// Every variant: a project file the program reads (or refuses with a design reason the
+/// task's notes give), or incomplete in the guide; never a template's or a key's fault.
+#[test]
+fn every_variant_is_a_readable_project_or_incomplete_in_the_guide() {
+    let cat = catalogue();
+    let mut counts = [0usize; 3];
+    for t in &cat.tasks {
+        for v in t.variants() {
+            let at = format!("task {} variant {v}", t.id());
+            match t.project(v, Language::En, "tmm init").unwrap_or_else(|e| panic!("{at}: {e}")) {
+                Variant::Incomplete { message, .. } => {
+                    assert!(message.contains("incomplete in the guide: no value for"), "{at}: {message}");
+                    counts[2] += 1;
+                }
+                Variant::Project { text, .. } => {
+                    assert!(!text.contains("${"), "{at}");
+                    match pipeline::load(&text) {
+                        Ok(_) => counts[0] += 1,
+                        Err(pipeline::Error::Refused(r)) => {
+                            assert_eq!(r.refusal.kind, Kind::Design, "{at}: {}", r.refusal);
+                            assert!(t.refusal_explained(v).is_some(), "{at}: unexplained: {}", r.refusal);
+                            counts[1] += 1;
+                        }
+                        Err(e) => panic!("{at}: {e}"),
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(counts.iter().sum::<usize>(), 15 * 45 + 3 * 30);
+    eprintln!("read {}, refused as printed {}, incomplete {}", counts[0], counts[1], counts[2]);
+}
+
+#[test]
+fn init_in_each_language_sets_the_projects_language() {
+    let t = catalogue();
+    let t = t.task("7").unwrap();
+    for lang in Language::ALL {
+        let Variant::Project { text, .. } = t.project(12, lang, "x").unwrap() else { panic!() };
+        assert!(text.contains(&format!("\n  language: {}\n", lang.key())), "{lang:?}");
+        assert_eq!(text.matches("  language:").count(), 1);
+    }
+}
