@@ -58,9 +58,12 @@ pub fn ranges(numbers: &[u32]) -> String {
     out.join(", ")
 }
 
+/// Variants, each with a text.
+type ByVariant = Vec<(u32, String)>;
+
 /// The variants of a task the guide leaves incomplete, with the values lost, and those it
 /// leaves incomplete in part (some sheets' values lost), with the sections left out.
-fn incomplete(task: &Task, lang: Language) -> Result<(Vec<(u32, String)>, Vec<(u32, String)>)> {
+fn incomplete(task: &Task, lang: Language) -> Result<(ByVariant, ByVariant)> {
     let (mut whole, mut part) = (Vec::new(), Vec::new());
     for v in task.variants() {
         match task.project(v, lang, "").map_err(|e| anyhow!(e))? {
