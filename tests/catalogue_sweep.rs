@@ -40,15 +40,15 @@ fn check(task: &Task, variant: u32) -> (Vec<String>, usize) {
         assert!(b.svg.starts_with("<svg") && b.svg.len() > 10_000, "{at}: sheet {} drawn", b.output.number);
     }
     let answer = |id: &str| answers(&built).into_iter().find(|(k, _)| k == id).map(|(_, v)| v);
-    if let Some(delta) = answer("sheet1.balancing.delta") {
-        if delta.abs() > 5.0 {
-            faults.push(format!("{at}: Δ = {delta} %"));
-        }
+    if let Some(delta) = answer("sheet1.balancing.delta")
+        && delta.abs() > 5.0
+    {
+        faults.push(format!("{at}: Δ = {delta} %"));
     }
-    if let (Some(e), Some(drawn)) = (answer("sheet2.pair.epsilon"), answer("sheet2.pair.epsilon_drawn")) {
-        if e < 1.0 || (drawn - e).abs() > 0.1 * e {
-            faults.push(format!("{at}: ε = {e}, drawn {drawn}"));
-        }
+    if let (Some(e), Some(drawn)) = (answer("sheet2.pair.epsilon"), answer("sheet2.pair.epsilon_drawn"))
+        && (e < 1.0 || (drawn - e).abs() > 0.1 * e)
+    {
+        faults.push(format!("{at}: ε = {e}, drawn {drawn}"));
     }
     for phase in ["rise", "return"] {
         let (max, allowed) = (
