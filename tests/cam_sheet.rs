@@ -9,6 +9,7 @@ mod common;
 
 use common::{check_layout, english_on_russian, fixture_text, root, runs};
 use std::f64::consts::PI;
+use tmm_sheets::catalogue::{Catalogue, Variant};
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::pipeline;
 use tmm_sheets::project::Project;
@@ -171,6 +172,30 @@ fn the_diagrams_are_measurable_and_close_for_one_law() {
         } else {
             assert!(closure.is_finite() && closure.abs() < 0.05 * prog.lift, "{name}: closure {closure}");
         }
+    }
+}
+
+/// Catalogue variants whose nomogram left its region: a long r_min over a short lift put
+/// the point the zone's name points at (0.4 r_min under O) below the picture, and its leader
+/// out of the region or off the page (task 15, variants 10 and 17); a nomogram drawn small
+/// in the diagrams' column had a region narrower than its Uzbek title (task 1, variant 2;
+/// task 8, variant 26). Each view keeps inside its region.
+#[test]
+fn the_nomogram_keeps_its_labels_and_title_inside_its_region_on_catalogue_variants() {
+    let catalogue = Catalogue::embedded().unwrap();
+    for (task, variant, lang) in
+        [("15", 10, Language::En), ("15", 17, Language::Ru), ("1", 2, Language::Uz), ("8", 26, Language::Uz)]
+    {
+        let name = format!("task {task} variant {variant} {lang:?}");
+        let Variant::Project { text, .. } = catalogue.task(task).unwrap().project(variant, lang, "").unwrap() else {
+            panic!("{name}: incomplete in the catalogue");
+        };
+        let b = sheet3(&pipeline::load(&text).unwrap_or_else(|e| panic!("{name}: {e:#}")));
+        let l = &b.output.results["layout"];
+        for key in ["outside_region", "texts_crossed", "text_overlaps"] {
+            assert_eq!(l[key], 0, "{name}: {key}: {}", l["problems"]);
+        }
+        check_layout(&name, &b.output.scene);
     }
 }
 

@@ -29,7 +29,7 @@ use crate::project::{CamProject, Project};
 use kurbo::{Point, Rect};
 use labels::CamWords;
 use nomogram::Placement;
-use regions::{Content, LEFT_MAX, Regions, SHEET, view_area};
+use regions::{Content, LEFT_MAX, Regions, SHEET, ViewSize, view_area};
 
 /// This sheet's place in the course.
 pub const KIND: SheetKind = COURSE[2];
@@ -121,10 +121,17 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         ns.into_iter().map(|n| tables::sheet_table(n, lang)).collect()
     };
     let (law, rest) = (drawn(law), drawn(rest));
-    let extents = (nomogram::extent(d, &phis), profile_view::extent(d));
     let content = Content {
-        nomogram: extents.0,
-        profile: extents.1,
+        nomogram: ViewSize {
+            extent: nomogram::extent(d, &phis),
+            reach: nomogram::reach(d),
+            heading_w: heading_w(l.nomogram_title()),
+        },
+        profile: ViewSize {
+            extent: profile_view::extent(d),
+            reach: Vec::new(),
+            heading_w: heading_w(l.profile_title()),
+        },
         plan: &column.plan,
         text_h: column.text_h,
         law: &law,
@@ -134,13 +141,14 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let (dg, scales) = diagrams_group(&lay, &column, p, &integrated, &words);
     let mut nm = view_group("nomogram", lay.nomogram, l.nomogram_title());
     let mut nl = Labels::new();
-    let at = Placement { area: view_area(lay.nomogram), extent: extents.0, mu: lay.nomogram_mu };
+    let at =
+        Placement { area: view_area(lay.nomogram), extent: content.nomogram.at(lay.nomogram_mu), mu: lay.nomogram_mu };
     nomogram::draw(&mut nm, &at, d, &phis, &mut nl, &words);
     scale_note(&mut nm, lay.nomogram_mu, None, &words);
     nl.place(&mut nm, lay.nomogram);
     let mut pv = view_group("profile", lay.profile, l.profile_title());
     let mut pl = Labels::new();
-    let at = Placement { area: view_area(lay.profile), extent: extents.1, mu: lay.profile_mu };
+    let at = Placement { area: view_area(lay.profile), extent: content.profile.at(lay.profile_mu), mu: lay.profile_mu };
     let prof = profile_view::draw(&mut pv, &at, d, &fitted, &phis, &mut pl, &words);
     scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), &words);
     pl.place(&mut pv, lay.profile);
@@ -200,10 +208,22 @@ fn table_groups(lay: &Regions, law: Vec<Table>, rest: Vec<Table>) -> Vec<Group> 
     }
 }
 
+/// A view's title, set at the region's top left.
+fn view_title(region: Rect, title: &str) -> Text {
+    Text::new(Point::new(region.x0 + 2.0, region.y0 + 5.0), title, 3.5, Anchor::Start)
+}
+
+/// The width a view's region needs for its title (and the scale under it, which is
+/// shorter): the title's box from the region's left edge, and as much again on the right.
+fn heading_w(title: &str) -> f64 {
+    let bb = view_title(Rect::ZERO, title).bbox();
+    bb.x1 + bb.x0
+}
+
 /// A view's group with its title at the region's top left.
 fn view_group(id: &str, region: Rect, title: &str) -> Group {
     let mut g = Group::new(id, region);
-    g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 5.0), title, 3.5, Anchor::Start));
+    g.text(view_title(region, title));
     g
 }
 

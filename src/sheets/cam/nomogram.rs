@@ -47,6 +47,8 @@ const ANGLE_MARK_MM: f64 = 10.0;
 const BOUNDARY_POINTS: usize = 240;
 const HATCH_STEP_MM: f64 = 2.5;
 const ON_LINE_MM: f64 = 0.3;
+/// The point the zone's name points at stays this far inside the picture, mm.
+const ZONE_NAME_INSET_MM: f64 = 4.0;
 
 /// The numbers 0…n−1 as labels, a number that is `same` as an earlier labelled one merged
 /// into its label ("0≡17") and given none of its own.
@@ -104,6 +106,41 @@ pub fn extent(d: &Design, phis: &[f64]) -> (Vec2, Vec2) {
     (lo - Vec2::new(pad, pad), hi + Vec2::new(pad, pad * 0.5))
 }
 
+/// The offset's dimension, from the follower's axis to O, runs this far under O on paper
+/// (mm) for an offset `e_mm` long on paper: where the zone between the limiting lines (at the
+/// allowed angles from the axis) is wide enough for it and its arrows, clear of the hatching.
+fn offset_depth(d: &Design, e_mm: f64) -> f64 {
+    ((e_mm + OFFSET_SPARE_MM) / wedge_widening(d) + 2.0).max(8.0)
+}
+
+/// How much wider the zone between the limiting lines gets per unit of depth under O.
+fn wedge_widening(d: &Design) -> f64 {
+    let a = &d.spec.allowed;
+    math::tan(a.rise) + math::tan(a.ret)
+}
+
+/// The offset's dimension line is this much longer than the room it needs between the
+/// limiting lines (its arrows and their gap), mm; its value is written under it, in a band
+/// this deep, mm.
+const OFFSET_SPARE_MM: f64 = 20.0;
+const OFFSET_TEXT_MM: f64 = 6.0;
+
+/// What the nomogram draws at a paper distance from the follower frame: the offset's
+/// dimension and its value under O, [`offset_depth`] deep — e/(tan α_rise + tan α_return)
+/// in metres and the rest in mm whatever the scale — with their text. The picture's box
+/// must hold them: pads proportional to the picture fall short of a paper depth under a
+/// small drawing. Returns (world point, offset in mm, y up).
+pub fn reach(d: &Design) -> Vec<(Vec2, Vec2)> {
+    let o = d.centre.o;
+    if d.spec.follower.pivot().is_some() || o.x.abs() <= tol::ZERO_OFFSET {
+        return Vec::new();
+    }
+    let k = wedge_widening(d);
+    // offset_depth(e/μ) ≤ e/(kμ) + max(20/k + 2, 8): the world part and the paper part.
+    let paper = (OFFSET_SPARE_MM / k + 2.0).max(8.0) + OFFSET_TEXT_MM;
+    vec![(Vec2::new(o.x, o.y - o.x.abs() / k), Vec2::new(0.0, -paper))]
+}
+
 /// A view of the follower-frame box `(lo, hi)` centred in `area` at `mu` m/mm, mirrored for a
 /// counter-clockwise cam.
 pub fn centred(area: Rect, (lo, hi): (Vec2, Vec2), mu: f64, mirror: bool) -> View {
@@ -143,14 +180,19 @@ pub fn draw(g: &mut Group, at: &Placement, d: &Design, phis: &[f64], labels: &mu
     }
     let limiting = draw_limiting_lines(g, labels, view, at.extent, d, words);
     draw_zone_boundary(g, view, at.extent, d, &limiting);
-    labels.add_text_ranked(
-        view.p(d.centre.o + d.region.d * (0.4 * d.centre.r_min)),
-        Vec2::ZERO,
-        words.sheet.zone(),
-        2.5,
-        3,
-    );
+    labels.add_text_ranked(view.p(zone_anchor(d, at.extent, at.mu)), Vec2::ZERO, words.sheet.zone(), 2.5, 3);
     draw_centre(g, labels, view, d, words);
+}
+
+/// Where the zone's name points: into the zone from O, 0.4 r_min deep, but inside the
+/// picture, [`ZONE_NAME_INSET_MM`] short of its edge (or halfway there, if the picture is that
+/// small under O). The depth is the radius's share while the picture's room under O is a
+/// share of the whole picture: a long radius over a short lift put the point (and the
+/// leader drawn from it) below the picture, out of the nomogram's region.
+fn zone_anchor(d: &Design, (lo, hi): (Vec2, Vec2), mu: f64) -> Vec2 {
+    let o = d.centre.o;
+    let room = exit(o, d.region.d, lo, hi);
+    o + d.region.d * (0.4 * d.centre.r_min).min((room - ZONE_NAME_INSET_MM * mu).max(0.5 * room))
 }
 
 /// The follower: its axis, or the rocker's pivot, the arc of its roller's centre and its
@@ -265,12 +307,7 @@ fn draw_centre(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words
         let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(mm(dist), lang), c.unit_mm()));
         labels.add(view.p((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
     } else if o.x.abs() > tol::ZERO_OFFSET {
-        // The offset as a dimension from the follower's axis to O, below O where the zone
-        // between the limiting lines (at the allowed angles from the axis) is wide enough
-        // for it and its arrows, clear of the hatching.
-        let a = &d.spec.allowed;
-        let span = view.len(o.x.abs()) + 20.0;
-        let depth = (span / (math::tan(a.rise) + math::tan(a.ret)) + 2.0).max(8.0);
+        let depth = offset_depth(d, view.len(o.x.abs()));
         let mid = dimension(g, view.p(Vec2::new(0.0, o.y)), view.p(o), Vec2::new(0.0, depth));
         let t = format!("e = {} {}", fmt::value(mm(o.x.abs()), lang), c.unit_mm());
         labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);

@@ -36,11 +36,55 @@ pub struct Regions {
 /// A view's box in metres: its lower and upper corners.
 type Extent = (Vec2, Vec2);
 
+/// A view as the regions size it: its box in metres; what it draws at a paper distance from
+/// a world point (a dimension set so many mm under the point it measures from); and the
+/// width its heading (the title and the scale set at the region's top left) takes on paper,
+/// mm. The region is at least as wide as the heading: a small drawing under a long title (a
+/// nomogram at a coarse scale, its title in Uzbek) would otherwise leave the title sticking
+/// out of its region.
+#[derive(Debug, Clone)]
+pub struct ViewSize {
+    pub extent: Extent,
+    /// World points with an offset in paper mm (world axes, y up): each point moved by its
+    /// offset at the view's scale must be inside the view's box too.
+    pub reach: Vec<(Vec2, Vec2)>,
+    pub heading_w: f64,
+}
+
+impl ViewSize {
+    /// The box the view shows at `mu`: its extent grown over what it reaches at that scale.
+    pub fn at(&self, mu: f64) -> Extent {
+        self.reach.iter().fold(self.extent, |(lo, hi), &(p, off)| {
+            let q = p + off * mu;
+            (Vec2::new(lo.x.min(q.x), lo.y.min(q.y)), Vec2::new(hi.x.max(q.x), hi.y.max(q.y)))
+        })
+    }
+
+    /// The least μ at which the box [`ViewSize::at`] is at most `room` mm long on paper along
+    /// one axis (`coord` picks it): each pair of the box's corners and reached points apart
+    /// by d metres and r mm of offset must keep d/μ + r ≤ room. Infinite when no μ does.
+    fn least_mu(&self, room: f64, coord: impl Fn(Vec2) -> f64) -> f64 {
+        let (lo, hi) = self.extent;
+        let mut pts = vec![(coord(lo), 0.0), (coord(hi), 0.0)];
+        pts.extend(self.reach.iter().map(|&(p, off)| (coord(p), coord(off))));
+        let mut need: f64 = 0.0;
+        for &(pa, ra) in &pts {
+            for &(pb, rb) in &pts {
+                let (d, left) = (pa - pb, room - (ra - rb));
+                if d > 0.0 {
+                    need = need.max(if left > 0.0 { d / left } else { f64::INFINITY });
+                }
+            }
+        }
+        need
+    }
+}
+
 /// What the regions are chosen for: the views' boxes, the diagrams' plan and the height of
 /// the column's texts, the law's tables and the rest.
 pub struct Content<'a> {
-    pub nomogram: Extent,
-    pub profile: Extent,
+    pub nomogram: ViewSize,
+    pub profile: ViewSize,
     pub plan: &'a diagrams::Plan,
     pub text_h: f64,
     pub law: &'a [Table],
@@ -127,8 +171,9 @@ fn nomogram_in_column(c: &Content, f: &Frame) -> Option<Regions> {
     let tables = f.strip(&all);
     let views = f.views_above(tables);
     let column = Rect::new(SHEET.x0, SHEET.y0 + f.column_used + GAP, SHEET.x0 + f.left_w, SHEET.y1);
-    let n = fit_view(c.nomogram, column, false).filter(|(mu, _)| longer_side(c.nomogram, *mu) >= NOMOGRAM_MIN_MM * 0.6);
-    let p = fit_view(c.profile, views, true);
+    let n = fit_view(&c.nomogram, column, false)
+        .filter(|(mu, _)| longer_side(c.nomogram.at(*mu), *mu) >= NOMOGRAM_MIN_MM * 0.6);
+    let p = fit_view(&c.profile, views, true);
     n.zip(p).map(|((nomogram_mu, nomogram), (profile_mu, profile))| Regions {
         diagrams: Rect::new(SHEET.x0, SHEET.y0, SHEET.x0 + f.left_w, nomogram.y0 - GAP),
         law_tables: None,
@@ -143,7 +188,7 @@ fn nomogram_in_column(c: &Content, f: &Frame) -> Option<Regions> {
 /// Both views on the right side by side, the room left over shared out between and round
 /// the two.
 fn side_by_side(c: &Content, views: Rect) -> Option<(f64, Rect, f64, Rect)> {
-    let found = profile_and_nomogram((c.profile, c.nomogram), views, |profile| {
+    let found = profile_and_nomogram((&c.profile, &c.nomogram), views, |profile| {
         Rect::new(views.x0, views.y0, views.x1 - profile.width() - GAP, views.y1)
     });
     found.map(|(profile_mu, profile, nomogram_mu, nomogram)| {
@@ -157,7 +202,7 @@ fn side_by_side(c: &Content, views: Rect) -> Option<(f64, Rect, f64, Rect)> {
 /// The nomogram under the profile on the right (a wide, low profile: a rocker's pivots on
 /// their arc above the cam).
 fn nomogram_under_profile(c: &Content, views: Rect) -> Option<(f64, Rect, f64, Rect)> {
-    let found = profile_and_nomogram((c.profile, c.nomogram), views, |profile| {
+    let found = profile_and_nomogram((&c.profile, &c.nomogram), views, |profile| {
         Rect::new(views.x0, profile.y1 + GAP, views.x1, views.y1)
     });
     found.map(|(pm, p, nm, n)| (pm, centred_across(p, views), nm, centred_across(n, views)))
@@ -172,7 +217,7 @@ pub fn view_area(r: Rect) -> Rect {
 /// nomogram [`NOMOGRAM_MIN_MM`] in the room `rest(profile)` (else the largest profile with
 /// any nomogram): `(μ_profile, profile, μ_nomogram, nomogram)`.
 fn profile_and_nomogram(
-    (p_ext, n_ext): ((Vec2, Vec2), (Vec2, Vec2)),
+    (p_ext, n_ext): (&ViewSize, &ViewSize),
     views: Rect,
     rest: impl Fn(Rect) -> Rect,
 ) -> Option<(f64, Rect, f64, Rect)> {
@@ -180,7 +225,7 @@ fn profile_and_nomogram(
     for mu_p in scale::length_scales() {
         let Some((_, profile)) = fit_at(p_ext, views, mu_p) else { continue };
         let Some((mu_n, nomogram)) = fit_view(n_ext, rest(profile), false) else { continue };
-        let enough = longer_side(n_ext, mu_n) >= NOMOGRAM_MIN_MM;
+        let enough = longer_side(n_ext.at(mu_n), mu_n) >= NOMOGRAM_MIN_MM;
         if found.is_none() || enough {
             found = Some((mu_p, profile, mu_n, nomogram));
         }
@@ -196,24 +241,26 @@ fn longer_side((lo, hi): (Vec2, Vec2), mu: f64) -> f64 {
     ((hi.x - lo.x) / mu).max((hi.y - lo.y) / mu)
 }
 
-/// The region a view of the box `ext` (metres) takes at `mu` at the top left of `room`, if it
-/// fits there.
-fn fit_at((lo, hi): (Vec2, Vec2), room: Rect, mu: f64) -> Option<(f64, Rect)> {
-    let (w, h) = ((hi.x - lo.x) / mu + VIEW_SIDES, (hi.y - lo.y) / mu + VIEW_TOP + VIEW_BOTTOM);
+/// The region a view takes at `mu` at the top left of `room`, if it fits there: its box
+/// (metres) at `mu` with the view's margins, and no narrower than its heading.
+fn fit_at(view: &ViewSize, room: Rect, mu: f64) -> Option<(f64, Rect)> {
+    let (lo, hi) = view.at(mu);
+    let w = ((hi.x - lo.x) / mu + VIEW_SIDES).max(view.heading_w);
+    let h = (hi.y - lo.y) / mu + VIEW_TOP + VIEW_BOTTOM;
     (w <= room.width() && h <= room.height()).then(|| (mu, Rect::new(room.x0, room.y0, room.x0 + w, room.y0 + h)))
 }
 
-/// The largest scale at which a view of the box `ext` fits `room` — a GOST one, or of the
-/// round series — and its region there.
-fn fit_view(ext: (Vec2, Vec2), room: Rect, gost: bool) -> Option<(f64, Rect)> {
-    let (lo, hi) = ext;
-    let need =
-        ((hi.x - lo.x) / (room.width() - VIEW_SIDES)).max((hi.y - lo.y) / (room.height() - VIEW_TOP - VIEW_BOTTOM));
+/// The largest scale at which a view fits `room` — a GOST one, or of the round series — and
+/// its region there.
+fn fit_view(view: &ViewSize, room: Rect, gost: bool) -> Option<(f64, Rect)> {
+    let need = view
+        .least_mu(room.width() - VIEW_SIDES, |v| v.x)
+        .max(view.least_mu(room.height() - VIEW_TOP - VIEW_BOTTOM, |v| v.y));
     if !(need.is_finite() && need > 0.0) {
         return None;
     }
     let mu = if gost { scale::length_scale(need) } else { scale::round_up(need) };
-    fit_at(ext, room, mu)
+    fit_at(view, room, mu)
 }
 
 /// `r` moved to the middle of `within` across.
