@@ -179,17 +179,29 @@ fn the_diagrams_are_measurable_and_close_for_one_law() {
 /// the point the zone's name points at (0.4 r_min under O) below the picture, and its leader
 /// out of the region or off the page (task 15, variants 10 and 17); a nomogram drawn small
 /// in the diagrams' column had a region narrower than its Uzbek title (task 1, variant 2;
-/// task 8, variant 26). Each view keeps inside its region.
+/// task 8, variant 26); the offset's dimension, set a paper depth under O, ran below a small
+/// picture (task 12, variant 34 with the rise's allowed angle raised to 45°: the smallest
+/// cam's centre is off the axis). Each view keeps inside its region.
 #[test]
 fn the_nomogram_keeps_its_labels_and_title_inside_its_region_on_catalogue_variants() {
     let catalogue = Catalogue::embedded().unwrap();
-    for (task, variant, lang) in
-        [("15", 10, Language::En), ("15", 17, Language::Ru), ("1", 2, Language::Uz), ("8", 26, Language::Uz)]
-    {
+    let unequal = Some(("pressure_angle_deg: 30\n", "pressure_angle_deg: {rise: 45, return: 30}\n"));
+    for (task, variant, lang, edit) in [
+        ("15", 10, Language::En, None),
+        ("15", 17, Language::Ru, None),
+        ("1", 2, Language::Uz, None),
+        ("8", 26, Language::Uz, None),
+        ("12", 34, Language::En, unequal),
+    ] {
         let name = format!("task {task} variant {variant} {lang:?}");
-        let Variant::Project { text, .. } = catalogue.task(task).unwrap().project(variant, lang, "").unwrap() else {
+        let Variant::Project { mut text, .. } = catalogue.task(task).unwrap().project(variant, lang, "").unwrap()
+        else {
             panic!("{name}: incomplete in the catalogue");
         };
+        if let Some((from, to)) = edit {
+            assert!(text.contains(from), "{name}: no {from:?} to edit");
+            text = text.replacen(from, to, 1);
+        }
         let b = sheet3(&pipeline::load(&text).unwrap_or_else(|e| panic!("{name}: {e:#}")));
         let l = &b.output.results["layout"];
         for key in ["outside_region", "texts_crossed", "text_overlaps"] {

@@ -267,3 +267,32 @@ fn fit_view(view: &ViewSize, room: Rect, gost: bool) -> Option<(f64, Rect)> {
 fn centred_across(r: Rect, within: Rect) -> Rect {
     r + Vec2::new(within.x0 + (within.width() - r.width()) / 2.0 - r.x0, 0.0)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A view that draws a paper depth under a world point (the offset's dimension under O)
+    /// is fitted with that depth inside its region, at a coarser scale where the bare box
+    /// would leave it no room; a view under a long title gets a region as wide as the title.
+    #[test]
+    fn a_views_paper_reach_and_heading_are_inside_the_region_it_is_fitted_to() {
+        let bare =
+            ViewSize { extent: (Vec2::new(-0.05, -0.02), Vec2::new(0.05, 0.08)), reach: Vec::new(), heading_w: 0.0 };
+        let view = ViewSize { reach: vec![(Vec2::new(0.01, -0.02), Vec2::new(0.0, -30.0))], ..bare.clone() };
+        let room = Rect::new(0.0, 0.0, 200.0, 70.0);
+        let (mu0, _) = fit_view(&bare, room, false).unwrap();
+        let (mu, r) = fit_view(&view, room, false).unwrap();
+        assert!(mu > mu0, "the reach costs scale: {mu} vs {mu0}");
+        let (lo, hi) = view.at(mu);
+        assert!(lo.y <= -0.02 - 30.0 * mu + 1e-12, "the box holds the reach: {lo:?}");
+        assert!((hi.y - lo.y) / mu + VIEW_TOP + VIEW_BOTTOM <= r.height() + 1e-9 && r.height() <= room.height());
+        let titled = ViewSize { heading_w: 150.0, ..bare };
+        let (_, r) = fit_view(&titled, room, false).unwrap();
+        assert!(r.width() >= 150.0, "{r:?}");
+        assert!(
+            fit_view(&ViewSize { heading_w: 201.0, ..titled }, room, false).is_none(),
+            "a title wider than the room"
+        );
+    }
+}
