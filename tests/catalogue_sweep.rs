@@ -114,6 +114,7 @@ fn a_sample_of_every_task_builds_as_a_teacher_would_accept() {
             built += 1;
         }
     }
+    eprintln!("{built} sampled variants: {} faults, {crossed} texts crossed or overlapping", faults.len());
     assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
     assert!(crossed <= SAMPLE_CROSSINGS_AT_MOST, "{crossed} texts crossed or overlapping on {built} sampled variants");
 }
@@ -134,4 +135,25 @@ fn every_variant_builds_as_a_teacher_would_accept() {
     }
     eprintln!("{} faults, {crossed} texts crossed or overlapping", faults.len());
     assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
+}
+
+/// Task 1, variants 15 and 25: the second piston's stroke end falls exactly on position 0,
+/// where round-off alone gives the sampled speed a sign that a bisection towards 2π does not
+/// find again; the stroke ends were refused ("no sign change") until such a sample counted
+/// as the extreme it is.
+#[test]
+fn a_stroke_end_exactly_at_position_0_is_found() {
+    let cat = Catalogue::embedded().unwrap();
+    let task = cat.task("1").unwrap();
+    for v in [15, 25] {
+        let Variant::Project { text, .. } = task.project(v, Language::En, "").unwrap() else { panic!() };
+        let p = pipeline::load(&text).unwrap();
+        let built = pipeline::build(&p, &[1]).unwrap_or_else(|e| panic!("variant {v}: {e}"));
+        let s = &built[0].output.results;
+        assert_eq!(
+            s["position0_crank_angle_deg"].as_f64().map(|x| x.rem_euclid(180.0).round()),
+            Some(90.0),
+            "variant {v}"
+        );
+    }
 }

@@ -233,16 +233,18 @@ fn extremes(
 ) -> Result<Vec<(f64, f64)>, MotionError> {
     let mut roots = Vec::new();
     let search_error = |e: RootError<StepFailure>| MotionError::Search { what: what(), detail: e.to_string() };
+    let largest = states.iter().map(|(_, s)| vel(s).abs()).fold(0.0, f64::max);
+    let zero = |v: f64| v.abs() <= tol::EXTREME_SPEED * largest;
     for i in 0..states.len() {
         let (u0, s0) = &states[i];
         let (u1, s1) = &states[(i + 1) % states.len()];
         let u1 = if i + 1 == states.len() { u1 + TAU } else { *u1 };
         let (v0, v1) = (vel(s0), vel(s1));
-        if v0 == 0.0 {
+        if zero(v0) {
             roots.push((*u0, value(s0)));
             continue;
         }
-        if v0.signum() == v1.signum() || v1 == 0.0 {
+        if v0.signum() == v1.signum() || zero(v1) {
             continue;
         }
         let u = roots::bisect(|u| solve(u).map(|s| vel(&s)), *u0, u1, ANGLE_RESOLUTION).map_err(search_error)?;

@@ -36,6 +36,11 @@ pub const ZERO_FORCE: f64 = 1e-12;
 /// the way its acceleration points.
 pub const ZERO_SPEED: f64 = 1e-9;
 
+/// Relative to the largest over a turn: a sampled speed below this fraction of it is zero,
+/// the sample itself an extreme position (round-off alone gives it a sign, which a bisection
+/// towards it would not find again: an output's stroke end exactly at position 0).
+pub const EXTREME_SPEED: f64 = 1e-12;
+
 /// Relative to the larger: two speeds within this fraction of each other are one (sheet 2's
 /// n1 as written and the crank's, which may come from ω1 in 1/s through π/30).
 pub const SAME_SPEED: f64 = 1e-9;
