@@ -127,3 +127,37 @@ fn init_in_each_language_sets_the_projects_language() {
         assert_eq!(text.matches("  language:").count(), 1);
     }
 }
+
+/// Every value, after the errata, within the range its unit allows on a machine of the
+/// course (a misread comma or a column shifted by one shows here): lengths 1 mm–3 m, speeds
+/// 20–3000 rev/min, paper and tooth sizes 0.5–300 mm, angles 0–360°, masses 0.1–2000 kg.
+#[test]
+fn every_value_is_within_its_units_plausible_range() {
+    let ranges = [
+        ("m", 0.001, 3.0),
+        ("rev/min", 20.0, 3000.0),
+        ("mm", 0.5, 300.0),
+        ("°", 0.0, 360.0),
+        ("kg", 0.1, 2000.0),
+        ("kg·m²", 1e-4, 50.0),
+        ("kN", 0.05, 500.0),
+        ("MPa", 0.01, 20.0),
+        ("N", 0.1, 1e5),
+        ("1/s", 1.0, 500.0),
+        ("m/s", 1.0, 30.0),
+    ];
+    let cat = catalogue();
+    let mut out = Vec::new();
+    for t in &cat.tasks {
+        for row in &t.rows {
+            for (i, c) in t.columns().iter().enumerate() {
+                let Some((_, lo, hi)) = ranges.iter().find(|(u, ..)| *u == c.unit) else { continue };
+                let Some(x) = t.cell(row, i).0.and_then(|s| s.parse::<f64>().ok()) else { continue };
+                if !(*lo..=*hi).contains(&x) {
+                    out.push(format!("task {} variant {} {} = {x} {}", t.id(), row.variant, c.printed, c.unit));
+                }
+            }
+        }
+    }
+    assert!(out.is_empty(), "{}", out.join("\n"));
+}
