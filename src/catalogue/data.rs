@@ -33,11 +33,11 @@ pub(super) struct Meta {
     #[serde(default)]
     pub derived: Vec<Derived>,
     #[serde(default)]
-    pub lost: Vec<Lost>,
+    pub lost: Vec<VariantNote>,
     /// Variants whose printed data the program refuses, and why the guide's data explain it
     /// (a chain that cannot close, a ratio no planetary stage gives).
     #[serde(default)]
-    pub refused: Vec<Lost>,
+    pub refused: Vec<VariantNote>,
     pub template: String,
 }
 
@@ -77,10 +77,10 @@ pub struct Derived {
     pub what: Entry,
 }
 
-/// Why some variants lack values.
+/// A note on some variants: why they lack values, or why the program refuses them as printed.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Lost {
+pub struct VariantNote {
     pub variants: String,
     pub why: Entry,
 }
@@ -202,31 +202,6 @@ pub fn printed(cell: &str, lang: Language) -> String {
     match lang {
         Language::En => cell.to_string(),
         _ => cell.replace('.', ","),
-    }
-}
-
-/// A unit as the catalogue writes it (the printed one, in English) in `lang`.
-pub fn unit(unit: &str, lang: Language) -> String {
-    const UNITS: [(&str, &str, &str); 13] = [
-        ("rev/min", "ayl/min", "об/мин"),
-        ("m/s²", "m/s²", "м/с²"),
-        ("m/s", "m/s", "м/с"),
-        ("1/s", "1/s", "1/с"),
-        ("N·m", "N·m", "Н·м"),
-        ("N", "N", "Н"),
-        ("kg·m²", "kg·m²", "кг·м²"),
-        ("kg/m", "kg/m", "кг/м"),
-        ("kN", "kN", "кН"),
-        ("MPa", "MPa", "МПа"),
-        ("mm", "mm", "мм"),
-        ("kg", "kg", "кг"),
-        ("m", "m", "м"),
-    ];
-    let found = UNITS.iter().find(|(en, ..)| *en == unit.trim());
-    match (found, lang) {
-        (Some((_, uz, _)), Language::Uz) => uz.to_string(),
-        (Some((_, _, ru)), Language::Ru) => ru.to_string(),
-        _ => unit.to_string(),
     }
 }
 

@@ -7,7 +7,7 @@ mod data;
 mod template;
 mod words;
 
-pub use data::{Column, Constant, Derived, Erratum, Lost, Row};
+pub use data::{Column, Constant, Derived, Erratum, Row, VariantNote};
 pub use template::Unfilled;
 pub use words::CatalogueWords;
 
@@ -121,17 +121,17 @@ impl Task {
         &self.meta.constants
     }
 
-    pub fn lost(&self) -> &[Lost] {
+    pub fn lost(&self) -> &[VariantNote] {
         &self.meta.lost
     }
 
     /// The task's notes on why the program refuses some variants as printed.
-    pub fn refused(&self) -> &[Lost] {
+    pub fn refused(&self) -> &[VariantNote] {
         &self.meta.refused
     }
 
     /// Why the guide's data make the program refuse `variant`, if the task says so.
-    pub fn refusal_explained(&self, variant: u32) -> Option<&Lost> {
+    pub fn refusal_explained(&self, variant: u32) -> Option<&VariantNote> {
         self.meta.refused.iter().find(|l| data::range(&l.variants).is_some_and(|r| r.contains(&variant)))
     }
 
@@ -253,7 +253,7 @@ impl Task {
             let shown = text.as_deref().map_or("—".to_string(), |t| data::printed(t, lang));
             let source = w.cell_source(&row.table, &row.variant.to_string());
             let mut note =
-                format!("{} = {shown} {} ({}): {source}", c.printed, data::unit(&c.unit, lang), c.what.pick(lang));
+                format!("{} = {shown} {} ({}): {source}", c.printed, words::unit(&c.unit, lang), c.what.pick(lang));
             if let Some(e) = erratum {
                 let reason = e.reason.pick(lang);
                 note.push_str("; ");
@@ -274,7 +274,7 @@ impl Task {
             // Checked when the catalogue is read: the expression parses and names known keys.
             let value = template::evaluate(&d.expression, &out, &mut Vec::new()).ok().flatten().map(|(x, _)| x);
             let shown = value.map_or("—".to_string(), |x| printed_number(x, lang));
-            let unit = data::unit(&d.unit, lang);
+            let unit = words::unit(&d.unit, lang);
             let computed = w.computed(&d.expression, &shown);
             // The values it is computed from are named too, each on its own comment line.
             let mut lines: Vec<String> = Vec::new();
@@ -329,7 +329,7 @@ impl Task {
     }
 
     /// The task's notes on lost values that concern `variant`.
-    pub fn lost_notes(&self, variant: u32) -> impl Iterator<Item = &Lost> {
+    pub fn lost_notes(&self, variant: u32) -> impl Iterator<Item = &VariantNote> {
         self.meta.lost.iter().filter(move |l| data::range(&l.variants).is_some_and(|r| r.contains(&variant)))
     }
 
@@ -446,12 +446,12 @@ fn with_language(body: &str, lang: Language) -> String {
 /// A constant as `symbol = value unit` in `lang`.
 pub fn constant(c: &Constant, lang: Language) -> String {
     let symbol = c.printed.as_deref().unwrap_or(&c.key);
-    tidy(&format!("{symbol} = {} {}", printed_number(c.value, lang), data::unit(&c.unit, lang))).trim_end().to_string()
+    tidy(&format!("{symbol} = {} {}", printed_number(c.value, lang), words::unit(&c.unit, lang))).trim_end().to_string()
 }
 
 /// A column's heading with its unit in `lang`: "L_O1A, м".
 pub fn heading(c: &Column, lang: Language) -> String {
-    if c.unit.is_empty() { c.printed.clone() } else { format!("{}, {}", c.printed, data::unit(&c.unit, lang)) }
+    if c.unit.is_empty() { c.printed.clone() } else { format!("{}, {}", c.printed, words::unit(&c.unit, lang)) }
 }
 
 /// A note's spacing: no space before a degree sign, none left by an empty unit.

@@ -84,10 +84,9 @@ pub fn evaluate(
 }
 
 /// A number as the project file gets it: ten significant digits, trailing zeros dropped,
-/// never an exponent for the course's magnitudes.
+/// never an exponent for the course's magnitudes, never `-0`.
 pub fn number(x: f64) -> String {
-    let s = crate::num::digits::sig(x, 10);
-    if s == "-0" { "0".into() } else { s }
+    crate::num::digits::sig(x, 10)
 }
 
 /// A top-level section of the filled template: its key (`mechanism`; empty for the opening

@@ -1,5 +1,7 @@
 //! The catalogue's own words in the three languages (templates/labels/catalogue.yaml).
 
+use crate::drawing::labels::{Common, Language};
+
 crate::label_set! {
     /// What `tmm list`, `tmm init` and the batch summary write around the guide's data.
     pub struct CatalogueWords = "catalogue.yaml" {
@@ -32,13 +34,32 @@ crate::label_set! {
         refused_as_printed,
         left_out_with_mechanism,
         col_status,
+        unit_rev_per_min,
+        unit_kg_per_m,
+        unit_kn,
+        unit_mpa,
+        unit_m,
     }
+}
+
+/// A unit as a task's columns print it (in English) in `lang`: the sheets' own units from
+/// [`Common::si_unit`], the guide's others from the catalogue's words.
+pub fn unit(unit: &str, lang: Language) -> String {
+    let w = CatalogueWords::get(lang);
+    match unit.trim() {
+        "rev/min" => w.unit_rev_per_min(),
+        "kg/m" => w.unit_kg_per_m(),
+        "kN" => w.unit_kn(),
+        "MPa" => w.unit_mpa(),
+        "m" => w.unit_m(),
+        other => Common::get(lang).si_unit(other),
+    }
+    .to_string()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::drawing::labels::Language;
 
     #[test]
     fn the_catalogue_words_load_in_every_language() {

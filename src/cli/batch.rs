@@ -167,16 +167,12 @@ fn build_variant(task: &Task, variant: u32, batch: &Batch, o: &mut Outcome) -> R
             }
             // The sheets the refusal does not concern are still built.
             let (project, built) = load_and_build(&text, batch.lang, &others).map_err(|e| anyhow!("{e}"))?;
-            record(o, &project, &built);
-            // The refusal is the outcome's; loading the other sheets repeats it as a warning.
-            o.warnings.retain(|w| {
-                !w.starts_with(&format!("line {}, column {}: {}", r.refusal.line, r.refusal.column, r.refusal.path))
-            });
+            record(o, &project, &built, Some(&r.refusal));
             return write_files(batch, task, variant, &text, Some((&project, &built)));
         }
         Err(e) => return Err(anyhow!("{e}")),
     };
-    record(o, &project, &built);
+    record(o, &project, &built, None);
     o.status = match (partial, o.warnings.is_empty()) {
         (true, _) => Status::BuiltInPart,
         (false, true) => Status::Built,
@@ -199,9 +195,18 @@ fn load_and_build(
     Ok((project, built))
 }
 
-/// The warnings, answers and layout measures of a build.
-fn record(o: &mut Outcome, project: &crate::project::Project, built: &[Built]) {
-    o.warnings.extend(project.warnings.iter().map(ToString::to_string));
+/// The warnings, answers and layout measures of a build; the warning that repeats `refused`
+/// (loading the sheets it does not concern reports it as one) is the outcome's, not a warning.
+fn record(
+    o: &mut Outcome,
+    project: &crate::project::Project,
+    built: &[Built],
+    refused: Option<&crate::project::Refusal>,
+) {
+    let repeats = |w: &crate::project::Warning| {
+        refused.is_some_and(|r| (w.line, w.column, w.field.as_str()) == (r.line, r.column, r.path.as_str()))
+    };
+    o.warnings.extend(project.warnings.iter().filter(|w| !repeats(w)).map(ToString::to_string));
     for b in built {
         o.warnings.extend(b.output.diagnostics.iter().map(|d| format!("sheet {}, {d}", b.output.number)));
         let prefix = format!("sheet{}", b.output.number);
