@@ -95,11 +95,6 @@ fn sample(task: &Task) -> Vec<u32> {
     picked
 }
 
-/// Texts crossed by a line on the sample, at most: the force drawings' and the profile's
-/// label placement still lets a line cross a label on a few mechanisms (issue 22); this
-/// number may only go down.
-const SAMPLE_CROSSINGS_AT_MOST: usize = 4;
-
 #[test]
 fn a_sample_of_every_task_builds_as_a_teacher_would_accept() {
     let cat = Catalogue::embedded().unwrap();
@@ -116,7 +111,9 @@ fn a_sample_of_every_task_builds_as_a_teacher_would_accept() {
     }
     eprintln!("{built} sampled variants: {} faults, {crossed} texts crossed or overlapping", faults.len());
     assert!(faults.is_empty(), "{} faults:\n{}", faults.len(), faults.join("\n"));
-    assert!(crossed <= SAMPLE_CROSSINGS_AT_MOST, "{crossed} texts crossed or overlapping on {built} sampled variants");
+    // The layout measure clean on every sampled sheet (the full sweep leaves one force
+    // polygon's knot of small forces, task 2 variant 35: issue 22's inset).
+    assert_eq!(crossed, 0, "texts crossed or overlapping on {built} sampled variants");
 }
 
 /// Every variant (about two minutes in release; `cargo test --release --test

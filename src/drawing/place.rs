@@ -36,6 +36,9 @@ const DIRECTIONS: usize = 24;
 struct Request {
     anchor: Point,
     pref: Vec2,
+    /// Further anchors on the same line with their preferred directions, tried after the
+    /// first one's near spots (a profile's name where its first point is crowded).
+    others: Vec<(Point, Vec2)>,
     label: LabelText,
     h: f64,
     /// Lower goes first: a class of labels (a mechanism's joint letters) may claim the
@@ -48,7 +51,7 @@ struct Request {
 impl Request {
     /// A candidate's leader as drawn: a line's name's reaches the line it names.
     fn drawn_leader(&self, c: &Candidate) -> Option<(Point, Point)> {
-        c.leader.map(|(a, b)| (if self.names_line { self.anchor } else { a }, b))
+        c.leader.map(|(a, b)| (if self.names_line { c.anchor } else { a }, b))
     }
 }
 
@@ -81,13 +84,20 @@ impl Labels {
 
     /// A label placed after every label of a lower rank.
     pub fn add_ranked(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
-        self.requests.push(Request { anchor, pref, label, h, rank, names_line: false });
+        self.requests.push(Request { anchor, pref, others: Vec::new(), label, h, rank, names_line: false });
     }
 
     /// A line's name (a profile's, a circle's) with `anchor` on the line: set off on a leader
     /// that reaches the line, so that it cannot be taken for a neighbour's name.
     pub fn add_line_name(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
-        self.requests.push(Request { anchor, pref, label, h, rank, names_line: true });
+        self.requests.push(Request { anchor, pref, others: Vec::new(), label, h, rank, names_line: true });
+    }
+
+    /// A line's name as [`Labels::add_line_name`], with further points of the line (and
+    /// their directions) to name it at when the spots near the first are taken.
+    pub fn add_line_name_at_any(&mut self, spots: &[(Point, Vec2)], label: LabelText, h: f64, rank: u8) {
+        let Some((&(anchor, pref), others)) = spots.split_first() else { return };
+        self.requests.push(Request { anchor, pref, others: others.to_vec(), label, h, rank, names_line: true });
     }
 
     /// A disc (paper mm) every label keeps out of, though nothing drawn bounds it there.
@@ -118,8 +128,7 @@ impl Labels {
         // drawing alone.
         let mut order: Vec<usize> = (0..self.requests.len()).collect();
         // Counting stops at a few: beyond that a label is not constrained.
-        let free: Vec<usize> =
-            cands.iter().map(|cs| cs.iter().filter(|c| c.is_free(&drawn)).take(CONSTRAINED).count()).collect();
+        let free: Vec<usize> = cands.iter().zip(&self.requests).map(|(cs, r)| free_near_first(cs, r, &drawn)).collect();
         order.sort_by_key(|&i| (self.requests[i].rank, free[i]));
         // A label left without a clean spot goes first in the next round (labels placed
         // before it took its spots), up to a few rounds; the best round is kept.
@@ -158,7 +167,8 @@ impl Labels {
         bounds: Rect,
     ) -> Vec<(Candidate, bool)> {
         let mut obstacles = drawn.clone();
-        let mut out = vec![(Candidate { r: Rect::ZERO, leader: None, cost: 0.0 }, false); self.requests.len()];
+        let none = Candidate { r: Rect::ZERO, anchor: Point::ZERO, leader: None, cost: 0.0 };
+        let mut out = vec![(none, false); self.requests.len()];
         for &i in order {
             // A leader may cross thin lines (out of a fan of links) when no label spot can be
             // reached without: a free box comes first, a clean leader second.
@@ -183,6 +193,12 @@ impl Labels {
     }
 }
 
+/// How many of a label's spots around its first anchor are free against the drawing alone
+/// (further anchors are a fallback, not a reason to place it later).
+fn free_near_first(cands: &[Candidate], req: &Request, drawn: &Obstacles) -> usize {
+    cands.iter().filter(|c| c.anchor == req.anchor && c.is_free(drawn)).take(CONSTRAINED).count()
+}
+
 /// A label with at least this many free spots is not constrained (for the order).
 const CONSTRAINED: usize = 8;
 
@@ -192,6 +208,8 @@ const REPAIR_ROUNDS: usize = 3;
 #[derive(Debug, Clone)]
 struct Candidate {
     r: Rect,
+    /// The anchor it labels (a request may have several).
+    anchor: Point,
     leader: Option<(Point, Point)>,
     cost: f64,
 }
@@ -219,7 +237,7 @@ fn least_bad(cands: &[Candidate], o: &Obstacles, req: &Request, bounds: Rect) ->
         let (w, up, down) = label_size(&req.label, req.h);
         let x0 = req.anchor.x.min(bounds.x1 - w).max(bounds.x0);
         let y1 = req.anchor.y.max(bounds.y0 + up + down).min(bounds.y1);
-        Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), leader: None, cost: 0.0 }
+        Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), anchor: req.anchor, leader: None, cost: 0.0 }
     };
     cands
         .iter()
@@ -234,11 +252,25 @@ fn least_bad(cands: &[Candidate], o: &Obstacles, req: &Request, bounds: Rect) ->
 
 /// Every candidate box inside `bounds`, cheapest first.
 fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
+    let mut out = Vec::new();
+    let spots = std::iter::once((req.anchor, req.pref)).chain(req.others.iter().copied());
+    for (k, (anchor, pref)) in spots.enumerate() {
+        // A further anchor's spots cost as much as the first's a few distances out.
+        around(req, anchor, pref, k as f64 * FURTHER_ANCHOR, bounds, &mut out);
+    }
+    out.sort_by(|a, b| a.cost.total_cmp(&b.cost));
+    out
+}
+
+/// What naming a line at its next anchor costs, against its first (in distance steps).
+const FURTHER_ANCHOR: f64 = 4.0;
+
+/// The candidate boxes around one anchor inside `bounds`, their cost raised by `extra`.
+fn around(req: &Request, anchor: Point, pref: Vec2, extra: f64, bounds: Rect, out: &mut Vec<Candidate>) {
     let (w, up, down) = label_size(&req.label, req.h);
     let ht = up + down;
-    let base = if req.pref.norm() > tol::PAPER { req.pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
+    let base = if pref.norm() > tol::PAPER { pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
     let gap = if req.names_line { TOUCH } else { LEADER_GAP };
-    let mut out = Vec::new();
     for (di, &dist) in DISTANCES.iter().enumerate() {
         if req.names_line && dist < LEADER_FROM {
             continue;
@@ -250,18 +282,16 @@ fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
             let d = math::rotate(base, turn.to_radians());
             // The box's nearest point stands `dist` from the anchor along `d` (a superellipse
             // around the anchor: boxes beside, above and diagonal all keep the gap).
-            let centre = req.anchor + Vec2::new(d.x * (w / 2.0 + dist), d.y * (ht / 2.0 + dist));
+            let centre = anchor + Vec2::new(d.x * (w / 2.0 + dist), d.y * (ht / 2.0 + dist));
             let r = Rect::new(centre.x - w / 2.0, centre.y - ht / 2.0, centre.x + w / 2.0, centre.y + ht / 2.0);
             if !(r.x0 >= bounds.x0 && r.y0 >= bounds.y0 && r.x1 <= bounds.x1 && r.y1 <= bounds.y1) {
                 continue;
             }
-            let leader = (dist >= LEADER_FROM).then(|| leader(req.anchor, r, gap));
-            let cost = di as f64 * 1.0 + turn.abs() / 45.0 * 0.8;
-            out.push(Candidate { r, leader, cost });
+            let leader = (dist >= LEADER_FROM).then(|| leader(anchor, r, gap));
+            let cost = extra + di as f64 * 1.0 + turn.abs() / 45.0 * 0.8;
+            out.push(Candidate { r, anchor, leader, cost });
         }
     }
-    out.sort_by(|a, b| a.cost.total_cmp(&b.cost));
-    out
 }
 
 /// A leader from `gap` off the anchor to the nearest point of the label's box.

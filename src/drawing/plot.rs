@@ -70,13 +70,18 @@ impl Plot {
         vector(g, Point::new(x0, y_of_x_axis), Point::new(a.x1 + OVERRUN, y_of_x_axis), THIN);
         vector(g, Point::new(x0, a.y1 + TICK), Point::new(x0, a.y0 - OVERRUN), THIN);
         let text = |g: &mut Group, t: Text| g.text(t);
+        // The x values stand on the side of the axis with less of the data range, where the
+        // curves are least likely to run through them (above it when the data lies mostly
+        // below zero, as a resistance does).
+        let above = -self.y.lo > self.y.hi;
+        let baseline = if above { -(TICK + 0.8) } else { TICK + TEXT + 0.8 };
         for (v, label) in &self.x.ticks {
             let p = self.at(*v, 0.0);
-            g.line(p, Point::new(p.x, p.y + TICK), THIN);
+            g.line(p, Point::new(p.x, p.y + if above { -TICK } else { TICK }), THIN);
             if !label.is_empty() {
                 // The value at the y axis stands beside it rather than across it.
                 let (x, anchor) = if *v == self.x.lo { (p.x + 0.8, Anchor::Start) } else { (p.x, Anchor::Middle) };
-                text(g, Text::new(Point::new(x, p.y + TICK + TEXT + 0.8), label.clone(), TEXT, anchor));
+                text(g, Text::new(Point::new(x, p.y + baseline), label.clone(), TEXT, anchor));
             }
         }
         for (v, label) in &self.y.ticks {
@@ -117,6 +122,26 @@ pub fn round_ticks(lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, Strin
         .collect()
 }
 
+/// Ticks at the diagram's own force levels (each printed with its value, closer ones than
+/// 4 mm merged), then the round ticks of [`round_ticks`] that keep 4 mm clear of them: a
+/// reader finds P_max and the idle level on the axis, not only round numbers.
+pub fn level_ticks(levels: &[f64], lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, String)> {
+    const CLEAR: f64 = 4.0;
+    let mut marked: Vec<f64> = Vec::new();
+    let mut sorted: Vec<f64> = levels.iter().copied().filter(|v| v.abs() / mu >= CLEAR).collect();
+    sorted.sort_by(|a, b| b.abs().total_cmp(&a.abs()));
+    for v in sorted {
+        if marked.iter().all(|m| (m - v).abs() / mu >= CLEAR) {
+            marked.push(v);
+        }
+    }
+    let mut ticks: Vec<(f64, String)> = marked.iter().map(|&v| (v, fmt::trimmed(v, lang))).collect();
+    let round = round_ticks(lo, hi, mu, lang);
+    ticks.extend(round.into_iter().filter(|(v, _)| marked.iter().all(|m| (m - v).abs() / mu >= CLEAR)));
+    ticks.sort_by(|a, b| a.0.total_cmp(&b.0));
+    ticks
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -145,5 +170,18 @@ mod tests {
         // At 100 N/mm a 200 N step would be 2 mm apart: it grows to 400 N, 4 mm on paper.
         let dense: Vec<f64> = round_ticks(0.0, 1200.0, 100.0, Language::En).iter().map(|x| x.0).collect();
         assert_eq!(dense, [400.0, 800.0, 1200.0]);
+    }
+
+    #[test]
+    fn level_ticks_mark_every_level_and_keep_round_ones_clear_of_them() {
+        // A working stroke at −1299 N and an idle one at −130 N, at 20 N/mm.
+        let t = level_ticks(&[-1299.0, -130.0, -1299.0, 0.0], -1299.0, 0.0, 20.0, Language::Ru);
+        let values: Vec<f64> = t.iter().map(|x| x.0).collect();
+        // Round step 250 N (a sixth of 1299 N, rounded up): −1250 is 2.45 mm from −1299 and
+        // goes; −250 is 6 mm from −130 and stays.
+        assert_eq!(values, [-1299.0, -1000.0, -750.0, -500.0, -250.0, -130.0]);
+        assert_eq!(t[0].1, "−1299");
+        // A level under 4 mm from the axis is not marked (its value would sit on the axis').
+        assert!(level_ticks(&[30.0], 0.0, 1000.0, 20.0, Language::En).iter().all(|x| x.0 != 30.0));
     }
 }

@@ -163,10 +163,19 @@ fn name_profiles(labels: &mut Labels, view: View, d: &Design, l: &CamLabels) {
     labels.add_line_name(view.p(far), outward, LabelText::new(name, ""), 2.5, 3);
     if !knife {
         // On the curve itself (its leader reaches it), the text inside the cam, which is
-        // free of the construction.
-        let (w, _) = pr.working(d.roller, prog.rise / 2.0);
-        let inward = view.origin - view.p(w);
-        labels.add_line_name(view.p(w), inward, LabelText::new(l.working_profile(), ""), 2.5, 3);
+        // free of the construction: at mid-rise, else mid-return or in a dwell.
+        let at = |phi: f64| {
+            let (w, _) = pr.working(d.roller, phi);
+            (view.p(w), view.origin - view.p(w))
+        };
+        let near = prog.rise + prog.far_dwell + prog.ret;
+        let spots = [
+            at(prog.rise / 2.0),
+            at(near - prog.ret / 2.0),
+            at(prog.rise + prog.far_dwell / 2.0),
+            at((near + TAU) / 2.0),
+        ];
+        labels.add_line_name_at_any(&spots, LabelText::new(l.working_profile(), ""), 2.5, 3);
     }
 }
 

@@ -19,6 +19,8 @@ use kurbo::{CubicBez, Point, Rect, Vec2};
 const SLIDER: (f64, f64) = (10.0, 5.0);
 const BLOCK: (f64, f64) = (7.0, 4.0);
 const JOINT_R: f64 = 1.0;
+/// The length of the crank pin's circle each position number needs in 3.5 mm lettering, mm.
+const CROWDED_NUMBERS: f64 = 8.0;
 
 /// Drawn length of a kulisa: given, or its longest reach to the block plus 15 %.
 fn kulisa_len(k: &Kinematics, c: PointId, a3: PointId, given: Option<f64>) -> f64 {
@@ -196,9 +198,22 @@ impl MechanismView<'_> {
     /// Position numbers beside the crank pin of every position, outward from the pivot.
     fn position_numbers(&self, labels: &mut Labels) {
         let crank = self.m.crank();
+        let ends =
+            |pos: &Position| (self.view.p(pos.state.points[crank.pivot].p), self.view.p(pos.state.points[crank.pin].p));
+        // Numbers in 3.5 mm lettering need about 8 mm of the pin's circle each; round a
+        // smaller crank they are set in 2.5 mm (GOST 2.304's next size), else they crowd
+        // onto the connecting rods' lines.
+        let h = match self.k.positions.first() {
+            Some(p) => {
+                let (o, a) = ends(p);
+                let per_number = std::f64::consts::TAU * (a - o).norm() / self.k.positions.len() as f64;
+                if per_number >= CROWDED_NUMBERS { 3.5 } else { 2.5 }
+            }
+            None => 3.5,
+        };
         for pos in &self.k.positions {
-            let (o, a) = (self.view.p(pos.state.points[crank.pivot].p), self.view.p(pos.state.points[crank.pin].p));
-            labels.add_text_ranked(a, a - o, &pos.label, 3.5, 2);
+            let (o, a) = ends(pos);
+            labels.add_text_ranked(a, a - o, &pos.label, h, 2);
         }
     }
 

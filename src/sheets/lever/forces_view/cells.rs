@@ -3,7 +3,8 @@
 //! attempt.
 
 use super::group::{GroupLayout, group_layout};
-use super::zhukovsky::{LEVER_LINES, lever_arrow_scale, lever_legend};
+use super::load::cell_size as load_cell;
+use super::zhukovsky::{DESCENT, LEVER_LINES, lever_arrow_scale, lever_legend};
 use super::{ARROW_MAX, ForcesInput, LINE};
 use crate::drawing::scale;
 use crate::lever::plans::{Plan, velocity_plan};
@@ -12,8 +13,6 @@ use crate::sheets::lever::plans_view::{MARGIN, TITLE, plan_bbox};
 use kurbo::{Point, Rect};
 
 const GAP: f64 = 6.0;
-const LOAD_W: f64 = 96.0;
-const LOAD_H: f64 = 78.0;
 
 pub(super) enum Content {
     /// Index into the polygons, and the layout computed for the cell's size.
@@ -77,10 +76,11 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let pad = MARGIN + ARROW_MAX + 4.0;
     let w = (bb.width() / mu + 2.0 * pad).max(110.0);
     let text_lines = LEVER_LINES + lever_legend(inp, mu_f, w - 4.0).len();
-    let h = TITLE + bb.height() / mu + 2.0 * pad + text_lines as f64 * LINE;
+    let h = TITLE + bb.height() / mu + 2.0 * pad + text_lines as f64 * LINE + DESCENT;
     out.push(Cell { w, h, content: Content::Lever(lever, mu, mu_f) });
-    for i in 0..inp.fa.model.loads.len() {
-        out.push(Cell { w: LOAD_W, h: LOAD_H, content: Content::Load(i) });
+    for (i, load) in inp.fa.model.loads.iter().enumerate() {
+        let (w, h) = load_cell(load);
+        out.push(Cell { w, h, content: Content::Load(i) });
     }
     for (i, t) in inp.tables.iter().enumerate() {
         let (w, h) = t.size();

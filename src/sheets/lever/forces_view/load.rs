@@ -5,12 +5,35 @@ use super::legend::{cell_title, scale_item, text_rows};
 use super::{ForcesInput, LINE};
 use crate::drawing::fmt;
 use crate::drawing::place::Labels;
-use crate::drawing::plot::{Axis, Plot, round_ticks};
+use crate::drawing::plot::{Axis, Plot, level_ticks};
 use crate::drawing::scale;
 use crate::drawing::scene::{DASHED, Group, MAIN, THIN};
 use crate::drawing::text::LabelText;
 use crate::lever::load::{Load, Stroke};
 use kurbo::{Rect, Vec2};
+
+/// Room around a load diagram's plot, mm: the title and the P axis' arrow and name above,
+/// the tick values on the left, the legend's two lines below.
+const TOP: f64 = 20.0;
+const LEFT: f64 = 20.0;
+const BOTTOM: f64 = 22.0;
+/// The plot's size, mm: S/H over `WIDTH`; P over at least `MIN_HEIGHT` (a round μ_P is
+/// chosen for twice that, so the plot is between one and two times it).
+pub(super) const WIDTH: f64 = 100.0;
+const MIN_HEIGHT: f64 = 60.0;
+
+/// The P range (spanning zero, where the S/H axis runs) and its round scale μ_P, N/mm.
+fn force_scale(load: &Load) -> (f64, f64, f64) {
+    let values = load.branches.iter().flat_map(|br| br.curve.points.iter().map(move |p| p.1 * br.scale));
+    let (least, most) = values.fold((0.0f64, 0.0f64), |(lo, hi), y| (lo.min(y), hi.max(y)));
+    (least, most, scale::round_up((most - least) / (2.0 * MIN_HEIGHT)))
+}
+
+/// A load diagram's cell, mm: the plot at its scale and the room around it.
+pub(super) fn cell_size(load: &Load) -> (f64, f64) {
+    let (lo, hi, mu) = force_scale(load);
+    (LEFT + WIDTH + 14.0, TOP + ((hi - lo) / mu).max(MIN_HEIGHT) + BOTTOM)
+}
 
 /// A load diagram: force against S/H for both strokes, the analysed position marked.
 pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, i: usize) {
@@ -19,14 +42,9 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
     let n = inp.m.links[load.link].number;
     let lang = inp.words.lang;
     cell_title(g, r, &inp.words.sheet.load_title(&n.to_string()));
-    let area = Rect::new(r.x0 + 20.0, r.y0 + 20.0, r.x1 - 14.0, r.y1 - 22.0);
+    let area = Rect::new(r.x0 + LEFT, r.y0 + TOP, r.x1 - 14.0, r.y1 - BOTTOM);
     let signed = |b: usize, y: f64| y * load.branches[b].scale;
-    let values =
-        || load.branches.iter().enumerate().flat_map(|(b, br)| br.curve.points.iter().map(move |p| signed(b, p.1)));
-    let (least, most) = values().fold((f64::MAX, f64::MIN), |(lo, hi), y| (lo.min(y), hi.max(y)));
-    // The drawing spans zero, where the S/H axis runs.
-    let (lo, hi) = (least.min(0.0), most.max(0.0));
-    let mu = scale::round_up((hi - lo) / area.height());
+    let (lo, hi, mu) = force_scale(load);
     let x = Axis {
         lo: 0.0,
         hi: 1.0,
@@ -34,8 +52,15 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
         name: "S/H".into(),
         ticks: [0.0, 0.5, 1.0].map(|v| (v, fmt::localise(&format!("{v}"), lang))).to_vec(),
     };
-    let y =
-        Axis { lo, hi, mu, name: format!("P, {}", inp.words.common.unit_n()), ticks: round_ticks(lo, hi, mu, lang) };
+    // Each stroke's least and largest force: P_max and the idle level read on the axis.
+    let levels: Vec<f64> = (0..load.branches.len())
+        .flat_map(|b| {
+            let ys = || load.branches[b].curve.points.iter().map(move |p| signed(b, p.1));
+            [ys().fold(f64::MAX, f64::min), ys().fold(f64::MIN, f64::max)]
+        })
+        .collect();
+    let ticks = level_ticks(&levels, lo, hi, mu, lang);
+    let y = Axis { lo, hi, mu, name: format!("P, {}", inp.words.common.unit_n()), ticks };
     let plot = Plot::in_area(Rect::new(area.x0, area.y1 - (hi - lo) / mu, area.x1, area.y1), x, y);
     plot.draw_axes(g);
     let mut names = Vec::new();
@@ -52,9 +77,11 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
             Stroke::Intake => inp.words.sheet.stroke_intake(),
             Stroke::Compression => inp.words.sheet.stroke_compression(),
         };
-        // Named at a third of the stroke, on the side away from the other branch.
-        let (s, y) = data[data.len() / 3];
-        names.push((plot.at(s, y), Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name));
+        // Named at its own fraction of the stroke (apart from the other branches' names and
+        // from the S/H values at 0, ½ and 1), on the side away from the other branch.
+        let s = (b + 1) as f64 / (load.branches.len() + 1) as f64;
+        let at = plot.at(s, signed(b, br.curve.at(s)));
+        names.push((at, Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name));
     }
     let along = value.force.dot(load.axis);
     let mark = plot.at(value.s, along);

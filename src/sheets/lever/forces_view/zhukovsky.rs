@@ -18,6 +18,9 @@ use kurbo::{Rect, Vec2};
 
 /// Lines under the lever besides its legend: μ_v and μ_F, P′ₘ, Δ.
 pub(super) const LEVER_LINES: usize = 3;
+/// Room under the last line's baseline for its subscripts and descenders, mm (3.5 mm
+/// lettering).
+pub(super) const DESCENT: f64 = 1.5;
 
 pub(super) fn lever_arrow_scale(inp: &ForcesInput) -> f64 {
     let f = &inp.fa.forces;
@@ -54,7 +57,7 @@ pub(super) fn draw_lever(
 ) {
     let f = &inp.fa.forces;
     let legend = lever_legend(inp, mu_f, r.width() - 4.0);
-    let text_h = (LEVER_LINES + legend.len()) as f64 * LINE;
+    let text_h = (LEVER_LINES + legend.len()) as f64 * LINE + DESCENT;
     let plan_cell = Rect::new(r.x0, r.y0, r.x1, r.y1 - text_h);
     let cell =
         PlanCell { cell: plan_cell, title: inp.words.sheet.lever_title(), plan, mu, pole: "p", scale_line: None };
