@@ -226,7 +226,7 @@ fn build_all(args: &BuildArgs, dir: Option<&Path>) -> Result<(), Failure> {
     let cat = catalogue::load(dir).map_err(Failure::Input)?;
     let formats = pipeline::formats(!args.no_pdf, (!args.no_png).then_some(args.png_dpi));
     let lang = language(args.lang);
-    let run = batch::Batch { output: &args.output, formats, lang };
+    let run = batch::Batch { output: &args.output, sheets: args.sheets.clone(), formats, lang };
     let start = std::time::Instant::now();
     let outcomes = batch::run(&cat, &run, args.jobs).map_err(Failure::Output)?;
     let seconds = start.elapsed().as_secs_f64();

@@ -6,7 +6,9 @@ pub use crate::backend::Format;
 use crate::backend::{self, BackendError, svg};
 use crate::project::{self, Project, Refusal, Warning};
 use crate::report;
-use crate::sheets::{self, COURSE, Context, SheetOutput};
+/// The course's sheets, their numbers and the project sections they draw.
+pub use crate::sheets::COURSE;
+use crate::sheets::{self, Context, SheetOutput};
 use serde::Serialize;
 
 /// The guide's worked example (the vibrating conveyor), embedded as the default project.
@@ -93,7 +95,10 @@ pub struct Built {
 
 /// Builds the `requested` sheets (all the project has sections for when empty), in order.
 pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
-    let ctx = Context { info: &p.info, sheet_count: COURSE.len() as u32 };
+    // The title block's "sheets": up to the last course sheet the project has a section for
+    // (a kinematics exercise drawn on the first sheet alone is one sheet, not "1 of 3").
+    let sheet_count = buildable(p).into_iter().max().unwrap_or(COURSE.len() as u32);
+    let ctx = Context { info: &p.info, sheet_count };
     let refused = |r: Refusal| match Error::from(r) {
         Error::Refused(mut r) => {
             r.buildable = buildable(p);

@@ -269,3 +269,25 @@ fn a_wrong_section_refuses_its_own_sheet_only() {
     assert!(err.contains("warning:") && err.contains("cam.law") && err.contains("sheet 3 cannot be built"), "{err}");
     assert!(out.join("sheet1.svg").exists() && out.join("sheet2.svg").exists() && !out.join("sheet3.svg").exists());
 }
+
+/// A project without a designation builds, warned at the `project` section (or at an empty
+/// `designation`): the title block's main field would stay blank.
+#[test]
+fn a_project_without_a_designation_is_warned_about() {
+    let text = std::fs::read_to_string(fixture("worked-example")).unwrap();
+    let designation = text.lines().find(|l| l.trim_start().starts_with("designation:")).unwrap();
+    let section = text.lines().position(|l| l == "project:").unwrap() + 1;
+    let at_section = format!("line {section}, column 1");
+    for (name, changed, at) in [
+        ("no-designation", text.replace(&format!("{designation}\n"), ""), at_section.as_str()),
+        ("empty-designation", text.replace(designation, "  designation: \"\""), "column 3"),
+    ] {
+        let (out, file) = (temp_dir(name), temp_dir(&format!("{name}-file")).with_extension("yaml"));
+        std::fs::write(&file, &changed).unwrap();
+        let o = run(&["build", file.to_str().unwrap(), "--sheet", "3", "--no-png", "--no-pdf"], &out);
+        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        let _ = (std::fs::remove_file(&file), std::fs::remove_dir_all(&out));
+        assert_eq!(o.status.code(), Some(0), "{err}");
+        assert!(err.contains("project.designation: no designation") && err.contains(at), "{name}: {err}");
+    }
+}

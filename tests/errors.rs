@@ -164,7 +164,7 @@ fn kulisa_block_through_its_pivot_is_an_error_not_nan() {
 #[test]
 fn change_point_four_bar_is_reported() {
     let e = refusal(&fixture_text("four-bar").replace("lengths: [0.18, 0.15]", "lengths: [0.20, 0.05]"));
-    assert!(e.contains("Assur group 1 (RRR, links 2 and 3, line 12) passes through a dead point"), "{e}");
+    assert!(e.contains("Assur group 1 (RRR, links 2 and 3, line 13) passes through a dead point"), "{e}");
 }
 
 /// Approaching the change point (rocker 0.05 m, where s + l = p + q) from the Grashof side:
@@ -356,7 +356,7 @@ fn implausible_input_is_warned_about() {
 #[test]
 fn a_mechanism_that_never_assembles_says_so() {
     let e = refusal(&fixture_text("four-bar").replace("lengths: [0.18, 0.15]", "lengths: [0.01, 0.01]"));
-    assert!(e.contains("Assur group 1 (RRR, links 2 and 3, line 12) cannot be assembled at any crank angle"), "{e}");
+    assert!(e.contains("Assur group 1 (RRR, links 2 and 3, line 13) cannot be assembled at any crank angle"), "{e}");
 }
 
 /// With position 0 fixed by `start_deg`, the course angle φ is known and named beside θ.

@@ -5,6 +5,7 @@
 use super::write;
 use crate::catalogue::{Catalogue, Task, Variant};
 use crate::drawing::labels::Language;
+use crate::pipeline::COURSE;
 use crate::pipeline::{self, Built, Format};
 use anyhow::{Context, Result, anyhow};
 use rayon::prelude::*;
@@ -21,6 +22,8 @@ pub enum Status {
     BuiltInPart,
     Refused,
     Incomplete,
+    /// Has none of the sheets `--sheet` asked for (a kinematics exercise has no sheet 2).
+    WithoutSheet,
     /// Its files could not be written (or the program failed on it).
     Failed,
 }
@@ -33,6 +36,7 @@ impl Status {
             Status::BuiltInPart => "built in part (the guide lost the rest)",
             Status::Refused => "refused",
             Status::Incomplete => "incomplete in the guide",
+            Status::WithoutSheet => "without the sheets asked for",
             Status::Failed => "failed",
         }
     }
@@ -74,6 +78,8 @@ pub struct Outcome {
 /// What every variant's build shares.
 pub struct Batch<'a> {
     pub output: &'a Path,
+    /// `--sheet`: the sheets to build of each variant that has them (empty: every sheet).
+    pub sheets: Vec<u32>,
     pub formats: Vec<Format>,
     pub lang: Option<Language>,
 }
@@ -155,13 +161,22 @@ fn build_variant(task: &Task, variant: u32, batch: &Batch, o: &mut Outcome) -> R
             text
         }
     };
-    let (project, built) = match load_and_build(&text, batch.lang, &[]) {
+    let Some(sheets) = asked_for(&text, &batch.sheets) else {
+        o.status = Status::WithoutSheet;
+        return Ok(());
+    };
+    let (project, built) = match load_and_build(&text, batch.lang, &sheets) {
         Ok(done) => done,
         Err(pipeline::Error::Refused(r)) => {
             o.status = Status::Refused;
             o.refusal = Some((r.refusal.kind.key().into(), r.refusal.to_string()));
             o.explained = task.refusal_explained(variant).map(|l| l.why.pick(lang).to_string());
-            let others: Vec<u32> = r.buildable.iter().copied().filter(|n| !r.blocks.contains(n)).collect();
+            let others: Vec<u32> = r
+                .buildable
+                .iter()
+                .copied()
+                .filter(|n| !r.blocks.contains(n) && (sheets.is_empty() || sheets.contains(n)))
+                .collect();
             if others.is_empty() {
                 return write_files(batch, task, variant, &text, None);
             }
@@ -179,6 +194,18 @@ fn build_variant(task: &Task, variant: u32, batch: &Batch, o: &mut Outcome) -> R
         (false, false) => Status::BuiltWithWarnings,
     };
     write_files(batch, task, variant, &text, Some((&project, &built)))
+}
+
+/// The sheets of `asked` (every sheet when empty) whose sections the variant's project has:
+/// `None` when it has none of them.
+fn asked_for(text: &str, asked: &[u32]) -> Option<Vec<u32>> {
+    if asked.is_empty() {
+        return Some(Vec::new());
+    }
+    let places = crate::project::Places::of(text);
+    let has = |n: &u32| COURSE.iter().any(|k| k.number == *n && places.has(k.section));
+    let sheets: Vec<u32> = asked.iter().copied().filter(has).collect();
+    (!sheets.is_empty()).then_some(sheets)
 }
 
 /// Loads a project text and builds its `sheets` (every sheet when empty) in `lang`.

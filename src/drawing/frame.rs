@@ -138,6 +138,8 @@ impl CaptionKey {
 #[serde(rename_all = "lowercase")]
 enum FieldName {
     Designation,
+    /// The document's letter in the first "Lit." cell: "У", a student's (educational) work.
+    Letter,
     Student,
     Supervisor,
     Scale,
@@ -215,7 +217,7 @@ impl FieldName {
             FieldName::Student => "project.student",
             FieldName::Supervisor => "project.supervisor",
             FieldName::Organisation => "project.institution and project.group",
-            FieldName::Scale | FieldName::Sheet | FieldName::Sheets => "the title block",
+            FieldName::Letter | FieldName::Scale | FieldName::Sheet | FieldName::Sheets => "the title block",
         }
     }
 }
@@ -261,6 +263,7 @@ pub fn title_block(g: &mut Group, l: &Common, tb: &TitleBlock) -> Result<(), Too
     for f in &t.fields {
         let value = match f.field {
             FieldName::Designation => tb.designation,
+            FieldName::Letter => l.tb_lit_letter(),
             FieldName::Student => tb.student,
             FieldName::Supervisor => tb.supervisor,
             FieldName::Scale => tb.scale,

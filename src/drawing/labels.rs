@@ -224,6 +224,7 @@ label_set! {
         tb_sign,
         tb_date,
         tb_lit,
+        tb_lit_letter,
         tb_mass,
         tb_scale,
         tb_sheets,

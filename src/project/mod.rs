@@ -27,6 +27,7 @@ pub use refusal::{Kind, Refusal, Warning};
 
 pub(crate) use refusal::{invalid, warning};
 
+use crate::drawing::labels::Language;
 use forces::ForcesSpec;
 use info::InfoSpec;
 use mechanism::{AnalysisSpec, MechanismSpec};
@@ -134,6 +135,9 @@ pub fn load_sections(text: &str) -> Result<(Project, Vec<Refusal>), Refusal> {
     }
     let info = resolve_info(&yaml::read::<InfoPart>(text, &places)?.project)?;
     let mut warnings = Vec::new();
+    if let Some(w) = blank_designation(&info, &places) {
+        warnings.push(w);
+    }
     let mut refused: Vec<Refusal> = Vec::new();
     let mut sections = Sectioned { duplicates: &duplicates, places: &places, refused: &mut refused };
     let lever = sections.take("mechanism", read_lever(text, &places, &mut warnings));
@@ -188,6 +192,22 @@ impl Sectioned<'_> {
             }
         }
     }
+}
+
+/// A sheet without a designation (GOST 2.104's main field) is almost surely unfinished: said
+/// where it belongs (at the `project` section when the key is absent).
+fn blank_designation(info: &ProjectInfo, places: &Places) -> Option<Warning> {
+    let blank = [Language::Uz, Language::Ru, Language::En].iter().all(|&l| info.designation.get(l).trim().is_empty());
+    let (line, column) =
+        places.place_of("project.designation").or_else(|| places.place_of("project")).unwrap_or((1, 1));
+    blank.then(|| Warning {
+        line,
+        column,
+        field: "project.designation".into(),
+        message:
+            "no designation: the title block's main field stays empty (the course writes e.g. \"MMN KL 01.00.00\")"
+                .into(),
+    })
 }
 
 /// Checks the `project` section's texts and resolves it.
