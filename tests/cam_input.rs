@@ -273,7 +273,7 @@ fn allowed_pressure_angles_are_checked() {
 
 #[test]
 fn an_unknown_law_lists_the_accepted_ones() {
-    for bad in ["parabolic", "7", "0", "4.5", "\"\""] {
+    for bad in ["hyperbolic", "7", "0", "4.5", "\"\""] {
         let e = refused("law: sine", &format!("law: {bad}"), "cam.law", "unknown law");
         assert!(e.contains("cosine (3)") && e.contains("polynomial-345") && e.contains("1–6"), "{e}");
     }

@@ -226,8 +226,9 @@ fn course_guide_pair_contact_ratio_is_the_exact_closed_form() {
     assert!((p.base_pitch - PI * 5e-3 * alpha.cos()).abs() <= 1e-17);
     assert!((p.ratio - 19.0 / 17.0).abs() <= 1e-15);
     assert_eq!(p.interference, [false, false]);
-    // z = 17 at x = 0 is a hair below the exact undercut limit (x_min = 0.00569), see below.
-    assert!(p.warnings().contains(&PairWarning::Undercut { wheel: 1, x: 0.0, x_min: p.wheels[0].x_min }));
+    // z = 17 at x = 0 is a hair below the exact undercut limit (x_min = 0.00569), see below,
+    // and at the course's (z_min = 17): no undercut note on the guide's own pinion.
+    assert!(!p.warnings().iter().any(|w| matches!(w, PairWarning::Undercut { .. })), "{:?}", p.warnings());
 }
 
 // ---------------------------------------------------------------------------------------
@@ -466,7 +467,17 @@ fn undercut_limits() {
     assert!((w1.x_min - x_min(12.0)).abs() <= 1e-15 && (w1.x_min - 0.29813).abs() < 5e-6, "{}", w1.x_min);
     assert!(w1.undercut && !p.wheels[1].undercut);
     let warnings = p.warnings();
-    assert!(warnings.contains(&PairWarning::Undercut { wheel: 1, x: 0.0, x_min: w1.x_min }), "{warnings:?}");
+    // Noted by the course's rule, x_min = (17 − 12)/17, with the exact limit beside it.
+    let course = 5.0 / 17.0;
+    assert!((w1.x_min_course - course).abs() <= 1e-15, "{}", w1.x_min_course);
+    assert!(
+        warnings.contains(&PairWarning::Undercut { wheel: 1, x: 0.0, x_min: w1.x_min_course, exact: w1.x_min }),
+        "{warnings:?}"
+    );
+    // At the course's limit the course notes nothing, though the exact rule finds a hair.
+    let at_limit = Pair::new(&shifted(3e-3, [12, 24], [course, 0.0])).unwrap();
+    assert!(at_limit.wheels[0].undercut, "5/17 < 0.29813");
+    assert!(!at_limit.warnings().iter().any(|w| matches!(w, PairWarning::Undercut { .. })));
     // The undercut pinion's root is reached by wheel 2's tip below the involute: wheel 2's tip
     // passes N1, and the active line is cut at N1.
     assert!(warnings.contains(&PairWarning::Interference { wheel: 2 }), "{warnings:?}");

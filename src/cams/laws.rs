@@ -59,6 +59,53 @@ pub struct Derivs {
     pub dds: f64,
 }
 
+/// Usual names of the laws, written as [`normalised`] leaves them.
+const SYNONYMS: [(&str, Standard); 36] = [
+    ("uniformly-accelerated", Standard::UniformAcceleration),
+    ("constant-acceleration", Standard::UniformAcceleration),
+    ("parabolic", Standard::UniformAcceleration),
+    ("tekis-tezlanuvchan", Standard::UniformAcceleration),
+    ("равноускоренный", Standard::UniformAcceleration),
+    ("параболический", Standard::UniformAcceleration),
+    ("linearly-decreasing-acceleration", Standard::LinearlyDecreasing),
+    ("chiziqli-kamayuvchi", Standard::LinearlyDecreasing),
+    ("линейно-убывающий", Standard::LinearlyDecreasing),
+    ("cosinusoidal", Standard::Cosine),
+    ("simple-harmonic", Standard::Cosine),
+    ("harmonic", Standard::Cosine),
+    ("kosinusoidal", Standard::Cosine),
+    ("косинусоидальный", Standard::Cosine),
+    ("косинусный", Standard::Cosine),
+    ("cycloidal", Standard::Sine),
+    ("sinusoidal", Standard::Sine),
+    ("sikloidal", Standard::Sine),
+    ("синусоидальный", Standard::Sine),
+    ("циклоидальный", Standard::Sine),
+    ("uchburchakli", Standard::Triangular),
+    ("треугольный", Standard::Triangular),
+    ("trapezoidal", Standard::Trapezoid),
+    ("trapetsiyali", Standard::Trapezoid),
+    ("трапецеидальный", Standard::Trapezoid),
+    ("трапециевидный", Standard::Trapezoid),
+    ("3-4-5-polynomial", Standard::Polynomial345),
+    ("3-4-5", Standard::Polynomial345),
+    ("3-4-5-polinomial", Standard::Polynomial345),
+    ("полином-3-4-5", Standard::Polynomial345),
+    ("modifikatsiyalangan-trapetsiya", Standard::ModifiedTrapezoid),
+    ("модифицированная-трапеция", Standard::ModifiedTrapezoid),
+    ("modifikatsiyalangan-sinusoida", Standard::ModifiedSine),
+    ("модифицированная-синусоида", Standard::ModifiedSine),
+    ("modified-sinusoidal", Standard::ModifiedSine),
+    ("modified-trapezoidal", Standard::ModifiedTrapezoid),
+];
+
+/// A law's name as looked up: trimmed, lower case, words joined by single `-`.
+fn normalised(key: &str) -> String {
+    let lower = key.trim().to_lowercase();
+    let words = lower.split(|c: char| c.is_whitespace() || c == '_' || c == '-').filter(|w| !w.is_empty());
+    words.collect::<Vec<_>>().join("-")
+}
+
 /// The trapezoid's plateau: s(½) = ½ fixes it at 16/3.
 const TRAPEZOID_A: f64 = 16.0 / 3.0;
 /// The modified trapezoid's plateau, 8π/(2 + π) ≈ 4.888.
@@ -98,10 +145,15 @@ impl Standard {
         Standard::ALL[..6].iter().position(|&l| l == self).map(|i| i as u8 + 1)
     }
 
-    /// A law by its key or the guide's number ("1"…"6").
+    /// A law by its key, the guide's number ("1"…"6") or a usual name in Uzbek, Russian or
+    /// English (the names the sheets print among them: "cycloidal", "uniformly accelerated",
+    /// "синусоидальный"), whatever its case and with spaces or `_` for `-`.
     pub fn by_key(key: &str) -> Option<Standard> {
-        let key = key.trim();
-        Standard::ALL.into_iter().find(|l| l.key() == key || l.guide_number().is_some_and(|n| n.to_string() == key))
+        let key = normalised(key);
+        Standard::ALL
+            .into_iter()
+            .find(|l| l.key() == key || l.guide_number().is_some_and(|n| n.to_string() == key))
+            .or_else(|| SYNONYMS.iter().find(|(name, _)| *name == key).map(|&(_, l)| l))
     }
 
     /// s, s′, s″ at x; outside [0, 1] the dwell's values (s = 0 or 1, s′ = s″ = 0).
@@ -331,5 +383,28 @@ impl Program {
         } else {
             Derivs { s: 0.0, ds: 0.0, dds: 0.0 }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Standard::{self, *};
+
+    #[test]
+    fn the_names_the_sheets_print_are_keys_too() {
+        for (name, law) in [
+            ("cycloidal", Sine),
+            ("Uniformly accelerated", UniformAcceleration),
+            ("синусоидальный", Sine),
+            ("Трапецеидальный", Trapezoid),
+            ("tekis tezlanuvchan", UniformAcceleration),
+            ("3-4-5 polynomial", Polynomial345),
+            ("modified_sine", ModifiedSine),
+            (" 4 ", Sine),
+            ("SINE", Sine),
+        ] {
+            assert_eq!(Standard::by_key(name), Some(law), "{name}");
+        }
+        assert_eq!(Standard::by_key("cycloid-ish"), None);
     }
 }

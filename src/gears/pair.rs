@@ -11,6 +11,9 @@ use crate::num::math::{acos, cbrt, cos, sin, tan};
 use crate::num::units::mm;
 use std::f64::consts::PI;
 
+/// A shift this close below the course's limit is at it (5/17 computed two ways).
+const AT_THE_LIMIT: f64 = 1e-12;
+
 /// The involute function inv α = tan α − α.
 pub fn inv(alpha: f64) -> f64 {
     tan(alpha) - alpha
@@ -83,6 +86,17 @@ impl PairSpec {
         let s = sin(self.pressure_angle);
         self.addendum - f64::from(z) * s * s / 2.0
     }
+
+    /// The course's rule for the least shift: x_min = h_a*·(z_min − z)/z_min with z_min the
+    /// whole number of teeth at or below 2h_a*/sin²α (17 for α = 20°, h_a* = 1). It is what
+    /// the sheet tabulates, notes and `shift: auto` chooses; at z = 17, x = 0 (the guide's
+    /// pinion) the exact rule [`PairSpec::x_min`] finds an undercut of a hair the course
+    /// ignores.
+    pub fn x_min_course(&self, z: u32) -> f64 {
+        let s = sin(self.pressure_angle);
+        let z_min = (2.0 * self.addendum / (s * s)).floor().max(1.0);
+        self.addendum * (z_min - f64::from(z)) / z_min
+    }
 }
 
 /// One wheel of the pair, metres.
@@ -101,8 +115,12 @@ pub struct Wheel {
     pub tooth_thickness: f64,
     /// Tooth thickness on the tip circle (chordal arc length), s_a.
     pub tip_thickness: f64,
-    /// The smallest shift without undercut.
+    /// The smallest shift without undercut, exact: the drawn outline follows it.
     pub x_min: f64,
+    /// The course's least shift ([`PairSpec::x_min_course`]): the tables and notes use it.
+    pub x_min_course: f64,
+    /// Undercut by the exact rule (x < x_min): the outline is cut where fillet and involute
+    /// cross.
     pub undercut: bool,
     /// The radius where the involute begins (the rack's straight flank ends there); the
     /// root fillet is below it. Equal to the base radius at the undercut limit.
@@ -240,8 +258,9 @@ impl Pair {
     pub fn warnings(&self) -> Vec<PairWarning> {
         let mut out = Vec::new();
         for (i, w) in self.wheels.iter().enumerate() {
-            if w.undercut {
-                out.push(PairWarning::Undercut { wheel: i + 1, x: w.shift, x_min: w.x_min });
+            // By the course's rule; the exact limit is information (the note gives both).
+            if w.shift < w.x_min_course - AT_THE_LIMIT {
+                out.push(PairWarning::Undercut { wheel: i + 1, x: w.shift, x_min: w.x_min_course, exact: w.x_min });
             }
             if w.tip_thickness < 0.25 * self.spec.module {
                 out.push(PairWarning::ThinTip { wheel: i + 1, s_a: w.tip_thickness, limit: 0.25 * self.spec.module });
@@ -262,26 +281,15 @@ impl Pair {
 /// Input that builds a pair a designer would not accept without a second look.
 #[derive(Debug, Clone, PartialEq)]
 pub enum PairWarning {
-    Undercut {
-        wheel: usize,
-        x: f64,
-        x_min: f64,
-    },
+    /// Below the course's least shift `x_min`; `exact` is the exact limit.
+    Undercut { wheel: usize, x: f64, x_min: f64, exact: f64 },
     /// s_a < 0.25·m.
-    ThinTip {
-        wheel: usize,
-        s_a: f64,
-        limit: f64,
-    },
+    ThinTip { wheel: usize, s_a: f64, limit: f64 },
     /// ε < 1.2.
-    LowContactRatio {
-        eps: f64,
-    },
+    LowContactRatio { eps: f64 },
     /// Wheel `wheel`'s tip reaches past the other wheel's N: contact there is off the
     /// involute (the other wheel's undercut root).
-    Interference {
-        wheel: usize,
-    },
+    Interference { wheel: usize },
 }
 
 fn validate(spec: &PairSpec) -> Result<(), PairError> {
@@ -336,6 +344,7 @@ fn wheel(spec: &PairSpec, i: usize, delta_y: f64, alpha_w: f64) -> Wheel {
         tooth_thickness: s,
         tip_thickness: s_a,
         x_min,
+        x_min_course: spec.x_min_course(z),
         undercut: x < x_min,
         form_radius: (r_b * r_b + along.max(0.0) * along.max(0.0)).sqrt(),
     }

@@ -155,21 +155,20 @@ pub fn resolve(
     let pair = Pair::new(&pair_spec).map_err(|e| pair_error(&g.pair, e))?;
     let pair_warnings = pair.warnings();
     for w in &pair_warnings {
-        // The course's limit rounds z_min down to a whole number (17 teeth): a wheel at or
-        // above it is the course's own practice (the guide's z = 17, x = 0), undercut by a hair
-        // that the sheet notes; below it the undercut is real and worth a warning.
-        if let PairWarning::Undercut { wheel, x, x_min } = w
+        // The pair notes an undercut by the course's rule (z_min = 17): below it the undercut
+        // is real and worth a warning, unless `auto` chose the shift.
+        if let PairWarning::Undercut { wheel, x, x_min, exact } = w
             && !auto_shift[wheel - 1]
-            && *x < course_x_min(&pair_spec, pair_spec.z[wheel - 1])
         {
             warnings.push(warning(
                 at(&g.pair),
                 "gears.pair.shift",
                 format!(
-                    "wheel {wheel} (z = {}) is undercut at x = {} (x_min = {}); the sheet draws the undercut (`shift: auto` avoids it)",
+                    "wheel {wheel} (z = {}) is undercut at x = {} (the course's x_min = {}; exactly {}); the sheet draws the undercut (`shift: auto` avoids it)",
                     pair_spec.z[wheel - 1],
                     written(*x),
-                    fixed(*x_min, 4)
+                    fixed(*x_min, 4),
+                    fixed(*exact, 4)
                 ),
             ));
         }
@@ -208,12 +207,6 @@ fn speeds_differ(n1: &Spanned<Positive>, crank: CrankSpeed) -> Option<Warning> {
 
 /// The course's undercut limit h_a*·(z_lim − z)/z_lim, z_lim = ⌊2h_a*/sin²α⌋ (17 for the
 /// standard rack).
-fn course_x_min(spec: &PairSpec, z: u32) -> f64 {
-    let s = crate::num::math::sin(spec.pressure_angle);
-    let z_lim = (2.0 * spec.addendum / (s * s)).floor();
-    spec.addendum * (z_lim - f64::from(z)) / z_lim
-}
-
 fn pair_spec(p: &Spanned<PairFileSpec>) -> Result<(PairSpec, [bool; 2]), Refusal> {
     let f = &p.value;
     let module = metres(f.module.value.0);
@@ -248,9 +241,9 @@ fn pair_spec(p: &Spanned<PairFileSpec>) -> Result<(PairSpec, [bool; 2]), Refusal
         None => {}
         Some((ShiftSpec::Values([x1, x2]), _)) => spec.shift = [x1.0, x2.0],
         Some((ShiftSpec::Word(w), _)) if w == "auto" => {
-            // The smallest shift without undercut, rounded up to 0.001 as a drawing states it.
+            // The course's least shift, rounded up to 0.001 as a drawing states it.
             for i in 0..2 {
-                let x_min = spec.x_min(z[i]);
+                let x_min = spec.x_min_course(z[i]);
                 if x_min > 0.0 {
                     spec.shift[i] = (x_min * 1e3).ceil() / 1e3;
                     auto[i] = true;

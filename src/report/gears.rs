@@ -20,7 +20,8 @@ pub fn wheels(p: &Pair) -> NumTable {
         rows: vec![
             named("z", "", Unit::None, col(&|i| f64::from(w[i].z))).counted(),
             named("x", "", Unit::None, col(&|i| w[i].shift)),
-            named("x", "min", Unit::None, col(&|i| w[i].x_min)),
+            // The course's least shift, (17 − z)/17 for α = 20°, h_a* = 1.
+            named("x", "min", Unit::None, col(&|i| w[i].x_min_course)),
             named("r", "", Unit::Mm, col(&|i| mm(w[i].pitch))),
             named("r", "b", Unit::Mm, col(&|i| mm(w[i].base))),
             named("r", "a", Unit::Mm, col(&|i| mm(w[i].tip))),

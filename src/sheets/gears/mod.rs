@@ -151,7 +151,7 @@ fn mesh_notes(p: &GearsProject, words: &GearWords) -> Vec<String> {
     }
     for w in &p.warnings {
         out.push(match w {
-            PairWarning::Undercut { wheel, x, x_min } => l.undercut_note(&wheel.to_string(), &v(*x), &v(*x_min)),
+            PairWarning::Undercut { wheel, x, x_min, .. } => l.undercut_note(&wheel.to_string(), &v(*x), &v(*x_min)),
             PairWarning::ThinTip { wheel, s_a, .. } => l.thin_tip_note(&wheel.to_string(), &v(mm(*s_a))),
             PairWarning::LowContactRatio { eps } => l.low_ratio_note(&v(*eps)),
             PairWarning::Interference { wheel } => l.interference_note(&wheel.to_string()),
