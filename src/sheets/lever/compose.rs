@@ -7,7 +7,7 @@
 
 use super::forces_view::{ForceScales, ForcesInput, draw_forces, fit_comfortably};
 use super::labels::LeverWords;
-use super::mechanism_view::{MechanismView, world_extent};
+use super::mechanism_view::{MechanismView, TRAJECTORY, world_extent};
 use super::note_tables::{note_tables, sheet_table, tables_group, with_units};
 use super::plans_view::{PlanCell, Sizing, draw_plan, label_bounds, size_plans};
 use crate::drawing::fmt;
@@ -15,7 +15,7 @@ use crate::drawing::frame;
 use crate::drawing::layout::Layout;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
-use crate::drawing::scene::{AXIS, Anchor, Group, Scene, Text};
+use crate::drawing::scene::{Anchor, Group, Scene, Text};
 use crate::drawing::table::Table;
 use crate::drawing::text::{LabelText, TooLong};
 use crate::drawing::view::View;
@@ -285,7 +285,7 @@ fn mechanism_header(g: &mut Group, region: Rect, mu_l: f64, k: &Kinematics, word
 fn trajectory_legend(g: &mut Group, region: Rect, words: &LeverWords) {
     let legend_y = region.y1 - 2.0;
     let sample = (Point::new(region.x0 + 2.0, legend_y - 1.2), Point::new(region.x0 + 16.0, legend_y - 1.2));
-    g.line(sample.0, sample.1, AXIS);
+    g.line(sample.0, sample.1, TRAJECTORY);
     g.text(Text::new(Point::new(region.x0 + 18.0, legend_y), words.sheet.trajectories(), 2.5, Anchor::Start));
 }
 /// The force drawings below the mechanism and, when it leaves room, beside it.

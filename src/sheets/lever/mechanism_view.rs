@@ -5,7 +5,7 @@
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
-use crate::drawing::scene::{AXIS, Group, MAIN, Pen, THIN};
+use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, Pen, THIN};
 use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, hatch, slider};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
@@ -19,6 +19,9 @@ use kurbo::{CubicBez, Point, Rect, Vec2};
 const SLIDER: (f64, f64) = (10.0, 5.0);
 const BLOCK: (f64, f64) = (7.0, 4.0);
 const JOINT_R: f64 = 1.0;
+/// The centres of mass' paths: a thin dashed line (GOST 2.303 keeps dash-dot for axes and
+/// centre lines, which a trajectory is not); the legend shows the same pen.
+pub const TRAJECTORY: Pen = DASHED;
 /// The length of the crank pin's circle each position number needs in 3.5 mm lettering, mm.
 const CROWDED_NUMBERS: f64 = 8.0;
 
@@ -75,7 +78,7 @@ impl MechanismView<'_> {
             let bb = path.bbox();
             // A path that is a point or a line (a slider's centre) is not drawn: its guide shows it.
             if bb.width().max(bb.height()) > 1.0 && bb.width().min(bb.height()) > 0.3 {
-                g.curve(path, AXIS);
+                g.curve(path, TRAJECTORY);
             }
         }
         self.guides(g);
