@@ -398,6 +398,16 @@ fn text_too_long_for_its_place_on_the_sheet_is_refused_with_its_field() {
     assert!(e.contains("project.title") && e.contains("does not fit the title block's name field"), "{e}");
     let e = error_of("student: \"\"", "student: \"Abdurahmonov Jasurbek Baxtiyorovich\"");
     assert!(e.contains("project.student") && e.contains("title-block cell (23 × 5 mm)"), "{e}");
+    // A surname with initials is set condensed on its line, never refused; the letters'
+    // box (its stretch applied) stays inside the 23 mm cell.
+    let text = example().replacen("student: \"\"", "student: \"Abdurakhmonov A. A.\"", 1);
+    let built = pipeline::build(&pipeline::load(&text).unwrap(), &[2]).unwrap();
+    let name = built[0].output.scene.texts().find(|t| t.text == "Abdurakhmonov A. A.").expect("the name is drawn");
+    assert!(name.stretch < 1.0 && name.stretch >= tmm_sheets::drawing::text::NARROWEST, "{}", name.stretch);
+    let cell_x = (651.0 + 17.0, 651.0 + 40.0);
+    let b = name.bbox();
+    assert!(b.x0 >= cell_x.0 && b.x1 <= cell_x.1, "{b:?} inside {cell_x:?}");
+    assert!(built[0].svg.contains("scale(0."), "the SVG condenses it");
     // One word of a million letters: refused (wrapping and measuring are linear).
     let word = "a".repeat(1_000_000);
     let e = refusal(&example().replacen(

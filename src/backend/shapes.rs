@@ -110,7 +110,7 @@ fn numbers(item: &Item) -> Vec<f64> {
         }
         Item::Fill { path } => path_numbers(path),
         Item::Circle { c, r, pen: p, .. } => vec![c.x, c.y, *r, pen(p)],
-        Item::Text(Text { at, h, rotate, .. }) => vec![at.x, at.y, *h, *rotate],
+        Item::Text(Text { at, h, rotate, stretch, .. }) => vec![at.x, at.y, *h, *rotate, *stretch],
     }
 }
 

@@ -116,10 +116,13 @@ fn text_element(t: &Text) -> Result<String, BackendError> {
     };
     let (x, y) = (num(t.at.x)?, num(t.at.y)?);
     let mut transform = String::new();
-    if t.rotate != 0.0 || t.sloped {
+    if t.rotate != 0.0 || t.sloped || t.stretch != 1.0 {
         transform.push_str(&format!(" transform=\"translate({x} {y})"));
         if t.rotate != 0.0 {
             transform.push_str(&format!(" rotate({})", num(-t.rotate)?));
+        }
+        if t.stretch != 1.0 {
+            transform.push_str(&format!(" scale({} 1)", num(t.stretch)?));
         }
         if t.sloped {
             transform.push_str(" skewX(-15)");

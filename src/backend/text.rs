@@ -77,13 +77,17 @@ fn set_run(text: &str, size: f64, origin: Point) -> SetRun<'_> {
     SetRun { text, size, origin, glyphs }
 }
 
-/// The text's frame in paper mm: translate(at) rotate(−rotate) skewX(−15), as the SVG writes.
+/// The text's frame in paper mm: translate(at) rotate(−rotate) scale(stretch 1) skewX(−15),
+/// as the SVG writes.
 fn frame(t: &Text) -> Affine {
     let mut a = Affine::translate(t.at.to_vec2());
     if t.rotate != 0.0 {
         // Paper y points down: a counter-clockwise turn on paper is a negative angle here.
         let (s, c) = math::sin_cos(-t.rotate.to_radians());
         a *= Affine::new([c, s, -s, c, 0.0, 0.0]);
+    }
+    if t.stretch != 1.0 {
+        a *= Affine::scale_non_uniform(t.stretch, 1.0);
     }
     if t.sloped {
         a *= Affine::skew(math::tan(SLOPE_DEG.to_radians()), 0.0);

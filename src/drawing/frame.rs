@@ -3,7 +3,7 @@
 
 use super::labels::Common;
 use super::scene::{Anchor, Group, MAIN, THIN, Text};
-use super::text::{Fitted, SLANT, TooLong, fit, paragraph, wrap};
+use super::text::{Fitted, SLANT, TooLong, fit, paragraph_stretched, wrap};
 use crate::num::tol;
 use kurbo::{Point, Rect};
 use serde::Deserialize;
@@ -230,7 +230,7 @@ fn draw_fitted(g: &mut Group, cell: Rect, f: &Fitted, anchor: Anchor) {
         Anchor::Middle => cell.center().x,
         Anchor::End => cell.x1 - CELL_PAD.0,
     };
-    paragraph(g, Point::new(x, top + f.h), &f.lines, f.h, anchor);
+    paragraph_stretched(g, Point::new(x, top + f.h), &f.lines, (f.h, f.stretch), anchor);
 }
 
 /// `text` fitted into `cell` (less its padding), or the refusal naming `field`.
@@ -293,7 +293,7 @@ fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Common) -> Result<(),
     // its rules.
     let w = r.width() - 2.0 * NAME_PAD;
     let ours = |text: &str, ht: f64, h: f64| {
-        fit(text, w, ht, h).unwrap_or_else(|| Fitted { lines: wrap(text, 2.5, w), h: 2.5 })
+        fit(text, w, ht, h).unwrap_or_else(|| Fitted { lines: wrap(text, 2.5, w), h: 2.5, stretch: 1.0 })
     };
     let name = ours(tb.sheet_name, SHEET_NAME_H, 3.5);
     let course = ours(l.tb_course(), 2.5 * 1.3, 2.5);
@@ -305,7 +305,7 @@ fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Common) -> Result<(),
     let height = blocks.iter().map(Fitted::height).sum::<f64>() + GAP * 2.0;
     let mut top = r.center().y - height / 2.0;
     for b in &blocks {
-        paragraph(g, Point::new(r.center().x, top + b.h), &b.lines, b.h, Anchor::Middle);
+        paragraph_stretched(g, Point::new(r.center().x, top + b.h), &b.lines, (b.h, b.stretch), Anchor::Middle);
         top += b.height() + GAP;
     }
     Ok(())

@@ -63,6 +63,9 @@ pub struct Text {
     pub rotate: f64,
     /// GOST type B sloped lettering (75°).
     pub sloped: bool,
+    /// Width factor of the letters (1: the font's own; below 1 condensed, as GOST 2.304's
+    /// narrow type A, to fit a long name into its title-block cell).
+    pub stretch: f64,
 }
 
 /// One run of a [`Text`]: its text, its lettering height and its baseline's drop below the
@@ -76,7 +79,28 @@ pub struct Run<'a> {
 
 impl Text {
     pub fn new(at: Point, text: impl Into<String>, h: f64, anchor: Anchor) -> Text {
-        Text { at, text: text.into(), sub: String::new(), tail: String::new(), h, anchor, rotate: 0.0, sloped: true }
+        Text {
+            at,
+            text: text.into(),
+            sub: String::new(),
+            tail: String::new(),
+            h,
+            anchor,
+            rotate: 0.0,
+            sloped: true,
+            stretch: 1.0,
+        }
+    }
+
+    /// The same text condensed (or widened) by `stretch`.
+    pub fn with_stretch(mut self, stretch: f64) -> Text {
+        self.stretch = stretch;
+        self
+    }
+
+    /// A run's advance width as set, mm (its stretch applied).
+    fn width_of(&self, r: Run) -> f64 {
+        run_width(r) * self.stretch
     }
 
     /// The same text with a subscript and a tail.
@@ -109,7 +133,7 @@ impl Text {
 
     /// Advance width of every run together, mm.
     pub fn advance(&self) -> f64 {
-        self.runs().map(|r| run_width(r)).sum()
+        self.runs().map(|r| self.width_of(r)).sum()
     }
 
     /// Left edge of a box of width `w` placed by the anchor.
@@ -127,8 +151,8 @@ impl Text {
         let mut x = self.left(self.advance());
         self.runs().map(move |r| {
             let letters = Run { text: r.text.trim_start(), ..r };
-            let at = Point::new(x + run_width(r) - run_width(letters), self.at.y + r.drop);
-            x += run_width(r);
+            let at = Point::new(x + self.width_of(r) - self.width_of(letters), self.at.y + r.drop);
+            x += self.width_of(r);
             (letters, at)
         })
     }
@@ -138,7 +162,7 @@ impl Text {
     /// neither.
     pub fn core_boxes(&self) -> impl Iterator<Item = Rect> + '_ {
         self.placed_runs().map(|(r, at)| {
-            let b = Rect::new(at.x, at.y - r.h, at.x + run_width(r), at.y);
+            let b = Rect::new(at.x, at.y - r.h, at.x + self.width_of(r), at.y);
             self.turned(b)
         })
     }
@@ -154,7 +178,7 @@ impl Text {
     pub fn bbox(&self) -> Rect {
         let lone = self.sub.is_empty() && self.tail.is_empty();
         let boxes = self.placed_runs().map(|(r, at)| {
-            let w = run_width(r) + r.h * 0.27;
+            let w = self.width_of(r) + r.h * 0.27;
             let x0 = if lone { self.left(w) } else { at.x };
             self.turned(Rect::new(x0, at.y - r.h * 1.05, x0 + w, at.y + r.h * 0.3))
         });

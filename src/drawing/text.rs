@@ -117,7 +117,7 @@ pub const SIZES: [f64; 6] = [14.0, 10.0, 7.0, 5.0, 3.5, 2.5];
 /// A user's text that does not fit where the sheet prints it.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error(
-    "{field}: \"{excerpt}\" ({chars} characters) does not fit the {place} ({w:.0} × {h:.0} mm) even in 2.5 mm lettering over several lines; shorten it"
+    "{field}: \"{excerpt}\" ({chars} characters) does not fit the {place} ({w:.0} × {h:.0} mm) even condensed or wrapped in the smallest lettering; shorten it"
 )]
 pub struct TooLong {
     pub field: String,
@@ -144,6 +144,8 @@ impl TooLong {
 pub struct Fitted {
     pub lines: Vec<String>,
     pub h: f64,
+    /// Width factor of the letters (1, or down to [`NARROWEST`] for a long name).
+    pub stretch: f64,
 }
 
 impl Fitted {
@@ -160,30 +162,65 @@ pub fn block_height(n: usize, h: f64) -> f64 {
 
 /// `text` in a `w` × `ht` mm cell (the room for the letters themselves): on one line at the
 /// largest GOST height from `h_max` down to 2.5 mm that fits, else wrapped at the largest
-/// such height whose lines fit; `None` when not even 2.5 mm wrapped fits.
+/// such height whose lines fit, else on one line condensed (at 2.5 mm, then 1.8 mm, to
+/// [`NARROWEST`]); `None` when none of these fits.
 pub fn fit(text: &str, w: f64, ht: f64, h_max: f64) -> Option<Fitted> {
     let sizes = || SIZES.into_iter().filter(move |&h| h <= h_max);
     let m = font::metrics();
     // A text far too long for the cell is refused without measuring it at every size.
     let least = m.width(text, font::size_for_cap(2.5));
     let lines_at_least = (ht / (LINE_PITCH * 2.5)).floor().max(1.0);
-    if least > lines_at_least * w * 1.5 {
+    // (Condensed at 1.8 mm a line holds 2.5/1.8/NARROWEST ≈ 2 times its 2.5 mm width.)
+    let widest = 2.5 / CONDENSED_SMALLEST / NARROWEST;
+    if least > lines_at_least * w * widest.max(1.5) {
         return None;
     }
     for h in sizes() {
         if block_height(1, h) <= ht && m.width(text, font::size_for_cap(h)) + SLANT * h <= w {
-            return Some(Fitted { lines: vec![text.to_string()], h });
+            return Some(Fitted { lines: vec![text.to_string()], h, stretch: 1.0 });
         }
     }
-    sizes().map(|h| Fitted { lines: wrap(text, h, w), h }).find(|f| f.height() <= ht)
+    let wrapped = sizes().map(|h| Fitted { lines: wrap(text, h, w), h, stretch: 1.0 }).find(|f| f.height() <= ht);
+    if wrapped.is_some() {
+        return wrapped;
+    }
+    // Condensed on one line, at 2.5 mm and then at GOST 2.304's 1.8 mm, when wrapping does not
+    // fit (a 5 mm cell): a surname with its initials keeps its line in a 23 mm cell.
+    for h in [2.5, CONDENSED_SMALLEST].into_iter().filter(|&h| h <= h_max) {
+        let natural = m.width(text, font::size_for_cap(h));
+        let room = w - SLANT * h;
+        if block_height(1, h) <= ht && natural > 0.0 && room / natural >= NARROWEST {
+            // Down to the hundredth, so the condensed line is never wider than its room.
+            let stretch = ((room / natural) * 100.0).floor() / 100.0;
+            return Some(Fitted { lines: vec![text.to_string()], h, stretch });
+        }
+    }
+    None
 }
+
+/// The narrowest a fitted text's letters are set: GOST 2.304's narrow type A against the
+/// type B the sheets use, about 0.7 of the width.
+pub const NARROWEST: f64 = 0.7;
+/// GOST 2.304's smallest lettering, used only condensed for a name that fits no other way.
+const CONDENSED_SMALLEST: f64 = 1.8;
 
 /// Draws wrapped lines starting with the first baseline at `at`, line pitch 1.6·h;
 /// returns the y of the next free line.
 pub fn paragraph(g: &mut Group, at: Point, lines: &[String], h: f64, anchor: Anchor) -> f64 {
+    paragraph_stretched(g, at, lines, (h, 1.0), anchor)
+}
+
+/// [`paragraph`] with the letters' width factor: (lettering height, stretch).
+pub fn paragraph_stretched(
+    g: &mut Group,
+    at: Point,
+    lines: &[String],
+    (h, stretch): (f64, f64),
+    anchor: Anchor,
+) -> f64 {
     let mut y = at.y;
     for line in lines {
-        g.text(Text::new(Point::new(at.x, y), line.clone(), h, anchor));
+        g.text(Text::new(Point::new(at.x, y), line.clone(), h, anchor).with_stretch(stretch));
         y += LINE_PITCH * h;
     }
     y
