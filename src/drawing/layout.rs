@@ -4,6 +4,7 @@
 
 use super::obstacles::{Obstacles, Piece, segment_meets_rect};
 use super::scene::{Item, Scene};
+use crate::num::math::Norm;
 use crate::num::tol;
 use kurbo::Rect;
 
@@ -29,6 +30,11 @@ pub struct Layout {
     /// plans has none).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub smallest_plan_mm: Option<f64>,
+    /// The share of the drawing field's 20 mm cells that hold no ink (no line, no letter),
+    /// from 0 to 1: how much of the sheet is left empty (the frame and the title block do not
+    /// count).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub empty_share: Option<f64>,
     /// The first problems in words, for the user and the tests.
     pub problems: Vec<String>,
 }
@@ -111,6 +117,69 @@ pub fn measure(scene: &Scene) -> Layout {
     out
 }
 
+/// The side of the cells [`empty_share`] counts, mm.
+pub const CELL: f64 = 20.0;
+
+/// The share of `field`'s whole `CELL` × `CELL` cells (those not meeting `excluded`, the
+/// title block) that no item of `scene` touches; the groups named in `skip` (the frame
+/// itself) are not ink. Lines are walked in steps under a cell, texts by their letters' boxes.
+pub fn empty_share(scene: &Scene, field: Rect, excluded: Rect, skip: &[&str]) -> f64 {
+    let (nx, ny) = ((field.width() / CELL).floor() as usize, (field.height() / CELL).floor() as usize);
+    let cell_of = |x: f64, y: f64| -> Option<(usize, usize)> {
+        let (i, j) = (((x - field.x0) / CELL).floor(), ((y - field.y0) / CELL).floor());
+        (i >= 0.0 && j >= 0.0 && (i as usize) < nx && (j as usize) < ny).then_some((i as usize, j as usize))
+    };
+    let mut inked = vec![false; nx * ny];
+    let mut mark = |x: f64, y: f64| {
+        if let Some((i, j)) = cell_of(x, y) {
+            inked[j * nx + i] = true;
+        }
+    };
+    for g in scene.groups.iter().filter(|g| !skip.contains(&g.id.as_str())) {
+        for item in &g.items {
+            match item {
+                Item::Text(t) => {
+                    for b in t.core_boxes() {
+                        let mut y = b.y0;
+                        while y <= b.y1 {
+                            let mut x = b.x0;
+                            while x <= b.x1 {
+                                mark(x, y);
+                                x += CELL / 4.0;
+                            }
+                            mark(b.x1, y);
+                            y += CELL / 4.0;
+                        }
+                        mark(b.x0, b.y1);
+                        mark(b.x1, b.y1);
+                    }
+                }
+                _ => {
+                    for (a, b) in super::obstacles::segments(item) {
+                        let steps = ((b - a).norm() / (CELL / 4.0)).ceil().max(1.0) as usize;
+                        for k in 0..=steps {
+                            let p = a.lerp(b, k as f64 / steps as f64);
+                            mark(p.x, p.y);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let counted = (0..nx * ny).filter(|&k| {
+        let (i, j) = (k % nx, k / nx);
+        let x0 = field.x0 + i as f64 * CELL;
+        let y0 = field.y0 + j as f64 * CELL;
+        Rect::new(x0, y0, x0 + CELL, y0 + CELL).intersect(excluded).area() <= 0.0
+    });
+    let (mut total, mut empty) = (0usize, 0usize);
+    for k in counted {
+        total += 1;
+        empty += usize::from(!inked[k]);
+    }
+    if total == 0 { 0.0 } else { empty as f64 / total as f64 }
+}
+
 fn is_text(i: &Item) -> bool {
     matches!(i, Item::Text(_))
 }
@@ -139,6 +208,30 @@ mod tests {
         let mut g = Group::new("g", Rect::new(0.0, 0.0, 100.0, 100.0));
         g.items = items;
         Scene { width: 100.0, height: 100.0, title: String::new(), groups: vec![g] }
+    }
+
+    /// A 100 × 60 mm field is 5 × 3 cells; a line along the top row inks its five, a text
+    /// in the middle of the bottom row one more; the frame group is not ink, and a cell
+    /// under the excluded box is not counted.
+    #[test]
+    fn empty_share_counts_the_cells_without_ink() {
+        let line = Item::Path {
+            path: crate::drawing::path::Path::polyline(&[Point::new(2.0, 10.0), Point::new(98.0, 10.0)], false),
+            pen: THIN,
+        };
+        let text = Item::Text(Text::new(Point::new(45.0, 50.0), "x", 2.5, Anchor::Start));
+        let mut frame = Group::new("frame", Rect::new(0.0, 0.0, 100.0, 60.0));
+        frame.items.push(Item::Path {
+            path: crate::drawing::path::Path::polyline(&[Point::new(0.0, 0.0), Point::new(100.0, 60.0)], false),
+            pen: THIN,
+        });
+        let mut s = scene(vec![line, text]);
+        s.groups.push(frame);
+        let field = Rect::new(0.0, 0.0, 100.0, 60.0);
+        let share = empty_share(&s, field, Rect::ZERO, &["frame"]);
+        assert!((share - 9.0 / 15.0).abs() < 1e-12, "{share}");
+        let corner = Rect::new(80.0, 40.0, 100.0, 60.0);
+        assert!((empty_share(&s, field, corner, &["frame"]) - 8.0 / 14.0).abs() < 1e-12);
     }
 
     #[test]

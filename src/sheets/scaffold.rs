@@ -50,6 +50,10 @@ pub fn scene(ctx: &Context, kind: SheetKind, c: &Composition) -> Result<Scene, T
 pub fn measure(scene: &Scene, c: &Composition) -> Layout {
     let mut layout = layout::measure(scene);
     layout.smallest_plan_mm = c.smallest_plan_mm;
+    // The drawing field: inside the frame, the title block left out.
+    let share = layout::empty_share(scene, frame::inner(), frame::title_block_rect(), &["frame", "title-block"]);
+    // Three decimals: the same bytes on every machine.
+    layout.empty_share = Some((share * 1e3).round() / 1e3);
     layout
 }
 
