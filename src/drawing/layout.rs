@@ -125,33 +125,21 @@ pub const CELL: f64 = 20.0;
 /// itself) are not ink. Lines are walked in steps under a cell, texts by their letters' boxes.
 pub fn empty_share(scene: &Scene, field: Rect, excluded: Rect, skip: &[&str]) -> f64 {
     let (nx, ny) = ((field.width() / CELL).floor() as usize, (field.height() / CELL).floor() as usize);
-    let cell_of = |x: f64, y: f64| -> Option<(usize, usize)> {
-        let (i, j) = (((x - field.x0) / CELL).floor(), ((y - field.y0) / CELL).floor());
-        (i >= 0.0 && j >= 0.0 && (i as usize) < nx && (j as usize) < ny).then_some((i as usize, j as usize))
-    };
+    // A point's cell, column and row (off the field: out of range).
+    let cell_at = |x: f64, y: f64| (((x - field.x0) / CELL).floor() as i64, ((y - field.y0) / CELL).floor() as i64);
     let mut inked = vec![false; nx * ny];
-    let mut mark = |x: f64, y: f64| {
-        if let Some((i, j)) = cell_of(x, y) {
-            inked[j * nx + i] = true;
-        }
-    };
     for g in scene.groups.iter().filter(|g| !skip.contains(&g.id.as_str())) {
         for item in &g.items {
             match item {
                 Item::Text(t) => {
+                    // Every cell a letters' box meets, from its corners' cells.
                     for b in t.core_boxes() {
-                        let mut y = b.y0;
-                        while y <= b.y1 {
-                            let mut x = b.x0;
-                            while x <= b.x1 {
-                                mark(x, y);
-                                x += CELL / 4.0;
+                        let (lo, hi) = (cell_at(b.x0, b.y0), cell_at(b.x1, b.y1));
+                        for j in lo.1.max(0)..=hi.1.min(ny as i64 - 1) {
+                            for i in lo.0.max(0)..=hi.0.min(nx as i64 - 1) {
+                                inked[j as usize * nx + i as usize] = true;
                             }
-                            mark(b.x1, y);
-                            y += CELL / 4.0;
                         }
-                        mark(b.x0, b.y1);
-                        mark(b.x1, b.y1);
                     }
                 }
                 _ => {
@@ -159,25 +147,25 @@ pub fn empty_share(scene: &Scene, field: Rect, excluded: Rect, skip: &[&str]) ->
                         let steps = ((b - a).norm() / (CELL / 4.0)).ceil().max(1.0) as usize;
                         for k in 0..=steps {
                             let p = a.lerp(b, k as f64 / steps as f64);
-                            mark(p.x, p.y);
+                            let (i, j) = cell_at(p.x, p.y);
+                            if (0..nx as i64).contains(&i) && (0..ny as i64).contains(&j) {
+                                inked[j as usize * nx + i as usize] = true;
+                            }
                         }
                     }
                 }
             }
         }
     }
-    let counted = (0..nx * ny).filter(|&k| {
-        let (i, j) = (k % nx, k / nx);
-        let x0 = field.x0 + i as f64 * CELL;
-        let y0 = field.y0 + j as f64 * CELL;
-        Rect::new(x0, y0, x0 + CELL, y0 + CELL).intersect(excluded).area() <= 0.0
-    });
-    let (mut total, mut empty) = (0usize, 0usize);
-    for k in counted {
-        total += 1;
-        empty += usize::from(!inked[k]);
-    }
-    if total == 0 { 0.0 } else { empty as f64 / total as f64 }
+    let counted: Vec<bool> = (0..nx * ny)
+        .filter(|&k| {
+            let (x0, y0) = (field.x0 + (k % nx) as f64 * CELL, field.y0 + (k / nx) as f64 * CELL);
+            Rect::new(x0, y0, x0 + CELL, y0 + CELL).intersect(excluded).area() <= 0.0
+        })
+        .map(|k| inked[k])
+        .collect();
+    let empty = counted.iter().filter(|&&ink| !ink).count();
+    if counted.is_empty() { 0.0 } else { empty as f64 / counted.len() as f64 }
 }
 
 fn is_text(i: &Item) -> bool {

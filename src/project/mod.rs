@@ -197,7 +197,7 @@ impl Sectioned<'_> {
 /// A sheet without a designation (GOST 2.104's main field) is almost surely unfinished: said
 /// where it belongs (at the `project` section when the key is absent).
 fn blank_designation(info: &ProjectInfo, places: &Places) -> Option<Warning> {
-    let blank = [Language::Uz, Language::Ru, Language::En].iter().all(|&l| info.designation.get(l).trim().is_empty());
+    let blank = Language::ALL.iter().all(|&l| info.designation.get(l).trim().is_empty());
     let (line, column) =
         places.place_of("project.designation").or_else(|| places.place_of("project")).unwrap_or((1, 1));
     blank.then(|| Warning {
