@@ -113,6 +113,10 @@ struct BuildArgs {
     /// Skip the PDF.
     #[arg(long)]
     no_pdf: bool,
+    /// Also write each sheet's constructions alone, in red at their places on A1, to print
+    /// on film and lay over a hand drawing: sheetN-overlay.svg and sheetN-overlay.pdf.
+    #[arg(long)]
+    overlay: bool,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -270,7 +274,10 @@ fn build(args: &BuildArgs, dir: Option<&Path>) -> Result<(), Failure> {
         }
     }
     let formats = pipeline::formats(!args.no_pdf, (!args.no_png).then_some(args.png_dpi));
-    let files = pipeline::outputs(&project, &built, &formats).map_err(|e| Failure::Output(e.into()))?;
+    let mut files = pipeline::outputs(&project, &built, &formats).map_err(|e| Failure::Output(e.into()))?;
+    if args.overlay {
+        files.extend(pipeline::overlays(&built).map_err(|e| Failure::Output(e.into()))?);
+    }
     write::write_outputs(&args.output, &files).map_err(Failure::Output)?;
     let numbers: Vec<String> = built.iter().map(|b| b.output.number.to_string()).collect();
     println!("{name}: sheet {} written to {} ({} files)", numbers.join(", "), args.output.display(), files.len());

@@ -166,6 +166,20 @@ pub fn render(b: &Built, format: Format) -> Result<Vec<u8>, Error> {
     }
 }
 
+/// The overlay of every built sheet (see [`sheets::scaffold::overlay`]) as
+/// `sheet<N>-overlay.svg` and `.pdf`: its constructions alone, in one contrasting colour, at
+/// their places on the A1 sheet.
+pub fn overlays(built: &[Built]) -> Result<Vec<(String, Vec<u8>)>, Error> {
+    let mut files = Vec::new();
+    for b in built {
+        let scene = sheets::scaffold::overlay(&b.output.scene);
+        for f in [Format::Svg, Format::Pdf] {
+            files.push((format!("sheet{}-overlay.{}", b.output.number, f.extension()), backend::write(&scene, f)?));
+        }
+    }
+    Ok(files)
+}
+
 /// Every output file of a build as (name, bytes), in a fixed order: per sheet its drawing in
 /// each of `formats` in their order, its tables as CSV and Markdown; then `results.json`.
 pub fn outputs(p: &Project, built: &[Built], formats: &[Format]) -> Result<Vec<(String, Vec<u8>)>, Error> {

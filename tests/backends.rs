@@ -337,7 +337,14 @@ fn pdf_and_png_bytes_are_the_same_for_the_same_scene() {
 fn scene_of(items: Vec<Item>) -> Scene {
     let mut g = Group::new("g", Rect::new(0.0, 0.0, 100.0, 60.0));
     g.items = items;
-    Scene { width: 100.0, height: 60.0, title: "test".into(), groups: vec![Group::new("ok", Rect::ZERO), g] }
+    Scene {
+        ink: Default::default(),
+        name: "s".into(),
+        width: 100.0,
+        height: 60.0,
+        title: "test".into(),
+        groups: vec![Group::new("ok", Rect::ZERO), g],
+    }
 }
 
 #[test]

@@ -12,10 +12,11 @@ use super::shapes::{self, check_finite};
 use super::text::{self, SetRun};
 use crate::drawing::scene::{Item, Pen, Scene, Text};
 use crate::font;
+use krilla::color::rgb;
 use krilla::geom::{Path as PdfPath, PathBuilder, Point as PdfPoint, Size, Transform};
 use krilla::metadata::Metadata;
 use krilla::page::PageSettings;
-use krilla::paint::{Fill, LineCap, LineJoin, Stroke, StrokeDash};
+use krilla::paint::{Fill, LineCap, LineJoin, Paint, Stroke, StrokeDash};
 use krilla::surface::Surface;
 use krilla::text::{Font, GlyphId, KrillaGlyph};
 use krilla::{Data, Document};
@@ -35,35 +36,49 @@ pub fn write(scene: &Scene) -> Result<Vec<u8>, BackendError> {
     let mut page = doc.start_page_with(PageSettings::new(size));
     let mut surface = page.surface();
     surface.push_transform(&Transform::from_scale(PT_PER_MM, PT_PER_MM));
-    draw_items(&mut surface, scene.groups.iter().flat_map(|g| &g.items), &font);
+    let [r, g, b] = scene.ink.rgb();
+    let ink = Ink { font, paint: rgb::Color::new(r, g, b).into() };
+    draw_items(&mut surface, scene.groups.iter().flat_map(|g| &g.items), &ink);
     surface.pop();
     surface.finish();
     page.finish();
     doc.finish().map_err(|e| BackendError::Pdf(format!("{e:?}")))
 }
 
+/// What every mark is drawn with: the font and the scene's ink.
+struct Ink {
+    font: Font,
+    paint: Paint,
+}
+
+impl Ink {
+    fn fill(&self) -> Fill {
+        Fill { paint: self.paint.clone(), ..Fill::default() }
+    }
+}
+
 /// Draws the items in order, consecutive strokes of one pen as one path: one operation
 /// instead of one each (krilla writes a graphics state and a transform per operation, and
 /// compressing them was most of the PDF's time). The marks are the same: PDF restarts the
-/// dash pattern at each subpath, and every stroke is opaque black. Fills are not joined:
+/// dash pattern at each subpath, and every stroke is one opaque ink. Fills are not joined:
 /// overlapping outlines of opposite turn would cancel under the non-zero rule.
-fn draw_items<'a>(surface: &mut Surface, items: impl Iterator<Item = &'a Item>, font: &Font) {
+fn draw_items<'a>(surface: &mut Surface, items: impl Iterator<Item = &'a Item>, ink: &Ink) {
     let mut pending: Option<(Pen, BezPath)> = None;
     for item in items {
         match stroke_of(item) {
             Some((pen, path)) => match &mut pending {
                 Some((same, joined)) if *same == pen => joined.extend(path),
                 _ => {
-                    flush(surface, pending.replace((pen, path)));
+                    flush(surface, pending.replace((pen, path)), ink);
                 }
             },
             None => {
-                flush(surface, pending.take());
-                draw_item(surface, item, font);
+                flush(surface, pending.take(), ink);
+                draw_item(surface, item, ink);
             }
         }
     }
-    flush(surface, pending.take());
+    flush(surface, pending.take(), ink);
 }
 
 /// A stroked item's pen and outline.
@@ -75,28 +90,29 @@ fn stroke_of(item: &Item) -> Option<(Pen, BezPath)> {
     }
 }
 
-fn flush(surface: &mut Surface, pending: Option<(Pen, BezPath)>) {
+fn flush(surface: &mut Surface, pending: Option<(Pen, BezPath)>, ink: &Ink) {
     if let Some((pen, path)) = pending {
-        stroke(surface, &path, &pen);
+        stroke(surface, &path, &pen, ink);
     }
 }
 
 /// One item by itself.
-fn draw_item(surface: &mut Surface, item: &Item, font: &Font) {
+fn draw_item(surface: &mut Surface, item: &Item, ink: &Ink) {
     match item {
-        Item::Path { path, pen } => stroke(surface, &shapes::bez_path(path), pen),
-        Item::Circle { c, r, pen, filled: false } => stroke(surface, &shapes::circle(*c, *r), pen),
-        Item::Circle { c, r, filled: true, .. } => fill(surface, &shapes::circle(*c, *r)),
-        Item::Fill { path } => fill(surface, &shapes::bez_path(path)),
-        Item::Text(t) => draw_text(surface, t, font),
+        Item::Path { path, pen } => stroke(surface, &shapes::bez_path(path), pen, ink),
+        Item::Circle { c, r, pen, filled: false } => stroke(surface, &shapes::circle(*c, *r), pen, ink),
+        Item::Circle { c, r, filled: true, .. } => fill(surface, &shapes::circle(*c, *r), ink),
+        Item::Fill { path } => fill(surface, &shapes::bez_path(path), ink),
+        Item::Text(t) => draw_text(surface, t, ink),
     }
 }
 
-fn stroke(surface: &mut Surface, path: &BezPath, pen: &Pen) {
+fn stroke(surface: &mut Surface, path: &BezPath, pen: &Pen, ink: &Ink) {
     let Some(path) = pdf_path(path) else { return };
     let dash =
         shapes::dash_array(pen.line).map(|a| StrokeDash { array: a.iter().map(|&x| x as f32).collect(), offset: 0.0 });
     let stroke = Stroke {
+        paint: ink.paint.clone(),
         width: pen.width as f32,
         line_cap: LineCap::Round,
         line_join: LineJoin::Round,
@@ -108,10 +124,10 @@ fn stroke(surface: &mut Surface, path: &BezPath, pen: &Pen) {
     surface.draw_path(&path);
 }
 
-fn fill(surface: &mut Surface, path: &BezPath) {
+fn fill(surface: &mut Surface, path: &BezPath, ink: &Ink) {
     let Some(path) = pdf_path(path) else { return };
     surface.set_stroke(None);
-    surface.set_fill(Some(Fill::default()));
+    surface.set_fill(Some(ink.fill()));
     surface.draw_path(&path);
 }
 
@@ -136,13 +152,13 @@ fn pdf_path(b: &BezPath) -> Option<PdfPath> {
 }
 
 /// A text in its frame (rotated, sloped), each run as real text in the embedded font.
-fn draw_text(surface: &mut Surface, t: &Text, font: &Font) {
+fn draw_text(surface: &mut Surface, t: &Text, ink: &Ink) {
     let set = text::set(t);
     surface.set_stroke(None);
-    surface.set_fill(Some(Fill::default()));
+    surface.set_fill(Some(ink.fill()));
     surface.push_transform(&transform(set.transform));
     for run in &set.runs {
-        draw_run(surface, run, font);
+        draw_run(surface, run, &ink.font);
     }
     surface.pop();
 }

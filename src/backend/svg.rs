@@ -5,7 +5,7 @@
 
 use super::{BackendError, shapes};
 use crate::drawing::path::{Path, Seg};
-use crate::drawing::scene::{Anchor, Item, Pen, SUB, SUB_DROP, Scene, Text};
+use crate::drawing::scene::{Anchor, Ink, Item, LineType, MAIN, Pen, SUB, SUB_DROP, Scene, Text, VECTOR};
 use crate::font;
 use crate::num::math;
 use kurbo::Arc;
@@ -52,14 +52,14 @@ pub fn escape(s: &str) -> String {
     out
 }
 
-fn stroke_attrs(pen: &Pen) -> Result<String, BackendError> {
+fn stroke_attrs(pen: &Pen, ink: &str) -> Result<String, BackendError> {
     let dash = match shapes::dash_array(pen.line) {
         None => String::new(),
         Some(a) => {
             format!(" stroke-dasharray=\"{}\"", a.iter().map(|&x| num(x)).collect::<Result<Vec<_>, _>>()?.join(" "))
         }
     };
-    Ok(format!("stroke=\"#000\" stroke-width=\"{}\"{dash}", num(pen.width)?))
+    Ok(format!("stroke=\"{ink}\" stroke-width=\"{}\"{dash}", num(pen.width)?))
 }
 
 /// Path data: `M`, `L`, `C` and `A` commands, `Z` when closed.
@@ -108,7 +108,7 @@ fn arc_command(a: &Arc, start: f64, sweep: f64) -> Result<String, BackendError> 
     Ok(format!("A{r} {r} 0 {large} {clockwise} {} {}", num(end.x)?, num(end.y)?))
 }
 
-fn text_element(t: &Text) -> Result<String, BackendError> {
+fn text_element(t: &Text, ink: &str) -> Result<String, BackendError> {
     let anchor = match t.anchor {
         Anchor::Start => "",
         Anchor::Middle => " text-anchor=\"middle\"",
@@ -131,7 +131,7 @@ fn text_element(t: &Text) -> Result<String, BackendError> {
     }
     let (x, y) = if transform.is_empty() { (x, y) } else { ("0".into(), "0".into()) };
     Ok(format!(
-        "<text fill=\"#000\" x=\"{x}\" y=\"{y}\" font-size=\"{}\"{anchor}{transform}>{}{}</text>",
+        "<text class=\"text\" fill=\"{ink}\" x=\"{x}\" y=\"{y}\" font-size=\"{}\"{anchor}{transform}>{}{}</text>",
         num(font::size_for_cap(t.h))?,
         escape(&t.text),
         subscript_and_tail(t)?
@@ -154,21 +154,58 @@ fn subscript_and_tail(t: &Text) -> Result<String, BackendError> {
     Ok(out)
 }
 
-fn item_element(item: &Item) -> Result<String, BackendError> {
+/// The item's class: its GOST line type (`contour`, `thin`, `vector`, `dashed`, `centre`),
+/// or `fill` and `text` — so a test or a style sheet can pick one kind of line.
+pub fn class_of(item: &Item) -> &'static str {
+    match item {
+        Item::Path { pen, .. } | Item::Circle { pen, filled: false, .. } => line_class(pen),
+        Item::Circle { filled: true, .. } | Item::Fill { .. } => "fill",
+        Item::Text(_) => "text",
+    }
+}
+
+fn line_class(pen: &Pen) -> &'static str {
+    match pen.line {
+        LineType::Dashed => "dashed",
+        LineType::DashDot => "centre",
+        LineType::Solid if pen.width >= MAIN.width => "contour",
+        LineType::Solid if pen.width >= VECTOR.width => "vector",
+        LineType::Solid => "thin",
+    }
+}
+
+fn item_element(item: &Item, ink: &str) -> Result<String, BackendError> {
+    let class = class_of(item);
     Ok(match item {
-        Item::Path { path, pen } => format!("<path d=\"{}\" {}/>", path_d(path)?, stroke_attrs(pen)?),
-        Item::Circle { c, r, pen, filled } => {
-            let paint = if *filled { "fill=\"#000\"".to_string() } else { stroke_attrs(pen)? };
-            format!("<circle cx=\"{}\" cy=\"{}\" r=\"{}\" {paint}/>", num(c.x)?, num(c.y)?, num(*r)?)
+        Item::Path { path, pen } => {
+            format!("<path class=\"{class}\" d=\"{}\" {}/>", path_d(path)?, stroke_attrs(pen, ink)?)
         }
-        Item::Fill { path } => format!("<path d=\"{}\" fill=\"#000\"/>", path_d(path)?),
-        Item::Text(t) => text_element(t)?,
+        Item::Circle { c, r, pen, filled } => {
+            let paint = if *filled { format!("fill=\"{ink}\"") } else { stroke_attrs(pen, ink)? };
+            format!("<circle class=\"{class}\" cx=\"{}\" cy=\"{}\" r=\"{}\" {paint}/>", num(c.x)?, num(c.y)?, num(*r)?)
+        }
+        Item::Fill { path } => format!("<path class=\"{class}\" d=\"{}\" fill=\"{ink}\"/>", path_d(path)?),
+        Item::Text(t) => text_element(t, ink)?,
     })
+}
+
+/// A group's or a part's SVG id: the sheet's name, a dot, its own id ("sheet1.plan.v.3").
+pub fn element_id(scene: &Scene, id: &str) -> String {
+    if scene.name.is_empty() { id.to_string() } else { format!("{}.{id}", scene.name) }
+}
+
+/// The ink as an SVG colour: `#000`, or `#rrggbb`.
+fn colour(ink: Ink) -> String {
+    match ink.rgb() {
+        [0, 0, 0] => "#000".into(),
+        [r, g, b] => format!("#{r:02x}{g:02x}{b:02x}"),
+    }
 }
 
 /// Serialises a scene as an SVG document sized in millimetres.
 pub fn write(scene: &Scene) -> Result<String, BackendError> {
     let mut s = String::with_capacity(1 << 20);
+    let ink = colour(scene.ink);
     let (w, h) = (num(scene.width)?, num(scene.height)?);
     let mut line = |text: String| {
         s.push_str(&text);
@@ -178,22 +215,32 @@ pub fn write(scene: &Scene) -> Result<String, BackendError> {
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\">"
     ));
     line(format!("<title>{}</title>", escape(&scene.title)));
-    line(format!("<rect width=\"{w}\" height=\"{h}\" fill=\"#fff\"/>"));
+    if scene.ink == Ink::Black {
+        line(format!("<rect width=\"{w}\" height=\"{h}\" fill=\"#fff\"/>"));
+    }
     line(format!(
         "<g fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\" font-family=\"{}\" font-stretch=\"{}\">",
         font::FAMILY,
         font::STRETCH
     ));
     for g in &scene.groups {
-        line(format!("<g id=\"{}\">", escape(&g.id)));
-        for item in &g.items {
-            let element = item_element(item).map_err(|e| match e {
+        line(format!("<g id=\"{}\">", escape(&element_id(scene, &g.id))));
+        let mut parts = g.parts.iter().peekable();
+        for (i, item) in g.items.iter().enumerate() {
+            if let Some(p) = parts.peek().filter(|p| p.items.start == i) {
+                line(format!("<g id=\"{}\">", escape(&element_id(scene, &p.id))));
+            }
+            let element = item_element(item, &ink).map_err(|e| match e {
                 BackendError::NonFinite { value, .. } => {
                     BackendError::NonFinite { group: g.id.clone(), value, item: format!("{item:?}") }
                 }
                 other => other,
             })?;
             line(element);
+            if parts.peek().is_some_and(|p| p.items.end == i + 1) {
+                parts.next();
+                line("</g>".into());
+            }
         }
         line("</g>".into());
     }
@@ -226,7 +273,14 @@ mod tests {
     fn scene(items: Vec<Item>) -> Scene {
         let mut g = Group::new("g", Rect::new(0.0, 0.0, 10.0, 10.0));
         g.items = items;
-        Scene { width: 10.0, height: 10.0, title: "t".into(), groups: vec![g] }
+        Scene {
+            ink: Default::default(),
+            name: "s".into(),
+            width: 10.0,
+            height: 10.0,
+            title: "t".into(),
+            groups: vec![g],
+        }
     }
 
     #[test]
@@ -244,6 +298,25 @@ mod tests {
         let circle = Path::arc(Point::new(5.0, 5.0), 2.0, PI / 2.0, 2.0 * PI);
         let svg = write(&scene(vec![Item::Path { path: circle, pen: THIN }])).unwrap();
         assert!(svg.contains("d=\"M5 7A2 2 0 0 1 5 3A2 2 0 0 1 5 7\""), "{svg}");
+    }
+
+    #[test]
+    fn parts_are_nested_groups_named_after_the_sheet_and_every_element_has_its_class() {
+        let line = |w: f64| Item::Path {
+            path: Path::polyline(&[Point::ZERO, Point::new(1.0, 1.0)], false),
+            pen: Pen { width: w, ..THIN },
+        };
+        let mut g = Group::new("g", Rect::new(0.0, 0.0, 10.0, 10.0));
+        g.items = vec![line(0.7), line(0.25), line(0.45)];
+        g.part_from("a", 1);
+        g.part_from("b", 0); // overlaps "a": nothing is left of it after "a"
+        let svg = write(&Scene { groups: vec![g], ..scene(vec![]) }).unwrap();
+        let body: Vec<&str> = svg.lines().skip(4).collect();
+        assert_eq!(body[0], "<g id=\"s.g\">");
+        assert!(body[1].starts_with("<path class=\"contour\""), "{svg}");
+        assert_eq!(body[2], "<g id=\"s.a\">");
+        assert!(body[3].starts_with("<path class=\"thin\"") && body[4].starts_with("<path class=\"vector\""));
+        assert_eq!(&body[5..7], ["</g>", "</g>"]);
     }
 
     #[test]

@@ -195,7 +195,14 @@ mod tests {
     fn scene(items: Vec<Item>) -> Scene {
         let mut g = Group::new("g", Rect::new(0.0, 0.0, 100.0, 100.0));
         g.items = items;
-        Scene { width: 100.0, height: 100.0, title: String::new(), groups: vec![g] }
+        Scene {
+            ink: Default::default(),
+            name: "s".into(),
+            width: 100.0,
+            height: 100.0,
+            title: String::new(),
+            groups: vec![g],
+        }
     }
 
     /// A 100 × 60 mm field is 5 × 3 cells; a line along the top row inks its five, a text

@@ -393,7 +393,14 @@ mod tests {
         }
         let placed = labels.place(&mut g, region);
         assert!(placed.iter().all(|&clear| clear), "{placed:?}");
-        let scene = Scene { width: 100.0, height: 100.0, title: String::new(), groups: vec![g] };
+        let scene = Scene {
+            ink: Default::default(),
+            name: "s".into(),
+            width: 100.0,
+            height: 100.0,
+            title: String::new(),
+            groups: vec![g],
+        };
         let l = layout::measure(&scene);
         assert!(l.is_clean(), "{l:?}");
     }

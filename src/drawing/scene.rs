@@ -237,18 +237,50 @@ pub fn points_bbox(pts: &[Point]) -> Rect {
     pts.iter().fold(Rect::from_points(first, first), |acc, &p| acc.union_pt(p))
 }
 
+/// One drawing or table inside a group (a velocity plan of one position, one force
+/// polygon, one table): its stable id and the run of the group's items that draw it, so that
+/// the SVG can wrap it in its own `<g id>` and a test can compare it alone.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Part {
+    /// Stable id within the sheet ("plan.v.3"), written into the SVG after the sheet's name.
+    pub id: String,
+    pub items: std::ops::Range<usize>,
+}
+
 /// A named part of the sheet with the region it must stay inside.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Group {
-    /// Stable id, written into the SVG.
+    /// Stable id within the sheet, written into the SVG after the sheet's name.
     pub id: String,
     pub region: Rect,
     pub items: Vec<Item>,
+    /// Its drawings, in item order, none overlapping another (items between them belong to
+    /// the group only).
+    pub parts: Vec<Part>,
 }
 
 impl Group {
     pub fn new(id: impl Into<String>, region: Rect) -> Group {
-        Group { id: id.into(), region, items: Vec::new() }
+        Group { id: id.into(), region, items: Vec::new(), parts: Vec::new() }
+    }
+
+    /// Where the next item will go: the start of a part (see [`Group::part_from`]).
+    pub fn mark(&self) -> usize {
+        self.items.len()
+    }
+
+    /// Names the items drawn since `start` (a [`Group::mark`]) as the part `id`. Nothing is
+    /// recorded for an empty run; a run reaching into the previous part is cut to follow it.
+    pub fn part_from(&mut self, id: impl Into<String>, start: usize) {
+        let (id, start) = (id.into(), start.max(self.parts.last().map_or(0, |p| p.items.end)));
+        if !id.is_empty() && start < self.items.len() {
+            self.parts.push(Part { id, items: start..self.items.len() });
+        }
+    }
+
+    /// The items of the part `id`, if the group has it.
+    pub fn part(&self, id: &str) -> Option<&[Item]> {
+        self.parts.iter().find(|p| p.id == id).map(|p| &self.items[p.items.clone()])
     }
 
     pub fn line(&mut self, a: Point, b: Point, pen: Pen) {
@@ -298,9 +330,34 @@ impl Group {
     }
 }
 
+/// The colour a scene is drawn in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Ink {
+    /// Black on white: the sheet.
+    #[default]
+    Black,
+    /// One contrasting colour on nothing (no page fill): an overlay to print on film and
+    /// lay over a hand drawing, or to stack on a scan.
+    Overlay,
+}
+
+impl Ink {
+    /// Red, green, blue.
+    pub fn rgb(self) -> [u8; 3] {
+        match self {
+            Ink::Black => [0, 0, 0],
+            // A red that pencil grey and blue ink do not have.
+            Ink::Overlay => [230, 0, 0],
+        }
+    }
+}
+
 /// A whole sheet.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
+    pub ink: Ink,
+    /// The sheet's name in ids ("sheet1"): every group's and part's SVG id begins with it.
+    pub name: String,
     pub width: f64,
     pub height: f64,
     pub title: String,

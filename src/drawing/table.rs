@@ -8,7 +8,13 @@ pub const ROW_H: f64 = 5.0;
 pub const CELL_TEXT: f64 = 2.5;
 const TITLE_TEXT: f64 = 3.5;
 
+/// How every table's part id begins: "table.velocities".
+pub const PART: &str = "table.";
+
 pub struct Table {
+    /// Its id on the sheet ([`PART`] and its name: "table.velocities"), its SVG group's;
+    /// empty for none.
+    pub id: String,
     pub title: String,
     pub header: Vec<String>,
     /// First cell of each row is its label (may carry a subscript).
@@ -64,6 +70,14 @@ impl Table {
 
     /// Draws the table with its top-left corner (title included) at `at`.
     pub fn draw(&self, g: &mut Group, at: Point) -> Rect {
+        let start = g.mark();
+        let drawn = self.draw_grid(g, at);
+        g.part_from(self.id.as_str(), start);
+        drawn
+    }
+
+    /// The title, the rules and the cells; returns the box taken.
+    fn draw_grid(&self, g: &mut Group, at: Point) -> Rect {
         let (outer_w, h) = self.size();
         let w = self.grid_width();
         paragraph(g, Point::new(at.x, at.y + 4.0), &self.title_lines(), TITLE_TEXT, Anchor::Start);

@@ -76,7 +76,7 @@ impl Context<'_> {
         number: u32,
     ) -> Result<crate::drawing::scene::Group, TooLong> {
         use crate::drawing::frame::{self, TitleBlock};
-        let mut tb = crate::drawing::scene::Group::new("title-block", frame::title_block_rect());
+        let mut tb = crate::drawing::scene::Group::new(scaffold::TITLE_BLOCK, frame::title_block_rect());
         frame::title_block(
             &mut tb,
             c,

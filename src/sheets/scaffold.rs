@@ -9,7 +9,8 @@ use crate::drawing::frame::{self, A1_H, A1_W};
 use crate::drawing::labels::{Common, Language};
 use crate::drawing::layout::{self, Layout};
 use crate::drawing::scale;
-use crate::drawing::scene::{Group, Scene};
+use crate::drawing::scene::{Group, Ink, Item, Scene};
+use crate::drawing::table;
 use crate::drawing::text::{LabelText, TooLong};
 use crate::report::{NoteTable, NumTable, Row};
 use kurbo::Rect;
@@ -43,7 +44,46 @@ pub fn scene(ctx: &Context, kind: SheetKind, c: &Composition) -> Result<Scene, T
     groups.push(fr);
     groups.extend(c.groups.iter().cloned());
     groups.push(tb);
-    Ok(Scene { width: A1_W, height: A1_H, title: format!("{} — {}", ctx.info.title(), c.name), groups })
+    Ok(Scene {
+        ink: Default::default(),
+        name: format!("sheet{}", kind.number),
+        width: A1_W,
+        height: A1_H,
+        title: format!("{} — {}", ctx.info.title(), c.name),
+        groups,
+    })
+}
+
+/// The title block's group id.
+pub const TITLE_BLOCK: &str = "title-block";
+
+/// The sheet's constructions alone, in the overlay's ink at their places on the sheet: the
+/// frame (to register the film on a hand drawing's frame), every drawing's lines, circles
+/// and arrowheads; no letters, no tables, no title block — what a student draws with
+/// instruments, not what they write.
+pub fn overlay(scene: &Scene) -> Scene {
+    let groups = scene.groups.iter().filter(|g| g.id != TITLE_BLOCK).map(constructions).collect();
+    Scene { ink: Ink::Overlay, groups, ..scene.clone() }
+}
+
+/// A group without its texts and tables, its other parts kept around what is left of them.
+fn constructions(g: &Group) -> Group {
+    let in_table = |i: usize| g.parts.iter().any(|p| p.id.starts_with(table::PART) && p.items.contains(&i));
+    let mut out = Group::new(g.id.clone(), g.region);
+    let mut parts = g.parts.iter().filter(|p| !p.id.starts_with(table::PART)).peekable();
+    let mut start = None;
+    for (i, item) in g.items.iter().enumerate() {
+        if parts.peek().is_some_and(|p| p.items.start == i) {
+            start = Some(out.mark());
+        }
+        if !matches!(item, Item::Text(_)) && !in_table(i) {
+            out.items.push(item.clone());
+        }
+        if let Some(p) = parts.next_if(|p| p.items.end == i + 1) {
+            out.part_from(p.id.clone(), start.take().unwrap_or(out.mark()));
+        }
+    }
+    out
 }
 
 /// The layout measurement of the whole sheet (see [`layout::measure`]).
@@ -51,7 +91,7 @@ pub fn measure(scene: &Scene, c: &Composition) -> Layout {
     let mut layout = layout::measure(scene);
     layout.smallest_plan_mm = c.smallest_plan_mm;
     // The drawing field: inside the frame, the title block left out.
-    let share = layout::empty_share(scene, frame::inner(), frame::title_block_rect(), &["frame", "title-block"]);
+    let share = layout::empty_share(scene, frame::inner(), frame::title_block_rect(), &["frame", TITLE_BLOCK]);
     // Three decimals: the same bytes on every machine.
     layout.empty_share = Some((share * 1e3).round() / 1e3);
     layout

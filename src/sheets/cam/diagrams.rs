@@ -149,9 +149,15 @@ pub fn draw(
         words,
     };
     let mut labels = Labels::new();
+    let start = g.mark();
     let top = stack.displacement(g, &mut labels, area.y0);
+    g.part_from("diagram.s", start);
+    let start = g.mark();
     let top = stack.velocity(g, top);
+    g.part_from("diagram.v", start);
+    let start = g.mark();
     let bottom = stack.acceleration(g, top);
+    g.part_from("diagram.a", start);
     labels.place(g, area);
     Drawn { scales: sc, bottom }
 }

@@ -40,6 +40,7 @@ pub fn sheet_table(n: &NoteTable, lang: Language) -> Table {
     let results = n.table.id == "results";
     let continued = n.table.id.ends_with("-return");
     Table {
+        id: format!("{}{}", crate::drawing::table::PART, n.table.id),
         title: if continued { table::continued_title(&n.title, c.continued()) } else { n.title.clone() },
         header: n.column_titles.clone(),
         rows,

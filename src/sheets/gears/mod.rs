@@ -121,8 +121,13 @@ fn mesh_group(p: &GearsProject, words: &GearWords) -> Result<(Group, MeshDrawn),
     let room = Room { field: "gears.assumptions", place: "notes under the mesh", size: (notes_w, NOTES_MAX_H) };
     room.check(&assumptions, notes_h)?;
     let area = Rect::new(MESH.x0 + 2.0, MESH.y0 + 10.0, MESH.x1 - 2.0, MESH.y1 - notes_h);
+    let start = mesh.mark();
     let drawn =
         draw_mesh(&mut mesh, area, &MeshInput { pair: &p.pair, outlines: [&outlines[0], &outlines[1]] }, &mut labels);
+    // Its labels stay inside the drawing's area, clear of the notes below it.
+    labels.place(&mut mesh, area);
+    mesh.part_from("mesh.drawing", start);
+    let start = mesh.mark();
     let mut y = area.y1 + 5.0;
     let eps = &fmt::value;
     let diff = (drawn.contact_ratio_drawn - p.pair.contact_ratio) / p.pair.contact_ratio * 100.0;
@@ -135,7 +140,7 @@ fn mesh_group(p: &GearsProject, words: &GearWords) -> Result<(Group, MeshDrawn),
     for n in head.iter().chain(&notes) {
         y = paragraph(&mut mesh, Point::new(MESH.x0 + 2.0, y), &wrapped(n), CELL_TEXT, Anchor::Start) + 0.5;
     }
-    labels.place(&mut mesh, area);
+    mesh.part_from("mesh.notes", start);
     Ok((mesh, drawn))
 }
 

@@ -55,6 +55,7 @@ fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords) -> Tabl
     // The pair's table continues the wheels': titled as the continuation.
     let title = if n.table.id == "pair" { table::continued_title(&n.title, c.continued()) } else { n.title.clone() };
     Table {
+        id: format!("{}{}", crate::drawing::table::PART, n.table.id),
         title,
         header: n.column_titles.clone(),
         rows,

@@ -23,6 +23,7 @@ use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
 use crate::project::LeverProject;
 use crate::report::NoteTable;
+use crate::report::ascii_key;
 use crate::report::lever::ForceTables;
 use crate::sheets::scaffold::{self, Composition};
 use crate::sheets::{Context, SheetKind};
@@ -397,8 +398,10 @@ fn plans_group(
             pole: r.pole,
             scale_line: (!sizing.common).then(|| scale_line(mu)),
         };
+        let start = g.mark();
         draw_plan(&mut g, &c, &mut labels);
         labels.place(&mut g, label_bounds(cell));
+        g.part_from(format!("plan.{}.{}", r.symbol, ascii_key(&pos.label)), start);
     }
     let drawn = positions
         .iter()

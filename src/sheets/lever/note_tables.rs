@@ -65,6 +65,7 @@ const NOTES_MAX_H: f64 = 60.0;
 pub(super) fn sheet_table(n: &NoteTable, lang: Language) -> Table {
     let rows = scaffold::drawn_rows(n, lang, false);
     Table {
+        id: format!("{}{}", crate::drawing::table::PART, n.table.id),
         title: n.title.clone(),
         header: n.column_titles.clone(),
         label_w: label_column(&rows),

@@ -71,6 +71,7 @@ pub fn draw_forces(main: &mut Group, mut side: Option<&mut Group>, inp: &ForcesI
         let r = Rect::new(origin.x, origin.y, origin.x + cell.w, origin.y + cell.h);
         // Each cell places its own labels inside itself, so cells never collide.
         let mut labels = Labels::new();
+        let start = g.mark();
         match cell.content {
             Content::Polygon(i, ref layout) => {
                 group::draw_group_cell(g, &mut labels, r, inp, &inp.fa.forces.polygons[i], layout);
@@ -89,8 +90,24 @@ pub fn draw_forces(main: &mut Group, mut side: Option<&mut Group>, inp: &ForcesI
             }
         }
         labels.place(g, r.inflate(-0.5, -0.5));
+        g.part_from(part_id(inp, &cell.content), start);
     }
     scales
+}
+
+/// A force cell's id: `forces.group.2-3` (an Assur group by its links' numbers),
+/// `forces.crank`, `forces.lever`, `forces.load.5` (by the loaded link), `forces.table.1`.
+fn part_id(inp: &ForcesInput, content: &Content) -> String {
+    let number = |l: usize| inp.m.links[l].number.to_string();
+    match content {
+        Content::Polygon(i, _) => match inp.fa.forces.polygons[*i].group {
+            Some(k) => format!("forces.group.{}", inp.m.groups[k].links.map(number).join("-")),
+            None => "forces.crank".into(),
+        },
+        Content::Lever(..) => "forces.lever".into(),
+        Content::Load(i) => format!("forces.load.{}", number(inp.fa.model.loads[*i].link)),
+        Content::Table(i) => format!("forces.table.{}", i + 1),
+    }
 }
 
 /// The areas the cells may use: the main region below its title, then the side region.
