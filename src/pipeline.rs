@@ -125,6 +125,8 @@ struct Results<'a> {
     sheets: serde_json::Map<String, serde_json::Value>,
     /// Every value of every note table under its identifier, in the table's unit.
     answers: serde_json::Map<String, serde_json::Value>,
+    /// Every segment a student measures, under its identifier (`sheet1.plan.v.3.pb`).
+    segments: serde_json::Map<String, serde_json::Value>,
 }
 
 /// `results.json`: the title, each built sheet's section under `sheet<N>`, and the answers
@@ -139,10 +141,13 @@ pub fn results_json(p: &Project, built: &[Built]) -> String {
         })
         .map(|a| (a.id.clone(), serde_json::to_value(&a).expect("an answer serialises")))
         .collect();
-    let r =
-        Results {
-            units: "SI: m, m/s, m/s², rad, rad/s, rad/s², kg, N, N·m", title: p.info.title(), sheets, answers
-        };
+    let segments = built
+        .iter()
+        .flat_map(|b| b.output.segments.iter().map(move |s| (b.output.number, s)))
+        .map(|(n, s)| (format!("sheet{n}.{}", s.id), serde_json::to_value(s).expect("a segment serialises")))
+        .collect();
+    let units = "SI: m, m/s, m/s², rad, rad/s, rad/s², kg, N, N·m";
+    let r = Results { units, title: p.info.title(), sheets, answers, segments };
     serde_json::to_string_pretty(&r).expect("results serialise")
 }
 
@@ -198,6 +203,9 @@ pub fn outputs(p: &Project, built: &[Built], formats: &[Format]) -> Result<Vec<(
             md.push_str(&report::markdown(t, &stem));
         }
         files.push((format!("{stem}-tables.md"), md.into_bytes()));
+        if !b.output.segments.is_empty() {
+            files.push((format!("{stem}-segments.csv"), report::segments_csv(&b.output.segments, &stem).into_bytes()));
+        }
     }
     files.push(("results.json".into(), results_json(p, built).into_bytes()));
     Ok(files)

@@ -71,6 +71,12 @@ pub struct Seg {
     pub from: Vec2,
     pub to: Vec2,
     pub kind: SegKind,
+    /// The points it belongs to, as the mechanism names them: the point X of an absolute
+    /// vector (and ""), the pair (X, Y) of a relative one or of its components (v_XY, aⁿ_XY).
+    pub of: (String, String),
+    /// Whether it starts at the pole: an absolute vector, or a component relative to a point
+    /// of the frame (πn_BC).
+    pub from_pole: bool,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -91,8 +97,8 @@ impl Plan {
     fn image(&mut self, label: impl Into<String>, at: Vec2) {
         self.images.push(Image { label: label.into(), at });
     }
-    fn seg(&mut self, from: Vec2, to: Vec2, kind: SegKind) {
-        self.segs.push(Seg { from, to, kind });
+    fn seg(&mut self, from: Vec2, to: Vec2, kind: SegKind, of: (String, String), from_pole: bool) {
+        self.segs.push(Seg { from, to, kind, of, from_pole });
     }
     /// The plan turned 90° in `sense` about its pole,
     /// as the Zhukovsky lever uses it.
@@ -100,7 +106,7 @@ impl Plan {
         let t = |v: Vec2| v.turn_90() * sense.sign();
         Plan {
             images: self.images.iter().map(|i| Image { label: i.label.clone(), at: t(i.at) }).collect(),
-            segs: self.segs.iter().map(|s| Seg { from: t(s.from), to: t(s.to), kind: s.kind }).collect(),
+            segs: self.segs.iter().map(|s| Seg { from: t(s.from), to: t(s.to), ..s.clone() }).collect(),
         }
     }
 
@@ -109,6 +115,11 @@ impl Plan {
         let ends = self.segs.iter().flat_map(|s| [s.from, s.to]);
         ends.chain(self.images.iter().map(|i| i.at)).map(Norm::norm).fold(0.0, f64::max)
     }
+}
+
+/// A relation's points by their names: (X, Y) of v_XY.
+fn pair(m: &Mechanism, r: &Relation) -> (String, String) {
+    (m.name(r.x).to_string(), m.name(r.y).to_string())
 }
 
 fn label(m: &Mechanism, id: PointId) -> String {
@@ -126,7 +137,7 @@ fn images_and_absolutes(m: &Mechanism, s: &State, plan: &mut Plan, acc: bool) {
         let at = if acc { k.a } else { k.v };
         plan.image(label(m, id), at);
         if !m.is_mass_centre(id) {
-            plan.seg(Vec2::ZERO, at, SegKind::Absolute);
+            plan.seg(Vec2::ZERO, at, SegKind::Absolute, (m.name(id).to_string(), String::new()), true);
         }
     }
 }
@@ -140,7 +151,8 @@ pub fn velocity_plan(m: &Mechanism, s: &State) -> Plan {
         if m.is_frame(r.y) && !r.sliding {
             continue; // the relative vector is the absolute one already drawn
         }
-        plan.seg(from, to, if r.sliding { SegKind::Sliding } else { SegKind::Relative });
+        let kind = if r.sliding { SegKind::Sliding } else { SegKind::Relative };
+        plan.seg(from, to, kind, pair(m, &r), m.is_frame(r.y));
     }
     plan
 }
@@ -159,21 +171,21 @@ pub fn acceleration_plan(m: &Mechanism, s: &State) -> Plan {
             let v_rel = x.v - y.v;
             let cor = v_rel.turn_90() * (2.0 * link.omega);
             let k = y.a + cor;
-            plan.seg(y.a, k, SegKind::Coriolis);
+            plan.seg(y.a, k, SegKind::Coriolis, pair(m, &r), m.is_frame(r.y));
             plan.image("k", k);
-            plan.seg(k, x.a, SegKind::Sliding);
+            plan.seg(k, x.a, SegKind::Sliding, pair(m, &r), false);
             continue;
         }
         let (_, an, _) = relative(x.p - y.p, link);
         n += 1;
         let corner = y.a + an;
-        plan.seg(y.a, corner, SegKind::Normal);
+        plan.seg(y.a, corner, SegKind::Normal, pair(m, &r), m.is_frame(r.y));
         plan.image(format!("n{n}"), corner);
-        plan.seg(corner, x.a, SegKind::Tangential);
+        plan.seg(corner, x.a, SegKind::Tangential, pair(m, &r), false);
         // The whole relative acceleration: the line on which the images of the link's other
         // points (its centre of mass) lie by similarity.
         if !m.is_frame(r.y) {
-            plan.seg(y.a, x.a, SegKind::Relative);
+            plan.seg(y.a, x.a, SegKind::Relative, pair(m, &r), false);
         }
     }
     plan

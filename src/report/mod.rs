@@ -4,9 +4,11 @@
 pub mod cam;
 pub mod gears;
 pub mod lever;
+pub mod segments;
 
 mod table;
 
+pub use segments::{Segment, segments_csv};
 pub use table::{Column, ForceKind, NumTable, Quantity, Row, Sub, SubWord, Unit, ascii_key};
 
 use std::fmt::Write;

@@ -244,6 +244,7 @@ pub fn ascii_key(s: &str) -> String {
             'φ' => "phi",
             'ψ' => "psi",
             'ω' => "omega",
+            'π' => "pi",
             'ⁿ' => "n",
             'ᵗ' => "t",
             'ᵏ' => "k",

@@ -107,6 +107,8 @@ pub struct SheetOutput {
     pub results: serde_json::Value,
     /// Things the user should know about this sheet (printed, the build continues).
     pub diagnostics: Vec<String>,
+    /// The segments a student measures on its drawings (`sheetN-segments.csv`).
+    pub segments: Vec<crate::report::Segment>,
 }
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

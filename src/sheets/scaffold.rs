@@ -12,7 +12,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{Group, Ink, Item, Scene};
 use crate::drawing::table;
 use crate::drawing::text::{LabelText, TooLong};
-use crate::report::{NoteTable, NumTable, Row};
+use crate::report::{NoteTable, NumTable, Row, Segment};
 use kurbo::Rect;
 
 /// A sheet as its module composes it: everything but the frame and the title block.
@@ -32,6 +32,8 @@ pub struct Composition {
     pub diagnostics: Vec<String>,
     /// The longer side of the smallest velocity or acceleration plan, mm (sheet 1).
     pub smallest_plan_mm: Option<f64>,
+    /// The segments a student measures on its drawings, in drawing order.
+    pub segments: Vec<Segment>,
 }
 
 /// The whole sheet: the frame, the composition's groups, the title block.
@@ -102,12 +104,12 @@ pub fn measure(scene: &Scene, c: &Composition) -> Layout {
 pub fn finish(ctx: &Context, kind: SheetKind, c: Composition) -> Result<SheetOutput, SheetError> {
     let scene = scene(ctx, kind, &c)?;
     let layout = measure(&scene, &c);
-    let Composition { tables, mut results, mut diagnostics, .. } = c;
+    let Composition { tables, mut results, mut diagnostics, segments, .. } = c;
     diagnostics.extend(layout.problems.iter().map(|p| format!("layout: {p}")));
     if let serde_json::Value::Object(map) = &mut results {
         map.insert("layout".into(), serde_json::to_value(&layout).expect("the layout serialises"));
     }
-    Ok(SheetOutput { number: kind.number, scene, tables, results, diagnostics })
+    Ok(SheetOutput { number: kind.number, scene, tables, results, diagnostics, segments })
 }
 
 /// A table of the note in `lang`: titled `title`, its value columns headed `column_titles`

@@ -162,6 +162,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         results: serde_json::Value::Null,
         diagnostics: Vec::new(),
         smallest_plan_mm: None,
+        segments: Vec::new(),
     };
     Ok(CamBuild {
         composition,

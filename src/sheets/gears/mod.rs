@@ -89,6 +89,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         results: serde_json::Value::Null,
         diagnostics: Vec::new(),
         smallest_plan_mm: None,
+        segments: Vec::new(),
     };
     Ok(GearsBuild { composition, mesh: drawn, planetary_mu })
 }

@@ -10,6 +10,7 @@ use super::labels::LeverWords;
 use super::mechanism_view::{MechanismView, TRAJECTORY, world_extent};
 use super::note_tables::{note_tables, sheet_table, tables_group, with_units};
 use super::plans_view::{PlanCell, Sizing, draw_plan, label_bounds, size_plans};
+use super::segments::{self, PlanKind, plan_segments};
 use crate::drawing::fmt;
 use crate::drawing::frame;
 use crate::drawing::layout::Layout;
@@ -23,11 +24,12 @@ use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
 use crate::project::LeverProject;
 use crate::report::NoteTable;
-use crate::report::ascii_key;
 use crate::report::lever::ForceTables;
+use crate::report::{Segment, ascii_key};
 use crate::sheets::scaffold::{self, Composition};
 use crate::sheets::{Context, SheetKind};
 use kurbo::{Point, Rect};
+use std::collections::BTreeSet;
 
 /// The scales chosen for the sheet.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -129,13 +131,18 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     let vplans: Vec<_> = k.positions.iter().map(|p| velocity_plan(&inp.project.mechanism, &p.state)).collect();
     let velocity = PlansRegion {
         id: "velocity-plans",
+        kind: &segments::VELOCITY,
         region: vel_region,
         title: l.velocity_plans(),
         pole: "p",
         symbol: "v",
         unit: c.unit_v_per_mm(),
     };
-    let (vel, vdrawn, mu_v) = plans_group(&velocity, &vplans, k.positions.iter().collect(), &words);
+    let sheet = format!("sheet{}", inp.kind.number);
+    let ids: BTreeSet<String> = inp.notes.iter().flat_map(|n| n.answers(&sheet)).map(|a| a.id).collect();
+    let answer = AnswerKeys { sheet, ids };
+    let (vel, vdrawn, mu_v, mut drawn_segments) =
+        plans_group(&velocity, &vplans, k.positions.iter().collect(), &words, &answer);
 
     // Acceleration plans: the chosen positions, one common μ_a.
     let acc_region = match force_region {
@@ -146,6 +153,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         k.acceleration.iter().map(|&i| acceleration_plan(&inp.project.mechanism, &k.positions[i].state)).collect();
     let acceleration = PlansRegion {
         id: "acceleration-plans",
+        kind: &segments::ACCELERATION,
         region: acc_region,
         title: l.acceleration_plans(),
         pole: "π",
@@ -153,7 +161,8 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         unit: c.unit_a_per_mm(),
     };
     let positions = k.acceleration.iter().map(|&i| &k.positions[i]).collect();
-    let (acc, adrawn, mu_a) = plans_group(&acceleration, &aplans, positions, &words);
+    let (acc, adrawn, mu_a, acc_segments) = plans_group(&acceleration, &aplans, positions, &words, &answer);
+    drawn_segments.extend(acc_segments);
 
     let tables = tables_group(&notes, &words);
     let (forces, force_scales) = force_groups(force_region, force_input.as_ref(), mech.region);
@@ -168,6 +177,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         results: serde_json::Value::Null,
         diagnostics: Vec::new(),
         smallest_plan_mm: vdrawn.iter().chain(&adrawn).map(|p| p.size_mm[0].max(p.size_mm[1])).reduce(f64::min),
+        segments: drawn_segments,
     };
     let scene = scaffold::scene(inp.ctx, inp.kind, &composition)?;
     let layout = scaffold::measure(&scene, &composition);
@@ -353,11 +363,18 @@ pub struct PlanDrawn {
 /// quantity and unit of their scale.
 struct PlansRegion<'a> {
     id: &'a str,
+    kind: &'a PlanKind,
     region: Rect,
     title: &'a str,
     pole: &'a str,
     symbol: &'a str,
     unit: &'a str,
+}
+
+/// The sheet's name in ids ("sheet1") and the answer keys of its note's tables.
+struct AnswerKeys {
+    sheet: String,
+    ids: BTreeSet<String>,
 }
 
 /// Draws plans in cells filling the region below its header (see [`size_plans`]); returns
@@ -367,7 +384,8 @@ fn plans_group(
     plans: &[Plan],
     positions: Vec<&Position>,
     words: &LeverWords,
-) -> (Group, Vec<PlanDrawn>, Option<f64>) {
+    answer: &AnswerKeys,
+) -> (Group, Vec<PlanDrawn>, Option<f64>, Vec<Segment>) {
     let (l, lang) = (words.sheet, words.lang);
     let mut g = Group::new(r.id, r.region);
     let body = Rect::new(r.region.x0, r.region.y0 + HEADER, r.region.x1, r.region.y1);
@@ -387,6 +405,7 @@ fn plans_group(
         LabelText::new("μ", r.symbol).with_tail(format!(": {}", l.own_scales()))
     };
     region_header(&mut g, r.region, r.title, &[header]);
+    let mut segments = Vec::new();
     for ((plan, &cell), (pos, &mu)) in plans.iter().zip(&sizing.cells).zip(positions.iter().zip(&sizing.mu)) {
         let mut labels = Labels::new();
         let title = l.position(&pos.label);
@@ -402,6 +421,7 @@ fn plans_group(
         draw_plan(&mut g, &c, &mut labels);
         labels.place(&mut g, label_bounds(cell));
         g.part_from(format!("plan.{}.{}", r.symbol, ascii_key(&pos.label)), start);
+        segments.extend(plan_segments(plan, r.kind, &pos.label, mu, &answer.sheet, &|id| answer.ids.contains(id)));
     }
     let drawn = positions
         .iter()
@@ -409,5 +429,5 @@ fn plans_group(
         .zip(&sizing.mu)
         .map(|((p, size_mm), &mu)| PlanDrawn { position: p.label.clone(), mu, size_mm })
         .collect();
-    (g, drawn, sizing.common.then(|| sizing.mu[0]))
+    (g, drawn, sizing.common.then(|| sizing.mu[0]), segments)
 }

@@ -9,6 +9,7 @@ mod mechanism_view;
 mod note_tables;
 mod plans_view;
 pub mod results;
+mod segments;
 
 use super::scaffold::{self, Composition};
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};

@@ -1,0 +1,64 @@
+//! The segments of a velocity or acceleration plan as the student measures them: `pb` (the
+//! pole to an image: v_B), `ab` (v_BA), `πb` (a_B), `an_BA` and `n_BAb` (the normal and
+//! tangential components of a_BA), each tied to its answer key when the note's tables have it.
+
+use crate::lever::plans::{Plan, SegKind};
+use crate::num::math::Norm;
+use crate::report::{Segment, ascii_key};
+
+/// A plan's kind: its id letter, its pole's letter, the note's table and the quantity's
+/// letter and unit.
+pub struct PlanKind {
+    pub symbol: &'static str,
+    pub pole: &'static str,
+    pub table: &'static str,
+    pub unit: &'static str,
+}
+
+pub const VELOCITY: PlanKind = PlanKind { symbol: "v", pole: "p", table: "velocities", unit: "m/s" };
+pub const ACCELERATION: PlanKind = PlanKind { symbol: "a", pole: "π", table: "accelerations", unit: "m/s²" };
+
+/// Every vector of `plan` (drawn at `mu`, unit per mm) at position `label` as a segment;
+/// `answer` tells whether the note has an answer key (`sheet1.velocities.v_B.3`).
+pub fn plan_segments(
+    plan: &Plan,
+    kind: &PlanKind,
+    label: &str,
+    mu: f64,
+    sheet: &str,
+    answer: &dyn Fn(&str) -> bool,
+) -> Vec<Segment> {
+    let position = ascii_key(label);
+    let mut out: Vec<Segment> = Vec::new();
+    for s in &plan.segs {
+        let (x, y) = (s.of.0.as_str(), s.of.1.as_str());
+        // A component from a point of the frame starts at the pole: πn_BC.
+        let (lx, ly) = (x.to_lowercase(), if s.from_pole { kind.pole.to_string() } else { y.to_lowercase() });
+        let (name, row) = match (s.kind, kind.symbol) {
+            (SegKind::Absolute, q) => (format!("{}{lx}", kind.pole), format!("{q}_{x}")),
+            (SegKind::Relative, q) => (format!("{ly}{lx}"), format!("{q}_{x}{y}")),
+            (SegKind::Normal, _) => (format!("{ly}n_{x}{y}"), format!("an_{x}{y}")),
+            (SegKind::Tangential, _) => (format!("n_{x}{y}{lx}"), format!("at_{x}{y}")),
+            (SegKind::Coriolis, _) => (format!("{ly}k_{x}{y}"), format!("ak_{x}{y}")),
+            (SegKind::Sliding, "v") => (format!("{ly}{lx}"), format!("v_{x}{y}")),
+            (SegKind::Sliding, _) => (format!("k_{x}{y}{lx}"), format!("ar_{x}{y}")),
+        };
+        let key = format!("{sheet}.{}.{}.{position}", kind.table, ascii_key(&row));
+        let value = (s.to - s.from).norm();
+        let id = format!("plan.{}.{position}.{}", kind.symbol, ascii_key(&name));
+        // A plan draws a vector once; a name met twice (never, by construction) keeps the first.
+        if out.iter().any(|o| o.id == id) {
+            continue;
+        }
+        out.push(Segment {
+            id,
+            name,
+            length_mm: value / mu,
+            quantity: answer(&key).then_some(key),
+            value,
+            unit: kind.unit,
+            scale: mu,
+        });
+    }
+    out
+}
