@@ -6,6 +6,7 @@
 //!
 //! **Architecture invariant:** backends compute no geometry and choose no scales.
 
+pub mod dxf;
 pub mod pdf;
 pub mod png;
 pub mod shapes;
