@@ -113,10 +113,35 @@ struct BuildArgs {
     /// Skip the PDF.
     #[arg(long)]
     no_pdf: bool,
+    /// Also write each sheet as DXF for AutoCAD, KOMPAS or LibreCAD (sheetN.dxf).
+    #[arg(long)]
+    dxf: bool,
+    /// The DXF's version: r2000 (AC1015, what current AutoCAD opens; the default) or r12
+    /// (AC1009, for old programs). Implies `--dxf`.
+    #[arg(long, value_enum, value_name = "VERSION")]
+    dxf_version: Option<Dxf>,
     /// Also write each sheet's constructions alone, in red at their places on A1, to print
     /// on film and lay over a hand drawing: sheetN-overlay.svg and sheetN-overlay.pdf.
     #[arg(long)]
     overlay: bool,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Dxf {
+    R2000,
+    R12,
+}
+
+impl BuildArgs {
+    /// The formats the options ask for.
+    fn formats(&self) -> Vec<pipeline::Format> {
+        let dxf = match (self.dxf, self.dxf_version) {
+            (_, Some(Dxf::R12)) => Some(pipeline::DxfVersion::R12),
+            (true, _) | (_, Some(Dxf::R2000)) => Some(pipeline::DxfVersion::R2000),
+            (false, None) => None,
+        };
+        pipeline::formats(!self.no_pdf, (!self.no_png).then_some(self.png_dpi), dxf)
+    }
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -228,7 +253,7 @@ fn init(args: &InitArgs, dir: Option<&Path>) -> Result<(), Failure> {
 /// `tmm build --all`: every variant, the summary, exit 1 when any was refused.
 fn build_all(args: &BuildArgs, dir: Option<&Path>) -> Result<(), Failure> {
     let cat = catalogue::load(dir).map_err(Failure::Input)?;
-    let formats = pipeline::formats(!args.no_pdf, (!args.no_png).then_some(args.png_dpi));
+    let formats = args.formats();
     let lang = language(args.lang);
     let run = batch::Batch { output: &args.output, sheets: args.sheets.clone(), formats, lang };
     let start = std::time::Instant::now();
@@ -273,7 +298,7 @@ fn build(args: &BuildArgs, dir: Option<&Path>) -> Result<(), Failure> {
             eprintln!("warning: in {name}: sheet {}, {d}", b.output.number);
         }
     }
-    let formats = pipeline::formats(!args.no_pdf, (!args.no_png).then_some(args.png_dpi));
+    let formats = args.formats();
     let mut files = pipeline::outputs(&project, &built, &formats).map_err(|e| Failure::Output(e.into()))?;
     if args.overlay {
         files.extend(pipeline::overlays(&built).map_err(|e| Failure::Output(e.into()))?);

@@ -3,6 +3,7 @@
 //! what it needs, and never names a sheet.
 
 pub use crate::backend::Format;
+pub use crate::backend::dxf::DxfVersion;
 use crate::backend::{self, BackendError, svg};
 use crate::project::{self, Project, Refusal, Warning};
 use crate::report;
@@ -151,14 +152,15 @@ pub fn results_json(p: &Project, built: &[Built]) -> String {
     serde_json::to_string_pretty(&r).expect("results serialise")
 }
 
-/// The formats a build writes: the SVG always, then the PDF and the PNG preview (at
-/// `png_dpi`) when asked for, in that order.
-pub fn formats(pdf: bool, png_dpi: Option<f64>) -> Vec<Format> {
+/// The formats a build writes: the SVG always, then the PDF, the PNG preview (at
+/// `png_dpi`) and the DXF (in `dxf`'s version) when asked for, in that order.
+pub fn formats(pdf: bool, png_dpi: Option<f64>, dxf: Option<DxfVersion>) -> Vec<Format> {
     let mut f = vec![Format::Svg];
     if pdf {
         f.push(Format::Pdf);
     }
     f.extend(png_dpi.map(|dpi| Format::Png { dpi }));
+    f.extend(dxf.map(Format::Dxf));
     f
 }
 

@@ -36,7 +36,7 @@ fn default_build_writes_every_output_and_says_so_on_stdout() {
     let o = run(&["--png-dpi", "20"], &out);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     let stdout = String::from_utf8_lossy(&o.stdout);
-    assert!(stdout.contains("sheet 1, 2, 3 written to") && stdout.contains("(27 files)"), "{stdout}");
+    assert!(stdout.contains("sheet 1, 2, 3 written to") && stdout.contains("(28 files)"), "{stdout}");
     let expected = [
         ".tmm-lock",
         ".tmm-outputs",
@@ -45,6 +45,7 @@ fn default_build_writes_every_output_and_says_so_on_stdout() {
         "sheet1-balancing.csv",
         "sheet1-inertia.csv",
         "sheet1-reactions.csv",
+        "sheet1-segments.csv",
         "sheet1-tables.md",
         "sheet1-velocities.csv",
         "sheet1.pdf",
@@ -76,6 +77,27 @@ fn default_build_writes_every_output_and_says_so_on_stdout() {
         serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
     assert_eq!(json["sheet1"]["structure"]["dof"], 1);
     assert_eq!(json["sheet1"]["positions"].as_array().unwrap().len(), 9, "8 positions and the second extreme");
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn dxf_and_overlay_are_written_when_asked_for() {
+    let out = temp_dir("dxf");
+    let o = run(&["build", "--sheet", "2", "--no-png", "--no-pdf", "--dxf", "--overlay"], &out);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let files = listing(&out);
+    for f in ["sheet2.dxf", "sheet2-overlay.svg", "sheet2-overlay.pdf"] {
+        assert!(files.contains(&f.to_string()), "{f} missing from {files:?}");
+    }
+    let dxf = std::fs::read_to_string(out.join("sheet2.dxf")).unwrap();
+    assert!(dxf.contains("AC1015"), "R2000 by default");
+    let o = run(&["build", "--sheet", "2", "--no-png", "--no-pdf", "--dxf-version", "r12"], &out);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(std::fs::read_to_string(out.join("sheet2.dxf")).unwrap().contains("AC1009"));
+    // The overlay is not asked for this time: the manifest removes the last build's.
+    assert!(!listing(&out).contains(&"sheet2-overlay.svg".to_string()));
+    let o = run(&["build", "--dxf-version", "r14"], &out);
+    assert_eq!(o.status.code(), Some(2), "an unknown DXF version is a usage error");
     let _ = std::fs::remove_dir_all(&out);
 }
 
@@ -112,6 +134,7 @@ fn a_rebuild_leaves_no_stale_outputs_and_touches_nothing_else() {
             "notes.txt",
             "results.json",
             "sheet1-accelerations.csv",
+            "sheet1-segments.csv",
             "sheet1-tables.md",
             "sheet1-velocities.csv",
             "sheet1.svg"

@@ -24,6 +24,8 @@ pub enum Format {
     Png {
         dpi: f64,
     },
+    /// The drawing for CAD programs (AutoCAD, KOMPAS, LibreCAD).
+    Dxf(dxf::DxfVersion),
 }
 
 impl Format {
@@ -33,6 +35,7 @@ impl Format {
             Format::Svg => "svg",
             Format::Pdf => "pdf",
             Format::Png { .. } => "png",
+            Format::Dxf(_) => "dxf",
         }
     }
 }
@@ -43,6 +46,7 @@ pub fn write(scene: &Scene, format: Format) -> Result<Vec<u8>, BackendError> {
         Format::Svg => svg::write(scene).map(String::into_bytes),
         Format::Pdf => pdf::write(scene),
         Format::Png { dpi } => png::write(scene, dpi),
+        Format::Dxf(version) => dxf::write(scene, version),
     }
 }
 
