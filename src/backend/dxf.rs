@@ -1077,7 +1077,14 @@ mod tests {
     fn scene(items: Vec<Item>) -> Scene {
         let mut g = Group::new("velocity plans", Rect::new(0.0, 0.0, 100.0, 100.0));
         g.items = items;
-        Scene { ink: Default::default(), name: "s".into(), width: 100.0, height: 80.0, title: "t".into(), groups: vec![g] }
+        Scene {
+            ink: Default::default(),
+            name: "s".into(),
+            width: 100.0,
+            height: 80.0,
+            title: "t".into(),
+            groups: vec![g],
+        }
     }
 
     fn dxf(s: &Scene, v: DxfVersion) -> String {
