@@ -1,5 +1,6 @@
 //! The command line: `tmm [build [PROJECT.yaml | --task T --variant V | --all]] [-o DIR]
-//! [--sheet N]…`, `tmm list [--task T]`, `tmm init --task T --variant V`.
+//! [--sheet N]…`, `tmm list [--task T]`, `tmm init --task T --variant V`, `tmm check [PROJECT]
+//! VALUES.csv` (its own exit codes: `cli/check.rs`).
 //!
 //! Exit codes: 0 built; 1 the project was refused (unreadable, too large, not UTF-8, invalid,
 //! or a mechanism that cannot be analysed; a catalogue variant incomplete in the guide; in a
@@ -9,6 +10,7 @@
 
 mod batch;
 mod catalogue;
+mod check;
 mod summary;
 pub mod write;
 
@@ -45,6 +47,9 @@ enum Command {
     List(ListArgs),
     /// Write the project file of a task's variant, every value commented with its source.
     Init(InitArgs),
+    /// Check a student's values (CSV) against the exact answers: exit 0 when all pass, 1
+    /// when any fails, 2 when the file cannot be used.
+    Check(check::CheckArgs),
 }
 
 #[derive(Args)]
@@ -176,6 +181,7 @@ pub fn run() -> ExitCode {
         }
         Some(Command::List(args)) => list(&args, dir),
         Some(Command::Init(args)) => init(&args, dir),
+        Some(Command::Check(args)) => return check::run(&args, dir),
         Some(Command::Build(args)) => build(&args, dir),
         None => build(&cli.build, dir),
     };

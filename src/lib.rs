@@ -28,6 +28,7 @@
 pub mod backend;
 pub mod cams;
 pub mod catalogue;
+pub mod check;
 pub mod cli;
 pub mod drawing;
 pub mod font;

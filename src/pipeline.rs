@@ -5,6 +5,7 @@
 pub use crate::backend::Format;
 pub use crate::backend::dxf::DxfVersion;
 use crate::backend::{self, BackendError, svg};
+use crate::check;
 use crate::project::{self, Project, Refusal, Warning};
 use crate::report;
 /// The course's sheets, their numbers and the project sections they draw.
@@ -126,7 +127,7 @@ struct Results<'a> {
     sheets: serde_json::Map<String, serde_json::Value>,
     /// Every value of every note table under its identifier, in the table's unit.
     answers: serde_json::Map<String, serde_json::Value>,
-    /// Every segment a student measures, under its identifier (`sheet1.plan.v.3.pb`).
+    /// Every segment a student measures, under its identifier (`sheet<N>.plan.v.3.pb`).
     segments: serde_json::Map<String, serde_json::Value>,
 }
 
@@ -171,6 +172,29 @@ pub fn render(b: &Built, format: Format) -> Result<Vec<u8>, Error> {
         Format::Svg => Ok(b.svg.clone().into_bytes()),
         _ => Ok(backend::write(&b.output.scene, format)?),
     }
+}
+
+/// What `tmm check` compares a student's values with: every answer key and measured
+/// segment of the sheets the project has (a section refused leaves its sheet out; the
+/// others still count).
+pub fn reference(p: &Project) -> Result<check::Reference, Error> {
+    let built = match build(p, &[]) {
+        Err(Error::Refused(r)) if !r.buildable.is_empty() => {
+            let others: Vec<u32> = r.buildable.iter().copied().filter(|n| !r.blocks.contains(n)).collect();
+            if others.is_empty() {
+                return Err(Error::Refused(r));
+            }
+            build(p, &others)?
+        }
+        other => other?,
+    };
+    let mut reference = check::Reference::default();
+    for b in &built {
+        let prefix = format!("sheet{}", b.output.number);
+        reference.answers.extend(b.output.tables.iter().flat_map(|t| t.answers(&prefix)));
+        reference.segments.extend(b.output.segments.iter().map(|s| (format!("{prefix}.{}", s.id), s.clone())));
+    }
+    Ok(reference)
 }
 
 /// The overlay of every built sheet (see [`sheets::scaffold::overlay`]) as

@@ -11,7 +11,7 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 /// Module → the crate modules it may use (besides itself).
-const ALLOWED: [(&str, &[&str]); 14] = [
+const ALLOWED: [(&str, &[&str]); 15] = [
     ("num", &[]),
     ("font", &[]),
     ("lever", &["num"]),
@@ -24,8 +24,9 @@ const ALLOWED: [(&str, &[&str]); 14] = [
     ("backend", &["num", "font", "drawing::scene", "drawing::path"]),
     // The catalogue writes project files' text: it reads no project and draws nothing.
     ("catalogue", &["num", "drawing::labels", "drawing::label_set"]),
-    ("pipeline", &["num", "project", "sheets", "backend", "report"]),
-    ("cli", &["pipeline", "project", "catalogue", "num::digits", "drawing::labels::Language"]),
+    ("check", &["num", "report"]),
+    ("pipeline", &["num", "project", "sheets", "backend", "report", "check"]),
+    ("cli", &["pipeline", "project", "catalogue", "check", "num::digits", "drawing::labels::Language"]),
     ("lib", &["*"]),
 ];
 

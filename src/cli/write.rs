@@ -148,6 +148,16 @@ fn read_manifest(dir: &Path) -> BTreeSet<String> {
 
 /// Writes `bytes` to a new temporary file in `dir` named after `name`, synced to the disk,
 /// so that renaming it into place later cannot expose a partial file after a crash.
+/// One file written on its own, atomically (a temporary file beside it renamed into place),
+/// outside any build's manifest: a report the user names.
+pub fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
+    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = path.file_name().with_context(|| format!("{} names no file", path.display()))?;
+    let temp = write_temp(dir, &name.to_string_lossy(), bytes)?;
+    temp.persist(path).map_err(|e| e.error).with_context(|| format!("cannot write {}", path.display()))?;
+    Ok(())
+}
+
 fn write_temp(dir: &Path, name: &str, bytes: &[u8]) -> Result<NamedTempFile> {
     let prefix = format!(".{name}{TEMP_MARK}");
     let mut builder = tempfile::Builder::new();

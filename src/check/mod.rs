@@ -1,0 +1,360 @@
+//! `tmm check`: a student's values against the exact answers. Pure: the reference (every
+//! answer key and measured segment of the built sheets) and the student's rows in, one
+//! verdict per row out; reading the file is [`read`], the units [`units`], the writers
+//! [`mod@write`].
+//!
+//! Tolerances: the course's where it states one (the contact ratio measured on the drawing
+//! against the analytic one: 10 %), else 2 % of the exact value or 0.5 mm on the paper,
+//! whichever is larger — the paper's millimetre at the student's scale when they give their
+//! lengths, else at the reference sheet's scale when the quantity is drawn there; a value
+//! whose exact answer is 0 with no scale known is allowed 2 % of the largest value of its
+//! row (the same quantity at the other positions), the size its drawing has.
+
+pub mod read;
+pub mod units;
+pub mod write;
+
+use crate::report::{Answer, Segment};
+use std::collections::BTreeMap;
+
+/// The course's relative tolerance where it states none.
+pub const RELATIVE: f64 = 0.02;
+/// What a ruler on paper is good for, mm.
+pub const PAPER_MM: f64 = 0.5;
+/// Answers the course gives its own tolerance: the contact ratio drawn vs analytic.
+const COURSE: &[(&str, f64)] = &[(".pair.epsilon", 0.10), (".pair.epsilon_drawn", 0.10)];
+
+/// What the student's values are checked against.
+#[derive(Debug, Clone, Default)]
+pub struct Reference {
+    /// Every answer key of every built sheet.
+    pub answers: Vec<Answer>,
+    /// Every measured segment, under its full id (`sheet1.plan.v.3.pb`).
+    pub segments: Vec<(String, Segment)>,
+}
+
+/// One row of the student's file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measured {
+    /// The file's line.
+    pub line: u64,
+    /// As the student wrote it: an answer key, a segment id or a course name ("v_B.3", "pb").
+    pub name: String,
+    pub given: Given,
+    pub tolerance: Option<Tolerance>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum Given {
+    /// A physical value in `unit` (empty: the answer's own).
+    Value { value: f64, unit: String },
+    /// A length on the student's drawing, mm, and the scale they drew it at (in the answer's
+    /// unit per mm, or `unit` per mm); without a scale, a segment's length on the reference
+    /// sheet is compared.
+    Paper { mm: f64, scale: Option<f64>, unit: String },
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Tolerance {
+    /// A share of the exact value (0.05 for 5 %).
+    Relative(f64),
+    /// In the answer's unit.
+    Absolute(f64),
+}
+
+/// One value checked.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Verdict {
+    pub line: u64,
+    /// The identifier it was matched to.
+    pub id: String,
+    /// As the student wrote it.
+    pub name: String,
+    pub unit: String,
+    pub exact: f64,
+    pub student: f64,
+    /// student − exact, in `unit`.
+    pub deviation: f64,
+    /// The deviation allowed, in `unit`.
+    pub tolerance: f64,
+    /// Where the tolerance comes from: "course", "2 %", "0.5 mm", "given".
+    pub rule: &'static str,
+    pub pass: bool,
+}
+
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CheckError {
+    #[error("line {line}: '{name}' is not a value of these sheets{}", hint(close))]
+    Unknown { line: u64, name: String, close: Vec<String> },
+    #[error("line {line}: '{name}' could be any of {}…; write its position or column too (v_B.3, or a 'position' column)", ids.join(", "))]
+    Ambiguous { line: u64, name: String, ids: Vec<String> },
+    #[error("line {line}: '{unit}' is not a unit of {id} (write it in {expected})")]
+    Unit { line: u64, unit: String, id: String, expected: String },
+    #[error("line {line}: {name} is a value, not a drawn segment: give the scale you drew it at (a 'scale' column)")]
+    NoScale { line: u64, name: String },
+}
+
+fn hint(close: &[String]) -> String {
+    if close.is_empty() { String::new() } else { format!("; did you mean {}?", close.join(", ")) }
+}
+
+/// What a name can stand for: an answer, or a segment (its length and the answer it draws).
+#[derive(Debug, Clone)]
+struct Target {
+    id: String,
+    value: f64,
+    unit: &'static str,
+    /// Its drawing's scale on the reference sheet, unit per mm.
+    scale: Option<f64>,
+    /// A segment's length on the reference sheet, mm.
+    length_mm: Option<f64>,
+    /// The largest |value| of its row (the same quantity at every position).
+    row_max: f64,
+}
+
+impl Reference {
+    fn targets(&self) -> Vec<Target> {
+        let row = |id: &str| id.rsplit_once('.').map_or(id, |(r, _)| r).to_string();
+        let mut row_max: BTreeMap<String, f64> = BTreeMap::new();
+        for a in &self.answers {
+            let m = row_max.entry(row(&a.id)).or_insert(0.0);
+            *m = m.max(a.value.abs());
+        }
+        let drawn: BTreeMap<&str, f64> =
+            self.segments.iter().filter_map(|(_, s)| Some((s.quantity.as_deref()?, s.scale))).collect();
+        let answers = self.answers.iter().map(|a| Target {
+            id: a.id.clone(),
+            value: a.value,
+            unit: a.unit,
+            scale: drawn.get(a.id.as_str()).copied(),
+            length_mm: None,
+            row_max: row_max[&row(&a.id)],
+        });
+        let segments = self.segments.iter().map(|(id, s)| Target {
+            id: id.clone(),
+            value: s.value,
+            unit: s.unit,
+            scale: Some(s.scale),
+            length_mm: Some(s.length_mm),
+            row_max: s.value.abs(),
+        });
+        answers.chain(segments).collect()
+    }
+}
+
+/// A name reduced for matching: no sheet prefix, case and underscores ignored, Greek
+/// letters by their names ("ω_2" = "omega2" = "OMEGA_2").
+fn folded(name: &str) -> String {
+    let key = crate::report::ascii_key(name.trim());
+    key.chars().filter(|&c| c != '_').flat_map(char::to_lowercase).collect()
+}
+
+/// The target a student's name stands for: the whole id; or the id's end after a dot
+/// (`v_B.3`, `plan.v.3.pb`); or, ignoring case, underscores and Greek spelling, the same.
+fn resolve<'a>(targets: &'a [Target], m: &Measured) -> Result<&'a Target, CheckError> {
+    let found = matching(targets, m.name.trim());
+    // A segment's position comes before its name (plan.v.3.pb): "pb.3" is that too.
+    let found = match (found.is_empty(), m.name.trim().rsplit_once('.')) {
+        (true, Some((name, position))) => matching(targets, &format!("{position}.{name}")),
+        _ => found,
+    };
+    let name = m.name.trim();
+    match found.as_slice() {
+        [one] => Ok(one),
+        [] => Err(CheckError::Unknown { line: m.line, name: name.into(), close: close_names(targets, name) }),
+        many => Err(CheckError::Ambiguous {
+            line: m.line,
+            name: name.into(),
+            ids: many.iter().take(6).map(|t| t.id.clone()).collect(),
+        }),
+    }
+}
+
+/// The targets `name` stands for (see [`resolve`]).
+fn matching<'a>(targets: &'a [Target], name: &str) -> Vec<&'a Target> {
+    if let Some(t) = targets.iter().find(|t| t.id == name) {
+        return vec![t];
+    }
+    let by = |f: &dyn Fn(&Target) -> bool| targets.iter().filter(|t| f(t)).collect::<Vec<_>>();
+    let suffix = by(&|t| t.id.ends_with(&format!(".{name}")));
+    if !suffix.is_empty() {
+        return suffix;
+    }
+    let want = folded(name);
+    let folded_match = by(&|t| {
+        let parts: Vec<&str> = t.id.split('.').collect();
+        (1..parts.len()).any(|i| folded(&parts[i..].join(".")) == want)
+    });
+    if !folded_match.is_empty() {
+        return folded_match;
+    }
+    // A quantity without its position or column ("v_B"): every one of its row, so that the
+    // message lists them.
+    by(&|t| t.id.rsplit_once('.').is_some_and(|(row, _)| row.ends_with(&format!(".{name}"))))
+}
+
+/// Up to five known names nearest to `name` (by edit distance on their folded forms).
+fn close_names(targets: &[Target], name: &str) -> Vec<String> {
+    let want = folded(name);
+    let mut scored: Vec<(usize, &str)> = targets
+        .iter()
+        .map(|t| {
+            let parts: Vec<&str> = t.id.split('.').collect();
+            let best =
+                (1..parts.len()).map(|i| distance(&folded(&parts[i..].join(".")), &want)).min().unwrap_or(usize::MAX);
+            (best, t.id.as_str())
+        })
+        .collect();
+    scored.sort();
+    let limit = (want.len() / 3).max(2);
+    scored.into_iter().filter(|(d, _)| *d <= limit).take(5).map(|(_, id)| id.to_string()).collect()
+}
+
+/// Levenshtein distance.
+fn distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
+/// Checks every row: a verdict each, or the first row that cannot be checked.
+pub fn check(reference: &Reference, rows: &[Measured], over: Option<Tolerance>) -> Result<Vec<Verdict>, CheckError> {
+    let targets = reference.targets();
+    rows.iter().map(|m| verdict(&targets, m, over)).collect()
+}
+
+fn verdict(targets: &[Target], m: &Measured, over: Option<Tolerance>) -> Result<Verdict, CheckError> {
+    let t = resolve(targets, m)?;
+    let convert = |unit: &str| {
+        units::factor(unit, t.unit).ok_or_else(|| CheckError::Unit {
+            line: m.line,
+            unit: unit.into(),
+            id: t.id.clone(),
+            expected: units::spelled(t.unit),
+        })
+    };
+    // (exact, student, unit, the paper's scale for the 0.5 mm rule)
+    let (exact, student, unit, paper) = match &m.given {
+        Given::Value { value, unit } => (t.value, value * convert(unit)?, t.unit.to_string(), t.scale),
+        Given::Paper { mm, scale: Some(s), unit } => {
+            let mu = s * convert(unit)?;
+            (t.value, mm * mu, t.unit.to_string(), Some(mu))
+        }
+        Given::Paper { mm, scale: None, .. } => match t.length_mm {
+            Some(l) => (l, *mm, "mm".to_string(), Some(1.0)),
+            None => return Err(CheckError::NoScale { line: m.line, name: m.name.clone() }),
+        },
+    };
+    let course = COURSE.iter().find(|(end, _)| t.id.ends_with(end)).map(|&(_, r)| r);
+    let (tolerance, rule) = match (m.tolerance.or(over), course) {
+        (Some(Tolerance::Relative(r)), _) => (r * exact.abs(), "given"),
+        (Some(Tolerance::Absolute(a)), _) => (a, "given"),
+        (None, Some(r)) => (r * exact.abs(), "course"),
+        (None, None) => default_tolerance(exact, paper, t.row_max),
+    };
+    let deviation = student - exact;
+    // A hair of rounding on top: a value exactly at the limit passes.
+    let pass = deviation.abs() <= tolerance * (1.0 + 1e-9) + 1e-12;
+    Ok(Verdict {
+        line: m.line,
+        id: t.id.clone(),
+        name: m.name.clone(),
+        unit,
+        exact,
+        student,
+        deviation,
+        tolerance,
+        rule,
+        pass,
+    })
+}
+
+/// 2 % of the value or 0.5 mm on the paper at `paper` (unit per mm), whichever is larger;
+/// with no scale and an exact 0, 2 % of the row's largest value.
+fn default_tolerance(exact: f64, paper: Option<f64>, row_max: f64) -> (f64, &'static str) {
+    let relative = RELATIVE * exact.abs();
+    match paper {
+        Some(mu) if PAPER_MM * mu > relative => (PAPER_MM * mu, "0.5 mm"),
+        Some(_) => (relative, "2 %"),
+        None if relative > 0.0 => (relative, "2 %"),
+        None => (RELATIVE * row_max, "2 % of the row"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn reference() -> Reference {
+        let answer = |id: &str, value| Answer { id: id.into(), value, unit: "m/s" };
+        Reference {
+            answers: vec![answer("sheet1.velocities.v_B.0", 0.0), answer("sheet1.velocities.v_B.3", 1.0)],
+            segments: vec![(
+                "sheet1.plan.v.3.pb".into(),
+                Segment {
+                    id: "plan.v.3.pb".into(),
+                    name: "pb".into(),
+                    length_mm: 20.0,
+                    quantity: Some("sheet1.velocities.v_B.3".into()),
+                    value: 1.0,
+                    unit: "m/s",
+                    scale: 0.05,
+                },
+            )],
+        }
+    }
+
+    fn one(name: &str, given: Given) -> Verdict {
+        let m = Measured { line: 2, name: name.into(), given, tolerance: None };
+        check(&reference(), &[m], None).unwrap().remove(0)
+    }
+
+    #[test]
+    fn the_larger_of_two_percent_and_half_a_millimetre_at_the_drawings_scale() {
+        // Drawn at 0.05 (m/s)/mm: 0.5 mm is 0.025 m/s, more than 2 % of 1 m/s.
+        let v = one("v_B.3", Given::Value { value: 1.024, unit: String::new() });
+        assert!((v.tolerance - 0.025).abs() < 1e-15 && v.pass && v.rule == "0.5 mm");
+        // The student's own scale, 0.01 (m/s)/mm: 0.5 mm is 0.005, so 2 % rules.
+        let v = one("pb.3", Given::Paper { mm: 102.5, scale: Some(0.01), unit: String::new() });
+        assert!((v.tolerance - 0.02).abs() < 1e-15 && !v.pass && v.rule == "2 %");
+        // A length compared with the reference sheet's segment: 0.5 mm.
+        let v = one("plan.v.3.pb", Given::Paper { mm: 20.4, scale: None, unit: String::new() });
+        assert!(v.pass && v.unit == "mm" && (v.exact - 20.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn an_exact_zero_is_allowed_two_percent_of_its_row() {
+        let v = one("v_B.0", Given::Value { value: 0.015, unit: String::new() });
+        assert!((v.tolerance - 0.02).abs() < 1e-15 && v.pass, "{v:?}");
+        let v = one("v_B.0", Given::Value { value: 0.03, unit: String::new() });
+        assert!(!v.pass);
+    }
+
+    #[test]
+    fn names_in_any_spelling_resolve_and_an_unknown_one_suggests() {
+        let targets = reference().targets();
+        let m = |name: &str| Measured {
+            line: 2,
+            name: name.into(),
+            given: Given::Value { value: 1.0, unit: String::new() },
+            tolerance: None,
+        };
+        for name in ["sheet1.velocities.v_B.3", "velocities.v_B.3", "v_B.3", "V_B.3", "vb.3", "pb.3", "3.pb"] {
+            let t = resolve(&targets, &m(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+            assert!(t.id.ends_with(".3") || t.id.ends_with(".pb"), "{name} → {}", t.id);
+        }
+        match resolve(&targets, &m("v_C.3")) {
+            Err(CheckError::Unknown { close, .. }) => assert!(close.contains(&"sheet1.velocities.v_B.3".to_string())),
+            other => panic!("{other:?}"),
+        }
+    }
+}

@@ -1,0 +1,133 @@
+//! `tmm check` as a teacher runs it: the worked example's exact values pass, a wrong pb
+//! fails by name, lengths on a drawing with its scale are checked at that scale, an empty or
+//! unreadable file is refused with exit 2, an unknown name lists the close ones.
+// Tests compute their references with the platform's math; only src/ must not (clippy.toml).
+#![allow(clippy::disallowed_methods)]
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn temp(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("tmm-check-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn check(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_tmm")).arg("check").args(args).output().unwrap()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Every answer of the worked example, as `tmm build` writes them in results.json.
+fn answers() -> Vec<(String, f64, String)> {
+    let dir = std::env::temp_dir().join(format!("tmm-check-build-{}", std::process::id()));
+    let o = Command::new(env!("CARGO_BIN_EXE_tmm"))
+        .args(["build", "--no-png", "--no-pdf", "-o"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(o.status.success());
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("results.json")).unwrap()).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    json["answers"]
+        .as_object()
+        .unwrap()
+        .iter()
+        .map(|(id, a)| (id.clone(), a["value"].as_f64().unwrap(), a["unit"].as_str().unwrap().to_string()))
+        .collect()
+}
+
+#[test]
+fn the_worked_examples_exact_values_all_pass() {
+    let all = answers();
+    assert!(all.len() > 300);
+    let mut csv = String::from("id,value,unit\n");
+    for (id, v, u) in &all {
+        csv.push_str(&format!("{id},{v:.12},{u}\n"));
+    }
+    let o = check(&[temp("exact.csv", &csv).to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    assert!(stdout(&o).contains(&format!("{n} of {n} values pass", n = all.len())));
+}
+
+#[test]
+fn a_wrong_pb_fails_by_its_name_and_the_right_one_passes_at_the_students_scale() {
+    // v_A at any position from the guide's data alone: n₁ = 70 rev/min, l_OA = 0.12 m.
+    let v_a = 70.0 * std::f64::consts::PI / 30.0 * 0.12;
+    let text = format!(
+        "id;position;value;unit;mm;scale\n\
+         v_A;0;{};m/s;;\n\
+         pb;3;;;52,0;0,02\n\
+         pb;4;;;45;0,02\n\
+         v_B;3;1041;mm/s;;\n",
+        format!("{v_a:.4}").replace('.', ",")
+    );
+    let o = check(&[temp("pb.csv", &text).to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+    let out = stdout(&o);
+    let line =
+        |n: &str| out.lines().find(|l| l.starts_with(n)).unwrap_or_else(|| panic!("no line {n}:\n{out}")).to_string();
+    assert!(line("2 ").contains("sheet1.velocities.v_A.0") && line("2 ").ends_with("pass"), "{out}");
+    // 52.0 mm at 0.02 (m/s)/mm against pb = 52.04 mm: within 0.5 mm.
+    assert!(line("3 ").contains("sheet1.plan.v.3.pb") && line("3 ").ends_with("pass"), "{out}");
+    // 45 mm against pb = 36.95 mm at position 4: 0.9 m/s for 0.739 m/s.
+    assert!(line("4 ").contains("sheet1.plan.v.4.pb") && line("4 ").ends_with("FAIL"), "{out}");
+    assert!(line("5 ").ends_with("pass"), "mm/s converts: {out}");
+    assert!(out.contains("3 of 4 values pass"));
+}
+
+#[test]
+fn tolerances_given_per_row_and_for_all() {
+    // v_B at 3 is 1.0408 m/s: 1.06 is 1.8 % off (passes 2 %), fails a 1 % tolerance.
+    let text = "id,value,tolerance\nv_B.3,1.06,\nv_B.3,1.06,1%\nv_B.3,1.06,0.03\n";
+    let f = temp("tol.csv", text);
+    let o = check(&[f.to_str().unwrap()]);
+    let out = stdout(&o);
+    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert!(out.contains("2 of 3 values pass"), "{out}");
+    let o = check(&[f.to_str().unwrap(), "--tolerance", "1"]);
+    assert!(stdout(&o).contains("1 of 3 values pass"), "{}", stdout(&o));
+}
+
+#[test]
+fn bad_files_are_refused_with_exit_2_and_the_reason() {
+    for (text, says) in [
+        ("", "no values to check"),
+        ("id,value\n", "no values to check"),
+        ("id,unit\nv_B.3,m/s\n", "no column value"),
+        ("id,value\nv_B.3,fast\n", "line 2: value: 'fast' is not a number"),
+        ("id,value\nv_b.33,1\n", "did you mean"),
+        ("id,value,unit\nv_B.3,1,kg\n", "'kg' is not a unit of sheet1.velocities.v_B.3"),
+        ("id,value\nv_B,1\n", "could be any of"),
+        ("id,mm\nv_B.3,40\n", "give the scale"),
+    ] {
+        let o = check(&[temp("bad.csv", text).to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{text:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(says), "{text:?}: {}", stderr(&o));
+    }
+    let o = check(&["/nonexistent/values.csv"]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn the_report_is_written_as_markdown_or_csv() {
+    let f = temp("md.csv", "id,value\nsheet3.results.r_min,1\n");
+    let md = f.with_file_name("report.md");
+    let o = check(&[f.to_str().unwrap(), "-o", md.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    let text = std::fs::read_to_string(&md).unwrap();
+    assert!(text.starts_with("| line | id |") && text.contains("FAIL") && text.contains("0 of 1 values pass"));
+    let csv = f.with_file_name("report.csv");
+    check(&[f.to_str().unwrap(), "-o", csv.to_str().unwrap()]);
+    assert!(std::fs::read_to_string(&csv).unwrap().starts_with("line,id,name,exact,student"));
+}
