@@ -174,6 +174,14 @@ enum Failure {
 pub fn run() -> ExitCode {
     let cli = Cli::parse(); // usage errors exit with 2
     let dir = cli.catalogue.as_deref();
+    if let (Some(_), Some(project)) = (&cli.command, &cli.build.project) {
+        // `tmm FILE check …` would otherwise check (or build) the worked example.
+        eprintln!(
+            "error: {} comes before the subcommand: write it after (`tmm build {0}`, `tmm check {0} VALUES.csv`)",
+            project.display()
+        );
+        return ExitCode::from(2);
+    }
     let result = match cli.command {
         Some(Command::Example) => {
             print!("{DEFAULT_PROJECT}");

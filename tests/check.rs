@@ -110,6 +110,9 @@ fn bad_files_are_refused_with_exit_2_and_the_reason() {
         ("id,value,unit\nv_B.3,1,kg\n", "'kg' is not a unit of sheet1.velocities.v_B.3"),
         ("id,value\nv_B,1\n", "could be any of"),
         ("id,mm\nv_B.3,40\n", "give the scale"),
+        ("id;position;value\nab;3;0,40\n", "could be any of sheet1.plan.v.3.ab, sheet1.plan.a.3.ab"),
+        ("id;value;Ед. изм.;примечание\nv_B.3;1;м/с;x\n", "column 'примечание' is not one this reads"),
+        ("# a comment\r\nid,value\r\n\r\nv_B.3,1\r\nv_X.3,1\r\n", "line 5: 'v_X.3'"),
     ] {
         let o = check(&[temp("bad.csv", text).to_str().unwrap()]);
         assert_eq!(o.status.code(), Some(2), "{text:?}: {}", stderr(&o));
@@ -117,6 +120,28 @@ fn bad_files_are_refused_with_exit_2_and_the_reason() {
     }
     let o = check(&["/nonexistent/values.csv"]);
     assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn a_prime_typed_as_an_apostrophe_a_length_in_mm_and_a_centre_of_mass() {
+    let text = "id,position,value,unit\nv_B,4',0,m/s\nan_BA,3,3.5,mm\nps2,3,0.9425,m/s\nv_B.3,1.0408,\n";
+    let o = check(&[temp("prime.csv", text).to_str().unwrap()]);
+    let out = stdout(&o);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", stderr(&o));
+    assert!(out.contains("sheet1.velocities.v_B.4p") && out.contains("sheet1.plan.a.3.an_BA"), "{out}");
+    assert!(out.contains("sheet1.plan.v.3.ps2"), "{out}");
+}
+
+#[test]
+fn the_values_are_never_overwritten_and_the_project_goes_after_the_subcommand() {
+    let f = temp("own.csv", "id,value\nv_B.3,1.04\n");
+    let o = check(&[f.to_str().unwrap(), "-o", f.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(std::fs::read_to_string(&f).unwrap(), "id,value\nv_B.3,1.04\n");
+    let project = concat!(env!("CARGO_MANIFEST_DIR"), "/fixtures/kulisa.yaml");
+    let o = Command::new(env!("CARGO_BIN_EXE_tmm")).args([project, "check"]).arg(&f).output().unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("comes before the subcommand"), "{}", stderr(&o));
 }
 
 #[test]

@@ -66,6 +66,8 @@ fn the_worked_examples_segments_are_named_as_the_course_writes_them() {
     assert_eq!((pb.name.as_str(), pb.quantity.as_deref()), ("pb", Some("sheet1.velocities.v_B.3")));
     assert_eq!(by_id["plan.v.3.ab"].quantity.as_deref(), Some("sheet1.velocities.v_BA.3"));
     assert_eq!(by_id["plan.a.5.pib"].name, "πb");
+    assert_eq!(by_id["plan.v.3.ps2"].quantity.as_deref(), Some("sheet1.velocities.v_S2.3"));
+    assert_eq!(by_id["plan.a.5.pis4"].name, "πs4");
     assert_eq!(by_id["plan.a.5.an_BA"].quantity.as_deref(), Some("sheet1.accelerations.an_BA.5"));
     // C is a point of the frame: the normal component of a_BC starts at the pole.
     assert_eq!(by_id["plan.a.5.pin_BC"].name, "πn_BC");
@@ -80,7 +82,9 @@ fn every_segment_of_a_plan_is_drawn_at_its_length() {
         let Ok(built) = pipeline::build(&fixture(name), &[1]) else { continue };
         let b = &built[0];
         let svg = &b.svg;
-        for s in b.output.segments.iter().filter(|s| s.length_mm > 5.0) {
+        // A centre of mass is a point on its plan (ps2), not a drawn vector.
+        let centre = |n: &str| n.trim_start_matches(['p', 'π']).starts_with('s');
+        for s in b.output.segments.iter().filter(|s| s.length_mm > 5.0 && !centre(&s.name)) {
             let plan = s.id.rsplit_once('.').unwrap().0;
             let lengths = drawn_lengths(svg, &format!("sheet1.{plan}"));
             // Drawn as a line and its arrowhead: the line stops short of the tip by the head.

@@ -19,6 +19,8 @@ use std::collections::BTreeMap;
 
 /// The course's relative tolerance where it states none.
 pub const RELATIVE: f64 = 0.02;
+/// A percentage's tolerance, percentage points.
+pub const PERCENT_POINT: f64 = 1.0;
 /// What a ruler on paper is good for, mm.
 pub const PAPER_MM: f64 = 0.5;
 /// Answers the course gives its own tolerance: the contact ratio drawn vs analytic.
@@ -86,7 +88,7 @@ pub struct Verdict {
 pub enum CheckError {
     #[error("line {line}: '{name}' is not a value of these sheets{}", hint(close))]
     Unknown { line: u64, name: String, close: Vec<String> },
-    #[error("line {line}: '{name}' could be any of {}…; write its position or column too (v_B.3, or a 'position' column)", ids.join(", "))]
+    #[error("line {line}: '{name}' could be any of {}; write more of its identifier (its position: v_B.3; its plan: v.3.ab)", ids.join(", "))]
     Ambiguous { line: u64, name: String, ids: Vec<String> },
     #[error("line {line}: '{unit}' is not a unit of {id} (write it in {expected})")]
     Unit { line: u64, unit: String, id: String, expected: String },
@@ -114,10 +116,12 @@ struct Target {
 
 impl Reference {
     fn targets(&self) -> Vec<Target> {
-        let row = |id: &str| id.rsplit_once('.').map_or(id, |(r, _)| r).to_string();
+        // A row: the id without its last part, and its unit (a one-column table's "row"
+        // is the whole table: only its values of the same unit share a size).
+        let row = |a: &Answer| format!("{} {}", a.id.rsplit_once('.').map_or(a.id.as_str(), |(r, _)| r), a.unit);
         let mut row_max: BTreeMap<String, f64> = BTreeMap::new();
         for a in &self.answers {
-            let m = row_max.entry(row(&a.id)).or_insert(0.0);
+            let m = row_max.entry(row(a)).or_insert(0.0);
             *m = m.max(a.value.abs());
         }
         let drawn: BTreeMap<&str, f64> =
@@ -128,7 +132,7 @@ impl Reference {
             unit: a.unit,
             scale: drawn.get(a.id.as_str()).copied(),
             length_mm: None,
-            row_max: row_max[&row(&a.id)],
+            row_max: row_max[&row(a)],
         });
         let segments = self.segments.iter().map(|(id, s)| Target {
             id: id.clone(),
@@ -145,20 +149,36 @@ impl Reference {
 /// A name reduced for matching: no sheet prefix, case and underscores ignored, Greek
 /// letters by their names ("ω_2" = "omega2" = "OMEGA_2").
 fn folded(name: &str) -> String {
-    let key = crate::report::ascii_key(name.trim());
+    // A prime typed as an apostrophe (or Word's ’): 4' is 4′.
+    let name: String = name.trim().chars().map(|c| if matches!(c, '\'' | '’' | 'ʼ' | '`') { '′' } else { c }).collect();
+    let key = crate::report::ascii_key(&name);
     key.chars().filter(|&c| c != '_').flat_map(char::to_lowercase).collect()
 }
 
 /// The target a student's name stands for: the whole id; or the id's end after a dot
 /// (`v_B.3`, `plan.v.3.pb`); or, ignoring case, underscores and Greek spelling, the same.
 fn resolve<'a>(targets: &'a [Target], m: &Measured) -> Result<&'a Target, CheckError> {
-    let found = matching(targets, m.name.trim());
-    // A segment's position comes before its name (plan.v.3.pb): "pb.3" is that too.
-    let found = match (found.is_empty(), m.name.trim().rsplit_once('.')) {
-        (true, Some((name, position))) => matching(targets, &format!("{position}.{name}")),
-        _ => found,
-    };
     let name = m.name.trim();
+    // A segment's position comes before its name (plan.v.3.pb): "pb.3" is that too, at the
+    // same rank — "ab.3" is v_BA's segment ab of plan 3, not a_B.3 spelled loosely.
+    let swapped = name.rsplit_once('.').map(|(n, position)| format!("{position}.{n}"));
+    let spellings: Vec<&str> = [Some(name), swapped.as_deref()].into_iter().flatten().collect();
+    let found = (0..RANKS)
+        .map(|rank| {
+            let mut all: Vec<&Target> = spellings.iter().flat_map(|n| matching(targets, n, rank)).collect();
+            all.dedup_by(|a, b| a.id == b.id);
+            all
+        })
+        .find(|f| !f.is_empty())
+        .unwrap_or_default();
+    // A name both an answer and a segment have (an_BA.3): a length is the segment's, a value
+    // in a unit of the quantity the answer's.
+    let paper = match &m.given {
+        Given::Paper { .. } => true,
+        Given::Value { unit, .. } => units::factor(unit, "mm") == Some(1.0),
+    };
+    let preferred: Vec<&Target> = found.iter().copied().filter(|t| t.length_mm.is_some() == paper).collect();
+    let found = if found.len() > 1 && preferred.len() == 1 { preferred } else { found };
     match found.as_slice() {
         [one] => Ok(one),
         [] => Err(CheckError::Unknown { line: m.line, name: name.into(), close: close_names(targets, name) }),
@@ -170,27 +190,27 @@ fn resolve<'a>(targets: &'a [Target], m: &Measured) -> Result<&'a Target, CheckE
     }
 }
 
-/// The targets `name` stands for (see [`resolve`]).
-fn matching<'a>(targets: &'a [Target], name: &str) -> Vec<&'a Target> {
-    if let Some(t) = targets.iter().find(|t| t.id == name) {
-        return vec![t];
-    }
+/// How many ways of matching a name there are, tried in order: the whole id, an end of
+/// it, an end of it spelled loosely, a quantity without its position.
+const RANKS: usize = 4;
+
+/// The targets `name` stands for at `rank` (see [`resolve`]).
+fn matching<'a>(targets: &'a [Target], name: &str, rank: usize) -> Vec<&'a Target> {
     let by = |f: &dyn Fn(&Target) -> bool| targets.iter().filter(|t| f(t)).collect::<Vec<_>>();
-    let suffix = by(&|t| t.id.ends_with(&format!(".{name}")));
-    if !suffix.is_empty() {
-        return suffix;
+    match rank {
+        0 => by(&|t| t.id == name),
+        1 => by(&|t| t.id.ends_with(&format!(".{name}"))),
+        2 => {
+            let want = folded(name);
+            by(&|t| {
+                let parts: Vec<&str> = t.id.split('.').collect();
+                (1..parts.len()).any(|i| folded(&parts[i..].join(".")) == want)
+            })
+        }
+        // A quantity without its position or column ("v_B"): every one of its row, so that
+        // the message lists them.
+        _ => by(&|t| t.id.rsplit_once('.').is_some_and(|(row, _)| row.ends_with(&format!(".{name}")))),
     }
-    let want = folded(name);
-    let folded_match = by(&|t| {
-        let parts: Vec<&str> = t.id.split('.').collect();
-        (1..parts.len()).any(|i| folded(&parts[i..].join(".")) == want)
-    });
-    if !folded_match.is_empty() {
-        return folded_match;
-    }
-    // A quantity without its position or column ("v_B"): every one of its row, so that the
-    // message lists them.
-    by(&|t| t.id.rsplit_once('.').is_some_and(|(row, _)| row.ends_with(&format!(".{name}"))))
 }
 
 /// Up to five known names nearest to `name` (by edit distance on their folded forms).
@@ -243,7 +263,14 @@ fn verdict(targets: &[Target], m: &Measured, over: Option<Tolerance>) -> Result<
         })
     };
     // (exact, student, unit, the paper's scale for the 0.5 mm rule)
-    let (exact, student, unit, paper) = match &m.given {
+    // A segment's value in mm is its length on the paper.
+    let given = match &m.given {
+        Given::Value { value, unit } if t.length_mm.is_some() && units::factor(unit, "mm") == Some(1.0) => {
+            Given::Paper { mm: *value, scale: None, unit: String::new() }
+        }
+        other => other.clone(),
+    };
+    let (exact, student, unit, paper) = match &given {
         Given::Value { value, unit } => (t.value, value * convert(unit)?, t.unit.to_string(), t.scale),
         Given::Paper { mm, scale: Some(s), unit } => {
             let mu = s * convert(unit)?;
@@ -254,11 +281,17 @@ fn verdict(targets: &[Target], m: &Measured, over: Option<Tolerance>) -> Result<
             None => return Err(CheckError::NoScale { line: m.line, name: m.name.clone() }),
         },
     };
+    // The exact value as the tables print it: a zero computed as 1e-13 is 0.
+    let exact = if exact.abs() <= 1e-9 * t.row_max.max(1.0) { 0.0 } else { exact };
     let course = COURSE.iter().find(|(end, _)| t.id.ends_with(end)).map(|&(_, r)| r);
     let (tolerance, rule) = match (m.tolerance.or(over), course) {
         (Some(Tolerance::Relative(r)), _) => (r * exact.abs(), "given"),
         (Some(Tolerance::Absolute(a)), _) => (a, "given"),
         (None, Some(r)) => (r * exact.abs(), "course"),
+        (None, None) if t.unit == "%" => {
+            // A percentage (Δ between two methods, an integration's error) to a point.
+            ((RELATIVE * exact.abs()).max(PERCENT_POINT), "1 point")
+        }
         (None, None) => default_tolerance(exact, paper, t.row_max),
     };
     let deviation = student - exact;

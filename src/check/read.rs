@@ -18,6 +18,10 @@ pub enum ReadError {
     Empty,
     #[error("line 1: no column {0} (the header row names the columns: id, value, unit — or id, mm, scale)")]
     Missing(&'static str),
+    #[error(
+        "line 1: column '{0}' is not one this reads: id, position, value, unit, mm, scale, tolerance (or their Russian or Uzbek names)"
+    )]
+    UnknownColumn(String),
     #[error("line {line}: {column}: '{text}' is not a number")]
     Number { line: u64, column: &'static str, text: String },
     #[error("line {line}: {reason}")]
@@ -28,30 +32,46 @@ pub enum ReadError {
 
 /// The columns a header may name, with the words it may name them by.
 const COLUMNS: &[(&str, &[&str])] = &[
-    ("id", &["id", "name", "key", "quantity", "nomi", "имя", "обозначение", "величина", "kattalik"]),
-    ("position", &["position", "pos", "holat", "положение"]),
-    ("value", &["value", "qiymat", "значение"]),
-    ("unit", &["unit", "birlik", "единица", "ед"]),
-    ("mm", &["mm", "length_mm", "length", "мм", "uzunlik", "длина"]),
+    ("id", &["id", "name", "key", "quantity", "nomi", "belgi", "имя", "обозначение", "величина", "kattalik"]),
+    ("position", &["position", "pos", "holat", "положение", "позиция", "пол"]),
+    ("value", &["value", "qiymat", "значение", "знач"]),
+    ("unit", &["unit", "units", "birlik", "единица", "единицы", "ед", "едизм", "единицаизмерения"]),
+    ("mm", &["mm", "length_mm", "length", "мм", "uzunlik", "длина", "длинамм", "uzunlikmm"]),
     ("scale", &["scale", "mu", "μ", "masshtab", "масштаб"]),
-    ("tolerance", &["tolerance", "tol", "допуск", "chetlanish"]),
+    ("tolerance", &["tolerance", "tol", "допуск", "chetlanish", "ruxsat"]),
 ];
 
-/// The file's rows, or why it cannot be read.
-pub fn measured(text: &str) -> Result<Vec<Measured>, ReadError> {
+/// The file's rows and the lines of rows left without a value (skipped), or why it cannot
+/// be read.
+pub fn measured(text: &str) -> Result<(Vec<Measured>, Vec<u64>), ReadError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    // Comments blanked rather than left to the reader, so that every row keeps its line.
+    let text: String = text
+        .split('\n')
+        .map(|l| if l.trim_start().starts_with('#') { "" } else { l.trim_end_matches('\r') })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let text = text.as_str();
     let first = text.lines().map(str::trim).find(|l| !l.is_empty() && !l.starts_with('#')).ok_or(ReadError::Empty)?;
     let delimiter = if first.matches(';').count() > first.matches(',').count() { b';' } else { b',' };
-    let mut r = csv::ReaderBuilder::new()
-        .delimiter(delimiter)
-        .comment(Some(b'#'))
-        .flexible(true)
-        .trim(csv::Trim::All)
-        .from_reader(text.as_bytes());
+    let mut r =
+        csv::ReaderBuilder::new().delimiter(delimiter).flexible(true).trim(csv::Trim::All).from_reader(text.as_bytes());
     let header = r.headers().map_err(|e| ReadError::Csv { line: 1, reason: e.to_string() })?.clone();
+    // A header compared without case, spaces and dots: "Ед. изм." is "едизм".
+    let plain = |h: &str| {
+        h.chars()
+            .filter(|c| c.is_alphanumeric() || *c == '_' || *c == 'μ')
+            .flat_map(char::to_lowercase)
+            .collect::<String>()
+    };
+    let known = |h: &str| COLUMNS.iter().any(|(_, words)| words.contains(&plain(h).as_str()));
+    if let Some(unknown) = header.iter().find(|h| !h.trim().is_empty() && !known(h)) {
+        // A column dropped unread would change the verdicts (a unit, a position).
+        return Err(ReadError::UnknownColumn(unknown.trim().to_string()));
+    }
     let column = |name: &str| {
         let words = COLUMNS.iter().find(|(c, _)| *c == name).map(|(_, w)| *w).unwrap_or(&[]);
-        header.iter().position(|h| words.contains(&h.to_lowercase().as_str()))
+        header.iter().position(|h| words.contains(&plain(h).as_str()))
     };
     let id = column("id").ok_or(ReadError::Missing("id"))?;
     let (value, mm) = (column("value"), column("mm"));
@@ -59,11 +79,13 @@ pub fn measured(text: &str) -> Result<Vec<Measured>, ReadError> {
         return Err(ReadError::Missing("value (or mm)"));
     }
     let (position, unit, scale, tolerance) = (column("position"), column("unit"), column("scale"), column("tolerance"));
-    let mut out = Vec::new();
+    let (mut out, mut skipped) = (Vec::new(), Vec::new());
     for record in r.records() {
-        let record = record
-            .map_err(|e| ReadError::Csv { line: e.position().map_or(0, csv::Position::line), reason: e.to_string() })?;
-        let line = record.position().map_or(0, csv::Position::line);
+        let record = record.map_err(|e| ReadError::Csv {
+            line: e.position().map_or(0, |p| line_at(text, p)),
+            reason: e.to_string(),
+        })?;
+        let line = record.position().map_or(0, |p| line_at(text, p));
         let cell = |c: Option<usize>| c.and_then(|i| record.get(i)).unwrap_or("").trim();
         if record.iter().all(|c| c.trim().is_empty()) {
             continue;
@@ -90,7 +112,8 @@ pub fn measured(text: &str) -> Result<Vec<Measured>, ReadError> {
                 return Err(ReadError::Row { line, reason: "give a value or a length in mm, not both".into() });
             }
             (None, None) => {
-                return Err(ReadError::Row { line, reason: format!("{name}: no value and no length in mm") });
+                skipped.push(line);
+                continue;
             }
         };
         let tolerance = match cell(tolerance) {
@@ -106,7 +129,15 @@ pub fn measured(text: &str) -> Result<Vec<Measured>, ReadError> {
     if out.is_empty() {
         return Err(ReadError::Empty);
     }
-    Ok(out)
+    Ok((out, skipped))
+}
+
+/// The line a record starts on, counted from its byte offset past the blank lines the reader
+/// skipped before it (its own line count leaves them out).
+fn line_at(text: &str, p: &csv::Position) -> u64 {
+    let start = (p.byte() as usize).min(text.len());
+    let at = start + text[start..].len() - text[start..].trim_start().len();
+    text.as_bytes()[..at].iter().filter(|&&b| b == b'\n').count() as u64 + 1
 }
 
 /// A finite number, with a decimal point or comma, spaces between thousands allowed.
@@ -133,19 +164,27 @@ mod tests {
 
     #[test]
     fn commas_semicolons_comments_and_every_kind_of_row() {
-        let text = "# measured by A. Student\nid;position;value;unit;mm;scale;tolerance\nv_B;3;1,04;m/s;;;\npb;3;;;52;0,02;5 %\n\n";
-        let rows = measured(text).unwrap();
+        let text = "# measured by A. Student\r\nid;position;value;unit;mm;scale;tolerance\r\n# two\r\n\r\nv_B;3;1,04;m/s;;;\r\n# three\r\npb;3;;;52;0,02;5 %\r\nv_A;3;;;;;\r\n\r\n";
+        let (rows, skipped) = measured(text).unwrap();
+        assert_eq!(skipped, [8]);
+        assert_eq!(rows[0].line, 5);
         assert_eq!(rows.len(), 2);
         assert_eq!(rows[0].name, "v_B.3");
         assert_eq!(rows[0].given, Given::Value { value: 1.04, unit: "m/s".into() });
         assert_eq!(rows[1].given, Given::Paper { mm: 52.0, scale: Some(0.02), unit: String::new() });
         assert_eq!(rows[1].tolerance, Some(Tolerance::Relative(0.05)));
-        assert_eq!(rows[1].line, 4);
+        assert_eq!(rows[1].line, 7);
+        assert_eq!(
+            measured("Обозначение;Положение;Значение;Ед. изм.\nv_B;3;1040,8;мм/с\n").unwrap().0[0].name,
+            "v_B.3"
+        );
+        assert_eq!(measured("id;value;Bemerkung\nv_B.3;1;x\n"), Err(ReadError::UnknownColumn("Bemerkung".into())));
     }
 
     #[test]
     fn an_empty_file_a_missing_column_and_a_bad_number_are_refused_with_their_line() {
         assert_eq!(measured(""), Err(ReadError::Empty));
+        assert_eq!(measured("id,value\nv_B.3,\n"), Err(ReadError::Empty));
         assert_eq!(measured("id,value\n"), Err(ReadError::Empty));
         assert_eq!(measured("# nothing\n\n"), Err(ReadError::Empty));
         assert_eq!(measured("name,unit\nv_B,m/s\n"), Err(ReadError::Missing("value (or mm)")));

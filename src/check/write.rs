@@ -8,8 +8,12 @@ use crate::num::digits;
 const HEAD: [&str; 8] = ["line", "id", "exact", "student", "unit", "deviation", "allowed", "result"];
 
 fn cells(v: &Verdict) -> [String; 8] {
-    let percent =
-        if v.exact != 0.0 { format!(" ({:+.1} %)", v.deviation / v.exact.abs() * 100.0) } else { String::new() };
+    let share = v.deviation / v.exact.abs() * 100.0;
+    let percent = match share {
+        _ if v.exact == 0.0 => String::new(),
+        s if s.abs() > 999.0 => format!(" ({}999 %)", if s > 0.0 { ">+" } else { "<-" }),
+        s => format!(" ({s:+.1} %)"),
+    };
     [
         v.line.to_string(),
         if v.name == v.id { v.id.clone() } else { format!("{} ({})", v.id, v.name) },

@@ -63,11 +63,25 @@ fn checked(args: &CheckArgs, dir: Option<&Path>) -> Result<bool, (anyhow::Error,
         _ => return Err((anyhow!("name either a project file or --task and --variant, not both"), 2)),
     };
     let values = args.files.last().expect("clap requires one file");
+    if args.files.len() == 1 && values.extension().is_some_and(|x| x == "yaml" || x == "yml") {
+        return Err((
+            anyhow!("{} is a project file: give the student's values too (tmm check {0} VALUES.csv)", values.display()),
+            2,
+        ));
+    }
+    if let Some(out) = &args.output
+        && std::fs::canonicalize(out).ok().is_some_and(|o| std::fs::canonicalize(values).ok() == Some(o))
+    {
+        return Err((anyhow!("-o {} would replace the student's values with the report", out.display()), 2));
+    }
     let project = pipeline::load(&project_text).map_err(|e| unusable(anyhow!(super::refused(e, &name))))?;
     let reference = pipeline::reference(&project).map_err(|e| unusable(anyhow!(super::refused(e, &name))))?;
     let text =
         std::fs::read_to_string(values).map_err(|e| unusable(anyhow!("cannot read {}: {e}", values.display())))?;
-    let rows = read::measured(&text).map_err(|e| unusable(anyhow!("in {}: {e}", values.display())))?;
+    let (rows, skipped) = read::measured(&text).map_err(|e| unusable(anyhow!("in {}: {e}", values.display())))?;
+    for line in skipped {
+        eprintln!("warning: in {}: line {line}: no value and no length in mm: not checked", values.display());
+    }
     let verdicts = check::check(&reference, &rows, args.tolerance.map(Tolerance::Relative))
         .map_err(|e| unusable(anyhow!("in {}: {e}", values.display())))?;
     print!("{}", check::write::text(&verdicts));

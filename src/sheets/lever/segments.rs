@@ -60,5 +60,22 @@ pub fn plan_segments(
             scale: mu,
         });
     }
+    // A centre of mass is marked as a point (its image, by similarity), not drawn as a
+    // vector, but the student measures its distance from the pole all the same: ps2, πs2.
+    for img in plan.images.iter().filter(|i| i.label.starts_with('s') && i.label[1..].parse::<u32>().is_ok()) {
+        let name = format!("{}{}", kind.pole, img.label);
+        let key = format!("{sheet}.{}.{}_{}.{position}", kind.table, kind.symbol, img.label.to_uppercase());
+        let value = img.at.norm();
+        let id = format!("plan.{}.{position}.{}", kind.symbol, ascii_key(&name));
+        out.push(Segment {
+            id,
+            name,
+            length_mm: value / mu,
+            quantity: answer(&key).then_some(key),
+            value,
+            unit: kind.unit,
+            scale: mu,
+        });
+    }
     out
 }
