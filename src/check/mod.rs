@@ -220,30 +220,16 @@ fn close_names(targets: &[Target], name: &str) -> Vec<String> {
         .iter()
         .map(|t| {
             let parts: Vec<&str> = t.id.split('.').collect();
-            let best =
-                (1..parts.len()).map(|i| distance(&folded(&parts[i..].join(".")), &want)).min().unwrap_or(usize::MAX);
+            let best = (1..parts.len())
+                .map(|i| crate::num::edit_distance(&folded(&parts[i..].join(".")), &want))
+                .min()
+                .unwrap_or(usize::MAX);
             (best, t.id.as_str())
         })
         .collect();
     scored.sort();
     let limit = (want.len() / 3).max(2);
     scored.into_iter().filter(|(d, _)| *d <= limit).take(5).map(|(_, id)| id.to_string()).collect()
-}
-
-/// Levenshtein distance.
-fn distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(cur + 1);
-            prev = cur;
-        }
-    }
-    row[b.len()]
 }
 
 /// Checks every row: a verdict each, or the first row that cannot be checked.

@@ -178,26 +178,10 @@ pub(crate) fn closest<'a>(written: &str, expected: &[&'a str]) -> Option<&'a str
     let w = written.to_lowercase();
     expected
         .iter()
-        .map(|&k| (edit_distance(&w, &k.to_lowercase()), k))
+        .map(|&k| (crate::num::edit_distance(&w, &k.to_lowercase()), k))
         .filter(|&(d, k)| d <= 2.min(k.chars().count() / 2 + 1))
         .min_by_key(|&(d, _)| d)
         .map(|(_, k)| k)
-}
-
-/// Levenshtein distance, by characters.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(cur + 1);
-            prev = cur;
-        }
-    }
-    row[b.len()]
 }
 
 /// A budget breach in words.

@@ -29,7 +29,8 @@ pub fn plan_segments(
     answer: &dyn Fn(&str) -> bool,
 ) -> Vec<Segment> {
     let position = ascii_key(label);
-    let mut out: Vec<Segment> = Vec::new();
+    // (name as the course writes it, the answer table's row, magnitude)
+    let mut drawn: Vec<(String, String, f64)> = Vec::new();
     for s in &plan.segs {
         let (x, y) = (s.of.0.as_str(), s.of.1.as_str());
         // A component from a point of the frame starts at the pole: πn_BC.
@@ -43,39 +44,24 @@ pub fn plan_segments(
             (SegKind::Sliding, "v") => (format!("{ly}{lx}"), format!("v_{x}{y}")),
             (SegKind::Sliding, _) => (format!("k_{x}{y}{lx}"), format!("ar_{x}{y}")),
         };
+        drawn.push((name, row, (s.to - s.from).norm()));
+    }
+    // A centre of mass is marked as a point (its image, by similarity), not drawn as a
+    // vector, but the student measures its distance from the pole all the same: ps2, πs2.
+    for img in plan.images.iter().filter(|i| i.label.starts_with('s') && i.label[1..].parse::<u32>().is_ok()) {
+        let row = format!("{}_{}", kind.symbol, img.label.to_uppercase());
+        drawn.push((format!("{}{}", kind.pole, img.label), row, img.at.norm()));
+    }
+    let mut out: Vec<Segment> = Vec::new();
+    for (name, row, value) in drawn {
         let key = format!("{sheet}.{}.{}.{position}", kind.table, ascii_key(&row));
-        let value = (s.to - s.from).norm();
         let id = format!("plan.{}.{position}.{}", kind.symbol, ascii_key(&name));
         // A plan draws a vector once; a name met twice (never, by construction) keeps the first.
         if out.iter().any(|o| o.id == id) {
             continue;
         }
-        out.push(Segment {
-            id,
-            name,
-            length_mm: value / mu,
-            quantity: answer(&key).then_some(key),
-            value,
-            unit: kind.unit,
-            scale: mu,
-        });
-    }
-    // A centre of mass is marked as a point (its image, by similarity), not drawn as a
-    // vector, but the student measures its distance from the pole all the same: ps2, πs2.
-    for img in plan.images.iter().filter(|i| i.label.starts_with('s') && i.label[1..].parse::<u32>().is_ok()) {
-        let name = format!("{}{}", kind.pole, img.label);
-        let key = format!("{sheet}.{}.{}_{}.{position}", kind.table, kind.symbol, img.label.to_uppercase());
-        let value = img.at.norm();
-        let id = format!("plan.{}.{position}.{}", kind.symbol, ascii_key(&name));
-        out.push(Segment {
-            id,
-            name,
-            length_mm: value / mu,
-            quantity: answer(&key).then_some(key),
-            value,
-            unit: kind.unit,
-            scale: mu,
-        });
+        let quantity = answer(&key).then_some(key);
+        out.push(Segment { id, name, length_mm: value / mu, quantity, value, unit: kind.unit, scale: mu });
     }
     out
 }
