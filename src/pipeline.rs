@@ -197,6 +197,14 @@ pub fn reference(p: &Project) -> Result<check::Reference, Error> {
     Ok(reference)
 }
 
+pub use crate::sheets::check_report::Names as ReportNames;
+
+/// `tmm check`'s report to hand back, as a PDF of A4 pages in the project's language (see
+/// [`sheets::check_report`]).
+pub fn check_report_pdf(p: &Project, verdicts: &[check::Verdict], names: &ReportNames) -> Result<Vec<u8>, Error> {
+    Ok(backend::pdf::write_pages(&sheets::check_report::pages(verdicts, names, p.info.language))?)
+}
+
 /// The overlay of every built sheet (see [`sheets::scaffold::overlay`]) as
 /// `sheet<N>-overlay.svg` and `.pdf`: its constructions alone, in one contrasting colour, at
 /// their places on the A1 sheet.

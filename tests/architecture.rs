@@ -20,7 +20,8 @@ const ALLOWED: [(&str, &[&str]); 15] = [
     ("drawing", &["num", "font"]),
     ("report", &["num", "lever", "gears", "cams"]),
     ("project", &["num", "font", "lever", "gears", "cams", "drawing::labels::Language"]),
-    ("sheets", &["num", "font", "lever", "gears", "cams", "drawing", "report", "project"]),
+    // A check's report to hand back is composed like a sheet.
+    ("sheets", &["num", "font", "lever", "gears", "cams", "drawing", "report", "project", "check"]),
     ("backend", &["num", "font", "drawing::scene", "drawing::path"]),
     // The catalogue writes project files' text: it reads no project and draws nothing.
     ("catalogue", &["num", "drawing::labels", "drawing::label_set"]),

@@ -156,3 +156,60 @@ fn the_report_is_written_as_markdown_or_csv() {
     check(&[f.to_str().unwrap(), "-o", csv.to_str().unwrap()]);
     assert!(std::fs::read_to_string(&csv).unwrap().starts_with("line,id,name,exact,student"));
 }
+
+#[test]
+fn the_report_to_hand_back_is_a_pdf_of_a4_pages_in_the_projects_language() {
+    let all = answers();
+    let mut csv = String::from("id,value,unit\n");
+    for (id, v, u) in &all {
+        csv.push_str(&format!("{id},{v:.12},{u}\n"));
+    }
+    csv.push_str("v_B.3,0.5,m/s\n");
+    let f = temp("pdf.csv", &csv);
+    let pdf = f.with_file_name("report.pdf");
+    let o = check(&[f.to_str().unwrap(), "-o", pdf.to_str().unwrap(), "--lang", "ru"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let bytes = std::fs::read(&pdf).unwrap();
+    assert!(bytes.starts_with(b"%PDF-"));
+    // The same report twice is the same file.
+    let again = f.with_file_name("again.pdf");
+    check(&[f.to_str().unwrap(), "-o", again.to_str().unwrap(), "--lang", "ru"]);
+    assert_eq!(bytes, std::fs::read(&again).unwrap());
+    let Ok(text) = Command::new("pdftotext").args(["-layout"]).arg(&pdf).arg("-").output() else {
+        eprintln!("pdftotext is not installed: the report's text is not read back");
+        return;
+    };
+    let text = String::from_utf8_lossy(&text.stdout);
+    // 26 rows a page: every value on some page, the summary and the signature on each.
+    let pages = (all.len() + 1).div_ceil(26);
+    assert!(text.contains(&format!("Лист {pages} из {pages}")), "{pages} pages? {}", &text[..text.len().min(3000)]);
+    assert!(text.contains(&format!("Верно {} из {} значений", all.len(), all.len() + 1)));
+    assert_eq!(text.matches("Преподаватель").count(), pages);
+    assert_eq!(text.matches("НЕВЕРНО").count(), 1, "the wrong v_B.3 alone fails");
+    assert!(!text.contains("pass") && !text.contains("FAIL"), "English on the Russian report");
+}
+
+#[test]
+fn every_row_that_cannot_be_checked_is_named_at_once_and_a_repeated_one_is_warned() {
+    let o = check(&[temp("many.csv", "id,value\nv_X.3,1\nv_B.3,1.04\nv_B.3,1,kg\nqq,2\n").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(err.contains("line 2: 'v_X.3'") && err.contains("line 5: 'qq'"), "{err}");
+    let o = check(&[temp("twice.csv", "id,value\nv_B.3,1.04\nv_B.3,1.041\n").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).contains("line 3: sheet1.velocities.v_B.3 is given on line 2 too"), "{}", stderr(&o));
+}
+
+#[test]
+fn a_gears_radius_in_mm_is_its_value_and_its_drawn_length_comes_with_the_mm_column() {
+    // The worked example's wheel 1: r_b1 = 42.5·cos 20° = 39.937 mm, drawn at 5:1.
+    let r_b1 = 42.5 * 20f64.to_radians().cos();
+    let text = format!("id,value,unit\nr_b1,{:.2},mm\nr_b1,{:.4},cm\n", r_b1, r_b1 / 10.0);
+    let o = check(&[temp("radius.csv", &text).to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    let text = format!("id,mm\nmesh.drawing.r_b1,{:.1}\n", 5.0 * r_b1);
+    let o = check(&[temp("paper.csv", &text).to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    // Read as a paper length, 39.94 mm would be a fifth of the drawn 199.7 mm: it must not be.
+    assert!(stdout(&o).contains("199.7"), "{}", stdout(&o));
+}

@@ -36,7 +36,7 @@ fn default_build_writes_every_output_and_says_so_on_stdout() {
     let o = run(&["--png-dpi", "20"], &out);
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     let stdout = String::from_utf8_lossy(&o.stdout);
-    assert!(stdout.contains("sheet 1, 2, 3 written to") && stdout.contains("(28 files)"), "{stdout}");
+    assert!(stdout.contains("sheet 1, 2, 3 written to") && stdout.contains("(30 files)"), "{stdout}");
     let expected = [
         ".tmm-lock",
         ".tmm-outputs",
@@ -54,6 +54,7 @@ fn default_build_writes_every_output_and_says_so_on_stdout() {
         "sheet2-conditions.csv",
         "sheet2-pair.csv",
         "sheet2-planetary.csv",
+        "sheet2-segments.csv",
         "sheet2-tables.md",
         "sheet2-wheels.csv",
         "sheet2.pdf",
@@ -64,6 +65,7 @@ fn default_build_writes_every_output_and_says_so_on_stdout() {
         "sheet3-profile-return.csv",
         "sheet3-profile-rise.csv",
         "sheet3-results.csv",
+        "sheet3-segments.csv",
         "sheet3-tables.md",
         "sheet3.pdf",
         "sheet3.png",

@@ -27,21 +27,29 @@ const PT_PER_MM: f32 = (72.0 / 25.4) as f32;
 
 /// The scene as a one-page PDF.
 pub fn write(scene: &Scene) -> Result<Vec<u8>, BackendError> {
-    check_finite(scene)?;
-    let size = Size::from_wh(scene.width as f32 * PT_PER_MM, scene.height as f32 * PT_PER_MM)
-        .ok_or_else(|| BackendError::Pdf(format!("no page of {} × {} mm", scene.width, scene.height)))?;
+    write_pages(std::slice::from_ref(scene))
+}
+
+/// The scenes as the pages of one PDF, each page its scene's size; the document takes the
+/// first scene's title.
+pub fn write_pages(scenes: &[Scene]) -> Result<Vec<u8>, BackendError> {
     let font = Font::new(Data::from(font::BYTES), 0).ok_or_else(|| BackendError::Pdf("the font".into()))?;
     let mut doc = Document::new();
-    doc.set_metadata(Metadata::new().title(scene.title.clone()));
-    let mut page = doc.start_page_with(PageSettings::new(size));
-    let mut surface = page.surface();
-    surface.push_transform(&Transform::from_scale(PT_PER_MM, PT_PER_MM));
-    let [r, g, b] = scene.ink.rgb();
-    let ink = Ink { font, paint: rgb::Color::new(r, g, b).into() };
-    draw_items(&mut surface, scene.groups.iter().flat_map(|g| &g.items), &ink);
-    surface.pop();
-    surface.finish();
-    page.finish();
+    doc.set_metadata(Metadata::new().title(scenes.first().map(|s| s.title.clone()).unwrap_or_default()));
+    for scene in scenes {
+        check_finite(scene)?;
+        let size = Size::from_wh(scene.width as f32 * PT_PER_MM, scene.height as f32 * PT_PER_MM)
+            .ok_or_else(|| BackendError::Pdf(format!("no page of {} × {} mm", scene.width, scene.height)))?;
+        let mut page = doc.start_page_with(PageSettings::new(size));
+        let mut surface = page.surface();
+        surface.push_transform(&Transform::from_scale(PT_PER_MM, PT_PER_MM));
+        let [r, g, b] = scene.ink.rgb();
+        let ink = Ink { font: font.clone(), paint: rgb::Color::new(r, g, b).into() };
+        draw_items(&mut surface, scene.groups.iter().flat_map(|g| &g.items), &ink);
+        surface.pop();
+        surface.finish();
+        page.finish();
+    }
     doc.finish().map_err(|e| BackendError::Pdf(format!("{e:?}")))
 }
 

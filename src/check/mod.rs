@@ -79,9 +79,60 @@ pub struct Verdict {
     pub deviation: f64,
     /// The deviation allowed, in `unit`.
     pub tolerance: f64,
-    /// Where the tolerance comes from: "course", "2 %", "0.5 mm", "given".
-    pub rule: &'static str,
+    /// Where the tolerance comes from.
+    pub rule: Rule,
     pub pass: bool,
+}
+
+impl Verdict {
+    /// The deviation as a report prints it: a difference of rounding (a student's value
+    /// written with twelve digits) is none.
+    pub fn deviation_shown(&self) -> f64 {
+        if self.deviation.abs() <= 1e-9 * self.exact.abs().max(self.tolerance) { 0.0 } else { self.deviation }
+    }
+}
+
+/// Where a value's tolerance comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rule {
+    /// The file's `tolerance` column or `--tolerance`.
+    Given,
+    /// The course states it (the drawn contact ratio: 10 %).
+    Course,
+    /// A percentage, to one point.
+    PercentPoint,
+    /// 0.5 mm on the paper.
+    Paper,
+    /// 2 % of the value.
+    Relative,
+    /// 2 % of the row's largest value (the exact value is 0).
+    RowRelative,
+}
+
+impl Rule {
+    /// As the terminal, Markdown and CSV reports write it.
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Rule::Given => "given",
+            Rule::Course => "course",
+            Rule::PercentPoint => "1 point",
+            Rule::Paper => "0.5 mm",
+            Rule::Relative => "2 %",
+            Rule::RowRelative => "2 % of the row",
+        }
+    }
+}
+
+impl std::fmt::Display for Rule {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl serde::Serialize for Rule {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -232,11 +283,30 @@ fn close_names(targets: &[Target], name: &str) -> Vec<String> {
     scored.into_iter().filter(|(d, _)| *d <= limit).take(5).map(|(_, id)| id.to_string()).collect()
 }
 
-/// Checks every row: a verdict each, or the first row that cannot be checked.
-pub fn check(reference: &Reference, rows: &[Measured], over: Option<Tolerance>) -> Result<Vec<Verdict>, CheckError> {
+/// Checks every row: a verdict each, or every row that cannot be checked (all at once, so
+/// that one run shows the student every name and unit to mend).
+pub fn check(reference: &Reference, rows: &[Measured], over: Option<Tolerance>) -> Result<Vec<Verdict>, Unchecked> {
     let targets = reference.targets();
-    rows.iter().map(|m| verdict(&targets, m, over)).collect()
+    let (verdicts, errors): (Vec<_>, Vec<_>) = rows.iter().map(|m| verdict(&targets, m, over)).partition(Result::is_ok);
+    if errors.is_empty() {
+        Ok(verdicts.into_iter().map(|v| v.expect("partitioned")).collect())
+    } else {
+        Err(Unchecked(errors.into_iter().map(|e| e.expect_err("partitioned")).collect()))
+    }
 }
+
+/// The rows that cannot be checked, in the file's order; one line each.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unchecked(pub Vec<CheckError>);
+
+impl std::fmt::Display for Unchecked {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let lines: Vec<String> = self.0.iter().map(ToString::to_string).collect();
+        f.write_str(&lines.join("\n"))
+    }
+}
+
+impl std::error::Error for Unchecked {}
 
 fn verdict(targets: &[Target], m: &Measured, over: Option<Tolerance>) -> Result<Verdict, CheckError> {
     let t = resolve(targets, m)?;
@@ -249,9 +319,19 @@ fn verdict(targets: &[Target], m: &Measured, over: Option<Tolerance>) -> Result<
         })
     };
     // (exact, student, unit, the paper's scale for the 0.5 mm rule)
-    // A segment's value in mm is its length on the paper.
+    // A segment's value in mm (or without a unit) is its length on the paper — unless the
+    // segment stands for a length itself (a gear's radius: mm are its value) or for a number
+    // (an analog of a rocker's law: no unit is its own); their paper lengths come in the `mm`
+    // column.
+    let length_itself = t.unit == "mm";
+    let number_itself = |unit: &str| t.unit.is_empty() && unit.trim().is_empty();
     let given = match &m.given {
-        Given::Value { value, unit } if t.length_mm.is_some() && units::factor(unit, "mm") == Some(1.0) => {
+        Given::Value { value, unit }
+            if t.length_mm.is_some()
+                && !length_itself
+                && !number_itself(unit)
+                && units::factor(unit, "mm") == Some(1.0) =>
+        {
             Given::Paper { mm: *value, scale: None, unit: String::new() }
         }
         other => other.clone(),
@@ -271,12 +351,12 @@ fn verdict(targets: &[Target], m: &Measured, over: Option<Tolerance>) -> Result<
     let exact = if exact.abs() <= 1e-9 * t.row_max.max(1.0) { 0.0 } else { exact };
     let course = COURSE.iter().find(|(end, _)| t.id.ends_with(end)).map(|&(_, r)| r);
     let (tolerance, rule) = match (m.tolerance.or(over), course) {
-        (Some(Tolerance::Relative(r)), _) => (r * exact.abs(), "given"),
-        (Some(Tolerance::Absolute(a)), _) => (a, "given"),
-        (None, Some(r)) => (r * exact.abs(), "course"),
+        (Some(Tolerance::Relative(r)), _) => (r * exact.abs(), Rule::Given),
+        (Some(Tolerance::Absolute(a)), _) => (a, Rule::Given),
+        (None, Some(r)) => (r * exact.abs(), Rule::Course),
         (None, None) if t.unit == "%" => {
             // A percentage (Δ between two methods, an integration's error) to a point.
-            ((RELATIVE * exact.abs()).max(PERCENT_POINT), "1 point")
+            ((RELATIVE * exact.abs()).max(PERCENT_POINT), Rule::PercentPoint)
         }
         (None, None) => default_tolerance(exact, paper, t.row_max),
     };
@@ -299,13 +379,13 @@ fn verdict(targets: &[Target], m: &Measured, over: Option<Tolerance>) -> Result<
 
 /// 2 % of the value or 0.5 mm on the paper at `paper` (unit per mm), whichever is larger;
 /// with no scale and an exact 0, 2 % of the row's largest value.
-fn default_tolerance(exact: f64, paper: Option<f64>, row_max: f64) -> (f64, &'static str) {
+fn default_tolerance(exact: f64, paper: Option<f64>, row_max: f64) -> (f64, Rule) {
     let relative = RELATIVE * exact.abs();
     match paper {
-        Some(mu) if PAPER_MM * mu > relative => (PAPER_MM * mu, "0.5 mm"),
-        Some(_) => (relative, "2 %"),
-        None if relative > 0.0 => (relative, "2 %"),
-        None => (RELATIVE * row_max, "2 % of the row"),
+        Some(mu) if PAPER_MM * mu > relative => (PAPER_MM * mu, Rule::Paper),
+        Some(_) => (relative, Rule::Relative),
+        None if relative > 0.0 => (relative, Rule::Relative),
+        None => (RELATIVE * row_max, Rule::RowRelative),
     }
 }
 
@@ -341,10 +421,10 @@ mod tests {
     fn the_larger_of_two_percent_and_half_a_millimetre_at_the_drawings_scale() {
         // Drawn at 0.05 (m/s)/mm: 0.5 mm is 0.025 m/s, more than 2 % of 1 m/s.
         let v = one("v_B.3", Given::Value { value: 1.024, unit: String::new() });
-        assert!((v.tolerance - 0.025).abs() < 1e-15 && v.pass && v.rule == "0.5 mm");
+        assert!((v.tolerance - 0.025).abs() < 1e-15 && v.pass && v.rule == Rule::Paper);
         // The student's own scale, 0.01 (m/s)/mm: 0.5 mm is 0.005, so 2 % rules.
         let v = one("pb.3", Given::Paper { mm: 102.5, scale: Some(0.01), unit: String::new() });
-        assert!((v.tolerance - 0.02).abs() < 1e-15 && !v.pass && v.rule == "2 %");
+        assert!((v.tolerance - 0.02).abs() < 1e-15 && !v.pass && v.rule == Rule::Relative);
         // A length compared with the reference sheet's segment: 0.5 mm.
         let v = one("plan.v.3.pb", Given::Paper { mm: 20.4, scale: None, unit: String::new() });
         assert!(v.pass && v.unit == "mm" && (v.exact - 20.0).abs() < 1e-15);

@@ -8,7 +8,7 @@ use crate::num::digits;
 const HEAD: [&str; 8] = ["line", "id", "exact", "student", "unit", "deviation", "allowed", "result"];
 
 fn cells(v: &Verdict) -> [String; 8] {
-    let share = v.deviation / v.exact.abs() * 100.0;
+    let share = v.deviation_shown() / v.exact.abs() * 100.0;
     let percent = match share {
         _ if v.exact == 0.0 => String::new(),
         s if s.abs() > 999.0 => format!(" ({}999 %)", if s > 0.0 { ">+" } else { "<-" }),
@@ -20,7 +20,7 @@ fn cells(v: &Verdict) -> [String; 8] {
         digits::sig(v.exact, 4),
         digits::sig(v.student, 4),
         v.unit.clone(),
-        format!("{}{percent}", signed(v.deviation)),
+        format!("{}{percent}", signed(v.deviation_shown())),
         format!("±{} ({})", digits::sig(v.tolerance, 4), v.rule),
         if v.pass { "pass" } else { "FAIL" }.to_string(),
     ]

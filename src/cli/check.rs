@@ -7,6 +7,7 @@
 
 use super::write;
 use crate::check::{self, Tolerance, read};
+use crate::pipeline::ReportNames as Names;
 use crate::pipeline::{self, DEFAULT_PROJECT};
 use anyhow::anyhow;
 use clap::Args;
@@ -29,9 +30,13 @@ pub struct CheckArgs {
     /// "5%"), instead of the course's rule.
     #[arg(long, value_parser = parse_percent)]
     tolerance: Option<f64>,
-    /// Also write the verdicts to this file: Markdown (.md) or CSV (.csv).
+    /// Also write the verdicts to this file: Markdown (.md), CSV (.csv), or PDF (.pdf: A4
+    /// pages to hand back, in the project's language or `--lang`'s).
     #[arg(short, long)]
     output: Option<PathBuf>,
+    /// The PDF report's language, overriding the project file's.
+    #[arg(long, value_enum)]
+    lang: Option<super::Lang>,
 }
 
 fn parse_percent(s: &str) -> Result<f64, String> {
@@ -74,7 +79,10 @@ fn checked(args: &CheckArgs, dir: Option<&Path>) -> Result<bool, (anyhow::Error,
     {
         return Err((anyhow!("-o {} would replace the student's values with the report", out.display()), 2));
     }
-    let project = pipeline::load(&project_text).map_err(|e| unusable(anyhow!(super::refused(e, &name))))?;
+    let mut project = pipeline::load(&project_text).map_err(|e| unusable(anyhow!(super::refused(e, &name))))?;
+    if let Some(l) = super::language(args.lang) {
+        project.info.language = l;
+    }
     let reference = pipeline::reference(&project).map_err(|e| unusable(anyhow!(super::refused(e, &name))))?;
     let text =
         std::fs::read_to_string(values).map_err(|e| unusable(anyhow!("cannot read {}: {e}", values.display())))?;
@@ -82,16 +90,36 @@ fn checked(args: &CheckArgs, dir: Option<&Path>) -> Result<bool, (anyhow::Error,
     for line in skipped {
         eprintln!("warning: in {}: line {line}: no value and no length in mm: not checked", values.display());
     }
-    let verdicts = check::check(&reference, &rows, args.tolerance.map(Tolerance::Relative))
-        .map_err(|e| unusable(anyhow!("in {}: {e}", values.display())))?;
+    let verdicts = check::check(&reference, &rows, args.tolerance.map(Tolerance::Relative)).map_err(|e| {
+        let each: Vec<String> = e.0.iter().map(|x| format!("in {}: {x}", values.display())).collect();
+        unusable(anyhow!(each.join("\nerror: ")))
+    })?;
+    // The same quantity twice is almost surely a slip (a position mistyped): both are judged.
+    for (k, v) in verdicts.iter().enumerate() {
+        if let Some(first) = verdicts[..k].iter().find(|w| w.id == v.id) {
+            eprintln!(
+                "warning: in {}: line {}: {} is given on line {} too",
+                values.display(),
+                v.line,
+                v.id,
+                first.line
+            );
+        }
+    }
     print!("{}", check::write::text(&verdicts));
     if let Some(out) = &args.output {
         let body = match out.extension().and_then(|x| x.to_str()) {
-            Some("csv") => check::write::csv(&verdicts),
-            Some("md") => check::write::markdown(&verdicts),
-            _ => return Err((anyhow!("{}: the report is written as .md or .csv", out.display()), 2)),
+            Some("csv") => check::write::csv(&verdicts).into_bytes(),
+            Some("md") => check::write::markdown(&verdicts).into_bytes(),
+            Some("pdf") => {
+                // The worked example (or a variant) by its title, a file by its path.
+                let project_name = if args.files.len() == 2 { name.clone() } else { project.info.title().to_string() };
+                let names = Names { project: &project_name, values: &values.display().to_string() };
+                pipeline::check_report_pdf(&project, &verdicts, &names).map_err(|e| (anyhow!(e), 3))?
+            }
+            _ => return Err((anyhow!("{}: the report is written as .md, .csv or .pdf", out.display()), 2)),
         };
-        write::write_file(out, body.as_bytes()).map_err(|e| (e, 3))?;
+        write::write_file(out, &body).map_err(|e| (e, 3))?;
     }
     Ok(verdicts.iter().all(|v| v.pass))
 }

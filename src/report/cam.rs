@@ -4,12 +4,13 @@
 use super::{Column, NumTable, Row, Sub, SubWord, Unit};
 use crate::cams::Design;
 use crate::cams::follower::Follower;
+use crate::cams::laws::Derivs;
 use crate::num::tol;
 use crate::num::units::mm;
 
 /// The lift's unit as the tables write it: mm for a translating follower (as its drawing is
 /// measured), ° for a rocker.
-fn lift(d: &Design, x: f64) -> f64 {
+pub fn lift(d: &Design, x: f64) -> f64 {
     match d.spec.follower {
         Follower::Translating => mm(x),
         Follower::Rocker { .. } => x.to_degrees(),
@@ -17,7 +18,7 @@ fn lift(d: &Design, x: f64) -> f64 {
 }
 
 /// The analogs' unit: mm for a translating follower, none for a rocker (radians per radian).
-fn analog(d: &Design, x: f64) -> f64 {
+pub fn analog(d: &Design, x: f64) -> f64 {
     match d.spec.follower {
         Follower::Translating => mm(x),
         Follower::Rocker { .. } => x,
@@ -33,21 +34,24 @@ fn positions(first: usize, n: usize) -> Vec<Column> {
     (first..first + n).map(|k| Column::labelled(&k.to_string())).collect()
 }
 
+/// The law at position `k` of a phase's positions `phis`, from inside the phase: at the ends
+/// the program's `at` belongs to the dwell, and where the acceleration jumps the table (and
+/// the drawing's ordinate) gives the phase's own value.
+pub fn law_at(d: &Design, phis: &[f64], k: usize) -> Derivs {
+    let phi = phis[k];
+    d.spec.program.at(if k + 1 == phis.len() {
+        phi - tol::INSIDE_PHASE
+    } else if k == 0 {
+        phi + tol::INSIDE_PHASE
+    } else {
+        phi
+    })
+}
+
 /// The law and the pressure angle at positions `first..` (cam angles `phis`), as one table.
 pub fn law(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable {
-    let p = &d.spec.program;
     let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
-    // Each position from inside its phase: at the ends `at` belongs to the dwell, and where the
-    // acceleration jumps the table gives the phase's own value.
-    let at = |phi: f64, k: usize| {
-        p.at(if k + 1 == phis.len() {
-            phi - tol::INSIDE_PHASE
-        } else if k == 0 {
-            phi + tol::INSIDE_PHASE
-        } else {
-            phi
-        })
-    };
+    let at = |_: f64, k: usize| law_at(d, phis, k);
     let col = |f: &dyn Fn(f64, usize) -> f64| phis.iter().enumerate().map(|(k, &phi)| f(phi, k)).collect::<Vec<_>>();
     let (s, v, a) = if rocker { ("β", "dβ/dφ", "d²β/dφ²") } else { ("s", "ds/dφ", "d²s/dφ²") };
     let (us, uv) = if rocker { (Unit::Deg, Unit::None) } else { (Unit::Mm, Unit::Mm) };
@@ -64,14 +68,17 @@ pub fn law(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable
     }
 }
 
+/// The pitch (or working) profile's point at cam angle `phi` in polar coordinates (r, θ):
+/// metres, radians from the start of the rise's radius, turning against the cam.
+pub fn polar_at(d: &Design, phi: f64, working: bool) -> (f64, f64) {
+    let pr = &d.profile;
+    pr.polar(if working { pr.working(d.roller, phi).0 } else { pr.pitch(phi).p })
+}
+
 /// The pitch and working profiles' polar coordinates at the positions (r in mm, θ in
 /// degrees from the start of the rise's radius, turning against the cam).
 pub fn profile(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable {
-    let pr = &d.profile;
-    let polar = |phi: f64, working: bool| {
-        let p = if working { pr.working(d.roller, phi).0 } else { pr.pitch(phi).p };
-        pr.polar(p)
-    };
+    let polar = |phi: f64, working: bool| polar_at(d, phi, working);
     let col = |f: &dyn Fn(f64) -> f64| phis.iter().map(|&phi| f(phi)).collect::<Vec<_>>();
     let (pitch, work) = (|| Sub::Word(SubWord::Pitch), || Sub::Word(SubWord::Work));
     let mut rows = vec![

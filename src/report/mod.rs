@@ -8,7 +8,7 @@ pub mod segments;
 
 mod table;
 
-pub use segments::{Segment, segments_csv};
+pub use segments::{AnswerKeys, Segment, segments_csv};
 pub use table::{Column, ForceKind, NumTable, Quantity, Row, Sub, SubWord, Unit, ascii_key};
 
 use std::fmt::Write;

@@ -7,6 +7,7 @@
 //! of paper-millimetre primitives, never bytes.
 
 pub mod cam;
+pub mod check_report;
 pub mod gears;
 pub mod lever;
 pub mod notes;

@@ -9,6 +9,7 @@ mod notes;
 mod profile_view;
 mod regions;
 mod results;
+mod segments;
 mod tables;
 
 pub use diagrams::Scales;
@@ -26,6 +27,7 @@ use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::table::{self, CELL_TEXT, Table};
 use crate::drawing::text::{LINE_PITCH, LabelText, TooLong, paragraph, wrap};
 use crate::project::{CamProject, Project};
+use crate::report::AnswerKeys;
 use kurbo::{Point, Rect};
 use labels::CamWords;
 use nomogram::Placement;
@@ -152,6 +154,10 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let prof = profile_view::draw(&mut pv, &at, d, &fitted, &phis, &mut pl, &words);
     scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), &words);
     pl.place(&mut pv, lay.profile);
+    let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), &notes);
+    let mut measured = segments::diagrams(d, &scales, &integrated, &phis, &answers);
+    measured.extend(segments::nomogram(d, lay.nomogram_mu, &answers));
+    measured.extend(segments::profile(d, prof.mu, &phis, &answers));
     let mut groups = vec![dg, nm, pv];
     groups.extend(table_groups(&lay, law, rest));
     let composition = Composition {
@@ -162,7 +168,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         results: serde_json::Value::Null,
         diagnostics: Vec::new(),
         smallest_plan_mm: None,
-        segments: Vec::new(),
+        segments: measured,
     };
     Ok(CamBuild {
         composition,

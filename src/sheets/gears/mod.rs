@@ -6,6 +6,7 @@ pub mod labels;
 mod mesh_view;
 mod planetary_view;
 mod results;
+mod segments;
 mod tables;
 mod teeth_view;
 
@@ -27,6 +28,7 @@ use crate::gears::tooth::Outline;
 use crate::num::units::mm;
 use crate::project::gears::PlanetaryProject;
 use crate::project::{GearsProject, Project};
+use crate::report::AnswerKeys;
 use kurbo::{Point, Rect};
 use labels::GearWords;
 use mesh_view::{MeshInput, draw_mesh};
@@ -53,6 +55,11 @@ pub struct GearsBuild {
     pub planetary_mu: Option<f64>,
 }
 
+/// The parts of the mesh's and the planetary stage's drawings (their ids in the SVG, and
+/// the start of their segments' ids).
+const MESH_PART: &str = "mesh.drawing";
+const PLANETARY_PART: &str = "planetary.views";
+
 /// Left half: the mesh.
 const MESH: Rect = Rect { x0: 24.0, y0: 9.0, x1: 440.0, y1: 585.0 };
 /// Right half, above the title block's column.
@@ -63,6 +70,9 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let words = GearWords::new(ctx.info.language);
     let l = words.sheet;
     let (mesh, drawn) = mesh_group(p, &words)?;
+    let notes = tables::notes(p, drawn.contact_ratio_drawn, &words);
+    let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), &notes);
+    let mut measured = segments::mesh(&p.pair, drawn.mu, MESH_PART, &answers);
 
     // The right half: the planetary views on top, the tables below.
     let mut groups = vec![mesh];
@@ -72,11 +82,11 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let mut planetary_mu = None;
     if let Some(pl) = &p.planetary {
         let (g, mu, bottom) = planetary_group(pl, right, &words);
+        measured.extend(segments::planetary(&pl.stage, pl.module, mu, PLANETARY_PART, &answers));
         planetary_mu = Some(mu);
         groups.push(g);
         y_tables = bottom + 4.0;
     }
-    let notes = tables::notes(p, drawn.contact_ratio_drawn, &words);
     let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
     groups.push(tables::group(&notes, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, &words));
 
@@ -89,7 +99,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         results: serde_json::Value::Null,
         diagnostics: Vec::new(),
         smallest_plan_mm: None,
-        segments: Vec::new(),
+        segments: measured,
     };
     Ok(GearsBuild { composition, mesh: drawn, planetary_mu })
 }
@@ -127,7 +137,7 @@ fn mesh_group(p: &GearsProject, words: &GearWords) -> Result<(Group, MeshDrawn),
         draw_mesh(&mut mesh, area, &MeshInput { pair: &p.pair, outlines: [&outlines[0], &outlines[1]] }, &mut labels);
     // Its labels stay inside the drawing's area, clear of the notes below it.
     labels.place(&mut mesh, area);
-    mesh.part_from("mesh.drawing", start);
+    mesh.part_from(MESH_PART, start);
     let start = mesh.mark();
     let mut y = area.y1 + 5.0;
     let eps = &fmt::value;
@@ -191,8 +201,10 @@ fn planetary_group(pl: &PlanetaryProject, right: Rect, words: &GearWords) -> (Gr
     g.text(Text::new(Point::new(front.center().x, region.y1 - 1.5), l.front_view(), 2.5, Anchor::Middle));
     g.text(Text::new(Point::new(side.center().x, region.y1 - 1.5), l.side_view(), 2.5, Anchor::Middle));
     let mut labels = Labels::new();
+    let start = g.mark();
     planetary_view::draw(&mut g, front, side, s, pl.module, mu, &mut labels);
     labels.place(&mut g, region);
+    g.part_from(PLANETARY_PART, start);
     (g, mu, region.y1)
 }
 

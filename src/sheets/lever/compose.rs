@@ -25,11 +25,10 @@ use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
 use crate::project::LeverProject;
 use crate::report::NoteTable;
 use crate::report::lever::ForceTables;
-use crate::report::{Segment, ascii_key};
+use crate::report::{AnswerKeys, Segment, ascii_key};
 use crate::sheets::scaffold::{self, Composition};
 use crate::sheets::{Context, SheetKind};
 use kurbo::{Point, Rect};
-use std::collections::BTreeSet;
 
 /// The scales chosen for the sheet.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -138,9 +137,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         symbol: "v",
         unit: c.unit_v_per_mm(),
     };
-    let sheet = format!("sheet{}", inp.kind.number);
-    let ids: BTreeSet<String> = inp.notes.iter().flat_map(|n| n.answers(&sheet)).map(|a| a.id).collect();
-    let answer = AnswerKeys { sheet, ids };
+    let answer = AnswerKeys::of(&format!("sheet{}", inp.kind.number), inp.notes);
     let (vel, vdrawn, mu_v, mut drawn_segments) =
         plans_group(&velocity, &vplans, k.positions.iter().collect(), &words, &answer);
 
@@ -165,7 +162,8 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     drawn_segments.extend(acc_segments);
 
     let tables = tables_group(&notes, &words);
-    let (forces, force_scales) = force_groups(force_region, force_input.as_ref(), mech.region);
+    let (forces, force_scales, force_segments) = force_groups(force_region, force_input.as_ref(), mech.region, &answer);
+    drawn_segments.extend(force_segments);
     let mu_l = mech.mu_l;
     let mut groups = vec![mech.group, vel, acc, tables];
     groups.extend(forces);
@@ -304,16 +302,17 @@ fn force_groups(
     region: Option<Rect>,
     input: Option<&ForcesInput>,
     mech_region: Rect,
-) -> (Vec<Group>, Option<ForceScales>) {
+    answers: &AnswerKeys,
+) -> (Vec<Group>, Option<ForceScales>, Vec<Segment>) {
     let (Some(region), Some(input)) = (region, input) else {
-        return (Vec::new(), None);
+        return (Vec::new(), None, Vec::new());
     };
     let mut fg = Group::new("forces", region);
     let mut side = side_region(mech_region, region).map(|r| Group::new("forces-beside-mechanism", r));
-    let scales = draw_forces(&mut fg, side.as_mut(), input);
+    let (scales, segments) = draw_forces(&mut fg, side.as_mut(), input, answers);
     let mut out = vec![fg];
     out.extend(side.filter(|g| !g.items.is_empty()));
-    (out, Some(scales))
+    (out, Some(scales), segments)
 }
 
 /// The room beside a narrow mechanism drawing, above the force region, for force cells.
@@ -371,12 +370,6 @@ struct PlansRegion<'a> {
     unit: &'a str,
 }
 
-/// The sheet's name in ids ("sheet1") and the answer keys of its note's tables.
-struct AnswerKeys {
-    sheet: String,
-    ids: BTreeSet<String>,
-}
-
 /// Draws plans in cells filling the region below its header (see [`size_plans`]); returns
 /// the group, what each plan became and the scale they share, if one.
 fn plans_group(
@@ -421,7 +414,7 @@ fn plans_group(
         draw_plan(&mut g, &c, &mut labels);
         labels.place(&mut g, label_bounds(cell));
         g.part_from(format!("plan.{}.{}", r.symbol, ascii_key(&pos.label)), start);
-        segments.extend(plan_segments(plan, r.kind, &pos.label, mu, &answer.sheet, &|id| answer.ids.contains(id)));
+        segments.extend(plan_segments(plan, r.kind, &pos.label, mu, answer));
     }
     let drawn = positions
         .iter()

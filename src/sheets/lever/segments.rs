@@ -4,7 +4,7 @@
 
 use crate::lever::plans::{Plan, SegKind};
 use crate::num::math::Norm;
-use crate::report::{Segment, ascii_key};
+use crate::report::{AnswerKeys, Segment, ascii_key};
 
 /// A plan's kind: its id letter, its pole's letter, the note's table and the quantity's
 /// letter and unit.
@@ -18,16 +18,9 @@ pub struct PlanKind {
 pub const VELOCITY: PlanKind = PlanKind { symbol: "v", pole: "p", table: "velocities", unit: "m/s" };
 pub const ACCELERATION: PlanKind = PlanKind { symbol: "a", pole: "π", table: "accelerations", unit: "m/s²" };
 
-/// Every vector of `plan` (drawn at `mu`, unit per mm) at position `label` as a segment;
-/// `answer` tells whether the note has an answer key (`sheet1.velocities.v_B.3`).
-pub fn plan_segments(
-    plan: &Plan,
-    kind: &PlanKind,
-    label: &str,
-    mu: f64,
-    sheet: &str,
-    answer: &dyn Fn(&str) -> bool,
-) -> Vec<Segment> {
+/// Every vector of `plan` (drawn at `mu`, unit per mm) at position `label` as a segment,
+/// tied to its answer key (`sheet1.velocities.v_B.3`) when the note has one.
+pub fn plan_segments(plan: &Plan, kind: &PlanKind, label: &str, mu: f64, answers: &AnswerKeys) -> Vec<Segment> {
     let position = ascii_key(label);
     // (name as the course writes it, the answer table's row, magnitude)
     let mut drawn: Vec<(String, String, f64)> = Vec::new();
@@ -54,14 +47,13 @@ pub fn plan_segments(
     }
     let mut out: Vec<Segment> = Vec::new();
     for (name, row, value) in drawn {
-        let key = format!("{sheet}.{}.{}.{position}", kind.table, ascii_key(&row));
+        let key = format!("{}.{}.{position}", kind.table, ascii_key(&row));
         let id = format!("plan.{}.{position}.{}", kind.symbol, ascii_key(&name));
         // A plan draws a vector once; a name met twice (never, by construction) keeps the first.
         if out.iter().any(|o| o.id == id) {
             continue;
         }
-        let quantity = answer(&key).then_some(key);
-        out.push(Segment { id, name, length_mm: value / mu, quantity, value, unit: kind.unit, scale: mu });
+        out.push(Segment::new(id, name, value, kind.unit, mu).answering(&key, answers));
     }
     out
 }

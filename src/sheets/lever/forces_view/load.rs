@@ -35,8 +35,9 @@ pub(super) fn cell_size(load: &Load) -> (f64, f64) {
     (LEFT + WIDTH + 14.0, TOP + ((hi - lo) / mu).max(MIN_HEIGHT) + BOTTOM)
 }
 
-/// A load diagram: force against S/H for both strokes, the analysed position marked.
-pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, i: usize) {
+/// A load diagram: force against S/H for both strokes, the analysed position marked;
+/// returns its μ_P and the length of its S/H axis, mm.
+pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, i: usize) -> (f64, f64) {
     let load: &Load = &inp.fa.model.loads[i];
     let value = inp.fa.forces.loads[i];
     let n = inp.m.links[load.link].number;
@@ -102,4 +103,5 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
         vec![scale_item(inp, "P", mu, inp.words.common.unit_n_per_mm())],
     ];
     text_rows(g, r.x0 + 2.0, r.y1 - 2.0 - LINE, &lines);
+    (mu, area.width())
 }

@@ -9,6 +9,7 @@ mod group;
 mod legend;
 mod load;
 mod polygon;
+mod segments;
 mod zhukovsky;
 
 use super::labels::LeverWords;
@@ -18,6 +19,7 @@ use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::table::Table;
 use crate::lever::analysis::ForceAnalysis;
 use crate::lever::linkage::{Mechanism, State};
+use crate::report::{AnswerKeys, Segment};
 use cells::{Cell, Content, Sizes, cells, pack};
 use kurbo::{Point, Rect};
 
@@ -55,14 +57,21 @@ pub struct ForceScales {
 }
 
 /// Draws the force analysis into `main` (the region below the mechanism, titled) and, when
-/// the mechanism leaves room beside it, `side`; returns the scales the drawings got.
-pub fn draw_forces(main: &mut Group, mut side: Option<&mut Group>, inp: &ForcesInput) -> ForceScales {
+/// the mechanism leaves room beside it, `side`; returns the scales the drawings got and the
+/// segments a student measures on them, tied to `answers`.
+pub fn draw_forces(
+    main: &mut Group,
+    mut side: Option<&mut Group>,
+    inp: &ForcesInput,
+    answers: &AnswerKeys,
+) -> (ForceScales, Vec<Segment>) {
     let region = main.region;
     let title = inp.words.sheet.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.words.lang));
     main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let bodies = bodies(region, side.as_ref().map(|g| g.region));
     let (cells, at, _) = arrange(inp, &bodies, DRAWN, SHRINK_TRIES);
     let mut scales = ForceScales { mu_l: vec![], mu_p: vec![], mu_f: vec![], mu_lever: 0.0, mu_f_lever: 0.0 };
+    let mut measured = Vec::new();
     for (cell, &(body, origin)) in cells.iter().zip(&at) {
         let g: &mut Group = match (body, side.as_deref_mut()) {
             (1, Some(sg)) => sg,
@@ -72,27 +81,34 @@ pub fn draw_forces(main: &mut Group, mut side: Option<&mut Group>, inp: &ForcesI
         // Each cell places its own labels inside itself, so cells never collide.
         let mut labels = Labels::new();
         let start = g.mark();
+        let part = part_id(inp, &cell.content);
         match cell.content {
             Content::Polygon(i, ref layout) => {
-                group::draw_group_cell(g, &mut labels, r, inp, &inp.fa.forces.polygons[i], layout);
+                let poly = &inp.fa.forces.polygons[i];
+                group::draw_group_cell(g, &mut labels, r, inp, poly, layout);
                 scales.mu_l.push(layout.mu_l);
                 scales.mu_p.push(layout.mu_p);
                 scales.mu_f.push(layout.mu_f);
+                measured.extend(segments::polygon(inp, poly, layout.mu_p, &part, answers));
             }
             Content::Lever(ref plan, mu, mu_f) => {
                 zhukovsky::draw_lever(g, &mut labels, r, inp, plan, (mu, mu_f));
                 scales.mu_lever = mu;
                 scales.mu_f_lever = mu_f;
+                measured.extend(segments::lever_arms(inp, mu, &part));
             }
-            Content::Load(i) => load::draw_load(g, &mut labels, r, inp, i),
+            Content::Load(i) => {
+                let drawn = load::draw_load(g, &mut labels, r, inp, i);
+                measured.extend(segments::load(inp, i, drawn, &part, answers));
+            }
             Content::Table(i) => {
                 inp.tables[i].draw(g, origin);
             }
         }
         labels.place(g, r.inflate(-0.5, -0.5));
-        g.part_from(part_id(inp, &cell.content), start);
+        g.part_from(part, start);
     }
-    scales
+    (scales, measured)
 }
 
 /// A force cell's id: `forces.group.2-3` (an Assur group by its links' numbers),
