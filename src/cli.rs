@@ -269,7 +269,7 @@ fn build_all(args: &BuildArgs, dir: Option<&Path>) -> Result<(), Failure> {
     let cat = catalogue::load(dir).map_err(Failure::Input)?;
     let formats = args.formats();
     let lang = language(args.lang);
-    let run = batch::Batch { output: &args.output, sheets: args.sheets.clone(), formats, lang };
+    let run = batch::Batch { output: &args.output, sheets: args.sheets.clone(), formats, overlay: args.overlay, lang };
     let start = std::time::Instant::now();
     let outcomes = batch::run(&cat, &run, args.jobs).map_err(Failure::Output)?;
     let seconds = start.elapsed().as_secs_f64();

@@ -144,14 +144,18 @@ fn build_all_writes_every_variant_and_a_summary_and_says_what_was_refused() {
 #[test]
 fn build_all_with_sheet_builds_only_that_sheet_of_the_variants_that_have_it() {
     let out = temp_dir("all-sheet3");
-    let o = tmm(&["build", "--all", "--sheet", "3", "-j", "1", "--no-png", "--no-pdf", "-o", out.to_str().unwrap()]);
+    let args = ["build", "--all", "--sheet", "3", "-j", "1", "--no-png", "--no-pdf", "--dxf", "--overlay", "-o"];
+    let o = tmm(&[&args[..], &[out.to_str().unwrap()]].concat());
     // Sheet 3 of rows 1 and 3 builds: their planetary stages are not asked for.
     let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
     let rows: Vec<&str> = csv.lines().collect();
     assert!(rows[1].starts_with("7,1,built"), "{}", rows[1]);
     assert!(rows[5].starts_with("7,5,incomplete in the guide,"), "{}", rows[5]);
     assert_eq!(o.status.code(), Some(0), "{csv}\n{}", text(&o.stderr));
-    assert!(out.join("task-07/variant-01/sheet3.svg").is_file());
+    // A batch writes what a single build writes: the DXF and the overlay too.
+    for f in ["sheet3.svg", "sheet3.dxf", "sheet3-overlay.svg", "sheet3-overlay.pdf", "sheet3-segments.csv"] {
+        assert!(out.join("task-07/variant-01").join(f).is_file(), "{f}");
+    }
     for v in 1..=4 {
         let dir = out.join(format!("task-07/variant-0{v}"));
         assert!(!dir.join("sheet1.svg").exists() && !dir.join("sheet2.svg").exists(), "variant {v}");

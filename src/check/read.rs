@@ -30,6 +30,21 @@ pub enum ReadError {
     Csv { line: u64, reason: String },
 }
 
+/// The file's text: UTF-8 (with or without a byte-order mark), else UTF-16 with its mark,
+/// else Windows-1251 — what Excel on a Russian or Uzbek Windows saves "CSV" as; the second
+/// value names a code page other than UTF-8, for a note to the user.
+pub fn decode(bytes: &[u8]) -> (String, Option<&'static str>) {
+    if let Ok(text) = std::str::from_utf8(bytes) {
+        return (text.to_string(), None);
+    }
+    if let Some((encoding, _)) = encoding_rs::Encoding::for_bom(bytes) {
+        let (text, _, _) = encoding.decode(bytes);
+        return (text.into_owned(), Some(encoding.name()));
+    }
+    let (text, _, _) = encoding_rs::WINDOWS_1251.decode(bytes);
+    (text.into_owned(), Some(encoding_rs::WINDOWS_1251.name()))
+}
+
 /// The columns a header may name, with the words it may name them by.
 const COLUMNS: &[(&str, &[&str])] = &[
     ("id", &["id", "name", "key", "quantity", "nomi", "belgi", "имя", "обозначение", "величина", "kattalik"]),
@@ -161,6 +176,18 @@ pub fn parse_tolerance(t: &str) -> Option<Tolerance> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_russian_excel_file_is_read_as_windows_1251() {
+        // "Величина;Значение\nv_B.3;1,04" as Excel on a Russian Windows saves it.
+        let bytes = encoding_rs::WINDOWS_1251.encode("Величина;Значение\nv_B.3;1,04\n").0.into_owned();
+        assert!(std::str::from_utf8(&bytes).is_err());
+        let (text, page) = decode(&bytes);
+        assert_eq!((text.as_str(), page), ("Величина;Значение\nv_B.3;1,04\n", Some("windows-1251")));
+        let (rows, _) = measured(&text).unwrap();
+        assert_eq!(rows[0].name, "v_B.3");
+        assert_eq!(decode("v_B.3".as_bytes()), ("v_B.3".to_string(), None));
+    }
 
     #[test]
     fn commas_semicolons_comments_and_every_kind_of_row() {

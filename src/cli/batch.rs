@@ -81,6 +81,8 @@ pub struct Batch<'a> {
     /// `--sheet`: the sheets to build of each variant that has them (empty: every sheet).
     pub sheets: Vec<u32>,
     pub formats: Vec<Format>,
+    /// `--overlay`: each sheet's constructions alone too.
+    pub overlay: bool,
     pub lang: Option<Language>,
 }
 
@@ -261,6 +263,9 @@ fn write_files(
     let mut files = vec![("project.yaml".to_string(), text.as_bytes().to_vec())];
     if let Some((project, built)) = built {
         files.extend(pipeline::outputs(project, built, &batch.formats).map_err(|e| anyhow!("{e}"))?);
+        if batch.overlay {
+            files.extend(pipeline::overlays(built).map_err(|e| anyhow!("{e}"))?);
+        }
     }
     write::write_outputs(&batch.output.join(folder(task, variant)), &files)
 }

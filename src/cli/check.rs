@@ -84,8 +84,11 @@ fn checked(args: &CheckArgs, dir: Option<&Path>) -> Result<bool, (anyhow::Error,
         project.info.language = l;
     }
     let reference = pipeline::reference(&project).map_err(|e| unusable(anyhow!(super::refused(e, &name))))?;
-    let text =
-        std::fs::read_to_string(values).map_err(|e| unusable(anyhow!("cannot read {}: {e}", values.display())))?;
+    let bytes = std::fs::read(values).map_err(|e| unusable(anyhow!("cannot read {}: {e}", values.display())))?;
+    let (text, code_page) = read::decode(&bytes);
+    if let Some(page) = code_page {
+        eprintln!("note: {} is not UTF-8: read as {page}", values.display());
+    }
     let (rows, skipped) = read::measured(&text).map_err(|e| unusable(anyhow!("in {}: {e}", values.display())))?;
     for line in skipped {
         eprintln!("warning: in {}: line {line}: no value and no length in mm: not checked", values.display());
