@@ -151,7 +151,7 @@ impl Labels {
             let base = Point::new(cand.r.x0 + (w - SLANT * req.h) / 2.0, cand.r.y0 + up);
             req.label.draw(g, base, req.h, Anchor::Middle);
             if let Some((a, b)) = req.drawn_leader(&cand) {
-                g.line(a, b, THIN);
+                g.writing_line(a, b, THIN);
             }
             placed.push(clear);
         }

@@ -257,11 +257,14 @@ pub struct Group {
     /// Its drawings, in item order, none overlapping another (items between them belong to
     /// the group only).
     pub parts: Vec<Part>,
+    /// The lines that belong to its writing, not its constructions (a label's leader, a
+    /// legend's sample line), by item index: the overlay leaves them out with the texts.
+    pub writing: Vec<usize>,
 }
 
 impl Group {
     pub fn new(id: impl Into<String>, region: Rect) -> Group {
-        Group { id: id.into(), region, items: Vec::new(), parts: Vec::new() }
+        Group { id: id.into(), region, items: Vec::new(), parts: Vec::new(), writing: Vec::new() }
     }
 
     /// Where the next item will go: the start of a part (see [`Group::part_from`]).
@@ -285,6 +288,12 @@ impl Group {
 
     pub fn line(&mut self, a: Point, b: Point, pen: Pen) {
         self.items.push(Item::Path { path: Path::polyline(&[a, b], false), pen });
+    }
+
+    /// A line that belongs to the writing (see [`Group::writing`]).
+    pub fn writing_line(&mut self, a: Point, b: Point, pen: Pen) {
+        self.writing.push(self.items.len());
+        self.line(a, b, pen);
     }
 
     /// A polyline through `pts` (nothing for fewer than two points).

@@ -68,7 +68,8 @@ pub fn overlay(scene: &Scene) -> Scene {
     Scene { ink: Ink::Overlay, groups, ..scene.clone() }
 }
 
-/// A group without its texts and tables, its other parts kept around what is left of them.
+/// A group without its texts, the lines of its writing (leaders, legend samples) and its
+/// tables, its other parts kept around what is left of them.
 fn constructions(g: &Group) -> Group {
     let in_table = |i: usize| g.parts.iter().any(|p| p.id.starts_with(table::PART) && p.items.contains(&i));
     let mut out = Group::new(g.id.clone(), g.region);
@@ -78,7 +79,7 @@ fn constructions(g: &Group) -> Group {
         if parts.peek().is_some_and(|p| p.items.start == i) {
             start = Some(out.mark());
         }
-        if !matches!(item, Item::Text(_)) && !in_table(i) {
+        if !matches!(item, Item::Text(_)) && !in_table(i) && !g.writing.contains(&i) {
             out.items.push(item.clone());
         }
         if let Some(p) = parts.next_if(|p| p.items.end == i + 1) {

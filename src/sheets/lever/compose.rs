@@ -294,7 +294,7 @@ fn mechanism_header(g: &mut Group, region: Rect, mu_l: f64, k: &Kinematics, word
 fn trajectory_legend(g: &mut Group, region: Rect, words: &LeverWords) {
     let legend_y = region.y1 - 2.0;
     let sample = (Point::new(region.x0 + 2.0, legend_y - 1.2), Point::new(region.x0 + 16.0, legend_y - 1.2));
-    g.line(sample.0, sample.1, TRAJECTORY);
+    g.writing_line(sample.0, sample.1, TRAJECTORY);
     g.text(Text::new(Point::new(region.x0 + 18.0, legend_y), words.sheet.trajectories(), 2.5, Anchor::Start));
 }
 /// The force drawings below the mechanism and, when it leaves room, beside it.
