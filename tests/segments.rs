@@ -90,6 +90,20 @@ fn the_worked_examples_segments_are_named_as_the_course_writes_them() {
     // C is a point of the frame: the normal component of a_BC starts at the pole.
     assert_eq!(by_id["plan.a.5.pin_BC"].name, "πn_BC");
     assert_eq!(by_id["plan.a.5.n_BCb"].quantity.as_deref(), Some("sheet1.accelerations.at_BC.5"));
+    // The links as the project file gives them (m): OA 0.12, AB 0.46, BC 0.39, BD 1.5; the
+    // rigid pairs only, centres of mass left out.
+    let links: Vec<(&str, f64)> = b
+        .output
+        .segments
+        .iter()
+        .filter(|s| s.id.starts_with("mechanism."))
+        .map(|s| (s.name.as_str(), s.value))
+        .collect();
+    assert_eq!(links.len(), 4, "{links:?}");
+    for (name, metres) in [("l_OA", 0.12), ("l_AB", 0.46), ("l_CB", 0.39), ("l_BD", 1.5)] {
+        let mm = links.iter().find(|l| l.0 == name).unwrap_or_else(|| panic!("{name}: {links:?}")).1;
+        assert!((mm - metres * 1e3).abs() < 1e-9, "{name} = {mm} mm");
+    }
     // v_B at position 3 from the closed form the guide's crank-rocker obeys: pb = v_B / μ_v.
     assert!((pb.length_mm - pb.value / pb.scale).abs() < 1e-12);
 }
@@ -154,7 +168,8 @@ fn every_segment_is_drawn_at_a_scale_its_sheet_states() {
                     .iter()
                     .flat_map(|k| r["scales"][*k].as_array().unwrap().iter().map(|p| p["mu"].as_f64().unwrap()));
                 let forces = r["forces"]["scales"]["mu_p"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap());
-                plans.chain(forces).chain([f(&["forces", "scales", "mu_lever"])]).collect()
+                let mechanism = 1e3 * f(&["scales", "mu_l"]);
+                plans.chain(forces).chain([f(&["forces", "scales", "mu_lever"]), mechanism]).collect()
             }
             2 => vec![1e3 * f(&["drawing", "mu_l"]), 1e3 * f(&["drawing", "planetary_mu_l"])],
             _ => {

@@ -138,8 +138,10 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         unit: c.unit_v_per_mm(),
     };
     let answer = AnswerKeys::of(&format!("sheet{}", inp.kind.number), inp.notes);
-    let (vel, vdrawn, mu_v, mut drawn_segments) =
+    let mut drawn_segments = segments::link_segments(&inp.project.mechanism, &k.positions, mech.mu_l);
+    let (vel, vdrawn, mu_v, vel_segments) =
         plans_group(&velocity, &vplans, k.positions.iter().collect(), &words, &answer);
+    drawn_segments.extend(vel_segments);
 
     // Acceleration plans: the chosen positions, one common μ_a.
     let acc_region = match force_region {

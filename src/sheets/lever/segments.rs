@@ -2,8 +2,11 @@
 //! pole to an image: v_B), `ab` (v_BA), `πb` (a_B), `an_BA` and `n_BAb` (the normal and
 //! tangential components of a_BA), each tied to its answer key when the note's tables have it.
 
+use crate::lever::analysis::Position;
+use crate::lever::linkage::Mechanism;
 use crate::lever::plans::{Plan, SegKind};
 use crate::num::math::Norm;
+use crate::num::units::mm;
 use crate::report::{AnswerKeys, Segment, ascii_key};
 
 /// A plan's kind: its id letter, its pole's letter, the note's table and the quantity's
@@ -54,6 +57,31 @@ pub fn plan_segments(plan: &Plan, kind: &PlanKind, label: &str, mu: f64, answers
             continue;
         }
         out.push(Segment::new(id, name, value, kind.unit, mu).answering(&key, answers));
+    }
+    out
+}
+
+/// The links' lengths as the student sets them on the mechanism's drawing at μ_l (m/mm):
+/// every pair of a link's joints whose distance is the same in every position (a kulisa's
+/// sliding point is not), in mm; centres of mass left out (their places are given as
+/// shares of a link).
+pub fn link_segments(m: &Mechanism, positions: &[Position], mu_l: f64) -> Vec<Segment> {
+    let mut out: Vec<Segment> = Vec::new();
+    let centre = |p: usize| m.mass_centres.iter().any(|&(_, c)| c == p);
+    for link in m.links.iter().filter(|l| l.number > 0) {
+        let joints: Vec<usize> = link.points.iter().copied().filter(|&p| !centre(p)).collect();
+        for (i, &a) in joints.iter().enumerate() {
+            for &b in &joints[i + 1..] {
+                let at = |pos: &Position| (pos.state.points[a].p - pos.state.points[b].p).norm();
+                let Some(first) = positions.first().map(at) else { continue };
+                let rigid = positions.iter().all(|p| (at(p) - first).abs() <= 1e-9 * m.size);
+                let name = format!("{}{}", m.point_names[a], m.point_names[b]);
+                let id = format!("mechanism.l_{}", ascii_key(&name));
+                if rigid && first > 0.0 && !out.iter().any(|o| o.id == id) {
+                    out.push(Segment::new(id, format!("l_{name}"), mm(first), "mm", mm(mu_l)));
+                }
+            }
+        }
     }
     out
 }
