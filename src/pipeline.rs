@@ -100,7 +100,10 @@ pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
     // The title block's "sheets": up to the last course sheet the project has a section for
     // (a kinematics exercise drawn on the first sheet alone is one sheet, not "1 of 3").
     let sheet_count = buildable(p).into_iter().max().unwrap_or(COURSE.len() as u32);
-    let ctx = Context { info: &p.info, sheet_count };
+    // The note's tables are numbered once across the sheets the project has.
+    let counts: Vec<(u32, u32)> =
+        COURSE.iter().filter_map(|k| (k.make)(p)).map(|s| (s.kind().number, s.table_count())).collect();
+    let first_table = |n: u32| 1 + counts.iter().filter(|(k, _)| *k < n).map(|(_, c)| c).sum::<u32>();
     let refused = |r: Refusal| match Error::from(r) {
         Error::Refused(mut r) => {
             r.buildable = buildable(p);
@@ -112,6 +115,7 @@ pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
         .map_err(|e| refused(e.refusal()))?
         .iter()
         .map(|sheet| {
+            let ctx = Context { info: &p.info, sheet_count, first_table: first_table(sheet.kind().number) };
             let output = sheet.build(&ctx).map_err(|e| refused(e.refusal(sheet.kind(), &p.places)))?;
             let svg = svg::write(&output.scene)?;
             Ok(Built { output, svg })

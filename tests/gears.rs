@@ -74,6 +74,12 @@ fn a_project_with_only_gears_builds_sheet_2_alone() {
         let built = pipeline::build(&p, &[]).unwrap();
         assert_eq!(built.len(), 1, "{name}");
         assert_eq!(built[0].output.number, 2);
+        // Its tables are the note's first: numbered from 1, not after a sheet 1 it lacks.
+        let first = &built[0].output.tables[0].title;
+        assert!(
+            first.starts_with("1-jadval.") || first.starts_with("Таблица 1.") || first.starts_with("Table 1."),
+            "{name}: {first}"
+        );
         let e = pipeline::build(&p, &[1]).unwrap_err().to_string();
         assert!(e.contains("needs a `mechanism` section"), "{name}: {e}");
     }

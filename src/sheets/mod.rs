@@ -64,6 +64,9 @@ pub struct Context<'a> {
     pub info: &'a ProjectInfo,
     /// The number of sheets of the whole project, for the title block.
     pub sheet_count: u32,
+    /// The number of the sheet's first table in the explanatory note: the tables are
+    /// numbered once across the project's sheets (see [`Sheet::table_count`]).
+    pub first_table: u32,
 }
 
 impl Context<'_> {
@@ -139,6 +142,8 @@ impl SheetError {
 /// One sheet, ready to build from its project section.
 pub trait Sheet {
     fn kind(&self) -> SheetKind;
+    /// How many numbered tables the sheet gives the note.
+    fn table_count(&self) -> u32;
     /// The sheet's drawings, tables and results, without the frame and the title block.
     fn compose(&self, ctx: &Context) -> Result<scaffold::Composition, SheetError>;
     /// The finished sheet: the composition with the frame, the title block and the layout

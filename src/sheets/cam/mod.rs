@@ -115,7 +115,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let integrated = integrate::turn(&d.spec.program, DIVISIONS);
     let errors = diagrams::error_percent(d, &integrated);
     let phis = nomogram::positions(d, DIVISIONS);
-    let notes = tables::notes(d, &phis, errors, lang);
+    let notes = tables::notes(d, &phis, errors, lang, ctx.first_table);
     let fitted = profile_view::fit(d);
     let column = plan_column(p, errors, fitted.deviation, &words)?;
     let (law, rest): (Vec<_>, Vec<_>) = notes.iter().partition(|n| tables::is_law(n));
@@ -249,6 +249,10 @@ fn scale_note(g: &mut Group, mu: f64, ratio: Option<String>, words: &CamWords) {
 impl Sheet for CamSheet<'_> {
     fn kind(&self) -> SheetKind {
         KIND
+    }
+
+    fn table_count(&self) -> u32 {
+        tables::TABLE_COUNT
     }
 
     fn compose(&self, ctx: &Context) -> Result<Composition, SheetError> {

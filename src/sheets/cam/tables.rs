@@ -6,42 +6,47 @@ use super::DIVISIONS;
 use super::labels::CamLabels;
 use crate::cams::Design;
 use crate::drawing::labels::{Common, Language};
-use crate::drawing::table::{self, CELL_TEXT, Table};
+use crate::drawing::table::{CELL_TEXT, Table};
 use crate::report::{self, NoteTable};
 use crate::sheets::scaffold;
 
 /// The note's tables in the sheet's language, at the positions' cam angles `phis`;
 /// `errors` are the integration's, percent of the lift and of the largest analog.
-pub fn notes(d: &Design, phis: &[f64], errors: (f64, f64), lang: Language) -> Vec<NoteTable> {
+/// The tables are numbered from `first`.
+pub fn notes(d: &Design, phis: &[f64], errors: (f64, f64), lang: Language, first: u32) -> Vec<NoteTable> {
     let (l, c) = (CamLabels::get(lang), Common::get(lang));
     let n = DIVISIONS + 1;
     let (rise, ret) = phis.split_at(n);
-    let note = |t, title: &str, columns| scaffold::note(lang, t, title, columns, false);
+    let note = |t, title: String, columns| scaffold::note(lang, t, &title, columns, false);
+    let k = |i: u32| (first + i).to_string();
+    let (up, back) = (l.phase_rise(), l.phase_return());
     vec![
-        note(report::cam::law(d, "law-rise", 0, rise), l.law_table(), vec![]),
-        note(report::cam::law(d, "law-return", n, ret), l.law_table(), vec![]),
-        note(report::cam::profile(d, "profile-rise", 0, rise), l.profile_table(), vec![]),
-        note(report::cam::profile(d, "profile-return", n, ret), l.profile_table(), vec![]),
-        note(report::cam::results(d, errors), l.results_table(), vec![c.value().into()]),
+        note(report::cam::law(d, "law-rise", 0, rise), l.law_table(&k(0), up), vec![]),
+        note(report::cam::law(d, "law-return", n, ret), l.law_table(&k(1), back), vec![]),
+        note(report::cam::profile(d, "profile-rise", 0, rise), l.profile_table(&k(2), up), vec![]),
+        note(report::cam::profile(d, "profile-return", n, ret), l.profile_table(&k(3), back), vec![]),
+        note(report::cam::results(d, errors), l.results_table(&k(4)), vec![c.value().into()]),
     ]
 }
+
+/// How many tables the note gets from sheet 3 (see [`notes`]).
+pub const TABLE_COUNT: u32 = 5;
 
 /// Whether a table is one of the law's (drawn under the diagrams when they fit).
 pub fn is_law(n: &NoteTable) -> bool {
     n.table.id.starts_with("law")
 }
 
-/// A table as sheet 3 draws it: units after the symbols, the return's half titled as the
-/// continuation (it may flow into another column).
+/// A table as sheet 3 draws it: units after the symbols (each phase's table has its own
+/// number and its phase in the title, wherever the columns put it).
 pub fn sheet_table(n: &NoteTable, lang: Language) -> Table {
     let c = Common::get(lang);
     let rows = scaffold::drawn_rows(n, lang, true);
     let label_w = rows.iter().map(|(x, _)| x.width(CELL_TEXT) + 4.0).fold(14.0, f64::max);
     let results = n.table.id == "results";
-    let continued = n.table.id.ends_with("-return");
     Table {
         id: format!("{}{}", crate::drawing::table::PART, n.table.id),
-        title: if continued { table::continued_title(&n.title, c.continued()) } else { n.title.clone() },
+        title: n.title.clone(),
         header: n.column_titles.clone(),
         rows,
         label_w,

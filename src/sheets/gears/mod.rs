@@ -70,7 +70,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let words = GearWords::new(ctx.info.language);
     let l = words.sheet;
     let (mesh, drawn) = mesh_group(p, &words)?;
-    let notes = tables::notes(p, drawn.contact_ratio_drawn, &words);
+    let notes = tables::notes(p, drawn.contact_ratio_drawn, &words, ctx.first_table);
     let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), &notes);
     let mut measured = segments::mesh(&p.pair, drawn.mu, MESH_PART, &answers);
 
@@ -211,6 +211,10 @@ fn planetary_group(pl: &PlanetaryProject, right: Rect, words: &GearWords) -> (Gr
 impl Sheet for GearsSheet<'_> {
     fn kind(&self) -> SheetKind {
         KIND
+    }
+
+    fn table_count(&self) -> u32 {
+        tables::table_count(self.project)
     }
 
     fn compose(&self, ctx: &Context) -> Result<Composition, SheetError> {

@@ -12,21 +12,30 @@ use crate::report::{self, NoteTable, Quantity};
 use crate::sheets::scaffold;
 use kurbo::Rect;
 
-/// The note's tables in the sheet's language; `eps_drawn` is the contact ratio measured on
-/// the drawing.
-pub fn notes(p: &GearsProject, eps_drawn: f64, words: &GearWords) -> Vec<NoteTable> {
+/// The note's tables in the sheet's language, numbered from `first` (the wheels and the
+/// pair are one table, in two parts); `eps_drawn` is the contact ratio measured on the
+/// drawing.
+pub fn notes(p: &GearsProject, eps_drawn: f64, words: &GearWords, first: u32) -> Vec<NoteTable> {
     let (l, c, lang) = (words.sheet, words.common, words.lang);
+    let n = |k: u32| (first + k).to_string();
+    let pair = l.pair_table(&n(0));
     let mut out = vec![
-        scaffold::note(lang, report::gears::wheels(&p.pair), l.pair_table(), vec![l.wheel("1"), l.wheel("2")], true),
-        scaffold::note(lang, report::gears::pair(&p.pair, eps_drawn), l.pair_table(), vec![c.value().into()], true),
+        scaffold::note(lang, report::gears::wheels(&p.pair), &pair, vec![l.wheel("1"), l.wheel("2")], true),
+        scaffold::note(lang, report::gears::pair(&p.pair, eps_drawn), &pair, vec![c.value().into()], true),
     ];
     if let Some(pl) = &p.planetary {
         let stage = report::gears::stage(&pl.stage, pl.module);
-        out.push(scaffold::note(lang, stage, l.planetary_table(), vec![c.value().into()], true));
+        out.push(scaffold::note(lang, stage, &l.planetary_table(&n(1)), vec![c.value().into()], true));
         let columns = vec![l.value_col().into(), l.limit_col().into(), l.ok_col().into()];
-        out.push(scaffold::note(lang, report::gears::conditions(&pl.stage), l.conditions_table(), columns, true));
+        let conditions = report::gears::conditions(&pl.stage);
+        out.push(scaffold::note(lang, conditions, &l.conditions_table(&n(2)), columns, true));
     }
     out
+}
+
+/// How many tables the note gets from sheet 2 (see [`notes`]).
+pub fn table_count(p: &GearsProject) -> u32 {
+    if p.planetary.is_some() { 3 } else { 1 }
 }
 
 /// Draws the tables in `region`, in columns left to right.

@@ -16,8 +16,8 @@ crate::label_set! {
         acceleration_plans,
         own_scales,
         position(k),
-        velocity_table,
-        acceleration_table,
+        velocity_table(n),
+        acceleration_table(n),
         structure,
         trajectories,
         exact_note,
@@ -39,9 +39,9 @@ crate::label_set! {
         sub_balancing,
         sub_resistance,
         sub_gas,
-        inertia_table,
-        reaction_table,
-        balance_table,
+        inertia_table(n),
+        reaction_table(n),
+        balance_table(n),
     }
 }
 

@@ -59,26 +59,34 @@ pub fn build(ctx: &Context, p: &LeverProject) -> Result<LeverBuild, SheetError> 
         }
         None => None,
     };
-    let notes = note_tables(ctx.info.language, &tables, forces.as_ref().map(|f| &f.1));
+    let notes = note_tables(ctx.info.language, &tables, forces.as_ref().map(|f| &f.1), ctx.first_table);
     let input = compose::Input { ctx, kind: KIND, project: p, notes: &notes, forces: forces.as_ref() };
     let composed = compose::compose(&input, &kinematics)?;
     Ok(LeverBuild { kinematics, forces, tables, notes, composed })
 }
 
-/// The note's tables with their titles in the sheet's language: 1 and 2, and 3–5 with a
-/// force analysis.
-fn note_tables(lang: Language, k: &KinematicTables, f: Option<&ForceTables>) -> Vec<NoteTable> {
+/// The note's tables with their titles in the sheet's language, numbered from `first`:
+/// the velocities and the accelerations, and three more with a force analysis.
+fn note_tables(lang: Language, k: &KinematicTables, f: Option<&ForceTables>, first: u32) -> Vec<NoteTable> {
     let l = LeverLabels::get(lang);
-    let note = |table: &crate::report::NumTable, title: &str| scaffold::note(lang, table.clone(), title, vec![], false);
-    let mut out = vec![note(&k.velocities, l.velocity_table()), note(&k.accelerations, l.acceleration_table())];
+    let note =
+        |table: &crate::report::NumTable, title: String| scaffold::note(lang, table.clone(), &title, vec![], false);
+    let n = |k: u32| (first + k).to_string();
+    let mut out =
+        vec![note(&k.velocities, l.velocity_table(&n(0))), note(&k.accelerations, l.acceleration_table(&n(1)))];
     if let Some(t) = f {
         out.extend([
-            note(&t.inertia, l.inertia_table()),
-            note(&t.reactions, l.reaction_table()),
-            note(&t.balance, l.balance_table()),
+            note(&t.inertia, l.inertia_table(&n(2))),
+            note(&t.reactions, l.reaction_table(&n(3))),
+            note(&t.balance, l.balance_table(&n(4))),
         ]);
     }
     out
+}
+
+/// How many tables the note gets from sheet 1 (see [`note_tables`]).
+pub fn table_count(p: &LeverProject) -> u32 {
+    if p.forces.is_some() { 5 } else { 2 }
 }
 
 impl LeverBuild {
@@ -114,6 +122,10 @@ impl LeverBuild {
 impl Sheet for LeverSheet<'_> {
     fn kind(&self) -> SheetKind {
         KIND
+    }
+
+    fn table_count(&self) -> u32 {
+        table_count(self.project)
     }
 
     fn compose(&self, ctx: &Context) -> Result<Composition, SheetError> {
