@@ -22,7 +22,8 @@
 //!   `$INSUNITS` 4 (mm) and `$MEASUREMENT` 1 (R2000), `$HANDSEED`; no dates.
 //! - TABLES: VPORT `*Active` zoomed on the sheet; LTYPE `CONTINUOUS`, `DASHED` and `CENTER`
 //!   with the GOST dashes of [`shapes::dash_array`]; a LAYER per group and line kind
-//!   (`{group}-contour|vector|thin|dashed|centre|fill|text`, with a lineweight in R2000);
+//!   (`{group}-contour|vector|thin|dashed|centre|fill|text`, a colour per line kind, with
+//!   a lineweight in R2000);
 //!   STYLE `TMM` on DejaVuSansCondensed.ttf; the other tables R2000 requires (ezdxf's
 //!   "minimal DXF content"). Handles are fixed for the structure and counted up from
 //!   `FIRST_FREE` in scene order for layers and entities.
@@ -178,6 +179,20 @@ impl Kind {
             Kind::Contour => 70,
             Kind::Vector => 50,
             Kind::Thin | Kind::Dashed | Kind::Centre | Kind::Fill | Kind::Text => 25,
+        }
+    }
+
+    /// The layer's colour (AutoCAD's index): a line kind each, so that R12, which has no
+    /// lineweights, can be plotted with a pen per colour (a plot style table mapping
+    /// colour 7 to 0.7 mm, 5 to 0.5 mm and the rest to 0.25 mm prints the sheet's widths);
+    /// the contour, the fills and the text in 7 (black on paper, white on a dark screen).
+    fn colour(self) -> i32 {
+        match self {
+            Kind::Contour | Kind::Fill | Kind::Text => 7,
+            Kind::Vector => 5,
+            Kind::Thin => 3,
+            Kind::Dashed => 6,
+            Kind::Centre => 1,
         }
     }
 

@@ -200,7 +200,7 @@ impl Writer {
 
     pub(super) fn layer(&mut self, handle: u32, name: &str, kind: Kind) {
         self.record("LAYER", handle, h::LAYER_TABLE, "AcDbLayerTableRecord", name);
-        self.pair(62, 7);
+        self.pair(62, kind.colour());
         self.pair(6, kind.linetype());
         if self.r2000 {
             self.pair(370, kind.lineweight());

@@ -151,3 +151,22 @@ fn ear_clipping_covers_a_concave_outline() {
     let area: f64 = t.iter().map(|[a, b, c]| ((*b - *a).cross(*c - *a)).abs() / 2.0).sum();
     assert!((area - 7.0).abs() < 1e-12, "{area}");
 }
+
+#[test]
+fn each_line_kind_has_its_colour_for_a_plotter_without_lineweights() {
+    let line = |pen| Item::Path { path: Path::polyline(&[Point::new(1.0, 2.0), Point::new(3.0, 4.0)], false), pen };
+    let s = scene(vec![line(MAIN), line(THIN), line(DASHED)]);
+    for v in [DxfVersion::R12, DxfVersion::R2000] {
+        let d = dxf(&s, v);
+        let lines: Vec<&str> = d.split("\r\n").collect();
+        // Each LAYER record's name (2) and colour (62), in order.
+        let colour = |layer: &str| {
+            let at = lines.iter().position(|l| *l == layer).unwrap_or_else(|| panic!("no layer {layer}"));
+            let k = (at..lines.len()).step_by(2).find(|&i| lines[i - 1].trim() == "62").unwrap();
+            lines[k].trim().to_string()
+        };
+        assert_eq!(colour("velocity_plans-contour"), "7");
+        assert_eq!(colour("velocity_plans-thin"), "3");
+        assert_eq!(colour("velocity_plans-dashed"), "6");
+    }
+}
