@@ -266,7 +266,7 @@ fn mechanism_group(
     mechanism_header(&mut group, region, mu_l, k, words);
     trajectory_legend(&mut group, region, words);
     let mut labels = Labels::new();
-    MechanismView { m, k, view: View::new(origin, mu_l), kulisa: &inp.project.kulisa_lengths }
+    MechanismView { m, k, view: View::new(origin, mu_l), kulisa: &inp.project.kulisa_lengths, words }
         .draw(&mut group, &mut labels);
     labels.place(&mut group, region.inflate(-0.5, -0.5));
     MechanismDrawn { group, region, mu_l, comfortable: comfortable.is_some() }

@@ -2,11 +2,13 @@
 //! position, the assigned position thick with its letters and the senses of ω and ε,
 //! the centres of mass and their trajectories, frame pivots and guides.
 
+use super::labels::LeverWords;
+use crate::drawing::fmt;
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, Group, MAIN, Pen, THIN};
-use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, hatch, slider};
+use crate::drawing::symbols::{clear_turn_arrow, dimension, frame_pivot, hatch, slider};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::analysis::{Kinematics, Position};
@@ -24,6 +26,8 @@ const JOINT_R: f64 = 1.0;
 /// PDF and PNG renderers — the backends' agreement test sees it — so dash-dot stays until
 /// the backends dash curves alike.)
 pub const TRAJECTORY: Pen = AXIS;
+/// A slider's stroke shorter than this on paper is not dimensioned: its arrows would hide it, mm.
+const STROKE_MIN_MM: f64 = 3.0;
 /// The length of the crank pin's circle each position number needs in 3.5 mm lettering, mm.
 const CROWDED_NUMBERS: f64 = 8.0;
 
@@ -65,6 +69,7 @@ pub struct MechanismView<'a> {
     pub k: &'a Kinematics,
     pub view: View,
     pub kulisa: &'a [(usize, Option<f64>)],
+    pub words: &'a LeverWords,
 }
 
 impl MechanismView<'_> {
@@ -83,7 +88,7 @@ impl MechanismView<'_> {
                 g.curve(path, TRAJECTORY);
             }
         }
-        self.guides(g);
+        self.guides(g, labels);
         for pos in &self.k.positions {
             self.position(g, pos, THIN, 0.7);
         }
@@ -108,8 +113,9 @@ impl MechanismView<'_> {
         g.circle(self.view.p(c), self.view.len(crank.length), THIN);
     }
 
-    /// Each guide: its axis (dash-dot) over the slider's travel and a hatched frame line.
-    fn guides(&self, g: &mut Group) {
+    /// Each guide: its axis (dash-dot) over the slider's travel, a hatched frame line, and
+    /// the slider's stroke H dimensioned between its extreme positions beyond the hatching.
+    fn guides(&self, g: &mut Group, labels: &mut Labels) {
         for st in &self.m.steps {
             let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
             let s: Vec<f64> = self.k.positions.iter().map(|p| (p.state.points[d].p - through).dot(dir)).collect();
@@ -126,6 +132,15 @@ impl MechanismView<'_> {
             let (pa, pb) = (self.view.p(a) + off, self.view.p(b) + off);
             g.line(pa, pb, THIN);
             hatch(g, pa, pb, self.view.dir(n_world * side), 2.5);
+            // H between the extremes of the slider's point, 4 mm past the hatching.
+            let (ea, eb) = (self.view.p(through + dir * lo), self.view.p(through + dir * hi));
+            if (eb - ea).norm() >= STROKE_MIN_MM {
+                let out = self.view.dir(n_world * side);
+                let mid = dimension(g, ea, eb, out * (SLIDER.1 / 2.0 + 2.5 + 4.0));
+                let (lang, c) = (self.words.lang, self.words.common);
+                let value = format!(" = {} {}", fmt::value(1e3 * (hi - lo), lang), c.unit_mm());
+                labels.add(mid, out, LabelText::new("H", "").with_tail(value), 3.5);
+            }
         }
     }
 
