@@ -28,6 +28,8 @@ const JOINT_R: f64 = 1.0;
 pub const TRAJECTORY: Pen = AXIS;
 /// A slider's stroke shorter than this on paper is not dimensioned: its arrows would hide it, mm.
 const STROKE_MIN_MM: f64 = 3.0;
+/// The length of a slider's stroke each of its position numbers needs (2.5 mm lettering), mm.
+const SLIDER_NUMBER_MM: f64 = 5.0;
 /// The length of the crank pin's circle each position number needs in 3.5 mm lettering, mm.
 const CROWDED_NUMBERS: f64 = 8.0;
 
@@ -234,6 +236,23 @@ impl MechanismView<'_> {
         for pos in &self.k.positions {
             let (o, a) = ends(pos);
             labels.add_text_ranked(a, a - o, &pos.label, h, 2);
+        }
+        // Each slider's positions numbered too, on the side of the guide away from its
+        // hatching (where the rod comes from), as the guide numbers D0 … D11 — when its
+        // stroke leaves each number room; crowded, they would only hide the guide.
+        for st in &self.m.steps {
+            let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
+            let s = self.k.positions.iter().map(|p| (p.state.points[d].p - through).dot(dir));
+            let (lo, hi) = s.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
+            if self.view.len(hi - lo) < SLIDER_NUMBER_MM * self.k.positions.len() as f64 {
+                continue;
+            }
+            let n_world = dir.turn_90();
+            let rod: f64 = self.k.positions.iter().map(|p| (p.state.points[joint].p - through).dot(n_world)).sum();
+            let up = self.view.dir(n_world * if rod >= 0.0 { 1.0 } else { -1.0 });
+            for pos in &self.k.positions {
+                labels.add_text_ranked(self.view.p(pos.state.points[d].p), up, &pos.label, 2.5, 2);
+            }
         }
     }
 
