@@ -182,17 +182,19 @@ pub fn render(b: &Built, format: Format) -> Result<Vec<u8>, Error> {
 /// segment of the sheets the project has (a section refused leaves its sheet out; the
 /// others still count).
 pub fn reference(p: &Project) -> Result<check::Reference, Error> {
+    let mut reference = check::Reference::default();
     let built = match build(p, &[]) {
         Err(Error::Refused(r)) if !r.buildable.is_empty() => {
             let others: Vec<u32> = r.buildable.iter().copied().filter(|n| !r.blocks.contains(n)).collect();
             if others.is_empty() {
                 return Err(Error::Refused(r));
             }
+            let reason = Error::Refused(r.clone()).to_string();
+            reference.missing = r.blocks.iter().map(|&n| (n, reason.clone())).collect();
             build(p, &others)?
         }
         other => other?,
     };
-    let mut reference = check::Reference::default();
     for b in &built {
         let prefix = format!("sheet{}", b.output.number);
         reference.answers.extend(b.output.tables.iter().flat_map(|t| t.answers(&prefix)));

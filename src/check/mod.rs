@@ -33,6 +33,9 @@ pub struct Reference {
     pub answers: Vec<Answer>,
     /// Every measured segment, under its full id (`sheet1.plan.v.3.pb`).
     pub segments: Vec<(String, Segment)>,
+    /// The project's sheets that could not be built, and why: a value of one of them is
+    /// named as such, not as unknown.
+    pub missing: Vec<(u32, String)>,
 }
 
 /// One row of the student's file.
@@ -145,6 +148,8 @@ pub enum CheckError {
     Unit { line: u64, unit: String, id: String, expected: String },
     #[error("line {line}: {name} is a value, not a drawn segment: give the scale you drew it at (a 'scale' column)")]
     NoScale { line: u64, name: String },
+    #[error("line {line}: '{name}' is on sheet {sheet}, which this project cannot build: {reason}")]
+    NotBuilt { line: u64, name: String, sheet: u32, reason: String },
 }
 
 fn hint(close: &[String]) -> String {
@@ -208,7 +213,7 @@ fn folded(name: &str) -> String {
 
 /// The target a student's name stands for: the whole id; or the id's end after a dot
 /// (`v_B.3`, `plan.v.3.pb`); or, ignoring case, underscores and Greek spelling, the same.
-fn resolve<'a>(targets: &'a [Target], m: &Measured) -> Result<&'a Target, CheckError> {
+fn resolve<'a>(targets: &'a [Target], missing: &[(u32, String)], m: &Measured) -> Result<&'a Target, CheckError> {
     let name = m.name.trim();
     // A segment's position comes before its name (plan.v.3.pb): "pb.3" is that too, at the
     // same rank — "ab.3" is v_BA's segment ab of plan 3, not a_B.3 spelled loosely.
@@ -232,7 +237,12 @@ fn resolve<'a>(targets: &'a [Target], m: &Measured) -> Result<&'a Target, CheckE
     let found = if found.len() > 1 && preferred.len() == 1 { preferred } else { found };
     match found.as_slice() {
         [one] => Ok(one),
-        [] => Err(CheckError::Unknown { line: m.line, name: name.into(), close: close_names(targets, name) }),
+        [] => Err(match missing.iter().find(|(n, _)| name.starts_with(&format!("sheet{n}."))) {
+            Some((sheet, reason)) => {
+                CheckError::NotBuilt { line: m.line, name: name.into(), sheet: *sheet, reason: reason.clone() }
+            }
+            None => CheckError::Unknown { line: m.line, name: name.into(), close: close_names(targets, name) },
+        }),
         many => Err(CheckError::Ambiguous {
             line: m.line,
             name: name.into(),
@@ -287,7 +297,8 @@ fn close_names(targets: &[Target], name: &str) -> Vec<String> {
 /// that one run shows the student every name and unit to mend).
 pub fn check(reference: &Reference, rows: &[Measured], over: Option<Tolerance>) -> Result<Vec<Verdict>, Unchecked> {
     let targets = reference.targets();
-    let (verdicts, errors): (Vec<_>, Vec<_>) = rows.iter().map(|m| verdict(&targets, m, over)).partition(Result::is_ok);
+    let (verdicts, errors): (Vec<_>, Vec<_>) =
+        rows.iter().map(|m| verdict(&targets, &reference.missing, m, over)).partition(Result::is_ok);
     if errors.is_empty() {
         Ok(verdicts.into_iter().map(|v| v.expect("partitioned")).collect())
     } else {
@@ -308,8 +319,13 @@ impl std::fmt::Display for Unchecked {
 
 impl std::error::Error for Unchecked {}
 
-fn verdict(targets: &[Target], m: &Measured, over: Option<Tolerance>) -> Result<Verdict, CheckError> {
-    let t = resolve(targets, m)?;
+fn verdict(
+    targets: &[Target],
+    missing: &[(u32, String)],
+    m: &Measured,
+    over: Option<Tolerance>,
+) -> Result<Verdict, CheckError> {
+    let t = resolve(targets, missing, m)?;
     let convert = |unit: &str| {
         units::factor(unit, t.unit).ok_or_else(|| CheckError::Unit {
             line: m.line,
@@ -409,7 +425,23 @@ mod tests {
                     scale: 0.05,
                 },
             )],
+            missing: vec![(3, "cam.phases: the phases exceed a turn".into())],
         }
+    }
+
+    #[test]
+    fn a_value_of_a_sheet_not_built_is_named_with_the_reason() {
+        let m = Measured {
+            line: 4,
+            name: "sheet3.results.r_min".into(),
+            given: Given::Value { value: 50.0, unit: "mm".into() },
+            tolerance: None,
+        };
+        let e = check(&reference(), &[m], None).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "line 4: 'sheet3.results.r_min' is on sheet 3, which this project cannot build: cam.phases: the phases exceed a turn"
+        );
     }
 
     fn one(name: &str, given: Given) -> Verdict {
@@ -448,10 +480,10 @@ mod tests {
             tolerance: None,
         };
         for name in ["sheet1.velocities.v_B.3", "velocities.v_B.3", "v_B.3", "V_B.3", "vb.3", "pb.3", "3.pb"] {
-            let t = resolve(&targets, &m(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+            let t = resolve(&targets, &[], &m(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
             assert!(t.id.ends_with(".3") || t.id.ends_with(".pb"), "{name} → {}", t.id);
         }
-        match resolve(&targets, &m("v_C.3")) {
+        match resolve(&targets, &[], &m("v_C.3")) {
             Err(CheckError::Unknown { close, .. }) => assert!(close.contains(&"sheet1.velocities.v_B.3".to_string())),
             other => panic!("{other:?}"),
         }
