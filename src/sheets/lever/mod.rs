@@ -84,7 +84,7 @@ fn note_tables(lang: Language, k: &KinematicTables, f: Option<&ForceTables>, fir
     out
 }
 
-/// How many tables the note gets from sheet 1 (see [`note_tables`]).
+/// How many tables the note gets from sheet 1 (see `note_tables`).
 pub fn table_count(p: &LeverProject) -> u32 {
     if p.forces.is_some() { 5 } else { 2 }
 }
