@@ -7,27 +7,42 @@ use crate::num::digits;
 
 const HEAD: [&str; 8] = ["line", "id", "exact", "student", "unit", "deviation", "allowed", "result"];
 
-fn cells(v: &Verdict) -> [String; 8] {
+/// A number as every report prints it: four significant digits (the sheets').
+pub fn number(x: f64) -> String {
+    digits::sig(x, 4)
+}
+
+/// The deviation signed, with its percent of the exact value ("+0.003064 (+0.0 %)").
+pub fn deviation(v: &Verdict) -> String {
     let share = v.deviation_shown() / v.exact.abs() * 100.0;
     let percent = match share {
         _ if v.exact == 0.0 => String::new(),
         s if s.abs() > 999.0 => format!(" ({}999 %)", if s > 0.0 { ">+" } else { "<-" }),
         s => format!(" ({s:+.1} %)"),
     };
+    format!("{}{percent}", signed(v.deviation_shown()))
+}
+
+/// What the value was matched to, and the student's name for it when it differs.
+pub fn quantity(v: &Verdict) -> String {
+    if v.name == v.id { v.id.clone() } else { format!("{} ({})", v.id, v.name) }
+}
+
+fn cells(v: &Verdict) -> [String; 8] {
     [
         v.line.to_string(),
-        if v.name == v.id { v.id.clone() } else { format!("{} ({})", v.id, v.name) },
-        digits::sig(v.exact, 4),
-        digits::sig(v.student, 4),
+        quantity(v),
+        number(v.exact),
+        number(v.student),
         v.unit.clone(),
-        format!("{}{percent}", signed(v.deviation_shown())),
-        format!("±{} ({})", digits::sig(v.tolerance, 4), v.rule),
+        deviation(v),
+        format!("±{} ({})", number(v.tolerance), v.rule),
         if v.pass { "pass" } else { "FAIL" }.to_string(),
     ]
 }
 
 fn signed(x: f64) -> String {
-    let s = digits::sig(x, 4);
+    let s = number(x);
     if x > 0.0 { format!("+{s}") } else { s }
 }
 

@@ -26,22 +26,6 @@ pub enum Unit {
 }
 
 impl Unit {
-    /// Every unit, for a lookup by its SI spelling.
-    pub const ALL: [Unit; 12] = [
-        Unit::None,
-        Unit::Mm,
-        Unit::MPerS,
-        Unit::MPerS2,
-        Unit::PerS,
-        Unit::PerS2,
-        Unit::Kg,
-        Unit::KgM2,
-        Unit::N,
-        Unit::NM,
-        Unit::Deg,
-        Unit::Percent,
-    ];
-
     /// The unit as the CSV (for programs) writes it, in SI notation.
     pub const fn si(self) -> &'static str {
         match self {

@@ -4,13 +4,11 @@
 //! margin — with the summary, the rule of the tolerances, the page number and a line for
 //! the teacher's signature.
 
-use crate::check::{Rule, Verdict};
+use crate::check::{Rule, Verdict, write};
 use crate::drawing::fmt;
-use crate::drawing::labels::Language;
+use crate::drawing::labels::{Common, Language};
 use crate::drawing::scene::{Anchor, Group, Ink, MAIN, Scene, THIN, Text};
 use crate::drawing::text::wrap;
-use crate::num::digits;
-use crate::report::Unit;
 use kurbo::{Point, Rect};
 
 crate::label_set! {
@@ -170,15 +168,9 @@ fn cells(g: &mut Group, left: f64, top: f64, texts: &[String; 8]) {
     }
 }
 
+/// A verdict's cells as the terminal's report writes them, in the report's language.
 fn row(v: &Verdict, lang: Language, l: &CheckLabels) -> [String; 8] {
-    let num = |x: f64| fmt::localise(&digits::sig(x, 4), lang);
-    let signed = |x: f64| if x > 0.0 { format!("+{}", num(x)) } else { num(x) };
-    let deviation = v.deviation_shown();
-    let share = match deviation / v.exact.abs() * 100.0 {
-        _ if v.exact == 0.0 => String::new(),
-        s if s.abs() > 999.0 => format!(" ({}999 %)", if s > 0.0 { ">+" } else { "<−" }),
-        s => format!(" ({} %)", fmt::localise(&format!("{s:+.1}"), lang)),
-    };
+    let num = |x: f64| fmt::localise(&write::number(x), lang);
     let rule = match v.rule {
         Rule::Given => l.rule_given(),
         Rule::Course => l.rule_course(),
@@ -189,19 +181,14 @@ fn row(v: &Verdict, lang: Language, l: &CheckLabels) -> [String; 8] {
     };
     [
         v.line.to_string(),
-        if v.name == v.id { v.id.clone() } else { format!("{} ({})", v.id, v.name) },
+        write::quantity(v),
         num(v.exact),
         num(v.student),
-        unit(&v.unit, lang),
-        format!("{}{share}", signed(deviation)),
+        Common::get(lang).si_unit(&v.unit).to_string(),
+        fmt::localise(&write::deviation(v), lang),
         format!("±{} ({rule})", num(v.tolerance)),
         if v.pass { l.pass() } else { l.fail() }.to_string(),
     ]
-}
-
-/// An answer's unit (as `Unit::si` writes it) in the report's language.
-fn unit(si: &str, lang: Language) -> String {
-    Unit::ALL.iter().find(|u| u.si() == si).map_or_else(|| si.to_string(), |&u| super::words::unit(lang, u).to_string())
 }
 
 #[cfg(test)]

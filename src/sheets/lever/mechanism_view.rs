@@ -105,6 +105,13 @@ impl MechanismView<'_> {
         self.letters(labels);
     }
 
+    /// A slider's point `d` over the positions: its least and largest distance along its
+    /// guide (through `through`, along `dir`), m.
+    fn travel(&self, d: PointId, through: Vec2, dir: Vec2) -> (f64, f64) {
+        let s = self.k.positions.iter().map(|p| (p.state.points[d].p - through).dot(dir));
+        s.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)))
+    }
+
     fn is_pivot(&self, id: PointId) -> bool {
         self.m.links.iter().any(|l| l.points.contains(&id))
     }
@@ -120,8 +127,7 @@ impl MechanismView<'_> {
     fn guides(&self, g: &mut Group, labels: &mut Labels) {
         for st in &self.m.steps {
             let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
-            let s: Vec<f64> = self.k.positions.iter().map(|p| (p.state.points[d].p - through).dot(dir)).collect();
-            let (lo, hi) = s.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+            let (lo, hi) = self.travel(d, through, dir);
             // Past the slider's extreme positions by its half length and 4 mm (within MECH_PAD).
             let ext = (SLIDER.0 / 2.0 + 4.0) * self.view.mu;
             let (a, b) = (through + dir * (lo - ext), through + dir * (hi + ext));
@@ -242,8 +248,7 @@ impl MechanismView<'_> {
         // stroke leaves each number room; crowded, they would only hide the guide.
         for st in &self.m.steps {
             let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
-            let s = self.k.positions.iter().map(|p| (p.state.points[d].p - through).dot(dir));
-            let (lo, hi) = s.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
+            let (lo, hi) = self.travel(d, through, dir);
             if self.view.len(hi - lo) < SLIDER_NUMBER_MM * self.k.positions.len() as f64 {
                 continue;
             }
