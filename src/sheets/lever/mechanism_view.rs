@@ -7,7 +7,7 @@ use crate::drawing::fmt;
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
-use crate::drawing::scene::{AXIS, Group, MAIN, Pen, THIN};
+use crate::drawing::scene::{AXIS, Group, Item, MAIN, Pen, THIN};
 use crate::drawing::symbols::{clear_turn_arrow, dimension, frame_pivot, hatch, slider};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
@@ -90,7 +90,7 @@ impl MechanismView<'_> {
                 g.curve(path, TRAJECTORY);
             }
         }
-        self.guides(g, labels);
+        self.guides(g);
         for pos in &self.k.positions {
             self.position(g, pos, THIN, 0.7);
         }
@@ -100,6 +100,7 @@ impl MechanismView<'_> {
                 frame_pivot(g, self.view.p(p), JOINT_R * 1.5);
             }
         }
+        self.strokes(g, labels);
         self.senses(g, labels);
         self.position_numbers(labels);
         self.letters(labels);
@@ -112,6 +113,13 @@ impl MechanismView<'_> {
         s.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)))
     }
 
+    /// The side of a guide (±1 along its normal `n_world`) away from where the rod's
+    /// joint mostly is: the hatching's.
+    fn hatch_side(&self, joint: PointId, through: Vec2, n_world: Vec2) -> f64 {
+        let rod: f64 = self.k.positions.iter().map(|p| (p.state.points[joint].p - through).dot(n_world)).sum();
+        if rod >= 0.0 { -1.0 } else { 1.0 }
+    }
+
     fn is_pivot(&self, id: PointId) -> bool {
         self.m.links.iter().any(|l| l.points.contains(&id))
     }
@@ -122,9 +130,8 @@ impl MechanismView<'_> {
         g.circle(self.view.p(c), self.view.len(crank.length), THIN);
     }
 
-    /// Each guide: its axis (dash-dot) over the slider's travel, a hatched frame line, and
-    /// the slider's stroke H dimensioned between its extreme positions beyond the hatching.
-    fn guides(&self, g: &mut Group, labels: &mut Labels) {
+    /// Each guide: its axis (dash-dot) over the slider's travel and a hatched frame line.
+    fn guides(&self, g: &mut Group) {
         for st in &self.m.steps {
             let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
             let (lo, hi) = self.travel(d, through, dir);
@@ -134,21 +141,45 @@ impl MechanismView<'_> {
             g.line(self.view.p(a), self.view.p(b), AXIS);
             // Hatch on the side away from the rod, so it never crosses the links.
             let n_world = dir.turn_90();
-            let rod_side: f64 = self.k.positions.iter().map(|p| (p.state.points[joint].p - through).dot(n_world)).sum();
-            let side = if rod_side >= 0.0 { -1.0 } else { 1.0 };
+            let side = self.hatch_side(joint, through, n_world);
             let off = self.view.dir(n_world * side) * (SLIDER.1 / 2.0);
             let (pa, pb) = (self.view.p(a) + off, self.view.p(b) + off);
             g.line(pa, pb, THIN);
             hatch(g, pa, pb, self.view.dir(n_world * side), 2.5);
-            // H between the extremes of the slider's point, 4 mm past the hatching.
+        }
+    }
+
+    /// Each slider's stroke H, dimensioned between its point's extreme positions: beyond the
+    /// guide's hatching, or on the rod's side, at the offset whose lines cross the fewest
+    /// drawn lines — a contour line (the thick position's rod) counting as ten — and stay in
+    /// the drawing's region. Drawn after the positions, so that it sees them.
+    fn strokes(&self, g: &mut Group, labels: &mut Labels) {
+        for st in &self.m.steps {
+            let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
+            let (lo, hi) = self.travel(d, through, dir);
             let (ea, eb) = (self.view.p(through + dir * lo), self.view.p(through + dir * hi));
-            if (eb - ea).norm() >= STROKE_MIN_MM {
-                let out = self.view.dir(n_world * side);
-                let mid = dimension(g, ea, eb, out * (SLIDER.1 / 2.0 + 2.5 + 4.0));
-                let (lang, c) = (self.words.lang, self.words.common);
-                let value = format!(" = {} {}", fmt::value(1e3 * (hi - lo), lang), c.unit_mm());
-                labels.add(mid, out, LabelText::new("H", "").with_tail(value), 3.5);
+            if (eb - ea).norm() < STROKE_MIN_MM {
+                continue;
             }
+            let n_world = dir.turn_90();
+            let hatch_side = self.view.dir(n_world * self.hatch_side(joint, through, n_world));
+            let all = Obstacles::of_items(&g.items);
+            let contours =
+                Obstacles::of_items(g.items.iter().filter(|i| matches!(i, Item::Path { pen, .. } if *pen == MAIN)));
+            let inside = g.region.inflate(-5.0, -5.0);
+            let lines = |off: Vec2| [(ea + off, eb + off), (ea, ea + off), (eb, eb + off)];
+            let cost = |off: Vec2| -> usize {
+                lines(off).iter().map(|&(a, b)| 10 * contours.hits_segment(a, b) + all.hits_segment(a, b)).sum()
+            };
+            let hatch_off = SLIDER.1 / 2.0 + 2.5 + 4.0;
+            let candidates =
+                [hatch_side * hatch_off, hatch_side * (hatch_off + 4.0), -hatch_side * 6.0, -hatch_side * 10.0];
+            let fits = |off: &Vec2| lines(*off).iter().all(|&(a, b)| inside.contains(a) && inside.contains(b));
+            let Some(off) = candidates.into_iter().filter(fits).min_by_key(|&off| cost(off)) else { continue };
+            let mid = dimension(g, ea, eb, off);
+            let (lang, c) = (self.words.lang, self.words.common);
+            let value = format!(" = {} {}", fmt::value(1e3 * (hi - lo), lang), c.unit_mm());
+            labels.add(mid, off, LabelText::new("H", "").with_tail(value), 3.5);
         }
     }
 
@@ -253,8 +284,7 @@ impl MechanismView<'_> {
                 continue;
             }
             let n_world = dir.turn_90();
-            let rod: f64 = self.k.positions.iter().map(|p| (p.state.points[joint].p - through).dot(n_world)).sum();
-            let up = self.view.dir(n_world * if rod >= 0.0 { 1.0 } else { -1.0 });
+            let up = self.view.dir(n_world * -self.hatch_side(joint, through, n_world));
             for pos in &self.k.positions {
                 labels.add_text_ranked(self.view.p(pos.state.points[d].p), up, &pos.label, 2.5, 2);
             }
