@@ -38,4 +38,5 @@ pub mod num;
 pub mod pipeline;
 pub mod project;
 pub mod report;
+pub mod session;
 pub mod sheets;

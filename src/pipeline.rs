@@ -52,7 +52,7 @@ pub fn sheet_numbers() -> impl Iterator<Item = u32> {
 }
 
 /// The sheets a project has a resolved section for.
-fn buildable(p: &Project) -> Vec<u32> {
+pub fn buildable(p: &Project) -> Vec<u32> {
     COURSE.iter().filter(|k| (k.make)(p).is_some()).map(|k| k.number).collect()
 }
 
@@ -225,28 +225,36 @@ pub fn overlays(built: &[Built]) -> Result<Vec<(String, Vec<u8>)>, Error> {
     Ok(files)
 }
 
-/// Every output file of a build as (name, bytes), in a fixed order: per sheet its drawing in
-/// each of `formats` in their order, its tables as CSV and Markdown; then `results.json`.
+/// Every output file of a build as (name, bytes), in a fixed order: per sheet its files
+/// ([`sheet_files`]); then `results.json`.
 pub fn outputs(p: &Project, built: &[Built], formats: &[Format]) -> Result<Vec<(String, Vec<u8>)>, Error> {
     let mut files = Vec::new();
     for b in built {
-        let stem = format!("sheet{}", b.output.number);
-        for &f in formats {
-            files.push((format!("{stem}.{}", f.extension()), render(b, f)?));
-        }
-        let mut md = String::new();
-        for t in &b.output.tables {
-            files.push((format!("{stem}-{}.csv", t.table.id), report::csv(t, &stem).into_bytes()));
-            if !md.is_empty() {
-                md.push('\n');
-            }
-            md.push_str(&report::markdown(t, &stem));
-        }
-        files.push((format!("{stem}-tables.md"), md.into_bytes()));
-        if !b.output.segments.is_empty() {
-            files.push((format!("{stem}-segments.csv"), report::segments_csv(&b.output.segments, &stem).into_bytes()));
-        }
+        files.extend(sheet_files(b, formats)?);
     }
     files.push(("results.json".into(), results_json(p, built).into_bytes()));
+    Ok(files)
+}
+
+/// One built sheet's files as (name, bytes), in a fixed order: its drawing in each of
+/// `formats` in their order, its tables as CSV and Markdown, its segments as CSV.
+pub fn sheet_files(b: &Built, formats: &[Format]) -> Result<Vec<(String, Vec<u8>)>, Error> {
+    let mut files = Vec::new();
+    let stem = format!("sheet{}", b.output.number);
+    for &f in formats {
+        files.push((format!("{stem}.{}", f.extension()), render(b, f)?));
+    }
+    let mut md = String::new();
+    for t in &b.output.tables {
+        files.push((format!("{stem}-{}.csv", t.table.id), report::csv(t, &stem).into_bytes()));
+        if !md.is_empty() {
+            md.push('\n');
+        }
+        md.push_str(&report::markdown(t, &stem));
+    }
+    files.push((format!("{stem}-tables.md"), md.into_bytes()));
+    if !b.output.segments.is_empty() {
+        files.push((format!("{stem}-segments.csv"), report::segments_csv(&b.output.segments, &stem).into_bytes()));
+    }
     Ok(files)
 }
