@@ -50,6 +50,16 @@ enum Command {
     /// Check a student's values (CSV) against the exact answers: exit 0 when all pass, 1
     /// when any fails, 2 when the file cannot be used.
     Check(check::CheckArgs),
+    /// Measure on this machine each trade-off's time against the error it buys, and whole
+    /// builds, on the worked example (Markdown tables on stdout).
+    Bench(BenchArgs),
+}
+
+#[derive(Args)]
+struct BenchArgs {
+    /// A few repetitions of each measurement (under 30 s) instead of ~0.4 s each.
+    #[arg(long)]
+    quick: bool,
 }
 
 #[derive(Args)]
@@ -190,6 +200,7 @@ pub fn run() -> ExitCode {
         Some(Command::List(args)) => list(&args, dir),
         Some(Command::Init(args)) => init(&args, dir),
         Some(Command::Check(args)) => return check::run(&args, dir),
+        Some(Command::Bench(args)) => bench(&args),
         Some(Command::Build(args)) => build(&args, dir),
         None => build(&cli.build, dir),
     };
@@ -201,6 +212,22 @@ pub fn run() -> ExitCode {
     };
     eprintln!("error: {e:#}");
     ExitCode::from(code)
+}
+
+fn bench(args: &BenchArgs) -> Result<(), Failure> {
+    let clock = if args.quick { crate::bench::Clock::QUICK } else { crate::bench::Clock::FULL };
+    let start = std::time::Instant::now();
+    let tables = crate::bench::run(clock).map_err(|e| Failure::Input(anyhow::anyhow!(e)))?;
+    println!(
+        "# tmm bench{}: the worked example, on this machine ({} threads), medians\n",
+        if args.quick { " --quick" } else { "" },
+        rayon::current_num_threads()
+    );
+    for t in &tables {
+        println!("{}", t.markdown());
+    }
+    println!("Measured in {:.1} s.", start.elapsed().as_secs_f64());
+    Ok(())
 }
 
 fn language(lang: Option<Lang>) -> Option<Language> {

@@ -26,6 +26,7 @@
 //! ```
 
 pub mod backend;
+pub mod bench;
 pub mod cams;
 pub mod catalogue;
 pub mod check;

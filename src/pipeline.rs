@@ -11,6 +11,7 @@ use crate::report;
 /// The course's sheets, their numbers and the project sections they draw.
 pub use crate::sheets::COURSE;
 use crate::sheets::{self, Context, SheetOutput};
+use rayon::prelude::*;
 use serde::Serialize;
 
 /// The guide's worked example (the vibrating conveyor), embedded as the default project.
@@ -111,9 +112,11 @@ pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
         }
         other => other,
     };
+    // The sheets share nothing: built on rayon's pool (one thread where there are no threads,
+    // as in the browser), collected in order.
     sheets::select(p, requested)
         .map_err(|e| refused(e.refusal()))?
-        .iter()
+        .par_iter()
         .map(|sheet| {
             let ctx = Context { info: &p.info, sheet_count, first_table: first_table(sheet.kind().number) };
             let output = sheet.build(&ctx).map_err(|e| refused(e.refusal(sheet.kind(), &p.places)))?;
@@ -215,23 +218,28 @@ pub fn check_report_pdf(p: &Project, verdicts: &[check::Verdict], names: &Report
 /// `sheet<N>-overlay.svg` and `.pdf`: its constructions alone, in one contrasting colour, at
 /// their places on the A1 sheet.
 pub fn overlays(built: &[Built]) -> Result<Vec<(String, Vec<u8>)>, Error> {
-    let mut files = Vec::new();
-    for b in built {
-        let scene = sheets::scaffold::overlay(&b.output.scene);
-        for f in [Format::Svg, Format::Pdf] {
-            files.push((format!("sheet{}-overlay.{}", b.output.number, f.extension()), backend::write(&scene, f)?));
-        }
-    }
-    Ok(files)
+    let per_sheet = built
+        .par_iter()
+        .map(|b| {
+            let scene = sheets::scaffold::overlay(&b.output.scene);
+            [Format::Svg, Format::Pdf]
+                .into_iter()
+                .map(|f| {
+                    Ok((format!("sheet{}-overlay.{}", b.output.number, f.extension()), backend::write(&scene, f)?))
+                })
+                .collect::<Result<Vec<_>, Error>>()
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(per_sheet.into_iter().flatten().collect())
 }
 
 /// Every output file of a build as (name, bytes), in a fixed order: per sheet its files
 /// ([`sheet_files`]); then `results.json`.
 pub fn outputs(p: &Project, built: &[Built], formats: &[Format]) -> Result<Vec<(String, Vec<u8>)>, Error> {
-    let mut files = Vec::new();
-    for b in built {
-        files.extend(sheet_files(b, formats)?);
-    }
+    // Each sheet's files on rayon's pool (a PNG preview is drawn in strips, so two at once
+    // stay within the memory budget); in order.
+    let per_sheet = built.par_iter().map(|b| sheet_files(b, formats)).collect::<Result<Vec<_>, _>>()?;
+    let mut files: Vec<(String, Vec<u8>)> = per_sheet.into_iter().flatten().collect();
     files.push(("results.json".into(), results_json(p, built).into_bytes()));
     Ok(files)
 }

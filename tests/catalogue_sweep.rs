@@ -33,7 +33,11 @@ fn check(task: &Task, variant: u32) -> (Vec<String>, usize) {
     for b in &built {
         let layout = &b.output.results["layout"];
         let n = |k: &str| layout[k].as_u64().unwrap_or(u64::MAX);
-        crossed += n("texts_crossed") as usize + n("text_overlaps") as usize;
+        let c = n("texts_crossed") as usize + n("text_overlaps") as usize;
+        if c > 0 {
+            eprintln!("{at}: sheet {}: {}", b.output.number, layout["problems"]);
+        }
+        crossed += c;
         if n("outside_region") != 0 {
             faults.push(format!("{at}: sheet {}: {}", b.output.number, layout["problems"]));
         }

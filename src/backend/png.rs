@@ -13,11 +13,16 @@ use super::shapes::{self, check_finite};
 use super::text;
 use crate::drawing::scene::{Item, Pen, Scene, Text};
 use crate::font;
-use kurbo::{Affine, BezPath, PathEl, Point};
+use kurbo::{Affine, BezPath, PathEl, Point, Rect};
 use skrifa::instance::{LocationRef, Size};
 use skrifa::outline::{DrawSettings, OutlineGlyphCollection, OutlinePen};
 use skrifa::{GlyphId, MetadataProvider};
 use tiny_skia::{Color, FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Stroke, StrokeDash, Transform};
+
+/// Rows of pixels rasterised at a time: an A1 sheet at 100 dpi is drawn in five strips of
+/// 7 MB rather than one 31 MB image, so that the sheets' previews can be drawn in parallel
+/// within the program's memory budget (`tmm bench`, README).
+const STRIP_ROWS: u32 = 512;
 
 /// The scene as a PNG at `dpi` dots per inch.
 pub fn write(scene: &Scene, dpi: f64) -> Result<Vec<u8>, BackendError> {
@@ -27,26 +32,50 @@ pub fn write(scene: &Scene, dpi: f64) -> Result<Vec<u8>, BackendError> {
     }
     let px = |mm: f64| (mm / 25.4 * dpi).round().max(1.0) as u32;
     let (w, h) = (px(scene.width), px(scene.height));
-    let mut pixmap =
-        Pixmap::new(w, h).ok_or_else(|| BackendError::Png(format!("no image of {w} × {h} pixels at {dpi} dpi")))?;
-    pixmap.fill(Color::WHITE);
-    let page = Page {
-        scale: Affine::scale_non_uniform(f64::from(w) / scene.width, f64::from(h) / scene.height),
-        glyphs: font::metrics().font().outline_glyphs(),
-    };
-    for item in scene.groups.iter().flat_map(|g| &g.items) {
-        page.draw_item(&mut pixmap, item);
+    let no_image = || BackendError::Png(format!("no image of {w} × {h} pixels at {dpi} dpi"));
+    let scale = Affine::scale_non_uniform(f64::from(w) / scene.width, f64::from(h) / scene.height);
+    let glyphs = font::metrics().font().outline_glyphs();
+    // Each item's extent in pixels, found once: a strip draws only the items that reach it.
+    let items: Vec<(&Item, Rect)> = scene
+        .groups
+        .iter()
+        .flat_map(|g| &g.items)
+        .map(|item| (item, scale.transform_rect_bbox(extent(item))))
+        .collect();
+    let mut grey = Vec::new();
+    grey.try_reserve_exact(w as usize * h as usize).map_err(|_| no_image())?;
+    for top in (0..h).step_by(STRIP_ROWS as usize) {
+        let rows = STRIP_ROWS.min(h - top);
+        let mut pixmap = Pixmap::new(w, rows).ok_or_else(no_image)?;
+        pixmap.fill(Color::WHITE);
+        let page = Page { scale: Affine::translate((0.0, -f64::from(top))) * scale, glyphs: glyphs.clone() };
+        let (y0, y1) = (f64::from(top), f64::from(top + rows));
+        for (item, bbox) in &items {
+            if bbox.y1 >= y0 && bbox.y0 <= y1 {
+                page.draw_item(&mut pixmap, item);
+            }
+        }
+        // Opaque everywhere (the page is filled white first), so premultiplied green is grey.
+        grey.extend(pixmap.pixels().iter().map(|p| p.green()));
     }
-    encode_grey(&pixmap, dpi)
+    encode_grey(&grey, w, h, dpi)
+}
+
+/// An item's extent on paper (mm), generously: room for round caps, a text's slanted or
+/// accented glyphs (a strip only needs to know which items cannot reach it).
+fn extent(item: &Item) -> Rect {
+    let margin = match item {
+        Item::Text(t) => t.h + 1.0,
+        _ => 1.0,
+    };
+    item.bbox().inflate(margin, margin)
 }
 
 /// The page as an 8-bit grey PNG: everything is black on white, so one channel holds it
 /// all, and compressing a quarter of the bytes is what makes the preview quick.
-fn encode_grey(pixmap: &Pixmap, dpi: f64) -> Result<Vec<u8>, BackendError> {
-    // Opaque everywhere (the page is filled white first), so premultiplied green is grey.
-    let grey: Vec<u8> = pixmap.pixels().iter().map(|p| p.green()).collect();
+fn encode_grey(grey: &[u8], w: u32, h: u32, dpi: f64) -> Result<Vec<u8>, BackendError> {
     let mut out = Vec::new();
-    let mut encoder = ::png::Encoder::new(&mut out, pixmap.width(), pixmap.height());
+    let mut encoder = ::png::Encoder::new(&mut out, w, h);
     encoder.set_color(::png::ColorType::Grayscale);
     encoder.set_depth(::png::BitDepth::Eight);
     // The resolution, so that the preview prints at the sheet's size.
@@ -54,7 +83,7 @@ fn encode_grey(pixmap: &Pixmap, dpi: f64) -> Result<Vec<u8>, BackendError> {
     encoder.set_pixel_dims(Some(::png::PixelDimensions { xppu: per_metre, yppu: per_metre, unit: ::png::Unit::Meter }));
     let png_error = |e: ::png::EncodingError| BackendError::Png(e.to_string());
     let mut writer = encoder.write_header().map_err(png_error)?;
-    writer.write_image_data(&grey).map_err(png_error)?;
+    writer.write_image_data(grey).map_err(png_error)?;
     writer.finish().map_err(png_error)?;
     Ok(out)
 }

@@ -139,8 +139,9 @@ impl SheetError {
     }
 }
 
-/// One sheet, ready to build from its project section.
-pub trait Sheet {
+/// One sheet, ready to build from its project section; `Sync`, so that a project's sheets
+/// are built in parallel (`pipeline::build`).
+pub trait Sheet: Sync {
     fn kind(&self) -> SheetKind;
     /// How many numbered tables the sheet gives the note.
     fn table_count(&self) -> u32;
