@@ -128,7 +128,7 @@ const ALPHA_ARC_MM: f64 = 28.0;
 /// drawing is placed in `area`.
 pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels) -> MeshDrawn {
     let p = inp.pair;
-    let mu = crate::drawing::scale::length_scale_below(p.tooth_height / 50.0);
+    let mu = mesh_scale(inp, area);
     let (v, pp) = placement(p, area, mu);
     let centres = tooth_centres(inp);
     let (fl1, dev1, fd1) = flank(inp.outlines[0]);
@@ -157,6 +157,30 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
         tooth_height_mm: p.tooth_height * (1.0 / mu),
     }
 }
+
+/// μ_l of the mesh: the teeth over 50 mm high, as the course draws them, unless a wheel's
+/// three teeth would then reach past the region's sides — a many-toothed wheel beside a
+/// small pinion, a large shift turning the teeth off the line of centres — when the largest
+/// scale at which they fit. The teeth's half-width from the line of centres is their tip
+/// radius times the sine of the farthest tooth's angle from it (half a pitch beyond its
+/// centre).
+fn mesh_scale(inp: &MeshInput, area: Rect) -> f64 {
+    let p = inp.pair;
+    let tall = crate::drawing::scale::length_scale_below(p.tooth_height / 50.0);
+    let centres = tooth_centres(inp);
+    let half_width = |i: usize, axis: f64| {
+        let w = &p.wheels[i];
+        let half_pitch = PI / f64::from(w.z);
+        let far = centres[i].iter().map(|c| (c - axis).abs() + half_pitch).fold(0.0, f64::max);
+        w.tip * if far >= FRAC_PI_2 { 1.0 } else { sin(far) }
+    };
+    let widest = half_width(0, FRAC_PI_2).max(half_width(1, -FRAC_PI_2));
+    let fits = crate::drawing::scale::length_scale(widest / (area.width() / 2.0 - MESH_MARGIN));
+    tall.max(fits)
+}
+
+/// Paper mm kept free on each side of the widest wheel's three teeth.
+const MESH_MARGIN: f64 = 6.0;
 
 /// The view of the pair in `area` at μ_l `mu`, and P on paper: P in the middle across; both
 /// centres on the sheet when they fit, else P in the middle.

@@ -1,0 +1,184 @@
+//! Stress: random projects across the ranges the course can meet and beyond — gear pairs of
+//! 5 to 400 teeth with shifts and planetary ratios 2 to 50, cams with strokes from 1 mm to
+//! 1 m and phases from 1° to 300° with and without dwells, crank-sliders with λ close to 1 and
+//! offsets close to their limit. Each either builds, with every number it writes finite,
+//! nothing drawn off the A1 page and its layout measured, or is refused with a field, a
+//! place and a reason — never a panic.
+//!
+//! `STRESS_CASES` (default 100 a kind, 300 cases a run; the suite is kept to a few minutes) sets
+//! the number of cases of each kind; `STRESS_CASES=2000 cargo test --release --test stress`
+//! is the sweep. A failure prints its project file: it becomes a fixture or a bad-input
+//! file with the refusal it must give.
+
+mod common;
+
+use proptest::prelude::*;
+use proptest::test_runner::{Config, TestRunner};
+use tmm_sheets::pipeline;
+
+fn cases() -> u32 {
+    std::env::var("STRESS_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(100)
+}
+
+const HEADER: &str = "project:\n  title: {uz: \"Sinov\", ru: \"Проба\", en: \"Stress\"}\n  designation: {uz: \"MMN KL 00.00.00\", ru: \"ТММ КП 00.00.00\", en: \"TMM CP 00.00.00\"}\n  language: en\n\n";
+
+/// How a case ended.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Outcome {
+    /// Built; with the number of drawings its layout measure says leave their region.
+    Built(u64),
+    Refused,
+}
+
+/// What a build must be: refused with a reason, or finished with finite numbers, on the page.
+fn verdict(text: &str) -> Result<Outcome, String> {
+    let p = match pipeline::load(text) {
+        Ok(p) => p,
+        Err(pipeline::Error::Refused(r)) if !r.refusal.cause.is_empty() && r.refusal.line > 0 => {
+            return Ok(Outcome::Refused);
+        }
+        Err(e) => return Err(format!("refused without a place or reason: {e:?}")),
+    };
+    let built = match pipeline::build(&p, &[]) {
+        Ok(b) => b,
+        Err(pipeline::Error::Refused(r)) if !r.refusal.cause.is_empty() && r.refusal.line > 0 => {
+            return Ok(Outcome::Refused);
+        }
+        Err(e) => return Err(format!("refused without a place or reason: {e:?}")),
+    };
+    for b in &built {
+        let n = b.output.number;
+        for bad in ["NaN", "inf"] {
+            if b.svg.contains(bad) {
+                return Err(format!("sheet {n}: the SVG holds {bad}"));
+            }
+        }
+        let page = kurbo::Rect::new(0.0, 0.0, b.output.scene.width, b.output.scene.height);
+        for g in &b.output.scene.groups {
+            for item in &g.items {
+                let bb = item.bbox();
+                if bb.x0 < page.x0 - 0.01 || bb.y0 < page.y0 - 0.01 || bb.x1 > page.x1 + 0.01 || bb.y1 > page.y1 + 0.01
+                {
+                    return Err(format!("sheet {n}: '{}' draws off the page at {bb:?}", g.id));
+                }
+            }
+        }
+        for t in &b.output.tables {
+            for a in t.answers(&format!("sheet{n}")) {
+                if !a.value.is_finite() {
+                    return Err(format!("sheet {n}: {} = {}", a.id, a.value));
+                }
+            }
+        }
+    }
+    let json = pipeline::results_json(&p, &built);
+    if serde_json::from_str::<serde_json::Value>(&json).is_err() {
+        return Err("results.json does not parse".into());
+    }
+    let outside = built.iter().map(|b| b.output.results["layout"]["outside_region"].as_u64().unwrap_or(0)).sum();
+    Ok(Outcome::Built(outside))
+}
+
+/// Runs the cases; at least `min_built` of every hundred must build (the ranges are the
+/// course's, mostly: a generator that only made refusals would test nothing).
+fn run(name: &str, min_built: u32, strategy: impl Strategy<Value = String>) {
+    let mut runner = TestRunner::new(Config { cases: cases(), failure_persistence: None, ..Config::default() });
+    let built = std::cell::Cell::new(0u32);
+    let outside = std::cell::Cell::new(0u32);
+    let result = runner.run(&strategy, |text| {
+        let outcome = std::panic::catch_unwind(|| verdict(&text)).unwrap_or_else(|_| Err("panicked".into()));
+        prop_assert!(outcome.is_ok(), "{}:\n{text}", outcome.as_ref().unwrap_err());
+        if let Ok(Outcome::Built(n)) = outcome {
+            built.set(built.get() + 1);
+            outside.set(outside.get() + u32::from(n > 0));
+        }
+        Ok(())
+    });
+    if let Err(e) = result {
+        panic!("{name}: {e}");
+    }
+    // A drawing leaving its region (on the page) is issue 22's; reported, not failed.
+    eprintln!(
+        "{name}: {} of {} built ({} with a drawing leaving its region), the others refused with a reason",
+        built.get(),
+        cases(),
+        outside.get()
+    );
+    assert!(built.get() * 100 >= min_built * cases(), "{name}: only {} of {} built", built.get(), cases());
+}
+
+#[test]
+fn gear_pairs_and_planetary_stages() {
+    let shift = prop_oneof![
+        Just(String::new()),
+        Just(", shift: auto".to_string()),
+        (-0.5f64..1.0, -0.5f64..1.0).prop_map(|(a, b)| format!(", shift: [{a:.3}, {b:.3}]")),
+    ];
+    let planetary = prop_oneof![
+        Just(String::new()),
+        (2.0f64..50.0, 0.5f64..6.0)
+            .prop_map(|(u, m)| format!("\n  planetary: {{scheme: sun-planet-ring, module: {m:.1}, ratio: {u:.2}}}")),
+    ];
+    let strategy =
+        (5u32..=400, 5u32..=400, 0.5f64..20.0, shift, planetary).prop_map(|(z1, z2, m, shift, planetary)| {
+            format!("{HEADER}gears:\n  pair: {{module: {m:.2}, z: [{z1}, {z2}]{shift}}}{planetary}\n")
+        });
+    run("gears", 50, strategy);
+}
+
+#[test]
+fn cams_of_every_size_and_phase() {
+    let laws = [
+        "sine",
+        "cosine",
+        "polynomial-345",
+        "uniform-acceleration",
+        "linearly-decreasing",
+        "trapezoid",
+        "modified-sine",
+    ];
+    let law = proptest::sample::select(laws.to_vec());
+    let strategy = (0.001f64..1.0, 1.0f64..300.0, 0.0f64..1.0, 1.0f64..300.0, law, 10.0f64..60.0, any::<bool>())
+        .prop_map(|(stroke, rise, dwell_share, ret, law, alpha, rocker)| {
+            // The three phases share at most 360°.
+            let scale = (359.0 / (rise + ret)).min(1.0);
+            let (rise, ret) = (rise * scale, ret * scale);
+            let dwell = (360.0 - rise - ret) * dwell_share * 0.9;
+            let follower = if rocker {
+                format!("{{rocker: {{length: {:.4}, swing_deg: {:.1}}}}}", stroke.max(0.02), 5.0 + 40.0 * stroke)
+            } else {
+                format!("{{translating: {{stroke: {stroke:.4}, offset: auto}}}}")
+            };
+            format!(
+                "{HEADER}cam:\n  follower: {follower}\n  roller: auto\n  phases_deg: {{rise: {rise:.2}, far_dwell: {dwell:.2}, return: {ret:.2}}}\n  law: {law}\n  pressure_angle_deg: {alpha:.1}\n  sense: cw\n"
+            )
+        });
+    run("cams", 30, strategy);
+}
+
+#[test]
+fn crank_sliders_near_their_limits() {
+    // λ = r/l up to 0.99, the offset up to 99 % of what still lets the crank turn.
+    let strategy = (0.001f64..2.0, 0.05f64..0.99, -0.99f64..0.99, 1.0f64..3000.0).prop_map(|(r, lam, off, rpm)| {
+        let l = r / lam;
+        let e = off * (l - r);
+        format!(
+            "{HEADER}mechanism:\n  frame:\n    - {{name: O, at: [0.0, 0.0]}}\n  crank: {{pivot: O, pin: A, length: {r:.6}, rpm: {rpm:.1}, sense: ccw}}\n  groups:\n    - rrp: {{links: [2, 3], joint: A, point: B, length: {l:.6}, guide: {{through: [0.0, {e:.6}], angle_deg: 0}}, branch: forward}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: B, mass_centre: true}}\n"
+        )
+    });
+    run("crank-sliders", 50, strategy);
+}
+
+/// Pairs the sweep found drawing teeth off the page (their three teeth wider than the
+/// region at the course's tooth height): now drawn at a scale at which they fit.
+#[test]
+fn pairs_the_sweep_found_off_the_page_fit_their_region() {
+    for pair in [
+        "{module: 4.39, z: [7, 70]}",
+        "{module: 1.01, z: [48, 75], shift: [0.231, 0.957]}",
+        "{module: 4.40, z: [10, 25], shift: [-0.362, 0.805]}",
+    ] {
+        let text = format!("{HEADER}gears:\n  pair: {pair}\n");
+        assert_eq!(verdict(&text), Ok(Outcome::Built(0)), "{pair}");
+    }
+}
