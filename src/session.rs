@@ -56,20 +56,25 @@ impl From<pipeline::Error> for Box<Problem> {
                     buildable,
                 }
             }
-            other => {
-                let message = format!("{:#}", anyhow::Error::from(other));
-                Problem {
-                    kind: "output",
-                    line: 0,
-                    column: 0,
-                    field: String::new(),
-                    cause: message.clone(),
-                    message,
-                    blocks: Vec::new(),
-                    buildable: Vec::new(),
-                }
-            }
+            other => Problem::unplaced("output", format!("{:#}", anyhow::Error::from(other))),
         })
+    }
+}
+
+impl Problem {
+    /// A problem with no place in the project file: an output that could not be made, an
+    /// embedder's bad option.
+    pub fn unplaced(kind: &'static str, message: String) -> Problem {
+        Problem {
+            kind,
+            line: 0,
+            column: 0,
+            field: String::new(),
+            cause: message.clone(),
+            message,
+            blocks: Vec::new(),
+            buildable: Vec::new(),
+        }
     }
 }
 

@@ -26,16 +26,7 @@ fn language(key: &str) -> Result<Option<Language>, String> {
 
 /// A problem that is not the project's (a bad option from the page) as a [`Problem`].
 fn usage(message: String) -> Box<Problem> {
-    Box::new(Problem {
-        kind: "usage",
-        line: 0,
-        column: 0,
-        field: String::new(),
-        cause: message.clone(),
-        message,
-        blocks: Vec::new(),
-        buildable: Vec::new(),
-    })
+    Box::new(Problem::unplaced("usage", message))
 }
 
 fn json(p: &Problem) -> JsValue {
