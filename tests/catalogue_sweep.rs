@@ -9,6 +9,11 @@ use tmm_sheets::catalogue::{Catalogue, Task, Variant};
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::pipeline::{self, Built};
 
+/// No velocity or acceleration plan is shorter than this (its longer side, mm): one μ_v and one
+/// μ_a a sheet leave a kulisa's slowest positions' plans a fifth of its fastest, and a plan
+/// that would be under 25 mm leaves the common scale only if the others then fit.
+const SMALLEST_PLAN_MM: f64 = 20.0;
+
 /// What one variant's build showed: (faults, texts crossed by a line). A fault is anything a
 /// teacher would refuse: an unexplained refusal, an item outside its region, Δ or ε or α out of
 /// limits.
@@ -42,6 +47,15 @@ fn check(task: &Task, variant: u32) -> (Vec<String>, usize) {
             faults.push(format!("{at}: sheet {}: {}", b.output.number, layout["problems"]));
         }
         assert!(b.svg.starts_with("<svg") && b.svg.len() > 10_000, "{at}: sheet {} drawn", b.output.number);
+        if let Some(smallest) = layout["smallest_plan_mm"].as_f64()
+            && smallest < SMALLEST_PLAN_MM
+        {
+            faults.push(format!("{at}: a plan of {smallest:.1} mm"));
+        }
+        let scales = &b.output.results["scales"];
+        if b.output.number == 1 && (scales["mu_v"].as_f64().is_none() || scales["mu_a"].as_f64().is_none()) {
+            faults.push(format!("{at}: no common μ_v or μ_a: {scales}"));
+        }
     }
     let answer = |id: &str| answers(&built).into_iter().find(|(k, _)| k == id).map(|(_, v)| v);
     if let Some(delta) = answer("sheet1.balancing.delta")

@@ -458,15 +458,19 @@ fn load_diagrams_tick_the_force_axis_and_mark_phi1() {
     }
 }
 
-/// Each plan is drawn at a round scale (1, 2, 2.5, 4 or 5 × 10ᵏ), recorded with its drawn
-/// size in `results.json`; the size is the plan's extent at that scale — its diagonal at least
-/// the crank pin's velocity |v_A|/μ_v, computed here from ω1·l1 — and a plan with its own scale writes
-/// it in its cell.
+/// Each plan is drawn at a round scale (1, 1.5, 2, 2.5, 3, 4, 5, 6 or 7.5 × 10ᵏ), recorded
+/// with its drawn size in `results.json`; the size is the plan's extent at that scale — its
+/// diagonal at least the crank pin's velocity |v_A|/μ_v, computed here from ω1·l1. Every plan
+/// of a kind shares the sheet's μ_v or μ_a, written in the region's header, but one that at
+/// that scale would be under 25 mm or over 70 mm: it has its own, written in its cell.
 #[test]
-fn plans_are_drawn_at_round_scales_recorded_with_their_sizes() {
+fn plans_share_one_round_scale_a_kind_recorded_with_their_sizes() {
     let round = |mu: f64| {
         let m = mu / 10f64.powf(mu.log10().floor());
-        [1.0, 2.0, 2.5, 4.0, 5.0, 10.0].iter().any(|r| (m - r).abs() < 1e-9)
+        [1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 7.5, 10.0].iter().any(|r| (m - r).abs() < 1e-9)
+    };
+    let written = |mu: f64, lang| {
+        format!("= {} ", tmm_sheets::drawing::fmt::localise(&tmm_sheets::drawing::scale::format(mu), lang))
     };
     for name in fixture_names() {
         let p = fixture(&name);
@@ -477,7 +481,9 @@ fn plans_are_drawn_at_round_scales_recorded_with_their_sizes() {
         for kind in ["velocity_plans", "acceleration_plans"] {
             let plans = scales[kind].as_array().expect("plans recorded");
             assert!(!plans.is_empty(), "{name}: no {kind}");
-            let common = scales[if kind == "velocity_plans" { "mu_v" } else { "mu_a" }].as_f64();
+            let common = scales[if kind == "velocity_plans" { "mu_v" } else { "mu_a" }].as_f64().expect("one scale");
+            assert!(round(common), "{name}: {kind} at μ = {common}");
+            assert!(b.scene.texts().any(|t| t.tail.trim_start().starts_with(&written(common, p.info.language))));
             for plan in plans {
                 let mu = plan["mu"].as_f64().unwrap();
                 assert!(round(mu), "{name}: {kind} at μ = {mu}");
@@ -492,14 +498,17 @@ fn plans_are_drawn_at_round_scales_recorded_with_their_sizes() {
                         v_a / mu
                     );
                 }
-                if common.is_none() {
-                    let written = format!(
-                        "= {} ",
-                        tmm_sheets::drawing::fmt::localise(&tmm_sheets::drawing::scale::format(mu), p.info.language)
+                if (mu / common - 1.0).abs() > 1e-9 {
+                    let at_common = w.max(h) * mu / common;
+                    assert!(
+                        !(25.0..=70.0).contains(&at_common),
+                        "{name}: plan {} leaves μ = {common} though it would be {at_common:.1} mm at it",
+                        plan["position"]
                     );
                     assert!(
-                        b.scene.texts().any(|t| t.tail.trim_start().starts_with(&written)),
-                        "{name}: no own scale {written} written"
+                        b.scene.texts().any(|t| t.tail.trim_start().starts_with(&written(mu, p.info.language))),
+                        "{name}: no own scale {} written",
+                        written(mu, p.info.language)
                     );
                 }
             }

@@ -30,6 +30,8 @@ const CLEAR: f64 = 0.25;
 const LABEL_GAP: f64 = 0.7;
 const NUMBERS_RANK: u8 = 2;
 const DIRECTIONS: usize = 24;
+/// Baseline to baseline in a stacked label, in lettering heights.
+const LINE_PITCH: f64 = 1.4;
 
 /// One label to place.
 #[derive(Debug, Clone)]
@@ -40,6 +42,8 @@ struct Request {
     /// first one's near spots (a profile's name where its first point is crowded).
     others: Vec<(Point, Vec2)>,
     label: LabelText,
+    /// Further lines set under the first, centred on it (one label in a stack).
+    more: Vec<LabelText>,
     h: f64,
     /// Lower goes first: a class of labels (a mechanism's joint letters) may claim the
     /// best spots before another (its position numbers).
@@ -49,6 +53,16 @@ struct Request {
 }
 
 impl Request {
+    /// The label's box: width, height above the first baseline, depth below it (the further
+    /// lines included).
+    fn size(&self) -> (f64, f64, f64) {
+        let (w, up, down) = label_size(&self.label, self.h);
+        self.more.iter().fold((w, up, down), |(w, up, _), line| {
+            let (lw, _, ld) = label_size(line, self.h);
+            (w.max(lw), up, ld + self.more.len() as f64 * LINE_PITCH * self.h)
+        })
+    }
+
     /// A candidate's leader as drawn: a line's name's reaches the line it names.
     fn drawn_leader(&self, c: &Candidate) -> Option<(Point, Point)> {
         c.leader.map(|(a, b)| (if self.names_line { c.anchor } else { a }, b))
@@ -84,20 +98,56 @@ impl Labels {
 
     /// A label placed after every label of a lower rank.
     pub fn add_ranked(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
-        self.requests.push(Request { anchor, pref, others: Vec::new(), label, h, rank, names_line: false });
+        self.requests.push(Request {
+            anchor,
+            pref,
+            others: Vec::new(),
+            label,
+            more: Vec::new(),
+            h,
+            rank,
+            names_line: false,
+        });
+    }
+
+    /// One label of several plain lines stacked and centred, the first nearest `pref`'s
+    /// side (names of one point too many for one line: "p=b=s3=" over "c=s4=s5").
+    pub fn add_text_lines(&mut self, anchor: Point, pref: Vec2, lines: &[String], h: f64) {
+        let Some((first, more)) = lines.split_first() else { return };
+        let more = more.iter().map(|l| LabelText::new(l, "")).collect();
+        self.requests.push(Request {
+            anchor,
+            pref,
+            others: Vec::new(),
+            label: LabelText::new(first, ""),
+            more,
+            h,
+            rank: 0,
+            names_line: false,
+        });
     }
 
     /// A line's name (a profile's, a circle's) with `anchor` on the line: set off on a leader
     /// that reaches the line, so that it cannot be taken for a neighbour's name.
     pub fn add_line_name(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
-        self.requests.push(Request { anchor, pref, others: Vec::new(), label, h, rank, names_line: true });
+        self.requests.push(Request {
+            anchor,
+            pref,
+            others: Vec::new(),
+            label,
+            more: Vec::new(),
+            h,
+            rank,
+            names_line: true,
+        });
     }
 
     /// A line's name as [`Labels::add_line_name`], with further points of the line (and
     /// their directions) to name it at when the spots near the first are taken.
     pub fn add_line_name_at_any(&mut self, spots: &[(Point, Vec2)], label: LabelText, h: f64, rank: u8) {
         let Some((&(anchor, pref), others)) = spots.split_first() else { return };
-        self.requests.push(Request { anchor, pref, others: others.to_vec(), label, h, rank, names_line: true });
+        let others = others.to_vec();
+        self.requests.push(Request { anchor, pref, others, label, more: Vec::new(), h, rank, names_line: true });
     }
 
     /// A disc (paper mm) every label keeps out of, though nothing drawn bounds it there.
@@ -147,9 +197,12 @@ impl Labels {
         }
         let mut placed = Vec::with_capacity(best.len());
         for (req, (cand, clear)) in self.requests.iter().zip(best) {
-            let (w, up, _) = label_size(&req.label, req.h);
+            let (w, up, _) = req.size();
             let base = Point::new(cand.r.x0 + (w - SLANT * req.h) / 2.0, cand.r.y0 + up);
             req.label.draw(g, base, req.h, Anchor::Middle);
+            for (k, line) in req.more.iter().enumerate() {
+                line.draw(g, base + Vec2::new(0.0, (k + 1) as f64 * LINE_PITCH * req.h), req.h, Anchor::Middle);
+            }
             if let Some((a, b)) = req.drawn_leader(&cand) {
                 g.writing_line(a, b, THIN);
             }
@@ -234,7 +287,7 @@ fn least_bad(cands: &[Candidate], o: &Obstacles, req: &Request, bounds: Rect) ->
     // No candidate inside the bounds (a label wider than its cell): beside the anchor,
     // pushed inside the bounds as far as they allow.
     let fallback = || {
-        let (w, up, down) = label_size(&req.label, req.h);
+        let (w, up, down) = req.size();
         let x0 = req.anchor.x.min(bounds.x1 - w).max(bounds.x0);
         let y1 = req.anchor.y.max(bounds.y0 + up + down).min(bounds.y1);
         Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), anchor: req.anchor, leader: None, cost: 0.0 }
@@ -267,7 +320,7 @@ const FURTHER_ANCHOR: f64 = 4.0;
 
 /// The candidate boxes around one anchor inside `bounds`, their cost raised by `extra`.
 fn around(req: &Request, anchor: Point, pref: Vec2, extra: f64, bounds: Rect, out: &mut Vec<Candidate>) {
-    let (w, up, down) = label_size(&req.label, req.h);
+    let (w, up, down) = req.size();
     let ht = up + down;
     let base = if pref.norm() > tol::PAPER { pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
     let gap = if req.names_line { TOUCH } else { LEADER_GAP };
@@ -294,13 +347,17 @@ fn around(req: &Request, anchor: Point, pref: Vec2, extra: f64, bounds: Rect, ou
     }
 }
 
-/// A leader from `gap` off the anchor to the nearest point of the label's box.
+/// A leader from `gap` off the anchor to [`LEADER_SHORT`] short of the nearest point of the
+/// label's box (a leader ending on the box's edge touches the letters' tops).
 fn leader(anchor: Point, r: Rect, gap: f64) -> (Point, Point) {
     let end = Point::new(anchor.x.clamp(r.x0, r.x1), anchor.y.clamp(r.y0, r.y1));
     let d = end - anchor;
     let start = anchor + d.unit() * gap.min(d.norm() / 2.0);
-    (start, end)
+    (start, end - d.unit() * LEADER_SHORT.min(d.norm() / 4.0))
 }
+
+/// How far a leader stops short of its label's box, mm.
+const LEADER_SHORT: f64 = 0.5;
 
 #[cfg(test)]
 mod tests {

@@ -1,11 +1,14 @@
-//! Scale factors. Lengths use the scales of GOST 2.302; plans use the course's round
-//! factors {1, 2, 2.5, 4, 5}·10ⁿ.
+//! Scale factors. Lengths use the scales of GOST 2.302; diagrams and force drawings use
+//! the course's round factors {1, 2, 2.5, 4, 5}·10ⁿ; velocity and acceleration plans, which
+//! share one μ across a sheet and so cannot all be tuned to their cells, the finer series
+//! {1, 1.5, 2, 2.5, 3, 4, 5, 6, 7.5}·10ⁿ (steps of at most a third instead of 1.6×).
 
 use crate::num::math;
 use crate::num::tol;
 use crate::num::units::mm;
 
 const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
+const PLAN_MANTISSAS: [f64; 9] = [1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 7.5];
 
 /// GOST 2.302 reductions 1:k (k real mm per paper mm).
 const REDUCTIONS: [f64; 21] = [
@@ -22,33 +25,55 @@ const EXACT: f64 = 1.0 - tol::ROUND_VALUE;
 /// drawing as large as possible without leaving its region. A drawing of no extent (x ≤ 0,
 /// or not finite) fits any scale: it gets 1.
 pub fn round_up(x: f64) -> f64 {
+    round_up_in(x, &MANTISSAS)
+}
+
+/// [`round_up`] in the plans' finer series.
+pub fn plan_round_up(x: f64) -> f64 {
+    round_up_in(x, &PLAN_MANTISSAS)
+}
+
+/// The largest value of the plans' series ≤ `x` (1 for no extent).
+pub fn plan_round_down(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    let e = math::log10(x).floor() as i32;
+    (e - 1..=e)
+        .flat_map(|k| PLAN_MANTISSAS.iter().map(move |&m| series_value(m, k)))
+        .filter(|&v| v * EXACT <= x)
+        .fold(0.0, f64::max)
+}
+
+/// The next value of the plans' series above `mu`.
+pub fn plan_next_round(mu: f64) -> f64 {
+    plan_round_up(mu * 1.001)
+}
+
+fn round_up_in(x: f64, mantissas: &[f64]) -> f64 {
     if !(x.is_finite() && x > 0.0) {
         return 1.0;
     }
     let mut e = math::log10(x).floor() as i32 - 1;
     loop {
-        let p = 10f64.powi(e);
-        for m in MANTISSAS {
-            if m * p >= x * EXACT {
-                return m * p;
+        for &m in mantissas {
+            if series_value(m, e) >= x * EXACT {
+                return series_value(m, e);
             }
         }
         e += 1;
     }
 }
 
+/// m·10^e as the double nearest it: dividing by 10^|e| keeps 3·10⁻¹ 0.3 (3 × 0.1 is
+/// 0.30000000000000004, which a scale line would print).
+fn series_value(m: f64, e: i32) -> f64 {
+    if e < 0 { m / 10f64.powi(-e) } else { m * 10f64.powi(e) }
+}
+
 /// The next value of the round series above `mu`.
 pub fn next_round(mu: f64) -> f64 {
     round_up(mu * 1.001)
-}
-
-/// The largest value of the round series below `mu`.
-pub fn previous_round(mu: f64) -> f64 {
-    [0.5, 0.625, 0.8]
-        .iter()
-        .map(|f| round_up(mu * f))
-        .filter(|&m| m < mu * (1.0 - tol::SAME_SCALE))
-        .fold(mu * 0.5, f64::max)
 }
 
 /// Every GOST 2.302 μ_l (m/mm), the largest drawing first.
@@ -105,9 +130,15 @@ mod tests {
     }
 
     #[test]
-    fn next_and_previous_round_values_step_along_the_series() {
+    fn next_round_values_step_along_the_series() {
         assert_eq!([next_round(0.02), next_round(0.025), next_round(0.05)], [0.025, 0.04, 0.1]);
-        assert_eq!([previous_round(0.1), previous_round(0.04), previous_round(0.025)], [0.05, 0.025, 0.02]);
+        let plans: Vec<f64> = std::iter::successors(Some(0.1), |&m| Some(plan_next_round(m))).take(10).collect();
+        assert_eq!(plans, [0.1, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 1.0]);
+        assert_eq!([plan_round_up(0.031), plan_round_up(0.0061), plan_round_up(7.6)], [0.04, 0.0075, 10.0]);
+        assert_eq!(
+            [plan_round_down(0.031), plan_round_down(0.0061), plan_round_down(7.6), plan_round_down(0.3)],
+            [0.03, 0.006, 7.5, 0.3]
+        );
     }
 
     #[test]

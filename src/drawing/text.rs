@@ -59,7 +59,8 @@ pub fn wrap(text: &str, h: f64, width: f64) -> Vec<String> {
     let space = m.width(" ", size);
     let mut lines = Vec::new();
     let (mut cur, mut cur_w) = (String::new(), 0.0);
-    for word in text.split_whitespace() {
+    for word in &units(text) {
+        let word = word.as_str();
         let word_w = m.width(word, size);
         if !cur.is_empty() && cur_w + space + word_w <= room {
             cur.push(' ');
@@ -74,16 +75,29 @@ pub fn wrap(text: &str, h: f64, width: f64) -> Vec<String> {
             (cur, cur_w) = (word.to_string(), word_w);
             continue;
         }
-        // A word wider than a line: break it between characters.
+        // A word wider than a line: broken after its hyphens ("Кривошипно-" over
+        // "ползунный"), and a piece still wider between characters.
         cur_w = 0.0;
-        for c in word.chars() {
-            let cw = m.width(c.encode_utf8(&mut [0; 4]), size);
-            if !cur.is_empty() && cur_w + cw > room {
+        for piece in word.split_inclusive('-') {
+            let piece_w = m.width(piece, size);
+            if !cur.is_empty() && cur_w + piece_w > room {
                 lines.push(std::mem::take(&mut cur));
                 cur_w = 0.0;
             }
-            cur.push(c);
-            cur_w += cw;
+            if piece_w <= room {
+                cur.push_str(piece);
+                cur_w += piece_w;
+                continue;
+            }
+            for c in piece.chars() {
+                let cw = m.width(c.encode_utf8(&mut [0; 4]), size);
+                if !cur.is_empty() && cur_w + cw > room {
+                    lines.push(std::mem::take(&mut cur));
+                    cur_w = 0.0;
+                }
+                cur.push(c);
+                cur_w += cw;
+            }
         }
     }
     if !cur.is_empty() {
@@ -93,17 +107,38 @@ pub fn wrap(text: &str, h: f64, width: f64) -> Vec<String> {
     lines
 }
 
+/// The words of `text` as wrapping sees them: a one- or two-letter word (a preposition or
+/// conjunction: "в", "и", "da") goes to the next line with the word after it, as Russian
+/// typesetting asks ("длины в" over "мм" reads as if the unit were lost).
+fn units(text: &str) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    let mut glue = false;
+    for word in text.split_whitespace() {
+        match out.last_mut() {
+            Some(last) if glue => {
+                last.push(' ');
+                last.push_str(word);
+            }
+            _ => out.push(word.to_string()),
+        }
+        glue = word.chars().count() <= 2 && word.chars().all(char::is_alphabetic);
+    }
+    out
+}
+
 /// A paragraph's last line of one word (a widow: "значения" alone under a full line) takes
 /// the word before it along, when that fits and leaves the line above two words or more.
+/// Words are [`units`]: a preposition moves with its word.
 fn keep_last_word_company(lines: &mut [String], fits: impl Fn(&str) -> bool) {
     let [.., above, last] = lines else { return };
-    if last.contains(' ') || above.matches(' ').count() < 2 {
+    let words = units(above);
+    let ([kept @ .., moved], 1) = (words.as_slice(), units(last).len()) else { return };
+    if kept.len() < 2 {
         return;
     }
-    let Some((kept, moved)) = above.rsplit_once(' ') else { return };
     let joined = format!("{moved} {last}");
     if fits(&joined) {
-        *above = kept.to_string();
+        *above = kept.join(" ");
         *last = joined;
     }
 }
@@ -161,9 +196,10 @@ pub fn block_height(n: usize, h: f64) -> f64 {
 }
 
 /// `text` in a `w` × `ht` mm cell (the room for the letters themselves): on one line at the
-/// largest GOST height from `h_max` down to 2.5 mm that fits, else wrapped at the largest
-/// such height whose lines fit, else on one line condensed (at 2.5 mm, then 1.8 mm, to
-/// [`NARROWEST`]); `None` when none of these fits.
+/// largest GOST height from `h_max` down to 2.5 mm that fits, else wrapped (at spaces and
+/// hyphens) at the largest such height whose lines fit, else on one line condensed (at 2.5
+/// mm, then 1.8 mm, to [`NARROWEST`]), else wrapped with a word broken between letters;
+/// `None` when none of these fits.
 pub fn fit(text: &str, w: f64, ht: f64, h_max: f64) -> Option<Fitted> {
     let sizes = || SIZES.into_iter().filter(move |&h| h <= h_max);
     let m = font::metrics();
@@ -180,7 +216,18 @@ pub fn fit(text: &str, w: f64, ht: f64, h_max: f64) -> Option<Fitted> {
             return Some(Fitted { lines: vec![text.to_string()], h, stretch: 1.0 });
         }
     }
-    let wrapped = sizes().map(|h| Fitted { lines: wrap(text, h, w), h, stretch: 1.0 }).find(|f| f.height() <= ht);
+    // Wrapped at white space and hyphens at the largest height that needs no word broken
+    // between letters ("ползу" over "нный" reads as two words).
+    let whole_words = |h: f64| {
+        let room = w - SLANT * h;
+        text.split_whitespace()
+            .flat_map(|word| word.split_inclusive('-'))
+            .all(|p| m.width(p, font::size_for_cap(h)) <= room)
+    };
+    let wrapped = sizes()
+        .filter(|&h| whole_words(h))
+        .map(|h| Fitted { lines: wrap(text, h, w), h, stretch: 1.0 })
+        .find(|f| f.height() <= ht);
     if wrapped.is_some() {
         return wrapped;
     }
@@ -195,7 +242,7 @@ pub fn fit(text: &str, w: f64, ht: f64, h_max: f64) -> Option<Fitted> {
             return Some(Fitted { lines: vec![text.to_string()], h, stretch });
         }
     }
-    None
+    sizes().map(|h| Fitted { lines: wrap(text, h, w), h, stretch: 1.0 }).find(|f| f.height() <= ht)
 }
 
 /// The narrowest a fitted text's letters are set: GOST 2.304's narrow type A against the
@@ -232,6 +279,31 @@ mod tests {
 
     /// A last line of one word takes the word before it along; the words keep their order
     /// and every line its width.
+    /// A hyphenated word wider than its line breaks after the hyphen, and `fit` takes a smaller
+    /// height rather than break a word between letters (the title block's "Кривошипно-ползу" /
+    /// "нный механизм").
+    #[test]
+    fn long_words_break_after_their_hyphens_not_between_letters() {
+        let word = "Кривошипно-ползунный";
+        let w = font::metrics().width(word, font::size_for_cap(3.5)) * 0.8;
+        assert_eq!(wrap(word, 3.5, w), ["Кривошипно-", "ползунный"]);
+        let text = "Кривошипно-ползунный механизм";
+        let f = fit(text, w, 12.0, 3.5).expect("fits");
+        let whole = ["Кривошипно-ползунный", "Кривошипно-", "ползунный", "механизм"];
+        assert!(f.lines.iter().flat_map(|l| l.split_whitespace()).all(|t| whole.contains(&t)), "{:?}", f.lines);
+        assert_eq!(f.lines.concat().replace(' ', ""), text.replace(' ', ""));
+    }
+
+    #[test]
+    fn a_short_word_goes_to_the_next_line_with_its_word() {
+        let text = "Параметры внешнего зацепления (длины в мм, продолжение)";
+        for width in [30.0, 40.0, 50.0, 60.0, 80.0] {
+            let lines = wrap(text, 2.5, width);
+            assert!(lines.iter().all(|l| !l.ends_with(" в")), "{lines:?} at {width} mm");
+            assert_eq!(lines.join(" "), text);
+        }
+    }
+
     #[test]
     fn wrapping_leaves_no_word_alone_on_the_last_line() {
         let h = 2.5;

@@ -9,7 +9,7 @@ use super::forces_view::{ForceScales, ForcesInput, draw_forces, fit_comfortably}
 use super::labels::LeverWords;
 use super::mechanism_view::{MechanismView, TRAJECTORY, world_extent};
 use super::note_tables::{note_tables, sheet_table, tables_group, with_units};
-use super::plans_view::{PlanCell, Sizing, draw_plan, label_bounds, size_plans};
+use super::plans_view::{MIN_PLAN, PlanCell, Sizing, draw_plan, label_bounds, size_plans};
 use super::segments::{self, PlanKind, plan_segments};
 use crate::drawing::fmt;
 use crate::drawing::frame;
@@ -35,9 +35,9 @@ use kurbo::{Point, Rect};
 pub struct Scales {
     /// m/mm
     pub mu_l: f64,
-    /// (m/s)/mm, when all velocity plans share it.
+    /// (m/s)/mm, shared by every velocity plan (none without plans).
     pub mu_v: Option<f64>,
-    /// (m/s²)/mm, when all acceleration plans share it.
+    /// (m/s²)/mm, shared by every acceleration plan (none without plans).
     pub mu_a: Option<f64>,
     /// Each velocity plan's scale and drawn size.
     pub velocity_plans: Vec<PlanDrawn>,
@@ -91,12 +91,13 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     }
     // The split between the force drawings (left) and the plans (right): the widest force
     // column is tried first; a narrower one wins when the forces still fit comfortably and
-    // the smallest plan grows by a tenth or more.
+    // the smallest plan grows by a tenth or more, or the wider one's layout is not clean.
     let mut best = compose_at(inp, k, FORCES_WIDTHS[0])?;
     for &w in &FORCES_WIDTHS[1..] {
         let next = compose_at(inp, k, w)?;
         let smallest = |c: &Composed| c.layout.smallest_plan_mm.unwrap_or(0.0);
-        if next.1 && next.0.layout.is_clean() && smallest(&next.0) > 1.1 * smallest(&best.0) {
+        let better = smallest(&next.0) > 1.1 * smallest(&best.0) || !best.0.layout.is_clean();
+        if next.1 && next.0.layout.is_clean() && better {
             best = next;
         }
     }
@@ -122,45 +123,49 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     let right_x0 = left_x1 + 6.0;
     let notes = note_tables(inp, &words, (right_x0, inner.x1 - 4.0))?;
     let plans_bottom = notes.region.y0 - 6.0;
-    let vel_bottom = if force_region.is_some() { TOP + (plans_bottom - TOP) * 0.58 } else { plans_bottom };
     let (l, c) = (words.sheet, words.common);
-
-    // Velocity plans: every position, one common μ_v.
-    let vel_region = Rect::new(right_x0, TOP, inner.x1 - 4.0, vel_bottom);
     let vplans: Vec<_> = k.positions.iter().map(|p| velocity_plan(&inp.project.mechanism, &p.state)).collect();
-    let velocity = PlansRegion {
+    let aplans: Vec<_> =
+        k.acceleration.iter().map(|&i| acceleration_plan(&inp.project.mechanism, &k.positions[i].state)).collect();
+    let vpositions: Vec<&Position> = k.positions.iter().collect();
+    let apositions: Vec<&Position> = k.acceleration.iter().map(|&i| &k.positions[i]).collect();
+    let mut velocity = PlansRegion {
         id: "velocity-plans",
         kind: &segments::VELOCITY,
-        region: vel_region,
+        region: Rect::new(right_x0, TOP, inner.x1 - 4.0, plans_bottom),
         title: l.velocity_plans(),
         pole: "p",
         symbol: "v",
         unit: c.unit_v_per_mm(),
     };
-    let answer = AnswerKeys::of(&format!("sheet{}", inp.kind.number), inp.notes);
-    let mut drawn_segments = segments::link_segments(&inp.project.mechanism, &k.positions, mech.mu_l);
-    let (vel, vdrawn, mu_v, vel_segments) =
-        plans_group(&velocity, &vplans, k.positions.iter().collect(), &words, &answer);
-    drawn_segments.extend(vel_segments);
-
-    // Acceleration plans: the chosen positions, one common μ_a.
-    let acc_region = match force_region {
-        Some(_) => Rect::new(right_x0, vel_bottom + 4.0, inner.x1 - 4.0, plans_bottom),
-        None => Rect::new(inner.x0 + 5.0, mech.region.y1 + 4.0, mech.region.x1, inner.y1 - 4.0),
-    };
-    let aplans: Vec<_> =
-        k.acceleration.iter().map(|&i| acceleration_plan(&inp.project.mechanism, &k.positions[i].state)).collect();
-    let acceleration = PlansRegion {
+    let mut acceleration = PlansRegion {
         id: "acceleration-plans",
         kind: &segments::ACCELERATION,
-        region: acc_region,
+        region: Rect::new(inner.x0 + 5.0, mech.region.y1 + 4.0, mech.region.x1, inner.y1 - 4.0),
         title: l.acceleration_plans(),
         pole: "π",
         symbol: "a",
         unit: c.unit_a_per_mm(),
     };
-    let positions = k.acceleration.iter().map(|&i| &k.positions[i]).collect();
-    let (acc, adrawn, mu_a, acc_segments) = plans_group(&acceleration, &aplans, positions, &words, &answer);
+    // With a force analysis both kinds of plans share the right column: split at the
+    // height that leaves the smallest plan of either kind largest.
+    if force_region.is_some() {
+        let column = Rect::new(right_x0, TOP, inner.x1 - 4.0, plans_bottom);
+        let split = split_plans(
+            column,
+            [(&velocity, &vplans[..], &vpositions[..]), (&acceleration, &aplans, &apositions)],
+            &words,
+        );
+        velocity.region = split[0];
+        acceleration.region = split[1];
+    }
+    let answer = AnswerKeys::of(&format!("sheet{}", inp.kind.number), inp.notes);
+    let mut drawn_segments = segments::link_segments(&inp.project.mechanism, &k.positions, mech.mu_l);
+    // Velocity plans: every position, one common μ_v.
+    let (vel, vdrawn, mu_v, vel_segments) = plans_group(&velocity, &vplans, vpositions, &words, &answer);
+    drawn_segments.extend(vel_segments);
+    // Acceleration plans: the chosen positions, one common μ_a.
+    let (acc, adrawn, mu_a, acc_segments) = plans_group(&acceleration, &aplans, apositions, &words, &answer);
     drawn_segments.extend(acc_segments);
 
     let tables = tables_group(&notes, &words);
@@ -372,6 +377,66 @@ struct PlansRegion<'a> {
     unit: &'a str,
 }
 
+impl PlansRegion<'_> {
+    /// The scale line of a plan of this kind at `mu`.
+    fn scale_line(&self, mu: f64, words: &LeverWords) -> LabelText {
+        LabelText::new("μ", self.symbol).with_tail(format!(
+            " = {} {}",
+            fmt::localise(&scale::format(mu), words.lang),
+            self.unit
+        ))
+    }
+
+    /// The plans' scales and cells below the region's header (see [`size_plans`]).
+    fn sizing(&self, plans: &[Plan], positions: &[&Position], words: &LeverWords) -> Sizing {
+        let body = Rect::new(self.region.x0, self.region.y0 + HEADER, self.region.x1, self.region.y1);
+        // A cell holds its title (3.5 mm) and, at a scale of its own, its scale line (2.5 mm).
+        let min_w = positions
+            .iter()
+            .map(|p| LabelText::new(words.sheet.position(&p.label), "").width(3.5))
+            .fold(self.scale_line(0.0025, words).width(2.5), f64::max)
+            + 5.0;
+        size_plans(body, plans, self.pole, min_w)
+    }
+}
+
+/// Shares of a column tried for the velocity plans above the acceleration plans.
+const VELOCITY_SHARES: [f64; 7] = [0.46, 0.5, 0.54, 0.58, 0.62, 0.66, 0.7];
+
+/// Splits `column` between two kinds of plans, the first above: at the share whose smallest
+/// plan is largest (a plan off the common scale counts as no larger than the minimum), then
+/// whose largest velocity plan is largest.
+fn split_plans(column: Rect, kinds: [(&PlansRegion, &[Plan], &[&Position]); 2], words: &LeverWords) -> [Rect; 2] {
+    let regions = |share: f64| {
+        let y = column.y0 + column.height() * share;
+        [Rect::new(column.x0, column.y0, column.x1, y), Rect::new(column.x0, y + 4.0, column.x1, column.y1)]
+    };
+    let score = |share: f64| {
+        let sizes: Vec<(f64, f64)> = regions(share)
+            .iter()
+            .zip(&kinds)
+            .map(|(&region, (r, plans, positions))| {
+                let r = PlansRegion { region, ..**r };
+                let s = r.sizing(plans, positions, words);
+                let sides: Vec<f64> = s.drawn(plans).iter().map(|d| d[0].max(d[1])).collect();
+                let least = sides
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &d)| if s.own(i) { d.min(MIN_PLAN) } else { d })
+                    .fold(f64::MAX, f64::min);
+                (least, sides.iter().copied().fold(0.0, f64::max))
+            })
+            .collect();
+        (sizes[0].0.min(sizes[1].0).min(2.0 * MIN_PLAN), sizes[0].1)
+    };
+    let best = VELOCITY_SHARES
+        .iter()
+        .map(|&share| (share, score(share)))
+        .max_by(|a, b| a.1.0.total_cmp(&b.1.0).then(a.1.1.total_cmp(&b.1.1)))
+        .map_or(0.58, |(share, _)| share);
+    regions(best)
+}
+
 /// Draws plans in cells filling the region below its header (see [`size_plans`]); returns
 /// the group, what each plan became and the scale they share, if one.
 fn plans_group(
@@ -381,37 +446,18 @@ fn plans_group(
     words: &LeverWords,
     answer: &AnswerKeys,
 ) -> (Group, Vec<PlanDrawn>, Option<f64>, Vec<Segment>) {
-    let (l, lang) = (words.sheet, words.lang);
+    let l = words.sheet;
     let mut g = Group::new(r.id, r.region);
-    let body = Rect::new(r.region.x0, r.region.y0 + HEADER, r.region.x1, r.region.y1);
-    let scale_line = |mu: f64| {
-        LabelText::new("μ", r.symbol).with_tail(format!(" = {} {}", fmt::localise(&scale::format(mu), lang), r.unit))
-    };
-    // A cell holds its title (3.5 mm) and a scale line (2.5 mm) of the longest value.
-    let min_w = positions
-        .iter()
-        .map(|p| LabelText::new(l.position(&p.label), "").width(3.5))
-        .fold(scale_line(0.0025).width(2.5), f64::max)
-        + 5.0;
-    let sizing: Sizing = size_plans(body, plans, r.pole, min_w);
-    let header = if sizing.common {
-        scale_line(sizing.mu[0])
-    } else {
-        LabelText::new("μ", r.symbol).with_tail(format!(": {}", l.own_scales()))
-    };
-    region_header(&mut g, r.region, r.title, &[header]);
+    let scale_line = |mu: f64| r.scale_line(mu, words);
+    let sizing = r.sizing(plans, &positions, words);
+    region_header(&mut g, r.region, r.title, &[scale_line(sizing.common)]);
     let mut segments = Vec::new();
-    for ((plan, &cell), (pos, &mu)) in plans.iter().zip(&sizing.cells).zip(positions.iter().zip(&sizing.mu)) {
+    for (i, ((plan, &cell), pos)) in plans.iter().zip(&sizing.cells).zip(&positions).enumerate() {
+        let mu = sizing.mu[i];
         let mut labels = Labels::new();
         let title = l.position(&pos.label);
-        let c = PlanCell {
-            cell,
-            title: &title,
-            plan,
-            mu,
-            pole: r.pole,
-            scale_line: (!sizing.common).then(|| scale_line(mu)),
-        };
+        let c =
+            PlanCell { cell, title: &title, plan, mu, pole: r.pole, scale_line: sizing.own(i).then(|| scale_line(mu)) };
         let start = g.mark();
         draw_plan(&mut g, &c, &mut labels);
         labels.place(&mut g, label_bounds(cell));
@@ -424,5 +470,5 @@ fn plans_group(
         .zip(&sizing.mu)
         .map(|((p, size_mm), &mu)| PlanDrawn { position: p.label.clone(), mu, size_mm })
         .collect();
-    (g, drawn, sizing.common.then(|| sizing.mu[0]), segments)
+    (g, drawn, (!plans.is_empty()).then_some(sizing.common), segments)
 }

@@ -14,7 +14,6 @@ crate::label_set! {
         positions_title,
         velocity_plans,
         acceleration_plans,
-        own_scales,
         position(k),
         velocity_table(n),
         acceleration_table(n),

@@ -28,6 +28,8 @@ const JOINT_R: f64 = 1.0;
 pub const TRAJECTORY: Pen = AXIS;
 /// A slider's stroke shorter than this on paper is not dimensioned: its arrows would hide it, mm.
 const STROKE_MIN_MM: f64 = 3.0;
+/// Two strokes whose ends are this close on paper are one (mm).
+const STROKE_SAME_MM: f64 = 0.5;
 /// The length of a slider's stroke each of its position numbers needs (2.5 mm lettering), mm.
 const SLIDER_NUMBER_MM: f64 = 5.0;
 /// The length of the crank pin's circle each position number needs in 3.5 mm lettering, mm.
@@ -153,7 +155,12 @@ impl MechanismView<'_> {
     /// guide's hatching, or on the rod's side, at the offset whose lines cross the fewest
     /// drawn lines — a contour line (the thick position's rod) counting as ten — and stay in
     /// the drawing's region. Drawn after the positions, so that it sees them.
+    ///
+    /// With two sliders each H is named by its slider's point (H_B, H_E); two strokes between
+    /// the same extreme points (two pistons on one line, cranks 180° apart) are one dimension.
     fn strokes(&self, g: &mut Group, labels: &mut Labels) {
+        // (the rod's joint, the slider's point, the guide's point and direction, the ends, H)
+        let mut strokes: Vec<(PointId, PointId, Vec2, Vec2, Point, Point, f64)> = Vec::new();
         for st in &self.m.steps {
             let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
             let (lo, hi) = self.travel(d, through, dir);
@@ -161,6 +168,14 @@ impl MechanismView<'_> {
             if (eb - ea).norm() < STROKE_MIN_MM {
                 continue;
             }
+            let same = |(a, b): (Point, Point)| (a - ea).norm() < STROKE_SAME_MM && (b - eb).norm() < STROKE_SAME_MM;
+            if strokes.iter().any(|s| same((s.4, s.5)) || same((s.5, s.4))) {
+                continue;
+            }
+            strokes.push((joint, d, through, dir, ea, eb, hi - lo));
+        }
+        let named = strokes.len() > 1;
+        for (joint, d, through, dir, ea, eb, length) in strokes {
             let n_world = dir.turn_90();
             let hatch_side = self.view.dir(n_world * self.hatch_side(joint, through, n_world));
             let all = Obstacles::of_items(&g.items);
@@ -178,8 +193,9 @@ impl MechanismView<'_> {
             let Some(off) = candidates.into_iter().filter(fits).min_by_key(|&off| cost(off)) else { continue };
             let mid = dimension(g, ea, eb, off);
             let (lang, c) = (self.words.lang, self.words.common);
-            let value = format!(" = {} {}", fmt::value(1e3 * (hi - lo), lang), c.unit_mm());
-            labels.add(mid, off, LabelText::new("H", "").with_tail(value), 3.5);
+            let value = format!(" = {} {}", fmt::value(1e3 * length, lang), c.unit_mm());
+            let sub = if named { self.m.name(d) } else { "" };
+            labels.add(mid, off, LabelText::new("H", sub).with_tail(value), 3.5);
         }
     }
 

@@ -5,9 +5,15 @@
 //! their labels collide; separate cells keep every image point readable, so each position
 //! gets its own plan here.
 //!
-//! Scales: one round μ for all plans of a region when that leaves the smallest plan at
-//! least half as large as the largest; otherwise (a kulisa's plans near its extreme
-//! positions are a tenth of the others) each plan gets its own round μ, written in its cell.
+//! Scales: one round μ for all plans of a kind, as the guide draws them (μ_v for every
+//! velocity plan, μ_a for every acceleration plan), so their vectors compare at a glance;
+//! the smallest μ of the plans' series at which the cells pack, so the largest plan is as
+//! large as the region allows. A plan's side is then at least its crank vector (pa = ω1·l_OA
+//! is the same in every velocity plan, πa = ω1²·l_OA in every acceleration plan) — unless
+//! one position's plan is many times the others' (a kulisa's near its fast stroke): at the
+//! scale that fits it the rest would be under [`MIN_PLAN`], too small to measure. Then the
+//! fewest plans possible leave the common scale: a plan under [`MIN_PLAN`] is enlarged, one
+//! over [`MAX_PLAN`] reduced, each to a round μ of its own written in its cell.
 //! Cells are sized by their plans and packed in rows that fill the region.
 
 use crate::drawing::place::Labels;
@@ -25,19 +31,17 @@ use kurbo::{Point, Rect, Vec2};
 pub const MARGIN: f64 = 7.0;
 /// Images closer than this (mm) share one label, e.g. "p=b=d".
 const SHARED_LABEL: f64 = 0.8;
-/// Height of a cell's title strip, mm; a plan with its own scale gets a second line.
+/// Height of a cell's title strip, mm.
 pub const TITLE: f64 = 6.0;
-const SCALE_LINE: f64 = 5.0;
 /// Gap between cells, mm.
 const GAP: f64 = 2.0;
-/// One scale for all plans when the smallest is at least this fraction of the largest and
-/// at least [`MIN_PLAN`] long.
-const COMMON_SCALE_SPREAD: f64 = 0.5;
-/// A plan shorter than this (its longer side, mm) is hard to measure with a ruler; the guide
-/// draws pa = 50 mm.
-pub const MIN_PLAN: f64 = 30.0;
-/// Own scales start every plan no longer than this, mm, and enlarge from there.
-const START_PLAN: f64 = 20.0;
+/// A plan's longer side is at least this long, mm: measured with a ruler to 0.5 mm, its
+/// vectors read to 2 % (the guide draws pa = 40 mm).
+pub const MIN_PLAN: f64 = 25.0;
+/// A plan leaving the common scale for a smaller one is drawn this long, mm.
+const MAX_PLAN: f64 = 70.0;
+/// The own scale's line under a cell's title, mm.
+const SCALE_LINE: f64 = 5.0;
 
 /// Bounding box of a plan in its own units (m/s or m/s²), pole included.
 pub fn plan_bbox(plan: &Plan) -> Rect {
@@ -55,9 +59,10 @@ pub fn plan_bbox(plan: &Plan) -> Rect {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Sizing {
     pub cells: Vec<Rect>,
+    /// The scale the plans share.
+    pub common: f64,
+    /// Each plan's scale: `common` but for the few that cannot be measured at it.
     pub mu: Vec<f64>,
-    /// One scale for all (written once in the region's header).
-    pub common: bool,
 }
 
 impl Sizing {
@@ -65,19 +70,25 @@ impl Sizing {
     pub fn drawn(&self, plans: &[Plan]) -> Vec<[f64; 2]> {
         plans.iter().map(plan_bbox).zip(&self.mu).map(|(b, mu)| [b.width() / mu, b.height() / mu]).collect()
     }
+
+    /// Whether plan `i` has a scale of its own.
+    pub fn own(&self, i: usize) -> bool {
+        (self.mu[i] / self.common - 1.0).abs() > tol::SAME_SCALE
+    }
 }
 
 /// A cell's size for a plan of box `bb` at `mu`: the plan with room around it for its
-/// labels, at least `min_w` wide (its title and scale line) and as wide as its longest label
-/// (`label_w`), which may then stand above or below the point it names.
+/// labels, at least `min_w` wide (its title) and as wide as its longest label (`label_w`),
+/// which may then stand above or below the point it names; a plan at its own scale has that
+/// scale's line under the title.
 fn cell_size(bb: Rect, mu: f64, own_scale: bool, min_w: f64, label_w: f64) -> (f64, f64) {
     let title = TITLE + if own_scale { SCALE_LINE } else { 0.0 };
     let w = (bb.width() / mu + 2.0 * MARGIN + 2.0).max(min_w).max(label_w + 4.0);
     (w, bb.height() / mu + 2.0 * MARGIN + title + 1.0)
 }
 
-/// The width of a plan's longest label at 3.5 mm: the images that coincide (at any scale)
-/// share one, "p=b=s3=c".
+/// The width of a plan's longest label line at 3.5 mm: the images that coincide (at any
+/// scale) share one label, "p=b=s3=" over "c".
 fn longest_label(plan: &Plan, pole: &str) -> f64 {
     let size = plan_bbox(plan).size();
     let same = tol::SAME_POINT * size.width.max(size.height).max(f64::MIN_POSITIVE);
@@ -90,18 +101,21 @@ fn longest_label(plan: &Plan, pole: &str) -> f64 {
     }
     groups
         .iter()
-        .flat_map(|(_, n)| chunks(&n.split('=').map(String::from).collect::<Vec<_>>()))
+        .flat_map(|(_, n)| lines(&n.split('=').map(String::from).collect::<Vec<_>>()))
         .map(|n| LabelText::new(n, "").width(3.5))
         .fold(0.0, f64::max)
 }
 
-/// Names sharing one point, written as "p=b=s3" and, on a second label beside it,
-/// "=c=s4=s5": [`SHARED_PER_LABEL`] names per label keep the labels short.
-fn chunks(names: &[String]) -> Vec<String> {
+/// Names sharing one point as the lines of one stacked label, at most [`SHARED_PER_LABEL`]
+/// names a line, each line but the last ending with "=" so that the chain reads on: "p=b=s3=" over
+/// "c=s4=s5" (a second label starting with "=" read as a stray sign).
+fn lines(names: &[String]) -> Vec<String> {
+    let n = names.len().div_ceil(SHARED_PER_LABEL);
+    // As even as the lines allow: four names are "b=d=" over "s4=s5", not three and one.
     names
-        .chunks(SHARED_PER_LABEL)
+        .chunks(names.len().div_ceil(n.max(1)).max(1))
         .enumerate()
-        .map(|(k, c)| format!("{}{}", if k == 0 { "" } else { "=" }, c.join("=")))
+        .map(|(k, c)| format!("{}{}", c.join("="), if k + 1 < n { "=" } else { "" }))
         .collect()
 }
 
@@ -145,73 +159,69 @@ fn pack(sizes: &[(f64, f64)], body: Rect) -> Option<Vec<Rect>> {
     Some(out)
 }
 
-/// Chooses the plans' scales and cells in `body` (see the module's note on scales); a cell
-/// is at least `min_w` wide (its title and scale line).
+/// Chooses the plans' scales and their cells in `body` (see the module's note on scales); a
+/// cell is at least `min_w` wide (its title and scale line).
 pub fn size_plans(body: Rect, plans: &[Plan], pole: &str, min_w: f64) -> Sizing {
     let boxes: Vec<Rect> = plans.iter().map(plan_bbox).collect();
     let labels: Vec<f64> = plans.iter().map(|p| longest_label(p, pole)).collect();
-    let side = |b: &Rect| b.width().max(b.height()).max(f64::MIN_POSITIVE);
-    let largest = boxes.iter().map(side).fold(0.0, f64::max);
-    // The common scale: the smallest round μ at which the cells pack.
-    let mut mu = scale::round_up(largest / body.width().max(body.height()));
-    let mut common = None;
-    for _ in 0..400 {
-        let sizes: Vec<_> = boxes.iter().zip(&labels).map(|(&b, &lw)| cell_size(b, mu, false, min_w, lw)).collect();
-        if let Some(cells) = pack(&sizes, body) {
-            common = Some(cells);
-            break;
-        }
-        mu = scale::next_round(mu);
-    }
-    let smallest = boxes.iter().map(side).fold(f64::MAX, f64::min);
-    if let Some(cells) = &common
-        && smallest >= COMMON_SCALE_SPREAD * largest
-        && smallest / mu >= MIN_PLAN
-    {
-        return Sizing { cells: cells.clone(), mu: vec![mu; plans.len()], common: true };
-    }
-    // Own scales, by water filling: every plan starts small; the smallest is enlarged by one
-    // round step while the cells still pack, and stays as it is once it cannot grow.
-    let sizes = |mus: &[f64]| -> Vec<(f64, f64)> {
-        boxes.iter().zip(mus).zip(&labels).map(|((&b, &m), &lw)| cell_size(b, m, true, min_w, lw)).collect()
+    let sides: Vec<f64> = boxes.iter().map(|b| b.width().max(b.height()).max(f64::MIN_POSITIVE)).collect();
+    let largest = sides.iter().copied().fold(f64::MIN_POSITIVE, f64::max);
+    let fit = |common: f64, outliers: bool| -> Option<Sizing> {
+        let mu: Vec<f64> = sides.iter().map(|&s| if outliers { own_scale(s, common) } else { common }).collect();
+        let sizes: Vec<_> =
+            (0..plans.len()).map(|i| cell_size(boxes[i], mu[i], mu[i] != common, min_w, labels[i])).collect();
+        pack(&sizes, body).map(|cells| Sizing { cells, common, mu })
     };
-    let mut start = START_PLAN;
-    let mut mus: Vec<f64> = Vec::new();
-    for _ in 0..40 {
-        mus = boxes.iter().map(|b| scale::round_up(side(b) / start)).collect();
-        if pack(&sizes(&mus), body).is_some() {
+    // Every plan at one scale: the smallest that packs.
+    let mut mu = scale::plan_round_up(largest / body.width().max(body.height()));
+    let mut all = None;
+    for _ in 0..400 {
+        if let Some(s) = fit(mu, false) {
+            all = Some(s);
             break;
         }
-        start *= 0.8;
+        mu = scale::plan_next_round(mu);
     }
-    if pack(&sizes(&mus), body).is_some() {
-        let mut frozen = vec![false; plans.len()];
-        while let Some(i) = (0..plans.len())
-            .filter(|&i| !frozen[i])
-            .min_by(|&a, &b| (side(&boxes[a]) / mus[a]).total_cmp(&(side(&boxes[b]) / mus[b])))
-        {
-            let old = mus[i];
-            mus[i] = scale::previous_round(old);
-            if pack(&sizes(&mus), body).is_none() {
-                mus[i] = old;
-                frozen[i] = true;
-            }
-        }
-        let least = boxes.iter().zip(&mus).map(|(b, m)| side(b) / m).fold(f64::MAX, f64::min);
-        // One scale for all unless own scales make the smallest plan larger.
-        if let Some(cells) = &common
-            && least <= smallest / mu
-        {
-            return Sizing { cells: cells.clone(), mu: vec![mu; plans.len()], common: true };
-        }
-        let cells = pack(&sizes(&mus), body).expect("packed before");
-        return Sizing { cells, mu: mus, common: false };
+    let Some(all) = all else {
+        // Nothing packs (a region too small for its plans' titles): the grid overflowing,
+        // so the layout measurement reports it.
+        let sizes: Vec<_> = boxes.iter().zip(&labels).map(|(&b, &lw)| cell_size(b, mu, false, min_w, lw)).collect();
+        let cells = pack(&sizes, Rect::new(body.x0, body.y0, body.x0 + 1e6, body.y0 + 1e6)).unwrap_or_default();
+        return Sizing { cells, common: mu, mu: vec![mu; plans.len()] };
+    };
+    if sides.iter().all(|&s| s / all.common >= MIN_PLAN) {
+        return all;
     }
-    // Nothing packs (a region too small for its plans): the common grid, overflowing, so the
-    // layout measurement reports it.
-    let sizes: Vec<_> = boxes.iter().zip(&labels).map(|(&b, &lw)| cell_size(b, mu, false, min_w, lw)).collect();
-    let cells = pack(&sizes, Rect::new(body.x0, body.y0, body.x0 + 1e6, body.y0 + 1e6)).unwrap_or_default();
-    Sizing { cells, mu: vec![mu; plans.len()], common: true }
+    // Some would be too small: the common scale with the fewest plans of their own (then
+    // the largest drawing), over every scale from the one that draws the smallest plan at
+    // MAX_PLAN to the one that fits them all.
+    let smallest = sides.iter().copied().fold(f64::MAX, f64::min);
+    let mut best = all;
+    // What a sizing costs: the plans off the common scale or too small to measure on it.
+    let own_count = |s: &Sizing| (0..plans.len()).filter(|&i| s.own(i) || sides[i] / s.mu[i] < MIN_PLAN).count();
+    let mut mu = scale::plan_round_up(smallest / MAX_PLAN);
+    while mu < best.common {
+        if let Some(s) = fit(mu, true)
+            && own_count(&s) < own_count(&best)
+        {
+            best = s;
+        }
+        mu = scale::plan_next_round(mu);
+    }
+    best
+}
+
+/// A plan's scale beside the common one: its own when it would be under [`MIN_PLAN`] (the
+/// coarsest round μ that draws it at least that long) or over [`MAX_PLAN`] (the finest that
+/// draws it at most that long).
+fn own_scale(side: f64, common: f64) -> f64 {
+    if side / common < MIN_PLAN {
+        scale::plan_round_down(side / MIN_PLAN)
+    } else if side / common > MAX_PLAN {
+        scale::plan_round_up(side / MAX_PLAN)
+    } else {
+        common
+    }
 }
 
 fn pen_of(kind: SegKind) -> Pen {
@@ -273,9 +283,7 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
             g.dot(*at, 0.35);
         }
         let pref = if (*at - centre).norm() < tol::PAPER { Vec2::new(-1.0, 1.0) } else { *at - centre };
-        for name in chunks(names) {
-            labels.add_text(*at, pref, &name, 3.5);
-        }
+        labels.add_text_lines(*at, pref, &lines(names), 3.5);
     }
     pole_p
 }
@@ -288,6 +296,16 @@ pub fn label_bounds(cell: Rect) -> Rect {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn names_of_one_point_stack_as_one_chain() {
+        let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        assert_eq!(lines(&names(&["p", "b"])), ["p=b"]);
+        assert_eq!(lines(&names(&["p", "b", "s3", "c", "s4", "s5", "d"])), ["p=b=s3=", "c=s4=s5=", "d"]);
+        assert_eq!(lines(&names(&["b", "d", "s4", "s5"])), ["b=d=", "s4=s5"]);
+        assert_eq!(lines(&names(&["a"])), ["a"]);
+        assert!(lines(&names(&["p", "b", "s3", "c"])).iter().all(|l| !l.starts_with('=')));
+    }
 
     #[test]
     fn packed_cells_fill_the_body_in_order_without_overlap() {
