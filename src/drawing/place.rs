@@ -53,6 +53,11 @@ struct Request {
 }
 
 impl Request {
+    /// A one-line label of rank 0 at one anchor.
+    fn new(anchor: Point, pref: Vec2, label: LabelText, h: f64) -> Request {
+        Request { anchor, pref, others: Vec::new(), label, more: Vec::new(), h, rank: 0, names_line: false }
+    }
+
     /// The label's box: width, height above the first baseline, depth below it (the further
     /// lines included).
     fn size(&self) -> (f64, f64, f64) {
@@ -98,16 +103,7 @@ impl Labels {
 
     /// A label placed after every label of a lower rank.
     pub fn add_ranked(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
-        self.requests.push(Request {
-            anchor,
-            pref,
-            others: Vec::new(),
-            label,
-            more: Vec::new(),
-            h,
-            rank,
-            names_line: false,
-        });
+        self.requests.push(Request { rank, ..Request::new(anchor, pref, label, h) });
     }
 
     /// One label of several plain lines stacked and centred, the first nearest `pref`'s
@@ -115,31 +111,13 @@ impl Labels {
     pub fn add_text_lines(&mut self, anchor: Point, pref: Vec2, lines: &[String], h: f64) {
         let Some((first, more)) = lines.split_first() else { return };
         let more = more.iter().map(|l| LabelText::new(l, "")).collect();
-        self.requests.push(Request {
-            anchor,
-            pref,
-            others: Vec::new(),
-            label: LabelText::new(first, ""),
-            more,
-            h,
-            rank: 0,
-            names_line: false,
-        });
+        self.requests.push(Request { more, ..Request::new(anchor, pref, LabelText::new(first, ""), h) });
     }
 
     /// A line's name (a profile's, a circle's) with `anchor` on the line: set off on a leader
     /// that reaches the line, so that it cannot be taken for a neighbour's name.
     pub fn add_line_name(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
-        self.requests.push(Request {
-            anchor,
-            pref,
-            others: Vec::new(),
-            label,
-            more: Vec::new(),
-            h,
-            rank,
-            names_line: true,
-        });
+        self.add_line_name_at_any(&[(anchor, pref)], label, h, rank);
     }
 
     /// A line's name as [`Labels::add_line_name`], with further points of the line (and
@@ -147,7 +125,7 @@ impl Labels {
     pub fn add_line_name_at_any(&mut self, spots: &[(Point, Vec2)], label: LabelText, h: f64, rank: u8) {
         let Some((&(anchor, pref), others)) = spots.split_first() else { return };
         let others = others.to_vec();
-        self.requests.push(Request { anchor, pref, others, label, more: Vec::new(), h, rank, names_line: true });
+        self.requests.push(Request { others, rank, names_line: true, ..Request::new(anchor, pref, label, h) });
     }
 
     /// A disc (paper mm) every label keeps out of, though nothing drawn bounds it there.

@@ -78,7 +78,7 @@ pub fn wrap(text: &str, h: f64, width: f64) -> Vec<String> {
         // A word wider than a line: broken after its hyphens ("Кривошипно-" over
         // "ползунный"), and a piece still wider between characters.
         cur_w = 0.0;
-        for piece in word.split_inclusive('-') {
+        for piece in pieces(word) {
             let piece_w = m.width(piece, size);
             if !cur.is_empty() && cur_w + piece_w > room {
                 lines.push(std::mem::take(&mut cur));
@@ -105,6 +105,11 @@ pub fn wrap(text: &str, h: f64, width: f64) -> Vec<String> {
     }
     keep_last_word_company(&mut lines, |l| m.width(l, size) <= room);
     lines
+}
+
+/// A word's pieces a line may end after: up to and including each hyphen.
+fn pieces(word: &str) -> std::str::SplitInclusive<'_, char> {
+    word.split_inclusive('-')
 }
 
 /// The words of `text` as wrapping sees them: a one- or two-letter word (a preposition or
@@ -220,9 +225,7 @@ pub fn fit(text: &str, w: f64, ht: f64, h_max: f64) -> Option<Fitted> {
     // between letters ("ползу" over "нный" reads as two words).
     let whole_words = |h: f64| {
         let room = w - SLANT * h;
-        text.split_whitespace()
-            .flat_map(|word| word.split_inclusive('-'))
-            .all(|p| m.width(p, font::size_for_cap(h)) <= room)
+        text.split_whitespace().flat_map(pieces).all(|p| m.width(p, font::size_for_cap(h)) <= room)
     };
     let wrapped = sizes()
         .filter(|&h| whole_words(h))

@@ -149,23 +149,26 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     };
     // With a force analysis both kinds of plans share the right column: split at the
     // height that leaves the smallest plan of either kind largest.
-    if force_region.is_some() {
-        let column = Rect::new(right_x0, TOP, inner.x1 - 4.0, plans_bottom);
-        let split = split_plans(
-            column,
-            [(&velocity, &vplans[..], &vpositions[..]), (&acceleration, &aplans, &apositions)],
-            &words,
-        );
-        velocity.region = split[0];
-        acceleration.region = split[1];
-    }
+    let [vsizing, asizing] = match force_region {
+        Some(_) => {
+            let column = Rect::new(right_x0, TOP, inner.x1 - 4.0, plans_bottom);
+            let [(vr, vs), (ar, as_)] = split_plans(
+                column,
+                [(&velocity, &vplans[..], &vpositions[..]), (&acceleration, &aplans, &apositions)],
+                &words,
+            );
+            (velocity.region, acceleration.region) = (vr, ar);
+            [vs, as_]
+        }
+        None => [velocity.sizing(&vplans, &vpositions, &words), acceleration.sizing(&aplans, &apositions, &words)],
+    };
     let answer = AnswerKeys::of(&format!("sheet{}", inp.kind.number), inp.notes);
     let mut drawn_segments = segments::link_segments(&inp.project.mechanism, &k.positions, mech.mu_l);
     // Velocity plans: every position, one common μ_v.
-    let (vel, vdrawn, mu_v, vel_segments) = plans_group(&velocity, &vplans, vpositions, &words, &answer);
+    let (vel, vdrawn, mu_v, vel_segments) = plans_group(&velocity, &vplans, vsizing, vpositions, &words, &answer);
     drawn_segments.extend(vel_segments);
     // Acceleration plans: the chosen positions, one common μ_a.
-    let (acc, adrawn, mu_a, acc_segments) = plans_group(&acceleration, &aplans, apositions, &words, &answer);
+    let (acc, adrawn, mu_a, acc_segments) = plans_group(&acceleration, &aplans, asizing, apositions, &words, &answer);
     drawn_segments.extend(acc_segments);
 
     let tables = tables_group(&notes, &words);
@@ -405,43 +408,43 @@ const VELOCITY_SHARES: [f64; 7] = [0.46, 0.5, 0.54, 0.58, 0.62, 0.66, 0.7];
 
 /// Splits `column` between two kinds of plans, the first above: at the share whose smallest
 /// plan is largest (a plan off the common scale counts as no larger than the minimum), then
-/// whose largest velocity plan is largest.
-fn split_plans(column: Rect, kinds: [(&PlansRegion, &[Plan], &[&Position]); 2], words: &LeverWords) -> [Rect; 2] {
-    let regions = |share: f64| {
+/// whose largest velocity plan is largest. Returns each kind's region and sizing.
+fn split_plans(
+    column: Rect,
+    kinds: [(&PlansRegion, &[Plan], &[&Position]); 2],
+    words: &LeverWords,
+) -> [(Rect, Sizing); 2] {
+    let split = |share: f64| {
         let y = column.y0 + column.height() * share;
-        [Rect::new(column.x0, column.y0, column.x1, y), Rect::new(column.x0, y + 4.0, column.x1, column.y1)]
+        let regions =
+            [Rect::new(column.x0, column.y0, column.x1, y), Rect::new(column.x0, y + 4.0, column.x1, column.y1)];
+        let mut kind = kinds.iter().zip(regions).map(|((r, plans, positions), region)| {
+            (region, PlansRegion { region, ..**r }.sizing(plans, positions, words))
+        });
+        [kind.next().expect("two kinds"), kind.next().expect("two kinds")]
     };
-    let score = |share: f64| {
-        let sizes: Vec<(f64, f64)> = regions(share)
-            .iter()
-            .zip(&kinds)
-            .map(|(&region, (r, plans, positions))| {
-                let r = PlansRegion { region, ..**r };
-                let s = r.sizing(plans, positions, words);
-                let sides: Vec<f64> = s.drawn(plans).iter().map(|d| d[0].max(d[1])).collect();
-                let least = sides
-                    .iter()
-                    .enumerate()
-                    .map(|(i, &d)| if s.own(i) { d.min(MIN_PLAN) } else { d })
-                    .fold(f64::MAX, f64::min);
-                (least, sides.iter().copied().fold(0.0, f64::max))
-            })
-            .collect();
-        (sizes[0].0.min(sizes[1].0).min(2.0 * MIN_PLAN), sizes[0].1)
+    let score = |s: &[(Rect, Sizing); 2]| {
+        let [(least_v, largest_v), (least_a, _)] =
+            [0, 1].map(|k| (s[k].1.least_measured(kinds[k].1), s[k].1.largest(kinds[k].1)));
+        (least_v.min(least_a).min(2.0 * MIN_PLAN), largest_v)
     };
-    let best = VELOCITY_SHARES
+    VELOCITY_SHARES
         .iter()
-        .map(|&share| (share, score(share)))
-        .max_by(|a, b| a.1.0.total_cmp(&b.1.0).then(a.1.1.total_cmp(&b.1.1)))
-        .map_or(0.58, |(share, _)| share);
-    regions(best)
+        .map(|&share| {
+            let s = split(share);
+            (score(&s), s)
+        })
+        .max_by(|a, b| a.0.0.total_cmp(&b.0.0).then(a.0.1.total_cmp(&b.0.1)))
+        .map(|(_, s)| s)
+        .expect("shares to try")
 }
 
-/// Draws plans in cells filling the region below its header (see [`size_plans`]); returns
+/// Draws plans in the cells of their `sizing` (see [`size_plans`]) below the region's header; returns
 /// the group, what each plan became and the scale they share, if one.
 fn plans_group(
     r: &PlansRegion,
     plans: &[Plan],
+    sizing: Sizing,
     positions: Vec<&Position>,
     words: &LeverWords,
     answer: &AnswerKeys,
@@ -449,7 +452,6 @@ fn plans_group(
     let l = words.sheet;
     let mut g = Group::new(r.id, r.region);
     let scale_line = |mu: f64| r.scale_line(mu, words);
-    let sizing = r.sizing(plans, &positions, words);
     region_header(&mut g, r.region, r.title, &[scale_line(sizing.common)]);
     let mut segments = Vec::new();
     for (i, ((plan, &cell), pos)) in plans.iter().zip(&sizing.cells).zip(&positions).enumerate() {

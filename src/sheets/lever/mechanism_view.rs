@@ -28,6 +28,18 @@ const JOINT_R: f64 = 1.0;
 pub const TRAJECTORY: Pen = AXIS;
 /// A slider's stroke shorter than this on paper is not dimensioned: its arrows would hide it, mm.
 const STROKE_MIN_MM: f64 = 3.0;
+/// A slider's stroke to dimension: the rod's joint, the slider's point, the guide (a point and
+/// its direction), the extreme positions on paper and H, m.
+struct Stroke {
+    joint: PointId,
+    slider: PointId,
+    through: Vec2,
+    dir: Vec2,
+    ea: Point,
+    eb: Point,
+    length: f64,
+}
+
 /// Two strokes whose ends are this close on paper are one (mm).
 const STROKE_SAME_MM: f64 = 0.5;
 /// The length of a slider's stroke each of its position numbers needs (2.5 mm lettering), mm.
@@ -159,23 +171,20 @@ impl MechanismView<'_> {
     /// With two sliders each H is named by its slider's point (H_B, H_E); two strokes between
     /// the same extreme points (two pistons on one line, cranks 180° apart) are one dimension.
     fn strokes(&self, g: &mut Group, labels: &mut Labels) {
-        // (the rod's joint, the slider's point, the guide's point and direction, the ends, H)
-        let mut strokes: Vec<(PointId, PointId, Vec2, Vec2, Point, Point, f64)> = Vec::new();
+        let mut strokes: Vec<Stroke> = Vec::new();
         for st in &self.m.steps {
-            let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
-            let (lo, hi) = self.travel(d, through, dir);
+            let Step::Rrp { p: joint, d: slider, through, dir, .. } = *st else { continue };
+            let (lo, hi) = self.travel(slider, through, dir);
             let (ea, eb) = (self.view.p(through + dir * lo), self.view.p(through + dir * hi));
-            if (eb - ea).norm() < STROKE_MIN_MM {
-                continue;
+            let near = |a: Point, b: Point| (a - b).norm() < STROKE_SAME_MM;
+            let repeated =
+                strokes.iter().any(|s| (near(s.ea, ea) && near(s.eb, eb)) || (near(s.ea, eb) && near(s.eb, ea)));
+            if (eb - ea).norm() >= STROKE_MIN_MM && !repeated {
+                strokes.push(Stroke { joint, slider, through, dir, ea, eb, length: hi - lo });
             }
-            let same = |(a, b): (Point, Point)| (a - ea).norm() < STROKE_SAME_MM && (b - eb).norm() < STROKE_SAME_MM;
-            if strokes.iter().any(|s| same((s.4, s.5)) || same((s.5, s.4))) {
-                continue;
-            }
-            strokes.push((joint, d, through, dir, ea, eb, hi - lo));
         }
         let named = strokes.len() > 1;
-        for (joint, d, through, dir, ea, eb, length) in strokes {
+        for Stroke { joint, slider, through, dir, ea, eb, length } in strokes {
             let n_world = dir.turn_90();
             let hatch_side = self.view.dir(n_world * self.hatch_side(joint, through, n_world));
             let all = Obstacles::of_items(&g.items);
@@ -194,7 +203,7 @@ impl MechanismView<'_> {
             let mid = dimension(g, ea, eb, off);
             let (lang, c) = (self.words.lang, self.words.common);
             let value = format!(" = {} {}", fmt::value(1e3 * length, lang), c.unit_mm());
-            let sub = if named { self.m.name(d) } else { "" };
+            let sub = if named { self.m.name(slider) } else { "" };
             labels.add(mid, off, LabelText::new("H", sub).with_tail(value), 3.5);
         }
     }

@@ -71,6 +71,25 @@ impl Sizing {
         plans.iter().map(plan_bbox).zip(&self.mu).map(|(b, mu)| [b.width() / mu, b.height() / mu]).collect()
     }
 
+    /// Each plan's longer side drawn, mm.
+    fn sides(&self, plans: &[Plan]) -> impl Iterator<Item = f64> {
+        self.drawn(plans).into_iter().map(|[w, h]| w.max(h))
+    }
+
+    /// The largest plan's longer side, mm.
+    pub fn largest(&self, plans: &[Plan]) -> f64 {
+        self.sides(plans).fold(0.0, f64::max)
+    }
+
+    /// The smallest plan's longer side, mm, a plan off the common scale counting as no
+    /// larger than [`MIN_PLAN`] (it is measured at another scale than its neighbours).
+    pub fn least_measured(&self, plans: &[Plan]) -> f64 {
+        self.sides(plans)
+            .enumerate()
+            .map(|(i, d)| if self.own(i) { d.min(MIN_PLAN) } else { d })
+            .fold(f64::MAX, f64::min)
+    }
+
     /// Whether plan `i` has a scale of its own.
     pub fn own(&self, i: usize) -> bool {
         (self.mu[i] / self.common - 1.0).abs() > tol::SAME_SCALE
@@ -92,18 +111,14 @@ fn cell_size(bb: Rect, mu: f64, own_scale: bool, min_w: f64, label_w: f64) -> (f
 fn longest_label(plan: &Plan, pole: &str) -> f64 {
     let size = plan_bbox(plan).size();
     let same = tol::SAME_POINT * size.width.max(size.height).max(f64::MIN_POSITIVE);
-    let mut groups: Vec<(Vec2, String)> = vec![(Vec2::ZERO, pole.to_string())];
+    let mut groups: Vec<(Vec2, Vec<String>)> = vec![(Vec2::ZERO, vec![pole.to_string()])];
     for img in &plan.images {
         match groups.iter_mut().find(|(at, _)| (*at - img.at).norm() <= same) {
-            Some((_, names)) => *names = format!("{names}={}", img.label),
-            None => groups.push((img.at, img.label.clone())),
+            Some((_, names)) => names.push(img.label.clone()),
+            None => groups.push((img.at, vec![img.label.clone()])),
         }
     }
-    groups
-        .iter()
-        .flat_map(|(_, n)| lines(&n.split('=').map(String::from).collect::<Vec<_>>()))
-        .map(|n| LabelText::new(n, "").width(3.5))
-        .fold(0.0, f64::max)
+    groups.iter().flat_map(|(_, names)| lines(names)).map(|n| LabelText::new(n, "").width(3.5)).fold(0.0, f64::max)
 }
 
 /// Names sharing one point as the lines of one stacked label, at most [`SHARED_PER_LABEL`]
