@@ -7,7 +7,7 @@
 
 use crate::num::math;
 use crate::num::tol;
-use kurbo::{Arc, BezPath, CubicBez, Point, Rect, Shape};
+use kurbo::{Arc, BezPath, CubicBez, ParamCurveExtrema, Point, Rect};
 
 /// One piece of a path, starting where the previous one ends.
 #[derive(Debug, Clone, PartialEq)]
@@ -83,8 +83,11 @@ impl Path {
         b
     }
 
+    /// The box of the path's pieces and its start: a piece of no length (an arc of zero
+    /// sweep: a circle's part inside a region when none is) adds no segment, and a path of
+    /// only its start must be boxed there, not at the origin.
     pub fn bbox(&self) -> Rect {
-        self.to_bez().bounding_box()
+        self.to_bez().segments().fold(Rect::from_points(self.start, self.start), |r, s| r.union(s.bounding_box()))
     }
 }
 
@@ -99,6 +102,16 @@ mod tests {
         assert!((p.end() - Point::new(10.0, 15.0)).norm() < 1e-12);
         let bb = p.bbox();
         assert!((bb.x1 - 15.0).abs() < 1e-3 && (bb.y1 - 15.0).abs() < 1e-3 && (bb.x0 - 10.0).abs() < 1e-3, "{bb:?}");
+    }
+
+    /// An arc of zero sweep (the part of a wheel's circle inside a region that holds none of
+    /// it) is boxed at its point on the circle, not at the page's corner (found by the stress
+    /// sweep: z = [318, 155] reported a mesh item at (0, 0)).
+    #[test]
+    fn an_arc_of_no_sweep_is_boxed_at_its_point() {
+        let p = Path::arc(Point::new(232.0, 4523.0), 3967.0, -std::f64::consts::FRAC_PI_2, 0.0);
+        let bb = p.bbox();
+        assert!((bb.center() - Point::new(232.0, 556.0)).norm() < 1e-9 && bb.area() == 0.0, "{bb:?}");
     }
 
     #[test]
