@@ -605,3 +605,23 @@ fn the_title_blocks_role_captions_fit_their_column() {
         }
     }
 }
+
+/// A slider's stroke is dimensioned once per line it runs on: the two-cylinder compressor's
+/// pistons share one line and one stroke (one H); the V-compressor's two sliders run on two
+/// lines, each H named by its slider's point. The strokes' values are the crank's throw
+/// doubled, 2·l_OA, computed here for these axial slider-cranks.
+#[test]
+fn each_stroke_is_dimensioned_once_and_named_by_its_slider_when_there_are_two() {
+    for (name, expected) in [("two-cylinder-compressor", vec![""]), ("v-compressor", vec!["B", "C"])] {
+        let p = fixture(name);
+        let b = pipeline::build(&p, &[]).unwrap().remove(0).output;
+        let throw = 2.0 * p.lever.as_ref().unwrap().mechanism.crank().length * 1e3;
+        let strokes: Vec<_> = b.scene.texts().filter(|t| t.text == "H" && t.tail.starts_with(" = ")).collect();
+        let subs: Vec<&str> = strokes.iter().map(|t| t.sub.as_str()).collect();
+        assert_eq!(subs, expected, "{name}");
+        for t in strokes {
+            let value: f64 = t.tail[3..].split(' ').next().unwrap().replace(',', ".").parse().unwrap();
+            assert!((value - throw).abs() < 0.05, "{name}: H{} = {value} mm, 2·l_OA = {throw} mm", t.sub);
+        }
+    }
+}

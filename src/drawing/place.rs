@@ -412,6 +412,61 @@ mod tests {
         }
     }
 
+    /// A stacked label is placed by the box of all its lines: between two lines 8 mm apart
+    /// where one line of 3.5 mm letters would fit but two do not, it goes elsewhere, and
+    /// nothing crosses any of its lines; the lines stand in order, one centre.
+    #[test]
+    fn a_stacked_label_keeps_every_line_clear() {
+        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+        let mut g = Group::new("g", region);
+        for y in [46.0, 54.0] {
+            g.line(Point::new(0.0, y), Point::new(100.0, y), THIN);
+        }
+        let mut labels = Labels::new();
+        let lines = ["p=b=s3=".to_string(), "c=s4=s5".to_string()];
+        labels.add_text_lines(Point::new(50.0, 50.0), Vec2::new(1.0, 0.0), &lines, 3.5);
+        labels.place(&mut g, region);
+        let texts: Vec<&Text> = g.texts().collect();
+        assert_eq!(texts.iter().map(|t| t.text.as_str()).collect::<Vec<_>>(), lines);
+        let (a, b) = (texts[0].bbox(), texts[1].bbox());
+        assert!(b.y0 >= a.y1 - 1.0 && (a.center().x - b.center().x).abs() < 1e-9, "{a:?} {b:?}");
+        let scene = Scene {
+            ink: Default::default(),
+            name: "s".into(),
+            width: 100.0,
+            height: 100.0,
+            title: String::new(),
+            groups: vec![g],
+        };
+        let l = layout::measure(&scene);
+        assert!(l.is_clean(), "{l:?}");
+    }
+
+    /// A leader stops short of its label's letters: a line touching the letters reads as
+    /// part of them ("α = 45°" with a stroke into the 4).
+    #[test]
+    fn a_leader_stops_short_of_its_label() {
+        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+        let mut g = Group::new("g", region);
+        let c = Point::new(50.0, 50.0);
+        // A disc kept clear round the anchor puts the label beyond the leader's distance.
+        let mut labels = Labels::new();
+        labels.keep_out(c, 8.0);
+        labels.add_text(c, Vec2::new(0.0, 1.0), "45,00°", 3.5);
+        assert_eq!(labels.place(&mut g, region), vec![true]);
+        let text = g.texts().next().unwrap().bbox();
+        let end = g
+            .items
+            .iter()
+            .find_map(|i| match i {
+                Item::Path { path, .. } => Some(path.end()),
+                _ => None,
+            })
+            .expect("a leader");
+        let gap = (Point::new(end.x.clamp(text.x0, text.x1), end.y.clamp(text.y0, text.y1)) - end).norm();
+        assert!(gap >= 0.4, "the leader ends {gap} mm from {text:?}");
+    }
+
     #[test]
     fn labels_keep_off_lines_crossing_at_their_anchor_and_off_each_other() {
         let region = Rect::new(0.0, 0.0, 100.0, 100.0);
