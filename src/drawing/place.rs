@@ -18,7 +18,8 @@ use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
 /// Distances tried between an anchor and its label's box, mm.
-const DISTANCES: [f64; 16] = [0.5, 1.0, 1.7, 2.6, 3.7, 5.0, 6.6, 8.5, 11.0, 14.0, 18.0, 23.0, 30.0, 38.0, 48.0, 60.0];
+const DISTANCES: [f64; 19] =
+    [0.5, 1.0, 1.7, 2.6, 3.7, 5.0, 6.6, 8.5, 11.0, 14.0, 18.0, 23.0, 30.0, 38.0, 48.0, 60.0, 80.0, 105.0, 135.0];
 /// From this distance on, a leader line joins the label to its anchor, mm.
 const LEADER_FROM: f64 = 4.0;
 /// The leader starts this far from the anchor, clear of the joint or dot drawn there, mm.

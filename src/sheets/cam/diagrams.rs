@@ -17,6 +17,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::dimension;
 use crate::drawing::text::LabelText;
+use crate::num::digits::{significant, written};
 use crate::num::tol;
 use crate::num::units;
 use kurbo::{Point, Rect, Vec2};
@@ -37,6 +38,9 @@ pub struct Scales {
 
 /// The lift's most height on paper, mm.
 const LIFT_MAX_MM: f64 = 100.0;
+/// The lift's least height on paper when the shared scale of s and ds/dφ would leave it
+/// lower, mm.
+const LIFT_MIN_MM: f64 = 30.0;
 /// The acceleration analog's height each side of its axis, mm: the course's "about 70 mm"
 /// over both signs, and the range accepted around it.
 const ACCELERATION_MM: (f64, f64, f64) = (20.0, 35.0, 50.0);
@@ -44,6 +48,7 @@ const ACCELERATION_MM: (f64, f64, f64) = (20.0, 35.0, 50.0);
 const H2_MM: (f64, f64) = (15.0, 40.0);
 /// The working angle's widest drawing, mm.
 const WIDTH_MAX_MM: f64 = 240.0;
+
 /// μ_φ's series, degrees per mm (times 10ⁿ): finer than the plans' round series, so that the
 /// working angle fills the column (the guide takes 0.73 °/mm).
 const PHI_MANTISSAS: [f64; 10] = [1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
@@ -68,37 +73,77 @@ pub struct Plan {
 ///   in [`H2_MM`] within the height: the analog's height is H2·d²s/dφ²·μ_φ/μ_s, so a
 ///   large μ_s's small drawing is what keeps H2 from merging its rays;
 /// - μ_d²s/dφ² = μ_ds/dφ/(H2·μ_φ), the course's rule, from the chosen H2.
+///
+/// Where one phase is so much shorter than the other that the shared scale would leave the
+/// lift under [`LIFT_MIN_MM`] (a 3° return after a 280° rise: its ds/dφ is ~90 times the
+/// rise's), μ_ds/dφ is its own round scale and H1 = μ_s/(μ_ds/dφ·μ_φ), the course's rule
+/// read the other way, at least the least H2 (shorter, the rays merge): the lift keeps a
+/// measurable height. A phase too short for any such H1 (its chords a fraction of a mm at
+/// the width the long phase needs) is drawn at the shared scale, the lift as low as it must.
 pub fn plan(d: &Design, max_w: f64, max_h: f64) -> Plan {
     let p = &d.spec.program;
     let work = (p.rise + p.far_dwell + p.ret).to_degrees();
     let width = |mu_deg: f64| POLE_NAME + (180.0 / PI / mu_deg).max(H2_MM.1) + work / mu_deg + RIGHT;
-    let series = (-2..=3).flat_map(|e| PHI_MANTISSAS.map(|m| m * 10f64.powi(e)));
+    // m·10ᵉ as the nearest double to the decimal (0.6, not 6 × 0.1 = 0.6000000000000001).
+    let series =
+        (-2..=3).flat_map(|e| PHI_MANTISSAS.map(|m| if e < 0 { m / 10f64.powi(-e) } else { m * 10f64.powi(e) }));
     let mu_phi_deg = series
         .clone()
         .find(|&m| work / m <= WIDTH_MAX_MM && width(m) <= max_w)
         .unwrap_or_else(|| series.clone().find(|&m| work / m <= WIDTH_MAX_MM).unwrap_or(1.0));
     let mu_phi_rad = mu_phi_deg.to_radians();
     let (vmax, amax) = peaks(d);
-    let fit = |mu_s: f64| {
+    let fit = |mu_s: f64, mu_ds: f64| {
         // A = k·H2: the analog's height per mm of pole distance.
-        let k = amax * mu_phi_rad / mu_s;
+        let k = amax * mu_phi_rad / mu_ds;
         let h2 = (ACCELERATION_MM.1 / k).round().clamp(H2_MM.0, H2_MM.1);
         let a = k * h2;
-        let height = p.lift / mu_s + 2.0 * vmax / mu_s + 2.0 * a + 4.0 * GAP + PHASES + 8.0;
+        let height = p.lift / mu_s + 2.0 * vmax / mu_ds + 2.0 * a + 4.0 * GAP + PHASES + 8.0;
         (h2, a, height)
     };
-    let mut mu_s = scale::round_up(p.lift / LIFT_MAX_MM);
-    for _ in 0..40 {
-        let (_, a, height) = fit(mu_s);
-        if (ACCELERATION_MM.0..=ACCELERATION_MM.2).contains(&a) && height <= max_h {
-            break;
-        }
-        mu_s = scale::next_round(mu_s);
-    }
-    let (h2, _, height) = fit(mu_s);
-    let h1 = 1.0 / mu_phi_rad;
-    let scales = Scales { mu_phi_deg, mu_phi_rad, mu_s, mu_ds: mu_s, mu_dds: mu_s / (h2 * mu_phi_rad), h1, h2 };
+    let fits = |mu_s: f64, mu_ds: f64| {
+        let (_, a, height) = fit(mu_s, mu_ds);
+        (ACCELERATION_MM.0..=ACCELERATION_MM.2).contains(&a) && height <= max_h
+    };
+    let first = scale::round_up(p.lift / LIFT_MAX_MM);
+    let steps = |from: f64| std::iter::successors(Some(from), |&m| Some(scale::next_round(m))).take(40);
+    // The course's shared scale; else the lift at `first` with ds/dφ at a scale of its own;
+    // else (nothing fits the height) the shared scale at which the acceleration fits.
+    let shared = steps(first).find(|&m| p.lift / m >= LIFT_MIN_MM && fits(m, m)).map(|m| (m, m));
+    let h1_at_least = |m: f64| first / (m * mu_phi_rad) >= H2_MM.0;
+    let own = || steps(first).skip(1).take_while(|&m| h1_at_least(m)).find(|&m| fits(first, m)).map(|m| (first, m));
+    let fallback = || {
+        let m = steps(first).find(|&m| fits(m, m)).unwrap_or_else(|| steps(first).last().unwrap_or(first));
+        (m, m)
+    };
+    let (mu_s, mu_ds) = shared.or_else(own).unwrap_or_else(fallback);
+    let (h2, _, height) = fit(mu_s, mu_ds);
+    // Shared, H1 = 1/μ_φ exactly (the ratio's rounding would move its last digit).
+    let h1 = if mu_s == mu_ds { 1.0 / mu_phi_rad } else { mu_s / (mu_ds * mu_phi_rad) };
+    let scales = Scales { mu_phi_deg, mu_phi_rad, mu_s, mu_ds, mu_dds: mu_ds / (h2 * mu_phi_rad), h1, h2 };
     Plan { scales, width: width(mu_phi_deg), height }
+}
+
+/// A warning when the lift is drawn lower than [`LIFT_MIN_MM`]: a phase so short beside the
+/// other that its analogs, at the μ_φ the long phase needs, leave the lift no height.
+pub fn squeezed(d: &Design, sc: &Scales) -> Option<String> {
+    let p = &d.spec.program;
+    let lift_mm = p.lift / sc.mu_s;
+    let (short, long) =
+        if p.ret < p.rise { (("return", p.ret), ("rise", p.rise)) } else { (("rise", p.rise), ("return", p.ret)) };
+    (lift_mm < LIFT_MIN_MM).then(|| {
+        format!(
+            "diagrams: the lift is drawn {} mm high (the course's scales want {}–{} mm): the {} of {}° is {:.0} times shorter than the {} of {}°, and its ds/dφ and d²s/dφ² at the scale the working angle needs take the column's height; phases nearer each other draw readable diagrams",
+            significant(lift_mm),
+            written(LIFT_MIN_MM),
+            written(LIFT_MAX_MM),
+            short.0,
+            written(short.1.to_degrees()),
+            long.1 / short.1,
+            long.0,
+            written(long.1.to_degrees()),
+        )
+    })
 }
 
 /// The largest |ds/dφ| and |d²s/dφ²| over both phases (from the laws' peak coefficients).
@@ -256,8 +301,8 @@ impl Stack<'_> {
         v_plot.draw_axes(g);
         v_plot.line(g, &self.exact(&|phi| p.at(phi).ds), THIN);
         v_plot.line(g, &integrated_curve(self.integrated, |i| &i.ds), MAIN);
-        let at = Point::new(self.left, v_plot.origin.y - vmax / sc.mu_ds);
-        scale_text(g, at, &[mu(name, sc.mu_ds, self.unit(), lang)]);
+        let lines = [mu(name, sc.mu_ds, self.unit(), lang)];
+        scale_text(g, above_pole(self.left, v_plot.origin.y - vmax / sc.mu_ds, v_plot.origin.y, &lines), &lines);
         let means: Vec<f64> =
             self.integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
         pole(g, &v_plot, Pole { h: sc.h1, index: "1" }, &means, sc.mu_ds, self.words);
@@ -295,11 +340,9 @@ impl Stack<'_> {
         }
         // The radians as the degrees' gloss in brackets, as μ_β's degrees above.
         let phi_rad = LabelText::new(format!("({} {})", fmt::value(sc.mu_phi_rad, lang), l.unit_rad_per_mm()), "");
-        scale_text(
-            g,
-            Point::new(self.left, a_plot.origin.y - amax / sc.mu_dds),
-            &[mu(name, sc.mu_dds, self.unit(), lang), mu("φ", sc.mu_phi_deg, l.unit_deg_per_mm(), lang), phi_rad],
-        );
+        let lines =
+            [mu(name, sc.mu_dds, self.unit(), lang), mu("φ", sc.mu_phi_deg, l.unit_deg_per_mm(), lang), phi_rad];
+        scale_text(g, above_pole(self.left, a_plot.origin.y - amax / sc.mu_dds, a_plot.origin.y, &lines), &lines);
         let mids: Vec<f64> = self.integrated.iter().flat_map(|i| i.mid_dds.iter().copied()).collect();
         pole(g, &a_plot, Pole { h: sc.h2, index: "2" }, &mids, sc.mu_dds, self.words);
         a_plot.origin.y + amax / sc.mu_dds + GAP
@@ -312,11 +355,22 @@ fn division_ticks(integrated: &[Integrated; 2]) -> Vec<(f64, String)> {
     integrated.iter().flat_map(|i| i.phi.iter().map(|&phi| (phi.to_degrees(), String::new()))).collect()
 }
 
-/// The positions' numbers under the displacement's axis (0 at the start of the rise).
+/// Divisions closer than this on paper are not numbered one by one, mm: a 2.5 mm number
+/// is ~1.6 mm wide, and a row of them touching reads as one number.
+const NUMBERED_STEP_MM: f64 = 3.0;
+
+/// The positions' numbers under the displacement's axis (0 at the start of the rise); a
+/// phase whose divisions are closer than [`NUMBERED_STEP_MM`] (a 4° return beside a 300°
+/// rise) has only its first and last position numbered — its dimension below names it.
 fn number_divisions(plot: &Plot, integrated: &[Integrated; 2], labels: &mut Labels) {
     let phis: Vec<f64> = integrated.iter().flat_map(|i| i.phi.iter().copied()).collect();
-    for (&phi, name) in phis.iter().zip(super::nomogram::position_labels(&phis)) {
-        if let Some(name) = name {
+    let numbered = integrated.iter().flat_map(|i| {
+        let n = i.phi.len();
+        let step = (i.phi[n.min(2) - 1] - i.phi[0]).to_degrees() / plot.x.mu;
+        (0..n).map(move |k| step >= NUMBERED_STEP_MM || k == 0 || k + 1 == n)
+    });
+    for ((&phi, name), numbered) in phis.iter().zip(super::nomogram::position_labels(&phis)).zip(numbered) {
+        if let (Some(name), true) = (name, numbered) {
             labels.add_text(
                 plot.at(phi.to_degrees(), 0.0) + kurbo::Vec2::new(0.0, 1.5),
                 kurbo::Vec2::new(0.0, 1.0),
@@ -391,6 +445,15 @@ fn scale_text(g: &mut Group, at: Point, lines: &[LabelText]) {
     for (k, t) in lines.iter().enumerate() {
         t.draw(g, Point::new(at.x, at.y + 3.0 + 4.5 * k as f64), 2.5, Anchor::Start);
     }
+}
+
+/// Where a graph's scale `lines` start: at its top `top`, or higher where a low graph would
+/// bring their last line down to the pole's name on the axis at `axis` (the letters' boxes
+/// 2 mm apart: a line's depth under its baseline 0.6 mm, the name's height over its own
+/// baseline, 1 mm under the axis, 1.8 mm).
+fn above_pole(x: f64, top: f64, axis: f64, lines: &[LabelText]) -> Point {
+    let last = 3.0 + 4.5 * (lines.len().max(1) - 1) as f64;
+    Point::new(x, top.min(axis + 1.0 - 1.8 - 2.0 - 0.6 - last))
 }
 
 /// A pole: its distance H from the origin, mm, and its index.

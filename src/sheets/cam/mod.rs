@@ -93,18 +93,25 @@ const NOTES_MAX_H: f64 = 80.0;
 fn plan_column(p: &CamProject, errors: (f64, f64), deviation: f64, words: &CamWords) -> Result<Column, TooLong> {
     let title = laws_title(p, words);
     let notes = notes::sheet_notes(p, errors, deviation, words);
-    let title_lines = wrap(&title, 3.5, LEFT_MAX - 4.0);
-    // As `diagrams_group` sets them: each note's lines at their pitch, 1 mm after each.
-    let notes_h =
-        |w: f64| notes.iter().map(|n| wrap(n, CELL_TEXT, w).len() as f64 * LINE_PITCH * CELL_TEXT + 1.0).sum::<f64>();
-    let head = 5.0 + title_lines.len() as f64 * LINE_PITCH * 3.5 + 2.0;
-    let plan = diagrams::plan(&p.design, LEFT_MAX - 4.0, SHEET.height() - head - notes_h(LEFT_MAX - 4.0) - 8.0);
+    let head = head_h(&title, LEFT_MAX - 4.0);
+    let plan = diagrams::plan(&p.design, LEFT_MAX - 4.0, SHEET.height() - head - notes_h(&notes, LEFT_MAX - 4.0) - 8.0);
     // The notes are set as wide as the diagrams.
-    let drawn_h = notes_h(plan.width);
+    let drawn_h = notes_h(&notes, plan.width);
     let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(words.lang).to_string()).collect();
     let room = Room { field: "cam.assumptions", place: "notes under the diagrams", size: (plan.width, NOTES_MAX_H) };
     room.check(&assumptions, drawn_h)?;
     Ok(Column { title, notes, plan, text_h: head + drawn_h })
+}
+
+/// The notes' height set `w` wide as `diagrams_group` sets them: each note's lines at their
+/// pitch, 1 mm after each.
+fn notes_h(notes: &[String], w: f64) -> f64 {
+    notes.iter().map(|n| wrap(n, CELL_TEXT, w).len() as f64 * LINE_PITCH * CELL_TEXT + 1.0).sum()
+}
+
+/// The height of the column's title set `w` wide, with its margins, mm.
+fn head_h(title: &str, w: f64) -> f64 {
+    5.0 + wrap(title, 3.5, w).len() as f64 * LINE_PITCH * 3.5 + 2.0
 }
 
 /// Builds sheet 3.
@@ -141,19 +148,20 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     };
     let lay = regions::regions(&content);
     let (dg, scales) = diagrams_group(&lay, &column, p, &integrated, &words);
-    let mut nm = view_group("nomogram", lay.nomogram, l.nomogram_title());
+    let (nomogram_room, profile_room) = lay.label_rooms();
+    let mut nm = view_group("nomogram", nomogram_room, l.nomogram_title());
     let mut nl = Labels::new();
     let at =
         Placement { area: view_area(lay.nomogram), extent: content.nomogram.at(lay.nomogram_mu), mu: lay.nomogram_mu };
     nomogram::draw(&mut nm, &at, d, &phis, &mut nl, &words);
     scale_note(&mut nm, lay.nomogram_mu, None, &words);
-    nl.place(&mut nm, lay.nomogram);
-    let mut pv = view_group("profile", lay.profile, l.profile_title());
+    nl.place(&mut nm, nomogram_room);
+    let mut pv = view_group("profile", profile_room, l.profile_title());
     let mut pl = Labels::new();
     let at = Placement { area: view_area(lay.profile), extent: content.profile.at(lay.profile_mu), mu: lay.profile_mu };
     let prof = profile_view::draw(&mut pv, &at, d, &fitted, &phis, &mut pl, &words);
     scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), &words);
-    pl.place(&mut pv, lay.profile);
+    pl.place(&mut pv, profile_room);
     let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), &notes);
     let mut measured = segments::diagrams(d, &scales, &integrated, &phis, &answers);
     measured.extend(segments::nomogram(d, lay.nomogram_mu, &answers));
@@ -166,7 +174,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         groups,
         tables: notes,
         results: serde_json::Value::Null,
-        diagnostics: Vec::new(),
+        diagnostics: diagrams::squeezed(d, &scales).into_iter().collect(),
         smallest_plan_mm: None,
         segments: measured,
     };

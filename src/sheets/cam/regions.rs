@@ -119,6 +119,32 @@ impl Frame {
     }
 }
 
+impl Regions {
+    /// The room each view's labels may take: its region grown right and then down as far
+    /// as the sheet goes without meeting another region or the title block (its title and
+    /// drawing stay where the region put them). A label wider than the space its drawing
+    /// leaves inside a region cut to the drawing — r_min beside a narrow wedge — would
+    /// otherwise be set across the lines. `(nomogram, profile)`.
+    pub fn label_rooms(&self) -> (Rect, Rect) {
+        let tb = frame::title_block_rect();
+        let fixed = [Some(self.diagrams), self.law_tables, Some(self.tables), Some(tb)];
+        let fixed: Vec<Rect> = fixed.into_iter().flatten().collect();
+        let with = |other: Rect| fixed.iter().copied().chain([other]).collect::<Vec<_>>();
+        (grown(self.nomogram, &with(self.profile)), grown(self.profile, &with(self.nomogram)))
+    }
+}
+
+/// `r` grown right, then down, within the sheet, to [`GAP`] short of each of `others`
+/// that it would meet.
+fn grown(r: Rect, others: &[Rect]) -> Rect {
+    let meets_across = |o: &Rect, r: Rect| o.y0 < r.y1 + GAP && o.y1 > r.y0 - GAP;
+    let x1 = others.iter().filter(|o| o.x0 >= r.x1 && meets_across(o, r)).fold(SHEET.x1, |x, o| x.min(o.x0 - GAP));
+    let r = Rect::new(r.x0, r.y0, x1.max(r.x1), r.y1);
+    let meets_along = |o: &Rect| o.x0 < r.x1 + GAP && o.x1 > r.x0 - GAP;
+    let y1 = others.iter().filter(|o| o.y0 >= r.y1 && meets_along(o)).fold(SHEET.y1, |y, o| y.min(o.y0 - GAP));
+    Rect::new(r.x0, r.y0, r.x1, y1.max(r.y1))
+}
+
 fn sizes(ts: &[Table]) -> Vec<(f64, f64)> {
     ts.iter().map(Table::size).collect()
 }
