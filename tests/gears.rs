@@ -198,16 +198,39 @@ fn an_undercut_pinion_builds_with_a_warning_and_a_note_on_the_sheet() {
     assert!(b.output.scene.texts().any(|t| t.text.contains("xₘᵢₙ")), "the sheet says so");
 }
 
-/// Table 3 flows over two drawn tables (the wheels', the pair's): the second is titled as the
-/// continuation, in every language, not left without a title.
+/// The wheels' table flows over two drawn tables (the wheels', the pair's): the second is
+/// headed as GOST 2.105 heads a table's continued part — "Продолжение таблицы N" with the
+/// wheels' table's number N, its title not repeated — in every language.
 #[test]
-fn the_pair_table_is_titled_as_table_3_continued() {
-    for (lang, continued) in [(Language::Uz, "davomi)"), (Language::Ru, "продолжение)"), (Language::En, "continued)")]
-    {
+fn the_pair_table_is_headed_as_the_wheels_tables_continuation() {
+    for lang in [Language::Uz, Language::Ru, Language::En] {
         let mut p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
         p.info.language = lang;
         let b = sheet2(&p);
+        let wheels = b.output.tables.iter().find(|t| t.table.id == "wheels").expect("the wheels' table");
+        let n: String =
+            wheels.title.chars().skip_while(|c| !c.is_ascii_digit()).take_while(char::is_ascii_digit).collect();
+        let expected = match lang {
+            Language::Uz => format!("{n}-jadvalning davomi"),
+            Language::Ru => format!("Продолжение таблицы {n}"),
+            Language::En => format!("Table {n} (continued)"),
+        };
         let g = b.output.scene.groups.iter().find(|g| g.id == "tables").expect("a tables group");
-        assert!(g.texts().any(|t| t.text.ends_with(continued)), "{lang:?}: no title ending {continued:?}");
+        assert!(g.texts().any(|t| t.text == expected), "{lang:?}: no heading {expected:?}");
+        let old_style = [", davomi)", ", продолжение)", ", continued)"];
+        assert!(!g.texts().any(|t| old_style.iter().any(|o| t.text.ends_with(o))), "{lang:?}: the title repeated");
     }
+}
+
+/// The addendum coefficient is printed h, subscript a, then its star at full size (hₐ*,
+/// like c*): a star set inside the subscript reads as part of the index.
+#[test]
+fn the_addendum_coefficients_star_follows_its_subscript() {
+    let p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+    let b = sheet2(&p);
+    let pair = b.output.tables.iter().find(|t| t.table.id == "pair").expect("the pair's table");
+    let rows = tmm_sheets::sheets::scaffold::drawn_rows(pair, p.info.language, true);
+    let h = rows.iter().find(|(l, _)| l.main == "h" && l.sub == "a").map(|(l, _)| l);
+    assert_eq!(h.map(|l| l.tail.as_str()), Some("*"), "{:?}", rows.iter().map(|r| &r.0).collect::<Vec<_>>());
+    assert!(!rows.iter().any(|(l, _)| l.sub.contains('*')), "a star in a subscript");
 }

@@ -248,7 +248,6 @@ label_set! {
         link_col,
         position_col,
         value,
-        continued,
     }
 }
 

@@ -184,12 +184,3 @@ pub fn flow_height(sizes: &[(f64, f64)], width: f64, gap: f64) -> Option<f64> {
     }
     None
 }
-
-/// A table's title marked as the continuation: "(continued)" after it, or inside its closing
-/// bracket ("Harakat qonuni (holatlar boʻyicha, davomi)") rather than a second pair.
-pub fn continued_title(title: &str, continued: &str) -> String {
-    match title.strip_suffix(')') {
-        Some(open) => format!("{open}, {continued})"),
-        None => format!("{title} ({continued})"),
-    }
-}

@@ -156,9 +156,16 @@ pub fn drawn_rows(n: &NoteTable, lang: Language, unit_tails: bool) -> Vec<(Label
         .iter()
         .zip(n.printed.iter().zip(&n.units))
         .map(|(r, ((symbol, sub), unit))| {
-            let mut label = LabelText::new(symbol.clone(), sub.clone());
+            // A coefficient's star follows its subscript at full size (h with a, then *: hₐ*,
+            // as c*), not set small inside it.
+            let (sub, star) = match sub.strip_suffix('*') {
+                Some(bare) => (bare.to_string(), "*"),
+                None => (sub.clone(), ""),
+            };
+            let mut label = LabelText::new(symbol.clone(), sub);
+            label.tail = star.to_string();
             if unit_tails && !unit.is_empty() {
-                label.tail = format!(", {unit}");
+                label.tail.push_str(&format!(", {unit}"));
             }
             (label, r.values.iter().map(|&v| cell(r, v, lang)).collect())
         })

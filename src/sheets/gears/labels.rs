@@ -28,6 +28,7 @@ crate::label_set! {
         scheme_sun_planet_ring,
         scheme_double_planet,
         pair_table(n),
+        pair_table_continued(n),
         planetary_table(n),
         conditions_table(n),
         wheel(w),

@@ -88,7 +88,13 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         y_tables = bottom + 4.0;
     }
     let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
-    groups.push(tables::group(&notes, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, &words));
+    groups.push(tables::group(
+        &notes,
+        Rect::new(right.x0, y_tables, right.x1, right.y1),
+        tolerance,
+        &words,
+        ctx.first_table,
+    ));
 
     let name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
     let composition = Composition {

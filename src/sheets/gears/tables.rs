@@ -39,14 +39,16 @@ pub fn table_count(p: &GearsProject) -> u32 {
 }
 
 /// Draws the tables in `region`, in columns left to right.
-pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &GearWords) -> Group {
-    let drawn = notes.iter().map(|n| sheet_table(n, tolerance, words));
+pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &GearWords, first: u32) -> Group {
+    let drawn = notes.iter().map(|n| sheet_table(n, tolerance, words, first));
     table::flow("tables", drawn, region, 4.0)
 }
 
 /// A table as sheet 2 draws it: units after the symbols, the conditions' verdicts in words,
-/// the ratio's condition with its tolerance, the pair's table as the wheels' continuation.
-fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords) -> Table {
+/// the ratio's condition with its tolerance, the pair's table as the wheels' continuation
+/// (table `first`), headed as GOST 2.105 heads a table's continued part ("Продолжение
+/// таблицы 6") without its title again.
+fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords, first: u32) -> Table {
     let (l, c, lang) = (words.sheet, words.common, words.lang);
     let conditions = n.table.id == "conditions";
     let mut rows = scaffold::drawn_rows(n, lang, !conditions);
@@ -62,7 +64,7 @@ fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords) -> Tabl
     }
     let label_w = rows.iter().map(|(x, _)| x.width(CELL_TEXT) + 4.0).fold(14.0, f64::max);
     // The pair's table continues the wheels': titled as the continuation.
-    let title = if n.table.id == "pair" { table::continued_title(&n.title, c.continued()) } else { n.title.clone() };
+    let title = if n.table.id == "pair" { l.pair_table_continued(&first.to_string()) } else { n.title.clone() };
     Table {
         id: format!("{}{}", crate::drawing::table::PART, n.table.id),
         title,
