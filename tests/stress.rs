@@ -97,15 +97,15 @@ fn verdict(text: &str) -> Result<Outcome, String> {
     let count = |keys: &[&str]| -> u64 {
         built.iter().flat_map(|b| keys.iter().map(|k| b.output.results["layout"][k].as_u64().unwrap_or(0))).sum()
     };
-    let problems: Vec<String> = built
-        .iter()
-        .flat_map(|b| {
-            let n = b.output.number;
-            let listed = b.output.results["layout"]["problems"].as_array().cloned().unwrap_or_default();
-            listed.into_iter().map(move |p| format!("sheet {n}: {}", p.as_str().unwrap_or_default()))
-        })
-        .collect();
     if count(&["outside_region", "texts_crossed", "text_overlaps"]) > 0 {
+        let problems: Vec<String> = built
+            .iter()
+            .flat_map(|b| {
+                let n = b.output.number;
+                let listed = b.output.results["layout"]["problems"].as_array().cloned().unwrap_or_default();
+                listed.into_iter().map(move |p| format!("sheet {n}: {}", p.as_str().unwrap_or_default()))
+            })
+            .collect();
         return Err(format!("the layout measure reports {}", problems.join("; ")));
     }
     Ok(Outcome::Built)

@@ -187,12 +187,13 @@ fn overshoot(outer: Rect, inner: Rect) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::drawing::scene::{Anchor, Group, THIN, Text};
     use kurbo::Point;
 
-    fn scene(items: Vec<Item>) -> Scene {
+    /// A 100 × 100 mm scene of one group "g" (as large) holding `items`.
+    pub(crate) fn scene(items: Vec<Item>) -> Scene {
         let mut g = Group::new("g", Rect::new(0.0, 0.0, 100.0, 100.0));
         g.items = items;
         Scene {

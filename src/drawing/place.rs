@@ -342,10 +342,16 @@ const LEADER_SHORT: f64 = 0.5;
 mod tests {
     use super::*;
     use crate::drawing::layout;
-    use crate::drawing::scene::{Item, Scene, Text};
+    use crate::drawing::scene::{Item, Text};
 
     /// A label asked for inside a ring of discs (rollers round a profile) is placed outside
     /// every disc, though no stroke bounds them.
+    /// The layout measure of a 100 × 100 mm scene of the one group `g` finds nothing.
+    fn assert_clean(g: Group) {
+        let l = layout::measure(&layout::tests::scene(g.items));
+        assert!(l.is_clean(), "{l:?}");
+    }
+
     #[test]
     fn labels_keep_out_of_the_discs_they_are_given() {
         let region = Rect::new(0.0, 0.0, 100.0, 100.0);
@@ -431,16 +437,7 @@ mod tests {
         assert_eq!(texts.iter().map(|t| t.text.as_str()).collect::<Vec<_>>(), lines);
         let (a, b) = (texts[0].bbox(), texts[1].bbox());
         assert!(b.y0 >= a.y1 - 1.0 && (a.center().x - b.center().x).abs() < 1e-9, "{a:?} {b:?}");
-        let scene = Scene {
-            ink: Default::default(),
-            name: "s".into(),
-            width: 100.0,
-            height: 100.0,
-            title: String::new(),
-            groups: vec![g],
-        };
-        let l = layout::measure(&scene);
-        assert!(l.is_clean(), "{l:?}");
+        assert_clean(g);
     }
 
     /// A leader stops short of its label's letters: a line touching the letters reads as
@@ -484,15 +481,6 @@ mod tests {
         }
         let placed = labels.place(&mut g, region);
         assert!(placed.iter().all(|&clear| clear), "{placed:?}");
-        let scene = Scene {
-            ink: Default::default(),
-            name: "s".into(),
-            width: 100.0,
-            height: 100.0,
-            title: String::new(),
-            groups: vec![g],
-        };
-        let l = layout::measure(&scene);
-        assert!(l.is_clean(), "{l:?}");
+        assert_clean(g);
     }
 }
