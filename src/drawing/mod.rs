@@ -8,6 +8,7 @@
 
 pub mod fmt;
 pub mod frame;
+pub mod grid;
 pub mod labels;
 pub mod layout;
 pub mod obstacles;

@@ -1,13 +1,12 @@
-//! What is already drawn, as straight segments and text boxes in an R-tree (`rstar`): the
+//! What is already drawn, as straight segments and text boxes in a grid ([`super::grid`]): the
 //! label placer asks it which candidate boxes are free, the layout measurement which texts a
 //! line crosses. Curves are flattened to segments within [`FLATTEN`] mm; a filled shape
 //! (an arrowhead, a dot) is its outline, which also catches a box that swallows it whole.
 
+use super::grid::Grid;
 use super::scene::Item;
 use crate::num::math::Norm;
 use kurbo::{Point, Rect, Shape};
-use rstar::primitives::{GeomWithData, Rectangle};
-use rstar::{AABB, RTree};
 
 /// Flattening tolerance of curves, mm: far below a line's width.
 pub const FLATTEN: f64 = 0.02;
@@ -24,13 +23,13 @@ pub enum Piece {
     Disc(Point, f64),
 }
 
-type Entry = GeomWithData<Rectangle<[f64; 2]>, usize>;
-
 /// An index of drawn geometry.
 #[derive(Default, Clone)]
 pub struct Obstacles {
     pieces: Vec<(Piece, usize)>,
-    tree: RTree<Entry>,
+    grid: Grid,
+    /// The pieces' bounds together.
+    extent: Option<Rect>,
 }
 
 /// The segments an item draws (none for a text).
@@ -75,14 +74,6 @@ fn pen_width(item: &Item) -> Option<f64> {
     }
 }
 
-fn rect_of(r: Rect) -> Rectangle<[f64; 2]> {
-    Rectangle::from_corners([r.x0, r.y0], [r.x1, r.y1])
-}
-
-fn aabb(r: Rect) -> AABB<[f64; 2]> {
-    AABB::from_corners([r.x0, r.y0], [r.x1, r.y1])
-}
-
 impl Obstacles {
     /// Every item's segments and text boxes, each tagged with its item's index.
     pub fn of_items<'a>(items: impl IntoIterator<Item = &'a Item>) -> Obstacles {
@@ -111,20 +102,50 @@ impl Obstacles {
 
     /// Pieces with their tags, loaded at once.
     pub fn of_pieces(pieces: Vec<(Piece, usize)>) -> Obstacles {
-        let entries = pieces.iter().enumerate().map(|(i, (p, _))| Entry::new(rect_of(bounds(p)), i)).collect();
-        Obstacles { pieces, tree: RTree::bulk_load(entries) }
+        let extent = pieces.iter().map(|(p, _)| bounds(p)).reduce(|a, b| a.union(b));
+        let mut o = Obstacles::empty_over(extent.unwrap_or(Rect::ZERO));
+        for (p, owner) in pieces {
+            o.add(p, owner);
+        }
+        o
+    }
+
+    /// An empty index whose cells cover `extent` (pieces beyond it still count).
+    pub fn empty_over(extent: Rect) -> Obstacles {
+        Obstacles { pieces: Vec::new(), grid: Grid::over(extent), extent: None }
+    }
+
+    /// The drawn pieces' bounds together, if there are any.
+    pub fn extent(&self) -> Option<Rect> {
+        self.extent
     }
 
     /// Adds a piece (a placed label, its leader) tagged `owner`.
     pub fn add(&mut self, piece: Piece, owner: usize) {
-        let i = self.pieces.len();
+        let id = u32::try_from(self.pieces.len()).expect("fewer than 2³² pieces on a sheet");
         self.pieces.push((piece, owner));
-        self.tree.insert(Entry::new(rect_of(bounds(&piece)), i));
+        let b = bounds(&piece);
+        self.extent = Some(self.extent.map_or(b, |e| e.union(b)));
+        match piece {
+            Piece::Segment(a, b) => self.grid.insert_segment(a, b, id),
+            Piece::TextBox(_) | Piece::Disc(..) => self.grid.insert_box(b, id),
+        }
     }
 
-    /// The pieces touching `r`, with their owners.
+    /// The pieces that may touch `r` (a superset: callers test them), with their owners, each
+    /// once, in the order they were added.
     pub fn near(&self, r: Rect) -> impl Iterator<Item = &(Piece, usize)> {
-        self.tree.locate_in_envelope_intersecting(aabb(r)).map(|e| &self.pieces[e.data])
+        self.grid.in_box(r).into_iter().map(|id| &self.pieces[id as usize])
+    }
+
+    /// Whether `test` holds for a piece that may touch the box `r`.
+    fn any_near(&self, r: Rect, mut test: impl FnMut(&Piece) -> bool) -> bool {
+        self.grid.any_in_box(r, |id| test(&self.pieces[id as usize].0))
+    }
+
+    /// Whether `test` holds for a piece that may touch the segment `a`–`b`.
+    fn any_along(&self, a: Point, b: Point, mut test: impl FnMut(&Piece) -> bool) -> bool {
+        self.grid.any_on_segment(a, b, |id| test(&self.pieces[id as usize].0))
     }
 
     /// How many segments cross the box `r`, and the area of text boxes it overlaps.
@@ -142,15 +163,15 @@ impl Obstacles {
 
     /// How many stroke segments the segment `a`–`b` crosses.
     pub fn hits_segment(&self, a: Point, b: Point) -> usize {
-        self.near(Rect::from_points(a, b))
-            .filter(|(p, _)| matches!(*p, Piece::Segment(c, d) if segments_cross(a, b, c, d)))
-            .count()
+        let crosses =
+            |id: &u32| matches!(self.pieces[*id as usize].0, Piece::Segment(c, d) if segments_cross(a, b, c, d));
+        self.grid.on_segment(a, b).iter().filter(|id| crosses(id)).count()
     }
 
     /// Whether nothing (no segment, no text box) meets the box `r`: [`Obstacles::hits`]
     /// stopping at the first piece.
     pub fn is_clear(&self, r: Rect) -> bool {
-        !self.near(r).any(|(p, _)| match *p {
+        !self.any_near(r, |p| match *p {
             Piece::Segment(a, b) => segment_meets_rect(a, b, r),
             Piece::TextBox(t) => t.intersect(r).area() > 0.0,
             Piece::Disc(c, rad) => disc_meets_rect(c, rad, r),
@@ -159,14 +180,12 @@ impl Obstacles {
 
     /// Whether the segment `a`–`b` crosses any stroke segment.
     pub fn segment_crosses_stroke(&self, a: Point, b: Point) -> bool {
-        self.near(Rect::from_points(a, b))
-            .any(|(p, _)| matches!(*p, Piece::Segment(c, d) if segments_cross(a, b, c, d)))
+        self.any_along(a, b, |p| matches!(*p, Piece::Segment(c, d) if segments_cross(a, b, c, d)))
     }
 
     /// Whether the segment `a`–`b` crosses any text box.
     pub fn segment_crosses_text(&self, a: Point, b: Point) -> bool {
-        self.near(Rect::from_points(a, b))
-            .any(|(p, _)| matches!(*p, Piece::TextBox(t) if segment_meets_rect(a, b, t.inflate(-0.05, -0.05))))
+        self.any_along(a, b, |p| matches!(*p, Piece::TextBox(t) if segment_meets_rect(a, b, t.inflate(-0.05, -0.05))))
     }
 }
 

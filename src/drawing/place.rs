@@ -153,15 +153,20 @@ impl Labels {
             drawn.add(Piece::Disc(c, r), usize::MAX);
         }
         let cands: Vec<Vec<Candidate>> = self.requests.iter().map(|r| candidates(r, bounds)).collect();
+        // What the drawing alone says of each candidate, asked once: the order and every
+        // round below ask it again and again, and it does not change as labels are placed.
+        let mut vs_drawn: Vec<Vec<Verdict>> = cands.iter().map(|cs| vec![Verdict::default(); cs.len()]).collect();
         // By rank, then most constrained first: the fewest candidates free against the
         // drawing alone.
         let mut order: Vec<usize> = (0..self.requests.len()).collect();
         // Counting stops at a few: beyond that a label is not constrained.
-        let free: Vec<usize> = cands.iter().zip(&self.requests).map(|(cs, r)| free_near_first(cs, r, &drawn)).collect();
+        let free: Vec<usize> = (0..self.requests.len())
+            .map(|i| free_near_first(&cands[i], &mut vs_drawn[i], &self.requests[i], &drawn))
+            .collect();
         order.sort_by_key(|&i| (self.requests[i].rank, free[i]));
         // A label left without a clean spot goes first in the next round (labels placed
         // before it took its spots), up to a few rounds; the best round is kept.
-        let mut best = self.attempt(&drawn, &cands, &order, bounds);
+        let mut best = self.attempt(&drawn, &mut vs_drawn, &cands, &order, bounds);
         for _ in 0..REPAIR_ROUNDS {
             let failed: Vec<usize> = order.iter().copied().filter(|&i| !best[i].1).collect();
             if failed.is_empty() {
@@ -169,7 +174,7 @@ impl Labels {
             }
             order.retain(|i| !failed.contains(i));
             order.splice(0..0, failed);
-            let next = self.attempt(&drawn, &cands, &order, bounds);
+            let next = self.attempt(&drawn, &mut vs_drawn, &cands, &order, bounds);
             if next.iter().filter(|p| !p.1).count() < best.iter().filter(|p| !p.1).count() {
                 best = next;
             }
@@ -190,34 +195,37 @@ impl Labels {
         placed
     }
 
-    /// One greedy round in `order`: each label's candidate and whether it is clean.
+    /// One greedy round in `order`: each label's candidate and whether it is clean. A
+    /// candidate is free when it is free against the drawing (`vs_drawn`, remembered) and
+    /// against the labels this round has placed.
     fn attempt(
         &self,
         drawn: &Obstacles,
+        vs_drawn: &mut [Vec<Verdict>],
         cands: &[Vec<Candidate>],
         order: &[usize],
         bounds: Rect,
     ) -> Vec<(Candidate, bool)> {
-        let mut obstacles = drawn.clone();
+        let mut placed = Obstacles::empty_over(drawn.extent().map_or(bounds, |e| e.union(bounds)));
         let none = Candidate { r: Rect::ZERO, anchor: Point::ZERO, leader: None, cost: 0.0 };
         let mut out = vec![(none, false); self.requests.len()];
         for &i in order {
+            let (cs, vs) = (&cands[i], &mut vs_drawn[i]);
             // A leader may cross thin lines (out of a fan of links) when no label spot can be
             // reached without: a free box comes first, a clean leader second.
-            let best = cands[i]
-                .iter()
-                .find(|c| c.is_free(&obstacles))
-                .or_else(|| cands[i].iter().find(|c| c.box_is_free(&obstacles)));
+            let best = (0..cs.len())
+                .find(|&k| vs[k].is_free(&cs[k], drawn) && cs[k].is_free(&placed))
+                .or_else(|| (0..cs.len()).find(|&k| vs[k].box_is_free(&cs[k], drawn) && cs[k].box_is_free(&placed)));
             let (cand, clear) = match best {
-                Some(c) => (c.clone(), true),
-                None => (least_bad(&cands[i], &obstacles, &self.requests[i], bounds), false),
+                Some(k) => (cs[k].clone(), true),
+                None => (least_bad(cs, [drawn, &placed], &self.requests[i], bounds), false),
             };
             // Position numbers (rank 2) are set apart from the next label by more than the
             // clearance: two numbers 0.5 mm apart read as one ("0≡17 16").
             let gap = if self.requests[i].rank >= NUMBERS_RANK { LABEL_GAP } else { 0.0 };
-            obstacles.add(Piece::TextBox(cand.r.inflate(gap, 0.0)), usize::MAX);
+            placed.add(Piece::TextBox(cand.r.inflate(gap, 0.0)), usize::MAX);
             if let Some((a, b)) = self.requests[i].drawn_leader(&cand) {
-                obstacles.add(Piece::Segment(a, b), usize::MAX);
+                placed.add(Piece::Segment(a, b), usize::MAX);
             }
             out[i] = (cand, clear);
         }
@@ -225,10 +233,37 @@ impl Labels {
     }
 }
 
+/// A candidate's two tests against the fixed drawing, each asked at most once.
+#[derive(Debug, Clone, Copy, Default)]
+struct Verdict {
+    box_free: Option<bool>,
+    leader_clear: Option<bool>,
+}
+
+impl Verdict {
+    /// [`Candidate::box_is_free`] against `drawn`, remembered.
+    fn box_is_free(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
+        *self.box_free.get_or_insert_with(|| c.box_is_free(drawn))
+    }
+
+    /// [`Candidate::is_free`] against `drawn`, remembered.
+    fn is_free(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
+        self.box_is_free(c, drawn)
+            && *self
+                .leader_clear
+                .get_or_insert_with(|| c.leader.is_none_or(|(a, b)| !drawn.segment_crosses_stroke(a, b)))
+    }
+}
+
 /// How many of a label's spots around its first anchor are free against the drawing alone
 /// (further anchors are a fallback, not a reason to place it later).
-fn free_near_first(cands: &[Candidate], req: &Request, drawn: &Obstacles) -> usize {
-    cands.iter().filter(|c| c.anchor == req.anchor && c.is_free(drawn)).take(CONSTRAINED).count()
+fn free_near_first(cands: &[Candidate], vs: &mut [Verdict], req: &Request, drawn: &Obstacles) -> usize {
+    cands
+        .iter()
+        .zip(vs)
+        .filter_map(|(c, v)| (c.anchor == req.anchor && v.is_free(c, drawn)).then_some(()))
+        .take(CONSTRAINED)
+        .count()
 }
 
 /// A label with at least this many free spots is not constrained (for the order).
@@ -262,7 +297,7 @@ impl Candidate {
 }
 
 /// The candidate with the fewest crossings when none is free.
-fn least_bad(cands: &[Candidate], o: &Obstacles, req: &Request, bounds: Rect) -> Candidate {
+fn least_bad(cands: &[Candidate], layers: [&Obstacles; 2], req: &Request, bounds: Rect) -> Candidate {
     // No candidate inside the bounds (a label wider than its cell): beside the anchor,
     // pushed inside the bounds as far as they allow.
     let fallback = || {
@@ -274,8 +309,8 @@ fn least_bad(cands: &[Candidate], o: &Obstacles, req: &Request, bounds: Rect) ->
     cands
         .iter()
         .map(|c| {
-            let (strokes, area) = o.hits(c.r);
-            let leader_on_text = c.leader.is_some_and(|(a, b)| o.segment_crosses_text(a, b));
+            let (strokes, area) = layers.iter().map(|o| o.hits(c.r)).fold((0, 0.0), |s, h| (s.0 + h.0, s.1 + h.1));
+            let leader_on_text = c.leader.is_some_and(|(a, b)| layers.iter().any(|o| o.segment_crosses_text(a, b)));
             (strokes as f64 * 10.0 + area * 100.0 + if leader_on_text { 10.0 } else { 0.0 } + c.cost, c)
         })
         .min_by(|a, b| a.0.total_cmp(&b.0))
@@ -285,44 +320,93 @@ fn least_bad(cands: &[Candidate], o: &Obstacles, req: &Request, bounds: Rect) ->
 /// Every candidate box inside `bounds`, cheapest first.
 fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
     let mut out = Vec::new();
+    if req.others.is_empty() {
+        // One anchor: its spots in [`SPOTS_CHEAPEST_FIRST`] are already in order.
+        let around = Around::new(req, req.anchor, req.pref, 0.0);
+        out.extend(SPOTS_CHEAPEST_FIRST.iter().filter_map(|&(di, k)| around.spot(req, bounds, di, k)));
+        return out;
+    }
     let spots = std::iter::once((req.anchor, req.pref)).chain(req.others.iter().copied());
-    for (k, (anchor, pref)) in spots.enumerate() {
+    for (n, (anchor, pref)) in spots.enumerate() {
         // A further anchor's spots cost as much as the first's a few distances out.
-        around(req, anchor, pref, k as f64 * FURTHER_ANCHOR, bounds, &mut out);
+        let around = Around::new(req, anchor, pref, n as f64 * FURTHER_ANCHOR);
+        for di in 0..DISTANCES.len() {
+            out.extend((0..DIRECTIONS).filter_map(|k| around.spot(req, bounds, di, k)));
+        }
     }
     out.sort_by(|a, b| a.cost.total_cmp(&b.cost));
     out
 }
 
+/// Every (distance, direction) index pair, cheapest first and, among equals, in the order
+/// of distances then directions: the order a stable sort of one anchor's spots gives,
+/// found once rather than for every label.
+static SPOTS_CHEAPEST_FIRST: std::sync::LazyLock<Vec<(usize, usize)>> = std::sync::LazyLock::new(|| {
+    let mut all: Vec<(usize, usize)> =
+        (0..DISTANCES.len()).flat_map(|di| (0..DIRECTIONS).map(move |k| (di, k))).collect();
+    all.sort_by(|&(da, ka), &(db, kb)| spot_cost(0.0, da, ka).total_cmp(&spot_cost(0.0, db, kb)));
+    all
+});
+
+/// The sine and cosine of each direction's turn.
+static TURNS: std::sync::LazyLock<[(f64, f64); DIRECTIONS]> =
+    std::sync::LazyLock::new(|| std::array::from_fn(|k| math::sin_cos(turn_deg(k).to_radians())));
+
 /// What naming a line at its next anchor costs, against its first (in distance steps).
 const FURTHER_ANCHOR: f64 = 4.0;
 
-/// The candidate boxes around one anchor inside `bounds`, their cost raised by `extra`.
-fn around(req: &Request, anchor: Point, pref: Vec2, extra: f64, bounds: Rect, out: &mut Vec<Candidate>) {
-    let (w, up, down) = req.size();
-    let ht = up + down;
-    let base = if pref.norm() > tol::PAPER { pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
-    let gap = if req.names_line { TOUCH } else { LEADER_GAP };
-    for (di, &dist) in DISTANCES.iter().enumerate() {
+/// The turn of direction `k` from the preferred one, degrees: 0, +1, −1, +2, −2, … steps,
+/// alternate sides of the preferred direction.
+fn turn_deg(k: usize) -> f64 {
+    let step = k.div_ceil(2) as f64 * if k % 2 == 1 { 1.0 } else { -1.0 };
+    step * 360.0 / DIRECTIONS as f64
+}
+
+/// A spot's cost: its distance step and its turn, raised by `extra`.
+fn spot_cost(extra: f64, di: usize, k: usize) -> f64 {
+    extra + di as f64 * 1.0 + turn_deg(k).abs() / 45.0 * 0.8
+}
+
+/// The spots around one anchor of a label.
+struct Around {
+    anchor: Point,
+    /// The preferred direction, a unit vector.
+    base: Vec2,
+    /// The label's box: width and height.
+    w: f64,
+    ht: f64,
+    /// Added to each spot's cost.
+    extra: f64,
+}
+
+impl Around {
+    fn new(req: &Request, anchor: Point, pref: Vec2, extra: f64) -> Around {
+        let (w, up, down) = req.size();
+        let base = if pref.norm() > tol::PAPER { pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
+        Around { anchor, base, w, ht: up + down, extra }
+    }
+
+    /// The candidate box at distance `DISTANCES[di]` in direction `k`, if it is inside
+    /// `bounds` (and far enough for a line's name).
+    fn spot(&self, req: &Request, bounds: Rect, di: usize, k: usize) -> Option<Candidate> {
+        let dist = DISTANCES[di];
         if req.names_line && dist < LEADER_FROM {
-            continue;
+            return None;
         }
-        for k in 0..DIRECTIONS {
-            // 0, +1, −1, +2, −2, …: alternate sides of the preferred direction.
-            let step = k.div_ceil(2) as f64 * if k % 2 == 1 { 1.0 } else { -1.0 };
-            let turn = step * 360.0 / DIRECTIONS as f64;
-            let d = math::rotate(base, turn.to_radians());
-            // The box's nearest point stands `dist` from the anchor along `d` (a superellipse
-            // around the anchor: boxes beside, above and diagonal all keep the gap).
-            let centre = anchor + Vec2::new(d.x * (w / 2.0 + dist), d.y * (ht / 2.0 + dist));
-            let r = Rect::new(centre.x - w / 2.0, centre.y - ht / 2.0, centre.x + w / 2.0, centre.y + ht / 2.0);
-            if !(r.x0 >= bounds.x0 && r.y0 >= bounds.y0 && r.x1 <= bounds.x1 && r.y1 <= bounds.y1) {
-                continue;
-            }
-            let leader = (dist >= LEADER_FROM).then(|| leader(anchor, r, gap));
-            let cost = extra + di as f64 * 1.0 + turn.abs() / 45.0 * 0.8;
-            out.push(Candidate { r, anchor, leader, cost });
+        let (w, ht) = (self.w, self.ht);
+        let (sin, cos) = TURNS[k];
+        // As math::rotate(base, turn), its sine and cosine found once.
+        let d = Vec2::new(cos * self.base.x - sin * self.base.y, sin * self.base.x + cos * self.base.y);
+        // The box's nearest point stands `dist` from the anchor along `d` (a superellipse
+        // around the anchor: boxes beside, above and diagonal all keep the gap).
+        let centre = self.anchor + Vec2::new(d.x * (w / 2.0 + dist), d.y * (ht / 2.0 + dist));
+        let r = Rect::new(centre.x - w / 2.0, centre.y - ht / 2.0, centre.x + w / 2.0, centre.y + ht / 2.0);
+        if !(r.x0 >= bounds.x0 && r.y0 >= bounds.y0 && r.x1 <= bounds.x1 && r.y1 <= bounds.y1) {
+            return None;
         }
+        let gap = if req.names_line { TOUCH } else { LEADER_GAP };
+        let leader = (dist >= LEADER_FROM).then(|| leader(self.anchor, r, gap));
+        Some(Candidate { r, anchor: self.anchor, leader, cost: spot_cost(self.extra, di, k) })
     }
 }
 

@@ -8,7 +8,7 @@
 use super::forces_view::{ForceScales, ForcesInput, draw_forces, fit_comfortably};
 use super::labels::LeverWords;
 use super::mechanism_view::{MechanismView, TRAJECTORY, world_extent};
-use super::note_tables::{note_tables, sheet_table, tables_group, with_units};
+use super::note_tables::{NoteTables, note_tables, sheet_table, tables_group, with_units};
 use super::plans_view::{MIN_PLAN, PlanCell, Sizing, draw_plan, label_bounds, size_plans};
 use super::segments::{self, PlanKind, plan_segments};
 use crate::drawing::fmt;
@@ -86,34 +86,81 @@ const HEADER: f64 = 17.0;
 
 /// Lays out sheet 1; refuses a project text too long for its place on the sheet.
 pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
+    let plans = PlansOf::new(inp, k);
     if inp.forces.is_none() {
-        return Ok(compose_at(inp, k, FORCES_MIN_W)?.0);
+        return draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_MIN_W)?);
     }
     // The split between the force drawings (left) and the plans (right): the widest force
     // column is tried first; a narrower one wins when the forces still fit comfortably and
     // the smallest plan grows by a tenth or more, or the wider one's layout is not clean.
-    let mut best = compose_at(inp, k, FORCES_WIDTHS[0])?;
+    // Both conditions are known before anything is drawn, so a width that cannot win is
+    // never drawn (drawing is nearly all of the time).
+    let mut best = draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_WIDTHS[0])?)?;
     for &w in &FORCES_WIDTHS[1..] {
-        let next = compose_at(inp, k, w)?;
-        let smallest = |c: &Composed| c.layout.smallest_plan_mm.unwrap_or(0.0);
-        let better = smallest(&next.0) > 1.1 * smallest(&best.0) || !best.0.layout.is_clean();
-        if next.1 && next.0.layout.is_clean() && better {
-            best = next;
+        let next = arrange(inp, k, &plans, w)?;
+        let smallest = best.layout.smallest_plan_mm.unwrap_or(0.0);
+        let better = next.smallest_plan_mm(&plans).unwrap_or(0.0) > 1.1 * smallest || !best.layout.is_clean();
+        if next.mech.comfortable && better {
+            let drawn = draw(inp, k, &plans, next)?;
+            if drawn.layout.is_clean() {
+                best = drawn;
+            }
         }
     }
-    Ok(best.0)
+    Ok(best)
 }
 
 /// Widths of the force column tried, mm.
 const FORCES_WIDTHS: [f64; 3] = [FORCES_MIN_W, 430.0, 390.0];
 
-/// [`compose`] with a force column at least `forces_w` wide; also whether the force drawings
-/// fit it comfortably.
-fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, bool), TooLong> {
+/// The velocity and acceleration plans (the same at every layout) and their positions.
+struct PlansOf<'a> {
+    velocity: Vec<Plan>,
+    acceleration: Vec<Plan>,
+    vpositions: Vec<&'a Position>,
+    apositions: Vec<&'a Position>,
+}
+
+impl<'a> PlansOf<'a> {
+    fn new(inp: &Input, k: &'a Kinematics) -> PlansOf<'a> {
+        let m = &inp.project.mechanism;
+        PlansOf {
+            velocity: k.positions.iter().map(|p| velocity_plan(m, &p.state)).collect(),
+            acceleration: k.acceleration.iter().map(|&i| acceleration_plan(m, &k.positions[i].state)).collect(),
+            vpositions: k.positions.iter().collect(),
+            apositions: k.acceleration.iter().map(|&i| &k.positions[i]).collect(),
+        }
+    }
+}
+
+/// Sheet 1 arranged with a force column at least some width wide: every region and scale,
+/// nothing drawn yet.
+struct Arrangement<'a> {
+    words: LeverWords,
+    force_input: Option<ForcesInput<'a>>,
+    mech: MechanismPlace,
+    force_region: Option<Rect>,
+    notes: NoteTables,
+    velocity: PlansRegion<'a>,
+    acceleration: PlansRegion<'a>,
+    vsizing: Sizing,
+    asizing: Sizing,
+}
+
+impl Arrangement<'_> {
+    /// The largest side of the smallest plan, mm (as the drawn plans will have it).
+    fn smallest_plan_mm(&self, plans: &PlansOf) -> Option<f64> {
+        let drawn = self.vsizing.drawn(&plans.velocity).into_iter().chain(self.asizing.drawn(&plans.acceleration));
+        drawn.map(|size_mm| size_mm[0].max(size_mm[1])).reduce(f64::min)
+    }
+}
+
+/// Arranges sheet 1 with a force column at least `forces_w` wide.
+fn arrange<'a>(inp: &'a Input, k: &'a Kinematics, plans: &PlansOf, forces_w: f64) -> Result<Arrangement<'a>, TooLong> {
     let words = LeverWords::new(inp.ctx.info.language);
     let inner = frame::inner();
     let force_input = force_input(inp, k, &words);
-    let mech = mechanism_group(inp, k, &words, force_input.as_ref(), Column { width: forces_w, inner });
+    let mech = mechanism_place(inp, k, force_input.as_ref(), Column { width: forces_w, inner });
     // With a force analysis, its drawings fill the left column below the mechanism and the
     // acceleration plans move to the right column.
     let force_region = inp.forces.map(|_| force_region_below(mech.region, Column { width: forces_w, inner }));
@@ -124,11 +171,6 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     let notes = note_tables(inp, &words, (right_x0, inner.x1 - 4.0))?;
     let plans_bottom = notes.region.y0 - 6.0;
     let (l, c) = (words.sheet, words.common);
-    let vplans: Vec<_> = k.positions.iter().map(|p| velocity_plan(&inp.project.mechanism, &p.state)).collect();
-    let aplans: Vec<_> =
-        k.acceleration.iter().map(|&i| acceleration_plan(&inp.project.mechanism, &k.positions[i].state)).collect();
-    let vpositions: Vec<&Position> = k.positions.iter().collect();
-    let apositions: Vec<&Position> = k.acceleration.iter().map(|&i| &k.positions[i]).collect();
     let mut velocity = PlansRegion {
         id: "velocity-plans",
         kind: &segments::VELOCITY,
@@ -147,6 +189,7 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
         symbol: "a",
         unit: c.unit_a_per_mm(),
     };
+    let (vplans, aplans) = (&plans.velocity[..], &plans.acceleration[..]);
     // With a force analysis both kinds of plans share the right column: split at the
     // height that leaves the smallest plan of either kind largest.
     let [vsizing, asizing] = match force_region {
@@ -154,21 +197,35 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
             let column = Rect::new(right_x0, TOP, inner.x1 - 4.0, plans_bottom);
             let [(vr, vs), (ar, as_)] = split_plans(
                 column,
-                [(&velocity, &vplans[..], &vpositions[..]), (&acceleration, &aplans, &apositions)],
+                [(&velocity, vplans, &plans.vpositions[..]), (&acceleration, aplans, &plans.apositions[..])],
                 &words,
             );
             (velocity.region, acceleration.region) = (vr, ar);
             [vs, as_]
         }
-        None => [velocity.sizing(&vplans, &vpositions, &words), acceleration.sizing(&aplans, &apositions, &words)],
+        None => {
+            [velocity.sizing(vplans, &plans.vpositions, &words), acceleration.sizing(aplans, &plans.apositions, &words)]
+        }
     };
+    Ok(Arrangement { words, force_input, mech, force_region, notes, velocity, acceleration, vsizing, asizing })
+}
+
+/// Draws sheet 1 as arranged, and measures it.
+fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<Composed, TooLong> {
+    let Arrangement { words, force_input, mech, force_region, notes, velocity, acceleration, vsizing, asizing } = a;
+    let l = words.sheet;
+    let mech = mechanism_group(inp, k, &words, mech);
     let answer = AnswerKeys::of(&format!("sheet{}", inp.kind.number), inp.notes);
     let mut drawn_segments = segments::link_segments(&inp.project.mechanism, &k.positions, mech.mu_l);
     // Velocity plans: every position, one common μ_v.
-    let (vel, vdrawn, mu_v, vel_segments) = plans_group(&velocity, &vplans, vsizing, vpositions, &words, &answer);
+    let vpositions = plans.vpositions.clone();
+    let (vel, vdrawn, mu_v, vel_segments) =
+        plans_group(&velocity, &plans.velocity, vsizing, vpositions, &words, &answer);
     drawn_segments.extend(vel_segments);
     // Acceleration plans: the chosen positions, one common μ_a.
-    let (acc, adrawn, mu_a, acc_segments) = plans_group(&acceleration, &aplans, asizing, apositions, &words, &answer);
+    let apositions = plans.apositions.clone();
+    let (acc, adrawn, mu_a, acc_segments) =
+        plans_group(&acceleration, &plans.acceleration, asizing, apositions, &words, &answer);
     drawn_segments.extend(acc_segments);
 
     let tables = tables_group(&notes, &words);
@@ -189,17 +246,14 @@ fn compose_at(inp: &Input, k: &Kinematics, forces_w: f64) -> Result<(Composed, b
     };
     let scene = scaffold::scene(inp.ctx, inp.kind, &composition)?;
     let layout = scaffold::measure(&scene, &composition);
-    Ok((
-        Composed {
-            composition,
-            scene,
-            layout,
-            scales: Scales { mu_l, mu_v, mu_a, velocity_plans: vdrawn, acceleration_plans: adrawn },
-            force_scales,
-            trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
-        },
-        mech.comfortable,
-    ))
+    Ok(Composed {
+        composition,
+        scene,
+        layout,
+        scales: Scales { mu_l, mu_v, mu_a, velocity_plans: vdrawn, acceleration_plans: adrawn },
+        force_scales,
+        trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
+    })
 }
 
 /// The left column's least width for the force drawings and the frame's inside, mm.
@@ -236,27 +290,29 @@ fn force_region_below(mech: Rect, column: Column) -> Rect {
     Rect::new(inner.x0 + 5.0, mech.y1 + 4.0, mech.x1.max(inner.x0 + 5.0 + column.width), inner.y1 - 4.0)
 }
 
+/// The mechanism's region and scale, before it is drawn.
+struct MechanismPlace {
+    world: Rect,
+    region: Rect,
+    mu_l: f64,
+    /// The drawing's height at `mu_l`, mm.
+    draw_h: f64,
+    /// Whether the force drawings fit below it comfortably.
+    comfortable: bool,
+}
+
 /// The mechanism drawn in its region.
 struct MechanismDrawn {
     group: Group,
     region: Rect,
     mu_l: f64,
-    /// Whether the force drawings fit below it comfortably.
-    comfortable: bool,
 }
 
-/// The mechanism: the largest GOST μ_l that fits its box, the region shrunk to the drawing.
-/// With a force analysis the box is the tallest that leaves the force drawings below it
-/// room without cramping them.
-fn mechanism_group(
-    inp: &Input,
-    k: &Kinematics,
-    words: &LeverWords,
-    forces: Option<&ForcesInput>,
-    column: Column,
-) -> MechanismDrawn {
-    let m = &inp.project.mechanism;
-    let world = world_extent(m, k, &inp.project.kulisa_lengths);
+/// The mechanism's place: the largest GOST μ_l that fits its box, the region shrunk to the
+/// drawing. With a force analysis the box is the tallest that leaves the force drawings
+/// below it room without cramping them.
+fn mechanism_place(inp: &Input, k: &Kinematics, forces: Option<&ForcesInput>, column: Column) -> MechanismPlace {
+    let world = world_extent(&inp.project.mechanism, k, &inp.project.kulisa_lengths);
     let heights: &[f64] = if forces.is_some() { &MECH_HEIGHTS_FORCES } else { &[MECH_MAX_H] };
     let fits = |h: f64| {
         let (r, _, _) = mechanism_region(world, h, column.inner);
@@ -266,6 +322,13 @@ fn mechanism_group(
     let comfortable = heights.iter().copied().find(|&h| fits(h));
     let max_h = comfortable.unwrap_or(heights[heights.len() - 1]);
     let (region, mu_l, draw_h) = mechanism_region(world, max_h, column.inner);
+    MechanismPlace { world, region, mu_l, draw_h, comfortable: comfortable.is_some() }
+}
+
+/// The mechanism drawn at its place.
+fn mechanism_group(inp: &Input, k: &Kinematics, words: &LeverWords, place: MechanismPlace) -> MechanismDrawn {
+    let MechanismPlace { world, region, mu_l, draw_h, .. } = place;
+    let m = &inp.project.mechanism;
     let mut group = Group::new("mechanism", region);
     let origin = Point::new(
         region.center().x - world.center().x / mu_l,
@@ -277,7 +340,7 @@ fn mechanism_group(
     MechanismView { m, k, view: View::new(origin, mu_l), kulisa: &inp.project.kulisa_lengths, words }
         .draw(&mut group, &mut labels);
     labels.place(&mut group, region.inflate(-0.5, -0.5));
-    MechanismDrawn { group, region, mu_l, comfortable: comfortable.is_some() }
+    MechanismDrawn { group, region, mu_l }
 }
 
 /// The mechanism's title, μ_l, the structure formula and the degrees of freedom.
