@@ -98,9 +98,12 @@ pub struct Built {
 
 /// Builds the `requested` sheets (all the project has sections for when empty), in order.
 pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
-    // The title block's "sheets": up to the last course sheet the project has a section for
-    // (a kinematics exercise drawn on the first sheet alone is one sheet, not "1 of 3").
-    let sheet_count = buildable(p).into_iter().max().unwrap_or(COURSE.len() as u32);
+    // The title block's "sheet N of M": the sheets the project has sections for, in the
+    // course's order (a kinematics exercise drawn on the first sheet alone is one sheet, not
+    // "1 of 3"; a cam alone is one sheet too, not "3 of 3").
+    let own = buildable(p);
+    let sheet_count = if own.is_empty() { COURSE.len() as u32 } else { own.len() as u32 };
+    let sheet_no = |n: u32| own.iter().position(|&k| k == n).map_or(n, |i| i as u32 + 1);
     // The note's tables are numbered once across the sheets the project has.
     let counts: Vec<(u32, u32)> =
         COURSE.iter().filter_map(|k| (k.make)(p)).map(|s| (s.kind().number, s.table_count())).collect();
@@ -118,7 +121,8 @@ pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
         .map_err(|e| refused(e.refusal()))?
         .par_iter()
         .map(|sheet| {
-            let ctx = Context { info: &p.info, sheet_count, first_table: first_table(sheet.kind().number) };
+            let n = sheet.kind().number;
+            let ctx = Context { info: &p.info, sheet_no: sheet_no(n), sheet_count, first_table: first_table(n) };
             let output = sheet.build(&ctx).map_err(|e| refused(e.refusal(sheet.kind(), &p.places)))?;
             let svg = svg::write(&output.scene)?;
             Ok(Built { output, svg })

@@ -625,3 +625,54 @@ fn each_stroke_is_dimensioned_once_and_named_by_its_slider_when_there_are_two() 
         }
     }
 }
+
+/// The title block numbers a project's own sheets: the worked example's cam sheet is "3 of
+/// 3", a cam alone or a gear pair alone is sheet 1 of 1 (a student handing in one sheet
+/// is not missing two).
+#[test]
+fn the_title_block_numbers_the_projects_own_sheets() {
+    let sheet_texts = |p: &mut Project, n: u32| -> Vec<String> {
+        p.info.language = Language::Ru;
+        let b = pipeline::build(p, &[n]).unwrap().remove(0);
+        let tb = b.output.scene.groups.iter().find(|g| g.id == "title-block").expect("a title block");
+        tb.texts().map(|t| t.plain()).filter(|t| t.starts_with("Лист")).collect()
+    };
+    let mut worked = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+    for (n, expect) in [(1, "Лист 1"), (2, "Лист 2"), (3, "Лист 3")] {
+        let texts = sheet_texts(&mut worked, n);
+        assert!(texts.contains(&expect.to_string()) && texts.contains(&"Листов 3".to_string()), "sheet {n}: {texts:?}");
+    }
+    for (name, n) in [("cams/knife-rocker", 3), ("gears/undercut", 2)] {
+        let texts = sheet_texts(&mut fixture(name), n);
+        assert!(texts.contains(&"Лист 1".to_string()) && texts.contains(&"Листов 1".to_string()), "{name}: {texts:?}");
+    }
+}
+
+/// Positions that coincide on paper are drawn once and numbered once, "3′ ≡ 4": the guide's
+/// task 5, variant 22 has its second extreme position 1.3° of the crank from position 4.
+#[test]
+fn positions_that_coincide_on_paper_are_numbered_once() {
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    let catalogue = Catalogue::embedded().unwrap();
+    let Variant::Project { text, .. } = catalogue.task("5").unwrap().project(22, Language::En, "test").unwrap() else {
+        panic!("task 5, variant 22 gives a project");
+    };
+    let p = pipeline::load(&text).unwrap();
+    let lever = p.lever.as_ref().unwrap();
+    let k = tmm_sheets::lever::analysis::kinematics(&lever.mechanism, &lever.settings).unwrap();
+    let (extreme, next) = {
+        let i = k.positions.iter().position(|q| q.label == "3′").expect("an extreme position 3′");
+        (&k.positions[i], &k.positions[i + 1])
+    };
+    assert_eq!(next.label, "4");
+    let b = pipeline::build(&p, &[1]).unwrap().remove(0);
+    // The two positions, from their states and the sheet's μ_l: every point within half a
+    // millimetre on paper (1.3° of the crank apart).
+    let mu_l = b.output.results["scales"]["mu_l"].as_f64().unwrap();
+    let apart = extreme.state.points.iter().zip(&next.state.points).map(|(a, b)| (a.p - b.p).hypot() / mu_l);
+    assert!(apart.fold(0.0, f64::max) < 0.5);
+    let mech = b.output.scene.groups.iter().find(|g| g.id == "mechanism").unwrap();
+    let numbers: Vec<String> = mech.texts().map(|t| t.plain()).filter(|t| t.contains('′')).collect();
+    assert_eq!(numbers, vec!["3′ ≡ 4".to_string()], "the extreme position's numbers");
+    assert!(!mech.texts().any(|t| t.plain() == "4"), "position 4 numbered on its own too");
+}

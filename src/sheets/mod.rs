@@ -62,7 +62,9 @@ impl PartialEq for SheetKind {
 /// What every sheet is given besides its own section.
 pub struct Context<'a> {
     pub info: &'a ProjectInfo,
-    /// The number of sheets of the whole project, for the title block.
+    /// The sheet's place among the project's sheets and their number, for the title block:
+    /// a project of the cam alone is sheet 1 of 1, not "3 of 3".
+    pub sheet_no: u32,
     pub sheet_count: u32,
     /// The number of the sheet's first table in the explanatory note: the tables are
     /// numbered once across the project's sheets (see [`Sheet::table_count`]).
@@ -70,14 +72,13 @@ pub struct Context<'a> {
 }
 
 impl Context<'_> {
-    /// The GOST 2.104 title block of sheet `number`, named `sheet_name`, at `scale`, filled
-    /// from the project's information.
+    /// The GOST 2.104 title block of the sheet, named `sheet_name`, at `scale`, filled from
+    /// the project's information.
     pub fn title_block(
         &self,
         c: &crate::drawing::labels::Common,
         sheet_name: &str,
         scale: &str,
-        number: u32,
     ) -> Result<crate::drawing::scene::Group, TooLong> {
         use crate::drawing::frame::{self, TitleBlock};
         let mut tb = crate::drawing::scene::Group::new(scaffold::TITLE_BLOCK, frame::title_block_rect());
@@ -92,7 +93,7 @@ impl Context<'_> {
                 supervisor: &self.info.supervisor,
                 organisation: &self.info.organisation(),
                 scale,
-                sheet_no: number,
+                sheet_no: self.sheet_no,
                 sheet_count: self.sheet_count,
             },
         )?;

@@ -41,7 +41,7 @@ pub fn scene(ctx: &Context, kind: SheetKind, c: &Composition) -> Result<Scene, T
     let lang = ctx.info.language;
     let mut fr = Group::new("frame", Rect::new(0.0, 0.0, A1_W, A1_H));
     frame::frame(&mut fr);
-    let tb = ctx.title_block(Common::get(lang), &c.name, &fmt::localise(&scale::ratio(c.mu_l), lang), kind.number)?;
+    let tb = ctx.title_block(Common::get(lang), &c.name, &fmt::localise(&scale::ratio(c.mu_l), lang))?;
     let mut groups = Vec::with_capacity(c.groups.len() + 2);
     groups.push(fr);
     groups.extend(c.groups.iter().cloned());

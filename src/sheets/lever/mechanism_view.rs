@@ -44,6 +44,9 @@ struct Stroke {
 const STROKE_SAME_MM: f64 = 0.5;
 /// The length of a slider's stroke each of its position numbers needs (2.5 mm lettering), mm.
 const SLIDER_NUMBER_MM: f64 = 5.0;
+/// Positions whose every point is nearer than this on paper are one drawn position, mm
+/// (about two thin lines' width).
+const SAME_POSITION_MM: f64 = 0.5;
 /// The length of the crank pin's circle each position number needs in 3.5 mm lettering, mm.
 const CROWDED_NUMBERS: f64 = 8.0;
 
@@ -105,8 +108,10 @@ impl MechanismView<'_> {
             }
         }
         self.guides(g);
-        for pos in &self.k.positions {
-            self.position(g, pos, THIN, 0.7);
+        // Positions that coincide on paper are drawn once (twice, their thin lines would
+        // read as one thick line).
+        for group in self.coincident() {
+            self.position(g, &self.k.positions[group[0]], THIN, 0.7);
         }
         self.position(g, &self.k.assigned, MAIN, JOINT_R * 1.3);
         for &(id, p) in &self.m.frame {
@@ -279,6 +284,30 @@ impl MechanismView<'_> {
         out
     }
 
+    /// The positions in runs that coincide on paper: each next one within
+    /// [`SAME_POSITION_MM`] of the run's first at every point (an extreme position a fraction
+    /// of a degree from a numbered one, "5′" at 179.76° beside "6" at 180°).
+    fn coincident(&self) -> Vec<Vec<usize>> {
+        let mut out: Vec<Vec<usize>> = Vec::new();
+        for (i, pos) in self.k.positions.iter().enumerate() {
+            let same = |first: usize| {
+                let a = &self.k.positions[first].state.points;
+                let b = &pos.state.points;
+                a.iter().zip(b).all(|(p, q)| self.view.len((p.p - q.p).norm()) < SAME_POSITION_MM)
+            };
+            match out.last_mut() {
+                Some(run) if same(run[0]) => run.push(i),
+                _ => out.push(vec![i]),
+            }
+        }
+        out
+    }
+
+    /// The number of a run of coincident positions: "5′ ≡ 6".
+    fn joined_label(&self, run: &[usize]) -> String {
+        run.iter().map(|&i| self.k.positions[i].label.as_str()).collect::<Vec<_>>().join(" ≡ ")
+    }
+
     /// Position numbers beside the crank pin of every position, outward from the pivot.
     fn position_numbers(&self, labels: &mut Labels) {
         let crank = self.m.crank();
@@ -295,9 +324,11 @@ impl MechanismView<'_> {
             }
             None => 3.5,
         };
-        for pos in &self.k.positions {
+        let groups = self.coincident();
+        for group in &groups {
+            let pos = &self.k.positions[group[0]];
             let (o, a) = ends(pos);
-            labels.add_text_ranked(a, a - o, &pos.label, h, 2);
+            labels.add_text_ranked(a, a - o, &self.joined_label(group), h, 2);
         }
         // Each slider's positions numbered too, on the side of the guide away from its
         // hatching (where the rod comes from), as the guide numbers D0 … D11 — when its
@@ -310,8 +341,9 @@ impl MechanismView<'_> {
             }
             let n_world = dir.turn_90();
             let up = self.view.dir(n_world * -self.hatch_side(joint, through, n_world));
-            for pos in &self.k.positions {
-                labels.add_text_ranked(self.view.p(pos.state.points[d].p), up, &pos.label, 2.5, 2);
+            for group in &groups {
+                let pos = &self.k.positions[group[0]];
+                labels.add_text_ranked(self.view.p(pos.state.points[d].p), up, &self.joined_label(group), 2.5, 2);
             }
         }
     }
