@@ -234,3 +234,19 @@ fn the_addendum_coefficients_star_follows_its_subscript() {
     assert_eq!(h.map(|l| l.tail.as_str()), Some("*"), "{:?}", rows.iter().map(|r| &r.0).collect::<Vec<_>>());
     assert!(!rows.iter().any(|(l, _)| l.sub.contains('*')), "a star in a subscript");
 }
+
+/// Where the right half has the room, sheet 2's tables are lettered 3.5 mm (titles 5 mm), not
+/// the 2.5 mm of a crowded sheet, and every table stays inside its region.
+#[test]
+fn sheet_2_letters_its_tables_in_3_5_mm_where_they_fit() {
+    for (name, text) in
+        std::iter::once(("worked-example".to_string(), pipeline::DEFAULT_PROJECT.to_string())).chain(gear_fixtures())
+    {
+        let b = sheet2(&pipeline::load(&text).unwrap());
+        let tables = b.output.scene.groups.iter().find(|g| g.id == "tables").expect("a tables group");
+        let sizes: Vec<f64> = tables.texts().map(|t| t.h).collect();
+        assert!(!sizes.is_empty() && sizes.iter().all(|&h| h == 3.5 || h == 5.0), "{name}: {sizes:?}");
+        assert!(sizes.contains(&5.0), "{name}: the titles at 5 mm");
+        assert_eq!(b.output.results["layout"]["outside_region"], 0, "{name}");
+    }
+}

@@ -4,9 +4,13 @@ use super::scene::{Anchor, Group, MAIN, Pen, THIN, Text};
 use super::text::{LINE_PITCH, LabelText, paragraph, wrap};
 use kurbo::{Point, Rect};
 
+/// A row's height and the cells' lettering at the usual size, mm; a table of larger
+/// lettering ([`Table::text_h`]) scales both and its padding alike.
 pub const ROW_H: f64 = 5.0;
 pub const CELL_TEXT: f64 = 2.5;
+/// The title's lettering: one GOST size above the cells'.
 const TITLE_TEXT: f64 = 3.5;
+const TITLE_TEXT_LARGE: f64 = 5.0;
 
 /// How every table's part id begins: "table.velocities".
 pub const PART: &str = "table.";
@@ -25,37 +29,59 @@ pub struct Table {
     /// What the header names, written in the header row above the labels ("Link",
     /// "Position"); may be empty.
     pub corner: String,
+    /// The cells' lettering, mm: [`CELL_TEXT`], or 3.5 where the sheet has room; `label_w`
+    /// and `cell_w` are given for [`CELL_TEXT`] and scale with it.
+    pub text_h: f64,
 }
 
 /// Room either side of a cell's text, mm.
 const CELL_PAD: f64 = 1.2;
 
 impl Table {
+    /// The lettering's scale against [`CELL_TEXT`].
+    fn k(&self) -> f64 {
+        self.text_h / CELL_TEXT
+    }
+
+    fn row_h(&self) -> f64 {
+        ROW_H * self.k()
+    }
+
+    fn title_text(&self) -> f64 {
+        if self.text_h > CELL_TEXT { TITLE_TEXT_LARGE } else { TITLE_TEXT }
+    }
+
     /// The width of every value cell: the least width or the widest value or heading.
     fn cell_width(&self) -> f64 {
-        let width = |t: &str| Text::new(Point::ZERO, t, CELL_TEXT, Anchor::Middle).core_box().width();
+        let h = self.text_h;
+        let width = |t: &str| Text::new(Point::ZERO, t, h, Anchor::Middle).core_box().width();
         let values = self.rows.iter().flat_map(|(_, cells)| cells.iter()).chain(&self.header);
-        values.map(|v| width(v) + 2.0 * CELL_PAD + CELL_TEXT * super::text::SLANT).fold(self.cell_w, f64::max)
+        values
+            .map(|v| width(v) + 2.0 * CELL_PAD * self.k() + h * super::text::SLANT)
+            .fold(self.cell_w * self.k(), f64::max)
     }
 
     /// The label column's width: as given, or the corner caption's.
     fn label_width(&self) -> f64 {
-        let corner = Text::new(Point::ZERO, self.corner.as_str(), CELL_TEXT, Anchor::Middle).core_box().width();
-        self.label_w.max(corner + 2.0 * CELL_PAD + CELL_TEXT * super::text::SLANT)
+        let h = self.text_h;
+        let corner = Text::new(Point::ZERO, self.corner.as_str(), h, Anchor::Middle).core_box().width();
+        (self.label_w * self.k()).max(corner + 2.0 * CELL_PAD * self.k() + h * super::text::SLANT)
     }
 
     fn grid_width(&self) -> f64 {
         self.label_width() + self.cell_width() * self.header.len() as f64
     }
 
-    /// The title's lines: wrapped to the grid's width when it is wider (at least 60 mm).
+    /// The title's lines: wrapped to the grid's width when it is wider (at least 60 mm at
+    /// 2.5 mm lettering, more at larger).
     fn title_lines(&self) -> Vec<String> {
-        wrap(&self.title, TITLE_TEXT, self.grid_width().max(60.0))
+        wrap(&self.title, self.title_text(), self.grid_width().max(60.0 * self.k()))
     }
 
     /// Height of the title above the grid, mm.
     fn title_height(&self) -> f64 {
-        7.0 + (self.title_lines().len().max(1) - 1) as f64 * TITLE_TEXT * LINE_PITCH
+        let h = self.title_text();
+        7.0 + (h - TITLE_TEXT) + (self.title_lines().len().max(1) - 1) as f64 * h * LINE_PITCH
     }
 
     /// Width and height including the title.
@@ -63,9 +89,9 @@ impl Table {
         let title = self
             .title_lines()
             .iter()
-            .map(|l| Text::new(Point::ZERO, l.as_str(), TITLE_TEXT, Anchor::Start).bbox().width())
+            .map(|l| Text::new(Point::ZERO, l.as_str(), self.title_text(), Anchor::Start).bbox().width())
             .fold(0.0, f64::max);
-        (self.grid_width().max(title), ROW_H * (self.rows.len() + 1) as f64 + self.title_height())
+        (self.grid_width().max(title), self.row_h() * (self.rows.len() + 1) as f64 + self.title_height())
     }
 
     /// Draws the table with its top-left corner (title included) at `at`.
@@ -80,10 +106,18 @@ impl Table {
     fn draw_grid(&self, g: &mut Group, at: Point) -> Rect {
         let (outer_w, h) = self.size();
         let w = self.grid_width();
-        paragraph(g, Point::new(at.x, at.y + 4.0), &self.title_lines(), TITLE_TEXT, Anchor::Start);
+        let title_h = self.title_text();
+        paragraph(
+            g,
+            Point::new(at.x, at.y + 4.0 + (title_h - TITLE_TEXT)),
+            &self.title_lines(),
+            title_h,
+            Anchor::Start,
+        );
         let top = at.y + self.title_height();
         let n_rows = self.rows.len() + 1;
-        let bottom = top + ROW_H * n_rows as f64;
+        let (row_h, text_h) = (self.row_h(), self.text_h);
+        let bottom = top + row_h * n_rows as f64;
         let outline = |g: &mut Group, pen: Pen| {
             g.path(
                 vec![
@@ -98,7 +132,7 @@ impl Table {
         };
         outline(g, MAIN);
         for r in 1..n_rows {
-            let y = top + ROW_H * r as f64;
+            let y = top + row_h * r as f64;
             g.line(Point::new(at.x, y), Point::new(at.x + w, y), if r == 1 { MAIN } else { THIN });
         }
         let (label_w, cell_w) = (self.label_width(), self.cell_width());
@@ -107,23 +141,18 @@ impl Table {
             g.line(Point::new(x, top), Point::new(x, bottom), THIN);
             x += cell_w;
         }
-        let base = |r: usize| top + ROW_H * r as f64 + ROW_H / 2.0 + CELL_TEXT / 2.0;
+        let base = |r: usize| top + row_h * r as f64 + row_h / 2.0 + text_h / 2.0;
         let col = |c: usize| at.x + label_w + cell_w * (c as f64 + 0.5);
         if !self.corner.is_empty() {
-            g.text(Text::new(
-                Point::new(at.x + label_w / 2.0, base(0)),
-                self.corner.clone(),
-                CELL_TEXT,
-                Anchor::Middle,
-            ));
+            g.text(Text::new(Point::new(at.x + label_w / 2.0, base(0)), self.corner.clone(), text_h, Anchor::Middle));
         }
         for (c, hd) in self.header.iter().enumerate() {
-            g.text(Text::new(Point::new(col(c), base(0)), hd.clone(), CELL_TEXT, Anchor::Middle));
+            g.text(Text::new(Point::new(col(c), base(0)), hd.clone(), text_h, Anchor::Middle));
         }
         for (r, (label, cells)) in self.rows.iter().enumerate() {
-            label.draw(g, Point::new(at.x + label_w / 2.0, base(r + 1)), CELL_TEXT, Anchor::Middle);
+            label.draw(g, Point::new(at.x + label_w / 2.0, base(r + 1)), text_h, Anchor::Middle);
             for (c, v) in cells.iter().enumerate() {
-                g.text(Text::new(Point::new(col(c), base(r + 1)), v.clone(), CELL_TEXT, Anchor::Middle));
+                g.text(Text::new(Point::new(col(c), base(r + 1)), v.clone(), text_h, Anchor::Middle));
             }
         }
         Rect::new(at.x, at.y, at.x + outer_w, at.y + h)
@@ -163,6 +192,12 @@ fn packed(sizes: &[(f64, f64)], height: f64, gap: f64) -> (Vec<Point>, f64) {
         right = right.max(x + col_w);
     }
     (corners, right)
+}
+
+/// Whether [`flow`] fits tables of `sizes` inside `region`: no column taller than it, all
+/// of them within its width.
+pub fn flow_fits(sizes: &[(f64, f64)], region: Rect, gap: f64) -> bool {
+    sizes.iter().all(|s| s.1 <= region.height()) && flow_width(sizes, region.height(), gap) <= region.width()
 }
 
 /// The width [`flow`] takes for tables of `sizes` in a region `height` mm tall.

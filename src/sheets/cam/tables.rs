@@ -52,5 +52,6 @@ pub fn sheet_table(n: &NoteTable, lang: Language) -> Table {
         label_w,
         cell_w: 12.0,
         corner: if results { c.quantity().into() } else { c.position_col().into() },
+        text_h: crate::drawing::table::CELL_TEXT,
     }
 }

@@ -38,11 +38,21 @@ pub fn table_count(p: &GearsProject) -> u32 {
     if p.planetary.is_some() { 3 } else { 1 }
 }
 
-/// Draws the tables in `region`, in columns left to right.
+/// Draws the tables in `region`, in columns left to right: in 3.5 mm lettering where they
+/// fit (the right half below the planetary views has the room), else in 2.5 mm.
 pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &GearWords, first: u32) -> Group {
-    let drawn = notes.iter().map(|n| sheet_table(n, tolerance, words, first));
-    table::flow("tables", drawn, region, 4.0)
+    let at = |text_h: f64| -> Vec<Table> {
+        notes.iter().map(|n| Table { text_h, ..sheet_table(n, tolerance, words, first) }).collect()
+    };
+    let large = at(LARGE_TEXT);
+    let sizes: Vec<(f64, f64)> = large.iter().map(Table::size).collect();
+    let drawn = if table::flow_fits(&sizes, region, GAP) { large } else { at(CELL_TEXT) };
+    table::flow("tables", drawn, region, GAP)
 }
+
+/// The tables' larger lettering, mm (GOST 2.304's next size), and the gap between them.
+const LARGE_TEXT: f64 = 3.5;
+const GAP: f64 = 4.0;
 
 /// A table as sheet 2 draws it: units after the symbols, the conditions' verdicts in words,
 /// the ratio's condition with its tolerance, the pair's table as the wheels' continuation
@@ -73,5 +83,6 @@ fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords, first: 
         label_w,
         cell_w: 14.0,
         corner: if conditions { l.condition_col().into() } else { c.quantity().into() },
+        text_h: crate::drawing::table::CELL_TEXT,
     }
 }

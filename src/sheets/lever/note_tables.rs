@@ -72,6 +72,7 @@ pub(super) fn sheet_table(n: &NoteTable, lang: Language) -> Table {
         rows,
         cell_w: 11.0,
         corner: String::new(),
+        text_h: crate::drawing::table::CELL_TEXT,
     }
 }
 
