@@ -59,9 +59,18 @@ pub fn wrap(text: &str, h: f64, width: f64) -> Vec<String> {
     let space = m.width(" ", size);
     let mut lines = Vec::new();
     let (mut cur, mut cur_w) = (String::new(), 0.0);
-    for word in &units(text) {
+    let mut queue: std::collections::VecDeque<String> = units(text).into();
+    while let Some(word) = queue.pop_front() {
         let word = word.as_str();
         let word_w = m.width(word, size);
+        // Words kept together that no line holds ("7 mm uzunlikda": a number with its unit,
+        // the unit, two letters, with the next word) give up their last word first, rather
+        // than be broken between letters.
+        if let Some((head, last)) = word.rsplit_once(' ').filter(|_| word_w > room) {
+            queue.push_front(last.to_string());
+            queue.push_front(head.to_string());
+            continue;
+        }
         if !cur.is_empty() && cur_w + space + word_w <= room {
             cur.push(' ');
             cur.push_str(word);
@@ -114,7 +123,8 @@ fn pieces(word: &str) -> std::str::SplitInclusive<'_, char> {
 
 /// The words of `text` as wrapping sees them: a one- or two-letter word (a preposition or
 /// conjunction: "в", "и", "da") goes to the next line with the word after it, as Russian
-/// typesetting asks ("длины в" over "мм" reads as if the unit were lost).
+/// typesetting asks ("длины в" over "мм" reads as if the unit were lost), and so does a
+/// number: "7" at a line's end over "mm" parts a length from its unit.
 fn units(text: &str) -> Vec<String> {
     let mut out: Vec<String> = Vec::new();
     let mut glue = false;
@@ -126,7 +136,11 @@ fn units(text: &str) -> Vec<String> {
             }
             _ => out.push(word.to_string()),
         }
-        glue = word.chars().count() <= 2 && word.chars().all(char::is_alphabetic);
+        let short_word = word.chars().count() <= 2 && word.chars().all(char::is_alphabetic);
+        // A number ends in a digit: "5." ends a clause ("Таблица 5." over its title).
+        let number = word.ends_with(|c: char| c.is_ascii_digit())
+            && word.chars().all(|c| c.is_ascii_digit() || matches!(c, ',' | '.' | '−' | '-' | '+'));
+        glue = short_word || number;
     }
     out
 }
@@ -305,6 +319,20 @@ mod tests {
             assert!(lines.iter().all(|l| !l.ends_with(" в")), "{lines:?} at {width} mm");
             assert_eq!(lines.join(" "), text);
         }
+    }
+
+    /// A number stays with its unit ("7" at a line's end over "mm" parts a length from its
+    /// unit), but a numbered caption's "5." may end a line.
+    #[test]
+    fn a_number_goes_to_the_next_line_with_its_unit() {
+        let text = "* kuch strelkalari masshtabida 7 mm dan qisqa: strelka 7 mm uzunlikda chizilgan";
+        for width in (30..=120).step_by(5) {
+            let lines = wrap(text, 3.5, width as f64);
+            assert!(lines.iter().all(|l| !l.ends_with(" 7") && !l.starts_with("mm")), "{lines:?} at {width} mm");
+            assert_eq!(lines.join(" "), text);
+        }
+        assert_eq!(units("Таблица 5. Уравновешивающая сила")[1], "5.");
+        assert_eq!(units("y = 0,06 m, 12 N·m"), ["y =", "0,06 m,", "12 N·m"]);
     }
 
     #[test]
