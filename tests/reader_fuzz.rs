@@ -9,21 +9,19 @@
 //! `FUZZ_CASES=100000 FUZZ_SEED=random cargo test --release --test reader_fuzz` is the long
 //! run. A failure prints the mutated file: it becomes a named case in `tests/bad_input.rs`.
 
+mod common;
+
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed, TestRunner};
 use std::cell::Cell;
 use tmm_sheets::pipeline::{self, DEFAULT_PROJECT, Error};
 
 fn cases() -> u32 {
-    std::env::var("FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(1500)
+    common::env_cases("FUZZ_CASES", 1500)
 }
 
 fn seed() -> RngSeed {
-    match std::env::var("FUZZ_SEED").ok().as_deref() {
-        Some("random") => RngSeed::Random,
-        Some(v) => RngSeed::Fixed(v.parse().expect("FUZZ_SEED: a whole number or 'random'")),
-        None => RngSeed::Fixed(2026),
-    }
+    common::env_seed("FUZZ_SEED")
 }
 
 /// The files mutated: the worked example and every fixture.

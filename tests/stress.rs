@@ -21,17 +21,13 @@ use proptest::test_runner::{Config, RngSeed, TestRunner};
 use tmm_sheets::pipeline;
 
 fn cases() -> u32 {
-    std::env::var("STRESS_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(300)
+    common::env_cases("STRESS_CASES", 300)
 }
 
 /// The cases' seed: fixed, so that a run is repeatable and its layout verdict is the same on
 /// every machine; `STRESS_SEED=N` draws other cases, `STRESS_SEED=random` new ones each run.
 fn seed() -> RngSeed {
-    match std::env::var("STRESS_SEED").ok().as_deref() {
-        Some("random") => RngSeed::Random,
-        Some(v) => RngSeed::Fixed(v.parse().expect("STRESS_SEED: a whole number or 'random'")),
-        None => RngSeed::Fixed(2026),
-    }
+    common::env_seed("STRESS_SEED")
 }
 
 const HEADER: &str = "project:\n  title: {uz: \"Sinov\", ru: \"Проба\", en: \"Stress\"}\n  designation: {uz: \"MMN KL 00.00.00\", ru: \"ТММ КП 00.00.00\", en: \"TMM CP 00.00.00\"}\n  language: en\n\n";

@@ -144,3 +144,19 @@ pub fn check_layout(name: &str, scene: &Scene) {
 pub fn runs(scene: &Scene) -> impl Iterator<Item = &str> {
     scene.texts().flat_map(|t| [t.text.as_str(), t.sub.as_str(), t.tail.as_str()]).filter(|r| !r.is_empty())
 }
+
+/// A count of random cases from the environment variable `var`, else `default`.
+pub fn env_cases(var: &str, default: u32) -> u32 {
+    std::env::var(var).ok().and_then(|v| v.parse().ok()).unwrap_or(default)
+}
+
+/// The random cases' seed from the environment variable `var`: a fixed 2026 by default, so
+/// that a run is repeatable; a number for other cases, `random` for new ones each run.
+pub fn env_seed(var: &str) -> proptest::test_runner::RngSeed {
+    use proptest::test_runner::RngSeed;
+    match std::env::var(var).ok().as_deref() {
+        Some("random") => RngSeed::Random,
+        Some(v) => RngSeed::Fixed(v.parse().unwrap_or_else(|_| panic!("{var}: a whole number or 'random'"))),
+        None => RngSeed::Fixed(2026),
+    }
+}

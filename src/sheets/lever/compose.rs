@@ -9,8 +9,10 @@ use super::forces_view::{ForceScales, ForcesInput, draw_forces, fit_comfortably}
 use super::labels::LeverWords;
 use super::mechanism_view::{MechanismView, TRAJECTORY, world_extent};
 use super::note_tables::{NoteTables, note_tables, sheet_table, tables_group, with_units};
-use super::plans_view::{MIN_PLAN, PlanCell, Sizing, draw_plan, label_bounds, size_plans};
-use super::segments::{self, PlanKind, plan_segments};
+pub use super::plan_regions::PlanDrawn;
+use super::plan_regions::{PlansRegion, plans_group, split_plans};
+use super::plans_view::Sizing;
+use super::segments;
 use crate::drawing::fmt;
 use crate::drawing::frame;
 use crate::drawing::layout::Layout;
@@ -25,7 +27,7 @@ use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
 use crate::project::LeverProject;
 use crate::report::NoteTable;
 use crate::report::lever::ForceTables;
-use crate::report::{AnswerKeys, Segment, ascii_key};
+use crate::report::{AnswerKeys, Segment};
 use crate::sheets::scaffold::{self, Composition};
 use crate::sheets::{Context, SheetKind};
 use kurbo::{Point, Rect};
@@ -82,7 +84,7 @@ const FORCES_MIN_W: f64 = 470.0;
 /// Space around the mechanism drawing for its letters, pivots and guides.
 const MECH_PAD: f64 = 14.0;
 /// A region's title and scale lines.
-const HEADER: f64 = 17.0;
+pub(super) const HEADER: f64 = 17.0;
 
 /// Lays out sheet 1; refuses a project text too long for its place on the sheet.
 pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
@@ -212,6 +214,7 @@ fn arrange<'a>(inp: &'a Input, k: &'a Kinematics, plans: &PlansOf, forces_w: f64
 
 /// Draws sheet 1 as arranged, and measures it.
 fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<Composed, TooLong> {
+    let smallest_plan_mm = a.smallest_plan_mm(plans);
     let Arrangement { words, force_input, mech, force_region, notes, velocity, acceleration, vsizing, asizing } = a;
     let l = words.sheet;
     let mech = mechanism_group(inp, k, &words, mech);
@@ -241,7 +244,7 @@ fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<
         tables: Vec::new(),
         results: serde_json::Value::Null,
         diagnostics: Vec::new(),
-        smallest_plan_mm: vdrawn.iter().chain(&adrawn).map(|p| p.size_mm[0].max(p.size_mm[1])).reduce(f64::min),
+        smallest_plan_mm,
         segments: drawn_segments,
     };
     let scene = scaffold::scene(inp.ctx, inp.kind, &composition)?;
@@ -412,128 +415,11 @@ fn mechanism_region(world: Rect, max_h: f64, inner: Rect) -> (Rect, f64, f64) {
     (r, mu_l, draw_h)
 }
 /// A region's title (5 mm) and its line of scale and formula (3.5 mm).
-fn region_header(g: &mut Group, r: Rect, title: &str, lines: &[LabelText]) {
+pub(super) fn region_header(g: &mut Group, r: Rect, title: &str, lines: &[LabelText]) {
     g.text(Text::new(Point::new(r.x0 + 2.0, r.y0 + 6.0), title, 5.0, Anchor::Start));
     let mut x = r.x0 + 2.0;
     for line in lines {
         let bb = line.draw(g, Point::new(x, r.y0 + 12.5), 3.5, Anchor::Start);
         x = bb.x1 + 8.0;
     }
-}
-
-/// One drawn plan: its position, scale and size on paper.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
-pub struct PlanDrawn {
-    pub position: String,
-    /// (m/s)/mm or (m/s²)/mm.
-    pub mu: f64,
-    /// Width and height of the plan on paper, mm.
-    pub size_mm: [f64; 2],
-}
-
-/// A region of plans: its group's id and region, its title, the plans' pole and the
-/// quantity and unit of their scale.
-struct PlansRegion<'a> {
-    id: &'a str,
-    kind: &'a PlanKind,
-    region: Rect,
-    title: &'a str,
-    pole: &'a str,
-    symbol: &'a str,
-    unit: &'a str,
-}
-
-impl PlansRegion<'_> {
-    /// The scale line of a plan of this kind at `mu`.
-    fn scale_line(&self, mu: f64, words: &LeverWords) -> LabelText {
-        LabelText::new("μ", self.symbol).with_tail(format!(
-            " = {} {}",
-            fmt::localise(&scale::format(mu), words.lang),
-            self.unit
-        ))
-    }
-
-    /// The plans' scales and cells below the region's header (see [`size_plans`]).
-    fn sizing(&self, plans: &[Plan], positions: &[&Position], words: &LeverWords) -> Sizing {
-        let body = Rect::new(self.region.x0, self.region.y0 + HEADER, self.region.x1, self.region.y1);
-        // A cell holds its title (3.5 mm) and, at a scale of its own, its scale line (2.5 mm).
-        let min_w = positions
-            .iter()
-            .map(|p| LabelText::new(words.sheet.position(&p.label), "").width(3.5))
-            .fold(self.scale_line(0.0025, words).width(2.5), f64::max)
-            + 5.0;
-        size_plans(body, plans, self.pole, min_w)
-    }
-}
-
-/// Shares of a column tried for the velocity plans above the acceleration plans.
-const VELOCITY_SHARES: [f64; 7] = [0.46, 0.5, 0.54, 0.58, 0.62, 0.66, 0.7];
-
-/// Splits `column` between two kinds of plans, the first above: at the share whose smallest
-/// plan is largest (a plan off the common scale counts as no larger than the minimum), then
-/// whose largest velocity plan is largest. Returns each kind's region and sizing.
-fn split_plans(
-    column: Rect,
-    kinds: [(&PlansRegion, &[Plan], &[&Position]); 2],
-    words: &LeverWords,
-) -> [(Rect, Sizing); 2] {
-    let split = |share: f64| {
-        let y = column.y0 + column.height() * share;
-        let regions =
-            [Rect::new(column.x0, column.y0, column.x1, y), Rect::new(column.x0, y + 4.0, column.x1, column.y1)];
-        let mut kind = kinds.iter().zip(regions).map(|((r, plans, positions), region)| {
-            (region, PlansRegion { region, ..**r }.sizing(plans, positions, words))
-        });
-        [kind.next().expect("two kinds"), kind.next().expect("two kinds")]
-    };
-    let score = |s: &[(Rect, Sizing); 2]| {
-        let [(least_v, largest_v), (least_a, _)] =
-            [0, 1].map(|k| (s[k].1.least_measured(kinds[k].1), s[k].1.largest(kinds[k].1)));
-        (least_v.min(least_a).min(2.0 * MIN_PLAN), largest_v)
-    };
-    VELOCITY_SHARES
-        .iter()
-        .map(|&share| {
-            let s = split(share);
-            (score(&s), s)
-        })
-        .max_by(|a, b| a.0.0.total_cmp(&b.0.0).then(a.0.1.total_cmp(&b.0.1)))
-        .map(|(_, s)| s)
-        .expect("shares to try")
-}
-
-/// Draws plans in the cells of their `sizing` (see [`size_plans`]) below the region's header; returns
-/// the group, what each plan became and the scale they share, if one.
-fn plans_group(
-    r: &PlansRegion,
-    plans: &[Plan],
-    sizing: Sizing,
-    positions: Vec<&Position>,
-    words: &LeverWords,
-    answer: &AnswerKeys,
-) -> (Group, Vec<PlanDrawn>, Option<f64>, Vec<Segment>) {
-    let l = words.sheet;
-    let mut g = Group::new(r.id, r.region);
-    let scale_line = |mu: f64| r.scale_line(mu, words);
-    region_header(&mut g, r.region, r.title, &[scale_line(sizing.common)]);
-    let mut segments = Vec::new();
-    for (i, ((plan, &cell), pos)) in plans.iter().zip(&sizing.cells).zip(&positions).enumerate() {
-        let mu = sizing.mu[i];
-        let mut labels = Labels::new();
-        let title = l.position(&pos.label);
-        let c =
-            PlanCell { cell, title: &title, plan, mu, pole: r.pole, scale_line: sizing.own(i).then(|| scale_line(mu)) };
-        let start = g.mark();
-        draw_plan(&mut g, &c, &mut labels);
-        labels.place(&mut g, label_bounds(cell));
-        g.part_from(format!("plan.{}.{}", r.symbol, ascii_key(&pos.label)), start);
-        segments.extend(plan_segments(plan, r.kind, &pos.label, mu, answer));
-    }
-    let drawn = positions
-        .iter()
-        .zip(sizing.drawn(plans))
-        .zip(&sizing.mu)
-        .map(|((p, size_mm), &mu)| PlanDrawn { position: p.label.clone(), mu, size_mm })
-        .collect();
-    (g, drawn, (!plans.is_empty()).then_some(sizing.common), segments)
 }

@@ -7,6 +7,7 @@ pub mod forces_view;
 pub mod labels;
 mod mechanism_view;
 mod note_tables;
+mod plan_regions;
 mod plans_view;
 pub mod results;
 mod segments;

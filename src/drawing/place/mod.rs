@@ -13,9 +13,10 @@
 use super::obstacles::{Obstacles, Piece};
 use super::scene::{Anchor, Group, THIN};
 use super::text::{LabelText, SLANT, SUB};
-use crate::num::math::{self, Norm};
-use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
+use spots::candidates;
+
+mod spots;
 
 /// Distances tried between an anchor and its label's box, mm.
 const DISTANCES: [f64; 19] =
@@ -317,116 +318,12 @@ fn least_bad(cands: &[Candidate], layers: [&Obstacles; 2], req: &Request, bounds
         .map_or_else(fallback, |(_, c)| c.clone())
 }
 
-/// Every candidate box inside `bounds`, cheapest first.
-fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
-    let mut out = Vec::new();
-    if req.others.is_empty() {
-        // One anchor: its spots in [`SPOTS_CHEAPEST_FIRST`] are already in order.
-        let around = Around::new(req, req.anchor, req.pref, 0.0);
-        out.extend(SPOTS_CHEAPEST_FIRST.iter().filter_map(|&(di, k)| around.spot(req, bounds, di, k)));
-        return out;
-    }
-    let spots = std::iter::once((req.anchor, req.pref)).chain(req.others.iter().copied());
-    for (n, (anchor, pref)) in spots.enumerate() {
-        // A further anchor's spots cost as much as the first's a few distances out.
-        let around = Around::new(req, anchor, pref, n as f64 * FURTHER_ANCHOR);
-        for di in 0..DISTANCES.len() {
-            out.extend((0..DIRECTIONS).filter_map(|k| around.spot(req, bounds, di, k)));
-        }
-    }
-    out.sort_by(|a, b| a.cost.total_cmp(&b.cost));
-    out
-}
-
-/// Every (distance, direction) index pair, cheapest first and, among equals, in the order
-/// of distances then directions: the order a stable sort of one anchor's spots gives,
-/// found once rather than for every label.
-static SPOTS_CHEAPEST_FIRST: std::sync::LazyLock<Vec<(usize, usize)>> = std::sync::LazyLock::new(|| {
-    let mut all: Vec<(usize, usize)> =
-        (0..DISTANCES.len()).flat_map(|di| (0..DIRECTIONS).map(move |k| (di, k))).collect();
-    all.sort_by(|&(da, ka), &(db, kb)| spot_cost(0.0, da, ka).total_cmp(&spot_cost(0.0, db, kb)));
-    all
-});
-
-/// The sine and cosine of each direction's turn.
-static TURNS: std::sync::LazyLock<[(f64, f64); DIRECTIONS]> =
-    std::sync::LazyLock::new(|| std::array::from_fn(|k| math::sin_cos(turn_deg(k).to_radians())));
-
-/// What naming a line at its next anchor costs, against its first (in distance steps).
-const FURTHER_ANCHOR: f64 = 4.0;
-
-/// The turn of direction `k` from the preferred one, degrees: 0, +1, −1, +2, −2, … steps,
-/// alternate sides of the preferred direction.
-fn turn_deg(k: usize) -> f64 {
-    let step = k.div_ceil(2) as f64 * if k % 2 == 1 { 1.0 } else { -1.0 };
-    step * 360.0 / DIRECTIONS as f64
-}
-
-/// A spot's cost: its distance step and its turn, raised by `extra`.
-fn spot_cost(extra: f64, di: usize, k: usize) -> f64 {
-    extra + di as f64 * 1.0 + turn_deg(k).abs() / 45.0 * 0.8
-}
-
-/// The spots around one anchor of a label.
-struct Around {
-    anchor: Point,
-    /// The preferred direction, a unit vector.
-    base: Vec2,
-    /// The label's box: width and height.
-    w: f64,
-    ht: f64,
-    /// Added to each spot's cost.
-    extra: f64,
-}
-
-impl Around {
-    fn new(req: &Request, anchor: Point, pref: Vec2, extra: f64) -> Around {
-        let (w, up, down) = req.size();
-        let base = if pref.norm() > tol::PAPER { pref.unit() } else { Vec2::new(1.0, -1.0).unit() };
-        Around { anchor, base, w, ht: up + down, extra }
-    }
-
-    /// The candidate box at distance `DISTANCES[di]` in direction `k`, if it is inside
-    /// `bounds` (and far enough for a line's name).
-    fn spot(&self, req: &Request, bounds: Rect, di: usize, k: usize) -> Option<Candidate> {
-        let dist = DISTANCES[di];
-        if req.names_line && dist < LEADER_FROM {
-            return None;
-        }
-        let (w, ht) = (self.w, self.ht);
-        let (sin, cos) = TURNS[k];
-        // As math::rotate(base, turn), its sine and cosine found once.
-        let d = Vec2::new(cos * self.base.x - sin * self.base.y, sin * self.base.x + cos * self.base.y);
-        // The box's nearest point stands `dist` from the anchor along `d` (a superellipse
-        // around the anchor: boxes beside, above and diagonal all keep the gap).
-        let centre = self.anchor + Vec2::new(d.x * (w / 2.0 + dist), d.y * (ht / 2.0 + dist));
-        let r = Rect::new(centre.x - w / 2.0, centre.y - ht / 2.0, centre.x + w / 2.0, centre.y + ht / 2.0);
-        if !(r.x0 >= bounds.x0 && r.y0 >= bounds.y0 && r.x1 <= bounds.x1 && r.y1 <= bounds.y1) {
-            return None;
-        }
-        let gap = if req.names_line { TOUCH } else { LEADER_GAP };
-        let leader = (dist >= LEADER_FROM).then(|| leader(self.anchor, r, gap));
-        Some(Candidate { r, anchor: self.anchor, leader, cost: spot_cost(self.extra, di, k) })
-    }
-}
-
-/// A leader from `gap` off the anchor to [`LEADER_SHORT`] short of the nearest point of the
-/// label's box (a leader ending on the box's edge touches the letters' tops).
-fn leader(anchor: Point, r: Rect, gap: f64) -> (Point, Point) {
-    let end = Point::new(anchor.x.clamp(r.x0, r.x1), anchor.y.clamp(r.y0, r.y1));
-    let d = end - anchor;
-    let start = anchor + d.unit() * gap.min(d.norm() / 2.0);
-    (start, end - d.unit() * LEADER_SHORT.min(d.norm() / 4.0))
-}
-
-/// How far a leader stops short of its label's box, mm.
-const LEADER_SHORT: f64 = 0.5;
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::drawing::layout;
     use crate::drawing::scene::{Item, Text};
+    use crate::num::math::{self, Norm};
 
     /// A label asked for inside a ring of discs (rollers round a profile) is placed outside
     /// every disc, though no stroke bounds them.

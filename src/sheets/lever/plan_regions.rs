@@ -1,0 +1,133 @@
+//! Sheet 1's regions of plans: their scales and cells, the split of a column between the
+//! velocity and the acceleration plans, and the plans drawn with their answer segments.
+
+use super::compose::{HEADER, region_header};
+use super::labels::LeverWords;
+use super::plans_view::{MIN_PLAN, PlanCell, Sizing, draw_plan, label_bounds, size_plans};
+use super::segments::{PlanKind, plan_segments};
+use crate::drawing::fmt;
+use crate::drawing::place::Labels;
+use crate::drawing::scale;
+use crate::drawing::scene::Group;
+use crate::drawing::text::LabelText;
+use crate::lever::analysis::Position;
+use crate::lever::plans::Plan;
+use crate::report::{AnswerKeys, Segment, ascii_key};
+use kurbo::Rect;
+
+/// One drawn plan: its position, scale and size on paper.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct PlanDrawn {
+    pub position: String,
+    /// (m/s)/mm or (m/s²)/mm.
+    pub mu: f64,
+    /// Width and height of the plan on paper, mm.
+    pub size_mm: [f64; 2],
+}
+
+/// A region of plans: its group's id and region, its title, the plans' pole and the
+/// quantity and unit of their scale.
+pub(super) struct PlansRegion<'a> {
+    pub(super) id: &'a str,
+    pub(super) kind: &'a PlanKind,
+    pub(super) region: Rect,
+    pub(super) title: &'a str,
+    pub(super) pole: &'a str,
+    pub(super) symbol: &'a str,
+    pub(super) unit: &'a str,
+}
+
+impl PlansRegion<'_> {
+    /// The scale line of a plan of this kind at `mu`.
+    fn scale_line(&self, mu: f64, words: &LeverWords) -> LabelText {
+        LabelText::new("μ", self.symbol).with_tail(format!(
+            " = {} {}",
+            fmt::localise(&scale::format(mu), words.lang),
+            self.unit
+        ))
+    }
+
+    /// The plans' scales and cells below the region's header (see [`size_plans`]).
+    pub(super) fn sizing(&self, plans: &[Plan], positions: &[&Position], words: &LeverWords) -> Sizing {
+        let body = Rect::new(self.region.x0, self.region.y0 + HEADER, self.region.x1, self.region.y1);
+        // A cell holds its title (3.5 mm) and, at a scale of its own, its scale line (2.5 mm).
+        let min_w = positions
+            .iter()
+            .map(|p| LabelText::new(words.sheet.position(&p.label), "").width(3.5))
+            .fold(self.scale_line(0.0025, words).width(2.5), f64::max)
+            + 5.0;
+        size_plans(body, plans, self.pole, min_w)
+    }
+}
+
+/// Shares of a column tried for the velocity plans above the acceleration plans.
+const VELOCITY_SHARES: [f64; 7] = [0.46, 0.5, 0.54, 0.58, 0.62, 0.66, 0.7];
+
+/// Splits `column` between two kinds of plans, the first above: at the share whose smallest
+/// plan is largest (a plan off the common scale counts as no larger than the minimum), then
+/// whose largest velocity plan is largest. Returns each kind's region and sizing.
+pub(super) fn split_plans(
+    column: Rect,
+    kinds: [(&PlansRegion, &[Plan], &[&Position]); 2],
+    words: &LeverWords,
+) -> [(Rect, Sizing); 2] {
+    let split = |share: f64| {
+        let y = column.y0 + column.height() * share;
+        let regions =
+            [Rect::new(column.x0, column.y0, column.x1, y), Rect::new(column.x0, y + 4.0, column.x1, column.y1)];
+        let mut kind = kinds.iter().zip(regions).map(|((r, plans, positions), region)| {
+            (region, PlansRegion { region, ..**r }.sizing(plans, positions, words))
+        });
+        [kind.next().expect("two kinds"), kind.next().expect("two kinds")]
+    };
+    let score = |s: &[(Rect, Sizing); 2]| {
+        let [(least_v, largest_v), (least_a, _)] =
+            [0, 1].map(|k| (s[k].1.least_measured(kinds[k].1), s[k].1.largest(kinds[k].1)));
+        (least_v.min(least_a).min(2.0 * MIN_PLAN), largest_v)
+    };
+    VELOCITY_SHARES
+        .iter()
+        .map(|&share| {
+            let s = split(share);
+            (score(&s), s)
+        })
+        .max_by(|a, b| a.0.0.total_cmp(&b.0.0).then(a.0.1.total_cmp(&b.0.1)))
+        .map(|(_, s)| s)
+        .expect("shares to try")
+}
+
+/// Draws plans in the cells of their `sizing` (see [`size_plans`]) below the region's header; returns
+/// the group, what each plan became and the scale they share, if one.
+pub(super) fn plans_group(
+    r: &PlansRegion,
+    plans: &[Plan],
+    sizing: Sizing,
+    positions: Vec<&Position>,
+    words: &LeverWords,
+    answer: &AnswerKeys,
+) -> (Group, Vec<PlanDrawn>, Option<f64>, Vec<Segment>) {
+    let l = words.sheet;
+    let mut g = Group::new(r.id, r.region);
+    let scale_line = |mu: f64| r.scale_line(mu, words);
+    region_header(&mut g, r.region, r.title, &[scale_line(sizing.common)]);
+    let mut segments = Vec::new();
+    for (i, ((plan, &cell), pos)) in plans.iter().zip(&sizing.cells).zip(&positions).enumerate() {
+        let mu = sizing.mu[i];
+        let mut labels = Labels::new();
+        let title = l.position(&pos.label);
+        let c =
+            PlanCell { cell, title: &title, plan, mu, pole: r.pole, scale_line: sizing.own(i).then(|| scale_line(mu)) };
+        let start = g.mark();
+        draw_plan(&mut g, &c, &mut labels);
+        labels.place(&mut g, label_bounds(cell));
+        g.part_from(format!("plan.{}.{}", r.symbol, ascii_key(&pos.label)), start);
+        segments.extend(plan_segments(plan, r.kind, &pos.label, mu, answer));
+    }
+    let drawn = positions
+        .iter()
+        .zip(sizing.drawn(plans))
+        .zip(&sizing.mu)
+        .map(|((p, size_mm), &mu)| PlanDrawn { position: p.label.clone(), mu, size_mm })
+        .collect();
+    (g, drawn, (!plans.is_empty()).then_some(sizing.common), segments)
+}
