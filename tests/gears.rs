@@ -250,3 +250,40 @@ fn sheet_2_letters_its_tables_in_3_5_mm_where_they_fit() {
         assert_eq!(b.output.results["layout"]["outside_region"], 0, "{name}");
     }
 }
+
+/// The stage's ratio from its tooth numbers, written here: 1 + z3/z1 for a single row,
+/// 1 + z2·z3/(z1·z2′) for a double planet.
+fn stage_ratio(z: &[f64]) -> f64 {
+    match z {
+        [z1, _, z3] => 1.0 + z3 / z1,
+        [z1, z2, z2b, z3] => 1.0 + z2 * z3 / (z1 * z2b),
+        _ => panic!("a stage has 3 or 4 wheels: {z:?}"),
+    }
+}
+
+#[test]
+fn the_stage_ratio_is_read_off_the_plan_of_angular_velocities() {
+    let double = fixture_text("gears/shifted-double-planet");
+    for (name, text) in [("worked example", pipeline::DEFAULT_PROJECT), ("double planet", double.as_str())] {
+        let p = pipeline::load(text).unwrap();
+        let b = sheet2(&p);
+        let pl = &b.output.results["planetary"];
+        let z: Vec<f64> = pl["z"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+        let u = stage_ratio(&z);
+        let g = &pl["graphic"];
+        let (s1, sh) = (g["segment_01_mm"].as_f64().unwrap(), g["segment_0h_mm"].as_f64().unwrap());
+        // Exact as drawn: the segments are ω1 and ω_H at one scale.
+        assert!((s1 / sh - u).abs() / u < 1e-9, "{name}: 0–1 / 0–H = {s1} / {sh}, u = {u}");
+        assert!(sh >= 5.0 && s1 <= 120.0, "{name}: the plan measurable and on its region: {s1}, {sh}");
+        // Read as a student reads it: each segment to 0.1 mm, the error within that reading.
+        let read = |x: f64| (x * 10.0).round() / 10.0;
+        let got = g["ratio"].as_f64().unwrap();
+        assert!((got - read(s1) / read(sh)).abs() < 1e-12, "{name}: {got}");
+        let bound = u * (0.05 / read(sh) + 0.05 / read(s1)) * 1.001;
+        assert!((got - u).abs() <= bound, "{name}: read {got}, exact {u}, bound {bound}");
+        // The sheet prints the reading with its segments.
+        let printed = format!("{:.1} / {:.1}", read(s1), read(sh));
+        let comma = printed.replace('.', ",");
+        assert!(b.svg.contains(&printed) || b.svg.contains(&comma), "{name}: {printed} on the sheet");
+    }
+}

@@ -144,6 +144,8 @@ fn gear_pairs_and_planetary_stages() {
         Just(String::new()),
         (2.0f64..50.0, 0.5f64..6.0)
             .prop_map(|(u, m)| format!("\n  planetary: {{scheme: sun-planet-ring, module: {m:.1}, ratio: {u:.2}}}")),
+        (2.0f64..50.0, 0.5f64..6.0)
+            .prop_map(|(u, m)| format!("\n  planetary: {{scheme: double-planet, module: {m:.1}, ratio: {u:.2}}}")),
     ];
     let strategy =
         (5u32..=400, 5u32..=400, 0.5f64..20.0, shift, planetary).prop_map(|(z1, z2, m, shift, planetary)| {

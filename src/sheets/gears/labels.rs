@@ -49,6 +49,11 @@ crate::label_set! {
         driver,
         sub_drawn,
         sub_required,
+        linear_velocities,
+        angular_velocities,
+        graphic_ratio(s1, sh, u),
+        graphic_ratio_note(u, d),
+        graphic_ratio_unreadable,
     }
 }
 

@@ -7,10 +7,12 @@ mod mesh_view;
 mod planetary_view;
 mod results;
 mod segments;
+mod stage_velocities;
 mod tables;
 mod teeth_view;
 
 pub use mesh_view::MeshDrawn;
+pub use stage_velocities::{READ_TO_MM, Reading};
 pub use teeth_view::INVOLUTE_PIECES;
 
 use super::notes::Room;
@@ -53,6 +55,8 @@ pub struct GearsBuild {
     pub mesh: MeshDrawn,
     /// μ_l of the planetary views, m/mm.
     pub planetary_mu: Option<f64>,
+    /// The ratio read off the plan of angular velocities.
+    pub planetary_reading: Option<Reading>,
 }
 
 /// The parts of the mesh's and the planetary stage's drawings (their ids in the SVG, and
@@ -80,14 +84,22 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let right = Rect::new(RIGHT_X0, inner.y0 + 4.0, inner.x1 - 4.0, frame::title_block_rect().y0 - 4.0);
     let mut y_tables = right.y0;
     let mut planetary_mu = None;
-    if let Some(pl) = &p.planetary {
-        let (g, mu, bottom) = planetary_group(pl, right, &words);
-        measured.extend(segments::planetary(&pl.stage, pl.module, mu, PLANETARY_PART, &answers));
-        planetary_mu = Some(mu);
-        groups.push(g);
-        y_tables = bottom + 4.0;
-    }
+    let mut planetary_reading = None;
     let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
+    if let Some(pl) = &p.planetary {
+        // The views as large as the tables below them still fit in 3.5 mm lettering.
+        let fits = |share: f64| {
+            let below = Rect::new(right.x0, planetary_bottom(pl, right, share) + 4.0, right.x1, right.y1);
+            tables::fit_large(&notes, below, tolerance, &words, ctx.first_table)
+        };
+        let share = VIEW_SHARES.into_iter().find(|&s| fits(s)).unwrap_or(VIEW_SHARES[VIEW_SHARES.len() - 1]);
+        let drawn = planetary_group(pl, right, share, &words);
+        measured.extend(segments::planetary(&pl.stage, pl.module, drawn.mu, PLANETARY_PART, &answers));
+        planetary_mu = Some(drawn.mu);
+        planetary_reading = Some(drawn.reading);
+        groups.push(drawn.group);
+        y_tables = drawn.bottom + 4.0;
+    }
     groups.push(tables::group(
         &notes,
         Rect::new(right.x0, y_tables, right.x1, right.y1),
@@ -107,7 +119,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         smallest_plan_mm: None,
         segments: measured,
     };
-    Ok(GearsBuild { composition, mesh: drawn, planetary_mu })
+    Ok(GearsBuild { composition, mesh: drawn, planetary_mu, planetary_reading })
 }
 
 /// The notes under the mesh (its results, the sheet's notes and the assumptions) may take
@@ -183,14 +195,40 @@ fn mesh_notes(p: &GearsProject, words: &GearWords) -> Vec<String> {
     out
 }
 
-/// The planetary views in the top of `right`; returns the group, its μ_l and its bottom.
-fn planetary_group(pl: &PlanetaryProject, right: Rect, words: &GearWords) -> (Group, f64, f64) {
+/// The planetary stage as drawn: the views' group, their μ_l, the bottom of their region and
+/// the ratio read off the plan of angular velocities.
+struct PlanetaryDrawn {
+    group: Group,
+    mu: f64,
+    bottom: f64,
+    reading: Reading,
+}
+
+/// The shares of the right half's width the front view may take, largest first: the views
+/// take the largest that leaves the tables room below them.
+const VIEW_SHARES: [f64; 3] = [0.54, 0.5, 0.45];
+
+/// The planetary views' μ_l and their region in the top of `right` when the front view may
+/// take `share` of its width.
+fn planetary_frame(pl: &PlanetaryProject, right: Rect, share: f64) -> (f64, f64, Rect) {
+    let s = &pl.stage;
+    let mu = planetary_view::scale_for(s, pl.module, (right.width() * share - 10.0).min(260.0));
+    let across = 2.0 * planetary_view::extent(s, pl.module) / mu;
+    let view_h = across + 16.0;
+    (mu, across, Rect::new(right.x0, right.y0, right.x1, right.y0 + 14.0 + view_h + 6.0))
+}
+
+/// The bottom of the planetary views' region (see [`planetary_frame`]).
+fn planetary_bottom(pl: &PlanetaryProject, right: Rect, share: f64) -> f64 {
+    planetary_frame(pl, right, share).2.y1
+}
+
+/// The planetary views in the top of `right`: the front view, the kinematic scheme and beside
+/// it the pictures of linear and angular velocities, with the ratio read from them.
+fn planetary_group(pl: &PlanetaryProject, right: Rect, share: f64, words: &GearWords) -> PlanetaryDrawn {
     let (l, lang) = (words.sheet, words.lang);
     let s = &pl.stage;
-    let size = (right.width() * 0.5 - 10.0).min(190.0);
-    let mu = planetary_view::scale_for(s, pl.module, size);
-    let view_h = 2.0 * planetary_view::extent(s, pl.module) / mu + 16.0;
-    let region = Rect::new(right.x0, right.y0, right.x1, right.y0 + 14.0 + view_h + 6.0);
+    let (mu, across, region) = planetary_frame(pl, right, share);
     let mut g = Group::new("planetary", region);
     let title =
         l.planetary_title(&fmt::value(s.ratio, lang), &fmt::value(s.ratio_required, lang), &s.planets.to_string());
@@ -201,17 +239,63 @@ fn planetary_group(pl: &PlanetaryProject, right: Rect, words: &GearWords) -> (Gr
     };
     let sc = l.scale(&fmt::localise(&scale::ratio(mu), lang));
     g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 11.0), format!("{scheme}; {sc}"), 2.5, Anchor::Start));
-    let half = region.width() / 2.0;
-    let front = Rect::new(region.x0, region.y0 + 14.0, region.x0 + half, region.y1 - 6.0);
-    let side = Rect::new(region.x0 + half, region.y0 + 14.0, region.x1, region.y1 - 6.0);
+    let (top, bottom) = (region.y0 + 14.0, region.y1 - 6.0);
+    let front = Rect::new(region.x0, top, region.x0 + across + 14.0, bottom);
+    let scheme_w = ((region.x1 - front.x1) * 0.48).min(110.0);
+    let side = Rect::new(front.x1, top, front.x1 + scheme_w, bottom);
     g.text(Text::new(Point::new(front.center().x, region.y1 - 1.5), l.front_view(), 2.5, Anchor::Middle));
     g.text(Text::new(Point::new(side.center().x, region.y1 - 1.5), l.side_view(), 2.5, Anchor::Middle));
     let mut labels = Labels::new();
     let start = g.mark();
-    planetary_view::draw(&mut g, front, side, s, pl.module, mu, &mut labels);
+    let points = planetary_view::draw(&mut g, front, side, s, pl.module, mu, &mut labels);
+    let pictures = Rect::new(side.x1 + 4.0, top - 8.0, region.x1, region.y1 - 1.0);
+    let reading = velocity_pictures(&mut g, pictures, &points, s.ratio, words, &mut labels);
     labels.place(&mut g, region);
     g.part_from(PLANETARY_PART, start);
-    (g, mu, region.y1)
+    PlanetaryDrawn { group: g, mu, bottom: region.y1, reading }
+}
+
+/// The pictures of linear and angular velocities in `area` beside the scheme, their captions
+/// and the ratio read from them against the analytic `ratio`.
+fn velocity_pictures(
+    g: &mut Group,
+    area: Rect,
+    points: &planetary_view::SchemePoints,
+    ratio: f64,
+    words: &GearWords,
+    labels: &mut Labels,
+) -> Reading {
+    let (l, lang) = (words.sheet, words.lang);
+    let axis = points.axis.y;
+    // The caption of the linear velocities above C; the plan's caption and reading at the foot.
+    let caption_at = Point::new(area.x0 + 10.0, points.c.y - 3.0);
+    g.text(Text::new(caption_at, l.linear_velocities(), 2.5, Anchor::Start));
+    let read = |mm: f64| fmt::localise(&format!("{:.1}", Reading::read(mm)), lang);
+    let note = |u: f64| {
+        let difference = fmt::localise(&format!("{:.2}", (u - ratio) / ratio * 100.0), lang);
+        wrap(&l.graphic_ratio_note(&fmt::value(ratio, lang), &difference), CELL_TEXT, area.width() - 2.0)
+    };
+    // The plan leaves room under it for its caption, the reading and the note (whose length
+    // the reading hardly changes: a difference of −99,99 % is the longest).
+    let line = CELL_TEXT * crate::drawing::text::LINE_PITCH;
+    let foot = area.y1 - (2 + note(-99.99 * ratio).len()) as f64 * line - 2.0;
+    let upper = Rect::new(area.x0, area.y0, area.x1, axis);
+    let lower = Rect::new(area.x0, axis, area.x1, foot);
+    let reading = stage_velocities::draw(g, upper, lower, points, labels);
+    let (u_line, notes) = match reading.ratio {
+        Some(u) => (l.graphic_ratio(&read(reading.sun_mm), &read(reading.carrier_mm), &fmt::value(u, lang)), note(u)),
+        None => (l.graphic_ratio_unreadable().to_string(), Vec::new()),
+    };
+    let at = |y: f64| Point::new(area.x0 + 1.0, y);
+    let mut y = reading.bottom.min(foot) + line;
+    g.text(Text::new(at(y), l.angular_velocities(), CELL_TEXT, Anchor::Start));
+    y += line;
+    g.text(Text::new(at(y), "u", CELL_TEXT, Anchor::Start).with_sub("1H", u_line));
+    for text in notes {
+        y += line;
+        g.text(Text::new(at(y), text, CELL_TEXT, Anchor::Start));
+    }
+    reading
 }
 
 impl Sheet for GearsSheet<'_> {

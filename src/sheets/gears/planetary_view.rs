@@ -1,6 +1,7 @@
 //! The planetary stage in two views at one GOST scale: the front view (pitch circles of the
 //! sun, the planets and the ring, the carrier's arms) and the side view as a kinematic
-//! scheme (shafts, the carrier, the gear rims, the fixed ring and the bearings).
+//! scheme by GOST 2.770 (shafts in their bearings with their senses of rotation, the gears'
+//! rims, the fixed ring, the carrier).
 
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, Group, MAIN, THIN};
@@ -8,9 +9,9 @@ use crate::drawing::symbols;
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::gears::planetary::Stage;
-use crate::num::math::from_angle;
+use crate::num::math::{self, from_angle};
 use kurbo::{Point, Rect, Vec2};
-use std::f64::consts::{FRAC_PI_2, TAU};
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// The stage's pitch radii (m): sun, planet meshing the sun, planet meshing the ring (the
 /// same for a single row), ring; and the carrier's radius.
@@ -50,12 +51,13 @@ struct Drawn<'a> {
     double: bool,
 }
 
-/// Draws the front view centred in `front` and the kinematic scheme in `side`, at μ_l `mu`.
-pub fn draw(g: &mut Group, front: Rect, side: Rect, s: &Stage, m: f64, mu: f64, labels: &mut Labels) {
+/// Draws the front view centred in `front` and the kinematic scheme in `side`, at μ_l `mu`;
+/// returns the scheme's points for the velocity picture.
+pub fn draw(g: &mut Group, front: Rect, side: Rect, s: &Stage, m: f64, mu: f64, labels: &mut Labels) -> SchemePoints {
     let view = View::new(front.center(), mu);
     let drawn = Drawn { stage: s, r: radii(s, m), m, view, double: s.z.len() == 4 };
     front_view(g, front, &drawn, labels);
-    kinematic_scheme(g, side, &drawn, labels);
+    kinematic_scheme(g, side, &drawn, labels)
 }
 
 /// The front view: the pitch circles, the ring's rim, the carrier's circle and arms.
@@ -103,73 +105,122 @@ fn front_view(g: &mut Group, front: Rect, st: &Drawn, labels: &mut Labels) {
     labels.add_text_ranked(o + Vec2::new(0.0, -v.len(r.carrier) * 0.5), Vec2::new(1.0, 0.0), "H", 3.5, 0);
 }
 
-/// The side view as a kinematic scheme, symmetric about the axis across: the input shaft
-/// and the sun, the planets' rims on the carrier, the fixed ring held by the frame, the
-/// carrier H and the output shaft, the bearings.
-fn kinematic_scheme(g: &mut Group, side: Rect, st: &Drawn, labels: &mut Labels) {
+/// Where the kinematic scheme puts the points the velocity picture projects (paper mm): the
+/// axis, the sun's pitch point A, the planet's axle B and the planet's contact with the ring C
+/// (each the right end of its rim on the scheme), with their heights above the axis.
+#[derive(Debug, Clone, Copy)]
+pub struct SchemePoints {
+    pub axis: Point,
+    pub a: Point,
+    pub b: Point,
+    pub c: Point,
+}
+
+/// Half the length of a gear's rim on the scheme (its face width), mm.
+const RIM_HALF: f64 = 4.0;
+/// Two rims in mesh are drawn this far apart, mm: the double line of a mesh.
+const MESH_GAP: f64 = 1.5;
+
+/// The side view as a kinematic scheme by GOST 2.770, symmetric about the axis across: the
+/// input shaft in its bearing with ω₁ and the sun 1 on it; each planet 2 (with 2′ on its axle
+/// for a double planet) on the carrier's axle; the ring 3 fixed to the frame (hatched); the
+/// carrier H as an arm on the output shaft in its bearing with ω_H. Every gear is its
+/// diameter across the axis with its rim at both ends; rims in mesh are a double line.
+fn kinematic_scheme(g: &mut Group, side: Rect, st: &Drawn, labels: &mut Labels) -> SchemePoints {
     let (r, v, double) = (&st.r, st.view, st.double);
-    let c = Point::new(side.x0 + 0.15 * side.width(), side.center().y);
-    let x_sun = c.x + 0.25 * side.width();
-    let x_ring = if double { x_sun + 16.0 } else { x_sun };
-    let x_h = x_ring + 0.25 * side.width();
-    let x_out = side.x1 - 6.0;
-    let x_in = side.x0 + 4.0;
-    g.line(Point::new(x_in - 2.0, c.y), Point::new(x_out + 2.0, c.y), AXIS);
-    // Input shaft and the sun.
-    g.line(Point::new(x_in, c.y), Point::new(x_sun, c.y), MAIN);
-    // Gears meshing in one plane meet at their pitch radii: a small gap there keeps each rim
-    // a line of its own, as kinematic schemes draw them.
-    let gap = 0.8;
-    let ys = v.len(r.sun);
-    g.line(Point::new(x_sun, c.y - ys + gap), Point::new(x_sun, c.y + ys - gap), MAIN);
-    for side_sign in [-1.0, 1.0] {
-        let ya = c.y + side_sign * v.len(r.carrier);
-        // The planet's rims and its axle on the carrier.
-        let rim = |g: &mut Group, x: f64, half: f64| {
-            g.line(Point::new(x, ya - half + gap), Point::new(x, ya + half - gap), MAIN);
-        };
-        rim(g, x_sun, v.len(r.planet));
+    let (w, cy) = (side.width(), side.center().y);
+    let x_in = side.x0 + 3.0;
+    let x_sun = side.x0 + 0.34 * w;
+    let x_ring = if double { x_sun + 4.0 * RIM_HALF + 2.0 } else { x_sun };
+    let x_h = x_ring + 0.24 * w;
+    let x_out = side.x1 - 3.0;
+    let y = |sign: f64, radius: f64| cy + sign * v.len(radius);
+    g.line(Point::new(x_in - 2.0, cy), Point::new(x_out + 2.0, cy), AXIS);
+    // The input shaft with the sun, the carrier's arm with the output shaft.
+    g.line(Point::new(x_in, cy), Point::new(x_sun, cy), MAIN);
+    g.line(Point::new(x_h, y(-1.0, r.carrier)), Point::new(x_h, y(1.0, r.carrier)), MAIN);
+    g.line(Point::new(x_h, cy), Point::new(x_out, cy), MAIN);
+    let half_gap = MESH_GAP / 2.0;
+    gear(g, x_sun, cy - v.len(r.sun) + half_gap, cy + v.len(r.sun) - half_gap);
+    for sign in [-1.0, 1.0] {
+        let lo = |a: f64, b: f64| (a.min(b), a.max(b));
+        // The planet meshes the sun at r1 and (a single row) the ring at r3.
+        let inner = y(sign, r.sun) + sign * half_gap;
+        let outer = y(sign, r.carrier + r.planet) - if double { 0.0 } else { sign * half_gap };
+        let (a, b) = lo(inner, outer);
+        gear(g, x_sun, a, b);
         if double {
-            rim(g, x_ring, v.len(r.planet2));
+            let (a, b) = lo(y(sign, r.carrier - r.planet2), y(sign, r.ring) - sign * half_gap);
+            gear(g, x_ring, a, b);
         }
-        g.line(Point::new(x_sun - 6.0, ya), Point::new(x_h, ya), MAIN);
-        fixed_ring(g, x_ring, c.y + side_sign * v.len(r.ring), side_sign, gap);
+        // The planet's axle on the carrier.
+        g.line(Point::new(x_sun, y(sign, r.carrier)), Point::new(x_h, y(sign, r.carrier)), MAIN);
+        fixed_ring(g, x_ring, y(sign, r.ring) + sign * half_gap, sign);
     }
-    // The carrier H and the output shaft.
-    g.line(Point::new(x_h, c.y - v.len(r.carrier)), Point::new(x_h, c.y + v.len(r.carrier)), MAIN);
-    g.line(Point::new(x_h, c.y), Point::new(x_out, c.y), MAIN);
-    // Bearings on the input and output shafts.
-    for x in [x_in + 0.35 * (x_sun - x_in), x_h + 0.5 * (x_out - x_h)] {
-        for sgn in [-1.0, 1.0] {
-            let b = Point::new(x, c.y + sgn * 1.6);
-            g.path(vec![b, b + Vec2::new(-2.0, sgn * 3.5), b + Vec2::new(2.0, sgn * 3.5)], true, THIN);
-        }
+    // The bearings nearer the gears, the senses of rotation at the shafts' free ends.
+    for x in [x_in + 0.62 * (x_sun - x_in), x_h + 0.4 * (x_out - x_h)] {
+        bearing(g, Point::new(x, cy));
     }
+    shaft_turn(g, Point::new(x_in + 3.0, cy), labels, LabelText::new("ω", "1"));
+    shaft_turn(g, Point::new(x_out - 3.0, cy), labels, LabelText::new("ω", "H"));
     let lab = |labels: &mut Labels, at: Point, t: &str, pref: Vec2| {
         labels.add_ranked(at, pref, LabelText::new(t, ""), 3.5, 0);
     };
-    lab(labels, Point::new(x_sun, c.y - ys * 0.6), "1", Vec2::new(-1.0, 0.0));
-    lab(labels, Point::new(x_sun, c.y - v.len(r.carrier) - v.len(r.planet) * 0.6), "2", Vec2::new(-1.0, 0.0));
+    lab(labels, Point::new(x_sun, cy - v.len(r.sun) * 0.5), "1", Vec2::new(-1.0, 0.0));
+    let planet_mid = y(-1.0, r.carrier + r.planet * 0.5);
+    lab(labels, Point::new(x_sun, planet_mid), "2", Vec2::new(-1.0, 0.0));
     if double {
-        lab(labels, Point::new(x_ring, c.y - v.len(r.carrier) + v.len(r.planet2) * 0.6), "2′", Vec2::new(1.0, 0.0));
+        lab(labels, Point::new(x_ring, y(-1.0, r.carrier + r.planet2 * 0.5)), "2′", Vec2::new(1.0, 0.0));
     }
-    lab(labels, Point::new(x_ring, c.y - v.len(r.ring) - 4.0), "3", Vec2::new(1.0, 0.0));
-    lab(labels, Point::new(x_h, c.y - v.len(r.carrier) * 0.5), "H", Vec2::new(1.0, 0.0));
+    lab(labels, Point::new(x_ring, y(-1.0, r.ring) - 4.0), "3", Vec2::new(-1.0, 0.0));
+    lab(labels, Point::new(x_h, y(-1.0, r.carrier * 0.5)), "H", Vec2::new(1.0, 0.0));
+    SchemePoints {
+        axis: Point::new(x_h, cy),
+        a: Point::new(x_sun + RIM_HALF, y(-1.0, r.sun)),
+        b: Point::new(x_h, y(-1.0, r.carrier)),
+        c: Point::new(x_ring + RIM_HALF, y(-1.0, r.ring)),
+    }
 }
 
-/// The fixed ring's rim at `yr` on one side (`side_sign` ±1), turned back toward the planet,
-/// held by the frame.
-fn fixed_ring(g: &mut Group, x_ring: f64, yr: f64, side_sign: f64, gap: f64) {
-    g.path(
-        vec![
-            Point::new(x_ring - 5.0, yr + side_sign * gap),
-            Point::new(x_ring, yr + side_sign * gap),
-            Point::new(x_ring, yr + side_sign * 8.0),
-        ],
-        false,
-        MAIN,
-    );
-    let yf = yr + side_sign * 8.0;
+/// A gear on the scheme: its diameter from `y0` to `y1` at `x`, its rim at both ends.
+fn gear(g: &mut Group, x: f64, y0: f64, y1: f64) {
+    g.line(Point::new(x, y0), Point::new(x, y1), MAIN);
+    for y in [y0, y1] {
+        g.line(Point::new(x - RIM_HALF, y), Point::new(x + RIM_HALF, y), MAIN);
+    }
+}
+
+/// The fixed ring's rim at `yr` on one side (`sign` ±1), its body out to the frame (hatched).
+fn fixed_ring(g: &mut Group, x_ring: f64, yr: f64, sign: f64) {
+    g.line(Point::new(x_ring - RIM_HALF, yr), Point::new(x_ring + RIM_HALF, yr), MAIN);
+    let yf = yr + sign * 7.0;
+    g.line(Point::new(x_ring, yr), Point::new(x_ring, yf), MAIN);
     g.line(Point::new(x_ring - 6.0, yf), Point::new(x_ring + 6.0, yf), MAIN);
-    symbols::hatch(g, Point::new(x_ring - 6.0, yf), Point::new(x_ring + 6.0, yf), Vec2::new(0.0, side_sign), 2.0);
+    symbols::hatch(g, Point::new(x_ring - 6.0, yf), Point::new(x_ring + 6.0, yf), Vec2::new(0.0, sign), 2.0);
+}
+
+/// A radial bearing on the shaft at `c` (GOST 2.770: a short line along the shaft on each
+/// side), held by the frame (hatched).
+fn bearing(g: &mut Group, c: Point) {
+    for sign in [-1.0, 1.0] {
+        let (a, b) = (c + Vec2::new(-3.5, sign * 2.2), c + Vec2::new(3.5, sign * 2.2));
+        g.line(a, b, MAIN);
+        symbols::hatch(g, a, b, Vec2::new(0.0, sign), 1.6);
+    }
+}
+
+/// A shaft's sense of rotation at `c`: an arrow turning round the shaft (the near half of its
+/// circle seen edge-on), named by `name`.
+fn shaft_turn(g: &mut Group, c: Point, labels: &mut Labels, name: LabelText) {
+    let (rx, ry) = (2.0, 5.0);
+    let pts: Vec<Point> = (0..=16)
+        .map(|i| {
+            let t = -0.4 * PI + 1.3 * PI * f64::from(i) / 16.0;
+            c + Vec2::new(rx * math::cos(t), ry * math::sin(t))
+        })
+        .collect();
+    let (tip, back) = (pts[pts.len() - 1], pts[pts.len() - 3]);
+    g.path(pts, false, THIN);
+    symbols::arrowhead(g, tip, tip - back);
+    labels.add_ranked(c + Vec2::new(0.0, -ry), Vec2::new(0.0, -1.0), name, 3.5, 0);
 }

@@ -1,6 +1,6 @@
 //! Sheet 2's section of `results.json`, typed (SI; angles in degrees with `_deg`).
 
-use super::{GearsBuild, INVOLUTE_PIECES};
+use super::{GearsBuild, INVOLUTE_PIECES, READ_TO_MM};
 use crate::gears::pair::Pair;
 use crate::gears::planetary::ConditionKind;
 use crate::project::GearsProject;
@@ -69,6 +69,18 @@ struct PlanetaryOut<'a> {
     tolerance: f64,
     module: f64,
     conditions: Vec<ConditionOut>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    graphic: Option<GraphicOut>,
+}
+
+/// The ratio read off the plan of angular velocities: the segments 0–1 and 0–H as drawn (mm),
+/// the ratio of the two read to `read_to_mm` (absent when 0–H reads shorter than that).
+#[derive(Serialize)]
+struct GraphicOut {
+    segment_01_mm: f64,
+    segment_0h_mm: f64,
+    read_to_mm: f64,
+    ratio: Option<f64>,
 }
 
 #[derive(Serialize)]
@@ -140,6 +152,12 @@ pub fn section(p: &GearsProject, b: &GearsBuild) -> serde_json::Value {
                 .iter()
                 .map(|c| ConditionOut { name: c.name, value: c.value, limit: c.limit, ok: c.ok })
                 .collect(),
+            graphic: b.planetary_reading.map(|r| GraphicOut {
+                segment_01_mm: r.sun_mm,
+                segment_0h_mm: r.carrier_mm,
+                read_to_mm: READ_TO_MM,
+                ratio: r.ratio,
+            }),
         }),
     };
     serde_json::to_value(&out).expect("the results serialise")
