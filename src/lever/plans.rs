@@ -81,7 +81,8 @@ pub struct Seg {
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Image {
-    /// Lowercase label of the point ("b", "s2"); auxiliary points are "n1", "k".
+    /// Lowercase label of the point ("b", "s2"); auxiliary points are "k" and the normal
+    /// components' ends named by their pair, "n_BA" (what follows "_" is a subscript).
     pub label: String,
     pub at: Vec2,
 }
@@ -163,7 +164,6 @@ pub fn velocity_plan(m: &Mechanism, s: &State) -> Plan {
 pub fn acceleration_plan(m: &Mechanism, s: &State) -> Plan {
     let mut plan = Plan::default();
     images_and_absolutes(m, s, &mut plan, true);
-    let mut n = 0;
     for r in relations(m) {
         let (x, y) = (s.points[r.x], s.points[r.y]);
         let link = &s.links[r.link];
@@ -177,10 +177,11 @@ pub fn acceleration_plan(m: &Mechanism, s: &State) -> Plan {
             continue;
         }
         let (_, an, _) = relative(x.p - y.p, link);
-        n += 1;
         let corner = y.a + an;
-        plan.seg(y.a, corner, SegKind::Normal, pair(m, &r), m.is_frame(r.y));
-        plan.image(format!("n{n}"), corner);
+        let (xn, yn) = pair(m, &r);
+        // Named by its pair, as the guide names it: n_BA ends aⁿ_BA.
+        plan.image(format!("n_{xn}{yn}"), corner);
+        plan.seg(y.a, corner, SegKind::Normal, (xn, yn), m.is_frame(r.y));
         plan.seg(corner, x.a, SegKind::Tangential, pair(m, &r), false);
         // The whole relative acceleration: the line on which the images of the link's other
         // points (its centre of mass) lie by similarity.

@@ -111,9 +111,16 @@ impl Labels {
     /// One label of several plain lines stacked and centred, the first nearest `pref`'s
     /// side (names of one point too many for one line: "p=b=s3=" over "c=s4=s5").
     pub fn add_text_lines(&mut self, anchor: Point, pref: Vec2, lines: &[String], h: f64) {
-        let Some((first, more)) = lines.split_first() else { return };
-        let more = more.iter().map(|l| LabelText::new(l, "")).collect();
-        self.requests.push(Request { more, ..Request::new(anchor, pref, LabelText::new(first, ""), h) });
+        self.add_label_lines(anchor, pref, lines.iter().map(|l| LabelText::new(l, "")).collect(), h);
+    }
+
+    /// As [`Labels::add_text_lines`], each line a label with its subscript ("a=n" over "BA").
+    pub fn add_label_lines(&mut self, anchor: Point, pref: Vec2, mut lines: Vec<LabelText>, h: f64) {
+        if lines.is_empty() {
+            return;
+        }
+        let first = lines.remove(0);
+        self.requests.push(Request { more: lines, ..Request::new(anchor, pref, first, h) });
     }
 
     /// A line's name (a profile's, a circle's) with `anchor` on the line: set off on a leader

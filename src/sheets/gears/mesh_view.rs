@@ -78,6 +78,8 @@ fn clipped_line(g: &mut Group, a: Point, b: Point, region: Rect, pen: Pen) {
 pub struct MeshInput<'a> {
     pub pair: &'a Pair,
     pub outlines: [&'a Outline; 2],
+    /// The dimensions' values are written in its numbers.
+    pub lang: crate::drawing::labels::Language,
 }
 
 /// The three tooth centres of each wheel nearest the line of centres, in mesh: wheel 1's
@@ -138,6 +140,7 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     let points = MeshPoints::of(p);
     let tau = draw_lines(g, v, area, pp, p, &points);
     let contact_ratio_drawn = draw_arc_of_action(g, v, inp, &fl1, centres[0][1], &points);
+    super::mesh_dimensions::draw(g, labels, v, area, p, centres[0][0], inp.lang);
     point_labels(labels, v, area, &points);
     senses_of_rotation(g, labels, v, area, &points);
     labels.add_ranked(pp - Vec2::new(tau, 0.0), Vec2::new(0.0, -1.0), LabelText::new("τ", ""), 3.5, 1);
@@ -376,7 +379,11 @@ mod tests {
             let spec = PairSpec { shift: x, ..PairSpec::standard(0.005, z) };
             let pair = Pair::new(&spec).unwrap();
             let outlines = [Outline::new(&spec, &pair.wheels[0]), Outline::new(&spec, &pair.wheels[1])];
-            let inp = MeshInput { pair: &pair, outlines: [&outlines[0], &outlines[1]] };
+            let inp = MeshInput {
+                pair: &pair,
+                outlines: [&outlines[0], &outlines[1]],
+                lang: crate::drawing::labels::Language::En,
+            };
             let centres = tooth_centres(&inp);
             let o = [Vec2::ZERO, Vec2::new(0.0, pair.centre_distance)];
             let mut allowance = 1e-12;
@@ -421,7 +428,11 @@ mod tests {
             let d = draw_mesh(
                 &mut g,
                 Rect::new(2.0, 10.0, 418.0, 540.0),
-                &MeshInput { pair: &pair, outlines: [&outlines[0], &outlines[1]] },
+                &MeshInput {
+                    pair: &pair,
+                    outlines: [&outlines[0], &outlines[1]],
+                    lang: crate::drawing::labels::Language::En,
+                },
                 &mut labels,
             );
             // The drawn ends are rounded to 1 µm on paper, about 20 mm from each other.

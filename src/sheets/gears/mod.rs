@@ -3,6 +3,7 @@
 //! views and the tables on the right, the notes and the title block.
 
 pub mod labels;
+mod mesh_dimensions;
 mod mesh_view;
 mod planetary_view;
 mod results;
@@ -151,8 +152,12 @@ fn mesh_group(p: &GearsProject, words: &GearWords) -> Result<(Group, MeshDrawn),
     room.check(&assumptions, notes_h)?;
     let area = Rect::new(MESH.x0 + 2.0, MESH.y0 + 10.0, MESH.x1 - 2.0, MESH.y1 - notes_h);
     let start = mesh.mark();
-    let drawn =
-        draw_mesh(&mut mesh, area, &MeshInput { pair: &p.pair, outlines: [&outlines[0], &outlines[1]] }, &mut labels);
+    let drawn = draw_mesh(
+        &mut mesh,
+        area,
+        &MeshInput { pair: &p.pair, outlines: [&outlines[0], &outlines[1]], lang },
+        &mut labels,
+    );
     // Its labels stay inside the drawing's area, clear of the notes below it.
     labels.place(&mut mesh, area);
     mesh.part_from(MESH_PART, start);

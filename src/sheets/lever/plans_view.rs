@@ -118,7 +118,7 @@ fn longest_label(plan: &Plan, pole: &str) -> f64 {
             None => groups.push((img.at, vec![img.label.clone()])),
         }
     }
-    groups.iter().flat_map(|(_, names)| lines(names)).map(|n| LabelText::new(n, "").width(3.5)).fold(0.0, f64::max)
+    groups.iter().flat_map(|(_, names)| label_lines(names)).map(|l| l.width(3.5)).fold(0.0, f64::max)
 }
 
 /// Names sharing one point as the lines of one stacked label, at most [`SHARED_PER_LABEL`]
@@ -298,9 +298,36 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
             g.dot(*at, 0.35);
         }
         let pref = if (*at - centre).norm() < tol::PAPER { Vec2::new(-1.0, 1.0) } else { *at - centre };
-        labels.add_text_lines(*at, pref, &lines(names), 3.5);
+        labels.add_label_lines(*at, pref, label_lines(names), 3.5);
     }
     pole_p
+}
+
+/// The lines of names sharing a point as labels, a line's first "_" setting the pair's
+/// letters after it as a subscript: "a=n_BA" is "a=n" with "BA" below, "n_BA=b" is "n", "BA"
+/// and "=b" after. A label holds one subscript, so a line with two subscripted names (two
+/// normals ending at one point) is broken before the second: "n_BA=" over "n_CD".
+fn label_lines(names: &[String]) -> Vec<LabelText> {
+    let mut out = Vec::new();
+    for line in lines(names) {
+        let mut piece = String::new();
+        for (k, name) in line.split_inclusive('=').enumerate() {
+            if k > 0 && name.contains('_') && piece.contains('_') {
+                out.push(subscripted(&std::mem::take(&mut piece)));
+            }
+            piece.push_str(name);
+        }
+        out.push(subscripted(&piece));
+    }
+    out
+}
+
+/// One label line with at most one subscripted name (see [`label_lines`]).
+fn subscripted(line: &str) -> LabelText {
+    let Some((main, rest)) = line.split_once('_') else { return LabelText::new(line, "") };
+    let sub_len = rest.find(|c: char| !c.is_ascii_uppercase()).unwrap_or(rest.len());
+    let (sub, tail) = rest.split_at(sub_len);
+    LabelText::new(main, sub).with_tail(tail)
 }
 
 /// The box inside a cell that its labels may use.
@@ -320,6 +347,23 @@ mod tests {
         assert_eq!(lines(&names(&["b", "d", "s4", "s5"])), ["b=d=", "s4=s5"]);
         assert_eq!(lines(&names(&["a"])), ["a"]);
         assert!(lines(&names(&["p", "b", "s3", "c"])).iter().all(|l| !l.starts_with('=')));
+    }
+
+    #[test]
+    fn a_normal_components_end_is_named_with_its_pair_as_a_subscript() {
+        let parts = |l: &str| {
+            let t = subscripted(l);
+            (t.main, t.sub, t.tail)
+        };
+        let own = |a: &str, b: &str, c: &str| (a.to_string(), b.to_string(), c.to_string());
+        assert_eq!(parts("n_BA"), own("n", "BA", ""));
+        assert_eq!(parts("a=n_BA"), own("a=n", "BA", ""));
+        assert_eq!(parts("n_BA=b="), own("n", "BA", "=b="));
+        assert_eq!(parts("p=b=s3="), own("p=b=s3=", "", ""));
+        let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        let split: Vec<_> =
+            label_lines(&names(&["a", "n_BA", "n_CD"])).into_iter().map(|t| (t.main, t.sub, t.tail)).collect();
+        assert_eq!(split, [own("a=n", "BA", "="), own("n", "CD", "")], "one subscript a line");
     }
 
     #[test]

@@ -1,0 +1,80 @@
+//! The mesh's dimensions as the course's drawings give them, in the wheels' true sizes (mm):
+//! on wheel 1's pitch circle the tooth thickness s, the space e and the pitch p, as arc
+//! dimensions in the wheel's body under its teeth, right of the line of centres (left of it
+//! the space's flank runs through P, on the line itself). A dimension whose lines would leave
+//! the drawing's area is not drawn. a_w is not dimensioned: its line would cross both
+//! wheels' circles and teeth from O1 to O2; the table gives it.
+
+use crate::drawing::fmt;
+use crate::drawing::labels::Language;
+use crate::drawing::path::Path;
+use crate::drawing::place::Labels;
+use crate::drawing::scene::{Group, THIN};
+use crate::drawing::symbols::{self, ARROW_LEN};
+use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
+use crate::gears::pair::Pair;
+use crate::num::math::from_angle;
+use crate::num::units::mm;
+use kurbo::{Rect, Vec2};
+
+/// The dimension arcs of s and e this far inside wheel 1's root circle, and p's further in, mm.
+const S_INSIDE_ROOT: f64 = 8.0;
+const P_INSIDE_ROOT: f64 = 18.0;
+
+/// Draws s, e and p on wheel 1: s on its tooth centred at world angle `tooth`, e on the space
+/// after it (toward the line of centres), p over both; their values' labels go to `labels`.
+pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, tooth: f64, lang: Language) {
+    let w1 = &p.wheels[0];
+    let step = std::f64::consts::TAU / f64::from(w1.z);
+    let psi = w1.tooth_thickness / (2.0 * w1.pitch);
+    let value = |name: &str, x: f64| LabelText::new(name, "").with_tail(format!(" = {}", fmt::value(mm(x), lang)));
+    let r_s = v.len(w1.root) - S_INSIDE_ROOT;
+    let r_p = v.len(w1.root) - P_INSIDE_ROOT;
+    let arc = Arc { v, area, r_feature: v.len(w1.pitch) };
+    let (right, left) = (tooth - psi, tooth + psi);
+    let next = tooth + step - psi;
+    arc.dimension(g, labels, r_s, (right, left), value("s", w1.tooth_thickness));
+    arc.dimension(g, labels, r_s, (left, next), value("e", p.pitch - w1.tooth_thickness));
+    arc.dimension(g, labels, r_p, (right, next), value("p", p.pitch));
+}
+
+/// Arc dimensions about wheel 1's centre from features on the circle of paper radius
+/// `r_feature`.
+struct Arc {
+    v: View,
+    area: Rect,
+    r_feature: f64,
+}
+
+impl Arc {
+    /// The dimension between world angles `(a0, a1)` (a0 < a1) on a dimension arc of paper
+    /// radius `r`: extension lines from the features to 2 mm past the arc, the arc with its
+    /// arrowheads (inside when they fit, else outside on 5 mm), the value beside its middle.
+    fn dimension(&self, g: &mut Group, labels: &mut Labels, r: f64, (a0, a1): (f64, f64), value: LabelText) {
+        let c = self.v.p(Vec2::ZERO);
+        let at = |a: f64, radius: f64| {
+            let u = from_angle(a);
+            c + Vec2::new(u.x, -u.y) * radius
+        };
+        let ends = [at(a0, self.r_feature - 1.0), at(a1, self.r_feature - 1.0), at(a0, r - 2.0), at(a1, r - 2.0)];
+        if r < 10.0 || !ends.iter().all(|q| self.area.contains(*q)) {
+            return;
+        }
+        for a in [a0, a1] {
+            g.line(at(a, self.r_feature - 1.0), at(a, r - 2.0), THIN);
+        }
+        let length = r * (a1 - a0);
+        // Paper angles run the other way (y down).
+        let inside = length >= 2.0 * ARROW_LEN + 2.0;
+        let out = if inside { 0.0 } else { 5.0 / r };
+        g.curve(Path::arc(c, r, -(a0 - out), -(a1 - a0 + 2.0 * out)), THIN);
+        let tangent = |a: f64, toward: f64| at(a, r) - at(a + toward * 0.5 / r, r);
+        let sign = if inside { 1.0 } else { -1.0 };
+        symbols::arrowhead(g, at(a0, r), tangent(a0, sign));
+        symbols::arrowhead(g, at(a1, r), tangent(a1, -sign));
+        let mid = (a0 + a1) / 2.0;
+        // The value over its arc, as a dimension's text stands over its line.
+        labels.add_ranked(at(mid, r), at(mid, r + 1.0) - at(mid, r), value, 3.5, 1);
+    }
+}
