@@ -304,7 +304,7 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
 }
 
 /// The lines of names sharing a point as labels, a line's first "_" setting the pair's
-/// letters after it as a subscript: "a=n_BA" is "a=n" with "BA" below, "n_BA=b" is "n", "BA"
+/// names after it (to the next "=") as a subscript: "a=n_BA" is "a=n" with "BA" below, "n_BA=b" is "n", "BA"
 /// and "=b" after. A label holds one subscript, so a line with two subscripted names (two
 /// normals ending at one point) is broken before the second: "n_BA=" over "n_CD".
 fn label_lines(names: &[String]) -> Vec<LabelText> {
@@ -325,7 +325,8 @@ fn label_lines(names: &[String]) -> Vec<LabelText> {
 /// One label line with at most one subscripted name (see [`label_lines`]).
 fn subscripted(line: &str) -> LabelText {
     let Some((main, rest)) = line.split_once('_') else { return LabelText::new(line, "") };
-    let sub_len = rest.find(|c: char| !c.is_ascii_uppercase()).unwrap_or(rest.len());
+    // The pair's names run to the next name ("O3O1" of n_O3O1 holds digits).
+    let sub_len = rest.find('=').unwrap_or(rest.len());
     let (sub, tail) = rest.split_at(sub_len);
     LabelText::new(main, sub).with_tail(tail)
 }
@@ -360,6 +361,7 @@ mod tests {
         assert_eq!(parts("a=n_BA"), own("a=n", "BA", ""));
         assert_eq!(parts("n_BA=b="), own("n", "BA", "=b="));
         assert_eq!(parts("p=b=s3="), own("p=b=s3=", "", ""));
+        assert_eq!(parts("a3=n_O3O1=k"), own("a3=n", "O3O1", "=k"), "names with digits");
         let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
         let split: Vec<_> =
             label_lines(&names(&["a", "n_BA", "n_CD"])).into_iter().map(|t| (t.main, t.sub, t.tail)).collect();
