@@ -7,9 +7,10 @@
 
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
+use crate::drawing::obstacles::{Obstacles, Piece};
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
-use crate::drawing::scene::{Group, THIN};
+use crate::drawing::scene::{Anchor, Group, THIN};
 use crate::drawing::symbols::{self, ARROW_LEN};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
@@ -19,11 +20,13 @@ use crate::num::units::mm;
 use kurbo::{Rect, Vec2};
 
 /// The dimension arcs of s and e this far inside wheel 1's root circle, and p's further in, mm.
-const S_INSIDE_ROOT: f64 = 8.0;
-const P_INSIDE_ROOT: f64 = 18.0;
+const S_INSIDE_ROOT: f64 = 12.0;
+const P_INSIDE_ROOT: f64 = 26.0;
+/// The values' lettering, mm.
+const TEXT_H: f64 = 3.5;
 
 /// Draws s, e and p on wheel 1: s on its tooth centred at world angle `tooth`, e on the space
-/// after it (toward the line of centres), p over both; their values' labels go to `labels`.
+/// after it (toward the line of centres), p over both, each value over its arc.
 pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, tooth: f64, lang: Language) {
     let w1 = &p.wheels[0];
     let step = std::f64::consts::TAU / f64::from(w1.z);
@@ -34,9 +37,27 @@ pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, t
     let arc = Arc { v, area, r_feature: v.len(w1.pitch) };
     let (right, left) = (tooth - psi, tooth + psi);
     let next = tooth + step - psi;
-    arc.dimension(g, labels, r_s, (right, left), value("s", w1.tooth_thickness));
-    arc.dimension(g, labels, r_s, (left, next), value("e", p.pitch - w1.tooth_thickness));
-    arc.dimension(g, labels, r_p, (right, next), value("p", p.pitch));
+    let values = [
+        arc.dimension(g, r_s, (right, left), value("s", w1.tooth_thickness)),
+        arc.dimension(g, r_s, (left, next), value("e", p.pitch - w1.tooth_thickness)),
+        arc.dimension(g, r_p, (right, next), value("p", p.pitch)),
+    ];
+    // Each value level over its arc's middle, raised along the radius until it meets nothing
+    // drawn (nor a value set before it); where no height up to 8 mm is clear, the label
+    // placer sets it off on a leader.
+    let mut drawn = Obstacles::of_items(&g.items);
+    for Value { r, mid, text } in values.into_iter().flatten() {
+        let set = (0..=14)
+            .map(|k| text.text(arc.at(mid, r + 1.0 + 0.5 * f64::from(k)), TEXT_H, Anchor::Middle))
+            .find(|t| drawn.is_clear(t.bbox().inflate(0.5, 0.5)));
+        match set {
+            Some(t) => {
+                drawn.add(Piece::TextBox(t.bbox()), usize::MAX);
+                g.text(t);
+            }
+            None => labels.add_ranked(arc.at(mid, r), arc.at(mid, r + 1.0) - arc.at(mid, r), text, TEXT_H, 1),
+        }
+    }
 }
 
 /// Arc dimensions about wheel 1's centre from features on the circle of paper radius
@@ -47,19 +68,29 @@ struct Arc {
     r_feature: f64,
 }
 
+/// A dimension's value and where it goes: over the arc of paper radius `r` at world angle `mid`.
+struct Value {
+    r: f64,
+    mid: f64,
+    text: LabelText,
+}
+
 impl Arc {
+    /// The paper point at world angle `a` and paper radius `radius` about wheel 1's centre.
+    fn at(&self, a: f64, radius: f64) -> kurbo::Point {
+        let u = from_angle(a);
+        self.v.p(Vec2::ZERO) + Vec2::new(u.x, -u.y) * radius
+    }
+
     /// The dimension between world angles `(a0, a1)` (a0 < a1) on a dimension arc of paper
     /// radius `r`: extension lines from the features to 2 mm past the arc, the arc with its
     /// arrowheads (inside when they fit, else outside on 5 mm), the value beside its middle.
-    fn dimension(&self, g: &mut Group, labels: &mut Labels, r: f64, (a0, a1): (f64, f64), value: LabelText) {
+    fn dimension(&self, g: &mut Group, r: f64, (a0, a1): (f64, f64), value: LabelText) -> Option<Value> {
         let c = self.v.p(Vec2::ZERO);
-        let at = |a: f64, radius: f64| {
-            let u = from_angle(a);
-            c + Vec2::new(u.x, -u.y) * radius
-        };
+        let at = |a: f64, radius: f64| self.at(a, radius);
         let ends = [at(a0, self.r_feature - 1.0), at(a1, self.r_feature - 1.0), at(a0, r - 2.0), at(a1, r - 2.0)];
         if r < 10.0 || !ends.iter().all(|q| self.area.contains(*q)) {
-            return;
+            return None;
         }
         for a in [a0, a1] {
             g.line(at(a, self.r_feature - 1.0), at(a, r - 2.0), THIN);
@@ -73,8 +104,6 @@ impl Arc {
         let sign = if inside { 1.0 } else { -1.0 };
         symbols::arrowhead(g, at(a0, r), tangent(a0, sign));
         symbols::arrowhead(g, at(a1, r), tangent(a1, -sign));
-        let mid = (a0 + a1) / 2.0;
-        // The value over its arc, as a dimension's text stands over its line.
-        labels.add_ranked(at(mid, r), at(mid, r + 1.0) - at(mid, r), value, 3.5, 1);
+        Some(Value { r, mid: (a0 + a1) / 2.0, text: value })
     }
 }
