@@ -19,9 +19,10 @@ use crate::num::math::from_angle;
 use crate::num::units::mm;
 use kurbo::{Rect, Vec2};
 
-/// The dimension arcs of s and e this far inside wheel 1's root circle, and p's further in, mm.
-const S_INSIDE_ROOT: f64 = 12.0;
-const P_INSIDE_ROOT: f64 = 26.0;
+/// The dimension arcs of s and e this far inside wheel 1's root circle, and p's further in, mm:
+/// 20 mm apart, so that a value the placer sets under its arc is still nearer its own arc.
+pub(super) const S_INSIDE_ROOT: f64 = 12.0;
+pub(super) const P_INSIDE_ROOT: f64 = 32.0;
 /// The values' lettering, mm.
 const TEXT_H: f64 = 3.5;
 
@@ -42,14 +43,19 @@ pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, t
         arc.dimension(g, r_s, (left, next), value("e", p.pitch - w1.tooth_thickness)),
         arc.dimension(g, r_p, (right, next), value("p", p.pitch)),
     ];
-    // Each value level over its arc's middle, raised along the radius until it meets nothing
-    // drawn (nor a value set before it); where no height up to 8 mm is clear, the label
-    // placer sets it off on a leader.
+    // Each value level at its arc's middle: over it, raised along the radius until it meets
+    // nothing drawn (nor a value set before it), else under it, lowered the same way, never
+    // nearer the other arc than its own; where neither is clear, the label placer sets it off
+    // on a leader.
     let mut drawn = Obstacles::of_items(&g.items);
     for Value { r, mid, text } in values.into_iter().flatten() {
-        let set = (0..=14)
-            .map(|k| text.text(arc.at(mid, r + 1.0 + 0.5 * f64::from(k)), TEXT_H, Anchor::Middle))
-            .find(|t| drawn.is_clear(t.bbox().inflate(0.5, 0.5)));
+        let steps = || (0..=12).map(|k| 1.0 + 0.5 * f64::from(k));
+        let over = steps().map(|d| text.text(arc.at(mid, r + d), TEXT_H, Anchor::Middle));
+        let under = steps().map(|d| {
+            let top = arc.at(mid, r - d);
+            text.text(kurbo::Point::new(top.x, top.y + TEXT_H), TEXT_H, Anchor::Middle)
+        });
+        let set = over.chain(under).find(|t| drawn.is_clear(t.bbox().inflate(0.5, 0.5)));
         match set {
             Some(t) => {
                 drawn.add(Piece::TextBox(t.bbox()), usize::MAX);

@@ -446,4 +446,45 @@ mod tests {
             assert!(d.involute_deviation < 1e-6, "{z:?}: {:e}", d.involute_deviation);
         }
     }
+
+    /// Each of s, e and p reads as its own arc's value: its text (wherever the placer set it)
+    /// is nearer its own dimension arc than the other one — s's value once sat under p's arc
+    /// with a leader, and read as p's.
+    #[test]
+    fn each_mesh_dimension_value_is_nearest_its_own_arc() {
+        use super::super::mesh_dimensions::{P_INSIDE_ROOT, S_INSIDE_ROOT};
+        for (z, x) in
+            [([17u32, 19u32], [0.0, 0.0]), ([12, 30], [0.295, 0.0]), ([12, 24], [0.6, 0.36]), ([10, 27], [0.0, 0.0])]
+        {
+            let spec = PairSpec { shift: x, ..PairSpec::standard(0.005, z) };
+            let pair = Pair::new(&spec).unwrap();
+            let outlines = [Outline::new(&spec, &pair.wheels[0]), Outline::new(&spec, &pair.wheels[1])];
+            let area = Rect::new(2.0, 10.0, 418.0, 540.0);
+            let inp = MeshInput {
+                pair: &pair,
+                outlines: [&outlines[0], &outlines[1]],
+                lang: crate::drawing::labels::Language::En,
+            };
+            let mut g = Group::new("m", Rect::new(0.0, 0.0, 420.0, 580.0));
+            let mut labels = Labels::new();
+            let d = draw_mesh(&mut g, area, &inp, &mut labels);
+            labels.place(&mut g, area);
+            let (v, _) = placement(&pair, area, d.mu);
+            let o1 = v.p(Vec2::ZERO);
+            let root = v.len(pair.wheels[0].root);
+            let (r_s, r_p) = (root - S_INSIDE_ROOT, root - P_INSIDE_ROOT);
+            let mut found = 0;
+            for t in g.texts().filter(|t| t.tail.starts_with(" = ")) {
+                let d = (t.core_box().center() - o1).norm();
+                let (own, other) = if t.text == "p" { (r_p, r_s) } else { (r_s, r_p) };
+                assert!(
+                    (d - own).abs() < (d - other).abs(),
+                    "{z:?}: “{}” {d:.1} mm from O1, arcs at {own:.1} and {other:.1}",
+                    t.plain()
+                );
+                found += 1;
+            }
+            assert_eq!(found, 3, "{z:?}: s, e and p are written");
+        }
+    }
 }
