@@ -89,9 +89,10 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
     if let Some(pl) = &p.planetary {
         // The views as large as the tables below them still fit in 3.5 mm lettering.
+        let large = tables::large_sizes(&notes, tolerance, &words, ctx.first_table);
         let fits = |share: f64| {
-            let below = Rect::new(right.x0, planetary_bottom(pl, right, share) + 4.0, right.x1, right.y1);
-            tables::fit_large(&notes, below, tolerance, &words, ctx.first_table)
+            let below = Rect::new(right.x0, planetary_frame(pl, right, share).2.y1 + 4.0, right.x1, right.y1);
+            tables::fit(&large, below)
         };
         let share = VIEW_SHARES.into_iter().find(|&s| fits(s)).unwrap_or(VIEW_SHARES[VIEW_SHARES.len() - 1]);
         let drawn = planetary_group(pl, right, share, &words);
@@ -223,11 +224,6 @@ fn planetary_frame(pl: &PlanetaryProject, right: Rect, share: f64) -> (f64, f64,
     (mu, across, Rect::new(right.x0, right.y0, right.x1, right.y0 + 14.0 + view_h + 6.0))
 }
 
-/// The bottom of the planetary views' region (see [`planetary_frame`]).
-fn planetary_bottom(pl: &PlanetaryProject, right: Rect, share: f64) -> f64 {
-    planetary_frame(pl, right, share).2.y1
-}
-
 /// The planetary views in the top of `right`: the front view, the kinematic scheme and beside
 /// it the pictures of linear and angular velocities, with the ratio read from them.
 fn planetary_group(pl: &PlanetaryProject, right: Rect, share: f64, words: &GearWords) -> PlanetaryDrawn {
@@ -286,13 +282,13 @@ fn velocity_pictures(
     let foot = area.y1 - (2 + note(-99.99 * ratio).len()) as f64 * line - 2.0;
     let upper = Rect::new(area.x0, area.y0, area.x1, axis);
     let lower = Rect::new(area.x0, axis, area.x1, foot);
-    let reading = stage_velocities::draw(g, upper, lower, points, labels);
+    let (reading, plan_bottom) = stage_velocities::draw(g, upper, lower, points, labels);
     let (u_line, notes) = match reading.ratio {
         Some(u) => (l.graphic_ratio(&read(reading.sun_mm), &read(reading.carrier_mm), &fmt::value(u, lang)), note(u)),
         None => (l.graphic_ratio_unreadable().to_string(), Vec::new()),
     };
     let at = |y: f64| Point::new(area.x0 + 1.0, y);
-    let mut y = reading.bottom.min(foot) + line;
+    let mut y = plan_bottom.min(foot) + line;
     g.text(Text::new(at(y), l.angular_velocities(), CELL_TEXT, Anchor::Start));
     y += line;
     g.text(Text::new(at(y), "u", CELL_TEXT, Anchor::Start).with_sub("1H", u_line));

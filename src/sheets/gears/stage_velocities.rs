@@ -24,8 +24,6 @@ const V_A_MAX_MM: f64 = 90.0;
 /// What the plan of angular velocities gives (paper mm).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reading {
-    /// The bottom of the plan (its pole's name), for the notes under it.
-    pub bottom: f64,
     /// The segments 0–1 (ω1) and 0–H (ω_H) as drawn.
     pub sun_mm: f64,
     pub carrier_mm: f64,
@@ -43,8 +41,8 @@ impl Reading {
 
 /// Draws the picture of linear velocities in `upper` (its bottom on the scheme's axis) and
 /// the plan of angular velocities in `lower` (from the axis down), for the scheme's points
-/// `pts`; returns the plan's reading.
-pub fn draw(g: &mut Group, upper: Rect, lower: Rect, pts: &SchemePoints, labels: &mut Labels) -> Reading {
+/// `pts`; returns the plan's reading and its bottom (its pole's name), for the notes under it.
+pub fn draw(g: &mut Group, upper: Rect, lower: Rect, pts: &SchemePoints, labels: &mut Labels) -> (Reading, f64) {
     let x_p = upper.x0 + 6.0;
     let (h_a, h_b, h_c) = (pts.axis.y - pts.a.y, pts.axis.y - pts.b.y, pts.axis.y - pts.c.y);
     let on_radius = |p: Point| Point::new(x_p, p.y);
@@ -81,7 +79,7 @@ pub fn draw(g: &mut Group, upper: Rect, lower: Rect, pts: &SchemePoints, labels:
 
 /// The plan of angular velocities in `lower`: `slopes` are the run and rise (mm) of the sun's,
 /// the carrier's and the planet's velocity lines.
-fn angular_plan(g: &mut Group, lower: Rect, slopes: [(f64, f64); 3], labels: &mut Labels) -> Reading {
+fn angular_plan(g: &mut Group, lower: Rect, slopes: [(f64, f64); 3], labels: &mut Labels) -> (Reading, f64) {
     let [(run1, rise1), (run_h, rise_h), (run2, rise2)] = slopes;
     let y_line = lower.y0 + 10.0;
     let room_w = lower.width() - 14.0;
@@ -105,5 +103,5 @@ fn angular_plan(g: &mut Group, lower: Rect, slopes: [(f64, f64); 3], labels: &mu
     let (sun_mm, carrier_mm) = (p1.x - x0, p_h.x - x0);
     let read_h = Reading::read(carrier_mm);
     let ratio = (read_h >= READ_TO_MM).then(|| Reading::read(sun_mm) / read_h);
-    Reading { bottom: p.y + 5.0, sun_mm, carrier_mm, ratio }
+    (Reading { sun_mm, carrier_mm, ratio }, p.y + 5.0)
 }

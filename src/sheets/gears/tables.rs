@@ -42,22 +42,24 @@ pub fn table_count(p: &GearsProject) -> u32 {
 /// fit (the right half below the planetary views has the room), else in 2.5 mm.
 pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &GearWords, first: u32) -> Group {
     let large = lettered(notes, tolerance, words, first, LARGE_TEXT);
-    let drawn = if fits(&large, region) { large } else { lettered(notes, tolerance, words, first, CELL_TEXT) };
+    let sizes: Vec<(f64, f64)> = large.iter().map(Table::size).collect();
+    let drawn = if fit(&sizes, region) { large } else { lettered(notes, tolerance, words, first, CELL_TEXT) };
     table::flow("tables", drawn, region, GAP)
 }
 
-/// Whether the tables fit `region` in 3.5 mm lettering (the planetary views grow while they do).
-pub fn fit_large(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &GearWords, first: u32) -> bool {
-    fits(&lettered(notes, tolerance, words, first, LARGE_TEXT), region)
+/// The tables' sizes in 3.5 mm lettering, for [`fit`] (the planetary views grow while they
+/// fit): measured once, tried against every room.
+pub fn large_sizes(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords, first: u32) -> Vec<(f64, f64)> {
+    lettered(notes, tolerance, words, first, LARGE_TEXT).iter().map(Table::size).collect()
+}
+
+/// Whether tables of `sizes` fit `region` as [`group`] flows them.
+pub fn fit(sizes: &[(f64, f64)], region: Rect) -> bool {
+    table::flow_fits(sizes, region, GAP)
 }
 
 fn lettered(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords, first: u32, text_h: f64) -> Vec<Table> {
     notes.iter().map(|n| Table { text_h, ..sheet_table(n, tolerance, words, first) }).collect()
-}
-
-fn fits(tables: &[Table], region: Rect) -> bool {
-    let sizes: Vec<(f64, f64)> = tables.iter().map(Table::size).collect();
-    table::flow_fits(&sizes, region, GAP)
 }
 
 /// The tables' larger lettering, mm (GOST 2.304's next size), and the gap between them.
