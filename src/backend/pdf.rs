@@ -12,6 +12,7 @@ use super::shapes::{self, check_finite};
 use super::text::{self, SetRun};
 use crate::drawing::scene::{Item, Pen, Scene, Text};
 use crate::font;
+use crate::num::work::{self, Step};
 use krilla::color::rgb;
 use krilla::geom::{Path as PdfPath, PathBuilder, Point as PdfPoint, Size, Transform};
 use krilla::metadata::Metadata;
@@ -33,6 +34,7 @@ pub fn write(scene: &Scene) -> Result<Vec<u8>, BackendError> {
 /// The scenes as the pages of one PDF, each page its scene's size; the document takes the
 /// first scene's title.
 pub fn write_pages(scenes: &[Scene]) -> Result<Vec<u8>, BackendError> {
+    work::count(Step::Pdf);
     let font = Font::new(Data::from(font::BYTES), 0).ok_or_else(|| BackendError::Pdf("the font".into()))?;
     let mut doc = Document::new();
     doc.set_metadata(Metadata::new().title(scenes.first().map(|s| s.title.clone()).unwrap_or_default()));

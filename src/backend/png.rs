@@ -13,6 +13,7 @@ use super::shapes::{self, check_finite};
 use super::text;
 use crate::drawing::scene::{Item, Pen, Scene, Text};
 use crate::font;
+use crate::num::work::{self, Step};
 use kurbo::{Affine, BezPath, PathEl, Point, Rect};
 use skrifa::instance::{LocationRef, Size};
 use skrifa::outline::{DrawSettings, OutlineGlyphCollection, OutlinePen};
@@ -26,6 +27,7 @@ const STRIP_ROWS: u32 = 512;
 
 /// The scene as a PNG at `dpi` dots per inch.
 pub fn write(scene: &Scene, dpi: f64) -> Result<Vec<u8>, BackendError> {
+    work::count(Step::Png);
     check_finite(scene)?;
     if !(dpi.is_finite() && dpi > 0.0) {
         return Err(BackendError::Png(format!("no raster at {dpi} dpi")));

@@ -8,6 +8,7 @@ use crate::drawing::path::{Path, Seg};
 use crate::drawing::scene::{Anchor, Ink, Item, LineType, MAIN, Pen, SUB, SUB_DROP, Scene, Text, VECTOR};
 use crate::font;
 use crate::num::math;
+use crate::num::work::{self, Step};
 use kurbo::Arc;
 use std::f64::consts::PI;
 
@@ -204,6 +205,7 @@ fn colour(ink: Ink) -> String {
 
 /// Serialises a scene as an SVG document sized in millimetres.
 pub fn write(scene: &Scene) -> Result<String, BackendError> {
+    work::count(Step::Svg);
     let mut s = String::with_capacity(1 << 20);
     let ink = colour(scene.ink);
     let (w, h) = (num(scene.width)?, num(scene.height)?);

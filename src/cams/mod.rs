@@ -138,6 +138,7 @@ impl Design {
 /// Designs the cam: the exact centre, the profile, the roller, the pressure angles. A cam over
 /// [`size::SIZE_MAX`] is refused before anything is sampled.
 pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
+    crate::num::work::count(crate::num::work::Step::CamDesign);
     let region = Region::new(spec.follower, &spec.program, spec.allowed)?;
     size::check(spec.follower, &spec.program, spec.allowed, spec.placement)?;
     let centre = region.nearest(spec.placement)?;

@@ -1,14 +1,14 @@
 //! Scale factors. Lengths use the scales of GOST 2.302; diagrams and force drawings use
 //! the course's round factors {1, 2, 2.5, 4, 5}·10ⁿ; velocity and acceleration plans, which
 //! share one μ across a sheet and so cannot all be tuned to their cells, the finer series
-//! {1, 1.5, 2, 2.5, 3, 4, 5, 6, 7.5}·10ⁿ (steps of at most a third instead of 1.6×).
+//! {1, 1.25, 1.5, 2, 2.5, 3, 4, 5, 6, 7.5}·10ⁿ (steps of at most a third instead of 1.6×).
 
 use crate::num::math;
 use crate::num::tol;
 use crate::num::units::mm;
 
 const MANTISSAS: [f64; 5] = [1.0, 2.0, 2.5, 4.0, 5.0];
-const PLAN_MANTISSAS: [f64; 9] = [1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 7.5];
+const PLAN_MANTISSAS: [f64; 10] = [1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 7.5];
 
 /// GOST 2.302 reductions 1:k (k real mm per paper mm).
 const REDUCTIONS: [f64; 21] = [
@@ -132,8 +132,8 @@ mod tests {
     #[test]
     fn next_round_values_step_along_the_series() {
         assert_eq!([next_round(0.02), next_round(0.025), next_round(0.05)], [0.025, 0.04, 0.1]);
-        let plans: Vec<f64> = std::iter::successors(Some(0.1), |&m| Some(plan_next_round(m))).take(10).collect();
-        assert_eq!(plans, [0.1, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 1.0]);
+        let plans: Vec<f64> = std::iter::successors(Some(0.1), |&m| Some(plan_next_round(m))).take(11).collect();
+        assert_eq!(plans, [0.1, 0.125, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 1.0]);
         assert_eq!([plan_round_up(0.031), plan_round_up(0.0061), plan_round_up(7.6)], [0.04, 0.0075, 10.0]);
         assert_eq!(
             [plan_round_down(0.031), plan_round_down(0.0061), plan_round_down(7.6), plan_round_down(0.3)],

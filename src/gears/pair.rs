@@ -196,6 +196,7 @@ pub enum PairError {
 
 impl Pair {
     pub fn new(spec: &PairSpec) -> Result<Pair, PairError> {
+        crate::num::work::count(crate::num::work::Step::GearPair);
         validate(spec)?;
         let m = spec.module;
         let alpha = spec.pressure_angle;

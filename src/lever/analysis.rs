@@ -10,6 +10,7 @@ use crate::num::Sense;
 use crate::num::digits::{fixed, sig};
 use crate::num::math::Norm;
 use crate::num::tol;
+use crate::num::work::{self, Step};
 use kurbo::Vec2;
 use std::f64::consts::TAU;
 
@@ -112,6 +113,7 @@ fn position(m: &Mechanism, motion: &Motion, phi: f64, label: String, extreme: bo
 }
 
 pub fn kinematics(m: &Mechanism, s: &Settings) -> Result<Kinematics, AnalysisError> {
+    work::count(Step::LinkageAnalysis);
     let motion = motion::analyse_motion(m, s.sense, s.start)?;
     let n = s.positions;
     let step = TAU / n as f64;
@@ -182,6 +184,7 @@ pub struct ForceAnalysis {
 /// Fixes each load's stroke from its slider's extremes, then solves the kinetostatics at
 /// the assigned position.
 pub fn forces(m: &Mechanism, k: &Kinematics, model: &ForceModel) -> Result<ForceAnalysis, AnalysisError> {
+    work::count(Step::ForceAnalysis);
     let model = place_loads(m, &k.motion, model)?;
     let phi_deg = k.assigned.phi.to_degrees();
     let forces = kinetostatics::analyse(m, &k.assigned.state, &model)

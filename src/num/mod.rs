@@ -1,7 +1,7 @@
 //! Numerical ground rules shared by every domain: the limits of accepted input, named
 //! tolerances with their units (and [`Near`] with `assert_near!` for the tests), the one
-//! root finder, the sense of rotation, and the mathematical functions whose results reach an output
-//! (platform-independent).
+//! root finder, the sense of rotation, the mathematical functions whose results reach an output
+//! (platform-independent), and the counts of the costly steps a build takes ([`work`]).
 
 pub mod bezier;
 pub mod digits;
@@ -12,6 +12,7 @@ pub mod roots;
 pub mod sense;
 pub mod tol;
 pub mod units;
+pub mod work;
 
 pub use near::Near;
 pub use sense::Sense;

@@ -42,6 +42,7 @@
 use super::{BackendError, shapes, text};
 use crate::drawing::scene::{Item, LineType, Pen, Scene};
 use crate::num::math;
+use crate::num::work::{self, Step};
 use kurbo::Point;
 use std::collections::BTreeMap;
 use std::f64::consts::{PI, TAU};
@@ -116,6 +117,7 @@ const FIRST_FREE: u32 = 0x30;
 
 /// The scene as a DXF file.
 pub fn write(scene: &Scene, version: DxfVersion) -> Result<Vec<u8>, BackendError> {
+    work::count(Step::Dxf);
     shapes::check_finite(scene)?;
     Ok(Writer::run(scene, version).0.into_bytes())
 }

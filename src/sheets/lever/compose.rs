@@ -94,22 +94,28 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     }
     // The split between the force drawings (left) and the plans (right): the widest force
     // column is tried first; a narrower one wins when the forces still fit comfortably and
-    // the smallest plan grows by a tenth or more, or the wider one's layout is not clean.
+    // the smallest plan grows by a tenth or more over the widest's, or the widest's layout is
+    // not clean — of those, the one whose smallest plan is largest (a wider one on a tie).
     // Both conditions are known before anything is drawn, so a width that cannot win is
     // never drawn (drawing is nearly all of the time).
-    let mut best = draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_WIDTHS[0])?)?;
+    let widest = draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_WIDTHS[0])?)?;
+    let smallest = widest.layout.smallest_plan_mm.unwrap_or(0.0);
+    let mut narrower = Vec::new();
     for &w in &FORCES_WIDTHS[1..] {
         let next = arrange(inp, k, &plans, w)?;
-        let smallest = best.layout.smallest_plan_mm.unwrap_or(0.0);
-        let better = next.smallest_plan_mm(&plans).unwrap_or(0.0) > 1.1 * smallest || !best.layout.is_clean();
-        if next.mech.comfortable && better {
-            let drawn = draw(inp, k, &plans, next)?;
-            if drawn.layout.is_clean() {
-                best = drawn;
-            }
+        let grown = next.smallest_plan_mm(&plans).unwrap_or(0.0);
+        if next.mech.comfortable && (grown > 1.1 * smallest || !widest.layout.is_clean()) {
+            narrower.push((grown, next));
         }
     }
-    Ok(best)
+    narrower.sort_by(|a, b| b.0.total_cmp(&a.0));
+    for (_, next) in narrower {
+        let drawn = draw(inp, k, &plans, next)?;
+        if drawn.layout.is_clean() {
+            return Ok(drawn);
+        }
+    }
+    Ok(widest)
 }
 
 /// Widths of the force column tried, mm.

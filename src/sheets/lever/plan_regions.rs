@@ -60,12 +60,22 @@ impl PlansRegion<'_> {
     }
 }
 
-/// Shares of a column tried for the velocity plans above the acceleration plans.
-const VELOCITY_SHARES: [f64; 7] = [0.46, 0.5, 0.54, 0.58, 0.62, 0.66, 0.7];
+/// Shares of a column tried for the velocity plans above the acceleration plans: 0.30 to
+/// 0.76 in steps of 0.02 (the plans' round scales step by up to a third, so a coarser
+/// split misses the height at which the next scale packs).
+fn velocity_shares() -> impl Iterator<Item = f64> {
+    (15..=38).map(|k| f64::from(k) / 50.0)
+}
+
+/// The largest plan of each kind is at least this long, mm, where the column allows: the
+/// guide's plans are drawn that large, vectors read to a percent.
+pub const LARGEST_PLAN: f64 = 80.0;
 
 /// Splits `column` between two kinds of plans, the first above: at the share whose smallest
-/// plan is largest (a plan off the common scale counts as no larger than the minimum), then
-/// whose largest velocity plan is largest. Returns each kind's region and sizing.
+/// plan is largest (a plan off the common scale counts as no larger than the minimum, and
+/// twice the minimum is enough), then whose smaller kind's largest plan is largest (up to
+/// [`LARGEST_PLAN`]), then whose two largest plans sum most. Returns each kind's region and
+/// sizing.
 pub(super) fn split_plans(
     column: Rect,
     kinds: [(&PlansRegion, &[Plan], &[&Position]); 2],
@@ -81,17 +91,16 @@ pub(super) fn split_plans(
         [kind.next().expect("two kinds"), kind.next().expect("two kinds")]
     };
     let score = |s: &[(Rect, Sizing); 2]| {
-        let [(least_v, largest_v), (least_a, _)] =
+        let [(least_v, largest_v), (least_a, largest_a)] =
             [0, 1].map(|k| (s[k].1.least_measured(kinds[k].1), s[k].1.largest(kinds[k].1)));
-        (least_v.min(least_a).min(2.0 * MIN_PLAN), largest_v)
+        (least_v.min(least_a).min(2.0 * MIN_PLAN), largest_v.min(largest_a).min(LARGEST_PLAN), largest_v + largest_a)
     };
-    VELOCITY_SHARES
-        .iter()
-        .map(|&share| {
+    velocity_shares()
+        .map(|share| {
             let s = split(share);
             (score(&s), s)
         })
-        .max_by(|a, b| a.0.0.total_cmp(&b.0.0).then(a.0.1.total_cmp(&b.0.1)))
+        .max_by(|a, b| a.0.0.total_cmp(&b.0.0).then(a.0.1.total_cmp(&b.0.1)).then(a.0.2.total_cmp(&b.0.2)))
         .map(|(_, s)| s)
         .expect("shares to try")
 }

@@ -136,22 +136,52 @@ fn lines(names: &[String]) -> Vec<String> {
 
 const SHARED_PER_LABEL: usize = 3;
 
-/// Packs cells of `sizes` in rows inside `body`, in order; the rows are stretched to fill
-/// the body's width and height. `None` when they do not fit.
-fn pack(sizes: &[(f64, f64)], body: Rect) -> Option<Vec<Rect>> {
-    let mut rows: Vec<Vec<usize>> = vec![vec![]];
-    let mut x = 0.0;
-    for (i, &(w, _)) in sizes.iter().enumerate() {
-        if w > body.width() {
-            return None;
-        }
-        if x + w > body.width() && x > 0.0 {
-            rows.push(vec![]);
-            x = 0.0;
-        }
-        rows.last_mut().expect("a row").push(i);
-        x += w + GAP;
+/// The rows of cells `sizes` at most `width` wide, in order, whose tallest cells (and the
+/// gaps between rows) sum least: shortest path over the break points. `None` when a cell is
+/// wider than `width`.
+fn row_breaks(sizes: &[(f64, f64)], width: f64) -> Option<Vec<Vec<usize>>> {
+    let n = sizes.len();
+    if sizes.iter().any(|&(w, _)| w > width) {
+        return None;
     }
+    // best[j]: the least height of cells 0..j in rows, and where its last row starts.
+    let mut best: Vec<(f64, usize)> = vec![(f64::INFINITY, 0); n + 1];
+    best[0] = (0.0, 0);
+    for j in 1..=n {
+        let (mut w, mut h) = (-GAP, 0.0_f64);
+        for i in (0..j).rev() {
+            w += sizes[i].0 + GAP;
+            if w > width {
+                break;
+            }
+            h = h.max(sizes[i].1);
+            let total = best[i].0 + h + if i > 0 { GAP } else { 0.0 };
+            // Ties keep the fuller last row (the greedy's choice).
+            if total < best[j].0 - 1e-9 {
+                best[j] = (total, i);
+            }
+        }
+    }
+    let mut rows = Vec::new();
+    let mut j = n;
+    while j > 0 {
+        let i = best[j].1;
+        rows.push((i..j).collect::<Vec<_>>());
+        j = i;
+    }
+    rows.reverse();
+    if rows.is_empty() {
+        rows.push(vec![]);
+    }
+    Some(rows)
+}
+
+/// Packs cells of `sizes` in rows inside `body`, in order, breaking the rows where their
+/// heights sum least (a tall plan's row holds the other tall ones where the width allows,
+/// rather than each row filled greedily and as tall as its tallest); the rows are then
+/// stretched to fill the body's width and height. `None` when they do not fit.
+fn pack(sizes: &[(f64, f64)], body: Rect) -> Option<Vec<Rect>> {
+    let rows = row_breaks(sizes, body.width())?;
     let heights: Vec<f64> = rows.iter().map(|r| r.iter().map(|&i| sizes[i].1).fold(0.0, f64::max)).collect();
     let total_h = heights.iter().sum::<f64>() + GAP * (rows.len() - 1) as f64;
     if total_h > body.height() {
