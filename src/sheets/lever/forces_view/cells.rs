@@ -38,9 +38,18 @@ pub(super) struct Sizes {
     pub(super) lever_box: f64,
     /// Longest side of the largest group (or crank) in the world, m.
     pub(super) widest: f64,
+    /// Whether the polygons' μ_P and the lever's μ come from the plans' finer series (steps
+    /// of at most a third) rather than the course's {1, 2, 2.5, 4, 5} (steps up to 2×, which
+    /// draw a polygon meant for 60 mm at 30).
+    pub(super) fine: bool,
 }
 
 impl Sizes {
+    /// A round scale for `x` units a mm in the series [`Sizes::fine`] picks.
+    pub(super) fn round_up(&self, x: f64) -> f64 {
+        if self.fine { scale::plan_round_up(x) } else { scale::round_up(x) }
+    }
+
     /// A drawing's length scale: the common GOST scale that fits the largest group into its
     /// box, unless that leaves this drawing shorter than half the box (a crank beside a
     /// long rod); then its own GOST scale for that half.
@@ -71,7 +80,7 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     }
     let lever = velocity_plan(inp.m, inp.state).turned(inp.m.sense());
     let bb = plan_bbox(&lever);
-    let mu = scale::round_up(bb.width().max(bb.height()) / s.lever_box);
+    let mu = s.round_up(bb.width().max(bb.height()) / s.lever_box);
     let mu_f = lever_arrow_scale(inp);
     let pad = MARGIN + ARROW_MAX + 4.0;
     let w = (bb.width() / mu + 2.0 * pad).max(110.0);

@@ -12,7 +12,6 @@ use super::polygon::{bbox_of, chain, draw_polygon};
 use super::{ARROW_MAX, ARROW_MIN, ForcesInput, LINE};
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
-use crate::drawing::scale;
 use crate::drawing::scene::{Group, MAIN, THIN};
 use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, slider};
 use crate::drawing::text::LabelText;
@@ -100,7 +99,7 @@ pub(super) fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes) -> (Grou
     let (drawing_w, drawing_h) = (world.width() / mu_l + 2.0 * PAD, world.height() / mu_l + 2.0 * PAD);
     let chain = chain(poly);
     let chain_box = bbox_of(&chain);
-    let mu_p = scale::round_up(chain_box.width().max(chain_box.height()) / s.poly_box);
+    let mu_p = s.round_up(chain_box.width().max(chain_box.height()) / s.poly_box);
     let mu_f = arrow_scale(poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max));
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let w = (drawing_w + poly_w).max(120.0);

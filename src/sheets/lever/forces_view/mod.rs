@@ -1,7 +1,9 @@
 //! The force analysis on sheet 1: each Assur group and the crank drawn apart at one length
 //! scale with their forces, each force polygon at its own round μ_P with its vector
 //! equation, the Zhukovsky lever, the load diagrams and tables 3–5. The cells are packed
-//! in rows; when they do not fit, the drawings get smaller scales, never smaller text.
+//! in rows; when they do not fit, the drawings get smaller scales, never smaller text. Where
+//! they fit, the polygons and the lever take the plans' finer series of scales if the cells
+//! still pack at it: larger drawings, nothing else smaller.
 
 mod arrows;
 mod cells;
@@ -139,8 +141,8 @@ const SHRINK_TRIES: usize = 12;
 const COMFORTABLE: usize = 3;
 /// The sizes a comfortable layout starts from (the mechanism above gets the rest), and the
 /// larger ones the drawings start from, shrinking until they fit what they got.
-const COMFORTABLE_START: Sizes = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0 };
-const DRAWN: Sizes = Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0 };
+const COMFORTABLE_START: Sizes = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0, fine: false };
+const DRAWN: Sizes = Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0, fine: false };
 
 /// Cells packed into the bodies, shrinking the drawings up to `tries − 1` times until they
 /// fit; the last attempt is returned even if it does not (the layout measurement then
@@ -160,7 +162,16 @@ fn arrange(inp: &ForcesInput, bodies: &[Rect], start: Sizes, tries: usize) -> (V
         let cells = cells(inp, attempt);
         let (at, ok) = pack(&cells, bodies);
         k += 1;
-        if ok || k >= tries {
+        if ok {
+            // The same boxes with the polygons and the lever at the finer series' scales,
+            // where those still fit: larger, and nothing else smaller.
+            let fine = self::cells::cells(inp, Sizes { fine: true, ..attempt });
+            return match pack(&fine, bodies) {
+                (at, true) => (fine, at, true),
+                _ => (cells, at, ok),
+            };
+        }
+        if k >= tries {
             return (cells, at, ok);
         }
         attempt = attempt.shrunk();
