@@ -113,13 +113,24 @@ fn a_plans_group_holds_that_plan_its_title_pole_and_vectors() {
 #[test]
 fn ids_are_the_same_in_every_language_and_every_run() {
     // The ids are stable: the same input twice gives the same groups byte for byte, and a
-    // project with another language changes the texts but keeps every id.
+    // project with another language changes the texts but keeps every drawing's and table's
+    // id (`sheet1.plan.v.3`, `sheet1.forces.load.5`). The regions holding them follow the
+    // layout, which the texts' widths may change: the Russian worked example's force drawings
+    // pack with the lever at a finer scale and its load diagram beside the mechanism, in a
+    // region of its own.
+    let parts = |svg: &str| {
+        let mut p: Vec<String> = ids(svg).into_iter().filter(|id| id.matches('.').count() >= 2).collect();
+        p.sort();
+        p
+    };
     let a = built("worked-example");
     let mut ru = fixture("worked-example");
     ru.info.language = tmm_sheets::drawing::labels::Language::Ru;
     let b = pipeline::build(&ru, &[]).unwrap();
     for (x, y) in a.iter().zip(&b) {
-        assert_eq!(ids(&x.svg), ids(&y.svg), "sheet {}: ids depend on the language", x.output.number);
+        let (px, py) = (parts(&x.svg), parts(&y.svg));
+        assert!(px.len() > 3, "sheet {}: {px:?}", x.output.number);
+        assert_eq!(px, py, "sheet {}: ids depend on the language", x.output.number);
     }
     let again = built("worked-example");
     assert_eq!(group(&a[0].svg, "sheet1.plan.a.5"), group(&again[0].svg, "sheet1.plan.a.5"));
