@@ -71,7 +71,7 @@ pub fn draw_forces(
     let title = inp.words.sheet.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.words.lang));
     main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let bodies = bodies(region, side.as_ref().map(|g| g.region));
-    let (cells, at, _) = arrange(inp, &bodies, DRAWN, SHRINK_TRIES);
+    let (cells, at, _) = finer(inp, &bodies, arrange(inp, &bodies, DRAWN, SHRINK_TRIES));
     let mut scales = ForceScales { mu_l: vec![], mu_p: vec![], mu_f: vec![], mu_lever: 0.0, mu_f_lever: 0.0 };
     let mut measured = Vec::new();
     for (cell, &(body, origin)) in cells.iter().zip(&at) {
@@ -144,10 +144,30 @@ const COMFORTABLE: usize = 3;
 const COMFORTABLE_START: Sizes = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0, fine: false };
 const DRAWN: Sizes = Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0, fine: false };
 
+/// Cells, where they are, whether they all fit, and the sizes they were made at.
+type Arranged = (Vec<Cell>, Vec<(usize, Point)>, bool, Sizes);
+
+/// A fitting arrangement's boxes with the polygons and the lever at the finer series'
+/// scales, where those still fit: larger, and nothing else smaller. Only for drawing (the
+/// comfort test needs no more than whether the coarse cells fit).
+fn finer(
+    inp: &ForcesInput,
+    bodies: &[Rect],
+    (cells, at, ok, sizes): Arranged,
+) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
+    if ok {
+        let fine = self::cells::cells(inp, Sizes { fine: true, ..sizes });
+        if let (fine_at, true) = pack(&fine, bodies) {
+            return (fine, fine_at, true);
+        }
+    }
+    (cells, at, ok)
+}
+
 /// Cells packed into the bodies, shrinking the drawings up to `tries − 1` times until they
 /// fit; the last attempt is returned even if it does not (the layout measurement then
 /// reports it), with whether it fits.
-fn arrange(inp: &ForcesInput, bodies: &[Rect], start: Sizes, tries: usize) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
+fn arrange(inp: &ForcesInput, bodies: &[Rect], start: Sizes, tries: usize) -> Arranged {
     let widest = inp
         .fa
         .forces
@@ -162,17 +182,8 @@ fn arrange(inp: &ForcesInput, bodies: &[Rect], start: Sizes, tries: usize) -> (V
         let cells = cells(inp, attempt);
         let (at, ok) = pack(&cells, bodies);
         k += 1;
-        if ok {
-            // The same boxes with the polygons and the lever at the finer series' scales,
-            // where those still fit: larger, and nothing else smaller.
-            let fine = self::cells::cells(inp, Sizes { fine: true, ..attempt });
-            return match pack(&fine, bodies) {
-                (at, true) => (fine, at, true),
-                _ => (cells, at, ok),
-            };
-        }
-        if k >= tries {
-            return (cells, at, ok);
+        if ok || k >= tries {
+            return (cells, at, ok, attempt);
         }
         attempt = attempt.shrunk();
     }
