@@ -11,10 +11,11 @@ use crate::cams::integrate::Integrated;
 use crate::cams::laws::Program;
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
+use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
 use crate::drawing::plot::{Axis, Plot, round_ticks};
 use crate::drawing::scale;
-use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN};
+use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text};
 use crate::drawing::symbols::dimension;
 use crate::drawing::text::LabelText;
 use crate::num::digits::{significant, written};
@@ -41,9 +42,10 @@ const LIFT_MAX_MM: f64 = 100.0;
 /// The lift's least height on paper when the shared scale of s and ds/dφ would leave it
 /// lower, mm.
 const LIFT_MIN_MM: f64 = 30.0;
-/// The acceleration analog's height each side of its axis, mm: the course's "about 70 mm"
-/// over both signs, and the range accepted around it.
-const ACCELERATION_MM: (f64, f64, f64) = (20.0, 35.0, 50.0);
+/// The acceleration analog's height each side of its axis, mm: the guide's worked example
+/// takes "the maximum amplitude along the ordinate axis 70 mm" (its fig. 1.8), and the range
+/// accepted around it (a column too low for 70 takes less).
+const ACCELERATION_MM: (f64, f64, f64) = (20.0, 70.0, 75.0);
 /// The pole distance H2, whole mm: below 15 mm its rays merge.
 const H2_MM: (f64, f64) = (15.0, 40.0);
 /// The working angle's widest drawing, mm.
@@ -68,7 +70,8 @@ pub struct Plan {
 /// - μ_φ from [`PHI_MANTISSAS`], the smallest that fits the width (at most
 ///   [`WIDTH_MAX_MM`] for the working angle);
 /// - H1 = 1/μ_φ, so that s and ds/dφ share μ_s;
-/// - μ_s round, the smallest (the largest drawing) with the lift at most [`LIFT_MAX_MM`]
+/// - μ_s of the plans' round series (steps of at most 1.5×: 5 → 6 → 7.5 → 10), the smallest
+///   (the largest drawing) with the lift at most [`LIFT_MAX_MM`]
 ///   whose acceleration analog can be drawn between [`ACCELERATION_MM`] with a whole-mm H2
 ///   in [`H2_MM`] within the height: the analog's height is H2·d²s/dφ²·μ_φ/μ_s, so a
 ///   large μ_s's small drawing is what keeps H2 from merging its rays;
@@ -105,8 +108,8 @@ pub fn plan(d: &Design, max_w: f64, max_h: f64) -> Plan {
         let (_, a, height) = fit(mu_s, mu_ds);
         (ACCELERATION_MM.0..=ACCELERATION_MM.2).contains(&a) && height <= max_h
     };
-    let first = scale::round_up(p.lift / LIFT_MAX_MM);
-    let steps = |from: f64| std::iter::successors(Some(from), |&m| Some(scale::next_round(m))).take(40);
+    let first = scale::plan_round_up(p.lift / LIFT_MAX_MM);
+    let steps = |from: f64| std::iter::successors(Some(from), |&m| Some(scale::plan_next_round(m))).take(40);
     // The course's shared scale; else the lift at `first` with ds/dφ at a scale of its own;
     // else (nothing fits the height) the shared scale at which the acceleration fits.
     let shared = steps(first).find(|&m| p.lift / m >= LIFT_MIN_MM && fits(m, m)).map(|m| (m, m));
@@ -269,7 +272,9 @@ impl Stack<'_> {
         };
         s_plot.draw_axes(g);
         s_plot.line(g, &self.exact(&|phi| p.at(phi).s), THIN);
-        s_plot.line(g, &integrated_curve(self.integrated, |i| &i.s), MAIN);
+        let s_drawn = integrated_curve(self.integrated, |i| &i.s);
+        s_plot.line(g, &s_drawn, MAIN);
+        ordinates(g, &s_plot, &s_drawn);
         number_divisions(&s_plot, self.integrated, labels);
         phase_dimensions(g, &s_plot, p, labels, w);
         let s_top = Point::new(self.left, s_plot.origin.y - p.lift / sc.mu_s);
@@ -287,6 +292,7 @@ impl Stack<'_> {
     fn velocity(&self, g: &mut Group, top: f64) -> f64 {
         let (sc, p, lang) = (self.sc, self.p, self.words.lang);
         let (vmax, name) = (self.peaks.0, self.names[1]);
+        let start = g.mark();
         let v_plot = Plot {
             origin: Point::new(self.x0, top + vmax / sc.mu_ds + 4.0),
             x: self.x_axis(),
@@ -300,12 +306,15 @@ impl Stack<'_> {
         };
         v_plot.draw_axes(g);
         v_plot.line(g, &self.exact(&|phi| p.at(phi).ds), THIN);
-        v_plot.line(g, &integrated_curve(self.integrated, |i| &i.ds), MAIN);
+        let v_drawn = integrated_curve(self.integrated, |i| &i.ds);
+        v_plot.line(g, &v_drawn, MAIN);
+        ordinates(g, &v_plot, &v_drawn);
         let lines = [mu(name, sc.mu_ds, self.unit(), lang)];
         scale_text(g, above_pole(self.left, v_plot.origin.y - vmax / sc.mu_ds, v_plot.origin.y, &lines), &lines);
         let means: Vec<f64> =
             self.integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
         pole(g, &v_plot, Pole { h: sc.h1, index: "1" }, &means, sc.mu_ds, self.words);
+        axis_values(g, &v_plot, &round_ticks(-vmax, vmax, sc.mu_ds, lang), start);
         v_plot.origin.y + vmax / sc.mu_ds + GAP
     }
 
@@ -314,6 +323,7 @@ impl Stack<'_> {
         let (sc, p, lang) = (self.sc, self.p, self.words.lang);
         let l = self.words.sheet;
         let (amax, name) = (self.peaks.1, self.names[2]);
+        let start = g.mark();
         let a_plot = Plot {
             origin: Point::new(self.x0, top + amax / sc.mu_dds + 4.0),
             x: self.x_axis(),
@@ -345,6 +355,7 @@ impl Stack<'_> {
         scale_text(g, above_pole(self.left, a_plot.origin.y - amax / sc.mu_dds, a_plot.origin.y, &lines), &lines);
         let mids: Vec<f64> = self.integrated.iter().flat_map(|i| i.mid_dds.iter().copied()).collect();
         pole(g, &a_plot, Pole { h: sc.h2, index: "2" }, &mids, sc.mu_dds, self.words);
+        axis_values(g, &a_plot, &round_ticks(-amax, amax, sc.mu_dds, lang), start);
         a_plot.origin.y + amax / sc.mu_dds + GAP
     }
 }
@@ -420,11 +431,43 @@ fn lift_ticks(lift: f64, mu_s: f64, rocker: bool, lang: Language) -> Vec<(f64, S
     round_ticks(0.0, lift * k, mu_s * k, lang).into_iter().map(|(v, t)| (v / k, t)).collect()
 }
 
-/// Tick marks without their values: on a graph with a pole the rays cross the values' place;
-/// its scale is written instead.
+/// Tick marks without their values: on a graph with a pole the rays cross the values' place
+/// ([`axis_values`] writes them where they are clear, once the rays are drawn).
 fn unlabelled(ticks: Vec<(f64, String)>) -> Vec<(f64, String)> {
     ticks.into_iter().map(|(v, _)| (v, String::new())).collect()
 }
+
+/// The ordinates of the integrated curve at the division points, thin, from the axis: what the
+/// course measures the table's values on. Those under half a millimetre are left out.
+fn ordinates(g: &mut Group, plot: &Plot, drawn: &[(f64, f64)]) {
+    for &(x, y) in drawn {
+        if (y / plot.y.mu).abs() >= 0.5 {
+            g.line(plot.at(x, 0.0), plot.at(x, y), THIN);
+        }
+    }
+}
+
+/// The y axis' values of a graph with a pole: each beside its tick, left of the axis where no
+/// ray crosses the place, else right of it where the curves leave room, else left out (the
+/// graph's scale is written above the pole). `start` marks the graph's first item: only its
+/// own lines are asked.
+fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], start: usize) {
+    let drawn = Obstacles::of_items(&g.items[start..]);
+    let x0 = plot.at(plot.x.lo, 0.0).x;
+    for (v, value) in ticks {
+        let y = plot.at(0.0, *v).y + VALUE_H / 2.0;
+        let w = LabelText::new(value.as_str(), "").width(VALUE_H);
+        let left = (Point::new(x0 - 1.5 - 0.8, y), Anchor::End, Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y));
+        let right = (Point::new(x0 + 0.8, y), Anchor::Start, Rect::new(x0 + 0.8, y - VALUE_H, x0 + 0.8 + w, y));
+        let clear = |r: Rect| drawn.is_clear(r.inflate(0.3, 0.3));
+        if let Some((at, anchor, _)) = [left, right].into_iter().find(|c| clear(c.2)) {
+            g.text(Text::new(at, value.clone(), VALUE_H, anchor));
+        }
+    }
+}
+
+/// The axis values' lettering height, mm (the plots' own).
+const VALUE_H: f64 = 2.5;
 
 /// "μ_q = value unit", with q as a subscript.
 fn mu(q: &str, value: f64, unit: &str, lang: Language) -> LabelText {

@@ -63,6 +63,48 @@ pub struct CamBuild {
     pub profile_deviation: f64,
 }
 
+/// Of columns planned shorter and shorter with the regions they leave, the one with the
+/// largest profile, and of those the one that keeps the nomogram and the diagrams nearest
+/// their largest (the larger of their two shrinkings the least: a taller column can leave
+/// the nomogram no room under it, a shorter one draws smaller diagrams).
+fn balanced(tried: Vec<(Column, Regions)>) -> Option<(Column, Regions)> {
+    let profile = tried.iter().map(|t| t.1.profile_mu).fold(f64::INFINITY, f64::min);
+    let nomogram = tried.iter().map(|t| t.1.nomogram_mu).fold(f64::INFINITY, f64::min);
+    let height = tried.iter().map(|t| t.0.plan.height).fold(0.0, f64::max);
+    let kept = |t: &(Column, Regions)| (nomogram / t.1.nomogram_mu).min(t.0.plan.height / height);
+    // The first (tallest) wins a tie.
+    tried
+        .into_iter()
+        .filter(|t| t.1.profile_mu <= profile * 1.001)
+        .reduce(|best, t| if kept(&t) > kept(&best) * 1.001 { t } else { best })
+}
+
+/// The diagrams' column is planned this much shorter than its room, mm: the first as tall
+/// as it goes.
+const SHORTER: [f64; 5] = [0.0, 50.0, 100.0, 175.0, 250.0];
+
+/// The tables' larger lettering, mm: one GOST size above [`CELL_TEXT`].
+const LARGE_TEXT: f64 = 3.5;
+
+/// The two views' sizes, what the regions are chosen for besides the column and the tables.
+struct Views {
+    nomogram: ViewSize,
+    profile: ViewSize,
+}
+
+impl Views {
+    fn content<'a>(&self, column: &'a Column, law: &'a [Table], rest: &'a [Table]) -> Content<'a> {
+        Content {
+            nomogram: self.nomogram.clone(),
+            profile: self.profile.clone(),
+            plan: &column.plan,
+            text_h: column.text_h,
+            law,
+            rest,
+        }
+    }
+}
+
 /// The diagrams' column as planned: its title, notes, plan and the height of its texts.
 struct Column {
     title: String,
@@ -88,13 +130,21 @@ fn laws_title(p: &CamProject, words: &CamWords) -> String {
 /// height, mm: the diagrams keep the rest of the column at the course's scales.
 const NOTES_MAX_H: f64 = 80.0;
 
-/// Plans the column: the diagrams as large as the column leaves them after the texts;
+/// Plans the column: the diagrams as large as the column leaves them after the texts and
+/// `shorter` mm more (room for the nomogram under them);
 /// refuses assumptions that would make the notes taller than [`NOTES_MAX_H`].
-fn plan_column(p: &CamProject, errors: (f64, f64), deviation: f64, words: &CamWords) -> Result<Column, TooLong> {
+fn plan_column(
+    p: &CamProject,
+    errors: (f64, f64),
+    deviation: f64,
+    words: &CamWords,
+    shorter: f64,
+) -> Result<Column, TooLong> {
     let title = laws_title(p, words);
     let notes = notes::sheet_notes(p, errors, deviation, words);
     let head = head_h(&title, LEFT_MAX - 4.0);
-    let plan = diagrams::plan(&p.design, LEFT_MAX - 4.0, SHEET.height() - head - notes_h(&notes, LEFT_MAX - 4.0) - 8.0);
+    let room = SHEET.height() - head - notes_h(&notes, LEFT_MAX - 4.0) - 8.0;
+    let plan = diagrams::plan(&p.design, LEFT_MAX - 4.0, room - shorter);
     // The notes are set as wide as the diagrams.
     let drawn_h = notes_h(&notes, plan.width);
     let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(words.lang).to_string()).collect();
@@ -124,44 +174,77 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let phis = nomogram::positions(d, DIVISIONS);
     let notes = tables::notes(d, &phis, errors, lang, ctx.first_table);
     let fitted = profile_view::fit(d);
-    let column = plan_column(p, errors, fitted.deviation, &words)?;
     let (law, rest): (Vec<_>, Vec<_>) = notes.iter().partition(|n| tables::is_law(n));
-    let drawn = |ns: Vec<&crate::report::NoteTable>| -> Vec<Table> {
-        ns.into_iter().map(|n| tables::sheet_table(n, lang)).collect()
+    let drawn = |ns: &[&crate::report::NoteTable], h: f64| -> Vec<Table> {
+        ns.iter().map(|n| Table { text_h: h, ..tables::sheet_table(n, lang) }).collect()
     };
-    let (law, rest) = (drawn(law), drawn(rest));
-    let content = Content {
-        nomogram: ViewSize {
-            extent: nomogram::extent(d, &phis),
-            reach: nomogram::reach(d),
-            heading_w: heading_w(l.nomogram_title()),
-        },
-        profile: ViewSize {
-            extent: profile_view::extent(d),
-            reach: Vec::new(),
-            heading_w: heading_w(l.profile_title()),
-        },
-        plan: &column.plan,
-        text_h: column.text_h,
-        law: &law,
-        rest: &rest,
+    // The nomogram in the plans' finer series, unless its labels then find no clean spot
+    // (a tall, narrow nomogram beside the profile leaves r_min's label no room): then in the
+    // coarse one, as large as the sheet allowed before the finer series.
+    let mut fine = true;
+    let (lay, column, law, rest, nm, pv, prof) = loop {
+        let views = Views {
+            nomogram: ViewSize {
+                extent: nomogram::extent(d, &phis),
+                reach: nomogram::reach(d),
+                heading_w: heading_w(l.nomogram_title()),
+                fine,
+            },
+            profile: ViewSize {
+                extent: profile_view::extent(d),
+                reach: Vec::new(),
+                heading_w: heading_w(l.profile_title()),
+                fine: false,
+            },
+        };
+        let arranged = |column: &Column, h: f64| {
+            let (law, rest) = (drawn(&law, h), drawn(&rest, h));
+            let lay = regions::regions(&views.content(column, &law, &rest));
+            (lay, law, rest)
+        };
+        let kept = |a: &Regions, b: &Regions| a.profile_mu <= b.profile_mu && a.nomogram_mu <= b.nomogram_mu;
+        // The diagrams as tall as the column allows, unless shorter ones leave the views larger
+        // (the nomogram under them, the profile alone on the right at a larger scale).
+        let mut tried = vec![];
+        for shorter in SHORTER {
+            let c = plan_column(p, errors, fitted.deviation, &words, shorter)?;
+            let lay = arranged(&c, CELL_TEXT).0;
+            tried.push((c, lay));
+        }
+        let column = match balanced(tried) {
+            Some((c, _)) => c,
+            None => plan_column(p, errors, fitted.deviation, &words, 0.0)?,
+        };
+        // The tables in 3.5 mm lettering where the views keep their scales beside them.
+        let small = arranged(&column, CELL_TEXT);
+        let large = arranged(&column, LARGE_TEXT);
+        let (lay, law, rest) = if kept(&large.0, &small.0) { large } else { small };
+        let content = views.content(&column, &law, &rest);
+        let (nomogram_room, profile_room) = lay.label_rooms();
+        let mut nm = view_group("nomogram", nomogram_room, l.nomogram_title());
+        let mut nl = Labels::new();
+        let at = Placement {
+            area: view_area(lay.nomogram),
+            extent: content.nomogram.at(lay.nomogram_mu),
+            mu: lay.nomogram_mu,
+        };
+        nomogram::draw(&mut nm, &at, d, &phis, &mut nl, &words);
+        scale_note(&mut nm, lay.nomogram_mu, None, &words);
+        let placed = nl.place(&mut nm, nomogram_room);
+        if fine && placed.contains(&false) {
+            fine = false;
+            continue;
+        }
+        let mut pv = view_group("profile", profile_room, l.profile_title());
+        let mut pl = Labels::new();
+        let at =
+            Placement { area: view_area(lay.profile), extent: content.profile.at(lay.profile_mu), mu: lay.profile_mu };
+        let prof = profile_view::draw(&mut pv, &at, d, &fitted, &phis, &mut pl, &words);
+        scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), &words);
+        pl.place(&mut pv, profile_room);
+        break (lay, column, law, rest, nm, pv, prof);
     };
-    let lay = regions::regions(&content);
     let (dg, scales) = diagrams_group(&lay, &column, p, &integrated, &words);
-    let (nomogram_room, profile_room) = lay.label_rooms();
-    let mut nm = view_group("nomogram", nomogram_room, l.nomogram_title());
-    let mut nl = Labels::new();
-    let at =
-        Placement { area: view_area(lay.nomogram), extent: content.nomogram.at(lay.nomogram_mu), mu: lay.nomogram_mu };
-    nomogram::draw(&mut nm, &at, d, &phis, &mut nl, &words);
-    scale_note(&mut nm, lay.nomogram_mu, None, &words);
-    nl.place(&mut nm, nomogram_room);
-    let mut pv = view_group("profile", profile_room, l.profile_title());
-    let mut pl = Labels::new();
-    let at = Placement { area: view_area(lay.profile), extent: content.profile.at(lay.profile_mu), mu: lay.profile_mu };
-    let prof = profile_view::draw(&mut pv, &at, d, &fitted, &phis, &mut pl, &words);
-    scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), &words);
-    pl.place(&mut pv, profile_room);
     let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), &notes);
     let mut measured = segments::diagrams(d, &scales, &integrated, &phis, &answers);
     measured.extend(segments::nomogram(d, lay.nomogram_mu, &answers));

@@ -49,6 +49,9 @@ pub struct ViewSize {
     /// offset at the view's scale must be inside the view's box too.
     pub reach: Vec<(Vec2, Vec2)>,
     pub heading_w: f64,
+    /// Scaled in the plans' finer round series (a nomogram up to 1.33 times larger), else
+    /// in the coarse one (its labels' room the wider).
+    pub fine: bool,
 }
 
 impl ViewSize {
@@ -180,8 +183,10 @@ pub fn regions(c: &Content) -> Regions {
     let stacked = nomogram_under_profile(c, views).map(|(pm, p, nm, n)| around(pm, p, nm, n));
     // The larger profile wins, then the larger nomogram; on a tie, the views together on the
     // right (under a wide, low profile the sheet's middle is otherwise left empty).
-    let better =
-        |a: &Regions, b: &Regions| (a.profile_mu, a.nomogram_mu) < (b.profile_mu * 0.999, b.nomogram_mu * 0.999);
+    let better = |a: &Regions, b: &Regions| {
+        a.profile_mu < b.profile_mu * 0.999
+            || (a.profile_mu <= b.profile_mu * 1.001 && a.nomogram_mu < b.nomogram_mu * 0.999)
+    };
     let best = [stacked, below, beside].into_iter().flatten().reduce(|a, b| if better(&b, &a) { b } else { a });
     // Nothing fits at any scale (an extent of no size): the views at 1:1 side by side.
     best.unwrap_or_else(|| {
@@ -285,7 +290,11 @@ fn fit_view(view: &ViewSize, room: Rect, gost: bool) -> Option<(f64, Rect)> {
     if !(need.is_finite() && need > 0.0) {
         return None;
     }
-    let mu = if gost { scale::length_scale(need) } else { scale::round_up(need) };
+    let mu = match (gost, view.fine) {
+        (true, _) => scale::length_scale(need),
+        (false, true) => scale::plan_round_up(need),
+        (false, false) => scale::round_up(need),
+    };
     fit_at(view, room, mu)
 }
 
@@ -303,8 +312,12 @@ mod tests {
     /// would leave it no room; a view under a long title gets a region as wide as the title.
     #[test]
     fn a_views_paper_reach_and_heading_are_inside_the_region_it_is_fitted_to() {
-        let bare =
-            ViewSize { extent: (Vec2::new(-0.05, -0.02), Vec2::new(0.05, 0.08)), reach: Vec::new(), heading_w: 0.0 };
+        let bare = ViewSize {
+            extent: (Vec2::new(-0.05, -0.02), Vec2::new(0.05, 0.08)),
+            reach: Vec::new(),
+            heading_w: 0.0,
+            fine: false,
+        };
         let view = ViewSize { reach: vec![(Vec2::new(0.01, -0.02), Vec2::new(0.0, -30.0))], ..bare.clone() };
         let room = Rect::new(0.0, 0.0, 200.0, 70.0);
         let (mu0, _) = fit_view(&bare, room, false).unwrap();
