@@ -374,7 +374,8 @@ fn the_profiles_position_numbers_stand_outside_the_rollers() {
 }
 
 /// The analogs' y axes carry their values, and the values read the graph's own scale: two of
-/// them v₁, v₂ stand (v₁ − v₂)/μ apart on paper (μ_ds/dφ, μ_d²s/dφ² from results.json), in
+/// them v₁, v₂ stand (v₁ − v₂)/μ apart on paper (μ_ds/dφ, μ_d²s/dφ² from results.json, in
+/// mm per mm for a translating follower, whose values are in mm), in
 /// every cam fixture and language (the rays from the poles reach the axis, so a value may
 /// stand right of it, or be left out, but never on a ray).
 #[test]
@@ -387,8 +388,13 @@ fn the_analogs_axes_carry_values_at_their_own_scale() {
             let b = sheet3(&p);
             let s = &b.output.results["scales"];
             let g = b.output.scene.groups.iter().find(|g| g.id == "diagrams").unwrap();
+            // A translating follower's values are in mm, as its tables give them.
+            let rocker = matches!(
+                p.cam.as_ref().unwrap().design.spec.follower,
+                tmm_sheets::cams::follower::Follower::Rocker { .. }
+            );
             for (part, mu) in [("diagram.v", "mu_ds"), ("diagram.a", "mu_dds")] {
-                let mu = s[mu].as_f64().unwrap();
+                let mu = s[mu].as_f64().unwrap() * if rocker { 1.0 } else { 1000.0 };
                 let range = g.parts.iter().find(|p| p.id == part).unwrap().items.clone();
                 let values: Vec<(f64, f64)> = g.items[range]
                     .iter()

@@ -251,6 +251,30 @@ fn sheet_2_letters_its_tables_in_3_5_mm_where_they_fit() {
     }
 }
 
+/// Without a planetary stage the mesh takes the sheet's width up to the tables (the right
+/// half held the tables alone, three quarters of it empty), in every language the same
+/// region (what is measured on the drawing must not depend on the language).
+#[test]
+fn a_pair_alone_takes_the_width_the_tables_leave() {
+    let text = fixture_text("gears/handbook-khk");
+    let regions: Vec<(f64, f64)> = Language::ALL
+        .into_iter()
+        .map(|lang| {
+            let mut p = pipeline::load(&text).unwrap();
+            p.info.language = lang;
+            let b = sheet2(&p);
+            let g = |id: &str| b.output.scene.groups.iter().find(|g| g.id == id).unwrap().region;
+            let (mesh, tables) = (g("mesh"), g("tables"));
+            assert!(mesh.x1 < tables.x0, "{lang:?}: the mesh {mesh:?} reaches the tables {tables:?}");
+            assert!(mesh.width() > 600.0, "{lang:?}: the mesh is {} mm wide", mesh.width());
+            let empty = b.output.results["layout"]["empty_share"].as_f64().unwrap();
+            assert!(empty < 0.65, "{lang:?}: {empty} of the sheet is empty");
+            (mesh.x0, mesh.x1)
+        })
+        .collect();
+    assert!(regions.windows(2).all(|w| w[0] == w[1]), "{regions:?}");
+}
+
 /// The stage's ratio from its tooth numbers, written here: 1 + z3/z1 for a single row,
 /// 1 + z2·z3/(z1·z2′) for a double planet.
 fn stage_ratio(z: &[f64]) -> f64 {

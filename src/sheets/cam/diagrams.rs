@@ -250,6 +250,12 @@ impl Stack<'_> {
             .collect()
     }
 
+    /// An analog's axis name: a translating follower's in mm, as its tables give it (a
+    /// rocker's has no unit).
+    fn analog_name(&self, name: &str) -> String {
+        if self.rocker { name.into() } else { format!("{name}, {}", self.words.common.unit_mm()) }
+    }
+
     /// A translating follower's scales are all m/mm; a rocker's analogs have no unit.
     fn unit(&self) -> &str {
         if self.rocker { self.words.sheet.unit_per_mm() } else { self.words.common.unit_m_per_mm() }
@@ -300,8 +306,8 @@ impl Stack<'_> {
                 lo: -vmax,
                 hi: vmax,
                 mu: sc.mu_ds,
-                name: name.into(),
-                ticks: unlabelled(round_ticks(-vmax, vmax, sc.mu_ds, lang)),
+                name: self.analog_name(name),
+                ticks: unlabelled(analog_ticks(vmax, sc.mu_ds, self.rocker, lang)),
             },
         };
         v_plot.draw_axes(g);
@@ -314,7 +320,7 @@ impl Stack<'_> {
         let means: Vec<f64> =
             self.integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
         pole(g, &v_plot, Pole { h: sc.h1, index: "1" }, &means, sc.mu_ds, self.words);
-        axis_values(g, &v_plot, &round_ticks(-vmax, vmax, sc.mu_ds, lang), start);
+        axis_values(g, &v_plot, &analog_ticks(vmax, sc.mu_ds, self.rocker, lang), start);
         v_plot.origin.y + vmax / sc.mu_ds + GAP
     }
 
@@ -331,8 +337,8 @@ impl Stack<'_> {
                 lo: -amax,
                 hi: amax,
                 mu: sc.mu_dds,
-                name: name.into(),
-                ticks: unlabelled(round_ticks(-amax, amax, sc.mu_dds, lang)),
+                name: self.analog_name(name),
+                ticks: unlabelled(analog_ticks(amax, sc.mu_dds, self.rocker, lang)),
             },
         };
         a_plot.draw_axes(g);
@@ -355,7 +361,7 @@ impl Stack<'_> {
         scale_text(g, above_pole(self.left, a_plot.origin.y - amax / sc.mu_dds, a_plot.origin.y, &lines), &lines);
         let mids: Vec<f64> = self.integrated.iter().flat_map(|i| i.mid_dds.iter().copied()).collect();
         pole(g, &a_plot, Pole { h: sc.h2, index: "2" }, &mids, sc.mu_dds, self.words);
-        axis_values(g, &a_plot, &round_ticks(-amax, amax, sc.mu_dds, lang), start);
+        axis_values(g, &a_plot, &analog_ticks(amax, sc.mu_dds, self.rocker, lang), start);
         a_plot.origin.y + amax / sc.mu_dds + GAP
     }
 }
@@ -447,24 +453,52 @@ fn ordinates(g: &mut Group, plot: &Plot, drawn: &[(f64, f64)]) {
     }
 }
 
-/// The y axis' values of a graph with a pole: each beside its tick, left of the axis where no
-/// ray crosses the place, else right of it where the curves leave room, else left out (the
-/// graph's scale is written above the pole). `start` marks the graph's first item: only its
-/// own lines are asked.
+/// The y axis' values of a graph with a pole: each beside its tick, right of the axis (the
+/// pole's rays fill the left) where the curves leave room, with the tick carried across the
+/// axis to it, else left of it where no ray crosses the place, else left out (the graph's
+/// scale is written above the pole). `start` marks the graph's first item: only its own
+/// lines are asked.
 fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], start: usize) {
     let drawn = Obstacles::of_items(&g.items[start..]);
     let x0 = plot.at(plot.x.lo, 0.0).x;
     for (v, value) in ticks {
-        let y = plot.at(0.0, *v).y + VALUE_H / 2.0;
+        let y_tick = plot.at(0.0, *v).y;
+        let y = y_tick + VALUE_H / 2.0;
         let w = LabelText::new(value.as_str(), "").width(VALUE_H);
-        let left = (Point::new(x0 - 1.5 - 0.8, y), Anchor::End, Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y));
-        let right = (Point::new(x0 + 0.8, y), Anchor::Start, Rect::new(x0 + 0.8, y - VALUE_H, x0 + 0.8 + w, y));
+        let xr = x0 + VALUE_TICK + 0.8;
+        let right = (Point::new(xr, y), Anchor::Start, Rect::new(x0 + 0.6, y - VALUE_H, xr + w, y));
+        let left =
+            (Point::new(x0 - VALUE_TICK - 0.8, y), Anchor::End, Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y));
         let clear = |r: Rect| drawn.is_clear(r.inflate(0.3, 0.3));
-        if let Some((at, anchor, _)) = [left, right].into_iter().find(|c| clear(c.2)) {
-            g.text(Text::new(at, value.clone(), VALUE_H, anchor));
+        if clear(right.2) {
+            g.line(Point::new(x0, y_tick), Point::new(x0 + VALUE_TICK, y_tick), THIN);
+            g.text(Text::new(right.0, value.clone(), VALUE_H, right.1));
+        } else if clear(left.2) {
+            g.text(Text::new(left.0, value.clone(), VALUE_H, left.1));
         }
     }
 }
+
+/// An analog's ticks each side of its axis (`peak` its largest value): at a round step
+/// about a tenth of the range and at least [`VALUE_STEP_MM`] apart, the values in mm for a
+/// translating follower (as its tables give them), without unit for a rocker.
+fn analog_ticks(peak: f64, mu: f64, rocker: bool, lang: Language) -> Vec<(f64, String)> {
+    let k = if rocker { 1.0 } else { units::MM_PER_M };
+    let step = scale::round_up(2.0 * peak * k / 10.0).max(scale::round_up(VALUE_STEP_MM * mu * k));
+    let n = (peak * k / step * (1.0 + 1e-9)).floor() as i64;
+    (-n..=n)
+        .filter(|&i| i != 0)
+        .map(|i| {
+            let v = i as f64 * step;
+            (v / k, fmt::localise(&scale::format(v), lang))
+        })
+        .collect()
+}
+
+/// The analogs' values at least this far apart, mm.
+const VALUE_STEP_MM: f64 = 8.0;
+/// The plots' tick length, mm: a value right of the axis gets its tick there too.
+const VALUE_TICK: f64 = 1.5;
 
 /// The axis values' lettering height, mm (the plots' own).
 const VALUE_H: f64 = 2.5;

@@ -21,10 +21,11 @@ use super::scaffold::Composition;
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::drawing::fmt;
 use crate::drawing::frame;
+use crate::drawing::labels::Language;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
-use crate::drawing::table::CELL_TEXT;
+use crate::drawing::table::{self, CELL_TEXT};
 use crate::drawing::text::{TooLong, paragraph, wrap};
 use crate::gears::pair::PairWarning;
 use crate::gears::tooth::Outline;
@@ -65,7 +66,7 @@ pub struct GearsBuild {
 const MESH_PART: &str = "mesh.drawing";
 const PLANETARY_PART: &str = "planetary.views";
 
-/// Left half: the mesh.
+/// Left half: the mesh (without a planetary stage, as far right as the tables leave).
 const MESH: Rect = Rect { x0: 24.0, y0: 9.0, x1: 440.0, y1: 585.0 };
 /// Right half, above the title block's column.
 const RIGHT_X0: f64 = 448.0;
@@ -74,19 +75,38 @@ const RIGHT_X0: f64 = 448.0;
 pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> {
     let words = GearWords::new(ctx.info.language);
     let l = words.sheet;
-    let (mesh, drawn) = mesh_group(p, &words)?;
+    let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
+    let inner = frame::inner();
+    let right_of = |x0: f64| Rect::new(x0, inner.y0 + 4.0, inner.x1 - 4.0, frame::title_block_rect().y0 - 4.0);
+    // Without a planetary stage the mesh takes the width the tables leave: the widest they
+    // take in any language (measured on the exact contact ratio, the drawn one's digits
+    // being as many), so that the drawing, and what is measured on it, is the same in all.
+    let region = match p.planetary {
+        Some(_) => MESH,
+        None => {
+            let w = Language::ALL
+                .into_iter()
+                .map(|lang| {
+                    let words = GearWords::new(lang);
+                    let sized = tables::notes(p, p.pair.contact_ratio, &words, ctx.first_table);
+                    let large = tables::large_sizes(&sized, tolerance, &words, ctx.first_table);
+                    table::flow_width(&large, right_of(RIGHT_X0).height(), tables::GAP)
+                })
+                .fold(0.0, f64::max);
+            Rect { x1: (right_of(0.0).x1 - w - 8.0).max(MESH.x1), ..MESH }
+        }
+    };
+    let (mesh, drawn) = mesh_group(p, region, &words)?;
     let notes = tables::notes(p, drawn.contact_ratio_drawn, &words, ctx.first_table);
     let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), &notes);
     let mut measured = segments::mesh(&p.pair, drawn.mu, MESH_PART, &answers);
 
     // The right half: the planetary views on top, the tables below.
     let mut groups = vec![mesh];
-    let inner = frame::inner();
-    let right = Rect::new(RIGHT_X0, inner.y0 + 4.0, inner.x1 - 4.0, frame::title_block_rect().y0 - 4.0);
+    let right = right_of(region.x1 + 8.0);
     let mut y_tables = right.y0;
     let mut planetary_mu = None;
     let mut planetary_reading = None;
-    let tolerance = p.planetary.as_ref().map(|pl| pl.stage.tolerance);
     if let Some(pl) = &p.planetary {
         // The views as large as the tables below them still fit in 3.5 mm lettering.
         let large = tables::large_sizes(&notes, tolerance, &words, ctx.first_table);
@@ -131,27 +151,27 @@ const NOTES_MAX_H: f64 = 100.0;
 
 /// The mesh on the left half: title on top, notes at the bottom, the drawing between;
 /// refuses assumptions that would make the notes taller than [`NOTES_MAX_H`].
-fn mesh_group(p: &GearsProject, words: &GearWords) -> Result<(Group, MeshDrawn), TooLong> {
+fn mesh_group(p: &GearsProject, region: Rect, words: &GearWords) -> Result<(Group, MeshDrawn), TooLong> {
     let (l, lang) = (words.sheet, words.lang);
     let outlines = [Outline::new(&p.pair.spec, &p.pair.wheels[0]), Outline::new(&p.pair.spec, &p.pair.wheels[1])];
     let notes = mesh_notes(p, words);
-    let mut mesh = Group::new("mesh", MESH);
+    let mut mesh = Group::new("mesh", region);
     let mut labels = Labels::new();
     let title = l.mesh_title(
         &fmt::trimmed(mm(p.pair.spec.module), lang),
         &p.pair.wheels[0].z.to_string(),
         &p.pair.wheels[1].z.to_string(),
     );
-    mesh.text(Text::new(Point::new(MESH.x0 + 2.0, MESH.y0 + 6.0), title, 5.0, Anchor::Start));
+    mesh.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     // The notes' height: four lines of results and the notes, each wrapped.
-    let notes_w = MESH.width() - 4.0;
+    let notes_w = region.width() - 4.0;
     let wrapped = |n: &str| wrap(n, CELL_TEXT, notes_w);
     let lines: usize = 4 + notes.iter().map(|n| wrapped(n).len()).sum::<usize>();
     let notes_h = lines as f64 * CELL_TEXT * crate::drawing::text::LINE_PITCH + lines as f64 * 0.5 + 6.0;
     let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
     let room = Room { field: "gears.assumptions", place: "notes under the mesh", size: (notes_w, NOTES_MAX_H) };
     room.check(&assumptions, notes_h)?;
-    let area = Rect::new(MESH.x0 + 2.0, MESH.y0 + 10.0, MESH.x1 - 2.0, MESH.y1 - notes_h);
+    let area = Rect::new(region.x0 + 2.0, region.y0 + 10.0, region.x1 - 2.0, region.y1 - notes_h);
     let start = mesh.mark();
     let drawn = draw_mesh(
         &mut mesh,
@@ -173,7 +193,7 @@ fn mesh_group(p: &GearsProject, words: &GearWords) -> Result<(Group, MeshDrawn),
         l.involute_note(&fmt::value(drawn.involute_deviation * 1e6, lang)),
     ];
     for n in head.iter().chain(&notes) {
-        y = paragraph(&mut mesh, Point::new(MESH.x0 + 2.0, y), &wrapped(n), CELL_TEXT, Anchor::Start) + 0.5;
+        y = paragraph(&mut mesh, Point::new(region.x0 + 2.0, y), &wrapped(n), CELL_TEXT, Anchor::Start) + 0.5;
     }
     mesh.part_from("mesh.notes", start);
     Ok((mesh, drawn))

@@ -64,7 +64,7 @@ fn lettered(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords, firs
 
 /// The tables' larger lettering, mm (GOST 2.304's next size), and the gap between them.
 const LARGE_TEXT: f64 = 3.5;
-const GAP: f64 = 4.0;
+pub const GAP: f64 = 4.0;
 
 /// A table as sheet 2 draws it: units after the symbols, the conditions' verdicts in words,
 /// the ratio's condition with its tolerance, the pair's table as the wheels' continuation
