@@ -27,6 +27,13 @@ fn cam_projects() -> Vec<(String, String)> {
     out
 }
 
+/// A project file read with the sheets' language set to `lang`.
+fn load_in(text: &str, lang: Language) -> Project {
+    let mut p = pipeline::load(text).unwrap();
+    p.info.language = lang;
+    p
+}
+
 fn sheet3(p: &Project) -> pipeline::Built {
     pipeline::build(p, &[3]).unwrap_or_else(|e| panic!("{e:#}")).remove(0)
 }
@@ -35,8 +42,7 @@ fn sheet3(p: &Project) -> pipeline::Built {
 fn the_layout_of_sheet_3_is_clean_and_finite_in_every_language() {
     for (name, text) in cam_projects() {
         for lang in Language::ALL {
-            let mut p = pipeline::load(&text).unwrap();
-            p.info.language = lang;
+            let p = load_in(&text, lang);
             // The fixtures write their title, institution and assumptions in every language.
             let b = sheet3(&p);
             check_layout(&format!("{name} {lang:?}"), &b.output.scene);
@@ -321,9 +327,7 @@ fn the_nomogram_marks_the_allowed_angles_at_their_size_and_hatches_the_zone() {
 fn the_phases_are_dimensioned_between_their_positions() {
     let text = std::fs::read_to_string(root().join("fixtures/cams/translating-offset-auto.yaml")).unwrap();
     for lang in Language::ALL {
-        let mut p = pipeline::load(&text).unwrap();
-        p.info.language = lang;
-        let b = sheet3(&p);
+        let b = sheet3(&load_in(&text, lang));
         let g = b.output.scene.groups.iter().find(|g| g.id == "diagrams").unwrap();
         let texts: Vec<(&str, f64)> = g.texts().map(|t| (t.text.as_str(), t.bbox().center().x)).collect();
         // The position numbers stand under the displacement's axis first (the nomogram
@@ -383,8 +387,7 @@ fn the_analogs_axes_carry_values_at_their_own_scale() {
     use tmm_sheets::drawing::scene::Item;
     for (name, text) in cam_projects() {
         for lang in Language::ALL {
-            let mut p = pipeline::load(&text).unwrap();
-            p.info.language = lang;
+            let p = load_in(&text, lang);
             let b = sheet3(&p);
             let s = &b.output.results["scales"];
             let g = b.output.scene.groups.iter().find(|g| g.id == "diagrams").unwrap();

@@ -67,11 +67,11 @@ pub struct CamBuild {
 /// largest profile, and of those the one that keeps the nomogram and the diagrams nearest
 /// their largest (the larger of their two shrinkings the least: a taller column can leave
 /// the nomogram no room under it, a shorter one draws smaller diagrams).
-fn balanced(tried: Vec<(Column, Regions)>) -> Option<(Column, Regions)> {
+fn balanced(tried: Vec<(diagrams::Plan, Regions)>) -> Option<(diagrams::Plan, Regions)> {
     let profile = tried.iter().map(|t| t.1.profile_mu).fold(f64::INFINITY, f64::min);
     let nomogram = tried.iter().map(|t| t.1.nomogram_mu).fold(f64::INFINITY, f64::min);
-    let height = tried.iter().map(|t| t.0.plan.height).fold(0.0, f64::max);
-    let kept = |t: &(Column, Regions)| (nomogram / t.1.nomogram_mu).min(t.0.plan.height / height);
+    let height = tried.iter().map(|t| t.0.height).fold(0.0, f64::max);
+    let kept = |t: &(diagrams::Plan, Regions)| (nomogram / t.1.nomogram_mu).min(t.0.height / height);
     // The first (tallest) wins a tie.
     tried
         .into_iter()
@@ -93,15 +93,13 @@ struct Views {
 }
 
 impl Views {
-    fn content<'a>(&self, column: &'a Column, law: &'a [Table], rest: &'a [Table]) -> Content<'a> {
-        Content {
-            nomogram: self.nomogram.clone(),
-            profile: self.profile.clone(),
-            plan: &column.plan,
-            text_h: column.text_h,
-            law,
-            rest,
-        }
+    fn content<'a>(
+        &self,
+        (plan, text_h): (&'a diagrams::Plan, f64),
+        law: &'a [Table],
+        rest: &'a [Table],
+    ) -> Content<'a> {
+        Content { nomogram: self.nomogram.clone(), profile: self.profile.clone(), plan, text_h, law, rest }
     }
 }
 
@@ -112,6 +110,8 @@ struct Column {
     plan: diagrams::Plan,
     /// The title's and the notes' height in a column of the plan's width, mm.
     text_h: f64,
+    /// The height the texts leave the diagrams, mm.
+    room: f64,
 }
 
 /// The title over the diagrams: the law's name (or both phases' laws).
@@ -130,27 +130,29 @@ fn laws_title(p: &CamProject, words: &CamWords) -> String {
 /// height, mm: the diagrams keep the rest of the column at the course's scales.
 const NOTES_MAX_H: f64 = 80.0;
 
-/// Plans the column: the diagrams as large as the column leaves them after the texts and
-/// `shorter` mm more (room for the nomogram under them);
-/// refuses assumptions that would make the notes taller than [`NOTES_MAX_H`].
-fn plan_column(
-    p: &CamProject,
-    errors: (f64, f64),
-    deviation: f64,
-    words: &CamWords,
-    shorter: f64,
-) -> Result<Column, TooLong> {
+/// Plans the column: the diagrams as large as the column leaves them after the texts (μ_φ,
+/// hence the plan's width and the notes' wrapping, depend on the width alone: a plan made
+/// shorter with [`shorter_plan`] keeps them); refuses assumptions that would make the notes
+/// taller than [`NOTES_MAX_H`].
+fn plan_column(p: &CamProject, errors: (f64, f64), deviation: f64, words: &CamWords) -> Result<Column, TooLong> {
     let title = laws_title(p, words);
     let notes = notes::sheet_notes(p, errors, deviation, words);
     let head = head_h(&title, LEFT_MAX - 4.0);
     let room = SHEET.height() - head - notes_h(&notes, LEFT_MAX - 4.0) - 8.0;
-    let plan = diagrams::plan(&p.design, LEFT_MAX - 4.0, room - shorter);
+    let plan = diagrams::plan(&p.design, LEFT_MAX - 4.0, room);
     // The notes are set as wide as the diagrams.
     let drawn_h = notes_h(&notes, plan.width);
     let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(words.lang).to_string()).collect();
-    let room = Room { field: "cam.assumptions", place: "notes under the diagrams", size: (plan.width, NOTES_MAX_H) };
-    room.check(&assumptions, drawn_h)?;
-    Ok(Column { title, notes, plan, text_h: head + drawn_h })
+    let notes_room =
+        Room { field: "cam.assumptions", place: "notes under the diagrams", size: (plan.width, NOTES_MAX_H) };
+    notes_room.check(&assumptions, drawn_h)?;
+    Ok(Column { title, notes, plan, text_h: head + drawn_h, room })
+}
+
+/// The column's diagrams planned `shorter` mm lower than its room (leaving the nomogram room
+/// under them).
+fn shorter_plan(p: &CamProject, column: &Column, shorter: f64) -> diagrams::Plan {
+    diagrams::plan(&p.design, LEFT_MAX - 4.0, column.room - shorter)
 }
 
 /// The notes' height set `w` wide as `diagrams_group` sets them: each note's lines at their
@@ -178,11 +180,15 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let drawn = |ns: &[&crate::report::NoteTable], h: f64| -> Vec<Table> {
         ns.iter().map(|n| Table { text_h: h, ..tables::sheet_table(n, lang) }).collect()
     };
+    let small = (drawn(&law, CELL_TEXT), drawn(&rest, CELL_TEXT));
+    let large = (drawn(&law, LARGE_TEXT), drawn(&rest, LARGE_TEXT));
+    let mut column = plan_column(p, errors, fitted.deviation, &words)?;
+    let plans: Vec<diagrams::Plan> = SHORTER.iter().map(|&s| shorter_plan(p, &column, s)).collect();
     // The nomogram in the plans' finer series, unless its labels then find no clean spot
     // (a tall, narrow nomogram beside the profile leaves r_min's label no room): then in the
     // coarse one, as large as the sheet allowed before the finer series.
     let mut fine = true;
-    let (lay, column, law, rest, nm, pv, prof) = loop {
+    let (lay, (law, rest), nm, pv, prof) = loop {
         let views = Views {
             nomogram: ViewSize {
                 extent: nomogram::extent(d, &phis),
@@ -197,29 +203,21 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
                 fine: false,
             },
         };
-        let arranged = |column: &Column, h: f64| {
-            let (law, rest) = (drawn(&law, h), drawn(&rest, h));
-            let lay = regions::regions(&views.content(column, &law, &rest));
-            (lay, law, rest)
+        let arranged = |plan: &diagrams::Plan, (law, rest): &(Vec<Table>, Vec<Table>)| {
+            regions::regions(&views.content((plan, column.text_h), law, rest))
         };
         let kept = |a: &Regions, b: &Regions| a.profile_mu <= b.profile_mu && a.nomogram_mu <= b.nomogram_mu;
         // The diagrams as tall as the column allows, unless shorter ones leave the views larger
         // (the nomogram under them, the profile alone on the right at a larger scale).
-        let mut tried = vec![];
-        for shorter in SHORTER {
-            let c = plan_column(p, errors, fitted.deviation, &words, shorter)?;
-            let lay = arranged(&c, CELL_TEXT).0;
-            tried.push((c, lay));
+        let tried = plans.iter().map(|plan| (*plan, arranged(plan, &small))).collect();
+        if let Some((plan, _)) = balanced(tried) {
+            column.plan = plan;
         }
-        let column = match balanced(tried) {
-            Some((c, _)) => c,
-            None => plan_column(p, errors, fitted.deviation, &words, 0.0)?,
-        };
         // The tables in 3.5 mm lettering where the views keep their scales beside them.
-        let small = arranged(&column, CELL_TEXT);
-        let large = arranged(&column, LARGE_TEXT);
-        let (lay, law, rest) = if kept(&large.0, &small.0) { large } else { small };
-        let content = views.content(&column, &law, &rest);
+        let (on_small, on_large) = (arranged(&column.plan, &small), arranged(&column.plan, &large));
+        let lettered_large = kept(&on_large, &on_small);
+        let (lay, tables) = if lettered_large { (on_large, &large) } else { (on_small, &small) };
+        let content = views.content((&column.plan, column.text_h), &tables.0, &tables.1);
         let (nomogram_room, profile_room) = lay.label_rooms();
         let mut nm = view_group("nomogram", nomogram_room, l.nomogram_title());
         let mut nl = Labels::new();
@@ -242,7 +240,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         let prof = profile_view::draw(&mut pv, &at, d, &fitted, &phis, &mut pl, &words);
         scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), &words);
         pl.place(&mut pv, profile_room);
-        break (lay, column, law, rest, nm, pv, prof);
+        break (lay, if lettered_large { large } else { small }, nm, pv, prof);
     };
     let (dg, scales) = diagrams_group(&lay, &column, p, &integrated, &words);
     let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), &notes);

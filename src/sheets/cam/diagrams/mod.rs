@@ -4,6 +4,11 @@
 //! (thick), each with its pole at H to the left of its origin and the rays to the mid-ordinates,
 //! the exact curves thin over them. Every scale is written to the left of its graph.
 
+mod axes;
+mod plan;
+
+pub use plan::{Plan, Scales, plan, squeezed};
+
 use super::labels::CamWords;
 use crate::cams::Design;
 use crate::cams::follower::Follower;
@@ -11,152 +16,15 @@ use crate::cams::integrate::Integrated;
 use crate::cams::laws::Program;
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
-use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
-use crate::drawing::plot::{Axis, Plot, round_ticks};
-use crate::drawing::scale;
-use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text};
+use crate::drawing::plot::{Axis, Plot};
+use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::dimension;
 use crate::drawing::text::LabelText;
-use crate::num::digits::{significant, written};
 use crate::num::tol;
-use crate::num::units;
+use axes::{analog_ticks, axis_values, lift_ticks, ordinates, unlabelled};
 use kurbo::{Point, Rect, Vec2};
-use std::f64::consts::PI;
-
-/// The chosen scales: μ_φ in degrees and radians per mm, the three ordinate scales (the
-/// lift's unit — metres or radians — per mm, per radian for the analogs) and the poles, mm.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct Scales {
-    pub mu_phi_deg: f64,
-    pub mu_phi_rad: f64,
-    pub mu_s: f64,
-    pub mu_ds: f64,
-    pub mu_dds: f64,
-    pub h1: f64,
-    pub h2: f64,
-}
-
-/// The lift's most height on paper, mm.
-const LIFT_MAX_MM: f64 = 100.0;
-/// The lift's least height on paper when the shared scale of s and ds/dφ would leave it
-/// lower, mm.
-const LIFT_MIN_MM: f64 = 30.0;
-/// The acceleration analog's height each side of its axis, mm: the guide's worked example
-/// takes "the maximum amplitude along the ordinate axis 70 mm" (its fig. 1.8), and the range
-/// accepted around it (a column too low for 70 takes less).
-const ACCELERATION_MM: (f64, f64, f64) = (20.0, 70.0, 75.0);
-/// The pole distance H2, whole mm: below 15 mm its rays merge.
-const H2_MM: (f64, f64) = (15.0, 40.0);
-/// The working angle's widest drawing, mm.
-const WIDTH_MAX_MM: f64 = 240.0;
-
-/// μ_φ's series, degrees per mm (times 10ⁿ): finer than the plans' round series, so that the
-/// working angle fills the column (the guide takes 0.73 °/mm).
-const PHI_MANTISSAS: [f64; 10] = [1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
-/// Room right of the x axis' end for its arrow and name, mm.
-const RIGHT: f64 = 14.0;
-
-/// The diagrams' scales and the room they take.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Plan {
-    pub scales: Scales,
-    /// Width and height of the three diagrams with their poles, scale texts and gaps, mm.
-    pub width: f64,
-    pub height: f64,
-}
-
-/// The course's scales for diagrams in at most `max_w` × `max_h` mm:
-/// - μ_φ from [`PHI_MANTISSAS`], the smallest that fits the width (at most
-///   [`WIDTH_MAX_MM`] for the working angle);
-/// - H1 = 1/μ_φ, so that s and ds/dφ share μ_s;
-/// - μ_s of the plans' round series (steps of at most 1.5×: 5 → 6 → 7.5 → 10), the smallest
-///   (the largest drawing) with the lift at most [`LIFT_MAX_MM`]
-///   whose acceleration analog can be drawn between [`ACCELERATION_MM`] with a whole-mm H2
-///   in [`H2_MM`] within the height: the analog's height is H2·d²s/dφ²·μ_φ/μ_s, so a
-///   large μ_s's small drawing is what keeps H2 from merging its rays;
-/// - μ_d²s/dφ² = μ_ds/dφ/(H2·μ_φ), the course's rule, from the chosen H2.
-///
-/// Where one phase is so much shorter than the other that the shared scale would leave the
-/// lift under [`LIFT_MIN_MM`] (a 3° return after a 280° rise: its ds/dφ is ~90 times the
-/// rise's), μ_ds/dφ is its own round scale and H1 = μ_s/(μ_ds/dφ·μ_φ), the course's rule
-/// read the other way, at least the least H2 (shorter, the rays merge): the lift keeps a
-/// measurable height. A phase too short for any such H1 (its chords a fraction of a mm at
-/// the width the long phase needs) is drawn at the shared scale, the lift as low as it must.
-pub fn plan(d: &Design, max_w: f64, max_h: f64) -> Plan {
-    let p = &d.spec.program;
-    let work = (p.rise + p.far_dwell + p.ret).to_degrees();
-    let width = |mu_deg: f64| POLE_NAME + (180.0 / PI / mu_deg).max(H2_MM.1) + work / mu_deg + RIGHT;
-    // m·10ᵉ as the nearest double to the decimal (0.6, not 6 × 0.1 = 0.6000000000000001).
-    let series =
-        (-2..=3).flat_map(|e| PHI_MANTISSAS.map(|m| if e < 0 { m / 10f64.powi(-e) } else { m * 10f64.powi(e) }));
-    let mu_phi_deg = series
-        .clone()
-        .find(|&m| work / m <= WIDTH_MAX_MM && width(m) <= max_w)
-        .unwrap_or_else(|| series.clone().find(|&m| work / m <= WIDTH_MAX_MM).unwrap_or(1.0));
-    let mu_phi_rad = mu_phi_deg.to_radians();
-    let (vmax, amax) = peaks(d);
-    let fit = |mu_s: f64, mu_ds: f64| {
-        // A = k·H2: the analog's height per mm of pole distance.
-        let k = amax * mu_phi_rad / mu_ds;
-        let h2 = (ACCELERATION_MM.1 / k).round().clamp(H2_MM.0, H2_MM.1);
-        let a = k * h2;
-        let height = p.lift / mu_s + 2.0 * vmax / mu_ds + 2.0 * a + 4.0 * GAP + PHASES + 8.0;
-        (h2, a, height)
-    };
-    let fits = |mu_s: f64, mu_ds: f64| {
-        let (_, a, height) = fit(mu_s, mu_ds);
-        (ACCELERATION_MM.0..=ACCELERATION_MM.2).contains(&a) && height <= max_h
-    };
-    let first = scale::plan_round_up(p.lift / LIFT_MAX_MM);
-    let steps = |from: f64| std::iter::successors(Some(from), |&m| Some(scale::plan_next_round(m))).take(40);
-    // The course's shared scale; else the lift at `first` with ds/dφ at a scale of its own;
-    // else (nothing fits the height) the shared scale at which the acceleration fits.
-    let shared = steps(first).find(|&m| p.lift / m >= LIFT_MIN_MM && fits(m, m)).map(|m| (m, m));
-    let h1_at_least = |m: f64| first / (m * mu_phi_rad) >= H2_MM.0;
-    let own = || steps(first).skip(1).take_while(|&m| h1_at_least(m)).find(|&m| fits(first, m)).map(|m| (first, m));
-    let fallback = || {
-        let m = steps(first).find(|&m| fits(m, m)).unwrap_or_else(|| steps(first).last().unwrap_or(first));
-        (m, m)
-    };
-    let (mu_s, mu_ds) = shared.or_else(own).unwrap_or_else(fallback);
-    let (h2, _, height) = fit(mu_s, mu_ds);
-    // Shared, H1 = 1/μ_φ exactly (the ratio's rounding would move its last digit).
-    let h1 = if mu_s == mu_ds { 1.0 / mu_phi_rad } else { mu_s / (mu_ds * mu_phi_rad) };
-    let scales = Scales { mu_phi_deg, mu_phi_rad, mu_s, mu_ds, mu_dds: mu_ds / (h2 * mu_phi_rad), h1, h2 };
-    Plan { scales, width: width(mu_phi_deg), height }
-}
-
-/// A warning when the lift is drawn lower than [`LIFT_MIN_MM`]: a phase so short beside the
-/// other that its analogs, at the μ_φ the long phase needs, leave the lift no height.
-pub fn squeezed(d: &Design, sc: &Scales) -> Option<String> {
-    let p = &d.spec.program;
-    let lift_mm = p.lift / sc.mu_s;
-    let (short, long) =
-        if p.ret < p.rise { (("return", p.ret), ("rise", p.rise)) } else { (("rise", p.rise), ("return", p.ret)) };
-    (lift_mm < LIFT_MIN_MM).then(|| {
-        format!(
-            "diagrams: the lift is drawn {} mm high (the course's scales want {}–{} mm): the {} of {}° is {:.0} times shorter than the {} of {}°, and its ds/dφ and d²s/dφ² at the scale the working angle needs take the column's height; phases nearer each other draw readable diagrams",
-            significant(lift_mm),
-            written(LIFT_MIN_MM),
-            written(LIFT_MAX_MM),
-            short.0,
-            written(short.1.to_degrees()),
-            long.1 / short.1,
-            long.0,
-            written(long.1.to_degrees()),
-        )
-    })
-}
-
-/// The largest |ds/dφ| and |d²s/dφ²| over both phases (from the laws' peak coefficients).
-fn peaks(d: &Design) -> (f64, f64) {
-    let p = &d.spec.program;
-    let (rv, ra) = p.rise_law.peaks();
-    let (tv, ta) = p.return_law.peaks();
-    let h = p.lift;
-    ((rv * h / p.rise).max(tv * h / p.ret), (ra * h / (p.rise * p.rise)).max(ta * h / (p.ret * p.ret)))
-}
+use plan::peaks;
 
 /// What the diagrams measured.
 pub struct Drawn {
@@ -429,79 +297,6 @@ fn phase_dimensions(g: &mut Group, plot: &Plot, p: &Program, labels: &mut Labels
         labels.add(mid, Vec2::new(0.0, -1.0), text, 2.5);
     }
 }
-
-/// The displacement's ticks in the tables' units, round there: mm for a translating
-/// follower, degrees for a rocker (the values stay in SI for the plot).
-fn lift_ticks(lift: f64, mu_s: f64, rocker: bool, lang: Language) -> Vec<(f64, String)> {
-    let k = if rocker { 180.0 / PI } else { units::MM_PER_M };
-    round_ticks(0.0, lift * k, mu_s * k, lang).into_iter().map(|(v, t)| (v / k, t)).collect()
-}
-
-/// Tick marks without their values: on a graph with a pole the rays cross the values' place
-/// ([`axis_values`] writes them where they are clear, once the rays are drawn).
-fn unlabelled(ticks: Vec<(f64, String)>) -> Vec<(f64, String)> {
-    ticks.into_iter().map(|(v, _)| (v, String::new())).collect()
-}
-
-/// The ordinates of the integrated curve at the division points, thin, from the axis: what the
-/// course measures the table's values on. Those under half a millimetre are left out.
-fn ordinates(g: &mut Group, plot: &Plot, drawn: &[(f64, f64)]) {
-    for &(x, y) in drawn {
-        if (y / plot.y.mu).abs() >= 0.5 {
-            g.line(plot.at(x, 0.0), plot.at(x, y), THIN);
-        }
-    }
-}
-
-/// The y axis' values of a graph with a pole: each beside its tick, right of the axis (the
-/// pole's rays fill the left) where the curves leave room, with the tick carried across the
-/// axis to it, else left of it where no ray crosses the place, else left out (the graph's
-/// scale is written above the pole). `start` marks the graph's first item: only its own
-/// lines are asked.
-fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], start: usize) {
-    let drawn = Obstacles::of_items(&g.items[start..]);
-    let x0 = plot.at(plot.x.lo, 0.0).x;
-    for (v, value) in ticks {
-        let y_tick = plot.at(0.0, *v).y;
-        let y = y_tick + VALUE_H / 2.0;
-        let w = LabelText::new(value.as_str(), "").width(VALUE_H);
-        let xr = x0 + VALUE_TICK + 0.8;
-        let right = (Point::new(xr, y), Anchor::Start, Rect::new(x0 + 0.6, y - VALUE_H, xr + w, y));
-        let left =
-            (Point::new(x0 - VALUE_TICK - 0.8, y), Anchor::End, Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y));
-        let clear = |r: Rect| drawn.is_clear(r.inflate(0.3, 0.3));
-        if clear(right.2) {
-            g.line(Point::new(x0, y_tick), Point::new(x0 + VALUE_TICK, y_tick), THIN);
-            g.text(Text::new(right.0, value.clone(), VALUE_H, right.1));
-        } else if clear(left.2) {
-            g.text(Text::new(left.0, value.clone(), VALUE_H, left.1));
-        }
-    }
-}
-
-/// An analog's ticks each side of its axis (`peak` its largest value): at a round step
-/// about a tenth of the range and at least [`VALUE_STEP_MM`] apart, the values in mm for a
-/// translating follower (as its tables give them), without unit for a rocker.
-fn analog_ticks(peak: f64, mu: f64, rocker: bool, lang: Language) -> Vec<(f64, String)> {
-    let k = if rocker { 1.0 } else { units::MM_PER_M };
-    let step = scale::round_up(2.0 * peak * k / 10.0).max(scale::round_up(VALUE_STEP_MM * mu * k));
-    let n = (peak * k / step * (1.0 + 1e-9)).floor() as i64;
-    (-n..=n)
-        .filter(|&i| i != 0)
-        .map(|i| {
-            let v = i as f64 * step;
-            (v / k, fmt::localise(&scale::format(v), lang))
-        })
-        .collect()
-}
-
-/// The analogs' values at least this far apart, mm.
-const VALUE_STEP_MM: f64 = 8.0;
-/// The plots' tick length, mm: a value right of the axis gets its tick there too.
-const VALUE_TICK: f64 = 1.5;
-
-/// The axis values' lettering height, mm (the plots' own).
-const VALUE_H: f64 = 2.5;
 
 /// "μ_q = value unit", with q as a subscript.
 fn mu(q: &str, value: f64, unit: &str, lang: Language) -> LabelText {
