@@ -343,6 +343,50 @@ fn the_phases_are_dimensioned_between_their_positions() {
     }
 }
 
+/// Every phase value stands on a line — its dimension line, or a leader's shelf where the
+/// phase is too short to hold it (the worked example's far dwell of 10°) — and none hangs
+/// under one, where it reads as the value of the line above it.
+#[test]
+fn the_phase_values_stand_on_their_lines_and_hang_under_none() {
+    use kurbo::PathEl;
+    use tmm_sheets::drawing::scene::Item;
+    let text = std::fs::read_to_string(root().join("fixtures/worked-example.yaml")).unwrap();
+    for lang in Language::ALL {
+        let b = sheet3(&load_in(&text, lang));
+        let g = b.output.scene.groups.iter().find(|g| g.id == "diagrams").unwrap();
+        // The horizontal straight lines of the diagrams: (y, x from, x to).
+        let mut lines = Vec::new();
+        for item in &g.items {
+            if let Item::Path { path, .. } = item {
+                let mut last = None;
+                for el in path.to_bez().elements() {
+                    match *el {
+                        PathEl::MoveTo(p) => last = Some(p),
+                        PathEl::LineTo(q) => {
+                            if let Some(p) = last.filter(|p: &kurbo::Point| (p.y - q.y).abs() < 1e-9) {
+                                lines.push((p.y, p.x.min(q.x), p.x.max(q.x)));
+                            }
+                            last = Some(q);
+                        }
+                        _ => last = None,
+                    }
+                }
+            }
+        }
+        let values: Vec<_> = g.texts().filter(|t| t.text == "φ" && t.tail.trim().ends_with('°')).collect();
+        assert_eq!(values.len(), 4, "{lang:?}: rise, far dwell, return and the working angle");
+        for t in values {
+            let r = t.bbox();
+            let spans = |&&(_, x0, x1): &&(f64, f64, f64)| x0 <= r.x0 + 0.5 && x1 >= r.x1 - 0.5;
+            let under = lines.iter().filter(spans).filter(|l| l.0 >= r.y1 - 0.5 && l.0 - r.y1 < 1.5).count();
+            let over =
+                lines.iter().filter(|l| l.1 < r.x1 && l.2 > r.x0).filter(|l| l.0 <= r.y0 && r.y0 - l.0 < 2.0).count();
+            assert!(under >= 1, "{lang:?}: {:?}{:?} stands on no line", t.text, t.tail);
+            assert_eq!(over, 0, "{lang:?}: {:?}{:?} hangs under a line", t.text, t.tail);
+        }
+    }
+}
+
 /// On the profile every position number stands outside every roller (inside another
 /// roller's circle it reads as that roller's number), in every cam fixture.
 #[test]

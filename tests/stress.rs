@@ -217,7 +217,10 @@ fn pairs_the_sweep_found_off_the_page_fit_their_region() {
 /// (its ds/dφ ~80 times the rise's: the diagram a sliver, its scale text on the pole's name);
 /// a nomogram in a narrow region beside the profile (r_min's label across the wedge); a 3.7°
 /// return's nine division numbers in 0.2 mm. The first also warns that its lift is drawn
-/// lower than the course's scales want.
+/// lower than the course's scales want. Two short phases side by side (18.4° and 3.53°, 1° and
+/// 20.26°) and a 1° phase at either end of the axis: their values' shelves stay clear of each
+/// other and inside the column (the first shelves went off the column's right edge and across
+/// each other).
 #[test]
 fn cams_the_sweep_found_with_texts_crossed_are_clean() {
     let cam = |follower: &str, (rise, dwell, ret): (f64, f64, f64), law: &str, alpha: f64| {
@@ -231,6 +234,8 @@ fn cams_the_sweep_found_with_texts_crossed_are_clean() {
         cam("{translating: {stroke: 0.4913, offset: auto}}", (77.03, 115.23, 49.78), "uniform-acceleration", 13.2),
         cam("{translating: {stroke: 0.2394, offset: auto}}", (178.96, 0.19, 180.04), "sine", 16.9),
         cam("{translating: {stroke: 0.5999, offset: auto}}", (61.54, 120.5, 3.74), "linearly-decreasing", 13.5),
+        cam("{translating: {stroke: 0.0010, offset: auto}}", (169.78, 102.76, 1.0), "sine", 10.0),
+        cam("{translating: {stroke: 0.0010, offset: auto}}", (1.0, 20.26, 207.04), "sine", 10.0),
     ] {
         assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
     }

@@ -23,6 +23,19 @@ pub fn significant(x: f64) -> String {
     s
 }
 
+/// The fewest decimals (at most three) that write every one of `values` exactly — the
+/// positions' angles of a phase divided into eight (80; 88,75; 97,5 … print with two, so
+/// 106,25 is not cut to 106,2) — or `None` when some value needs more.
+pub fn exact_decimals(values: &[f64]) -> Option<usize> {
+    (0..=3).find(|&d| {
+        let scale = 10f64.powi(d as i32);
+        values.iter().all(|&v| {
+            let x = v * scale;
+            (x - x.round()).abs() <= 1e-6 * x.abs().max(1.0)
+        })
+    })
+}
+
 /// `x` to `digits` significant digits (at least one), trailing zeros dropped, for a message:
 /// plain between 10⁻⁴ and 10⁶, else in scientific notation (`-2e-9`, `1.23e9`), so that neither
 /// a tiny imbalance nor a huge size prints as a row of zeros or of hundreds of digits.
@@ -71,6 +84,15 @@ fn trim_zeros(s: String) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn exact_decimals_are_the_fewest_that_write_every_value() {
+        assert_eq!(exact_decimals(&[80.0, 88.75, 97.5, 106.25]), Some(2));
+        assert_eq!(exact_decimals(&[0.0, 15.0, 30.0]), Some(0));
+        assert_eq!(exact_decimals(&[(106.25f64).to_radians().to_degrees()]), Some(2), "a degree's round trip");
+        assert_eq!(exact_decimals(&[0.0, 13.0 / 3.0]), None);
+        assert_eq!(exact_decimals(&[]), Some(0));
+    }
 
     #[test]
     fn four_significant_digits_and_no_round_off() {

@@ -59,7 +59,7 @@ pub fn law(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable
         id,
         columns: positions(first, phis.len()),
         rows: vec![
-            plain("φ", Unit::Deg, col(&|phi, _| phi.to_degrees())),
+            plain("φ", Unit::Deg, col(&|phi, _| phi.to_degrees())).exactly(),
             plain(s, us, col(&|phi, k| lift(d, at(phi, k).s))),
             plain(v, uv, col(&|phi, k| analog(d, at(phi, k).ds))),
             plain(a, uv, col(&|phi, k| analog(d, at(phi, k).dds))),
@@ -82,7 +82,7 @@ pub fn profile(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumT
     let col = |f: &dyn Fn(f64) -> f64| phis.iter().map(|&phi| f(phi)).collect::<Vec<_>>();
     let (pitch, work) = (|| Sub::Word(SubWord::Pitch), || Sub::Word(SubWord::Work));
     let mut rows = vec![
-        plain("φ", Unit::Deg, col(&|phi| phi.to_degrees())),
+        plain("φ", Unit::Deg, col(&|phi| phi.to_degrees())).exactly(),
         Row::new("r", pitch(), Unit::Mm, col(&|phi| mm(polar(phi, false).0))),
         Row::new("θ", pitch(), Unit::Deg, col(&|phi| polar(phi, false).1.to_degrees())),
     ];

@@ -125,9 +125,8 @@ pub fn markdown(n: &NoteTable, prefix: &str) -> String {
         let sub = if sub.is_empty() { String::new() } else { format!("<sub>{}</sub>", md_escape(sub)) };
         let anchor = format!("<a id=\"{prefix}.{}.{}\"></a>", t.id, r.key);
         let _ = write!(s, "| {anchor}{}{sub} | {} |", md_escape(symbol), md_escape(unit));
-        for &v in &r.values {
-            let whole = n.whole_numbers && v.fract() == 0.0 && v.abs() < 1e9;
-            let v = if whole { format!("{v:.0}") } else { crate::num::digits::significant(v) }.replace('-', "−");
+        for v in r.printed(n.whole_numbers) {
+            let v = v.replace('-', "−");
             let _ = write!(s, " {} |", if n.decimal_comma { v.replace('.', ",") } else { v });
         }
         s.push('\n');

@@ -150,6 +150,10 @@ pub struct Row {
     /// A count (tooth numbers, planets, a condition's sides): printed without decimals when
     /// whole.
     pub count: bool,
+    /// Values on a grid of few decimals (the positions' angles): printed with the fewest
+    /// decimals that write each exactly, the same in every cell, rather than with four
+    /// significant digits.
+    pub exact: bool,
 }
 
 impl Row {
@@ -159,7 +163,7 @@ impl Row {
             s if s.is_empty() => ascii_key(symbol),
             s => format!("{}_{s}", ascii_key(symbol)),
         };
-        Row { key, quantity: Quantity::Symbol(symbol, sub), unit, values, count: false }
+        Row { key, quantity: Quantity::Symbol(symbol, sub), unit, values, count: false, exact: false }
     }
 
     /// The same row under an explicit key (for symbols a rule would name badly: "P′" →
@@ -175,9 +179,37 @@ impl Row {
         self
     }
 
+    /// The same row marked as exact at few decimals (see [`Row::exact`]).
+    pub fn exactly(mut self) -> Row {
+        self.exact = true;
+        self
+    }
+
+    /// The values as a reader gets them (a point and a hyphen-minus): a whole count (when
+    /// `whole` counts are printed so) without decimals, an exact row with its fewest exact
+    /// decimals, anything else with four significant digits.
+    pub fn printed(&self, whole: bool) -> Vec<String> {
+        let decimals = if self.exact { crate::num::digits::exact_decimals(&self.values) } else { None };
+        self.values
+            .iter()
+            .map(|&v| match decimals {
+                _ if whole && v.fract() == 0.0 && v.abs() < 1e9 => format!("{v:.0}"),
+                Some(d) => crate::num::digits::fixed(v, d),
+                None => crate::num::digits::significant(v),
+            })
+            .collect()
+    }
+
     /// A condition's row: its value, its limit and 1 when it is met, else 0.
     pub fn condition(kind: ConditionKind, values: Vec<f64>) -> Row {
-        Row { key: kind.key().to_string(), quantity: Quantity::Condition(kind), unit: Unit::None, values, count: true }
+        Row {
+            key: kind.key().to_string(),
+            quantity: Quantity::Condition(kind),
+            unit: Unit::None,
+            values,
+            count: true,
+            exact: false,
+        }
     }
 }
 

@@ -12,7 +12,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{Group, Ink, Item, Scene};
 use crate::drawing::table;
 use crate::drawing::text::{LabelText, TooLong};
-use crate::report::{NoteTable, NumTable, Row, Segment};
+use crate::report::{NoteTable, NumTable, Segment};
 use kurbo::Rect;
 
 /// A sheet as its module composes it: everything but the frame and the title block.
@@ -142,14 +142,8 @@ pub fn note(
     }
 }
 
-/// A value as a drawn table prints it: a whole count without decimals, anything else with
-/// four significant digits.
-pub fn cell(r: &Row, v: f64, lang: Language) -> String {
-    if r.count && v.fract() == 0.0 && v.abs() < 1e9 { format!("{v:.0}") } else { fmt::value(v, lang) }
-}
-
 /// The rows of a drawn table: each quantity as a label (with ", unit" after it when
-/// `unit_tails` and the row has a unit), its values printed by [`cell`].
+/// `unit_tails` and the row has a unit), its values as [`crate::report::Row::printed`] writes them.
 pub fn drawn_rows(n: &NoteTable, lang: Language, unit_tails: bool) -> Vec<(LabelText, Vec<String>)> {
     n.table
         .rows
@@ -167,7 +161,7 @@ pub fn drawn_rows(n: &NoteTable, lang: Language, unit_tails: bool) -> Vec<(Label
             if unit_tails && !unit.is_empty() {
                 label.tail.push_str(&format!(", {unit}"));
             }
-            (label, r.values.iter().map(|&v| cell(r, v, lang)).collect())
+            (label, r.printed(r.count).iter().map(|v| fmt::localise(v, lang)).collect())
         })
         .collect()
 }

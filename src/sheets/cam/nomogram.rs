@@ -260,7 +260,7 @@ fn draw_limiting_lines(
         let at = angle_mark(g, a, axis, paper(dir), ANGLE_MARK_MM);
         let alpha = ph.allowed(&d.spec.allowed).to_degrees();
         let sub = if ph == Phase::Rise { words.sheet.sub_rise() } else { words.sheet.sub_return() };
-        let text = LabelText::new("α", sub).with_tail(format!(" = {}°", fmt::value(alpha, words.lang)));
+        let text = LabelText::new("α", sub).with_tail(format!(" = {}°", fmt::trimmed(alpha, words.lang)));
         labels.add_ranked(at, at - a, text, 2.5, 1);
     }
     limiting
@@ -297,19 +297,19 @@ fn draw_centre(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words
     vector(g, view.p(o), view.p(Vec2::ZERO), THIN);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
-        fmt::value(mm(d.centre.r_min), lang),
+        fmt::trimmed(mm(d.centre.r_min), lang),
         c.unit_mm()
     ));
     labels.add(view.p(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5);
     if let Some(a) = d.spec.follower.pivot() {
         g.line(view.p(o), view.p(a), DASHED);
         let dist = d.centre_distance().unwrap_or_default();
-        let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::value(mm(dist), lang), c.unit_mm()));
+        let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::trimmed(mm(dist), lang), c.unit_mm()));
         labels.add(view.p((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
     } else if o.x.abs() > tol::ZERO_OFFSET {
         let depth = offset_depth(d, view.len(o.x.abs()));
         let mid = dimension(g, view.p(Vec2::new(0.0, o.y)), view.p(o), Vec2::new(0.0, depth));
-        let t = format!("e = {} {}", fmt::value(mm(o.x.abs()), lang), c.unit_mm());
+        let t = format!("e = {} {}", fmt::trimmed(mm(o.x.abs()), lang), c.unit_mm());
         labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);
     }
 }

@@ -60,7 +60,7 @@ pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, words: &C
 
 /// The allowed pressure angle as the note states it: one value, or each phase's.
 fn allowed_angles(d: &Design, words: &CamWords) -> String {
-    let deg = |x: f64| format!("{}°", fmt::value(x.to_degrees(), words.lang));
+    let deg = |x: f64| format!("{}°", fmt::trimmed(x.to_degrees(), words.lang));
     let a = &d.spec.allowed;
     if a.rise == a.ret { deg(a.rise) } else { words.sheet.angles_two(&deg(a.rise), &deg(a.ret)) }
 }

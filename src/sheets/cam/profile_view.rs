@@ -194,7 +194,7 @@ fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words:
     labels.add_line_name(view.p(aside), out, LabelText::new(l.base_circle(), ""), 2.5, 3);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
-        fmt::value(mm(d.centre.r_min), words.lang),
+        fmt::trimmed(mm(d.centre.r_min), words.lang),
         words.common.unit_mm()
     ));
     labels.add_ranked(view.p(base * 0.55), Vec2::ZERO, r_text, 2.5, 1);

@@ -16,7 +16,7 @@ use crate::cams::integrate::Integrated;
 use crate::cams::laws::Program;
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
-use crate::drawing::place::Labels;
+use crate::drawing::place::{Labels, label_size};
 use crate::drawing::plot::{Axis, Plot};
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::dimension;
@@ -270,9 +270,13 @@ fn number_divisions(plot: &Plot, integrated: &[Integrated; 2], labels: &mut Labe
 /// working angle's, mm below the axis.
 const NUMBERS: f64 = 5.5;
 const PHASE_ROW: f64 = 12.5;
-const WORK_ROW: f64 = 20.0;
+/// Low enough that a short phase's value on its shelf (see [`SHELF_DROP`]) stands clear above
+/// the working angle's.
+const WORK_ROW: f64 = 26.5;
 /// The room the phases' dimensions add under the displacement, mm.
-const PHASES: f64 = 12.0;
+const PHASES: f64 = 18.5;
+/// How far below its dimension line a short phase's value stands on its leader's shelf, mm.
+const SHELF_DROP: f64 = 7.0;
 
 /// The phase angles as the course dimensions them under the displacement's axis (rise, far
 /// dwell, return), and the working angle under those; extension lines start below the
@@ -287,6 +291,10 @@ fn phase_dimensions(g: &mut Group, plot: &Plot, p: &Program, labels: &mut Labels
         (0.0, work, l.sub_working_angle(), WORK_ROW),
     ];
     let below = Vec2::new(0.0, NUMBERS);
+    // The shelves so far (x from, x to), and how far a shelf may reach: from the
+    // axis' origin less the room under its scale to the axis' arrow.
+    let mut shelved: Vec<(f64, f64)> = Vec::new();
+    let (left, right) = (plot.origin.x - POLE_NAME, plot.at(work.to_degrees(), 0.0).x + RIGHT_ROOM);
     for (a, b, sub, row) in rows {
         if b - a <= 0.0 {
             continue;
@@ -294,8 +302,50 @@ fn phase_dimensions(g: &mut Group, plot: &Plot, p: &Program, labels: &mut Labels
         let (pa, pb) = (plot.at(a.to_degrees(), 0.0) + below, plot.at(b.to_degrees(), 0.0) + below);
         let mid = dimension(g, pa, pb, Vec2::new(0.0, row - NUMBERS));
         let text = LabelText::new("φ", sub).with_tail(format!(" = {}°", fmt::trimmed((b - a).to_degrees(), lang)));
-        labels.add(mid, Vec2::new(0.0, -1.0), text, 2.5);
+        let (w, _, depth) = label_size(&text, 2.5);
+        // Too short to write between its extension lines, and a value written under the line
+        // would read as the working angle's: on a leader's shelf (GOST 2.307), towards the
+        // axis' middle, else the other way, clear of the other shelves' values.
+        let short = w + 2.0 > pb.x - pa.x && row == PHASE_ROW;
+        let inward = if mid.x > (left + right) / 2.0 { -1.0 } else { 1.0 };
+        let reach = |side: f64| side * ((pb.x - pa.x) / 2.0 + 2.0);
+        let spot = [inward, -inward].into_iter().map(reach).find(|&r| {
+            let (x0, x1) = shelf_span(mid.x, r, w);
+            x0 >= left && x1 <= right && shelved.iter().all(|&(a, b)| x1 + 1.5 < a || x0 > b + 1.5)
+        });
+        match spot.filter(|_| short) {
+            Some(r) => {
+                shelved.push(shelf_span(mid.x, r, w));
+                shelf(g, mid, r, text, (w, depth));
+            }
+            None => labels.add(mid, Vec2::new(0.0, -1.0), text, 2.5),
+        }
     }
+}
+
+/// Room right of the displacement's axis end that a shelf may take, mm (its arrow and "φ"
+/// stand above the axis).
+const RIGHT_ROOM: f64 = 10.0;
+
+/// What a shelf takes across (x from, x to), its leader and its value, when the leader starts
+/// at `x` and runs `reach` across (see [`shelf`]) and the value is `w` wide.
+fn shelf_span(x: f64, reach: f64, w: f64) -> (f64, f64) {
+    let far = x + reach + reach.signum() * (0.5 + w);
+    (x.min(far), x.max(far))
+}
+
+/// A value on a leader's shelf below `from` (a dimension line's middle): the leader runs `reach`
+/// across (negative: to the left; past the extension line), the shelf on to that side as long
+/// as the value is wide, its subscript clear of it (`size`: the value's width and depth below
+/// its baseline).
+fn shelf(g: &mut Group, from: Point, reach: f64, text: LabelText, (w, depth): (f64, f64)) {
+    let side = reach.signum();
+    let knee = from + Vec2::new(reach, SHELF_DROP);
+    let end = knee + Vec2::new(side * (w + 1.0), 0.0);
+    g.line(from, knee, THIN);
+    g.line(knee, end, THIN);
+    let anchor = if side < 0.0 { Anchor::End } else { Anchor::Start };
+    text.draw(g, Point::new(knee.x + side * 0.5, knee.y - depth - 0.5), 2.5, anchor);
 }
 
 /// "μ_q = value unit", with q as a subscript.
@@ -343,7 +393,7 @@ fn pole(g: &mut Group, plot: &Plot, pole: Pole, ys: &[f64], mu: f64, words: &Cam
     // H with its index as the sheet's other subscripts, clear of the pole's dot.
     let text = LabelText::new("H", pole.index).with_tail(format!(
         " = {} {}",
-        fmt::value(h, words.lang),
+        fmt::trimmed(h, words.lang),
         words.common.unit_mm()
     ));
     text.draw(g, Point::new(p.x - 2.5, p.y + 1.0), 2.5, Anchor::End);
