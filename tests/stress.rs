@@ -308,3 +308,38 @@ fn a_six_bar_with_a_crank_a_fourteenth_of_its_frame_has_its_labels_clear() {
     );
     assert_eq!(verdict(&text), Ok(Outcome::Built));
 }
+
+/// The force analysis at the dead centres and toggles themselves and a nanoradian either side:
+/// every fixture with a force analysis, its assigned position put at position 0 (an extreme of
+/// the output link: a slider's dead centre, a rocker's toggle) and at the other extreme, each
+/// exactly and 1e-9 rad before and after. Where the output link stands still the Zhukovsky
+/// lever and the groups' equilibrium meet a zero velocity and a zero-length side: each case
+/// builds with every number finite and its layout clean, or is refused with a reason.
+#[test]
+fn forces_at_and_a_nanoradian_beside_the_dead_centres_build_or_refuse_cleanly() {
+    let with_assigned = |text: &str, deg: f64| -> String {
+        let kept: Vec<&str> = text.lines().filter(|l| !l.trim_start().starts_with("assigned_deg:")).collect();
+        kept.join("\n").replace("\nanalysis:\n", &format!("\nanalysis:\n  assigned_deg: {deg:.12}\n"))
+    };
+    let nano = 1e-9f64.to_degrees();
+    let mut built = 0;
+    for name in ["crank-slider-axial", "crank-slider-offset-vertical", "four-bar", "worked-example", "kulisa"] {
+        let text = common::fixture_text(name);
+        let p = pipeline::load(&text).unwrap();
+        let sheets = pipeline::build(&p, &[]).unwrap();
+        let other = sheets[0].output.results["other_extreme_phi_deg"].as_f64().unwrap_or(180.0);
+        for at in [0.0, other] {
+            for d in [0.0, nano, -nano] {
+                let deg = (at + d).rem_euclid(360.0);
+                let case = with_assigned(&text, deg);
+                assert!(case.contains(&format!("assigned_deg: {deg:.12}")), "{name}: the angle was not set");
+                match verdict(&case) {
+                    Ok(Outcome::Built) => built += 1,
+                    Ok(Outcome::Refused) => {}
+                    Err(e) => panic!("{name} at φ1 = {deg}°: {e}"),
+                }
+            }
+        }
+    }
+    assert!(built >= 20, "only {built} of 30 built");
+}

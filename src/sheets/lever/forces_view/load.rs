@@ -4,6 +4,7 @@
 use super::legend::{cell_title, scale_item, text_rows};
 use super::{ForcesInput, LINE};
 use crate::drawing::fmt;
+use crate::drawing::labels::Language;
 use crate::drawing::place::Labels;
 use crate::drawing::plot::{Axis, Plot, level_ticks};
 use crate::drawing::scale;
@@ -12,6 +13,8 @@ use crate::drawing::text::LabelText;
 use crate::lever::load::{Load, Stroke};
 use kurbo::{Rect, Vec2};
 
+/// The lettering of the plot's values, mm (as [`Plot::draw_axes`] sets them).
+const TICK_TEXT: f64 = 2.5;
 /// Room around a load diagram's plot, mm: the title and the P axis' arrow and name above,
 /// the tick values on the left, the legend's two lines below.
 const TOP: f64 = 20.0;
@@ -46,12 +49,13 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
     let area = Rect::new(r.x0 + LEFT, r.y0 + TOP, r.x1 - 14.0, r.y1 - BOTTOM);
     let signed = |b: usize, y: f64| y * load.branches[b].scale;
     let (lo, hi, mu) = force_scale(load);
+    let along = value.force.dot(load.axis);
     let x = Axis {
         lo: 0.0,
         hi: 1.0,
         mu: 1.0 / area.width(),
         name: "S/H".into(),
-        ticks: [0.0, 0.5, 1.0].map(|v| (v, fmt::localise(&format!("{v}"), lang))).to_vec(),
+        ticks: s_ticks(area.width(), (lo, hi), (value.s, along), lang),
     };
     // Each stroke's least and largest force: P_max and the idle level read on the axis.
     let levels: Vec<f64> = (0..load.branches.len())
@@ -84,7 +88,6 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
         let at = plot.at(s, signed(b, br.curve.at(s)));
         names.push((at, Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name));
     }
-    let along = value.force.dot(load.axis);
     let mark = plot.at(value.s, along);
     g.line(plot.at(value.s, 0.0), mark, THIN);
     g.circle(mark, 1.0, MAIN);
@@ -104,4 +107,24 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
     ];
     text_rows(g, r.x0 + 2.0, r.y1 - 2.0 - LINE, &lines);
     (mu, area.width())
+}
+
+/// The S/H values 0, ½ and 1 on an axis `width` mm long, the P axis spanning `lo..hi`; a value
+/// the analysed position's ordinate (at S/H, P = `mark`) would cross — on the side of the axis
+/// where the values stand (the one with less of the diagram, as [`Plot::draw_axes`] sets
+/// them), within its width — is left out: its tick stays, and the position's S/H is written
+/// under the diagram.
+fn s_ticks(width: f64, (lo, hi): (f64, f64), (s, along): (f64, f64), lang: Language) -> Vec<(f64, String)> {
+    let values_above = -lo > hi;
+    let same_side = along.abs() * width > 0.0 && (along > 0.0) == values_above;
+    [0.0, 0.5, 1.0]
+        .map(|v| {
+            let label = fmt::localise(&format!("{v}"), lang);
+            let w = LabelText::new(label.clone(), "").width(TICK_TEXT);
+            // As `draw_axes` sets them: at the y axis beside it, else centred on the tick.
+            let (x0, x1) = if v == 0.0 { (0.8, 0.8 + w) } else { (v * width - w / 2.0, v * width + w / 2.0) };
+            let crossed = same_side && (x0 - 0.3..=x1 + 0.3).contains(&(s * width));
+            (v, if crossed { String::new() } else { label })
+        })
+        .to_vec()
 }
