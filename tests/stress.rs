@@ -207,6 +207,9 @@ fn pairs_the_sweep_found_off_the_page_fit_their_region() {
         "{module: 4.40, z: [10, 25], shift: [-0.362, 0.805]}",
         // A circle's part inside the region had no sweep: boxed at (0, 0), "off the page".
         "{module: 5.31, z: [318, 155], shift: [0.522, 0.281]}",
+        // A pair alone, its mesh as wide as the tables leave: the region ran over the title
+        // block and the circles' arcs through its lines (now the region ends above it).
+        "{module: 5.50, z: [18, 17]}",
     ] {
         let text = format!("{HEADER}gears:\n  pair: {pair}\n");
         assert_eq!(verdict(&text), Ok(Outcome::Built), "{pair}");
@@ -220,7 +223,7 @@ fn pairs_the_sweep_found_off_the_page_fit_their_region() {
 /// lower than the course's scales want. Two short phases side by side (18.4° and 3.53°, 1° and
 /// 20.26°) and a 1° phase at either end of the axis: their values' shelves stay clear of each
 /// other and inside the column (the first shelves went off the column's right edge and across
-/// each other).
+/// each other); a 1° rise's tables.
 #[test]
 fn cams_the_sweep_found_with_texts_crossed_are_clean() {
     let cam = |follower: &str, (rise, dwell, ret): (f64, f64, f64), law: &str, alpha: f64| {
@@ -236,6 +239,9 @@ fn cams_the_sweep_found_with_texts_crossed_are_clean() {
         cam("{translating: {stroke: 0.5999, offset: auto}}", (61.54, 120.5, 3.74), "linearly-decreasing", 13.5),
         cam("{translating: {stroke: 0.0010, offset: auto}}", (169.78, 102.76, 1.0), "sine", 10.0),
         cam("{translating: {stroke: 0.0010, offset: auto}}", (1.0, 20.26, 207.04), "sine", 10.0),
+        // A 1° rise: its analogs' values are eight digits long, and the tables lettered 3.5 mm
+        // for the views' sake were wider than their strip (now 2.5 mm where 3.5 does not fit).
+        cam("{translating: {stroke: 0.4181, offset: auto}}", (1.0, 0.0, 8.35), "trapezoid", 41.6),
     ] {
         assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
     }

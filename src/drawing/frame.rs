@@ -153,6 +153,11 @@ fn template() -> &'static Template {
     T.get_or_init(|| serde_saphyr::from_str(SOURCE).expect("templates/sheet-a1.yaml is valid (tested)"))
 }
 
+/// The frame's group id.
+pub const FRAME: &str = "frame";
+/// The title block's group id.
+pub const TITLE_BLOCK: &str = "title-block";
+
 pub const A1_W: f64 = 841.0;
 pub const A1_H: f64 = 594.0;
 

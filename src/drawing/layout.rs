@@ -2,6 +2,7 @@
 //! each other, items leaving their region or the page. A teacher sends a sheet back for any of them, so
 //! `results.json` reports the counts and the tests hold them at zero.
 
+use super::frame::{FRAME, TITLE_BLOCK};
 use super::obstacles::{Obstacles, Piece, segment_meets_rect};
 use super::scene::{Item, Scene};
 use crate::num::math::Norm;
@@ -90,6 +91,19 @@ pub fn measure(scene: &Scene) -> Layout {
         }
     }
     let page = Rect::new(0.0, 0.0, scene.width, scene.height);
+    // The title block is no drawing's room, whatever its region says.
+    let title_block = scene.groups.iter().find(|g| g.id == TITLE_BLOCK).map(|g| g.region.inflate(-EDGE, -EDGE));
+    for g in scene.groups.iter().filter(|g| g.id != TITLE_BLOCK && g.id != FRAME) {
+        for item in &g.items {
+            let bb = item.bbox();
+            if let Some(tb) =
+                title_block.filter(|tb| tb.intersect(bb).area() > 0.0 && !Obstacles::of_items([item]).is_clear(*tb))
+            {
+                out.outside_region += 1;
+                out.note(format!("drawing '{}': {} enters the title block {}", g.id, extent(bb), extent(tb)));
+            }
+        }
+    }
     for g in &scene.groups {
         let region = g.region.inflate(EDGE, EDGE);
         for item in &g.items {
@@ -270,6 +284,24 @@ pub(crate) mod tests {
         s.groups[0].region = Rect::new(0.0, 0.0, 50.0, 200.0);
         s.groups[0].items.push(Item::Text(Text::new(Point::new(60.0, 60.0), "beside", 2.5, Anchor::Start)));
         assert_eq!(measure(&s).outside_region, 3, "leaving the page and the region counts once");
+    }
+
+    /// The title block is no drawing's room even where a drawing's region covers it (a mesh
+    /// region as wide as the tables leave ran over it, its circles' arcs through the block's
+    /// lines): an arc entering it is counted, one passing round its corner is not.
+    #[test]
+    fn a_drawing_entering_the_title_block_is_counted_even_inside_its_region() {
+        let arc = |r: f64| Item::Path { path: crate::drawing::path::Path::arc(Point::ZERO, r, 0.0, 1.5), pen: THIN };
+        let mut s = scene(vec![arc(105.0)]);
+        (s.width, s.height, s.groups[0].region) = (200.0, 200.0, Rect::new(0.0, 0.0, 200.0, 200.0));
+        s.groups.push(Group::new(TITLE_BLOCK, Rect::new(70.0, 70.0, 100.0, 100.0)));
+        let m = measure(&s);
+        assert_eq!(m.outside_region, 1, "{m:?}");
+        assert!(m.problems[0].contains("enters the title block"), "{m:?}");
+        // Radius 105 passes through (74.2, 74.2); radius 95 stays short of the block's corner
+        // (99.0 from the centre), though its box overlaps the block's.
+        s.groups[0].items = vec![arc(95.0)];
+        assert!(measure(&s).is_clean(), "{:?}", measure(&s));
     }
 
     /// A thick line's ink reaches into a text whose box its centre line only passes beside:

@@ -39,7 +39,7 @@ pub struct Composition {
 /// The whole sheet: the frame, the composition's groups, the title block.
 pub fn scene(ctx: &Context, kind: SheetKind, c: &Composition) -> Result<Scene, TooLong> {
     let lang = ctx.info.language;
-    let mut fr = Group::new("frame", Rect::new(0.0, 0.0, A1_W, A1_H));
+    let mut fr = Group::new(frame::FRAME, Rect::new(0.0, 0.0, A1_W, A1_H));
     frame::frame(&mut fr);
     let tb = ctx.title_block(Common::get(lang), &c.name, &fmt::localise(&scale::ratio(c.mu_l), lang))?;
     let mut groups = Vec::with_capacity(c.groups.len() + 2);
@@ -56,8 +56,7 @@ pub fn scene(ctx: &Context, kind: SheetKind, c: &Composition) -> Result<Scene, T
     })
 }
 
-/// The title block's group id.
-pub const TITLE_BLOCK: &str = "title-block";
+pub use crate::drawing::frame::TITLE_BLOCK;
 
 /// The sheet's constructions alone, in the overlay's ink at their places on the sheet: the
 /// frame (to register the film on a hand drawing's frame), every drawing's lines, circles

@@ -215,7 +215,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         }
         // The tables in 3.5 mm lettering where the views keep their scales beside them.
         let (on_small, on_large) = (arranged(&column.plan, &small), arranged(&column.plan, &large));
-        let lettered_large = kept(&on_large, &on_small);
+        let lettered_large = kept(&on_large, &on_small) && on_large.tables_fit(&large.0, &large.1);
         let (lay, tables) = if lettered_large { (on_large, &large) } else { (on_small, &small) };
         let content = views.content((&column.plan, column.text_h), &tables.0, &tables.1);
         let (nomogram_room, profile_room) = lay.label_rooms();

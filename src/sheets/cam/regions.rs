@@ -123,6 +123,17 @@ impl Frame {
 }
 
 impl Regions {
+    /// Whether the tables fit the regions left for them: the law's each as wide as the
+    /// column at most where they go under it, the rest (or all) flowed into the strip.
+    pub fn tables_fit(&self, law: &[Table], rest: &[Table]) -> bool {
+        let flows =
+            |ts: Vec<(f64, f64)>, r: Rect| table::flow_height(&ts, r.width(), 3.0).is_some_and(|h| h <= r.height());
+        match self.law_tables {
+            Some(col) => sizes(law).iter().all(|s| s.0 <= col.width()) && flows(sizes(rest), self.tables),
+            None => flows(sizes(law).into_iter().chain(sizes(rest)).collect(), self.tables),
+        }
+    }
+
     /// The room each view's labels may take: its region grown right and then down as far
     /// as the sheet goes without meeting another region or the title block (its title and
     /// drawing stay where the region put them). A label wider than the space its drawing

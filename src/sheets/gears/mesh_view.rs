@@ -37,9 +37,15 @@ pub struct MeshDrawn {
 }
 
 /// The largest arc of a circle (paper centre `c`, radius r) around paper angle `mid` that
-/// stays inside `region`, as (start, sweep) in paper angles; sampled every 0.2°.
+/// stays inside `region` and [`TITLE_BLOCK_CLEARANCE`] clear of the title block (a mesh as
+/// wide as the tables leave has the block in its region's corner), as (start, sweep) in
+/// paper angles; sampled every 0.2°.
 fn visible_arc(c: Point, r: f64, mid: f64, region: Rect) -> Option<(f64, f64)> {
-    let inside = |a: f64| region.contains(crate::drawing::path::on_circle(c, r, a));
+    let block = crate::drawing::frame::title_block_rect().inflate(TITLE_BLOCK_CLEARANCE, TITLE_BLOCK_CLEARANCE);
+    let inside = |a: f64| {
+        let p = crate::drawing::path::on_circle(c, r, a);
+        region.contains(p) && !block.contains(p)
+    };
     if !inside(mid) {
         return None;
     }
@@ -54,6 +60,10 @@ fn visible_arc(c: Point, r: f64, mid: f64, region: Rect) -> Option<(f64, f64)> {
     let (lo, hi) = (reach(-1.0), reach(1.0));
     Some((mid - lo, lo + hi))
 }
+
+/// How far the circles' arcs stop short of the title block, mm (more than the 0.2° samples'
+/// chords can cut a corner by on the sheet's largest circles).
+const TITLE_BLOCK_CLEARANCE: f64 = 4.0;
 
 /// A line from a to b clipped to `region` (nothing when it misses).
 fn clipped_line(g: &mut Group, a: Point, b: Point, region: Rect, pen: Pen) {

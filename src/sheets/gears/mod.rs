@@ -93,6 +93,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
                     table::flow_width(&large, right_of(RIGHT_X0).height(), tables::GAP)
                 })
                 .fold(0.0, f64::max);
+            // Over the title block's column too: the circles' arcs stop short of the block.
             Rect { x1: (right_of(0.0).x1 - w - 8.0).max(MESH.x1), ..MESH }
         }
     };
