@@ -93,21 +93,17 @@ pub fn measure(scene: &Scene) -> Layout {
     let page = Rect::new(0.0, 0.0, scene.width, scene.height);
     // The title block is no drawing's room, whatever its region says.
     let title_block = scene.groups.iter().find(|g| g.id == TITLE_BLOCK).map(|g| g.region.inflate(-EDGE, -EDGE));
-    for g in scene.groups.iter().filter(|g| g.id != TITLE_BLOCK && g.id != FRAME) {
+    for g in &scene.groups {
+        let region = g.region.inflate(EDGE, EDGE);
+        let block = title_block.filter(|_| g.id != TITLE_BLOCK && g.id != FRAME);
         for item in &g.items {
             let bb = item.bbox();
             if let Some(tb) =
-                title_block.filter(|tb| tb.intersect(bb).area() > 0.0 && !Obstacles::of_items([item]).is_clear(*tb))
+                block.filter(|tb| tb.intersect(bb).area() > 0.0 && !Obstacles::of_items([item]).is_clear(*tb))
             {
                 out.outside_region += 1;
                 out.note(format!("drawing '{}': {} enters the title block {}", g.id, extent(bb), extent(tb)));
             }
-        }
-    }
-    for g in &scene.groups {
-        let region = g.region.inflate(EDGE, EDGE);
-        for item in &g.items {
-            let bb = item.bbox();
             if !inside(page.inflate(EDGE, EDGE), bb) {
                 out.outside_region += 1;
                 out.note(format!(

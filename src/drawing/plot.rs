@@ -70,18 +70,12 @@ impl Plot {
         vector(g, Point::new(x0, y_of_x_axis), Point::new(a.x1 + OVERRUN, y_of_x_axis), THIN);
         vector(g, Point::new(x0, a.y1 + TICK), Point::new(x0, a.y0 - OVERRUN), THIN);
         let text = |g: &mut Group, t: Text| g.text(t);
-        // The x values stand on the side of the axis with less of the data range, where the
-        // curves are least likely to run through them (above it when the data lies mostly
-        // below zero, as a resistance does).
-        let above = -self.y.lo > self.y.hi;
-        let baseline = if above { -(TICK + 0.8) } else { TICK + TEXT + 0.8 };
+        let above = self.x_values_above();
         for (v, label) in &self.x.ticks {
             let p = self.at(*v, 0.0);
             g.line(p, Point::new(p.x, p.y + if above { -TICK } else { TICK }), THIN);
             if !label.is_empty() {
-                // The value at the y axis stands beside it rather than across it.
-                let (x, anchor) = if *v == self.x.lo { (p.x + 0.8, Anchor::Start) } else { (p.x, Anchor::Middle) };
-                text(g, Text::new(Point::new(x, p.y + baseline), label.clone(), TEXT, anchor));
+                text(g, self.x_value(*v, label));
             }
         }
         for (v, label) in &self.y.ticks {
@@ -101,6 +95,25 @@ impl Plot {
             ),
         );
         text(g, Text::new(Point::new(x0 - 1.0, a.y0 - OVERRUN + TEXT), self.y.name.clone(), TEXT, Anchor::End));
+    }
+}
+
+impl Plot {
+    /// Whether the x values stand above the x axis: on the side with less of the data range,
+    /// where the curves are least likely to run through them (above it when the data lies
+    /// mostly below zero, as a resistance does).
+    fn x_values_above(&self) -> bool {
+        -self.y.lo > self.y.hi
+    }
+
+    /// The x axis' value `label` at `v` as [`Plot::draw_axes`] sets it: under its tick, or
+    /// over it (on the side with less of the data range); the value at the y axis beside it
+    /// rather than across it.
+    pub fn x_value(&self, v: f64, label: &str) -> Text {
+        let p = self.at(v, 0.0);
+        let baseline = if self.x_values_above() { -(TICK + 0.8) } else { TICK + TEXT + 0.8 };
+        let (x, anchor) = if v == self.x.lo { (p.x + 0.8, Anchor::Start) } else { (p.x, Anchor::Middle) };
+        Text::new(Point::new(x, p.y + baseline), label, TEXT, anchor)
     }
 }
 

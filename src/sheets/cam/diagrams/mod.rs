@@ -309,13 +309,14 @@ fn phase_dimensions(g: &mut Group, plot: &Plot, p: &Program, labels: &mut Labels
         let short = w + 2.0 > pb.x - pa.x && row == PHASE_ROW;
         let inward = if mid.x > (left + right) / 2.0 { -1.0 } else { 1.0 };
         let reach = |side: f64| side * ((pb.x - pa.x) / 2.0 + 2.0);
-        let spot = [inward, -inward].into_iter().map(reach).find(|&r| {
-            let (x0, x1) = shelf_span(mid.x, r, w);
-            x0 >= left && x1 <= right && shelved.iter().all(|&(a, b)| x1 + 1.5 < a || x0 > b + 1.5)
+        let spot = short.then(|| {
+            [inward, -inward].into_iter().map(reach).map(|r| (r, shelf_span(mid.x, r, w))).find(|&(_, (x0, x1))| {
+                x0 >= left && x1 <= right && shelved.iter().all(|&(a, b)| x1 + 1.5 < a || x0 > b + 1.5)
+            })
         });
-        match spot.filter(|_| short) {
-            Some(r) => {
-                shelved.push(shelf_span(mid.x, r, w));
+        match spot.flatten() {
+            Some((r, span)) => {
+                shelved.push(span);
                 shelf(g, mid, r, text, (w, depth));
             }
             None => labels.add(mid, Vec2::new(0.0, -1.0), text, 2.5),

@@ -4,17 +4,14 @@
 use super::legend::{cell_title, scale_item, text_rows};
 use super::{ForcesInput, LINE};
 use crate::drawing::fmt;
-use crate::drawing::labels::Language;
 use crate::drawing::place::Labels;
 use crate::drawing::plot::{Axis, Plot, level_ticks};
 use crate::drawing::scale;
 use crate::drawing::scene::{DASHED, Group, MAIN, THIN};
 use crate::drawing::text::LabelText;
 use crate::lever::load::{Load, Stroke};
-use kurbo::{Rect, Vec2};
+use kurbo::{Point, Rect, Vec2};
 
-/// The lettering of the plot's values, mm (as [`Plot::draw_axes`] sets them).
-const TICK_TEXT: f64 = 2.5;
 /// Room around a load diagram's plot, mm: the title and the P axis' arrow and name above,
 /// the tick values on the left, the legend's two lines below.
 const TOP: f64 = 20.0;
@@ -55,7 +52,7 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
         hi: 1.0,
         mu: 1.0 / area.width(),
         name: "S/H".into(),
-        ticks: s_ticks(area.width(), (lo, hi), (value.s, along), lang),
+        ticks: [0.0, 0.5, 1.0].map(|v| (v, fmt::localise(&format!("{v}"), lang))).to_vec(),
     };
     // Each stroke's least and largest force: P_max and the idle level read on the axis.
     let levels: Vec<f64> = (0..load.branches.len())
@@ -66,7 +63,9 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
         .collect();
     let ticks = level_ticks(&levels, lo, hi, mu, lang);
     let y = Axis { lo, hi, mu, name: format!("P, {}", inp.words.common.unit_n()), ticks };
-    let plot = Plot::in_area(Rect::new(area.x0, area.y1 - (hi - lo) / mu, area.x1, area.y1), x, y);
+    let mut plot = Plot::in_area(Rect::new(area.x0, area.y1 - (hi - lo) / mu, area.x1, area.y1), x, y);
+    let (foot, mark) = (plot.at(value.s, 0.0), plot.at(value.s, along));
+    leave_out_crossed_values(&mut plot, (foot, mark));
     plot.draw_axes(g);
     let mut names = Vec::new();
     for (b, br) in load.branches.iter().enumerate() {
@@ -88,8 +87,7 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
         let at = plot.at(s, signed(b, br.curve.at(s)));
         names.push((at, Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name));
     }
-    let mark = plot.at(value.s, along);
-    g.line(plot.at(value.s, 0.0), mark, THIN);
+    g.line(foot, mark, THIN);
     g.circle(mark, 1.0, MAIN);
     for (at, pref, name) in names {
         labels.add_text(at, pref, name, 2.5);
@@ -109,22 +107,22 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
     (mu, area.width())
 }
 
-/// The S/H values 0, ½ and 1 on an axis `width` mm long, the P axis spanning `lo..hi`; a value
-/// the analysed position's ordinate (at S/H, P = `mark`) would cross — on the side of the axis
-/// where the values stand (the one with less of the diagram, as [`Plot::draw_axes`] sets
-/// them), within its width — is left out: its tick stays, and the position's S/H is written
-/// under the diagram.
-fn s_ticks(width: f64, (lo, hi): (f64, f64), (s, along): (f64, f64), lang: Language) -> Vec<(f64, String)> {
-    let values_above = -lo > hi;
-    let same_side = along.abs() * width > 0.0 && (along > 0.0) == values_above;
-    [0.0, 0.5, 1.0]
-        .map(|v| {
-            let label = fmt::localise(&format!("{v}"), lang);
-            let w = LabelText::new(label.clone(), "").width(TICK_TEXT);
-            // As `draw_axes` sets them: at the y axis beside it, else centred on the tick.
-            let (x0, x1) = if v == 0.0 { (0.8, 0.8 + w) } else { (v * width - w / 2.0, v * width + w / 2.0) };
-            let crossed = same_side && (x0 - 0.3..=x1 + 0.3).contains(&(s * width));
-            (v, if crossed { String::new() } else { label })
+/// Leaves out an x value that the analysed position's ordinate (from the axis to its mark)
+/// would cross: its tick stays, and the position's S/H is written under the diagram.
+fn leave_out_crossed_values(plot: &mut Plot, (foot, mark): (Point, Point)) {
+    let (y0, y1) = (foot.y.min(mark.y), foot.y.max(mark.y));
+    let crossed: Vec<bool> = plot
+        .x
+        .ticks
+        .iter()
+        .map(|(v, label)| {
+            let b = plot.x_value(*v, label).bbox();
+            (b.x0 - 0.3..=b.x1 + 0.3).contains(&foot.x) && b.y0 < y1 && b.y1 > y0
         })
-        .to_vec()
+        .collect();
+    for ((_, label), crossed) in plot.x.ticks.iter_mut().zip(crossed) {
+        if crossed {
+            label.clear();
+        }
+    }
 }
