@@ -387,6 +387,31 @@ fn the_phase_values_stand_on_their_lines_and_hang_under_none() {
     }
 }
 
+/// The worked example's numbers as the student copies them: the positions' angles of the
+/// return (80° to 150° in eighths) with the decimals that write each exactly, 106,25 not
+/// 106,2, in the drawn table and in the note's Markdown alike; the allowed pressure angle,
+/// given as 45°, written so on the nomogram and in the notes, never "45,00°".
+#[test]
+fn the_positions_angles_and_the_given_angles_are_written_exactly() {
+    let text = std::fs::read_to_string(root().join("fixtures/worked-example.yaml")).unwrap();
+    for lang in Language::ALL {
+        let b = sheet3(&load_in(&text, lang));
+        let comma = |s: &str| if lang == Language::En { s.to_string() } else { s.replace('.', ",") };
+        let expected: Vec<String> = (0..=8).map(|k| comma(&format!("{:.2}", 80.0 + 8.75 * k as f64))).collect();
+        let t = b.output.tables.iter().find(|t| t.table.id == "law-return").unwrap();
+        let md = tmm_sheets::report::markdown(t, "sheet3");
+        let phi_row = md.lines().find(|l| l.contains("law-return.phi\"")).unwrap();
+        assert!(phi_row.ends_with(&format!("| {} |", expected.join(" | "))), "{lang:?}: {phi_row}");
+        let texts: Vec<String> = b.output.scene.groups.iter().flat_map(|g| g.texts().map(|t| t.plain())).collect();
+        for e in &expected {
+            assert!(texts.iter().any(|t| t == e), "{lang:?}: the drawn table has no {e}");
+        }
+        assert!(texts.iter().any(|t| t.ends_with(" = 45°")), "{lang:?}: no allowed angle written as 45°");
+        let padded = comma("45.00°");
+        assert!(texts.iter().all(|t| !t.contains(&padded)), "{lang:?}: {padded} written");
+    }
+}
+
 /// On the profile every position number stands outside every roller (inside another
 /// roller's circle it reads as that roller's number), in every cam fixture.
 #[test]
