@@ -52,6 +52,9 @@ fn check(task: &Task, variant: u32) -> (Vec<String>, usize) {
         {
             faults.push(format!("{at}: a plan of {smallest:.1} mm"));
         }
+        if let Some(d) = b.output.diagnostics.iter().find(|d| d.contains("the lift is drawn")) {
+            faults.push(format!("{at}: {d}"));
+        }
         let scales = &b.output.results["scales"];
         if b.output.number == 1 && (scales["mu_v"].as_f64().is_none() || scales["mu_a"].as_f64().is_none()) {
             faults.push(format!("{at}: no common μ_v or μ_a: {scales}"));
@@ -170,5 +173,35 @@ fn a_stroke_end_exactly_at_position_0_is_found() {
             Some(90.0),
             "variant {v}"
         );
+    }
+}
+
+/// Guide variants whose equal 45°–100° phases have a steep law (triangular, cosine): the
+/// shared scale of s and ds/dφ with the acceleration analog near 70 mm took the column's
+/// height, and 95 of them drew the lift 9–29.6 mm high (task 1 variant 15: 15.5 mm). Now the
+/// lift keeps the course's 30 mm at least: ds/dφ at its own scale with H1 = μ_s/(μ_ds·μ_φ),
+/// the acceleration analog lower where the column has no more.
+#[test]
+fn a_guide_variants_lift_is_drawn_at_least_30_mm_high() {
+    let cat = Catalogue::embedded().unwrap();
+    for (t, v) in [("1", 15), ("2", 40), ("5", 12), ("13", 24)] {
+        let task = cat.task(t).unwrap();
+        let Variant::Project { text, .. } = task.project(v, Language::En, "").unwrap() else { panic!() };
+        let p = pipeline::load(&text).unwrap();
+        let built = pipeline::build(&p, &[3]).unwrap_or_else(|e| panic!("task {t} variant {v}: {e}"));
+        let s = &built[0].output.results;
+        let (mu_s, mu_ds, mu_phi, h1) = (
+            s["scales"]["mu_s"].as_f64().unwrap(),
+            s["scales"]["mu_ds"].as_f64().unwrap(),
+            s["scales"]["mu_phi_rad"].as_f64().unwrap(),
+            s["scales"]["h1"].as_f64().unwrap(),
+        );
+        let lift = s["lift"].as_f64().unwrap();
+        let warned = built[0].output.diagnostics.iter().any(|d| d.contains("the lift is drawn"));
+        assert!(!warned, "task {t} variant {v}: {:?}", built[0].output.diagnostics);
+        assert!(lift / mu_s >= 30.0 - 1e-9, "task {t} variant {v}: lift {} mm", lift / mu_s);
+        // The course's rule ties the poles to the scales: μ_s = μ_ds·H1·μ_φ.
+        assert!((mu_ds * h1 * mu_phi / mu_s - 1.0).abs() < 1e-12, "task {t} variant {v}");
+        assert!(h1 >= 15.0, "task {t} variant {v}: H1 = {h1}");
     }
 }

@@ -242,6 +242,9 @@ fn cams_the_sweep_found_with_texts_crossed_are_clean() {
         // A 1° rise: its analogs' values are eight digits long, and the tables lettered 3.5 mm
         // for the views' sake were wider than their strip (now 2.5 mm where 3.5 does not fit).
         cam("{translating: {stroke: 0.4181, offset: auto}}", (1.0, 0.0, 8.35), "trapezoid", 41.6),
+        // "e = 405.1 mm" set against its region's left edge: the measure boxed a lone label's
+        // slant half to the left (0.47 mm out) where the labeller, rightly, puts it all right.
+        cam("{translating: {stroke: 0.7603, offset: auto}}", (63.69, 0.0, 158.73), "trapezoid", 21.5),
     ] {
         assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
     }

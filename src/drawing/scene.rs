@@ -172,15 +172,15 @@ impl Text {
         self.core_boxes().reduce(|a, b| a.union(b)).unwrap_or_else(|| Rect::from_points(self.at, self.at))
     }
 
-    /// Bounding box of every run: from its descender to its capital height, its slant's
-    /// overhang included. A lone run is anchored with its overhang; the runs of a label are
-    /// boxed from where each is set.
+    /// Bounding box of every run: from its descender to its capital height, from where its
+    /// advance starts to where its slant's overhang ends (type B leans right: the capitals'
+    /// tops overhang the advance by tan 15° of their height, and a descender's lean left
+    /// stays inside the letter's side bearing). The labeller boxes a label the same way, so
+    /// a label it sets against a region's edge is measured inside it.
     pub fn bbox(&self) -> Rect {
-        let lone = self.sub.is_empty() && self.tail.is_empty();
         let boxes = self.placed_runs().map(|(r, at)| {
-            let w = self.width_of(r) + r.h * 0.27;
-            let x0 = if lone { self.left(w) } else { at.x };
-            self.turned(Rect::new(x0, at.y - r.h * 1.05, x0 + w, at.y + r.h * 0.3))
+            let w = self.width_of(r) + r.h * super::text::SLANT;
+            self.turned(Rect::new(at.x, at.y - r.h * 1.05, at.x + w, at.y + r.h * 0.3))
         });
         boxes.reduce(|a, b| a.union(b)).unwrap_or_else(|| Rect::from_points(self.at, self.at))
     }

@@ -80,31 +80,44 @@ pub fn plan(d: &Design, max_w: f64, max_h: f64) -> Plan {
         .unwrap_or_else(|| series.clone().find(|&m| work / m <= WIDTH_MAX_MM).unwrap_or(1.0));
     let mu_phi_rad = mu_phi_deg.to_radians();
     let (vmax, amax) = peaks(d);
-    let fit = |mu_s: f64, mu_ds: f64| {
-        // A = k·H2: the analog's height per mm of pole distance.
+    // A = k·H2: the analog's height per mm of pole distance. H2 aims at the guide's 70 mm;
+    // `giving`, it gives up height (down to the least accepted) where the column has no more.
+    let fit = |mu_s: f64, mu_ds: f64, giving: bool| {
         let k = amax * mu_phi_rad / mu_ds;
-        let h2 = (ACCELERATION_MM.1 / k).round().clamp(H2_MM.0, H2_MM.1);
+        let rest = p.lift / mu_s + 2.0 * vmax / mu_ds + 4.0 * GAP + PHASES + 8.0;
+        let room = if giving { ((max_h - rest) / (2.0 * k)).floor() } else { f64::INFINITY };
+        let h2 = (ACCELERATION_MM.1 / k).round().min(room).clamp(H2_MM.0, H2_MM.1);
         let a = k * h2;
-        let height = p.lift / mu_s + 2.0 * vmax / mu_ds + 2.0 * a + 4.0 * GAP + PHASES + 8.0;
-        (h2, a, height)
+        (h2, a, rest + 2.0 * a)
     };
-    let fits = |mu_s: f64, mu_ds: f64| {
-        let (_, a, height) = fit(mu_s, mu_ds);
+    let fits = |mu_s: f64, mu_ds: f64, giving: bool| {
+        let (_, a, height) = fit(mu_s, mu_ds, giving);
         (ACCELERATION_MM.0..=ACCELERATION_MM.2).contains(&a) && height <= max_h
     };
     let first = scale::plan_round_up(p.lift / LIFT_MAX_MM);
     let steps = |from: f64| std::iter::successors(Some(from), |&m| Some(scale::plan_next_round(m))).take(40);
-    // The course's shared scale; else the lift at `first` with ds/dφ at a scale of its own;
-    // else (nothing fits the height) the shared scale at which the acceleration fits.
-    let shared = steps(first).find(|&m| p.lift / m >= LIFT_MIN_MM && fits(m, m)).map(|m| (m, m));
-    let h1_at_least = |m: f64| first / (m * mu_phi_rad) >= H2_MM.0;
-    let own = || steps(first).skip(1).take_while(|&m| h1_at_least(m)).find(|&m| fits(first, m)).map(|m| (first, m));
-    let fallback = || {
-        let m = steps(first).find(|&m| fits(m, m)).unwrap_or_else(|| steps(first).last().unwrap_or(first));
-        (m, m)
+    let lift_readable = |m: f64| p.lift / m >= LIFT_MIN_MM;
+    // The course's shared scale; else the lift (at least LIFT_MIN_MM, the highest first) with
+    // ds/dφ at a scale of its own, H1 at least the least H2; each first with the acceleration
+    // analog near 70 mm, then lower. Else (nothing fits the height) the shared scale at which
+    // the acceleration fits.
+    let shared = |giving| steps(first).find(|&m| lift_readable(m) && fits(m, m, giving)).map(|m| (m, m, giving));
+    let h1_at_least = |mu_s: f64, m: f64| mu_s / (m * mu_phi_rad) >= H2_MM.0;
+    let own = |giving| {
+        // Near 70 mm, the lift at its largest only (the acceleration is what fills the rest).
+        let lifts = if giving { 40 } else { 1 };
+        steps(first).take(lifts).take_while(|&s| lift_readable(s)).find_map(|s| {
+            let mut ds = steps(s).skip(1).take_while(|&m| h1_at_least(s, m));
+            ds.find(|&m| fits(s, m, giving)).map(|m| (s, m, giving))
+        })
     };
-    let (mu_s, mu_ds) = shared.or_else(own).unwrap_or_else(fallback);
-    let (h2, _, height) = fit(mu_s, mu_ds);
+    let fallback = || {
+        let m = steps(first).find(|&m| fits(m, m, false)).unwrap_or_else(|| steps(first).last().unwrap_or(first));
+        (m, m, false)
+    };
+    let (mu_s, mu_ds, giving) =
+        [false, true].into_iter().find_map(|giving| shared(giving).or_else(|| own(giving))).unwrap_or_else(fallback);
+    let (h2, _, height) = fit(mu_s, mu_ds, giving);
     // Shared, H1 = 1/μ_φ exactly (the ratio's rounding would move its last digit).
     let h1 = if mu_s == mu_ds { 1.0 / mu_phi_rad } else { mu_s / (mu_ds * mu_phi_rad) };
     let scales = Scales { mu_phi_deg, mu_phi_rad, mu_s, mu_ds, mu_dds: mu_ds / (h2 * mu_phi_rad), h1, h2 };
@@ -118,17 +131,25 @@ pub fn squeezed(d: &Design, sc: &Scales) -> Option<String> {
     let lift_mm = p.lift / sc.mu_s;
     let (short, long) =
         if p.ret < p.rise { (("return", p.ret), ("rise", p.rise)) } else { (("rise", p.rise), ("return", p.ret)) };
+    let ratio = long.1 / short.1;
+    // Phases of a like length squeeze the lift only by their analogs' size, not their ratio.
+    let why = if ratio >= 2.0 {
+        format!(
+            "the {} of {}° is {ratio:.0} times shorter than the {} of {}°, and its ds/dφ and d²s/dφ² at the scale the working angle needs take the column's height; phases nearer each other draw readable diagrams",
+            short.0,
+            written(short.1.to_degrees()),
+            long.0,
+            written(long.1.to_degrees()),
+        )
+    } else {
+        "ds/dφ and d²s/dφ² at the course's least pole distances take the column's height".to_string()
+    };
     (lift_mm < LIFT_MIN_MM).then(|| {
         format!(
-            "diagrams: the lift is drawn {} mm high (the course's scales want {}–{} mm): the {} of {}° is {:.0} times shorter than the {} of {}°, and its ds/dφ and d²s/dφ² at the scale the working angle needs take the column's height; phases nearer each other draw readable diagrams",
+            "diagrams: the lift is drawn {} mm high (the course's scales want {}–{} mm): {why}",
             significant(lift_mm),
             written(LIFT_MIN_MM),
             written(LIFT_MAX_MM),
-            short.0,
-            written(short.1.to_degrees()),
-            long.1 / short.1,
-            long.0,
-            written(long.1.to_degrees()),
         )
     })
 }
