@@ -42,6 +42,9 @@ pub(super) struct Sizes {
     /// of at most a third) rather than the course's {1, 2, 2.5, 4, 5} (steps up to 2×, which
     /// draw a polygon meant for 60 mm at 30).
     pub(super) fine: bool,
+    /// Whether a polygon's cell may grow to enlarge its short sides beside it (tried only
+    /// once the drawings fit without).
+    pub(super) insets: bool,
 }
 
 impl Sizes {

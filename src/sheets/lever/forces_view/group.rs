@@ -4,6 +4,7 @@
 
 use super::arrows::{Arrows, arrow_scale};
 use super::cells::Sizes;
+use super::inset::{self, Inset, Place};
 use super::legend::{
     cell_title, equation_lines, force_label, scale_item, text_rows, value_item, with_semicolon, with_short_note,
     wrap_items,
@@ -45,6 +46,11 @@ pub(super) struct GroupLayout {
     pub(super) equation: Vec<Vec<LabelText>>,
     /// Each force's symbol and value, wrapped into lines.
     pub(super) legend: Vec<Vec<LabelText>>,
+    /// The polygon's runs of short sides, enlarged where `place` says; the polygon's size
+    /// with its room for labels, mm.
+    pub(super) insets: Vec<Inset>,
+    pub(super) place: Place,
+    pub(super) poly_size: (f64, f64),
 }
 
 /// The world box of a polygon's group (or the crank): its links' points.
@@ -102,12 +108,67 @@ pub(super) fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes) -> (Grou
     let mu_p = s.round_up(chain_box.width().max(chain_box.height()) / s.poly_box);
     let mu_f = arrow_scale(poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max));
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
-    let w = (drawing_w + poly_w).max(120.0);
+    let poly_size = (poly_w, poly_h);
+    let (insets, place, w, body_h) = with_insets(inp, poly, (&chain, mu_p), (drawing_w, drawing_h), poly_size, s);
     let equation = equation_lines(inp, poly, w - 4.0);
     let legend = group_legend(inp, poly, mu_f, w - 4.0);
     let text_lines = equation.len() + legend.len() + SCALE_LINES;
-    let h = CELL_TITLE + drawing_h.max(poly_h) + LINE * text_lines as f64 + 2.0;
-    (GroupLayout { world, mu_l, drawing_w, mu_p, mu_f, chain, chain_box, equation, legend }, w, h)
+    let h = CELL_TITLE + body_h + LINE * text_lines as f64 + 2.0;
+    let layout = GroupLayout {
+        world,
+        mu_l,
+        drawing_w,
+        mu_p,
+        mu_f,
+        chain,
+        chain_box,
+        equation,
+        legend,
+        insets,
+        place,
+        poly_size,
+    };
+    (layout, w, h)
+}
+
+/// The enlargements of a polygon's short sides and where they go, with the cell's width and
+/// body height: in the room the cell leaves the polygon if they fit there; else, when the
+/// sizes allow it (`s.insets`), in the least room grown for them; else none.
+fn with_insets(
+    inp: &ForcesInput,
+    poly: &Polygon,
+    (chain, mu_p): (&[Vec2], f64),
+    (drawing_w, drawing_h): (f64, f64),
+    poly_size: (f64, f64),
+    s: Sizes,
+) -> (Vec<Inset>, Place, f64, f64) {
+    let w = (drawing_w + poly_size.0).max(120.0);
+    let body_h = drawing_h.max(poly_size.1);
+    let runs = inset::Runs::of(inp, poly, chain, mu_p);
+    if runs.is_empty() {
+        return (Vec::new(), Place::None, w, body_h);
+    }
+    let room = (w - drawing_w, body_h);
+    let places = [Place::Below, Place::Beside];
+    let least = |is: &Vec<Inset>| is.iter().map(|i| mu_p / i.mu).fold(f64::INFINITY, f64::min);
+    let free = places
+        .iter()
+        .filter_map(|&p| runs.placed(p, room, poly_size).map(|is| (is, p)))
+        .reduce(|a, b| if least(&b.0) > least(&a.0) { b } else { a });
+    if let Some((is, p)) = free {
+        return (is, p, w, body_h);
+    }
+    if !s.insets {
+        return (Vec::new(), Place::None, w, body_h);
+    }
+    let grown = places.iter().filter_map(|&p| {
+        let room = runs.grown(p, room, poly_size);
+        runs.placed(p, room, poly_size).map(|is| (is, p, room))
+    });
+    match grown.min_by(|a, b| (a.2.0 * a.2.1).total_cmp(&(b.2.0 * b.2.1))) {
+        Some((is, p, (rw, rh))) => (is, p, (drawing_w + rw).max(120.0), rh),
+        None => (Vec::new(), Place::None, w, body_h),
+    }
 }
 
 /// Lines of scales under a group drawing: μ_l, μ_F and μ_P.
@@ -137,8 +198,15 @@ pub(super) fn draw_group_cell(
     let bottom = r.y1 - LINE * lines as f64 - 2.0;
     let geo = Rect::new(r.x0, top, r.x0 + layout.drawing_w, bottom);
     draw_group_geometry(g, labels, inp, poly, geo, layout);
-    let pr = Rect::new(r.x0 + layout.drawing_w, top, r.x1, bottom);
+    let room = Rect::new(r.x0 + layout.drawing_w, top, r.x1, bottom);
+    let (w, h) = layout.poly_size;
+    let pr = match layout.place {
+        Place::None => room,
+        Place::Below => Rect::new(room.x0, top, room.x1, top + h),
+        Place::Beside => Rect::new(room.x0, top, room.x0 + w, bottom),
+    };
     draw_polygon(g, labels, inp, poly, layout, pr);
+    inset::draw(g, labels, inp, poly, &layout.chain, &layout.insets, room);
     let scales = vec![
         vec![
             with_semicolon(scale_item(inp, "l", layout.mu_l, inp.words.common.unit_m_per_mm())),

@@ -8,6 +8,7 @@
 mod arrows;
 mod cells;
 mod group;
+mod inset;
 mod legend;
 mod load;
 mod polygon;
@@ -56,6 +57,12 @@ pub struct ForceScales {
     pub mu_lever: f64,
     /// The scale of the force arrows on the lever, N/mm.
     pub mu_f_lever: f64,
+    /// The shortest labelled side of any force polygon at its μ_P on paper, mm (a force
+    /// too small to draw is not a side: its value is in the legend; a side labelled in an
+    /// enlargement is counted there).
+    pub smallest_polygon_side_mm: Option<f64>,
+    /// The shortest side labelled in the polygons' enlargements of their short sides, mm.
+    pub smallest_enlarged_side_mm: Option<f64>,
 }
 
 /// Draws the force analysis into `main` (the region below the mechanism, titled) and, when
@@ -72,7 +79,15 @@ pub fn draw_forces(
     main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let bodies = bodies(region, side.as_ref().map(|g| g.region));
     let (cells, at, _) = finer(inp, &bodies, arrange(inp, &bodies, DRAWN, SHRINK_TRIES));
-    let mut scales = ForceScales { mu_l: vec![], mu_p: vec![], mu_f: vec![], mu_lever: 0.0, mu_f_lever: 0.0 };
+    let mut scales = ForceScales {
+        mu_l: vec![],
+        mu_p: vec![],
+        mu_f: vec![],
+        mu_lever: 0.0,
+        mu_f_lever: 0.0,
+        smallest_polygon_side_mm: None,
+        smallest_enlarged_side_mm: None,
+    };
     let mut measured = Vec::new();
     for (cell, &(body, origin)) in cells.iter().zip(&at) {
         let g: &mut Group = match (body, side.as_deref_mut()) {
@@ -91,6 +106,10 @@ pub fn draw_forces(
                 scales.mu_l.push(layout.mu_l);
                 scales.mu_p.push(layout.mu_p);
                 scales.mu_f.push(layout.mu_f);
+                let (on_polygon, enlarged) = polygon::shortest_sides(poly, layout);
+                let least = |a: Option<f64>, b: Option<f64>| a.into_iter().chain(b).reduce(f64::min);
+                scales.smallest_polygon_side_mm = least(scales.smallest_polygon_side_mm, on_polygon);
+                scales.smallest_enlarged_side_mm = least(scales.smallest_enlarged_side_mm, enlarged);
                 measured.extend(segments::polygon(inp, poly, layout.mu_p, &part, answers));
             }
             Content::Lever(ref plan, mu, mu_f) => {
@@ -141,24 +160,37 @@ const SHRINK_TRIES: usize = 12;
 const COMFORTABLE: usize = 3;
 /// The sizes a comfortable layout starts from (the mechanism above gets the rest), and the
 /// larger ones the drawings start from, shrinking until they fit what they got.
-const COMFORTABLE_START: Sizes = Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0, fine: false };
-const DRAWN: Sizes = Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0, fine: false };
+const COMFORTABLE_START: Sizes =
+    Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0, fine: false, insets: false };
+const DRAWN: Sizes =
+    Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0, fine: false, insets: false };
 
 /// Cells, where they are, whether they all fit, and the sizes they were made at.
 type Arranged = (Vec<Cell>, Vec<(usize, Point)>, bool, Sizes);
 
-/// A fitting arrangement's boxes with the polygons and the lever at the finer series'
-/// scales, where those still fit: larger, and nothing else smaller. Only for drawing (the
-/// comfort test needs no more than whether the coarse cells fit).
+/// A fitting arrangement's boxes with the polygons' short sides enlarged beside them and
+/// the polygons and the lever at the finer series' scales, where those still fit: nothing
+/// else smaller. Only for drawing (the comfort test needs no more than whether the coarse
+/// cells fit).
 fn finer(
     inp: &ForcesInput,
     bodies: &[Rect],
     (cells, at, ok, sizes): Arranged,
 ) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
     if ok {
-        let fine = self::cells::cells(inp, Sizes { fine: true, ..sizes });
-        if let (fine_at, true) = pack(&fine, bodies) {
-            return (fine, fine_at, true);
+        // The polygons' enlargements beside them (a knot of labels unread is worse than a
+        // polygon a scale step smaller), then the finer series, each where the cells still
+        // pack.
+        let fine = Sizes { fine: true, ..sizes };
+        for s in [Sizes { insets: true, ..fine }, Sizes { insets: true, ..sizes }, fine] {
+            let tried = self::cells::cells(inp, s);
+            let enlarged = tried.iter().any(|c| matches!(&c.content, Content::Polygon(_, l) if !l.insets.is_empty()));
+            if s.insets && !enlarged {
+                continue;
+            }
+            if let (tried_at, true) = pack(&tried, bodies) {
+                return (tried, tried_at, true);
+            }
         }
     }
     (cells, at, ok)

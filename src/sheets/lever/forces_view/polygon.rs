@@ -3,6 +3,7 @@
 
 use super::ForcesInput;
 use super::group::GroupLayout;
+use super::inset;
 use super::legend::force_label;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{DASHED, Group, VECTOR};
@@ -53,8 +54,11 @@ pub(super) fn draw_polygon(
             continue;
         }
         vector(g, a, b, VECTOR);
-        labels.add(a.midpoint(b), outward(a, b), force_label(inp, t.kind, t.on), 3.5);
+        if !inset::labelled_elsewhere(&layout.insets, k) {
+            labels.add(a.midpoint(b), outward(a, b), force_label(inp, t.kind, t.on), 3.5);
+        }
     }
+    inset::ring(g, labels, &view, pts, &layout.insets);
     if let Some(inner) = &poly.inner {
         let (a, b) = (p(pts[poly.split]), p(pts[0]));
         if (b - a).norm() >= tol::PAPER_INVISIBLE {
@@ -64,4 +68,21 @@ pub(super) fn draw_polygon(
         }
     }
     g.dot(p(pts[0]), 0.5);
+}
+
+/// The shortest side [`draw_polygon`] labels on the polygon, and the shortest its
+/// enlargements label, mm.
+pub(super) fn shortest_sides(poly: &Polygon, layout: &GroupLayout) -> (Option<f64>, Option<f64>) {
+    let inner = poly.inner.iter().map(|t| t.force.norm());
+    let on_polygon = poly
+        .terms
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| !inset::labelled_elsewhere(&layout.insets, *k))
+        .map(|(_, t)| t.force.norm())
+        .chain(inner)
+        .map(|f| f / layout.mu_p)
+        .filter(|&side| side >= tol::PAPER_INVISIBLE)
+        .reduce(f64::min);
+    (on_polygon, inset::shortest_side(poly, &layout.insets))
 }

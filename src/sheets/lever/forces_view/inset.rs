@@ -1,0 +1,297 @@
+//! A force polygon's short sides enlarged: where gravity and inertia forces of a few tens of
+//! newtons stand between reactions of thousands, their sides at the polygon's μ_P are
+//! fractions of a millimetre and their labels knot at one vertex. Each run of consecutive
+//! sides shorter than [`SIDE_MIN`] is ringed on the polygon and drawn again beside it at its
+//! own round μ_P (a detail view, GOST 2.305's "extension element"), labelled there only —
+//! in the room the cell already leaves the polygon (under it beside a tall group drawing,
+//! or beside it): the enlargements never grow a cell, so the sheet's arrangement stays as
+//! it was. A run with no room at least [`ENLARGED_MIN`] times larger keeps its labels on the
+//! polygon.
+
+use super::ForcesInput;
+use super::legend::{force_label, scale_item};
+use crate::drawing::place::Labels;
+use crate::drawing::scale;
+use crate::drawing::scene::{Anchor, Group, THIN, VECTOR};
+use crate::drawing::symbols::vector;
+use crate::drawing::text::LabelText;
+use crate::drawing::view::View;
+use crate::lever::kinetostatics::Polygon;
+use crate::num::math::Norm;
+use crate::num::tol;
+use kurbo::{Point, Rect, Vec2};
+
+/// A labelled side shorter than this on paper is drawn again enlarged, mm: a side a ruler
+/// measures to 2 % and that holds its 3.5 mm label beside it.
+pub const SIDE_MIN: f64 = 5.0;
+/// The enlarged run's longer side at most, mm.
+const INSET_BOX: f64 = 40.0;
+/// An enlargement less than this many times the polygon's scale is not worth its room.
+const ENLARGED_MIN: f64 = 2.0;
+/// A slot narrower than this cannot hold an enlargement's title, mm.
+const SLOT_MIN_W: f64 = 45.0;
+/// Room round an enlarged run for its labels, and for its title above, mm.
+const PAD: f64 = 9.0;
+const TITLE: f64 = 6.0;
+/// The neighbouring long sides' stubs in the enlargement, mm.
+const STUB: f64 = 8.0;
+/// The ring round a run on the polygon: this much beyond its vertices, mm.
+const RING_PAD: f64 = 3.0;
+
+/// One run of short sides: its terms (indices into the polygon's terms, in chain order,
+/// wrapping past the last), its letter and its μ_P.
+#[derive(Debug, Clone)]
+pub(super) struct Inset {
+    pub(super) terms: Vec<usize>,
+    pub(super) letter: String,
+    pub(super) mu: f64,
+    /// The run's vertices' box, N.
+    pub(super) world: Rect,
+    /// Where it is drawn, relative to the polygon's room's top left, mm.
+    pub(super) slot: Rect,
+}
+
+/// Where the polygon and its enlargements go in the polygon's room of a cell.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Place {
+    /// No enlargements: the polygon in the middle of its room.
+    None,
+    /// The polygon at the top, the enlargements side by side under it.
+    Below,
+    /// The polygon at the left, the enlargements stacked right of it.
+    Beside,
+}
+
+/// Whether term `k`'s side is drawn on the polygon and shorter than [`SIDE_MIN`].
+fn short(poly: &Polygon, k: usize, mu_p: f64) -> bool {
+    let side = poly.terms[k].force.norm() / mu_p;
+    side < SIDE_MIN && poly.terms[k].force.norm() > 0.0
+}
+
+/// The runs of short sides of `poly` at `mu_p` (`chain` its vertices from its start), each
+/// with its box (N) and its longest side.
+pub(super) struct Runs {
+    runs: Vec<(Vec<usize>, Rect, f64)>,
+    letters: Vec<String>,
+    mu_p: f64,
+}
+
+impl Runs {
+    pub(super) fn of(inp: &ForcesInput, poly: &Polygon, chain: &[Vec2], mu_p: f64) -> Runs {
+        let n = poly.terms.len();
+        let runs = runs(poly, mu_p)
+            .into_iter()
+            .map(|terms| {
+                let pts = run_points(chain, &terms, n);
+                let first = pts[0].to_point();
+                let world = pts.iter().fold(Rect::from_points(first, first), |r, p| r.union_pt(p.to_point()));
+                let longest = terms.iter().map(|&k| poly.terms[k].force.norm()).fold(0.0, f64::max);
+                (terms, world, longest)
+            })
+            .collect();
+        Runs { runs, letters: free_letters(inp), mu_p }
+    }
+
+    pub(super) fn is_empty(&self) -> bool {
+        self.runs.is_empty()
+    }
+
+    /// The room `(w, h)` that holds the polygon (`poly` its size with its label room) and
+    /// the enlargements placed `place`, from the room `(w, h)` the cell leaves it.
+    pub(super) fn grown(&self, place: Place, (w, h): (f64, f64), poly: (f64, f64)) -> (f64, f64) {
+        let (slot_w, slot_h) = (INSET_BOX + 2.0 * PAD, INSET_BOX + 2.0 * PAD + TITLE);
+        let n = self.runs.len() as f64;
+        match place {
+            Place::None => (w, h),
+            Place::Below => (w.max(n * slot_w), h.max(poly.1 + slot_h)),
+            Place::Beside => (w.max(poly.0 + slot_w), h.max(n * slot_h)),
+        }
+    }
+
+    /// Each run enlarged in a slot of `room` left by the polygon (`poly` its size) placed
+    /// `place`: `None` unless every run gets a slot that enlarges it [`ENLARGED_MIN`] times.
+    pub(super) fn placed(&self, place: Place, room: (f64, f64), poly: (f64, f64)) -> Option<Vec<Inset>> {
+        let count = self.runs.len() as f64;
+        let (w, h) = room;
+        let slot = |i: usize| {
+            let i = i as f64;
+            match place {
+                Place::Below => Rect::new(w * i / count, poly.1, w * (i + 1.0) / count, h),
+                _ => Rect::new(poly.0, h * i / count, w, h * (i + 1.0) / count),
+            }
+        };
+        (place != Place::None && !self.runs.is_empty()).then_some(())?;
+        self.runs
+            .iter()
+            .enumerate()
+            .zip(&self.letters)
+            .map(|((i, (terms, world, longest)), letter)| {
+                let slot = slot(i);
+                let (w, h) = (slot.width() - 2.0 * PAD, slot.height() - 2.0 * PAD - TITLE);
+                if slot.width() < SLOT_MIN_W || w <= 0.0 || h <= 0.0 {
+                    return None;
+                }
+                let need = (world.width() / w).max(world.height() / h).max(longest / INSET_BOX);
+                let mu = scale::plan_round_up(need);
+                (mu > 0.0 && mu * ENLARGED_MIN <= self.mu_p).then(|| Inset {
+                    terms: terms.clone(),
+                    letter: letter.clone(),
+                    mu,
+                    world: *world,
+                    slot,
+                })
+            })
+            .collect()
+    }
+}
+
+/// The runs of consecutive short sides, each its terms in chain order.
+fn runs(poly: &Polygon, mu_p: f64) -> Vec<Vec<usize>> {
+    let n = poly.terms.len();
+    // Start after a long side, so that a run through the chain's start is one run.
+    let Some(long) = (0..n).find(|&k| !short(poly, k, mu_p) && poly.terms[k].force.norm() > 0.0) else {
+        return Vec::new();
+    };
+    let mut runs: Vec<Vec<usize>> = Vec::new();
+    let mut current: Vec<usize> = Vec::new();
+    for step in 1..=n {
+        let k = (long + step) % n;
+        let zero = poly.terms[k].force.norm() == 0.0;
+        if short(poly, k, mu_p) || (zero && !current.is_empty()) {
+            current.push(k);
+        } else if !zero {
+            runs.extend((!current.is_empty()).then(|| std::mem::take(&mut current)));
+        }
+    }
+    runs.extend((!current.is_empty()).then_some(current));
+    // A run of zero forces only draws nothing.
+    runs.retain(|r| r.iter().any(|&k| poly.terms[k].force.norm() > 0.0));
+    runs
+}
+
+/// The vertices of a run: the start of its first side to the end of its last.
+fn run_points(chain: &[Vec2], terms: &[usize], n: usize) -> Vec<Vec2> {
+    let mut pts = vec![chain[terms[0]]];
+    pts.extend(terms.iter().map(|&k| chain[(k + 1) % n.max(1)]));
+    pts
+}
+
+/// Letters for the enlargements that name no point of the mechanism (nor a force's or a
+/// moment's symbol).
+fn free_letters(inp: &ForcesInput) -> Vec<String> {
+    let used: Vec<char> = inp.m.point_names.iter().filter_map(|n| n.chars().next()).collect();
+    "KLTUVWXYZ".chars().filter(|c| !used.contains(c)).map(String::from).collect()
+}
+
+/// The side's terms that an inset labels (the polygon leaves them unlabelled).
+pub(super) fn labelled_elsewhere(insets: &[Inset], k: usize) -> bool {
+    insets.iter().any(|i| i.terms.contains(&k))
+}
+
+/// Rings each run on the polygon drawn by `view` and names it with its letter.
+pub(super) fn ring(g: &mut Group, labels: &mut Labels, view: &View, chain: &[Vec2], insets: &[Inset]) {
+    let n = chain.len().saturating_sub(1);
+    for inset in insets {
+        let pts: Vec<Point> = run_points(chain, &inset.terms, n).iter().map(|&v| view.p(v)).collect();
+        let c = pts.iter().fold(Vec2::ZERO, |a, p| a + p.to_vec2()) / pts.len() as f64;
+        let r = pts.iter().map(|p| (p.to_vec2() - c).norm()).fold(0.0, f64::max) + RING_PAD;
+        let c = c.to_point();
+        g.circle(c, r, THIN);
+        let top = c + Vec2::new(r * 0.7, -r * 0.7);
+        labels.add(top, Vec2::new(1.0, -1.0), LabelText::new(&inset.letter, ""), 3.5);
+    }
+}
+
+/// Draws the enlargements in their slots of the polygon's room `r`, each with its letter
+/// and μ_P.
+pub(super) fn draw(
+    g: &mut Group,
+    labels: &mut Labels,
+    inp: &ForcesInput,
+    poly: &Polygon,
+    chain: &[Vec2],
+    insets: &[Inset],
+    r: Rect,
+) {
+    let n = poly.terms.len();
+    for inset in insets {
+        let slot = inset.slot + r.origin().to_vec2();
+        let title = LabelText::new(&inset.letter, "").with_tail(" (");
+        let at = Point::new(slot.x0 + 2.0, slot.y0 + 4.0);
+        title.draw(g, at, 3.5, Anchor::Start);
+        let mut mu = scale_item(inp, "P", inset.mu, inp.words.common.unit_n_per_mm());
+        mu.tail.push(')');
+        // Set where the title's advance ends: its box's slant would leave a gap after "(".
+        mu.draw(g, Point::new(at.x + title.width(3.5), at.y), 3.5, Anchor::Start);
+        let area = Rect::new(slot.x0, slot.y0 + TITLE, slot.x1, slot.y1);
+        let view = View::centred(inset.world, area, inset.mu);
+        let p = |v: Vec2| view.p(v);
+        // The long sides that meet the run, as stubs: where it joins the polygon.
+        let (first, last) = (inset.terms[0], inset.terms[inset.terms.len() - 1]);
+        let before = poly.terms[(first + n - 1) % n].force;
+        let after = poly.terms[(last + 1) % n].force;
+        let (start, end) = (p(chain[first]), p(chain[(last + 1) % n]));
+        if before.norm() > 0.0 {
+            g.line(start - view.dir(before).unit() * STUB, start, THIN);
+        }
+        if after.norm() > 0.0 {
+            g.line(end, end + view.dir(after).unit() * STUB, THIN);
+        }
+        for &k in &inset.terms {
+            let (a, b) = (p(chain[k]), p(chain[(k + 1) % n]));
+            if (b - a).norm() < tol::PAPER_INVISIBLE {
+                continue;
+            }
+            vector(g, a, b, VECTOR);
+            let t = &poly.terms[k];
+            labels.add(a.midpoint(b), (b - a).turn_90(), force_label(inp, t.kind, t.on), 3.5);
+        }
+    }
+}
+
+/// The shortest side the enlargements draw and label, mm.
+pub(super) fn shortest_side(poly: &Polygon, insets: &[Inset]) -> Option<f64> {
+    insets
+        .iter()
+        .flat_map(|i| i.terms.iter().map(move |&k| poly.terms[k].force.norm() / i.mu))
+        .filter(|&side| side >= tol::PAPER_INVISIBLE)
+        .reduce(f64::min)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lever::kinetostatics::{Applied, Kind};
+
+    fn polygon(forces: &[(f64, f64)]) -> Polygon {
+        let term = |&(x, y): &(f64, f64)| Applied {
+            on: 1,
+            kind: Kind::Weight,
+            at: Vec2::ZERO,
+            point: None,
+            force: Vec2::new(x, y),
+        };
+        Polygon { group: None, terms: forces.iter().map(term).collect(), split: 0, inner: None }
+    }
+
+    /// At 100 N/mm a side under 500 N is short: the runs are the short sides between long
+    /// ones, one run through the chain's start (the last side and the first), a zero force
+    /// inside a run kept with it and a run of zero forces alone dropped.
+    #[test]
+    fn runs_are_the_short_sides_between_long_ones_through_the_chains_start() {
+        let p = polygon(&[
+            (10.0, 0.0),
+            (3000.0, 0.0),
+            (0.0, 20.0),
+            (0.0, 0.0),
+            (0.0, 30.0),
+            (0.0, 3000.0),
+            (0.0, 0.0),
+            (-3000.0, -3050.0),
+            (-10.0, 0.0),
+        ]);
+        assert_eq!(runs(&p, 100.0), vec![vec![2, 3, 4], vec![8, 0]]);
+        // At 1 N/mm every side is long: nothing to enlarge.
+        assert!(runs(&p, 1.0).is_empty());
+    }
+}
