@@ -214,6 +214,11 @@ fn pairs_the_sweep_found_off_the_page_fit_their_region() {
         let text = format!("{HEADER}gears:\n  pair: {pair}\n");
         assert_eq!(verdict(&text), Ok(Outcome::Built), "{pair}");
     }
+    // A 363-tooth wheel's arc ended on its region's edge, its stroke 0.4 mm over it.
+    let text = format!(
+        "{HEADER}gears:\n  pair: {{module: 1.76, z: [363, 132], shift: [0.993, -0.062]}}\n  planetary: {{scheme: double-planet, module: 0.5, ratio: 2.00}}\n"
+    );
+    assert_eq!(verdict(&text), Ok(Outcome::Built));
 }
 
 /// Cams the sweep found with texts crossed, each now clean: a 3.5° return after a 283° rise

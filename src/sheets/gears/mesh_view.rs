@@ -7,8 +7,8 @@
 //! (0, r_w1). Wheel 1 turns counter-clockwise and drives; the contact runs from B1 (on
 //! wheel 2's tip circle, toward N1) to B2.
 
+use super::clip::{clipped_line, visible_arc};
 use super::teeth_view::{ACTIVE, Flank, active_flanks, flank, map_cubic, teeth_path};
-use crate::drawing::obstacles::segment_meets_rect;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, Group, MAIN, Pen, THIN};
@@ -34,54 +34,6 @@ pub struct MeshDrawn {
     pub fillet_deviation: f64,
     /// The tooth height on paper, mm.
     pub tooth_height_mm: f64,
-}
-
-/// The largest arc of a circle (paper centre `c`, radius r) around paper angle `mid` that
-/// stays inside `region` and [`TITLE_BLOCK_CLEARANCE`] clear of the title block (a mesh as
-/// wide as the tables leave has the block in its region's corner), as (start, sweep) in
-/// paper angles; sampled every 0.2°.
-fn visible_arc(c: Point, r: f64, mid: f64, region: Rect) -> Option<(f64, f64)> {
-    let block = crate::drawing::frame::title_block_rect().inflate(TITLE_BLOCK_CLEARANCE, TITLE_BLOCK_CLEARANCE);
-    let inside = |a: f64| {
-        let p = crate::drawing::path::on_circle(c, r, a);
-        region.contains(p) && !block.contains(p)
-    };
-    if !inside(mid) {
-        return None;
-    }
-    let step = 0.2f64.to_radians();
-    let reach = |dir: f64| {
-        let mut a = 0.0;
-        while a + step < PI && inside(mid + dir * (a + step)) {
-            a += step;
-        }
-        a
-    };
-    let (lo, hi) = (reach(-1.0), reach(1.0));
-    Some((mid - lo, lo + hi))
-}
-
-/// How far the circles' arcs stop short of the title block, mm (more than the 0.2° samples'
-/// chords can cut a corner by on the sheet's largest circles).
-const TITLE_BLOCK_CLEARANCE: f64 = 4.0;
-
-/// A line from a to b clipped to `region` (nothing when it misses).
-fn clipped_line(g: &mut Group, a: Point, b: Point, region: Rect, pen: Pen) {
-    if !segment_meets_rect(a, b, region) {
-        return;
-    }
-    let d = b - a;
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (p, q) in [(-d.x, a.x - region.x0), (d.x, region.x1 - a.x), (-d.y, a.y - region.y0), (d.y, region.y1 - a.y)] {
-        if p == 0.0 {
-            continue;
-        }
-        let t = q / p;
-        if p < 0.0 { t0 = t0.max(t) } else { t1 = t1.min(t) }
-    }
-    if t1 > t0 {
-        g.line(a + d * t0, a + d * t1, pen);
-    }
 }
 
 /// What the mesh view needs.
@@ -140,11 +92,11 @@ const ALPHA_ARC_MM: f64 = 28.0;
 /// drawing is placed in `area`.
 pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels) -> MeshDrawn {
     let p = inp.pair;
-    let mu = mesh_scale(inp, area);
-    let (v, pp) = placement(p, area, mu);
-    let centres = tooth_centres(inp);
     let (fl1, dev1, fd1) = flank(inp.outlines[0]);
     let (fl2, dev2, fd2) = flank(inp.outlines[1]);
+    let mu = mesh_scale(inp, [&fl1, &fl2], area);
+    let (v, pp) = placement(p, area, mu);
+    let centres = tooth_centres(inp);
     let circle_labels = draw_circles(g, v, area, p);
     draw_teeth(g, v, inp, [&fl1, &fl2], &centres);
     let points = MeshPoints::of(p);
@@ -177,7 +129,7 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
 /// scale at which they fit. The teeth's half-width from the line of centres is their tip
 /// radius times the sine of the farthest tooth's angle from it (half a pitch beyond its
 /// centre).
-fn mesh_scale(inp: &MeshInput, area: Rect) -> f64 {
+fn mesh_scale(inp: &MeshInput, flanks: [&Flank; 2], area: Rect) -> f64 {
     let p = inp.pair;
     let tall = crate::drawing::scale::length_scale_below(p.tooth_height / 50.0);
     let centres = tooth_centres(inp);
@@ -187,7 +139,16 @@ fn mesh_scale(inp: &MeshInput, area: Rect) -> f64 {
         let far = centres[i].iter().map(|c| (c - axis).abs() + half_pitch).fold(0.0, f64::max);
         w.tip * if far >= FRAC_PI_2 { 1.0 } else { sin(far) }
     };
-    let widest = half_width(0, FRAC_PI_2).max(half_width(1, -FRAC_PI_2));
+    // The outline as drawn reaches further where a large shift's fillet loops past the
+    // outer teeth (a 363-tooth wheel at x = 0.993 reached 0.4 mm past its region): its
+    // extent from the line of centres, in the world (a view at 1 m per mm).
+    let world = View::new(Point::ZERO, 1.0);
+    let o2 = Vec2::new(0.0, p.centre_distance);
+    let drawn = |i: usize, c: Vec2| {
+        let b = teeth_path(world, c, inp.outlines[i], flanks[i], &centres[i]).bbox();
+        (-b.x0).max(b.x1)
+    };
+    let widest = half_width(0, FRAC_PI_2).max(half_width(1, -FRAC_PI_2)).max(drawn(0, Vec2::ZERO)).max(drawn(1, o2));
     let fits = crate::drawing::scale::length_scale(widest / (area.width() / 2.0 - MESH_MARGIN));
     tall.max(fits)
 }

@@ -2,6 +2,7 @@
 //! wheel at a GOST scale making the tooth taller than 50 mm), the planetary stage's two
 //! views and the tables on the right, the notes and the title block.
 
+mod clip;
 pub mod labels;
 mod mesh_dimensions;
 mod mesh_view;

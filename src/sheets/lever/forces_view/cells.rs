@@ -42,9 +42,9 @@ pub(super) struct Sizes {
     /// of at most a third) rather than the course's {1, 2, 2.5, 4, 5} (steps up to 2×, which
     /// draw a polygon meant for 60 mm at 30).
     pub(super) fine: bool,
-    /// Whether a polygon's cell may grow to enlarge its short sides beside it (tried only
-    /// once the drawings fit without).
-    pub(super) insets: bool,
+    /// Which polygons' cells (bit i: polygon i) may grow to enlarge their short sides
+    /// beside them (tried only once the drawings fit without).
+    pub(super) grow: u64,
 }
 
 impl Sizes {
@@ -78,7 +78,7 @@ impl Sizes {
 pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let mut out = Vec::new();
     for (i, poly) in inp.fa.forces.polygons.iter().enumerate() {
-        let (layout, w, h) = group_layout(inp, poly, s);
+        let (layout, w, h) = group_layout(inp, poly, s, s.grow >> i & 1 == 1);
         out.push(Cell { w, h, content: Content::Polygon(i, layout) });
     }
     let lever = velocity_plan(inp.m, inp.state).turned(inp.m.sense());

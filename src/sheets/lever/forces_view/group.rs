@@ -99,7 +99,7 @@ fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec
     with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
 }
 
-pub(super) fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes) -> (GroupLayout, f64, f64) {
+pub(super) fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes, grow: bool) -> (GroupLayout, f64, f64) {
     let world = world_box(inp, poly);
     let mu_l = s.mu_l(world);
     let (drawing_w, drawing_h) = (world.width() / mu_l + 2.0 * PAD, world.height() / mu_l + 2.0 * PAD);
@@ -109,7 +109,7 @@ pub(super) fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes) -> (Grou
     let mu_f = arrow_scale(poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max));
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let poly_size = (poly_w, poly_h);
-    let (insets, place, w, body_h) = with_insets(inp, poly, (&chain, mu_p), (drawing_w, drawing_h), poly_size, s);
+    let (insets, place, w, body_h) = with_insets(inp, poly, (&chain, mu_p), (drawing_w, drawing_h), poly_size, grow);
     let equation = equation_lines(inp, poly, w - 4.0);
     let legend = group_legend(inp, poly, mu_f, w - 4.0);
     let text_lines = equation.len() + legend.len() + SCALE_LINES;
@@ -133,14 +133,14 @@ pub(super) fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes) -> (Grou
 
 /// The enlargements of a polygon's short sides and where they go, with the cell's width and
 /// body height: in the room the cell leaves the polygon if they fit there; else, when the
-/// sizes allow it (`s.insets`), in the least room grown for them; else none.
+/// cell may `grow`, in the least room grown for them; else none.
 fn with_insets(
     inp: &ForcesInput,
     poly: &Polygon,
     (chain, mu_p): (&[Vec2], f64),
     (drawing_w, drawing_h): (f64, f64),
     poly_size: (f64, f64),
-    s: Sizes,
+    grow: bool,
 ) -> (Vec<Inset>, Place, f64, f64) {
     let w = (drawing_w + poly_size.0).max(120.0);
     let body_h = drawing_h.max(poly_size.1);
@@ -158,7 +158,7 @@ fn with_insets(
     if let Some((is, p)) = free {
         return (is, p, w, body_h);
     }
-    if !s.insets {
+    if !grow {
         return (Vec::new(), Place::None, w, body_h);
     }
     let grown = places.iter().filter_map(|&p| {

@@ -223,7 +223,9 @@ pub(super) fn draw(
         mu.tail.push(')');
         // Set where the title's advance ends: its box's slant would leave a gap after "(".
         mu.draw(g, Point::new(at.x + title.width(3.5), at.y), 3.5, Anchor::Start);
-        let area = Rect::new(slot.x0, slot.y0 + TITLE, slot.x1, slot.y1);
+        // Under its title, not in the middle of a tall slot.
+        let drawn_h = inset.world.height() / inset.mu + 2.0 * PAD;
+        let area = Rect::new(slot.x0, slot.y0 + TITLE, slot.x1, slot.y1.min(slot.y0 + TITLE + drawn_h));
         let view = View::centred(inset.world, area, inset.mu);
         let p = |v: Vec2| view.p(v);
         // The long sides that meet the run, as stubs: where it joins the polygon.

@@ -161,9 +161,8 @@ const COMFORTABLE: usize = 3;
 /// The sizes a comfortable layout starts from (the mechanism above gets the rest), and the
 /// larger ones the drawings start from, shrinking until they fit what they got.
 const COMFORTABLE_START: Sizes =
-    Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0, fine: false, insets: false };
-const DRAWN: Sizes =
-    Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0, fine: false, insets: false };
+    Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0, fine: false, grow: 0 };
+const DRAWN: Sizes = Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0, fine: false, grow: 0 };
 
 /// Cells, where they are, whether they all fit, and the sizes they were made at.
 type Arranged = (Vec<Cell>, Vec<(usize, Point)>, bool, Sizes);
@@ -179,21 +178,45 @@ fn finer(
 ) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
     if ok {
         // The polygons' enlargements beside them (a knot of labels unread is worse than a
-        // polygon a scale step smaller), then the finer series, each where the cells still
-        // pack.
+        // polygon a scale step smaller): every polygon's cell grown, at the finer series,
+        // else at the coarse; else one polygon's cell grown after another while the cells
+        // still pack; else the finer series alone where it packs.
         let fine = Sizes { fine: true, ..sizes };
-        for s in [Sizes { insets: true, ..fine }, Sizes { insets: true, ..sizes }, fine] {
-            let tried = self::cells::cells(inp, s);
-            let enlarged = tried.iter().any(|c| matches!(&c.content, Content::Polygon(_, l) if !l.insets.is_empty()));
-            if s.insets && !enlarged {
-                continue;
+        let count = inp.fa.forces.polygons.len().min(64);
+        for s in [fine, sizes] {
+            let all = Sizes { grow: (1u64 << count) - 1, ..s };
+            let cells = self::cells::cells(inp, all);
+            if let (cells_at, true) = pack(&cells, bodies)
+                && enlarged(&cells)
+            {
+                return (cells, cells_at, true);
             }
-            if let (tried_at, true) = pack(&tried, bodies) {
-                return (tried, tried_at, true);
+        }
+        for mut s in [fine, sizes] {
+            let mut grown = None;
+            for i in 0..count {
+                let tried = Sizes { grow: s.grow | 1 << i, ..s };
+                let cells = self::cells::cells(inp, tried);
+                if let (cells_at, true) = pack(&cells, bodies) {
+                    grown = Some((cells, cells_at));
+                    s = tried;
+                }
             }
+            if let Some((cells, cells_at)) = grown.filter(|(c, _)| enlarged(c)) {
+                return (cells, cells_at, true);
+            }
+        }
+        let tried = self::cells::cells(inp, fine);
+        if let (tried_at, true) = pack(&tried, bodies) {
+            return (tried, tried_at, true);
         }
     }
     (cells, at, ok)
+}
+
+/// Whether any polygon's cell draws enlargements.
+fn enlarged(cells: &[Cell]) -> bool {
+    cells.iter().any(|c| matches!(&c.content, Content::Polygon(_, l) if !l.insets.is_empty()))
 }
 
 /// Cells packed into the bodies, shrinking the drawings up to `tries − 1` times until they
