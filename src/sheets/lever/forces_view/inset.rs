@@ -4,15 +4,15 @@
 //! sides shorter than [`SIDE_MIN`] is ringed on the polygon and drawn again beside it at its
 //! own round μ_P (a detail view, GOST 2.305's "extension element"), labelled there only —
 //! in the room the cell already leaves the polygon (under it beside a tall group drawing,
-//! or beside it): the enlargements never grow a cell, so the sheet's arrangement stays as
-//! it was. A run with no room at least [`ENLARGED_MIN`] times larger keeps its labels on the
-//! polygon.
+//! or beside it), else in a cell grown for them where the cells still pack (the caller
+//! decides which cells may grow). A run with no room at least [`ENLARGED_MIN`] times larger
+//! keeps its labels on the polygon.
 
 use super::ForcesInput;
 use super::legend::{force_label, scale_item};
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
-use crate::drawing::scene::{Anchor, Group, THIN, VECTOR};
+use crate::drawing::scene::{Anchor, Group, THIN, VECTOR, points_bbox};
 use crate::drawing::symbols::vector;
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
@@ -82,9 +82,8 @@ impl Runs {
         let runs = runs(poly, mu_p)
             .into_iter()
             .map(|terms| {
-                let pts = run_points(chain, &terms, n);
-                let first = pts[0].to_point();
-                let world = pts.iter().fold(Rect::from_points(first, first), |r, p| r.union_pt(p.to_point()));
+                let pts: Vec<Point> = run_points(chain, &terms, n).iter().map(|v| v.to_point()).collect();
+                let world = points_bbox(&pts);
                 let longest = terms.iter().map(|&k| poly.terms[k].force.norm()).fold(0.0, f64::max);
                 (terms, world, longest)
             })
