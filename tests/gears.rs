@@ -235,10 +235,12 @@ fn the_addendum_coefficients_star_follows_its_subscript() {
     assert!(!rows.iter().any(|(l, _)| l.sub.contains('*')), "a star in a subscript");
 }
 
-/// Where the right half has the room, sheet 2's tables are lettered 3.5 mm (titles 5 mm), not
-/// the 2.5 mm of a crowded sheet, and every table stays inside its region.
+/// Where the right half has the room, sheet 2's tables are lettered 3.5 or 5 mm (titles
+/// 5 mm), not the 2.5 mm of a crowded sheet, and every table stays inside its region; the
+/// worked example's, under the planetary views, in 5 mm in every language (in Russian, whose
+/// conditions' table is the widest, in rows: that table under the others).
 #[test]
-fn sheet_2_letters_its_tables_in_3_5_mm_where_they_fit() {
+fn sheet_2_letters_its_tables_in_3_5_mm_or_more_where_they_fit() {
     for (name, text) in
         std::iter::once(("worked-example".to_string(), pipeline::DEFAULT_PROJECT.to_string())).chain(gear_fixtures())
     {
@@ -248,6 +250,54 @@ fn sheet_2_letters_its_tables_in_3_5_mm_where_they_fit() {
         assert!(!sizes.is_empty() && sizes.iter().all(|&h| h == 3.5 || h == 5.0), "{name}: {sizes:?}");
         assert!(sizes.contains(&5.0), "{name}: the titles at 5 mm");
         assert_eq!(b.output.results["layout"]["outside_region"], 0, "{name}");
+    }
+    for lang in Language::ALL {
+        let mut p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+        p.info.language = lang;
+        let b = sheet2(&p);
+        let tables = b.output.scene.groups.iter().find(|g| g.id == "tables").unwrap();
+        assert!(tables.texts().all(|t| t.h == 5.0), "{lang:?}: the tables not all in 5 mm");
+    }
+}
+
+/// The course's "done when": at most half of the worked example's sheet 2 (20 mm cells
+/// inside the frame, the title block's excluded) holds no ink, in every language.
+#[test]
+fn the_worked_examples_sheet_2_is_at_most_half_empty() {
+    for lang in Language::ALL {
+        let mut p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+        p.info.language = lang;
+        let layout = &sheet2(&p).output.results["layout"];
+        let empty = layout["empty_share"].as_f64().unwrap();
+        assert!(empty <= 0.5, "{lang:?}: {empty} of sheet 2 is empty");
+        assert_eq!(layout["texts_crossed"], 0, "{lang:?}");
+        assert_eq!(layout["text_overlaps"], 0, "{lang:?}");
+    }
+}
+
+/// The centre distance is dimensioned from O1 to O2 right of the teeth: a vertical dimension
+/// line as long as a_w at the drawing's scale, the guide's pair by hand (a_w = m(z1 + z2)/2 =
+/// 5·36/2 = 90 mm at 5:1: 450 mm), its value "a_w = 90,00" beside it, in every language.
+#[test]
+fn the_centre_distance_is_dimensioned_between_the_wheels_centres() {
+    use tmm_sheets::drawing::obstacles::segments;
+    for lang in Language::ALL {
+        let mut p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+        p.info.language = lang;
+        let b = sheet2(&p);
+        let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
+        let value = mesh.texts().find(|t| t.text == "a" && t.sub == "w").expect("a_w's value");
+        let expected = if lang == Language::En { " = 90.00" } else { " = 90,00" };
+        assert_eq!(value.tail, expected, "{lang:?}");
+        let vertical: Vec<(kurbo::Point, kurbo::Point)> = mesh
+            .items
+            .iter()
+            .flat_map(segments)
+            .filter(|(a, b)| (a.x - b.x).abs() < 1e-9 && ((a.y - b.y).abs() - 450.0).abs() < 1e-6)
+            .collect();
+        assert_eq!(vertical.len(), 1, "{lang:?}: one 450 mm vertical line (the line of centres is longer)");
+        let x = vertical[0].0.x;
+        assert!((value.bbox().x1 - x).abs() < 25.0, "{lang:?}: the value far from its line");
     }
 }
 

@@ -159,20 +159,85 @@ impl Table {
     }
 }
 
-/// Between columns of tables, mm.
+/// Between columns of tables, mm, and the most [`flow_spread`] widens a gap by.
 const COLUMN_GAP: f64 = 6.0;
+pub const SPREAD_MAX: f64 = 40.0;
 
 /// Tables drawn in `region` top to bottom, a new column to the right when the next one would
 /// leave the region's bottom; `gap` mm between tables and 6 mm between columns.
 pub fn flow(id: &str, tables: impl IntoIterator<Item = Table>, region: Rect, gap: f64) -> Group {
-    let mut g = Group::new(id, region);
     let tables: Vec<Table> = tables.into_iter().collect();
     let sizes: Vec<(f64, f64)> = tables.iter().map(Table::size).collect();
-    let (corners, _) = packed(&sizes, region.height(), gap);
+    drawn_at(id, &tables, region, &packed(&sizes, region.height(), gap).0)
+}
+
+/// As [`flow`], the columns spread over the region's width: the room left over shared
+/// between the gaps, each growing by at most [`SPREAD_MAX`], the block centred in what is
+/// still left (tables under a drawing as wide as the region, balanced under it rather than
+/// crowded to its left, and never two columns alone at its far edges).
+pub fn flow_spread(id: &str, tables: impl IntoIterator<Item = Table>, region: Rect, gap: f64) -> Group {
+    let tables: Vec<Table> = tables.into_iter().collect();
+    let sizes: Vec<(f64, f64)> = tables.iter().map(Table::size).collect();
+    let (mut corners, right) = packed(&sizes, region.height(), gap);
+    // Each column starts at a new x; the k-th of n moves right by k/(n − 1) of the spare width.
+    let mut starts: Vec<f64> = Vec::new();
+    for c in &corners {
+        if starts.last().is_none_or(|&x| c.x > x) {
+            starts.push(c.x);
+        }
+    }
+    let spare = (region.width() - right).max(0.0);
+    let gaps = starts.len().saturating_sub(1) as f64;
+    let share = if gaps > 0.0 { (spare / gaps).min(SPREAD_MAX) } else { 0.0 };
+    let margin = (spare - share * gaps) / 2.0;
+    for c in &mut corners {
+        let k = starts.iter().position(|&x| x == c.x).unwrap_or(0);
+        c.x += margin + share * k as f64;
+    }
+    drawn_at(id, &tables, region, &corners)
+}
+
+/// Tables drawn in `region` left to right, a new row under the row's tallest when the next
+/// one would leave the region's right edge; `gap` mm between rows and 6 mm between tables.
+/// Where [`flow`]'s columns leave a table too wide for the region's remaining width, rows
+/// keep the wide one under the others.
+pub fn flow_rows(id: &str, tables: impl IntoIterator<Item = Table>, region: Rect, gap: f64) -> Group {
+    let tables: Vec<Table> = tables.into_iter().collect();
+    let sizes: Vec<(f64, f64)> = tables.iter().map(Table::size).collect();
+    drawn_at(id, &tables, region, &packed_rows(&sizes, region.width(), gap).0)
+}
+
+/// The tables drawn with their top left corners at `corners` from the region's.
+fn drawn_at(id: &str, tables: &[Table], region: Rect, corners: &[Point]) -> Group {
+    let mut g = Group::new(id, region);
     for (table, at) in tables.iter().zip(corners) {
         table.draw(&mut g, Point::new(region.x0 + at.x, region.y0 + at.y));
     }
     g
+}
+
+/// How [`flow_rows`] packs tables of `sizes` into a region `width` mm wide: each one's top
+/// left from the region's, and the height taken.
+fn packed_rows(sizes: &[(f64, f64)], width: f64, gap: f64) -> (Vec<Point>, f64) {
+    let (mut x, mut y, mut row_h) = (0.0, 0.0, 0.0f64);
+    let mut corners = Vec::with_capacity(sizes.len());
+    for &(w, h) in sizes {
+        if x + w > width && x > 0.0 {
+            y += row_h + gap;
+            x = 0.0;
+            row_h = 0.0;
+        }
+        corners.push(Point::new(x, y));
+        x += w + COLUMN_GAP;
+        row_h = row_h.max(h);
+    }
+    (corners, y + row_h)
+}
+
+/// Whether [`flow_rows`] fits tables of `sizes` inside `region`: none wider than it, the
+/// rows no taller.
+pub fn rows_fit(sizes: &[(f64, f64)], region: Rect, gap: f64) -> bool {
+    sizes.iter().all(|s| s.0 <= region.width()) && packed_rows(sizes, region.width(), gap).1 <= region.height()
 }
 
 /// How [`flow`] packs tables of `sizes` into a column `height` mm tall: each one's top left

@@ -2,8 +2,8 @@
 //! on wheel 1's pitch circle the tooth thickness s, the space e and the pitch p, as arc
 //! dimensions in the wheel's body under its teeth, right of the line of centres (left of it
 //! the space's flank runs through P, on the line itself). A dimension whose lines would leave
-//! the drawing's area is not drawn. a_w is not dimensioned: its line would cross both
-//! wheels' circles and teeth from O1 to O2; the table gives it.
+//! the drawing's area is not drawn. The centre distance a_w between O1 and O2, right of the
+//! teeth, where both centres are on the drawing.
 
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
@@ -64,6 +64,28 @@ pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, t
             None => labels.add_ranked(arc.at(mid, r), arc.at(mid, r + 1.0) - arc.at(mid, r), text, TEXT_H, 1),
         }
     }
+}
+
+/// The dimension line of a_w this far right of the teeth's drawn box, and the room its value
+/// needs right of it, mm.
+const A_W_CLEAR: f64 = 12.0;
+const A_W_ROOM: f64 = 30.0;
+
+/// The centre distance a_w from O1 to O2 (`teeth`: the teeth's drawn box): extension lines
+/// from both centres to the right, the dimension line clear of the teeth (it crosses only the
+/// wheels' circles), its value beside it a quarter of the way up from O1, in wheel 1's body
+/// where the drawing is empty. Not drawn when a centre is off the drawing's `area` or no room
+/// is left right of the teeth: the table gives a_w.
+pub fn centre_distance(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, teeth: Rect, lang: Language) {
+    let (o1, o2) = (v.p(Vec2::ZERO), v.p(Vec2::new(0.0, p.centre_distance)));
+    let x = teeth.x1 + A_W_CLEAR;
+    if !area.contains(o1) || !area.contains(o2) || x + A_W_ROOM > area.x1 {
+        return;
+    }
+    symbols::dimension(g, o2, o1, Vec2::new(x - o1.x, 0.0));
+    let value = LabelText::new("a", "w").with_tail(format!(" = {}", fmt::value(mm(p.centre_distance), lang)));
+    let at = kurbo::Point::new(x, o1.y + (o2.y - o1.y) * 0.25);
+    labels.add_ranked(at, Vec2::new(1.0, 0.0), value, TEXT_H, 1);
 }
 
 /// Arc dimensions about wheel 1's centre from features on the circle of paper radius

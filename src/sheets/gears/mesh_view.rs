@@ -98,10 +98,13 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     let (v, pp) = placement(p, area, mu);
     let centres = tooth_centres(inp);
     let circle_labels = draw_circles(g, v, area, p);
+    let start = g.mark();
     draw_teeth(g, v, inp, [&fl1, &fl2], &centres);
+    let teeth = g.items[start..].iter().map(|i| i.bbox()).reduce(|a, b| a.union(b)).unwrap_or(Rect::ZERO);
     let points = MeshPoints::of(p);
     let tau = draw_lines(g, v, area, pp, p, &points);
     let contact_ratio_drawn = draw_arc_of_action(g, v, inp, &fl1, centres[0][1], &points);
+    super::mesh_dimensions::centre_distance(g, labels, v, area, p, teeth, inp.lang);
     super::mesh_dimensions::draw(g, labels, v, area, p, centres[0][0], inp.lang);
     point_labels(labels, v, area, &points);
     senses_of_rotation(g, labels, v, area, &points);

@@ -38,13 +38,22 @@ pub fn table_count(p: &GearsProject) -> u32 {
     if p.planetary.is_some() { 3 } else { 1 }
 }
 
-/// Draws the tables in `region`, in columns left to right: in 3.5 mm lettering where they
-/// fit (the right half below the planetary views has the room), else in 2.5 mm.
+/// Draws the tables in `region` in the largest of GOST 2.304's 5 and 3.5 mm letterings they
+/// fit in, in columns spread over its width, else in rows (a wide table under the others); else in
+/// 2.5 mm columns. The room the planetary views leave below them is the tables': a right
+/// half left empty is what a teacher marks down.
 pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &GearWords, first: u32) -> Group {
-    let large = lettered(notes, tolerance, words, first, LARGE_TEXT);
-    let sizes: Vec<(f64, f64)> = large.iter().map(Table::size).collect();
-    let drawn = if fit(&sizes, region) { large } else { lettered(notes, tolerance, words, first, CELL_TEXT) };
-    table::flow("tables", drawn, region, GAP)
+    for h in [LARGEST_TEXT, LARGE_TEXT] {
+        let drawn = lettered(notes, tolerance, words, first, h);
+        let sizes: Vec<(f64, f64)> = drawn.iter().map(Table::size).collect();
+        if fit(&sizes, region) {
+            return table::flow_spread("tables", drawn, region, GAP);
+        }
+        if table::rows_fit(&sizes, region, GAP) {
+            return table::flow_rows("tables", drawn, region, GAP);
+        }
+    }
+    table::flow("tables", lettered(notes, tolerance, words, first, CELL_TEXT), region, GAP)
 }
 
 /// The tables' sizes in 3.5 mm lettering, for [`fit`] (the planetary views grow while they
@@ -62,8 +71,9 @@ fn lettered(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords, firs
     notes.iter().map(|n| Table { text_h, ..sheet_table(n, tolerance, words, first) }).collect()
 }
 
-/// The tables' larger lettering, mm (GOST 2.304's next size), and the gap between them.
+/// The tables' larger letterings, mm (GOST 2.304's next sizes), and the gap between them.
 const LARGE_TEXT: f64 = 3.5;
+const LARGEST_TEXT: f64 = 5.0;
 pub const GAP: f64 = 4.0;
 
 /// A table as sheet 2 draws it: units after the symbols, the conditions' verdicts in words,
