@@ -488,3 +488,22 @@ fn the_analogs_axes_carry_values_at_their_own_scale() {
         }
     }
 }
+
+/// The diagrams' column is drawn wider (a longer φ axis) only where that leaves less of the
+/// sheet empty: the worked example's views leave a band across the sheet's middle beside the
+/// usual 320 mm column, task 1 variant 5's nomogram fills the column under the notes, and its
+/// column stays as it was. Either way the φ axis is as long as the working angle at μ_φ.
+#[test]
+fn the_diagrams_column_widens_only_where_the_sheet_is_emptier_without() {
+    let catalogue = Catalogue::embedded().unwrap();
+    let Variant::Project { text, .. } = catalogue.task("1").unwrap().project(5, Language::Uz, "").unwrap() else {
+        panic!("task 1 variant 5: incomplete in the catalogue");
+    };
+    for (name, text, wide) in [("worked example", pipeline::DEFAULT_PROJECT, true), ("task 1 variant 5", &text, false)] {
+        let b = sheet3(&pipeline::load(text).unwrap());
+        let column = b.output.scene.groups.iter().find(|g| g.id == "diagrams").unwrap().region;
+        assert_eq!(column.width() > 324.0, wide, "{name}: the column is {} mm wide", column.width());
+        let empty = b.output.results["layout"]["empty_share"].as_f64().unwrap();
+        assert!(empty < 0.58, "{name}: {empty} of sheet 3 is empty");
+    }
+}

@@ -31,7 +31,7 @@ use crate::report::AnswerKeys;
 use kurbo::{Point, Rect};
 use labels::CamWords;
 use nomogram::Placement;
-use regions::{Content, LEFT_MAX, Regions, SHEET, ViewSize, view_area};
+use regions::{COLUMN_WIDTHS, ColumnWidth, Content, Regions, SHEET, ViewSize, view_area};
 
 /// This sheet's place in the course.
 pub const KIND: SheetKind = COURSE[2];
@@ -112,6 +112,7 @@ struct Column {
     text_h: f64,
     /// The height the texts leave the diagrams, mm.
     room: f64,
+    width: ColumnWidth,
 }
 
 /// The title over the diagrams: the law's name (or both phases' laws).
@@ -134,25 +135,31 @@ const NOTES_MAX_H: f64 = 80.0;
 /// hence the plan's width and the notes' wrapping, depend on the width alone: a plan made
 /// shorter with [`shorter_plan`] keeps them); refuses assumptions that would make the notes
 /// taller than [`NOTES_MAX_H`].
-fn plan_column(p: &CamProject, errors: (f64, f64), deviation: f64, words: &CamWords) -> Result<Column, TooLong> {
+fn plan_column(
+    p: &CamProject,
+    errors: (f64, f64),
+    deviation: f64,
+    words: &CamWords,
+    width: ColumnWidth,
+) -> Result<Column, TooLong> {
     let title = laws_title(p, words);
     let notes = notes::sheet_notes(p, errors, deviation, words);
-    let head = head_h(&title, LEFT_MAX - 4.0);
-    let room = SHEET.height() - head - notes_h(&notes, LEFT_MAX - 4.0) - 8.0;
-    let plan = diagrams::plan(&p.design, LEFT_MAX - 4.0, room);
+    let head = head_h(&title, width.left - 4.0);
+    let room = SHEET.height() - head - notes_h(&notes, width.left - 4.0) - 8.0;
+    let plan = diagrams::plan(&p.design, (width.left - 4.0, width.phi), room);
     // The notes are set as wide as the diagrams.
     let drawn_h = notes_h(&notes, plan.width);
     let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(words.lang).to_string()).collect();
     let notes_room =
         Room { field: "cam.assumptions", place: "notes under the diagrams", size: (plan.width, NOTES_MAX_H) };
     notes_room.check(&assumptions, drawn_h)?;
-    Ok(Column { title, notes, plan, text_h: head + drawn_h, room })
+    Ok(Column { title, notes, plan, text_h: head + drawn_h, room, width })
 }
 
 /// The column's diagrams planned `shorter` mm lower than its room (leaving the nomogram room
 /// under them).
 fn shorter_plan(p: &CamProject, column: &Column, shorter: f64) -> diagrams::Plan {
-    diagrams::plan(&p.design, LEFT_MAX - 4.0, column.room - shorter)
+    diagrams::plan(&p.design, (column.width.left - 4.0, column.width.phi), column.room - shorter)
 }
 
 /// The notes' height set `w` wide as `diagrams_group` sets them: each note's lines at their
@@ -166,8 +173,32 @@ fn head_h(title: &str, w: f64) -> f64 {
     5.0 + wrap(title, 3.5, w).len() as f64 * LINE_PITCH * 3.5 + 2.0
 }
 
-/// Builds sheet 3.
+/// Builds sheet 3 with the diagrams' column at each of [`COLUMN_WIDTHS`] and keeps the one
+/// that leaves the least of the sheet empty (the usual width on a tie): a column too narrow
+/// for its views' room leaves a band across the sheet's middle; one too wide shrinks the
+/// views.
 pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
+    let usual = build_at(ctx, p, COLUMN_WIDTHS[0])?;
+    let wide = COLUMN_WIDTHS[1..].iter().filter_map(|&w| build_at(ctx, p, w).ok());
+    let empty = |b: &CamBuild| {
+        let (width, height) = crate::drawing::frame::page();
+        let scene = crate::drawing::scene::Scene {
+            ink: Default::default(),
+            name: String::new(),
+            width,
+            height,
+            title: String::new(),
+            groups: b.composition.groups.clone(),
+        };
+        let (field, block) = (crate::drawing::frame::inner(), crate::drawing::frame::title_block_rect());
+        crate::drawing::layout::empty_share(&scene, field, block, &[])
+    };
+    let first = (empty(&usual) - 0.005, usual);
+    Ok(wide.map(|b| (empty(&b), b)).fold(first, |best, b| if b.0 < best.0 { b } else { best }).1)
+}
+
+/// Builds sheet 3 with the diagrams' column at most `width` wide.
+fn build_at(ctx: &Context, p: &CamProject, width: ColumnWidth) -> Result<CamBuild, SheetError> {
     let words = CamWords::new(ctx.info.language);
     let (l, lang) = (words.sheet, words.lang);
     let d = &p.design;
@@ -182,7 +213,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     };
     let small = (drawn(&law, CELL_TEXT), drawn(&rest, CELL_TEXT));
     let large = (drawn(&law, LARGE_TEXT), drawn(&rest, LARGE_TEXT));
-    let mut column = plan_column(p, errors, fitted.deviation, &words)?;
+    let mut column = plan_column(p, errors, fitted.deviation, &words, width)?;
     let plans: Vec<diagrams::Plan> = SHORTER.iter().map(|&s| shorter_plan(p, &column, s)).collect();
     // The nomogram in the plans' finer series, unless its labels then find no clean spot
     // (a tall, narrow nomogram beside the profile leaves r_min's label no room): then in the

@@ -10,8 +10,18 @@ use kurbo::{Rect, Vec2};
 
 /// The sheet inside its frame, with a 4 mm margin.
 pub const SHEET: Rect = Rect { x0: 24.0, y0: 9.0, x1: 832.0, y1: 585.0 };
-/// The diagrams' column is at most this wide, mm.
-pub const LEFT_MAX: f64 = 320.0;
+/// How wide the diagrams' column may be, mm: at most `left`, its working angle's axis at
+/// most `phi` long.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ColumnWidth {
+    pub left: f64,
+    pub phi: f64,
+}
+
+/// The column's widths tried: the usual one, and a wider one (a longer φ axis) for a sheet
+/// whose views leave the middle of the sheet empty beside the usual column.
+pub const COLUMN_WIDTHS: [ColumnWidth; 2] =
+    [ColumnWidth { left: 320.0, phi: 240.0 }, ColumnWidth { left: 400.0, phi: 300.0 }];
 /// Between regions, mm.
 const GAP: f64 = 6.0;
 /// Room a view needs besides its drawing: its title and its scale above, its margins.

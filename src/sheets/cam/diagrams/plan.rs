@@ -32,9 +32,6 @@ const LIFT_MIN_MM: f64 = 30.0;
 const ACCELERATION_MM: (f64, f64, f64) = (20.0, 70.0, 75.0);
 /// The pole distance H2, whole mm: below 15 mm its rays merge.
 const H2_MM: (f64, f64) = (15.0, 40.0);
-/// The working angle's widest drawing, mm.
-const WIDTH_MAX_MM: f64 = 240.0;
-
 /// μ_φ's series, degrees per mm (times 10ⁿ): finer than the plans' round series, so that the
 /// working angle fills the column (the guide takes 0.73 °/mm).
 const PHI_MANTISSAS: [f64; 10] = [1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
@@ -52,7 +49,7 @@ pub struct Plan {
 
 /// The course's scales for diagrams in at most `max_w` × `max_h` mm:
 /// - μ_φ from [`PHI_MANTISSAS`], the smallest that fits the width (at most
-///   [`WIDTH_MAX_MM`] for the working angle);
+///   `phi_max` mm for the working angle);
 /// - H1 = 1/μ_φ, so that s and ds/dφ share μ_s;
 /// - μ_s of the plans' round series (steps of at most 1.5×: 5 → 6 → 7.5 → 10), the smallest
 ///   (the largest drawing) with the lift at most [`LIFT_MAX_MM`]
@@ -67,7 +64,7 @@ pub struct Plan {
 /// read the other way, at least the least H2 (shorter, the rays merge): the lift keeps a
 /// measurable height. A phase too short for any such H1 (its chords a fraction of a mm at
 /// the width the long phase needs) is drawn at the shared scale, the lift as low as it must.
-pub fn plan(d: &Design, max_w: f64, max_h: f64) -> Plan {
+pub fn plan(d: &Design, (max_w, phi_max): (f64, f64), max_h: f64) -> Plan {
     let p = &d.spec.program;
     let work = (p.rise + p.far_dwell + p.ret).to_degrees();
     let width = |mu_deg: f64| POLE_NAME + (180.0 / PI / mu_deg).max(H2_MM.1) + work / mu_deg + RIGHT;
@@ -76,8 +73,8 @@ pub fn plan(d: &Design, max_w: f64, max_h: f64) -> Plan {
         (-2..=3).flat_map(|e| PHI_MANTISSAS.map(|m| if e < 0 { m / 10f64.powi(-e) } else { m * 10f64.powi(e) }));
     let mu_phi_deg = series
         .clone()
-        .find(|&m| work / m <= WIDTH_MAX_MM && width(m) <= max_w)
-        .unwrap_or_else(|| series.clone().find(|&m| work / m <= WIDTH_MAX_MM).unwrap_or(1.0));
+        .find(|&m| work / m <= phi_max && width(m) <= max_w)
+        .unwrap_or_else(|| series.clone().find(|&m| work / m <= phi_max).unwrap_or(1.0));
     let mu_phi_rad = mu_phi_deg.to_radians();
     let (vmax, amax) = peaks(d);
     // A = k·H2: the analog's height per mm of pole distance. H2 aims at the guide's 70 mm;
