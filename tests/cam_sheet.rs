@@ -499,7 +499,8 @@ fn the_diagrams_column_widens_only_where_the_sheet_is_emptier_without() {
     let Variant::Project { text, .. } = catalogue.task("1").unwrap().project(5, Language::Uz, "").unwrap() else {
         panic!("task 1 variant 5: incomplete in the catalogue");
     };
-    for (name, text, wide) in [("worked example", pipeline::DEFAULT_PROJECT, true), ("task 1 variant 5", &text, false)] {
+    for (name, text, wide) in [("worked example", pipeline::DEFAULT_PROJECT, true), ("task 1 variant 5", &text, false)]
+    {
         let b = sheet3(&pipeline::load(text).unwrap());
         let column = b.output.scene.groups.iter().find(|g| g.id == "diagrams").unwrap().region;
         assert_eq!(column.width() > 324.0, wide, "{name}: the column is {} mm wide", column.width());

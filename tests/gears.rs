@@ -301,6 +301,28 @@ fn the_centre_distance_is_dimensioned_between_the_wheels_centres() {
     }
 }
 
+/// Wheel 1's addendum and dedendum are dimensioned along one of its radii, the guide's pair
+/// by hand: h_a = h_a*·m = 5 mm and h_f = (h_a* + c*)·m = 6.25 mm, at 5:1 lines 25 and 31.25 mm
+/// long pointing at O1, their values "h_a = 5,000" and "h_f = 6,250".
+#[test]
+fn the_addendum_and_dedendum_are_dimensioned_on_a_radius_of_wheel_1() {
+    use tmm_sheets::drawing::obstacles::segments;
+    let p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+    let b = sheet2(&p);
+    let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
+    let o1 = mesh.texts().find(|t| t.text == "O" && t.sub == "1").expect("O1's name").bbox();
+    for (sub, tail, length) in [("a", " = 5,000", 25.0), ("f", " = 6,250", 31.25)] {
+        assert!(mesh.texts().any(|t| t.text == "h" && t.sub == sub && t.tail == tail), "h_{sub}{tail}");
+        let radial = mesh.items.iter().flat_map(segments).find(|(a, b)| {
+            let d = *b - *a;
+            // Along a line through O1 (its name is a few mm off it): the cross product small.
+            let to_o1 = o1.center() - *a;
+            (d.hypot() - length).abs() < 1e-6 && (d.cross(to_o1) / d.hypot()).abs() < 8.0
+        });
+        assert!(radial.is_some(), "no {length} mm line along a radius for h_{sub}");
+    }
+}
+
 /// Without a planetary stage the mesh takes the sheet's width up to the tables (the right
 /// half held the tables alone, three quarters of it empty), in every language the same
 /// region (what is measured on the drawing must not depend on the language).

@@ -3,7 +3,8 @@
 //! dimensions in the wheel's body under its teeth, right of the line of centres (left of it
 //! the space's flank runs through P, on the line itself). A dimension whose lines would leave
 //! the drawing's area is not drawn. The centre distance a_w between O1 and O2, right of the
-//! teeth, where both centres are on the drawing.
+//! teeth, where both centres are on the drawing; wheel 1's addendum h_a and dedendum h_f
+//! along a radius upper left, where only its circles pass.
 
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
@@ -86,6 +87,37 @@ pub fn centre_distance(g: &mut Group, labels: &mut Labels, v: View, area: Rect, 
     let value = LabelText::new("a", "w").with_tail(format!(" = {}", fmt::value(mm(p.centre_distance), lang)));
     let at = kurbo::Point::new(x, o1.y + (o2.y - o1.y) * 0.25);
     labels.add_ranked(at, Vec2::new(1.0, 0.0), value, TEXT_H, 1);
+}
+
+/// The world angles (degrees from wheel 1's centre, y up) tried for the heights' radial
+/// dimension, upper left of the teeth first: away from the teeth (about 90°) and the s, e and
+/// p arcs right of the line of centres, where only the wheel's circles pass.
+const HEIGHTS_AT_DEG: [f64; 6] = [130.0, 140.0, 120.0, 150.0, 160.0, 170.0];
+
+/// The addendum h_a (pitch to tip circle) and the dedendum h_f (root to pitch circle) of
+/// wheel 1, as a chain of two dimensions along one radius of the wheel, its arrows on the
+/// circles themselves, at the first of [`HEIGHTS_AT_DEG`] where the radius from a little
+/// inside the root circle to a little past the tip is on the drawing and clear of the
+/// teeth's box `teeth`; not drawn where none is.
+pub fn heights(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, teeth: Rect, lang: Language) {
+    let w1 = &p.wheels[0];
+    let on = |deg: f64, r: f64| v.p(from_angle(deg.to_radians()) * r);
+    let clear = |deg: f64| {
+        let (a, b) = (on(deg, w1.root - 6.0 * v.mu), on(deg, w1.tip + 6.0 * v.mu));
+        area.contains(a) && area.contains(b) && teeth.intersect(Rect::from_points(a, b)).area() <= 0.0
+    };
+    let Some(deg) = HEIGHTS_AT_DEG.into_iter().find(|&d| clear(d)) else { return };
+    let value = |name: &str, x: f64| LabelText::new("h", name).with_tail(format!(" = {}", fmt::value(mm(x), lang)));
+    let along = on(deg, 1.0) - on(deg, 0.0);
+    // The values beside their lines toward the teeth (the angles are past 90°), where the
+    // wheel's body is empty: the circles' names stand at the other side, at the area's edge.
+    let side = Vec2::new(-along.y, along.x);
+    for (r0, r1, v_) in
+        [(w1.pitch, w1.tip, value("a", w1.tip - w1.pitch)), (w1.root, w1.pitch, value("f", w1.pitch - w1.root))]
+    {
+        let mid = symbols::dimension(g, on(deg, r0), on(deg, r1), Vec2::ZERO);
+        labels.add_ranked(mid, side, v_, TEXT_H, 1);
+    }
 }
 
 /// Arc dimensions about wheel 1's centre from features on the circle of paper radius

@@ -105,6 +105,7 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     let tau = draw_lines(g, v, area, pp, p, &points);
     let contact_ratio_drawn = draw_arc_of_action(g, v, inp, &fl1, centres[0][1], &points);
     super::mesh_dimensions::centre_distance(g, labels, v, area, p, teeth, inp.lang);
+    super::mesh_dimensions::heights(g, labels, v, area, p, teeth, inp.lang);
     super::mesh_dimensions::draw(g, labels, v, area, p, centres[0][0], inp.lang);
     point_labels(labels, v, area, &points);
     senses_of_rotation(g, labels, v, area, &points);
