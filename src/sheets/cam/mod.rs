@@ -174,27 +174,28 @@ fn head_h(title: &str, w: f64) -> f64 {
 }
 
 /// Builds sheet 3 with the diagrams' column at each of [`COLUMN_WIDTHS`] and keeps the one
-/// that leaves the least of the sheet empty (the usual width on a tie): a column too narrow
-/// for its views' room leaves a band across the sheet's middle; one too wide shrinks the
-/// views.
+/// that leaves the least of the sheet empty (the usual width on a tie) among those whose
+/// layout is no less clean: a column too narrow for its views' room leaves a band across the
+/// sheet's middle; one too wide shrinks the views.
 pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let usual = build_at(ctx, p, COLUMN_WIDTHS[0])?;
     let wide = COLUMN_WIDTHS[1..].iter().filter_map(|&w| build_at(ctx, p, w).ok());
-    let empty = |b: &CamBuild| {
-        let (width, height) = crate::drawing::frame::page();
-        let scene = crate::drawing::scene::Scene {
-            ink: Default::default(),
-            name: String::new(),
-            width,
-            height,
-            title: String::new(),
-            groups: b.composition.groups.clone(),
-        };
-        let (field, block) = (crate::drawing::frame::inner(), crate::drawing::frame::title_block_rect());
-        crate::drawing::layout::empty_share(&scene, field, block, &[])
-    };
-    let first = (empty(&usual) - 0.005, usual);
-    Ok(wide.map(|b| (empty(&b), b)).fold(first, |best, b| if b.0 < best.0 { b } else { best }).1)
+    let (faults, empty) = measured(&usual);
+    let first = ((faults, empty - 0.005), usual);
+    let better = |a: (usize, f64), b: (usize, f64)| a.0 <= b.0 && a.1 < b.1;
+    Ok(wide.map(|b| (measured(&b), b)).fold(first, |best, b| if better(b.0, best.0) { b } else { best }).1)
+}
+
+/// A build's drawings as the layout measure finds them on the page: their faults (texts
+/// crossed or overlapping, items out of their regions) and their share of empty cells.
+fn measured(b: &CamBuild) -> (usize, f64) {
+    use crate::drawing::{frame, layout, scene::Scene};
+    let (width, height) = frame::page();
+    let groups = b.composition.groups.clone();
+    let scene = Scene { ink: Default::default(), name: String::new(), width, height, title: String::new(), groups };
+    let l = layout::measure(&scene);
+    let empty = layout::empty_share(&scene, frame::inner(), frame::title_block_rect(), &[]);
+    (l.texts_crossed + l.text_overlaps + l.outside_region, empty)
 }
 
 /// Builds sheet 3 with the diagrams' column at most `width` wide.
