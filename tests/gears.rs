@@ -307,6 +307,7 @@ fn the_centre_distance_is_dimensioned_between_the_wheels_centres() {
 #[test]
 fn the_addendum_and_dedendum_are_dimensioned_on_a_radius_of_wheel_1() {
     use tmm_sheets::drawing::obstacles::segments;
+    use tmm_sheets::num::math::Norm;
     let p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
     let b = sheet2(&p);
     let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
@@ -317,7 +318,7 @@ fn the_addendum_and_dedendum_are_dimensioned_on_a_radius_of_wheel_1() {
             let d = *b - *a;
             // Along a line through O1 (its name is a few mm off it): the cross product small.
             let to_o1 = o1.center() - *a;
-            (d.hypot() - length).abs() < 1e-6 && (d.cross(to_o1) / d.hypot()).abs() < 8.0
+            (d.norm() - length).abs() < 1e-6 && (d.cross(to_o1) / d.norm()).abs() < 8.0
         });
         assert!(radial.is_some(), "no {length} mm line along a radius for h_{sub}");
     }

@@ -250,6 +250,10 @@ fn cams_the_sweep_found_with_texts_crossed_are_clean() {
         // "e = 405.1 mm" set against its region's left edge: the measure boxed a lone label's
         // slant half to the left (0.47 mm out) where the labeller, rightly, puts it all right.
         cam("{translating: {stroke: 0.7603, offset: auto}}", (63.69, 0.0, 158.73), "trapezoid", 21.5),
+        // A 20 mm rocker's return of 1°: pivots A₈…A₁₇ and rollers 8…17 within 3 mm of each
+        // other, their names knotted across the arms; positions drawn less than 1.5 mm apart
+        // now share a name ("8≡9≡…≡14").
+        cam("{rocker: {length: 0.0200, swing_deg: 5.0}}", (172.04, 0.0, 1.0), "linearly-decreasing", 10.0),
     ] {
         assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
     }

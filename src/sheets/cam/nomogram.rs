@@ -40,6 +40,15 @@ pub fn position_labels(phis: &[f64]) -> Vec<Option<String>> {
 
 /// Positions closer than this on paper (mm) are one point to the reader and share a label.
 const SAME_POINT_MM: f64 = 1.5;
+
+/// Each position's number as a drawing writes it at the paper points `at`: positions at one
+/// angle (see [`position_labels`]) or drawn less than [`SAME_POINT_MM`] apart share one label
+/// ("10≡11"): a rocker's pivots a phase of 1° apart are one point to the reader.
+pub fn drawn_position_labels(phis: &[f64], at: &[Point]) -> Vec<Option<String>> {
+    merged_labels(phis.len(), |j, k| {
+        (phis[j] - phis[k]).abs() < tol::ANGLE_ROUND_OFF || (at[j] - at[k]).norm() < SAME_POINT_MM
+    })
+}
 /// The radius of the allowed angle's mark at a limiting line's apex, mm.
 const ANGLE_MARK_MM: f64 = 10.0;
 /// The zone's boundary: points traced across the picture, the hatching's step, and how near

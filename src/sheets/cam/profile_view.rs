@@ -8,7 +8,7 @@
 //! in the start position and the cam's sense of rotation.
 
 use super::labels::{CamLabels, CamWords};
-use super::nomogram::{Placement, bounds, position_labels};
+use super::nomogram::{Placement, bounds, drawn_position_labels};
 use crate::cams::Design;
 use crate::cams::follower::Follower;
 use crate::drawing::fmt;
@@ -126,14 +126,15 @@ fn draw_profiles(g: &mut Group, view: View, d: &Design, pieces: &Pieces) {
 
 /// The numbered positions: the rollers and their numbers outside them.
 fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis: &[f64]) {
-    for (&phi, name) in phis.iter().zip(position_labels(phis)) {
+    // At the roller's rim (a knife's point), outward: a leader, if any, reaches it.
+    let rim = |p: Vec2| view.p(p * (1.0 + d.roller / p.norm()));
+    let rims: Vec<Point> = phis.iter().map(|&phi| rim(d.profile.pitch(phi).p)).collect();
+    for ((&phi, &rim), name) in phis.iter().zip(&rims).zip(drawn_position_labels(phis, &rims)) {
         let p = d.profile.pitch(phi).p;
         if d.roller != 0.0 {
             g.circle(view.p(p), view.len(d.roller), THIN);
             labels.keep_out(view.p(p), view.len(d.roller));
         }
-        // At the roller's rim (a knife's point), outward: a leader, if any, reaches it.
-        let rim = view.p(p * (1.0 + d.roller / p.norm()));
         if let Some(name) = name {
             labels.add_text_ranked(rim, rim - view.origin, &name, 2.5, 2);
         }
@@ -215,7 +216,8 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
             // The carried pivot turns by φ; on paper clockwise or not as the view mirrors.
             let turn = if v0.cross(v1) > 0.0 { 1.0 } else { -1.0 };
             g.curve(Path::arc(o, a_w / mu, atan2(v0.y, v0.x), turn * sweep), AXIS);
-            for (&phi, name) in phis.iter().zip(position_labels(phis)) {
+            let pivots: Vec<Point> = phis.iter().map(|&phi| at(pr.carried(pivot, phi))).collect();
+            for (&phi, name) in phis.iter().zip(drawn_position_labels(phis, &pivots)) {
                 let a = pr.carried(pivot, phi);
                 let (start, end) = (pr.carried(b0, phi), pr.pitch(phi).p);
                 g.dot(at(a), 0.5);
