@@ -5,7 +5,7 @@
 //! makes it; the velocity plans fill the rest of the top band; the acceleration plans at
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
-use super::forces_view::{ForceScales, ForcesInput, draw_forces, fit_comfortably};
+use super::forces_view::{CellMemo, ForceScales, ForcesInput, draw_forces, fit_comfortably};
 use super::labels::LeverWords;
 use super::mechanism_view::{MechanismView, TRAJECTORY, world_extent};
 use super::note_tables::{NoteTables, note_tables, sheet_table, tables_group, with_units};
@@ -89,8 +89,9 @@ pub(super) const HEADER: f64 = 17.0;
 /// Lays out sheet 1; refuses a project text too long for its place on the sheet.
 pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let plans = PlansOf::new(inp, k);
+    let memo = CellMemo::default();
     if inp.forces.is_none() {
-        return draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_MIN_W)?);
+        return draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_MIN_W, &memo)?);
     }
     // The split between the force drawings (left) and the plans (right): the widest force
     // column is tried first; a narrower one wins when the forces still fit comfortably and
@@ -98,11 +99,11 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     // not clean — of those, the one whose smallest plan is largest (a wider one on a tie).
     // Both conditions are known before anything is drawn, so a width that cannot win is
     // never drawn (drawing is nearly all of the time).
-    let widest = draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_WIDTHS[0])?)?;
+    let widest = draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_WIDTHS[0], &memo)?)?;
     let smallest = widest.layout.smallest_plan_mm.unwrap_or(0.0);
     let mut narrower = Vec::new();
     for &w in &FORCES_WIDTHS[1..] {
-        let next = arrange(inp, k, &plans, w)?;
+        let next = arrange(inp, k, &plans, w, &memo)?;
         let grown = next.smallest_plan_mm(&plans).unwrap_or(0.0);
         if next.mech.comfortable && (grown > 1.1 * smallest || !widest.layout.is_clean()) {
             narrower.push((grown, next));
@@ -164,10 +165,16 @@ impl Arrangement<'_> {
 }
 
 /// Arranges sheet 1 with a force column at least `forces_w` wide.
-fn arrange<'a>(inp: &'a Input, k: &'a Kinematics, plans: &PlansOf, forces_w: f64) -> Result<Arrangement<'a>, TooLong> {
+fn arrange<'a>(
+    inp: &'a Input,
+    k: &'a Kinematics,
+    plans: &PlansOf,
+    forces_w: f64,
+    memo: &'a CellMemo,
+) -> Result<Arrangement<'a>, TooLong> {
     let words = LeverWords::new(inp.ctx.info.language);
     let inner = frame::inner();
-    let force_input = force_input(inp, k, &words);
+    let force_input = force_input(inp, k, &words, memo);
     let mech = mechanism_place(inp, k, force_input.as_ref(), Column { width: forces_w, inner });
     // With a force analysis, its drawings fill the left column below the mechanism and the
     // acceleration plans move to the right column.
@@ -273,7 +280,12 @@ struct Column {
 }
 
 /// The force drawings' input (tables 3–5 as drawn), to size the regions by.
-fn force_input<'a>(inp: &'a Input, k: &'a Kinematics, words: &LeverWords) -> Option<ForcesInput<'a>> {
+fn force_input<'a>(
+    inp: &'a Input,
+    k: &'a Kinematics,
+    words: &LeverWords,
+    memo: &'a CellMemo,
+) -> Option<ForcesInput<'a>> {
     let (c, lang) = (words.common, words.lang);
     inp.forces.map(|(fa, _)| {
         let (t3, t4, t5) = (&inp.notes[2], &inp.notes[3], &inp.notes[4]);
@@ -289,6 +301,7 @@ fn force_input<'a>(inp: &'a Input, k: &'a Kinematics, words: &LeverWords) -> Opt
             phi_deg: k.assigned.phi.to_degrees(),
             words: *words,
             tables,
+            memo,
         }
     })
 }

@@ -99,13 +99,24 @@ fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec
     with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
 }
 
-pub(super) fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes, grow: bool) -> (GroupLayout, f64, f64) {
+/// A group drawing's length scale and its polygon's μ_P at the sizes `s`: all its cell's
+/// layout depends on besides whether it may grow.
+pub(super) fn group_scales(poly: &Polygon, inp: &ForcesInput, s: Sizes) -> (f64, f64) {
+    let chain_box = bbox_of(&chain(poly));
+    (s.mu_l(world_box(inp, poly)), s.round_up(chain_box.width().max(chain_box.height()) / s.poly_box))
+}
+
+/// A group cell's layout at its scales (see [`group_scales`]), with its width and height.
+pub(super) fn group_layout(
+    inp: &ForcesInput,
+    poly: &Polygon,
+    (mu_l, mu_p): (f64, f64),
+    grow: bool,
+) -> (GroupLayout, f64, f64) {
     let world = world_box(inp, poly);
-    let mu_l = s.mu_l(world);
     let (drawing_w, drawing_h) = (world.width() / mu_l + 2.0 * PAD, world.height() / mu_l + 2.0 * PAD);
     let chain = chain(poly);
     let chain_box = bbox_of(&chain);
-    let mu_p = s.round_up(chain_box.width().max(chain_box.height()) / s.poly_box);
     let mu_f = arrow_scale(poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max));
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let poly_size = (poly_w, poly_h);
