@@ -258,6 +258,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         diagnostics: diagrams::squeezed(d, &scales).into_iter().collect(),
         smallest_plan_mm: None,
         segments: measured,
+        measured: None,
     };
     Ok(CamBuild {
         composition,

@@ -259,6 +259,7 @@ fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<
         diagnostics: Vec::new(),
         smallest_plan_mm,
         segments: drawn_segments,
+        measured: None,
     };
     let scene = scaffold::scene(inp.ctx, inp.kind, &composition)?;
     let layout = scaffold::measure(&scene, &composition);
