@@ -98,25 +98,51 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     // the smallest plan grows by a tenth or more over the widest's, or the widest's layout is
     // not clean — of those, the one whose smallest plan is largest (a wider one on a tie).
     // Both conditions are known before anything is drawn, so a width that cannot win is
-    // never drawn (drawing is nearly all of the time).
-    let widest = draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_WIDTHS[0], &memo)?)?;
-    let smallest = widest.layout.smallest_plan_mm.unwrap_or(0.0);
+    // never drawn (drawing is nearly all of the time). Nor is the widest drawn before the
+    // narrower ones that grow the plans: in that order they come first whether the widest
+    // is clean or not, so the first of them that is clean wins either way.
+    let widest = arrange(inp, k, &plans, FORCES_WIDTHS[0], &memo)?;
+    // Drawing fails only where the title block refuses the sheet's texts: then with the
+    // widest's refusal, as when it was drawn first.
+    title_block_refusal(inp, &widest)?;
+    let smallest = widest.smallest_plan_mm(&plans).unwrap_or(0.0);
     let mut narrower = Vec::new();
     for &w in &FORCES_WIDTHS[1..] {
         let next = arrange(inp, k, &plans, w, &memo)?;
         let grown = next.smallest_plan_mm(&plans).unwrap_or(0.0);
-        if next.mech.comfortable && (grown > 1.1 * smallest || !widest.layout.is_clean()) {
+        if next.mech.comfortable {
             narrower.push((grown, next));
         }
     }
     narrower.sort_by(|a, b| b.0.total_cmp(&a.0));
-    for (_, next) in narrower {
+    let (growing, rest): (Vec<_>, Vec<_>) = narrower.into_iter().partition(|(grown, _)| *grown > 1.1 * smallest);
+    for (_, next) in growing {
+        let drawn = draw(inp, k, &plans, next)?;
+        if drawn.layout.is_clean() {
+            return Ok(drawn);
+        }
+    }
+    let widest = draw(inp, k, &plans, widest)?;
+    if widest.layout.is_clean() {
+        return Ok(widest);
+    }
+    for (_, next) in rest {
         let drawn = draw(inp, k, &plans, next)?;
         if drawn.layout.is_clean() {
             return Ok(drawn);
         }
     }
     Ok(widest)
+}
+
+/// The refusal of the title block of the sheet arranged `a`, if any: the one way [`draw`]
+/// fails.
+fn title_block_refusal(inp: &Input, a: &Arrangement) -> Result<(), TooLong> {
+    let l = a.words.sheet;
+    let name = if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() };
+    let lang = inp.ctx.info.language;
+    let scale = fmt::localise(&scale::ratio(a.mech.mu_l), lang);
+    inp.ctx.title_block(crate::drawing::labels::Common::get(lang), name, &scale).map(|_| ())
 }
 
 /// Widths of the force column tried, mm.
