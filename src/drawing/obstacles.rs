@@ -4,6 +4,7 @@
 //! (an arrowhead, a dot) is its outline, which also catches a box that swallows it whole.
 
 use super::grid::Grid;
+use super::path::{Path, Seg};
 use super::scene::Item;
 use crate::num::math::Norm;
 use kurbo::{Point, Rect, Shape};
@@ -66,6 +67,59 @@ pub fn segments(item: &Item) -> Vec<(Point, Point)> {
 /// Half a thin line's width, mm: its ink is within the labels' clearance of its centre line.
 const THIN_HALF: f64 = 0.125;
 
+/// An item's pieces, tagged `k`, appended to `out`: a text's letters' boxes; a line's
+/// segments, and a thick line's edges too (its ink reaches past its centre line further
+/// than a label's clearance).
+fn pieces_of(item: &Item, k: usize, out: &mut Vec<(Piece, usize)>) {
+    match item {
+        Item::Text(t) => out.extend(t.core_boxes().map(|b| (Piece::TextBox(b), k))),
+        _ => {
+            let segs = segments(item);
+            let edge = pen_width(item).map_or(0.0, |w| w / 2.0 - THIN_HALF);
+            if edge > 0.0 {
+                for &(a, b) in segs.iter().filter(|(a, b)| (*b - *a).norm() > 0.0) {
+                    let n = (b - a).unit().turn_90() * edge;
+                    out.push((Piece::Segment(a + n, b + n), k));
+                    out.push((Piece::Segment(a - n, b - n), k));
+                }
+            }
+            out.extend(segs.into_iter().map(|(a, b)| (Piece::Segment(a, b), k)));
+        }
+    }
+}
+
+/// A box every piece of a drawn item lies in, found without flattening it (its points and
+/// control points, an arc's whole circle, half its pen beyond, and a margin for the
+/// flattening's tolerance); none for a text (its letters' boxes are its pieces).
+fn reach(item: &Item) -> Option<Rect> {
+    let path_box = |path: &Path| {
+        path.segs.iter().fold(Rect::from_points(path.start, path.start), |r, seg| match seg {
+            Seg::Line(p) => r.union_pt(*p),
+            Seg::Cubic(p1, p2, p3) => r.union_pt(*p1).union_pt(*p2).union_pt(*p3),
+            Seg::Arc(a) => {
+                let rad = a.radii.x.max(a.radii.y);
+                r.union(Rect::from_center_size(a.center, (2.0 * rad, 2.0 * rad)))
+            }
+        })
+    };
+    let (r, pen) = match item {
+        Item::Path { path, pen } => (path_box(path), pen.width),
+        Item::Fill { path } => (path_box(path), 0.0),
+        Item::Circle { c, r, pen, .. } => (Rect::from_center_size(*c, (2.0 * r, 2.0 * r)), pen.width),
+        Item::Text(_) => return None,
+    };
+    let out = pen / 2.0 + REACH_SLACK;
+    Some(r.inflate(out, out))
+}
+
+/// Far beyond a curve's flattening tolerance, mm.
+const REACH_SLACK: f64 = 0.1;
+
+/// Whether the closed boxes `a` and `b` share a point.
+fn meets(a: Rect, b: Rect) -> bool {
+    a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1
+}
+
 /// The width of an item's stroke, if it has one.
 fn pen_width(item: &Item) -> Option<f64> {
     match item {
@@ -79,22 +133,29 @@ impl Obstacles {
     pub fn of_items<'a>(items: impl IntoIterator<Item = &'a Item>) -> Obstacles {
         let mut pieces = Vec::new();
         for (k, item) in items.into_iter().enumerate() {
-            match item {
-                Item::Text(t) => pieces.extend(t.core_boxes().map(|b| (Piece::TextBox(b), k))),
-                _ => {
-                    let segs = segments(item);
-                    // A thick line's ink reaches past its centre line further than a label's
-                    // clearance: its edges are indexed too.
-                    let edge = pen_width(item).map_or(0.0, |w| w / 2.0 - THIN_HALF);
-                    if edge > 0.0 {
-                        for &(a, b) in segs.iter().filter(|(a, b)| (*b - *a).norm() > 0.0) {
-                            let n = (b - a).unit().turn_90() * edge;
-                            pieces.push((Piece::Segment(a + n, b + n), k));
-                            pieces.push((Piece::Segment(a - n, b - n), k));
-                        }
+            pieces_of(item, k, &mut pieces);
+        }
+        Obstacles::of_pieces(pieces)
+    }
+
+    /// As [`Obstacles::of_items`], without the pieces whose bounds miss `within`: for
+    /// questions about `within` alone (a cell's labels among every cell drawn before it),
+    /// whose answers those pieces cannot change. An item that cannot reach `within` is not
+    /// even flattened.
+    pub fn of_items_within<'a>(items: impl IntoIterator<Item = &'a Item>, within: Rect) -> Obstacles {
+        let mut pieces = Vec::new();
+        for (k, item) in items.into_iter().enumerate() {
+            if reach(item).is_none_or(|r| meets(r, within)) {
+                let from = pieces.len();
+                pieces_of(item, k, &mut pieces);
+                let mut kept = from;
+                for i in from..pieces.len() {
+                    if meets(bounds(&pieces[i].0), within) {
+                        pieces.swap(kept, i);
+                        kept += 1;
                     }
-                    pieces.extend(segs.into_iter().map(|(a, b)| (Piece::Segment(a, b), k)));
                 }
+                pieces.truncate(kept);
             }
         }
         Obstacles::of_pieces(pieces)

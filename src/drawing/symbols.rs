@@ -97,6 +97,13 @@ pub fn turn_arrow(g: &mut Group, c: Point, r: f64, start_deg: f64, sweep_deg: f6
     arrowhead(g, tip, tip - back);
 }
 
+/// The box a [`turn_arrow`] round `c` of radius `r` stays inside, whatever its start and
+/// sweep: what [`clear_turn_arrow`] may cross lies in it.
+pub fn turn_arrow_reach(c: Point, r: f64) -> Rect {
+    let out = 2.0 * (r + ARROW_LEN);
+    Rect::from_center_size(c, (out, out))
+}
+
 /// A [`turn_arrow`] turned (start every 10° from `pref_deg`) to where it crosses the fewest
 /// segments of `drawn`, nearest `pref_deg` among equals; it joins `drawn`. Returns its start.
 #[allow(clippy::too_many_arguments)]

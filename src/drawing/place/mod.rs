@@ -156,7 +156,12 @@ impl Labels {
     /// returns whether each found a clean spot (the layout measurement reports those that
     /// did not).
     pub fn place(self, g: &mut Group, bounds: Rect) -> Vec<bool> {
-        let mut drawn = Obstacles::of_items(&g.items);
+        // Every box tried is inside the bounds and every leader runs from near its anchor
+        // to its box: what lies beyond both cannot touch them (a cell's labels need not
+        // see the cells drawn before it).
+        let reach = self.requests.iter().flat_map(|r| std::iter::once(r.anchor).chain(r.others.iter().map(|o| o.0)));
+        let reach = reach.fold(bounds, |b, p| b.union_pt(p)).inflate(REACH, REACH);
+        let mut drawn = Obstacles::of_items_within(&g.items, reach);
         for &(c, r) in &self.keep_out {
             drawn.add(Piece::Disc(c, r), usize::MAX);
         }
@@ -276,6 +281,10 @@ fn free_near_first(cands: &[Candidate], vs: &mut [Verdict], req: &Request, drawn
 
 /// A label with at least this many free spots is not constrained (for the order).
 const CONSTRAINED: usize = 8;
+
+/// How far beyond its bounds and anchors a label's box (with its clearance) or leader may
+/// reach, mm, with room to spare.
+const REACH: f64 = 1.0 + CLEAR + LEADER_GAP;
 
 /// Rounds of moving unplaced labels to the front.
 const REPAIR_ROUNDS: usize = 3;

@@ -9,7 +9,7 @@ use kurbo::{Point, Rect, Vec2};
 
 /// Every candidate box inside `bounds`, cheapest first.
 pub(super) fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
-    let mut out = Vec::new();
+    let mut out = Vec::with_capacity(SPOTS_CHEAPEST_FIRST.len() * (1 + req.others.len()));
     if req.others.is_empty() {
         // One anchor: its spots in [`SPOTS_CHEAPEST_FIRST`] are already in order.
         let around = Around::new(req, req.anchor, req.pref, 0.0);
