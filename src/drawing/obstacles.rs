@@ -28,7 +28,10 @@ pub enum Piece {
 #[derive(Default, Clone)]
 pub struct Obstacles {
     pieces: Vec<(Piece, usize)>,
-    grid: Grid,
+    /// The segments, and apart from them the text boxes and discs: a leader's questions
+    /// are about one kind, and a sheet holds many more segments than texts.
+    strokes: Grid,
+    boxes: Grid,
     /// The pieces' bounds together.
     extent: Option<Rect>,
 }
@@ -173,7 +176,7 @@ impl Obstacles {
 
     /// An empty index whose cells cover `extent` (pieces beyond it still count).
     pub fn empty_over(extent: Rect) -> Obstacles {
-        Obstacles { pieces: Vec::new(), grid: Grid::over(extent), extent: None }
+        Obstacles { pieces: Vec::new(), strokes: Grid::over(extent), boxes: Grid::over(extent), extent: None }
     }
 
     /// The drawn pieces' bounds together, if there are any.
@@ -188,25 +191,27 @@ impl Obstacles {
         let b = bounds(&piece);
         self.extent = Some(self.extent.map_or(b, |e| e.union(b)));
         match piece {
-            Piece::Segment(a, b) => self.grid.insert_segment(a, b, id),
-            Piece::TextBox(_) | Piece::Disc(..) => self.grid.insert_box(b, id),
+            Piece::Segment(a, b) => self.strokes.insert_segment(a, b, id),
+            Piece::TextBox(_) | Piece::Disc(..) => self.boxes.insert_box(b, id),
         }
     }
 
     /// The pieces that may touch `r` (a superset: callers test them), with their owners, each
     /// once, in the order they were added.
     pub fn near(&self, r: Rect) -> impl Iterator<Item = &(Piece, usize)> {
-        self.grid.in_box(r).into_iter().map(|id| &self.pieces[id as usize])
+        let (mut ids, boxes) = (self.strokes.in_box(r), self.boxes.in_box(r));
+        // Two sorted lists of different pieces.
+        if !boxes.is_empty() {
+            ids.extend(boxes);
+            ids.sort_unstable();
+        }
+        ids.into_iter().map(|id| &self.pieces[id as usize])
     }
 
     /// Whether `test` holds for a piece that may touch the box `r`.
     fn any_near(&self, r: Rect, mut test: impl FnMut(&Piece) -> bool) -> bool {
-        self.grid.any_in_box(r, |id| test(&self.pieces[id as usize].0))
-    }
-
-    /// Whether `test` holds for a piece that may touch the segment `a`–`b`.
-    fn any_along(&self, a: Point, b: Point, mut test: impl FnMut(&Piece) -> bool) -> bool {
-        self.grid.any_on_segment(a, b, |id| test(&self.pieces[id as usize].0))
+        self.strokes.any_in_box(r, |id| test(&self.pieces[id as usize].0))
+            || self.boxes.any_in_box(r, |id| test(&self.pieces[id as usize].0))
     }
 
     /// How many segments cross the box `r`, and the area of text boxes it overlaps.
@@ -226,7 +231,7 @@ impl Obstacles {
     pub fn hits_segment(&self, a: Point, b: Point) -> usize {
         let crosses =
             |id: &u32| matches!(self.pieces[*id as usize].0, Piece::Segment(c, d) if segments_cross(a, b, c, d));
-        self.grid.on_segment(a, b).iter().filter(|id| crosses(id)).count()
+        self.strokes.on_segment(a, b).iter().filter(|id| crosses(id)).count()
     }
 
     /// Whether nothing (no segment, no text box) meets the box `r`: [`Obstacles::hits`]
@@ -241,12 +246,15 @@ impl Obstacles {
 
     /// Whether the segment `a`–`b` crosses any stroke segment.
     pub fn segment_crosses_stroke(&self, a: Point, b: Point) -> bool {
-        self.any_along(a, b, |p| matches!(*p, Piece::Segment(c, d) if segments_cross(a, b, c, d)))
+        let crosses =
+            |id: u32| matches!(self.pieces[id as usize].0, Piece::Segment(c, d) if segments_cross(a, b, c, d));
+        self.strokes.any_on_segment(a, b, crosses)
     }
 
     /// Whether the segment `a`–`b` crosses any text box.
     pub fn segment_crosses_text(&self, a: Point, b: Point) -> bool {
-        self.any_along(a, b, |p| matches!(*p, Piece::TextBox(t) if segment_meets_rect(a, b, t.inflate(-0.05, -0.05))))
+        let meets = |id: u32| matches!(self.pieces[id as usize].0, Piece::TextBox(t) if segment_meets_rect(a, b, t.inflate(-0.05, -0.05)));
+        self.boxes.any_on_segment(a, b, meets)
     }
 }
 
