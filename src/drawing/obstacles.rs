@@ -229,9 +229,17 @@ impl Obstacles {
 
     /// How many stroke segments the segment `a`–`b` crosses.
     pub fn hits_segment(&self, a: Point, b: Point) -> usize {
-        let crosses =
-            |id: &u32| matches!(self.pieces[*id as usize].0, Piece::Segment(c, d) if segments_cross(a, b, c, d));
-        self.strokes.on_segment(a, b).iter().filter(|id| crosses(id)).count()
+        // The few that cross, each once (a piece is listed in every cell it passes).
+        let mut crossing = Vec::new();
+        self.strokes.any_on_segment(a, b, |id| {
+            if matches!(self.pieces[id as usize].0, Piece::Segment(c, d) if segments_cross(a, b, c, d)) {
+                crossing.push(id);
+            }
+            false
+        });
+        crossing.sort_unstable();
+        crossing.dedup();
+        crossing.len()
     }
 
     /// Whether nothing (no segment, no text box) meets the box `r`: [`Obstacles::hits`]
