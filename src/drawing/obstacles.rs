@@ -3,7 +3,7 @@
 //! line crosses. Curves are flattened to segments within [`FLATTEN`] mm; a filled shape
 //! (an arrowhead, a dot) is its outline, which also catches a box that swallows it whole.
 
-use super::grid::Grid;
+use super::grid::{self, Grid};
 use super::path::{Path, Seg};
 use super::scene::Item;
 use crate::num::math::Norm;
@@ -167,11 +167,16 @@ impl Obstacles {
     /// Pieces with their tags, loaded at once.
     pub fn of_pieces(pieces: Vec<(Piece, usize)>) -> Obstacles {
         let extent = pieces.iter().map(|(p, _)| bounds(p)).reduce(|a, b| a.union(b));
-        let mut o = Obstacles::empty_over(extent.unwrap_or(Rect::ZERO));
-        for (p, owner) in pieces {
-            o.add(p, owner);
+        let over = extent.unwrap_or(Rect::ZERO);
+        let id = |k: usize| u32::try_from(k).expect("fewer than 2³² pieces on a sheet");
+        let (mut strokes, mut boxes) = (Vec::new(), Vec::new());
+        for (k, (p, _)) in pieces.iter().enumerate() {
+            match *p {
+                Piece::Segment(a, b) => strokes.push((grid::Shape::Segment(a, b), id(k))),
+                Piece::TextBox(_) | Piece::Disc(..) => boxes.push((grid::Shape::Box(bounds(p)), id(k))),
+            }
         }
-        o
+        Obstacles { pieces, strokes: Grid::with(over, &strokes), boxes: Grid::with(over, &boxes), extent }
     }
 
     /// An empty index whose cells cover `extent` (pieces beyond it still count).
@@ -297,6 +302,16 @@ pub fn segments_cross(a: Point, b: Point, c: Point, d: Point) -> bool {
 /// Whether the segment `a`–`b` has a point inside or on the rectangle `r` (Liang–Barsky).
 pub fn segment_meets_rect(a: Point, b: Point, r: Rect) -> bool {
     if r.width() < 0.0 || r.height() < 0.0 {
+        return false;
+    }
+    // A segment wholly beyond one side (by far more than rounding: the clipping below
+    // answers the same) is answered without it.
+    const APART: f64 = 1e-6;
+    if a.x.max(b.x) < r.x0 - APART
+        || a.x.min(b.x) > r.x1 + APART
+        || a.y.max(b.y) < r.y0 - APART
+        || a.y.min(b.y) > r.y1 + APART
+    {
         return false;
     }
     let d = b - a;
