@@ -58,8 +58,13 @@ impl Default for Grid {
 impl Grid {
     /// An empty grid over `extent` (pieces outside it still go in, to the border cells).
     pub fn over(extent: Rect) -> Grid {
+        Grid::over_cells(extent, CELL)
+    }
+
+    /// An empty grid over `extent` of cells `side` mm wide (or wider, for a large extent).
+    pub fn over_cells(extent: Rect, side: f64) -> Grid {
         let (w, h) = (extent.width().max(0.0), extent.height().max(0.0));
-        let cell = if w.is_finite() && h.is_finite() { CELL.max((w * h / MAX_CELLS).sqrt()) } else { CELL };
+        let cell = if w.is_finite() && h.is_finite() { side.max((w * h / MAX_CELLS).sqrt()) } else { side };
         let count = |len: f64| ((len / cell).ceil() as usize).clamp(1, MAX_CELLS as usize);
         let (nx, ny) = (count(w), count(h));
         let origin = if extent.x0.is_finite() && extent.y0.is_finite() { extent.origin() } else { Point::ZERO };
@@ -69,7 +74,12 @@ impl Grid {
     /// A grid over `extent` listing `shapes`, each with its piece's id: counted cell by
     /// cell, then laid out in one array.
     pub fn with(extent: Rect, shapes: &[(Shape, u32)]) -> Grid {
-        let mut g = Grid::over(extent);
+        Grid::with_cells(extent, CELL, shapes)
+    }
+
+    /// [`Grid::with`] of cells `side` mm wide (see [`Grid::over_cells`]).
+    pub fn with_cells(extent: Rect, side: f64, shapes: &[(Shape, u32)]) -> Grid {
+        let mut g = Grid::over_cells(extent, side);
         let mut starts = vec![0u32; g.nx * g.ny + 1];
         for &(shape, _) in shapes {
             g.shape_cells(shape, |c| starts[c + 1] += 1);
