@@ -81,19 +81,21 @@ const THIN_HALF: f64 = 0.125;
 fn pieces_of(item: &Item, k: usize, out: &mut Vec<(Piece, usize)>) {
     match item {
         Item::Text(t) => out.extend(t.core_boxes().map(|b| (Piece::TextBox(b), k))),
-        _ => {
-            let segs = segments(item);
-            let edge = pen_width(item).map_or(0.0, |w| w / 2.0 - THIN_HALF);
-            if edge > 0.0 {
-                for &(a, b) in segs.iter().filter(|(a, b)| (*b - *a).norm() > 0.0) {
-                    let n = (b - a).unit().turn_90() * edge;
-                    out.push((Piece::Segment(a + n, b + n), k));
-                    out.push((Piece::Segment(a - n, b - n), k));
-                }
-            }
-            out.extend(segs.into_iter().map(|(a, b)| (Piece::Segment(a, b), k)));
+        _ => stroke_pieces(item, &segments(item), k, out),
+    }
+}
+
+/// A drawn item's pieces from its [`segments`] `segs`, as [`pieces_of`].
+fn stroke_pieces(item: &Item, segs: &[(Point, Point)], k: usize, out: &mut Vec<(Piece, usize)>) {
+    let edge = pen_width(item).map_or(0.0, |w| w / 2.0 - THIN_HALF);
+    if edge > 0.0 {
+        for &(a, b) in segs.iter().filter(|(a, b)| (*b - *a).norm() > 0.0) {
+            let n = (b - a).unit().turn_90() * edge;
+            out.push((Piece::Segment(a + n, b + n), k));
+            out.push((Piece::Segment(a - n, b - n), k));
         }
     }
+    out.extend(segs.iter().map(|&(a, b)| (Piece::Segment(a, b), k)));
 }
 
 /// A box every piece of a drawn item lies in, found without flattening it (its points and
@@ -142,6 +144,16 @@ impl Obstacles {
         let mut pieces = Vec::new();
         for (k, item) in items.into_iter().enumerate() {
             pieces_of(item, k, &mut pieces);
+        }
+        Obstacles::of_pieces(pieces)
+    }
+
+    /// [`Obstacles::of_items`] of drawn items (no texts) whose [`segments`] are already
+    /// found, each given with them.
+    pub fn of_flattened<'a>(items: impl IntoIterator<Item = (&'a Item, &'a [(Point, Point)])>) -> Obstacles {
+        let mut pieces = Vec::new();
+        for (k, (item, segs)) in items.into_iter().enumerate() {
+            stroke_pieces(item, segs, k, &mut pieces);
         }
         Obstacles::of_pieces(pieces)
     }

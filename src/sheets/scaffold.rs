@@ -94,10 +94,10 @@ fn constructions(g: &Group) -> Group {
 
 /// The layout measurement of the whole sheet (see [`layout::measure`]).
 pub fn measure(scene: &Scene, c: &Composition) -> Layout {
-    let mut layout = layout::measure(scene);
-    layout.smallest_plan_mm = c.smallest_plan_mm;
     // The drawing field: inside the frame, the title block left out.
-    let share = layout::empty_share(scene, frame::inner(), frame::title_block_rect(), &["frame", TITLE_BLOCK]);
+    let (mut layout, share) =
+        layout::measure_with_share(scene, frame::inner(), frame::title_block_rect(), &["frame", TITLE_BLOCK]);
+    layout.smallest_plan_mm = c.smallest_plan_mm;
     // Three decimals: the same bytes on every machine.
     layout.empty_share = Some((share * 1e3).round() / 1e3);
     layout
