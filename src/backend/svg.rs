@@ -19,11 +19,18 @@ const DECIMALS: usize = 3;
 /// Formats a number with at most three decimals (1 µm), no trailing zeros, no `-0`;
 /// refuses NaN and infinities.
 pub fn num(x: f64) -> Result<String, BackendError> {
+    let mut s = String::new();
+    push_num(&mut s, x)?;
+    Ok(s)
+}
+
+/// [`num`] written at the end of `out`.
+fn push_num(out: &mut String, x: f64) -> Result<(), BackendError> {
     if !x.is_finite() {
         return Err(BackendError::NonFinite { group: String::new(), value: x, item: "a number".into() });
     }
-    if let Some(s) = thousandths(x) {
-        return Ok(s);
+    if thousandths(out, x) {
+        return Ok(());
     }
     let mut s = format!("{x:.DECIMALS$}");
     if s.contains('.') {
@@ -37,35 +44,37 @@ pub fn num(x: f64) -> Result<String, BackendError> {
     if s == "-0" {
         s = "0".into();
     }
-    Ok(s)
+    out.push_str(&s);
+    Ok(())
 }
 
-/// [`num`] without the formatter's exact decimal expansion, where rounding `x` to
-/// thousandths in binary is sure to round it as the expansion does: `x` · 1000 is within
-/// a part in 2⁵³ of its exact product, so unless that lies within a millionth of a half
-/// (then `None`: the formatter decides), its nearest whole number is the exact one's.
-fn thousandths(x: f64) -> Option<String> {
+/// [`num`] without the formatter's exact decimal expansion, written at the end of `out`,
+/// where rounding `x` to thousandths in binary is sure to round it as the expansion does:
+/// `x` · 1000 is within a part in 2⁵³ of its exact product, so unless that lies within a
+/// millionth of a half (then nothing is written: the formatter decides), its nearest whole
+/// number is the exact one's.
+fn thousandths(out: &mut String, x: f64) -> bool {
     let y = x * 1000.0;
     if !(y.abs() < 1e12) || ((y - y.trunc()).abs() - 0.5).abs() < 1e-6 {
-        return None;
+        return false;
     }
     // Below 2⁵³: exact in an i64.
     let n = y.round() as i64;
     let (whole, mut frac) = (n.unsigned_abs() / 1000, n.unsigned_abs() % 1000);
-    let mut s = String::with_capacity(12);
     if n < 0 {
-        s.push('-');
+        out.push('-');
     }
-    write!(s, "{whole}").ok()?;
+    // Writing to a String cannot fail.
+    let _ = write!(out, "{whole}");
     if frac != 0 {
         let mut digits = DECIMALS;
         while frac % 10 == 0 {
             frac /= 10;
             digits -= 1;
         }
-        write!(s, ".{frac:0digits$}").ok()?;
+        let _ = write!(out, ".{frac:0digits$}");
     }
-    Some(s)
+    true
 }
 
 /// Escapes the five XML special characters. Characters XML cannot hold at all (control
@@ -97,16 +106,25 @@ fn stroke_attrs(pen: &Pen, ink: &str) -> Result<String, BackendError> {
 
 /// Path data: `M`, `L`, `C` and `A` commands, `Z` when closed.
 fn path_d(p: &Path) -> Result<String, BackendError> {
-    let mut d = format!("M{} {}", num(p.start.x)?, num(p.start.y)?);
-    for s in &p.segs {
-        let command = match s {
-            Seg::Line(q) => format!("L{} {}", num(q.x)?, num(q.y)?),
-            Seg::Cubic(a, b, c) => {
-                format!("C{} {} {} {} {} {}", num(a.x)?, num(a.y)?, num(b.x)?, num(b.y)?, num(c.x)?, num(c.y)?)
+    let mut d = String::with_capacity(16 * (1 + p.segs.len()));
+    // A command's letter, then its numbers apart by spaces.
+    let command = |d: &mut String, letter: char, xs: &[f64]| -> Result<(), BackendError> {
+        d.push(letter);
+        for (k, &x) in xs.iter().enumerate() {
+            if k > 0 {
+                d.push(' ');
             }
-            Seg::Arc(a) => arc_commands(a)?,
-        };
-        d.push_str(&command);
+            push_num(d, x)?;
+        }
+        Ok(())
+    };
+    command(&mut d, 'M', &[p.start.x, p.start.y])?;
+    for s in &p.segs {
+        match s {
+            Seg::Line(q) => command(&mut d, 'L', &[q.x, q.y])?,
+            Seg::Cubic(a, b, c) => command(&mut d, 'C', &[a.x, a.y, b.x, b.y, c.x, c.y])?,
+            Seg::Arc(a) => d.push_str(&arc_commands(a)?),
+        }
     }
     if p.closed {
         d.push('Z');
