@@ -23,7 +23,7 @@ impl<'a> Spots<'a> {
     pub(super) fn new(req: &'a Request, bounds: Rect) -> Spots<'a> {
         let (made, next) = if req.others.is_empty() {
             // One anchor: its spots in [`SPOTS_CHEAPEST_FIRST`] are already in order.
-            (Vec::new(), Some((Around::new(req, req.anchor, req.pref, 0.0), 0)))
+            (Vec::with_capacity(64), Some((Around::new(req, req.anchor, req.pref, 0.0), 0)))
         } else {
             (candidates(req, bounds).into_iter().map(|c| (c, Verdict::default())).collect(), None)
         };
