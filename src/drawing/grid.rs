@@ -17,15 +17,16 @@
 use kurbo::{Point, Rect};
 
 /// Side of a cell, mm: about a label's height.
-const CELL: f64 = 3.0;
+pub const CELL: f64 = 3.0;
 /// At most this many cells; a larger extent gets larger cells.
 const MAX_CELLS: f64 = 65_536.0;
 
 /// The cells: the pieces loaded at once in one array, those inserted later as singly
 /// linked lists in another; no allocation per cell (a sheet's grid has tens of thousands
-/// of cells, most of them empty).
+/// of cells, most of them empty). Each listing is a `T`: a piece's id, or its id with what
+/// its queries test (a segment's ends), read where the cell is.
 #[derive(Debug, Clone)]
-pub struct Grid {
+pub struct Grid<T = u32> {
     origin: Point,
     cell: f64,
     nx: usize,
@@ -33,11 +34,22 @@ pub struct Grid {
     /// Cell c's pieces loaded at once are `loaded[starts[c]..starts[c + 1]]` (no starts:
     /// none loaded).
     starts: Vec<u32>,
-    loaded: Vec<u32>,
+    loaded: Vec<T>,
     /// Each cell's first entry in `entries`, or [`END`] (empty until a piece is inserted).
     heads: Vec<u32>,
     /// (piece, next entry of the same cell or [`END`]).
-    entries: Vec<(u32, u32)>,
+    entries: Vec<(T, u32)>,
+}
+
+/// What a grid lists: a piece, known by its id.
+pub trait Listed: Copy {
+    fn id(self) -> u32;
+}
+
+impl Listed for u32 {
+    fn id(self) -> u32 {
+        self
+    }
 }
 
 /// A piece's shape, for loading a grid at once.
@@ -49,20 +61,20 @@ pub enum Shape {
 
 const END: u32 = u32::MAX;
 
-impl Default for Grid {
-    fn default() -> Grid {
+impl<T: Listed> Default for Grid<T> {
+    fn default() -> Grid<T> {
         Grid::over(Rect::ZERO)
     }
 }
 
-impl Grid {
+impl<T: Listed> Grid<T> {
     /// An empty grid over `extent` (pieces outside it still go in, to the border cells).
-    pub fn over(extent: Rect) -> Grid {
+    pub fn over(extent: Rect) -> Grid<T> {
         Grid::over_cells(extent, CELL)
     }
 
     /// An empty grid over `extent` of cells `side` mm wide (or wider, for a large extent).
-    pub fn over_cells(extent: Rect, side: f64) -> Grid {
+    pub fn over_cells(extent: Rect, side: f64) -> Grid<T> {
         let (w, h) = (extent.width().max(0.0), extent.height().max(0.0));
         let cell = if w.is_finite() && h.is_finite() { side.max((w * h / MAX_CELLS).sqrt()) } else { side };
         let count = |len: f64| ((len / cell).ceil() as usize).clamp(1, MAX_CELLS as usize);
@@ -73,27 +85,31 @@ impl Grid {
 
     /// A grid over `extent` listing `shapes`, each with its piece's id: counted cell by
     /// cell, then laid out in one array.
-    pub fn with(extent: Rect, shapes: &[(Shape, u32)]) -> Grid {
+    pub fn with(extent: Rect, shapes: &[(Shape, T)]) -> Grid<T> {
         Grid::with_cells(extent, CELL, shapes)
     }
 
-    /// [`Grid::with`] of cells `side` mm wide (see [`Grid::over_cells`]).
-    pub fn with_cells(extent: Rect, side: f64, shapes: &[(Shape, u32)]) -> Grid {
+    /// [`Grid::with`] of cells `side` mm wide (see [`Grid::over_cells`]): each shape's cells
+    /// found once, then counted and laid out cell by cell.
+    pub fn with_cells(extent: Rect, side: f64, shapes: &[(Shape, T)]) -> Grid<T> {
         let mut g = Grid::over_cells(extent, side);
+        // (cell, listing): a grid has at most MAX_CELLS cells.
+        let mut listed: Vec<(u32, T)> = Vec::with_capacity(2 * shapes.len());
+        for &(shape, item) in shapes {
+            g.shape_cells(shape, |c| listed.push((c as u32, item)));
+        }
+        // Each cell's end, then (filled from it backwards) its start.
         let mut starts = vec![0u32; g.nx * g.ny + 1];
-        for &(shape, _) in shapes {
-            g.shape_cells(shape, |c| starts[c + 1] += 1);
+        for &(c, _) in &listed {
+            starts[c as usize] += 1;
         }
         for c in 1..starts.len() {
             starts[c] += starts[c - 1];
         }
-        let mut next = starts.clone();
-        let mut loaded = vec![0u32; starts[starts.len() - 1] as usize];
-        for &(shape, id) in shapes {
-            g.shape_cells(shape, |c| {
-                loaded[next[c] as usize] = id;
-                next[c] += 1;
-            });
+        let mut loaded: Vec<T> = listed.iter().map(|&(_, item)| item).collect();
+        for &(c, item) in listed.iter().rev() {
+            starts[c as usize] -= 1;
+            loaded[starts[c as usize] as usize] = item;
         }
         (g.starts, g.loaded) = (starts, loaded);
         g
@@ -112,7 +128,7 @@ impl Grid {
     }
 
     /// The pieces loaded at once in the cells `i0..=i1` of row `j`, in cell order.
-    fn loaded_in(&self, j: usize, i0: usize, i1: usize) -> &[u32] {
+    fn loaded_in(&self, j: usize, i0: usize, i1: usize) -> &[T] {
         match (self.starts.get(j * self.nx + i0), self.starts.get(j * self.nx + i1 + 1)) {
             (Some(&from), Some(&to)) => &self.loaded[from as usize..to as usize],
             _ => &[],
@@ -120,7 +136,7 @@ impl Grid {
     }
 
     /// The pieces inserted later in cell `c`.
-    fn inserted(&self, c: usize) -> impl Iterator<Item = u32> + '_ {
+    fn inserted(&self, c: usize) -> impl Iterator<Item = T> + '_ {
         let mut at = self.heads.get(c).copied().unwrap_or(END);
         std::iter::from_fn(move || {
             let (id, next) = *self.entries.get(at as usize)?;
@@ -130,19 +146,19 @@ impl Grid {
     }
 
     /// Every piece listed in the cells `i0..=i1` of row `j`.
-    fn in_row(&self, j: usize, i0: usize, i1: usize) -> impl Iterator<Item = u32> + '_ {
+    fn in_row(&self, j: usize, i0: usize, i1: usize) -> impl Iterator<Item = T> + '_ {
         let inserted = (!self.heads.is_empty()).then(|| (i0..=i1).flat_map(move |i| self.inserted(j * self.nx + i)));
         self.loaded_in(j, i0, i1).iter().copied().chain(inserted.into_iter().flatten())
     }
 
     /// Lists piece `id` in cell `c`.
-    fn push(&mut self, c: usize, id: u32) {
+    fn push(&mut self, c: usize, item: T) {
         if self.heads.is_empty() {
             self.heads = vec![END; self.nx * self.ny];
         }
         // An entry index past u32's range would be END: unreachable on a sheet (2³² entries).
         let at = self.entries.len() as u32;
-        self.entries.push((id, self.heads[c]));
+        self.entries.push((item, self.heads[c]));
         self.heads[c] = at;
     }
 
@@ -164,8 +180,8 @@ impl Grid {
     /// Calls `f` with every row the box `r` may touch and the span of its columns there,
     /// until `f` says stop; returns whether it did.
     fn box_rows(&self, r: Rect, mut f: impl FnMut(usize, usize, usize) -> bool) -> bool {
-        let (i0, i1) = (Grid::index(self.gx(r.x0), self.nx), Grid::index(self.gx(r.x1), self.nx));
-        let (j0, j1) = (Grid::index(self.gy(r.y0), self.ny), Grid::index(self.gy(r.y1), self.ny));
+        let (i0, i1) = (Self::index(self.gx(r.x0), self.nx), Self::index(self.gx(r.x1), self.nx));
+        let (j0, j1) = (Self::index(self.gy(r.y0), self.ny), Self::index(self.gy(r.y1), self.ny));
         (j0..=j1).any(|j| f(j, i0, i1))
     }
 
@@ -175,7 +191,7 @@ impl Grid {
     fn segment_rows(&self, a: Point, b: Point, mut f: impl FnMut(usize, usize, usize) -> bool) -> bool {
         let (ax, ay, bx, by) = (self.gx(a.x), self.gy(a.y), self.gx(b.x), self.gy(b.y));
         let (ylo, yhi) = (ay.min(by), ay.max(by));
-        let (j0, j1) = (Grid::index(ylo, self.ny), Grid::index(yhi, self.ny));
+        let (j0, j1) = (Self::index(ylo, self.ny), Self::index(yhi, self.ny));
         let x_at = |y: f64| if by == ay { ax } else { ax + (bx - ax) * ((y - ay) / (by - ay)) };
         (0..=j1 - j0).map(|step| if ay <= by { j0 + step } else { j1 - step }).any(|j| {
             // The border rows stand for everything beyond them.
@@ -183,42 +199,45 @@ impl Grid {
             let hi = if j == self.ny - 1 { yhi } else { yhi.min(j as f64 + 1.0) };
             let (xa, xb) = if by == ay { (ax, bx) } else { (x_at(lo), x_at(hi)) };
             // A hair wider than the exact span: rounding must not drop the cell a point is in.
-            f(j, Grid::index(xa.min(xb) - 1e-9, self.nx), Grid::index(xa.max(xb) + 1e-9, self.nx))
+            f(j, Self::index(xa.min(xb) - 1e-9, self.nx), Self::index(xa.max(xb) + 1e-9, self.nx))
         })
     }
 
     /// Lists piece `id` with the cells of the box `r`.
-    pub fn insert_box(&mut self, r: Rect, id: u32) {
-        self.insert(Shape::Box(r), id);
+    pub fn insert_box(&mut self, r: Rect, item: T) {
+        self.insert(Shape::Box(r), item);
     }
 
     /// Lists piece `id` with the cells of the segment `a`–`b`.
-    pub fn insert_segment(&mut self, a: Point, b: Point, id: u32) {
-        self.insert(Shape::Segment(a, b), id);
+    pub fn insert_segment(&mut self, a: Point, b: Point, item: T) {
+        self.insert(Shape::Segment(a, b), item);
     }
 
-    fn insert(&mut self, shape: Shape, id: u32) {
+    fn insert(&mut self, shape: Shape, item: T) {
         let mut cells = Vec::new();
         self.shape_cells(shape, |c| cells.push(c));
         for c in cells {
-            self.push(c, id);
+            self.push(c, item);
         }
     }
 
     /// Whether `test` holds for a piece listed in a cell of the box `r` (a piece may be
     /// tested more than once).
-    pub fn any_in_box(&self, r: Rect, mut test: impl FnMut(u32) -> bool) -> bool {
+    pub fn any_in_box(&self, r: Rect, mut test: impl FnMut(T) -> bool) -> bool {
         self.box_rows(r, |j, i0, i1| self.in_row(j, i0, i1).any(&mut test))
     }
 
     /// Whether `test` holds for a piece listed in a cell of the segment `a`–`b`, asked from
     /// `a`'s end (a leader's crossings are mostly near its anchor).
-    pub fn any_on_segment(&self, a: Point, b: Point, mut test: impl FnMut(u32) -> bool) -> bool {
+    pub fn any_on_segment(&self, a: Point, b: Point, mut test: impl FnMut(T) -> bool) -> bool {
         let backwards = a.x > b.x;
         self.segment_rows(a, b, |j, i0, i1| {
             let loaded = self.loaded_in(j, i0, i1);
-            let found =
-                if backwards { loaded.iter().rev().any(|&id| test(id)) } else { loaded.iter().any(|&id| test(id)) };
+            let found = if backwards {
+                loaded.iter().rev().any(|&item| test(item))
+            } else {
+                loaded.iter().any(|&item| test(item))
+            };
             found || (!self.heads.is_empty() && (i0..=i1).any(|i| self.inserted(j * self.nx + i).any(&mut test)))
         })
     }
@@ -227,7 +246,7 @@ impl Grid {
     pub fn in_box(&self, r: Rect) -> Vec<u32> {
         let mut out = Vec::new();
         self.box_rows(r, |j, i0, i1| {
-            out.extend(self.in_row(j, i0, i1));
+            out.extend(self.in_row(j, i0, i1).map(T::id));
             false
         });
         out.sort_unstable();
@@ -239,7 +258,7 @@ impl Grid {
     pub fn on_segment(&self, a: Point, b: Point) -> Vec<u32> {
         let mut out = Vec::new();
         self.segment_rows(a, b, |j, i0, i1| {
-            out.extend(self.in_row(j, i0, i1));
+            out.extend(self.in_row(j, i0, i1).map(T::id));
             false
         });
         out.sort_unstable();

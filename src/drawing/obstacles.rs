@@ -29,13 +29,28 @@ pub enum Piece {
 /// cells). Measured on the worked example's sheet 1: 3 mm cells took 6 % longer.
 const BOX_CELL: f64 = 12.0;
 
+/// A segment as its grid lists it: its piece's id and its ends, read where the cell is
+/// (most tests are of segments, and most of them miss).
+#[derive(Debug, Clone, Copy)]
+struct Stroke {
+    id: u32,
+    a: Point,
+    b: Point,
+}
+
+impl grid::Listed for Stroke {
+    fn id(self) -> u32 {
+        self.id
+    }
+}
+
 /// An index of drawn geometry.
 #[derive(Default, Clone)]
 pub struct Obstacles {
     pieces: Vec<(Piece, usize)>,
     /// The segments, and apart from them the text boxes and discs: a leader's questions
     /// are about one kind, and a sheet holds many more segments than texts.
-    strokes: Grid,
+    strokes: Grid<Stroke>,
     boxes: Grid,
     /// The pieces' bounds together.
     extent: Option<Rect>,
@@ -149,13 +164,13 @@ impl Obstacles {
     }
 
     /// [`Obstacles::of_items`] of drawn items (no texts) whose [`segments`] are already
-    /// found, each given with them.
-    pub fn of_flattened<'a>(items: impl IntoIterator<Item = (&'a Item, &'a [(Point, Point)])>) -> Obstacles {
+    /// found, each given with them; the segments' grid of cells `cell` mm wide.
+    pub fn of_flattened<'a>(items: impl IntoIterator<Item = (&'a Item, &'a [(Point, Point)])>, cell: f64) -> Obstacles {
         let mut pieces = Vec::new();
         for (k, (item, segs)) in items.into_iter().enumerate() {
             stroke_pieces(item, segs, k, &mut pieces);
         }
-        Obstacles::of_pieces(pieces)
+        Obstacles::of_pieces_in(pieces, cell)
     }
 
     /// As [`Obstacles::of_items`], without the pieces whose bounds miss `within`: for
@@ -183,19 +198,24 @@ impl Obstacles {
 
     /// Pieces with their tags, loaded at once.
     pub fn of_pieces(pieces: Vec<(Piece, usize)>) -> Obstacles {
+        Obstacles::of_pieces_in(pieces, grid::CELL)
+    }
+
+    /// [`Obstacles::of_pieces`], the segments' grid of cells `cell` mm wide.
+    fn of_pieces_in(pieces: Vec<(Piece, usize)>, cell: f64) -> Obstacles {
         let extent = pieces.iter().map(|(p, _)| bounds(p)).reduce(|a, b| a.union(b));
         let over = extent.unwrap_or(Rect::ZERO);
         let id = |k: usize| u32::try_from(k).expect("fewer than 2³² pieces on a sheet");
         let (mut strokes, mut boxes) = (Vec::new(), Vec::new());
         for (k, (p, _)) in pieces.iter().enumerate() {
             match *p {
-                Piece::Segment(a, b) => strokes.push((grid::Shape::Segment(a, b), id(k))),
+                Piece::Segment(a, b) => strokes.push((grid::Shape::Segment(a, b), Stroke { id: id(k), a, b })),
                 Piece::TextBox(_) | Piece::Disc(..) => boxes.push((grid::Shape::Box(bounds(p)), id(k))),
             }
         }
         Obstacles {
             pieces,
-            strokes: Grid::with(over, &strokes),
+            strokes: Grid::with_cells(over, cell, &strokes),
             boxes: Grid::with_cells(over, BOX_CELL, &boxes),
             extent,
         }
@@ -223,7 +243,7 @@ impl Obstacles {
         let b = bounds(&piece);
         self.extent = Some(self.extent.map_or(b, |e| e.union(b)));
         match piece {
-            Piece::Segment(a, b) => self.strokes.insert_segment(a, b, id),
+            Piece::Segment(a, b) => self.strokes.insert_segment(a, b, Stroke { id, a, b }),
             Piece::TextBox(_) | Piece::Disc(..) => self.boxes.insert_box(b, id),
         }
     }
@@ -238,12 +258,6 @@ impl Obstacles {
             ids.sort_unstable();
         }
         ids.into_iter().map(|id| &self.pieces[id as usize])
-    }
-
-    /// Whether `test` holds for a piece that may touch the box `r`.
-    fn any_near(&self, r: Rect, mut test: impl FnMut(&Piece) -> bool) -> bool {
-        self.strokes.any_in_box(r, |id| test(&self.pieces[id as usize].0))
-            || self.boxes.any_in_box(r, |id| test(&self.pieces[id as usize].0))
     }
 
     /// How many segments cross the box `r`, and the area of text boxes it overlaps.
@@ -263,9 +277,9 @@ impl Obstacles {
     pub fn hits_segment(&self, a: Point, b: Point) -> usize {
         // The few that cross, each once (a piece is listed in every cell it passes).
         let mut crossing = Vec::new();
-        self.strokes.any_on_segment(a, b, |id| {
-            if matches!(self.pieces[id as usize].0, Piece::Segment(c, d) if segments_cross(a, b, c, d)) {
-                crossing.push(id);
+        self.strokes.any_on_segment(a, b, |s| {
+            if segments_cross(a, b, s.a, s.b) {
+                crossing.push(s.id);
             }
             false
         });
@@ -277,18 +291,18 @@ impl Obstacles {
     /// Whether nothing (no segment, no text box) meets the box `r`: [`Obstacles::hits`]
     /// stopping at the first piece.
     pub fn is_clear(&self, r: Rect) -> bool {
-        !self.any_near(r, |p| match *p {
+        let meets = |p: &Piece| match *p {
             Piece::Segment(a, b) => segment_meets_rect(a, b, r),
             Piece::TextBox(t) => t.intersect(r).area() > 0.0,
             Piece::Disc(c, rad) => disc_meets_rect(c, rad, r),
-        })
+        };
+        !(self.strokes.any_in_box(r, |s| segment_meets_rect(s.a, s.b, r))
+            || self.boxes.any_in_box(r, |id| meets(&self.pieces[id as usize].0)))
     }
 
     /// Whether the segment `a`–`b` crosses any stroke segment.
     pub fn segment_crosses_stroke(&self, a: Point, b: Point) -> bool {
-        let crosses =
-            |id: u32| matches!(self.pieces[id as usize].0, Piece::Segment(c, d) if segments_cross(a, b, c, d));
-        self.strokes.any_on_segment(a, b, crosses)
+        self.strokes.any_on_segment(a, b, |s| segments_cross(a, b, s.a, s.b))
     }
 
     /// Whether the segment `a`–`b` crosses any text box.
