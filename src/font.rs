@@ -27,6 +27,9 @@ pub const CAP_HEIGHT: f64 = 1493.0 / 2048.0;
 /// Cyrillic, punctuation, sub- and superscripts, arrows, mathematical operators).
 const TABLE_END: u32 = 0x2400;
 
+/// In [`Metrics`]'s short advances: ask the full table.
+const ASK_TABLE: u16 = u16::MAX;
+
 /// One glyph of the font: its id and its advance in font units.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Glyph {
@@ -40,6 +43,10 @@ pub struct Metrics {
     /// Glyph and advance in font units of each code point below [`TABLE_END`]; `None`: no
     /// glyph.
     table: Vec<Option<Glyph>>,
+    /// The same advances as whole font units in two bytes ([`ASK_TABLE`]: no glyph, or an
+    /// advance that does not fit), so that measuring a text reads a table that stays in
+    /// the cache; summed as `f64`, whole numbers add up exactly as `table`'s do.
+    advances: Vec<u16>,
     /// The advance of `.notdef`, the missing-glyph box.
     notdef: f64,
     units_per_em: f64,
@@ -50,8 +57,19 @@ impl Metrics {
         let font = FontRef::new(BYTES).expect("the vendored font parses");
         let units_per_em = f64::from(font.metrics(Size::unscaled(), LocationRef::default()).units_per_em);
         let notdef = font.glyph_metrics(Size::unscaled(), LocationRef::default()).advance_width(Default::default());
-        let mut m = Metrics { font, table: Vec::new(), notdef: f64::from(notdef.unwrap_or(0.0)), units_per_em };
+        let mut m = Metrics {
+            font,
+            table: Vec::new(),
+            advances: Vec::new(),
+            notdef: f64::from(notdef.unwrap_or(0.0)),
+            units_per_em,
+        };
         m.table = (0..TABLE_END).map(|c| char::from_u32(c).and_then(|c| m.lookup(c))).collect();
+        let short = |g: &Option<Glyph>| {
+            let a = g.map(|g| g.advance).filter(|&a| a >= 0.0 && a < f64::from(ASK_TABLE) && a.fract() == 0.0);
+            a.map_or(ASK_TABLE, |a| a as u16)
+        };
+        m.advances = m.table.iter().map(short).collect();
         m
     }
 
@@ -78,7 +96,13 @@ impl Metrics {
     /// Width of `text` set at font size `size` (same unit as `size`); a character without
     /// a glyph counts as the font's missing-glyph box (its `.notdef` advance).
     pub fn width(&self, text: &str, size: f64) -> f64 {
-        let units: f64 = text.chars().map(|c| self.advance(c).unwrap_or(self.notdef)).sum();
+        let units: f64 = text
+            .chars()
+            .map(|c| match self.advances.get(c as usize) {
+                Some(&a) if a != ASK_TABLE => f64::from(a),
+                _ => self.advance(c).unwrap_or(self.notdef),
+            })
+            .sum();
         units * size / self.units_per_em
     }
 
@@ -133,6 +157,15 @@ mod tests {
         let bb = font.glyph_metrics(Size::unscaled(), LocationRef::default()).bounds(h).unwrap();
         assert_eq!(f64::from(bb.y_max) / metrics().units_per_em, CAP_HEIGHT);
         assert!((size_for_cap(5.0) - 6.86).abs() < 0.01, "STACK.md: 5 mm lettering is 6.86 mm font-size");
+    }
+
+    /// The short advances measure every character of the table as the table does.
+    #[test]
+    fn short_advances_measure_as_the_table_does() {
+        let m = metrics();
+        for c in (0..TABLE_END).filter_map(char::from_u32) {
+            assert_eq!(m.width(&c.to_string(), 1.0), m.advance(c).unwrap_or(m.notdef) / m.units_per_em, "{c:?}");
+        }
     }
 
     /// The embedded bytes are the vendored font whose SHA-256 is recorded beside it.

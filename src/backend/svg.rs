@@ -11,6 +11,7 @@ use crate::num::math;
 use crate::num::work::{self, Step};
 use kurbo::Arc;
 use std::f64::consts::PI;
+use std::fmt::Write;
 
 /// Digits after the decimal point for paper millimetres (1 µm).
 const DECIMALS: usize = 3;
@@ -18,8 +19,18 @@ const DECIMALS: usize = 3;
 /// Formats a number with at most three decimals (1 µm), no trailing zeros, no `-0`;
 /// refuses NaN and infinities.
 pub fn num(x: f64) -> Result<String, BackendError> {
+    let mut s = String::new();
+    push_num(&mut s, x)?;
+    Ok(s)
+}
+
+/// [`num`] written at the end of `out`.
+fn push_num(out: &mut String, x: f64) -> Result<(), BackendError> {
     if !x.is_finite() {
         return Err(BackendError::NonFinite { group: String::new(), value: x, item: "a number".into() });
+    }
+    if thousandths(out, x) {
+        return Ok(());
     }
     let mut s = format!("{x:.DECIMALS$}");
     if s.contains('.') {
@@ -33,7 +44,37 @@ pub fn num(x: f64) -> Result<String, BackendError> {
     if s == "-0" {
         s = "0".into();
     }
-    Ok(s)
+    out.push_str(&s);
+    Ok(())
+}
+
+/// [`num`] without the formatter's exact decimal expansion, written at the end of `out`,
+/// where rounding `x` to thousandths in binary is sure to round it as the expansion does:
+/// `x` · 1000 is within a part in 2⁵³ of its exact product, so unless that lies within a
+/// millionth of a half (then nothing is written: the formatter decides), its nearest whole
+/// number is the exact one's.
+fn thousandths(out: &mut String, x: f64) -> bool {
+    let y = x * 1000.0;
+    if !(y.abs() < 1e12) || ((y - y.trunc()).abs() - 0.5).abs() < 1e-6 {
+        return false;
+    }
+    // Below 2⁵³: exact in an i64.
+    let n = y.round() as i64;
+    let (whole, mut frac) = (n.unsigned_abs() / 1000, n.unsigned_abs() % 1000);
+    if n < 0 {
+        out.push('-');
+    }
+    // Writing to a String cannot fail.
+    let _ = write!(out, "{whole}");
+    if frac != 0 {
+        let mut digits = DECIMALS;
+        while frac % 10 == 0 {
+            frac /= 10;
+            digits -= 1;
+        }
+        let _ = write!(out, ".{frac:0digits$}");
+    }
+    true
 }
 
 /// Escapes the five XML special characters. Characters XML cannot hold at all (control
@@ -65,16 +106,25 @@ fn stroke_attrs(pen: &Pen, ink: &str) -> Result<String, BackendError> {
 
 /// Path data: `M`, `L`, `C` and `A` commands, `Z` when closed.
 fn path_d(p: &Path) -> Result<String, BackendError> {
-    let mut d = format!("M{} {}", num(p.start.x)?, num(p.start.y)?);
-    for s in &p.segs {
-        let command = match s {
-            Seg::Line(q) => format!("L{} {}", num(q.x)?, num(q.y)?),
-            Seg::Cubic(a, b, c) => {
-                format!("C{} {} {} {} {} {}", num(a.x)?, num(a.y)?, num(b.x)?, num(b.y)?, num(c.x)?, num(c.y)?)
+    let mut d = String::with_capacity(16 * (1 + p.segs.len()));
+    // A command's letter, then its numbers apart by spaces.
+    let command = |d: &mut String, letter: char, xs: &[f64]| -> Result<(), BackendError> {
+        d.push(letter);
+        for (k, &x) in xs.iter().enumerate() {
+            if k > 0 {
+                d.push(' ');
             }
-            Seg::Arc(a) => arc_commands(a)?,
-        };
-        d.push_str(&command);
+            push_num(d, x)?;
+        }
+        Ok(())
+    };
+    command(&mut d, 'M', &[p.start.x, p.start.y])?;
+    for s in &p.segs {
+        match s {
+            Seg::Line(q) => command(&mut d, 'L', &[q.x, q.y])?,
+            Seg::Cubic(a, b, c) => command(&mut d, 'C', &[a.x, a.y, b.x, b.y, c.x, c.y])?,
+            Seg::Arc(a) => d.push_str(&arc_commands(a)?),
+        }
     }
     if p.closed {
         d.push('Z');
@@ -265,6 +315,38 @@ mod tests {
         assert_eq!(num(8.4666666).unwrap(), "8.467");
         assert_eq!(num(-3.1005).unwrap(), "-3.1"); // binary -3.1005 is just below the tie
         assert!(num(f64::NAN).is_err() && num(f64::INFINITY).is_err());
+    }
+
+    /// The shortcut past the formatter writes what the formatter writes: on ties and near
+    /// ties of thousandths, whole numbers, tiny and large values of either sign.
+    #[test]
+    fn numbers_written_without_the_formatter_are_the_formatters() {
+        let by_formatter = |x: f64| {
+            let s = format!("{x:.DECIMALS$}");
+            let s = if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s };
+            if s == "-0" { "0".to_string() } else { s }
+        };
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let mut values = vec![0.0, -0.0, 0.0005, -0.0005, 0.0015, 2.5e-4, 1e-9, -1e-9, 999.9995, 1e11, -1e13];
+        for k in -20_000..20_000 {
+            values.push(f64::from(k) * 0.0005);
+            values.push(f64::from(k) * 0.0001 + 1e-12);
+        }
+        for _ in 0..200_000 {
+            let r = next();
+            let scale = [1e-3, 1.0, 100.0, 1e4, 1e9][(r % 5) as usize];
+            values.push(((r >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * scale);
+            values.push(f64::from_bits(next()));
+        }
+        for x in values.into_iter().filter(|x| x.is_finite()) {
+            assert_eq!(num(x).unwrap(), by_formatter(x), "{x:e}");
+        }
     }
 
     #[test]

@@ -97,6 +97,13 @@ pub fn turn_arrow(g: &mut Group, c: Point, r: f64, start_deg: f64, sweep_deg: f6
     arrowhead(g, tip, tip - back);
 }
 
+/// The box a [`turn_arrow`] round `c` of radius `r` stays inside, whatever its start and
+/// sweep: what [`clear_turn_arrow`] may cross lies in it.
+pub fn turn_arrow_reach(c: Point, r: f64) -> Rect {
+    let out = 2.0 * (r + ARROW_LEN);
+    Rect::from_center_size(c, (out, out))
+}
+
 /// A [`turn_arrow`] turned (start every 10° from `pref_deg`) to where it crosses the fewest
 /// segments of `drawn`, nearest `pref_deg` among equals; it joins `drawn`. Returns its start.
 #[allow(clippy::too_many_arguments)]
@@ -120,11 +127,21 @@ pub fn clear_turn_arrow(
         let d = (a - pref_deg).rem_euclid(360.0);
         d.min(360.0 - d)
     };
-    let start = (0..36)
-        .map(|k| pref_deg + 10.0 * k as f64)
-        .map(|a| (crossings(&probe(a)), turn(a), a))
-        .min_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)))
-        .map_or(pref_deg, |x| x.2);
+    // The least crossings, then the least turn, then the first start: tried nearest the
+    // preferred start first, the first that crosses nothing wins without drawing the rest.
+    let mut starts: Vec<(f64, f64)> = (0..36).map(|k| pref_deg + 10.0 * k as f64).map(|a| (turn(a), a)).collect();
+    starts.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let mut best: Option<(usize, f64)> = None;
+    for (_, a) in starts {
+        let n = crossings(&probe(a));
+        if best.is_none_or(|(least, _)| n < least) {
+            best = Some((n, a));
+        }
+        if n == 0 {
+            break;
+        }
+    }
+    let start = best.map_or(pref_deg, |x| x.1);
     let arrow = probe(start);
     for (a, b) in arrow.items.iter().flat_map(segments) {
         drawn.add(Piece::Segment(a, b), usize::MAX);

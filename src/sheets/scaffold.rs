@@ -34,6 +34,10 @@ pub struct Composition {
     pub smallest_plan_mm: Option<f64>,
     /// The segments a student measures on its drawings, in drawing order.
     pub segments: Vec<Segment>,
+    /// The whole sheet as [`scene`] makes it from this composition and its [`measure`], when
+    /// the sheet module already has them (sheet 1 measures each layout it tries): [`finish`]
+    /// takes them rather than measuring the same scene again.
+    pub measured: Option<(Scene, Layout)>,
 }
 
 /// The whole sheet: the frame, the composition's groups, the title block.
@@ -90,10 +94,10 @@ fn constructions(g: &Group) -> Group {
 
 /// The layout measurement of the whole sheet (see [`layout::measure`]).
 pub fn measure(scene: &Scene, c: &Composition) -> Layout {
-    let mut layout = layout::measure(scene);
-    layout.smallest_plan_mm = c.smallest_plan_mm;
     // The drawing field: inside the frame, the title block left out.
-    let share = layout::empty_share(scene, frame::inner(), frame::title_block_rect(), &["frame", TITLE_BLOCK]);
+    let (mut layout, share) =
+        layout::measure_with_share(scene, frame::inner(), frame::title_block_rect(), &["frame", TITLE_BLOCK]);
+    layout.smallest_plan_mm = c.smallest_plan_mm;
     // Three decimals: the same bytes on every machine.
     layout.empty_share = Some((share * 1e3).round() / 1e3);
     layout
@@ -101,9 +105,15 @@ pub fn measure(scene: &Scene, c: &Composition) -> Layout {
 
 /// The finished sheet: the scene with its frame and title block, the layout measured and
 /// reported (in the results and as diagnostics).
-pub fn finish(ctx: &Context, kind: SheetKind, c: Composition) -> Result<SheetOutput, SheetError> {
-    let scene = scene(ctx, kind, &c)?;
-    let layout = measure(&scene, &c);
+pub fn finish(ctx: &Context, kind: SheetKind, mut c: Composition) -> Result<SheetOutput, SheetError> {
+    let (scene, layout) = match c.measured.take() {
+        Some(measured) => measured,
+        None => {
+            let scene = scene(ctx, kind, &c)?;
+            let layout = measure(&scene, &c);
+            (scene, layout)
+        }
+    };
     let Composition { tables, mut results, mut diagnostics, segments, .. } = c;
     diagnostics.extend(layout.problems.iter().map(|p| format!("layout: {p}")));
     if let serde_json::Value::Object(map) = &mut results {

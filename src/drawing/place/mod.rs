@@ -14,7 +14,7 @@ use super::obstacles::{Obstacles, Piece};
 use super::scene::{Anchor, Group, THIN};
 use super::text::{LabelText, SLANT, SUB};
 use kurbo::{Point, Rect, Vec2};
-use spots::candidates;
+use spots::Spots;
 
 mod spots;
 
@@ -156,25 +156,29 @@ impl Labels {
     /// returns whether each found a clean spot (the layout measurement reports those that
     /// did not).
     pub fn place(self, g: &mut Group, bounds: Rect) -> Vec<bool> {
-        let mut drawn = Obstacles::of_items(&g.items);
+        // Every box tried is inside the bounds and every leader runs from near its anchor
+        // to its box: what lies beyond both cannot touch them (a cell's labels need not
+        // see the cells drawn before it).
+        let reach = self.requests.iter().flat_map(|r| std::iter::once(r.anchor).chain(r.others.iter().map(|o| o.0)));
+        let reach = reach.fold(bounds, |b, p| b.union_pt(p)).inflate(REACH, REACH);
+        let mut drawn = Obstacles::of_items_within(&g.items, reach);
         for &(c, r) in &self.keep_out {
             drawn.add(Piece::Disc(c, r), usize::MAX);
         }
-        let cands: Vec<Vec<Candidate>> = self.requests.iter().map(|r| candidates(r, bounds)).collect();
-        // What the drawing alone says of each candidate, asked once: the order and every
-        // round below ask it again and again, and it does not change as labels are placed.
-        let mut vs_drawn: Vec<Vec<Verdict>> = cands.iter().map(|cs| vec![Verdict::default(); cs.len()]).collect();
+        // What the drawing alone says of each candidate is asked once (see `Verdict`): the
+        // order and every round below ask it again and again, and it does not change as
+        // labels are placed.
+        let mut spots: Vec<Spots> = self.requests.iter().map(|r| Spots::new(r, bounds)).collect();
         // By rank, then most constrained first: the fewest candidates free against the
         // drawing alone.
         let mut order: Vec<usize> = (0..self.requests.len()).collect();
         // Counting stops at a few: beyond that a label is not constrained.
-        let free: Vec<usize> = (0..self.requests.len())
-            .map(|i| free_near_first(&cands[i], &mut vs_drawn[i], &self.requests[i], &drawn))
-            .collect();
+        let free: Vec<usize> =
+            (0..self.requests.len()).map(|i| free_near_first(&mut spots[i], &self.requests[i], &drawn)).collect();
         order.sort_by_key(|&i| (self.requests[i].rank, free[i]));
         // A label left without a clean spot goes first in the next round (labels placed
         // before it took its spots), up to a few rounds; the best round is kept.
-        let mut best = self.attempt(&drawn, &mut vs_drawn, &cands, &order, bounds);
+        let mut best = self.attempt(&drawn, &mut spots, &order, bounds);
         for _ in 0..REPAIR_ROUNDS {
             let failed: Vec<usize> = order.iter().copied().filter(|&i| !best[i].1).collect();
             if failed.is_empty() {
@@ -182,7 +186,7 @@ impl Labels {
             }
             order.retain(|i| !failed.contains(i));
             order.splice(0..0, failed);
-            let next = self.attempt(&drawn, &mut vs_drawn, &cands, &order, bounds);
+            let next = self.attempt(&drawn, &mut spots, &order, bounds);
             if next.iter().filter(|p| !p.1).count() < best.iter().filter(|p| !p.1).count() {
                 best = next;
             }
@@ -204,29 +208,24 @@ impl Labels {
     }
 
     /// One greedy round in `order`: each label's candidate and whether it is clean. A
-    /// candidate is free when it is free against the drawing (`vs_drawn`, remembered) and
+    /// candidate is free when it is free against the drawing (its verdict, remembered) and
     /// against the labels this round has placed.
-    fn attempt(
-        &self,
-        drawn: &Obstacles,
-        vs_drawn: &mut [Vec<Verdict>],
-        cands: &[Vec<Candidate>],
-        order: &[usize],
-        bounds: Rect,
-    ) -> Vec<(Candidate, bool)> {
+    fn attempt(&self, drawn: &Obstacles, spots: &mut [Spots], order: &[usize], bounds: Rect) -> Vec<(Candidate, bool)> {
         let mut placed = Obstacles::empty_over(drawn.extent().map_or(bounds, |e| e.union(bounds)));
         let none = Candidate { r: Rect::ZERO, anchor: Point::ZERO, leader: None, cost: 0.0 };
         let mut out = vec![(none, false); self.requests.len()];
         for &i in order {
-            let (cs, vs) = (&cands[i], &mut vs_drawn[i]);
+            let s = &mut spots[i];
+            let first = |s: &mut Spots, free: &dyn Fn(&Candidate, &mut Verdict) -> bool| {
+                (0..).map_while(|k| s.get(k).map(|(c, v)| free(c, v).then(|| c.clone()))).flatten().next()
+            };
             // A leader may cross thin lines (out of a fan of links) when no label spot can be
             // reached without: a free box comes first, a clean leader second.
-            let best = (0..cs.len())
-                .find(|&k| vs[k].is_free(&cs[k], drawn) && cs[k].is_free(&placed))
-                .or_else(|| (0..cs.len()).find(|&k| vs[k].box_is_free(&cs[k], drawn) && cs[k].box_is_free(&placed)));
+            let best = first(s, &|c, v| v.is_free(c, drawn) && c.is_free(&placed))
+                .or_else(|| first(s, &|c, v| v.box_is_free(c, drawn) && c.box_is_free(&placed)));
             let (cand, clear) = match best {
-                Some(k) => (cs[k].clone(), true),
-                None => (least_bad(cs, [drawn, &placed], &self.requests[i], bounds), false),
+                Some(c) => (c, true),
+                None => (least_bad(&s.all(), [drawn, &placed], &self.requests[i], bounds), false),
             };
             // Position numbers (rank 2) are set apart from the next label by more than the
             // clearance: two numbers 0.5 mm apart read as one ("0≡17 16").
@@ -265,17 +264,20 @@ impl Verdict {
 
 /// How many of a label's spots around its first anchor are free against the drawing alone
 /// (further anchors are a fallback, not a reason to place it later).
-fn free_near_first(cands: &[Candidate], vs: &mut [Verdict], req: &Request, drawn: &Obstacles) -> usize {
-    cands
-        .iter()
-        .zip(vs)
-        .filter_map(|(c, v)| (c.anchor == req.anchor && v.is_free(c, drawn)).then_some(()))
+fn free_near_first(spots: &mut Spots, req: &Request, drawn: &Obstacles) -> usize {
+    (0..)
+        .map_while(|k| spots.get(k).map(|(c, v)| c.anchor == req.anchor && v.is_free(c, drawn)))
+        .filter(|&free| free)
         .take(CONSTRAINED)
         .count()
 }
 
 /// A label with at least this many free spots is not constrained (for the order).
 const CONSTRAINED: usize = 8;
+
+/// How far beyond its bounds and anchors a label's box (with its clearance) or leader may
+/// reach, mm, with room to spare.
+const REACH: f64 = 1.0 + CLEAR + LEADER_GAP;
 
 /// Rounds of moving unplaced labels to the front.
 const REPAIR_ROUNDS: usize = 3;

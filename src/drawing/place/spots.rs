@@ -2,20 +2,58 @@
 //! [`DIRECTIONS`] turns from the preferred direction, a further anchor's dearer by a few
 //! distance steps, each with its leader when it stands off.
 
-use super::{Candidate, DIRECTIONS, DISTANCES, LEADER_FROM, LEADER_GAP, Request, TOUCH};
+use super::{Candidate, DIRECTIONS, DISTANCES, LEADER_FROM, LEADER_GAP, Request, TOUCH, Verdict};
 use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
-/// Every candidate box inside `bounds`, cheapest first.
-pub(super) fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
-    let mut out = Vec::new();
-    if req.others.is_empty() {
-        // One anchor: its spots in [`SPOTS_CHEAPEST_FIRST`] are already in order.
-        let around = Around::new(req, req.anchor, req.pref, 0.0);
-        out.extend(SPOTS_CHEAPEST_FIRST.iter().filter_map(|&(di, k)| around.spot(req, bounds, di, k)));
-        return out;
+/// A label's candidates, cheapest first, each with its verdict against the drawing: made
+/// as they are asked for (most labels take one of their first few spots of the 456), all
+/// at once for a label with further anchors (their spots interleave).
+pub(super) struct Spots<'a> {
+    req: &'a Request,
+    bounds: Rect,
+    made: Vec<(Candidate, Verdict)>,
+    /// Around the one anchor: the next spot of [`SPOTS_CHEAPEST_FIRST`] to make (none: all
+    /// made).
+    next: Option<(Around, usize)>,
+}
+
+impl<'a> Spots<'a> {
+    pub(super) fn new(req: &'a Request, bounds: Rect) -> Spots<'a> {
+        let (made, next) = if req.others.is_empty() {
+            // One anchor: its spots in [`SPOTS_CHEAPEST_FIRST`] are already in order.
+            (Vec::with_capacity(64), Some((Around::new(req, req.anchor, req.pref, 0.0), 0)))
+        } else {
+            (candidates(req, bounds).into_iter().map(|c| (c, Verdict::default())).collect(), None)
+        };
+        Spots { req, bounds, made, next }
     }
+
+    /// Candidate `k` and its verdict, made if need be; none past the last.
+    pub(super) fn get(&mut self, k: usize) -> Option<(&Candidate, &mut Verdict)> {
+        while self.made.len() <= k {
+            let (around, at) = self.next.as_mut()?;
+            let Some(&(di, dir)) = SPOTS_CHEAPEST_FIRST.get(*at) else {
+                self.next = None;
+                return None;
+            };
+            *at += 1;
+            self.made.extend(around.spot(self.req, self.bounds, di, dir).map(|c| (c, Verdict::default())));
+        }
+        self.made.get_mut(k).map(|(c, v)| (&*c, v))
+    }
+
+    /// Every candidate.
+    pub(super) fn all(&mut self) -> Vec<Candidate> {
+        while self.get(self.made.len()).is_some() {}
+        self.made.iter().map(|(c, _)| c.clone()).collect()
+    }
+}
+
+/// Every candidate box inside `bounds` of a label with further anchors, cheapest first.
+fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
+    let mut out = Vec::with_capacity(SPOTS_CHEAPEST_FIRST.len() * (1 + req.others.len()));
     let spots = std::iter::once((req.anchor, req.pref)).chain(req.others.iter().copied());
     for (n, (anchor, pref)) in spots.enumerate() {
         // A further anchor's spots cost as much as the first's a few distances out.

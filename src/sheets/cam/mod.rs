@@ -290,6 +290,7 @@ fn build_at(ctx: &Context, p: &CamProject, width: ColumnWidth) -> Result<CamBuil
         diagnostics: diagrams::squeezed(d, &scales).into_iter().collect(),
         smallest_plan_mm: None,
         segments: measured,
+        measured: None,
     };
     Ok(CamBuild {
         composition,

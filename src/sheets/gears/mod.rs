@@ -142,6 +142,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         diagnostics: Vec::new(),
         smallest_plan_mm: None,
         segments: measured,
+        measured: None,
     };
     Ok(GearsBuild { composition, mesh: drawn, planetary_mu, planetary_reading })
 }

@@ -5,7 +5,7 @@
 //! makes it; the velocity plans fill the rest of the top band; the acceleration plans at
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
-use super::forces_view::{ForceScales, ForcesInput, draw_forces, fit_comfortably};
+use super::forces_view::{CellMemo, ForceScales, ForcesInput, draw_forces, fit_comfortably};
 use super::labels::LeverWords;
 use super::mechanism_view::{MechanismView, TRAJECTORY, world_extent};
 use super::note_tables::{NoteTables, note_tables, sheet_table, tables_group, with_units};
@@ -89,33 +89,60 @@ pub(super) const HEADER: f64 = 17.0;
 /// Lays out sheet 1; refuses a project text too long for its place on the sheet.
 pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let plans = PlansOf::new(inp, k);
+    let memo = CellMemo::default();
     if inp.forces.is_none() {
-        return draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_MIN_W)?);
+        return draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_MIN_W, &memo)?);
     }
     // The split between the force drawings (left) and the plans (right): the widest force
     // column is tried first; a narrower one wins when the forces still fit comfortably and
     // the smallest plan grows by a tenth or more over the widest's, or the widest's layout is
     // not clean — of those, the one whose smallest plan is largest (a wider one on a tie).
     // Both conditions are known before anything is drawn, so a width that cannot win is
-    // never drawn (drawing is nearly all of the time).
-    let widest = draw(inp, k, &plans, arrange(inp, k, &plans, FORCES_WIDTHS[0])?)?;
-    let smallest = widest.layout.smallest_plan_mm.unwrap_or(0.0);
+    // never drawn (drawing is nearly all of the time). Nor is the widest drawn before the
+    // narrower ones that grow the plans: in that order they come first whether the widest
+    // is clean or not, so the first of them that is clean wins either way.
+    let widest = arrange(inp, k, &plans, FORCES_WIDTHS[0], &memo)?;
+    // Drawing fails only where the title block refuses the sheet's texts: then with the
+    // widest's refusal, as when it was drawn first.
+    title_block_refusal(inp, &widest)?;
+    let smallest = widest.smallest_plan_mm(&plans).unwrap_or(0.0);
     let mut narrower = Vec::new();
     for &w in &FORCES_WIDTHS[1..] {
-        let next = arrange(inp, k, &plans, w)?;
+        let next = arrange(inp, k, &plans, w, &memo)?;
         let grown = next.smallest_plan_mm(&plans).unwrap_or(0.0);
-        if next.mech.comfortable && (grown > 1.1 * smallest || !widest.layout.is_clean()) {
+        if next.mech.comfortable {
             narrower.push((grown, next));
         }
     }
     narrower.sort_by(|a, b| b.0.total_cmp(&a.0));
-    for (_, next) in narrower {
+    let (growing, rest): (Vec<_>, Vec<_>) = narrower.into_iter().partition(|(grown, _)| *grown > 1.1 * smallest);
+    for (_, next) in growing {
+        let drawn = draw(inp, k, &plans, next)?;
+        if drawn.layout.is_clean() {
+            return Ok(drawn);
+        }
+    }
+    let widest = draw(inp, k, &plans, widest)?;
+    if widest.layout.is_clean() {
+        return Ok(widest);
+    }
+    for (_, next) in rest {
         let drawn = draw(inp, k, &plans, next)?;
         if drawn.layout.is_clean() {
             return Ok(drawn);
         }
     }
     Ok(widest)
+}
+
+/// The refusal of the title block of the sheet arranged `a`, if any: the one way [`draw`]
+/// fails.
+fn title_block_refusal(inp: &Input, a: &Arrangement) -> Result<(), TooLong> {
+    let l = a.words.sheet;
+    let name = if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() };
+    let lang = inp.ctx.info.language;
+    let scale = fmt::localise(&scale::ratio(a.mech.mu_l), lang);
+    inp.ctx.title_block(crate::drawing::labels::Common::get(lang), name, &scale).map(|_| ())
 }
 
 /// Widths of the force column tried, mm.
@@ -164,10 +191,16 @@ impl Arrangement<'_> {
 }
 
 /// Arranges sheet 1 with a force column at least `forces_w` wide.
-fn arrange<'a>(inp: &'a Input, k: &'a Kinematics, plans: &PlansOf, forces_w: f64) -> Result<Arrangement<'a>, TooLong> {
+fn arrange<'a>(
+    inp: &'a Input,
+    k: &'a Kinematics,
+    plans: &PlansOf,
+    forces_w: f64,
+    memo: &'a CellMemo,
+) -> Result<Arrangement<'a>, TooLong> {
     let words = LeverWords::new(inp.ctx.info.language);
     let inner = frame::inner();
-    let force_input = force_input(inp, k, &words);
+    let force_input = force_input(inp, k, &words, memo);
     let mech = mechanism_place(inp, k, force_input.as_ref(), Column { width: forces_w, inner });
     // With a force analysis, its drawings fill the left column below the mechanism and the
     // acceleration plans move to the right column.
@@ -252,6 +285,7 @@ fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<
         diagnostics: Vec::new(),
         smallest_plan_mm,
         segments: drawn_segments,
+        measured: None,
     };
     let scene = scaffold::scene(inp.ctx, inp.kind, &composition)?;
     let layout = scaffold::measure(&scene, &composition);
@@ -273,7 +307,12 @@ struct Column {
 }
 
 /// The force drawings' input (tables 3–5 as drawn), to size the regions by.
-fn force_input<'a>(inp: &'a Input, k: &'a Kinematics, words: &LeverWords) -> Option<ForcesInput<'a>> {
+fn force_input<'a>(
+    inp: &'a Input,
+    k: &'a Kinematics,
+    words: &LeverWords,
+    memo: &'a CellMemo,
+) -> Option<ForcesInput<'a>> {
     let (c, lang) = (words.common, words.lang);
     inp.forces.map(|(fa, _)| {
         let (t3, t4, t5) = (&inp.notes[2], &inp.notes[3], &inp.notes[4]);
@@ -289,6 +328,7 @@ fn force_input<'a>(inp: &'a Input, k: &'a Kinematics, words: &LeverWords) -> Opt
             phi_deg: k.assigned.phi.to_degrees(),
             words: *words,
             tables,
+            memo,
         }
     })
 }

@@ -8,7 +8,7 @@ use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, Group, Item, MAIN, Pen, THIN};
-use crate::drawing::symbols::{clear_turn_arrow, dimension, frame_pivot, hatch, slider};
+use crate::drawing::symbols::{clear_turn_arrow, dimension, frame_pivot, hatch, slider, turn_arrow_reach};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::analysis::{Kinematics, Position};
@@ -369,16 +369,26 @@ impl MechanismView<'_> {
     /// position, each turned to where it crosses the fewest lines already drawn.
     fn senses(&self, g: &mut Group, labels: &mut Labels) {
         let st = &self.k.assigned.state;
-        let mut drawn = Obstacles::of_items(&g.items);
-        for (li, link) in self.m.links.iter().enumerate() {
-            if matches!(link.kind, LinkKind::Slider | LinkKind::Block) {
-                continue;
-            }
-            let pts: Vec<Vec2> = link.points.iter().map(|&id| st.points[id].p).collect();
-            let centre = match link.kind {
-                LinkKind::Crank | LinkKind::Rocker => self.view.p(pts[0]),
-                _ => self.view.p((pts[0] + pts[1]) * 0.5),
-            };
+        let turning: Vec<_> = self
+            .m
+            .links
+            .iter()
+            .enumerate()
+            .filter(|(_, link)| !matches!(link.kind, LinkKind::Slider | LinkKind::Block))
+            .map(|(li, link)| {
+                let pts: Vec<Vec2> = link.points.iter().map(|&id| st.points[id].p).collect();
+                let centre = match link.kind {
+                    LinkKind::Crank | LinkKind::Rocker => self.view.p(pts[0]),
+                    _ => self.view.p((pts[0] + pts[1]) * 0.5),
+                };
+                (li, link, centre)
+            })
+            .collect();
+        // What the arrows may cross: the lines round their centres.
+        let reach =
+            turning.iter().map(|&(.., c)| turn_arrow_reach(c, SENSE_R.0.max(SENSE_R.1))).reduce(|a, b| a.union(b));
+        let mut drawn = reach.map_or_else(Obstacles::default, |r| Obstacles::of_items_within(&g.items, r));
+        for (li, link, centre) in turning {
             let lk = st.links[li];
             let along = self.view.dir(lk.dir).arg().to_degrees();
             // Relative to the crank's ω1 and ω1²: a link at rest turns neither way. The

@@ -134,6 +134,8 @@ impl Sheet for LeverSheet<'_> {
         let results = b.results(self.project);
         let diagnostics = b.diagnostics(self.project);
         let c = b.composed.composition;
-        Ok(Composition { results, diagnostics, tables: b.notes, ..c })
+        // The scene finish would make of `c` is the one composed and measured.
+        let measured = Some((b.composed.scene, b.composed.layout));
+        Ok(Composition { results, diagnostics, tables: b.notes, measured, ..c })
     }
 }

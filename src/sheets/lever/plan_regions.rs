@@ -3,7 +3,7 @@
 
 use super::compose::{HEADER, region_header};
 use super::labels::LeverWords;
-use super::plans_view::{MIN_PLAN, PlanCell, Sizing, draw_plan, label_bounds, size_plans};
+use super::plans_view::{MIN_PLAN, PlanBoxes, PlanCell, Sizing, draw_plan, label_bounds, size_plans};
 use super::segments::{PlanKind, plan_segments};
 use crate::drawing::fmt;
 use crate::drawing::place::Labels;
@@ -49,14 +49,25 @@ impl PlansRegion<'_> {
 
     /// The plans' scales and cells below the region's header (see [`size_plans`]).
     pub(super) fn sizing(&self, plans: &[Plan], positions: &[&Position], words: &LeverWords) -> Sizing {
-        let body = Rect::new(self.region.x0, self.region.y0 + HEADER, self.region.x1, self.region.y1);
+        self.sizing_of(&self.measure(plans, positions, words))
+    }
+
+    /// What [`PlansRegion::sizing`] asks of the plans whatever the region: their boxes and
+    /// labels, and their cells' least width.
+    fn measure(&self, plans: &[Plan], positions: &[&Position], words: &LeverWords) -> (PlanBoxes, f64) {
         // A cell holds its title (3.5 mm) and, at a scale of its own, its scale line (2.5 mm).
         let min_w = positions
             .iter()
             .map(|p| LabelText::new(words.sheet.position(&p.label), "").width(3.5))
             .fold(self.scale_line(0.0025, words).width(2.5), f64::max)
             + 5.0;
-        size_plans(body, plans, self.pole, min_w)
+        (PlanBoxes::of(plans, self.pole), min_w)
+    }
+
+    /// [`PlansRegion::sizing`] of plans measured `(boxes, min_w)`.
+    fn sizing_of(&self, (boxes, min_w): &(PlanBoxes, f64)) -> Sizing {
+        let body = Rect::new(self.region.x0, self.region.y0 + HEADER, self.region.x1, self.region.y1);
+        size_plans(body, boxes, *min_w)
     }
 }
 
@@ -81,13 +92,17 @@ pub(super) fn split_plans(
     kinds: [(&PlansRegion, &[Plan], &[&Position]); 2],
     words: &LeverWords,
 ) -> [(Rect, Sizing); 2] {
+    // The same at every share.
+    let measured = kinds.map(|(r, plans, positions)| r.measure(plans, positions, words));
     let split = |share: f64| {
         let y = column.y0 + column.height() * share;
         let regions =
             [Rect::new(column.x0, column.y0, column.x1, y), Rect::new(column.x0, y + 4.0, column.x1, column.y1)];
-        let mut kind = kinds.iter().zip(regions).map(|((r, plans, positions), region)| {
-            (region, PlansRegion { region, ..**r }.sizing(plans, positions, words))
-        });
+        let mut kind = kinds
+            .iter()
+            .zip(&measured)
+            .zip(regions)
+            .map(|(((r, ..), m), region)| (region, PlansRegion { region, ..**r }.sizing_of(m)));
         [kind.next().expect("two kinds"), kind.next().expect("two kinds")]
     };
     let score = |s: &[(Rect, Sizing); 2]| {

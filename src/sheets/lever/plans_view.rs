@@ -204,17 +204,33 @@ fn pack(sizes: &[(f64, f64)], body: Rect) -> Option<Vec<Rect>> {
     Some(out)
 }
 
-/// Chooses the plans' scales and their cells in `body` (see the module's note on scales); a
-/// cell is at least `min_w` wide (its title and scale line).
-pub fn size_plans(body: Rect, plans: &[Plan], pole: &str, min_w: f64) -> Sizing {
-    let boxes: Vec<Rect> = plans.iter().map(plan_bbox).collect();
-    let labels: Vec<f64> = plans.iter().map(|p| longest_label(p, pole)).collect();
+/// What sizing a kind's plans asks of each, whatever the region: its box and its longest
+/// label's width. Found once: a column's split tries some fifty regions.
+pub struct PlanBoxes {
+    boxes: Vec<Rect>,
+    labels: Vec<f64>,
+}
+
+impl PlanBoxes {
+    /// The boxes and longest labels of `plans` drawn from the pole named `pole`.
+    pub fn of(plans: &[Plan], pole: &str) -> PlanBoxes {
+        PlanBoxes {
+            boxes: plans.iter().map(plan_bbox).collect(),
+            labels: plans.iter().map(|p| longest_label(p, pole)).collect(),
+        }
+    }
+}
+
+/// Chooses the scales and cells in `body` of the plans measured `measured` (see the
+/// module's note on scales); a cell is at least `min_w` wide (its title and scale line).
+pub fn size_plans(body: Rect, measured: &PlanBoxes, min_w: f64) -> Sizing {
+    let PlanBoxes { boxes, labels } = measured;
     let sides: Vec<f64> = boxes.iter().map(|b| b.width().max(b.height()).max(f64::MIN_POSITIVE)).collect();
     let largest = sides.iter().copied().fold(f64::MIN_POSITIVE, f64::max);
     let fit = |common: f64, outliers: bool| -> Option<Sizing> {
         let mu: Vec<f64> = sides.iter().map(|&s| if outliers { own_scale(s, common) } else { common }).collect();
         let sizes: Vec<_> =
-            (0..plans.len()).map(|i| cell_size(boxes[i], mu[i], mu[i] != common, min_w, labels[i])).collect();
+            (0..boxes.len()).map(|i| cell_size(boxes[i], mu[i], mu[i] != common, min_w, labels[i])).collect();
         pack(&sizes, body).map(|cells| Sizing { cells, common, mu })
     };
     // Every plan at one scale: the smallest that packs.
@@ -230,9 +246,9 @@ pub fn size_plans(body: Rect, plans: &[Plan], pole: &str, min_w: f64) -> Sizing 
     let Some(all) = all else {
         // Nothing packs (a region too small for its plans' titles): the grid overflowing,
         // so the layout measurement reports it.
-        let sizes: Vec<_> = boxes.iter().zip(&labels).map(|(&b, &lw)| cell_size(b, mu, false, min_w, lw)).collect();
+        let sizes: Vec<_> = boxes.iter().zip(labels).map(|(&b, &lw)| cell_size(b, mu, false, min_w, lw)).collect();
         let cells = pack(&sizes, Rect::new(body.x0, body.y0, body.x0 + 1e6, body.y0 + 1e6)).unwrap_or_default();
-        return Sizing { cells, common: mu, mu: vec![mu; plans.len()] };
+        return Sizing { cells, common: mu, mu: vec![mu; boxes.len()] };
     };
     if sides.iter().all(|&s| s / all.common >= MIN_PLAN) {
         return all;
@@ -243,7 +259,7 @@ pub fn size_plans(body: Rect, plans: &[Plan], pole: &str, min_w: f64) -> Sizing 
     let smallest = sides.iter().copied().fold(f64::MAX, f64::min);
     let mut best = all;
     // What a sizing costs: the plans off the common scale or too small to measure on it.
-    let own_count = |s: &Sizing| (0..plans.len()).filter(|&i| s.own(i) || sides[i] / s.mu[i] < MIN_PLAN).count();
+    let own_count = |s: &Sizing| (0..boxes.len()).filter(|&i| s.own(i) || sides[i] / s.mu[i] < MIN_PLAN).count();
     let mut mu = scale::plan_round_up(smallest / MAX_PLAN);
     while mu < best.common {
         if let Some(s) = fit(mu, true)

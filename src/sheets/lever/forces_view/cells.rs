@@ -2,7 +2,7 @@
 //! polygon, the Zhukovsky lever, each load diagram and each table, at the sizes of one layout
 //! attempt.
 
-use super::group::{GroupLayout, group_layout};
+use super::group::{GroupLayout, group_layout, group_scales};
 use super::load::cell_size as load_cell;
 use super::zhukovsky::{DESCENT, LEVER_LINES, lever_arrow_scale, lever_legend};
 use super::{ARROW_MAX, ForcesInput, LINE};
@@ -11,14 +11,17 @@ use crate::lever::plans::{Plan, velocity_plan};
 use crate::num::tol;
 use crate::sheets::lever::plans_view::{MARGIN, TITLE, plan_bbox};
 use kurbo::{Point, Rect};
+use std::cell::{OnceCell, RefCell};
+use std::collections::HashMap;
+use std::rc::Rc;
 
 const GAP: f64 = 6.0;
 
 pub(super) enum Content {
     /// Index into the polygons, and the layout computed for the cell's size.
-    Polygon(usize, GroupLayout),
+    Polygon(usize, Rc<GroupLayout>),
     /// The turned velocity plan, its scale and the scale of its force arrows.
-    Lever(Plan, f64, f64),
+    Lever(Rc<Plan>, f64, f64),
     Load(usize),
     Table(usize),
 }
@@ -75,29 +78,63 @@ impl Sizes {
     }
 }
 
+/// The cells already laid out, by what each depends on: a polygon's cell on its μ_l, its
+/// μ_P and whether it may grow, the lever's on its μ, the load diagrams and the tables on
+/// nothing. The layout attempts (up to a dozen shrinks for each mechanism height tried,
+/// then the enlargements and the finer scales, for each width of the force column) ask
+/// for the same cells again and again: each is laid out once a sheet.
+#[derive(Default)]
+pub struct CellMemo {
+    polygons: RefCell<HashMap<PolygonKey, (Rc<GroupLayout>, f64, f64)>>,
+    /// The turned velocity plan with its box, and the lever's cell at each μ: its size.
+    lever: OnceCell<(Rc<Plan>, Rect, f64)>,
+    lever_cells: RefCell<HashMap<u64, (f64, f64)>>,
+    /// The load diagrams' and the tables' sizes, in the cells' order.
+    fixed: OnceCell<Vec<(f64, f64)>>,
+}
+
+/// A polygon's index, its μ_l's and μ_P's bits, and whether its cell may grow.
+type PolygonKey = (usize, u64, u64, bool);
+
 pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
+    let memo = inp.memo;
     let mut out = Vec::new();
     for (i, poly) in inp.fa.forces.polygons.iter().enumerate() {
-        let (layout, w, h) = group_layout(inp, poly, s, s.grow >> i & 1 == 1);
+        let grow = s.grow >> i & 1 == 1;
+        let (mu_l, mu_p) = group_scales(poly, inp, s);
+        let (layout, w, h) = memo
+            .polygons
+            .borrow_mut()
+            .entry((i, mu_l.to_bits(), mu_p.to_bits(), grow))
+            .or_insert_with(|| {
+                let (layout, w, h) = group_layout(inp, poly, (mu_l, mu_p), grow);
+                (Rc::new(layout), w, h)
+            })
+            .clone();
         out.push(Cell { w, h, content: Content::Polygon(i, layout) });
     }
-    let lever = velocity_plan(inp.m, inp.state).turned(inp.m.sense());
-    let bb = plan_bbox(&lever);
+    let (lever, bb, mu_f) = memo.lever.get_or_init(|| {
+        let lever = velocity_plan(inp.m, inp.state).turned(inp.m.sense());
+        let bb = plan_bbox(&lever);
+        (Rc::new(lever), bb, lever_arrow_scale(inp))
+    });
+    let (bb, mu_f) = (*bb, *mu_f);
     let mu = s.round_up(bb.width().max(bb.height()) / s.lever_box);
-    let mu_f = lever_arrow_scale(inp);
-    let pad = MARGIN + ARROW_MAX + 4.0;
-    let w = (bb.width() / mu + 2.0 * pad).max(110.0);
-    let text_lines = LEVER_LINES + lever_legend(inp, mu_f, w - 4.0).len();
-    let h = TITLE + bb.height() / mu + 2.0 * pad + text_lines as f64 * LINE + DESCENT;
-    out.push(Cell { w, h, content: Content::Lever(lever, mu, mu_f) });
-    for (i, load) in inp.fa.model.loads.iter().enumerate() {
-        let (w, h) = load_cell(load);
-        out.push(Cell { w, h, content: Content::Load(i) });
-    }
-    for (i, t) in inp.tables.iter().enumerate() {
-        let (w, h) = t.size();
-        out.push(Cell { w: w + 2.0, h: h + 2.0, content: Content::Table(i) });
-    }
+    let (w, h) = *memo.lever_cells.borrow_mut().entry(mu.to_bits()).or_insert_with(|| {
+        let pad = MARGIN + ARROW_MAX + 4.0;
+        let w = (bb.width() / mu + 2.0 * pad).max(110.0);
+        let text_lines = LEVER_LINES + lever_legend(inp, mu_f, w - 4.0).len();
+        let h = TITLE + bb.height() / mu + 2.0 * pad + text_lines as f64 * LINE + DESCENT;
+        (w, h)
+    });
+    out.push(Cell { w, h, content: Content::Lever(Rc::clone(lever), mu, mu_f) });
+    let fixed = memo.fixed.get_or_init(|| {
+        let loads = inp.fa.model.loads.iter().map(load_cell);
+        let tables = inp.tables.iter().map(|t| t.size()).map(|(w, h)| (w + 2.0, h + 2.0));
+        loads.chain(tables).collect()
+    });
+    let contents = (0..inp.fa.model.loads.len()).map(Content::Load).chain((0..inp.tables.len()).map(Content::Table));
+    out.extend(fixed.iter().zip(contents).map(|(&(w, h), content)| Cell { w, h, content }));
     out
 }
 

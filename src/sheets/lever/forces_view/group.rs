@@ -14,7 +14,7 @@ use super::{ARROW_MAX, ARROW_MIN, ForcesInput, LINE};
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{Group, MAIN, THIN};
-use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, slider};
+use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, slider, turn_arrow_reach};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::kinetostatics::Polygon;
@@ -99,13 +99,24 @@ fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec
     with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
 }
 
-pub(super) fn group_layout(inp: &ForcesInput, poly: &Polygon, s: Sizes, grow: bool) -> (GroupLayout, f64, f64) {
+/// A group drawing's length scale and its polygon's μ_P at the sizes `s`: all its cell's
+/// layout depends on besides whether it may grow.
+pub(super) fn group_scales(poly: &Polygon, inp: &ForcesInput, s: Sizes) -> (f64, f64) {
+    let chain_box = bbox_of(&chain(poly));
+    (s.mu_l(world_box(inp, poly)), s.round_up(chain_box.width().max(chain_box.height()) / s.poly_box))
+}
+
+/// A group cell's layout at its scales (see [`group_scales`]), with its width and height.
+pub(super) fn group_layout(
+    inp: &ForcesInput,
+    poly: &Polygon,
+    (mu_l, mu_p): (f64, f64),
+    grow: bool,
+) -> (GroupLayout, f64, f64) {
     let world = world_box(inp, poly);
-    let mu_l = s.mu_l(world);
     let (drawing_w, drawing_h) = (world.width() / mu_l + 2.0 * PAD, world.height() / mu_l + 2.0 * PAD);
     let chain = chain(poly);
     let chain_box = bbox_of(&chain);
-    let mu_p = s.round_up(chain_box.width().max(chain_box.height()) / s.poly_box);
     let mu_f = arrow_scale(poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max));
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let poly_size = (poly_w, poly_h);
@@ -274,10 +285,21 @@ fn draw_group_geometry(
             g.circle(at, 1.0, THIN);
         }
     }
-    let mut drawn = Obstacles::of_items(&g.items);
-    for il in inp.fa.forces.inertia.iter().filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0) {
-        let centre = m.mass_centres.iter().find(|c| c.0 == il.link).map_or(m.links[il.link].points[0], |c| c.1);
-        let at = p(inp.state.points[centre].p);
+    let moments: Vec<_> = inp
+        .fa
+        .forces
+        .inertia
+        .iter()
+        .filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0)
+        .map(|il| {
+            let centre = m.mass_centres.iter().find(|c| c.0 == il.link).map_or(m.links[il.link].points[0], |c| c.1);
+            (il, p(inp.state.points[centre].p))
+        })
+        .collect();
+    // What the moments' arrows may cross: the lines round their centres.
+    let reach = moments.iter().map(|&(_, at)| turn_arrow_reach(at, MOMENT_R)).reduce(|a, b| a.union(b));
+    let mut drawn = reach.map_or_else(Obstacles::default, |r| Obstacles::of_items_within(&g.items, r));
+    for (il, at) in moments {
         let start = clear_turn_arrow(g, &mut drawn, at, MOMENT_R, 200.0, MOMENT_SWEEP, il.moment > 0.0, THIN);
         let sign = if il.moment > 0.0 { -1.0 } else { 1.0 };
         let mid = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP / 2.0).to_radians()) * MOMENT_R;

@@ -23,6 +23,7 @@ use crate::drawing::table::Table;
 use crate::lever::analysis::ForceAnalysis;
 use crate::lever::linkage::{Mechanism, State};
 use crate::report::{AnswerKeys, Segment};
+pub use cells::CellMemo;
 use cells::{Cell, Content, Sizes, cells, pack};
 use kurbo::{Point, Rect};
 
@@ -42,6 +43,8 @@ pub struct ForcesInput<'a> {
     pub words: LeverWords,
     /// Tables 3–5 as drawn.
     pub tables: Vec<Table>,
+    /// The cells laid out so far, shared by every layout the sheet tries.
+    pub memo: &'a CellMemo,
 }
 
 /// The scales the force drawings got.
