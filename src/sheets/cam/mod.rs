@@ -173,7 +173,7 @@ fn head_h(title: &str, w: f64) -> f64 {
     5.0 + wrap(title, 3.5, w).len() as f64 * LINE_PITCH * 3.5 + 2.0
 }
 
-/// Builds sheet 3 with the diagrams' column at each of [`COLUMN_WIDTHS`] and keeps the one
+/// Builds sheet 3 with the diagrams' column at each of the widths `regions.rs` tries and keeps the one
 /// that leaves the least of the sheet empty (the usual width on a tie) among those whose
 /// layout is no less clean: a column too narrow for its views' room leaves a band across the
 /// sheet's middle; one too wide shrinks the views.
