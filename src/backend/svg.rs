@@ -55,7 +55,8 @@ fn push_num(out: &mut String, x: f64) -> Result<(), BackendError> {
 /// number is the exact one's.
 fn thousandths(out: &mut String, x: f64) -> bool {
     let y = x * 1000.0;
-    if !(y.abs() < 1e12) || ((y - y.trunc()).abs() - 0.5).abs() < 1e-6 {
+    // `x` is finite: `y` is too, or infinite past the bound.
+    if y.abs() >= 1e12 || ((y - y.trunc()).abs() - 0.5).abs() < 1e-6 {
         return false;
     }
     // Below 2⁵³: exact in an i64.

@@ -85,7 +85,7 @@ impl Sizes {
 /// for the same cells again and again: each is laid out once a sheet.
 #[derive(Default)]
 pub struct CellMemo {
-    polygons: RefCell<HashMap<PolygonKey, (Rc<GroupLayout>, f64, f64)>>,
+    polygons: RefCell<HashMap<PolygonKey, LaidOut>>,
     /// The turned velocity plan with its box, and the lever's cell at each μ: its size.
     lever: OnceCell<(Rc<Plan>, Rect, f64)>,
     lever_cells: RefCell<HashMap<u64, (f64, f64)>>,
@@ -95,6 +95,8 @@ pub struct CellMemo {
 
 /// A polygon's index, its μ_l's and μ_P's bits, and whether its cell may grow.
 type PolygonKey = (usize, u64, u64, bool);
+/// A group cell's layout, width and height.
+type LaidOut = (Rc<GroupLayout>, f64, f64);
 
 pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let memo = inp.memo;
