@@ -55,7 +55,7 @@ fn push_num(out: &mut String, x: f64) -> Result<(), BackendError> {
 /// number is the exact one's.
 fn thousandths(out: &mut String, x: f64) -> bool {
     let y = x * 1000.0;
-    // Not finite, or too large for the i64 below: the formatter decides.
+    // Not finite, or past the i64 below: the formatter decides.
     if !y.is_finite() || y.abs() >= 1e12 || ((y - y.trunc()).abs() - 0.5).abs() < 1e-6 {
         return false;
     }

@@ -78,9 +78,6 @@ impl Sizes {
     }
 }
 
-/// A polygon's cell as laid out: its group's layout and the cell's width and height, mm.
-type PolygonCell = (Rc<GroupLayout>, f64, f64);
-
 /// The cells already laid out, by what each depends on: a polygon's cell on its μ_l, its
 /// μ_P and whether it may grow, the lever's on its μ, the load diagrams and the tables on
 /// nothing. The layout attempts (up to a dozen shrinks for each mechanism height tried,
@@ -88,7 +85,7 @@ type PolygonCell = (Rc<GroupLayout>, f64, f64);
 /// for the same cells again and again: each is laid out once a sheet.
 #[derive(Default)]
 pub struct CellMemo {
-    polygons: RefCell<HashMap<PolygonKey, PolygonCell>>,
+    polygons: RefCell<HashMap<PolygonKey, LaidOut>>,
     /// The turned velocity plan with its box, and the lever's cell at each μ: its size.
     lever: OnceCell<(Rc<Plan>, Rect, f64)>,
     lever_cells: RefCell<HashMap<u64, (f64, f64)>>,
@@ -98,6 +95,8 @@ pub struct CellMemo {
 
 /// A polygon's index, its μ_l's and μ_P's bits, and whether its cell may grow.
 type PolygonKey = (usize, u64, u64, bool);
+/// A group cell's layout, width and height.
+type LaidOut = (Rc<GroupLayout>, f64, f64);
 
 pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let memo = inp.memo;
