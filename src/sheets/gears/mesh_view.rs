@@ -449,7 +449,10 @@ mod tests {
             let root = v.len(pair.wheels[0].root);
             let (r_s, r_p) = (root - S_INSIDE_ROOT, root - P_INSIDE_ROOT);
             let mut found = 0;
-            for t in g.texts().filter(|t| t.tail.starts_with(" = ")) {
+            // s, e and p (a_w, h_a and h_f are written too, with subscripts).
+            let arc_value =
+                |t: &&crate::drawing::scene::Text| ["s", "e", "p"].contains(&t.text.as_str()) && t.sub.is_empty();
+            for t in g.texts().filter(|t| t.tail.starts_with(" = ")).filter(arc_value) {
                 let d = (t.core_box().center() - o1).norm();
                 let (own, other) = if t.text == "p" { (r_p, r_s) } else { (r_s, r_p) };
                 assert!(
