@@ -219,19 +219,8 @@ fn drawn_at(id: &str, tables: &[Table], region: Rect, corners: &[Point]) -> Grou
 /// How [`flow_rows`] packs tables of `sizes` into a region `width` mm wide: each one's top
 /// left from the region's, and the height taken.
 fn packed_rows(sizes: &[(f64, f64)], width: f64, gap: f64) -> (Vec<Point>, f64) {
-    let (mut x, mut y, mut row_h) = (0.0, 0.0, 0.0f64);
-    let mut corners = Vec::with_capacity(sizes.len());
-    for &(w, h) in sizes {
-        if x + w > width && x > 0.0 {
-            y += row_h + gap;
-            x = 0.0;
-            row_h = 0.0;
-        }
-        corners.push(Point::new(x, y));
-        x += w + COLUMN_GAP;
-        row_h = row_h.max(h);
-    }
-    (corners, y + row_h)
+    let (at, taken) = shelves(sizes.iter().copied(), width, COLUMN_GAP, gap);
+    (at.into_iter().map(|(x, y)| Point::new(x, y)).collect(), taken)
 }
 
 /// Whether [`flow_rows`] fits tables of `sizes` inside `region`: none wider than it, the
@@ -243,20 +232,34 @@ pub fn rows_fit(sizes: &[(f64, f64)], region: Rect, gap: f64) -> bool {
 /// How [`flow`] packs tables of `sizes` into a column `height` mm tall: each one's top left
 /// from the region's, and the width taken.
 fn packed(sizes: &[(f64, f64)], height: f64, gap: f64) -> (Vec<Point>, f64) {
-    let (mut x, mut y, mut col_w, mut right) = (0.0, 0.0, 0.0f64, 0.0f64);
-    let mut corners = Vec::with_capacity(sizes.len());
-    for &(w, h) in sizes {
-        if y + h > height && y > 0.0 {
-            x += col_w + COLUMN_GAP;
-            y = 0.0;
-            col_w = 0.0;
+    let (at, taken) = shelves(sizes.iter().map(|&(w, h)| (h, w)), height, gap, COLUMN_GAP);
+    (at.into_iter().map(|(y, x)| Point::new(x, y)).collect(), taken)
+}
+
+/// Boxes of `(along, across)` sizes laid along shelves at most `limit` long, `along_gap`
+/// apart on a shelf, a new shelf `across_gap` past the deepest box of the last when the next
+/// box would pass the limit (a box alone on a shelf may): each box's `(along, across)` offset
+/// and the depth all the shelves take. Columns of tables are shelves down the region, rows
+/// shelves across it.
+fn shelves(
+    sizes: impl Iterator<Item = (f64, f64)>,
+    limit: f64,
+    along_gap: f64,
+    across_gap: f64,
+) -> (Vec<(f64, f64)>, f64) {
+    let (mut along, mut across, mut depth) = (0.0, 0.0, 0.0f64);
+    let mut at = Vec::new();
+    for (l, d) in sizes {
+        if along + l > limit && along > 0.0 {
+            across += depth + across_gap;
+            along = 0.0;
+            depth = 0.0;
         }
-        corners.push(Point::new(x, y));
-        y += h + gap;
-        col_w = col_w.max(w);
-        right = right.max(x + col_w);
+        at.push((along, across));
+        along += l + along_gap;
+        depth = depth.max(d);
     }
-    (corners, right)
+    (at, across + depth)
 }
 
 /// Whether [`flow`] fits tables of `sizes` inside `region`: no column taller than it, all
