@@ -508,3 +508,24 @@ fn the_diagrams_column_widens_only_where_the_sheet_is_emptier_without() {
         assert!(empty < 0.58, "{name}: {empty} of sheet 3 is empty");
     }
 }
+
+/// Where the column is wide enough for both law tables side by side, they stand so under the
+/// diagrams (stacked they took twice the height), and the diagrams are planned as tall as
+/// leaves them that room: no band of empty 20 mm cells between the notes and the tables.
+#[test]
+fn the_law_tables_stand_side_by_side_close_under_the_diagrams() {
+    let b = sheet3(&pipeline::load(pipeline::DEFAULT_PROJECT).unwrap());
+    let group = |id: &str| b.output.scene.groups.iter().find(|g| g.id == id).unwrap();
+    let law = group("law-tables");
+    let boxes: Vec<_> = law
+        .parts
+        .iter()
+        .map(|p| law.items[p.items.clone()].iter().map(|i| i.bbox()).reduce(|a, b| a.union(b)).unwrap())
+        .collect();
+    assert_eq!(boxes.len(), 2, "the rise's and the return's tables");
+    let (rise, ret) = (boxes[0], boxes[1]);
+    assert!((rise.y0 - ret.y0).abs() < 0.01 && ret.x0 > rise.x1, "side by side: {rise:?} {ret:?}");
+    let notes_end = group("diagrams").region.y1;
+    let gap = rise.y0.min(ret.y0) - notes_end;
+    assert!((0.0..20.0).contains(&gap), "{gap} mm between the notes and the law's tables");
+}

@@ -86,6 +86,9 @@ const SHORTER: [f64; 5] = [0.0, 50.0, 100.0, 175.0, 250.0];
 /// The tables' larger lettering, mm: one GOST size above [`CELL_TEXT`].
 const LARGE_TEXT: f64 = 3.5;
 
+/// The share of their height the diagrams keep at least for the tables' larger lettering.
+const LARGE_KEEPS: f64 = 0.8;
+
 /// The two views' sizes, what the regions are chosen for besides the column and the tables.
 struct Views {
     nomogram: ViewSize,
@@ -215,7 +218,14 @@ fn build_at(ctx: &Context, p: &CamProject, width: ColumnWidth) -> Result<CamBuil
     let small = (drawn(&law, CELL_TEXT), drawn(&rest, CELL_TEXT));
     let large = (drawn(&law, LARGE_TEXT), drawn(&rest, LARGE_TEXT));
     let mut column = plan_column(p, errors, fitted.deviation, &words, width)?;
-    let plans: Vec<diagrams::Plan> = SHORTER.iter().map(|&s| shorter_plan(p, &column, s)).collect();
+    // Besides the steps, the diagrams exactly as tall as leaves the law's tables room under
+    // them in either lettering (a step short of that leaves a band empty above the tables).
+    let under = |law: &[Table]| column.room - regions::diagrams_above(law, column.plan.width, column.text_h);
+    let mut shorter: Vec<f64> = SHORTER.iter().copied().chain([under(&small.0), under(&large.0)]).collect();
+    shorter.retain(|s| *s >= 0.0);
+    shorter.sort_by(f64::total_cmp);
+    shorter.dedup();
+    let plans: Vec<diagrams::Plan> = shorter.iter().map(|&s| shorter_plan(p, &column, s)).collect();
     // The nomogram in the plans' finer series, unless its labels then find no clean spot
     // (a tall, narrow nomogram beside the profile leaves r_min's label no room): then in the
     // coarse one, as large as the sheet allowed before the finer series.
@@ -240,14 +250,21 @@ fn build_at(ctx: &Context, p: &CamProject, width: ColumnWidth) -> Result<CamBuil
         };
         let kept = |a: &Regions, b: &Regions| a.profile_mu <= b.profile_mu && a.nomogram_mu <= b.nomogram_mu;
         // The diagrams as tall as the column allows, unless shorter ones leave the views larger
-        // (the nomogram under them, the profile alone on the right at a larger scale).
-        let tried = plans.iter().map(|plan| (*plan, arranged(plan, &small))).collect();
-        if let Some((plan, _)) = balanced(tried) {
-            column.plan = plan;
-        }
-        // The tables in 3.5 mm lettering where the views keep their scales beside them.
-        let (on_small, on_large) = (arranged(&column.plan, &small), arranged(&column.plan, &large));
-        let lettered_large = kept(&on_large, &on_small) && on_large.tables_fit(&large.0, &large.1);
+        // (the nomogram under them, the profile alone on the right at a larger scale): planned
+        // for the tables in each lettering.
+        let planned = |tables: &(Vec<Table>, Vec<Table>)| {
+            let tried = plans.iter().map(|plan| (*plan, arranged(plan, tables))).collect();
+            let plan = balanced(tried).map_or(column.plan, |(plan, _)| plan);
+            (plan, arranged(&plan, tables))
+        };
+        let (small_plan, on_small) = planned(&small);
+        let (large_plan, on_large) = planned(&large);
+        // The tables in 3.5 mm lettering where the views keep their scales beside them and
+        // the diagrams most of their height.
+        let lettered_large = kept(&on_large, &on_small)
+            && on_large.tables_fit(&large.0, &large.1)
+            && large_plan.height >= small_plan.height * LARGE_KEEPS;
+        column.plan = if lettered_large { large_plan } else { small_plan };
         let (lay, tables) = if lettered_large { (on_large, &large) } else { (on_small, &small) };
         let content = views.content((&column.plan, column.text_h), &tables.0, &tables.1);
         let (nomogram_room, profile_room) = lay.label_rooms();
@@ -317,7 +334,10 @@ fn diagrams_group(
     let mut dg = Group::new("diagrams", lay.diagrams);
     let at = Point::new(lay.diagrams.x0 + 2.0, lay.diagrams.y0 + 5.0);
     let mut y = paragraph(&mut dg, at, &wrap(&column.title, 3.5, width), 3.5, Anchor::Start);
-    let area = Rect::new(lay.diagrams.x0 + 2.0, y + 2.0, lay.diagrams.x1, y + 2.0 + column.plan.height);
+    // The diagrams spread over what the region leaves under the notes.
+    let below = lay.diagrams.y1 - (y + 2.0 + column.plan.height + 4.0 + notes_h(&column.notes, width) + 1.0);
+    let area =
+        Rect::new(lay.diagrams.x0 + 2.0, y + 2.0, lay.diagrams.x1, y + 2.0 + column.plan.height + below.max(0.0));
     let drawn = diagrams::draw(&mut dg, area, &column.plan, &p.design, integrated, words);
     y = drawn.bottom + 4.0;
     for n in &column.notes {

@@ -169,6 +169,19 @@ fn grown(r: Rect, others: &[Rect]) -> Rect {
     Rect::new(r.x0, r.y0, r.x1, y1.max(r.y1))
 }
 
+/// The height the law's tables take under a column `width` wide, with the gap above them,
+/// mm: flowed in columns (side by side where the column is wide enough), else stacked.
+pub fn law_height(law: &[Table], width: f64) -> f64 {
+    let stacked = sizes(law).iter().map(|s| s.1 + 3.0).sum::<f64>();
+    table::flow_height(&sizes(law), width, 3.0).map_or(stacked, |h| h.min(stacked)) + GAP
+}
+
+/// The height the column's diagrams `width` wide (with the column's margins) may take with
+/// the law's tables `law` under them, mm.
+pub fn diagrams_above(law: &[Table], width: f64, text_h: f64) -> f64 {
+    SHEET.height() - law_height(law, width + 4.0) - text_h - 5.0
+}
+
 fn sizes(ts: &[Table]) -> Vec<(f64, f64)> {
     ts.iter().map(Table::size).collect()
 }
@@ -183,13 +196,13 @@ pub fn regions(c: &Content) -> Regions {
     let f = Frame::of(c);
     let below = nomogram_in_column(c, &f);
     // Both on the right.
-    let law_h: f64 = sizes(c.law).iter().map(|s| s.1 + 3.0).sum();
-    let law_fits = f.column_used + GAP + law_h <= SHEET.height() && sizes(c.law).iter().all(|s| s.0 <= f.left_w);
+    let law_h = law_height(c.law, f.left_w);
+    let law_fits = f.column_used + law_h <= SHEET.height() && sizes(c.law).iter().all(|s| s.0 <= f.left_w);
     let all: Vec<(f64, f64)> = sizes(c.law).into_iter().chain(sizes(c.rest)).collect();
     let rest = sizes(c.rest);
     let tables = f.strip(if law_fits { &rest } else { &all });
     let views = f.views_above(tables);
-    let law_tables = law_fits.then(|| Rect::new(SHEET.x0, SHEET.y1 - law_h, SHEET.x0 + f.left_w, SHEET.y1));
+    let law_tables = law_fits.then(|| Rect::new(SHEET.x0, SHEET.y1 - (law_h - GAP), SHEET.x0 + f.left_w, SHEET.y1));
     let diagrams = Rect::new(SHEET.x0, SHEET.y0, SHEET.x0 + f.left_w, law_tables.map_or(SHEET.y1, |r| r.y0 - GAP));
     let around = |profile_mu, profile, nomogram_mu, nomogram| Regions {
         diagrams,

@@ -35,6 +35,8 @@ pub struct Drawn {
 
 /// Vertical room of one diagram besides its data: the title above, the axis values below.
 const GAP: f64 = 14.0;
+/// The most height added between two diagrams where their area is taller than their plan, mm.
+const SPREAD_MAX: f64 = 20.0;
 
 /// Draws the three diagrams of `plan` from the top left of `area`; the poles take the room
 /// at its left.
@@ -66,10 +68,13 @@ pub fn draw(
     };
     let mut labels = Labels::new();
     let start = g.mark();
-    let top = stack.displacement(g, &mut labels, area.y0);
+    // The height the area has beyond the plan's, shared between the diagrams (a band left
+    // under the last read as a gap in the column).
+    let spread = ((area.height() - plan.height) / 3.0).clamp(0.0, SPREAD_MAX);
+    let top = stack.displacement(g, &mut labels, area.y0) + spread;
     g.part_from("diagram.s", start);
     let start = g.mark();
-    let top = stack.velocity(g, top);
+    let top = stack.velocity(g, top) + spread;
     g.part_from("diagram.v", start);
     let start = g.mark();
     let bottom = stack.acceleration(g, top);
