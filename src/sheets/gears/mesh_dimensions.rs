@@ -4,7 +4,8 @@
 //! the space's flank runs through P, on the line itself). A dimension whose lines would leave
 //! the drawing's area is not drawn. The centre distance a_w between O1 and O2, right of the
 //! teeth, where both centres are on the drawing; wheel 1's addendum h_a and dedendum h_f
-//! along a radius upper left, where only its circles pass.
+//! along a radius upper left, where only its circles pass; the base pitch p_b on the line of
+//! action from P.
 
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
@@ -118,6 +119,49 @@ pub fn heights(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair
         let mid = symbols::dimension(g, on(deg, r0), on(deg, r1), Vec2::ZERO);
         labels.add_ranked(mid, side, v_, TEXT_H, 1);
     }
+}
+
+/// The base pitch p_b of wheel 1 on a normal to its flanks — a tangent to its base circle,
+/// the line of action where it serves — between two neighbouring same-side flanks of its
+/// three drawn teeth: their involutes are p_b apart along every such normal. A point at roll
+/// length L along the tangent at base angle θ lies on the involute from base angle θ + L/r_b
+/// (world angles, the tangent turned counter-clockwise from the radius, as the line of action
+/// from N1 toward N2); the flank through P comes from θ_N1 + N1P/r_b, its neighbours a tooth
+/// step either side. The two points are taken at roll lengths where the involute is drawn
+/// (between the form or base circle and the tip), on the line of action first, else as
+/// near the middle of that span as the teeth allow; not drawn where the flank is shorter
+/// than p_b or the points leave the drawing.
+pub fn base_pitch(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, lang: Language) {
+    let w1 = &p.wheels[0];
+    let (rb, pb) = (w1.base, p.base_pitch);
+    let aw = p.working_pressure_angle;
+    let margin = 0.02 * pb;
+    let low = (w1.form_radius.max(rb).powi(2) - rb * rb).max(0.0).sqrt() + margin;
+    let high = (w1.tip * w1.tip - rb * rb).max(0.0).sqrt() - margin;
+    if high - low < pb {
+        return;
+    }
+    let theta_n1 = std::f64::consts::FRAC_PI_2 - aw;
+    let n1p = rb * aw.tan();
+    let flank_p = theta_n1 + n1p / rb;
+    let step = pb / rb;
+    // On the line of action (its points at N1P + k·p_b), else centred in the flank's span.
+    let on_line = [-1.0, 0.0].map(|k| n1p + k * pb);
+    let rolls = on_line.into_iter().chain([(low + high - pb) / 2.0, low, high - pb]);
+    let tried = rolls.filter(|&l| l >= low && l + pb <= high).flat_map(|l| [(0.0, l), (-1.0, l)]);
+    let points = tried.map(|(k, l)| {
+        let theta = flank_p + k * step - l / rb;
+        let (radial, along) = (from_angle(theta), from_angle(theta + std::f64::consts::FRAC_PI_2));
+        let t = radial * rb;
+        (v.p(t), v.p(t + along * l), v.p(t + along * (l + pb)))
+    });
+    let Some((_, a, b)) = points.into_iter().find(|(t, a, b)| [t, a, b].iter().all(|q| area.contains(**q))) else {
+        return;
+    };
+    let mid = symbols::dimension(g, a, b, Vec2::ZERO);
+    let along = b - a;
+    let value = LabelText::new("p", "b").with_tail(format!(" = {}", fmt::value(mm(pb), lang)));
+    labels.add_ranked(mid, Vec2::new(along.y, -along.x), value, TEXT_H, 1);
 }
 
 /// Arc dimensions about wheel 1's centre from features on the circle of paper radius

@@ -107,6 +107,7 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     super::mesh_dimensions::centre_distance(g, labels, v, area, p, teeth, inp.lang);
     super::mesh_dimensions::heights(g, labels, v, area, p, teeth, inp.lang);
     super::mesh_dimensions::draw(g, labels, v, area, p, centres[0][0], inp.lang);
+    super::mesh_dimensions::base_pitch(g, labels, v, area, p, inp.lang);
     point_labels(labels, v, area, &points);
     senses_of_rotation(g, labels, v, area, &points);
     labels.add_ranked(pp - Vec2::new(tau, 0.0), Vec2::new(0.0, -1.0), LabelText::new("τ", ""), 3.5, 1);
@@ -463,6 +464,58 @@ mod tests {
                 found += 1;
             }
             assert_eq!(found, 3, "{z:?}: s, e and p are written");
+        }
+    }
+
+    /// p_b is dimensioned between two points of wheel 1's drawn flanks (each on its outline,
+    /// exactly: depth zero within the flank's fit) on one tangent to its base circle (the
+    /// line's distance from O1 is r_b), p_b apart; the value names it.
+    #[test]
+    fn the_base_pitch_spans_two_flanks_of_wheel_1_along_a_normal() {
+        use crate::drawing::obstacles::segments;
+        for (z, x) in
+            [([17u32, 19u32], [0.0, 0.0]), ([12, 30], [0.295, 0.0]), ([40, 60], [0.0, 0.0]), ([25, 50], [0.2, 0.1])]
+        {
+            let spec = PairSpec { shift: x, ..PairSpec::standard(0.005, z) };
+            let pair = Pair::new(&spec).unwrap();
+            let outlines = [Outline::new(&spec, &pair.wheels[0]), Outline::new(&spec, &pair.wheels[1])];
+            let area = Rect::new(2.0, 10.0, 418.0, 540.0);
+            let inp = MeshInput {
+                pair: &pair,
+                outlines: [&outlines[0], &outlines[1]],
+                lang: crate::drawing::labels::Language::En,
+            };
+            let mut g = Group::new("m", Rect::new(0.0, 0.0, 420.0, 580.0));
+            let mut labels = Labels::new();
+            let d = draw_mesh(&mut g, area, &inp, &mut labels);
+            labels.place(&mut g, area);
+            let (v, _) = placement(&pair, area, d.mu);
+            assert!(
+                g.texts().any(|t| t.text == "p" && t.sub == "b" && t.tail.starts_with(" = ")),
+                "{z:?}: p_b's value"
+            );
+            let length = v.len(pair.base_pitch);
+            let lines: Vec<_> =
+                g.items.iter().flat_map(segments).filter(|(a, b)| ((*b - *a).norm() - length).abs() < 1e-9).collect();
+            assert_eq!(lines.len(), 1, "{z:?}: one line p_b long");
+            let (a, b) = lines[0];
+            let world =
+                |q: kurbo::Point| Vec2::new((q.x - v.p(Vec2::ZERO).x) * v.mu, -(q.y - v.p(Vec2::ZERO).y) * v.mu);
+            let (fl, dev, fdev) = flank(&outlines[0]);
+            let _ = fl;
+            let centre = tooth_centres(&inp)[0][1];
+            for q in [a, b] {
+                let depth = depth(&outlines[0], Vec2::ZERO, centre, world(q));
+                assert!(depth.abs() <= dev.max(fdev) + 1e-9, "{z:?}: an arrow {depth:e} m off wheel 1's outline");
+            }
+            let (wa, wb) = (world(a), world(b));
+            let u = (wb - wa) / (wb - wa).norm();
+            let off = wa.cross(u).abs();
+            assert!(
+                (off - pair.wheels[0].base).abs() < 1e-9,
+                "{z:?}: the line is {off} m from O1, r_b {}",
+                pair.wheels[0].base
+            );
         }
     }
 }
