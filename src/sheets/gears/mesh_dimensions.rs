@@ -45,19 +45,26 @@ pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, t
         arc.dimension(g, r_s, (left, next), value("e", p.pitch - w1.tooth_thickness)),
         arc.dimension(g, r_p, (right, next), value("p", p.pitch)),
     ];
-    // Each value level at its arc's middle: over it, raised along the radius until it meets
-    // nothing drawn (nor a value set before it), else under it, lowered the same way, never
+    // Each value level at its arc's middle: over it (p's under it), moved along the radius
+    // until it meets nothing drawn (nor a value set before it), else on the other side, never
     // nearer the other arc than its own; where neither is clear, the label placer sets it off
     // on a leader.
     let mut drawn = Obstacles::of_items(&g.items);
     for Value { r, mid, text } in values.into_iter().flatten() {
-        let steps = || (0..=12).map(|k| 1.0 + 0.5 * f64::from(k));
-        let over = steps().map(|d| text.text(arc.at(mid, r + d), TEXT_H, Anchor::Middle));
-        let under = steps().map(|d| {
+        // Toward the wheel's body (p's side, away from both arcs) the value may stand far
+        // enough for a horizontal text to clear a steep arc; toward the other arc, half the
+        // band at most.
+        let away = r < r_s;
+        let steps = |far: bool| (0..=if far { 30 } else { 12 }).map(|k| 1.0 + 0.5 * f64::from(k));
+        let over = steps(!away).map(|d| text.text(arc.at(mid, r + d), TEXT_H, Anchor::Middle));
+        let under = steps(away).map(|d| {
             let top = arc.at(mid, r - d);
             text.text(kurbo::Point::new(top.x, top.y + TEXT_H), TEXT_H, Anchor::Middle)
         });
-        let set = over.chain(under).find(|t| drawn.is_clear(t.bbox().inflate(0.5, 0.5)));
+        // p's value inside its arc first, toward the wheel's empty body: over it, it stood in
+        // the band between the arcs with s's, one above the other.
+        let clear = |t: &crate::drawing::scene::Text| drawn.is_clear(t.bbox().inflate(0.5, 0.5));
+        let set = if away { under.chain(over).find(clear) } else { over.chain(under).find(clear) };
         match set {
             Some(t) => {
                 drawn.add(Piece::TextBox(t.bbox()), usize::MAX);
