@@ -301,6 +301,43 @@ fn the_centre_distance_is_dimensioned_between_the_wheels_centres() {
     }
 }
 
+/// Where wheel 2's centre is off the drawing (KHK's pair at 10:1: a_w = 56.50 mm is 565 mm
+/// on paper), a_w is still dimensioned: an extension line from O1 to the right, the dimension
+/// line from it up to the drawing's edge with one arrow, its value the whole a_w (KHK's
+/// reference gives 56.4999 mm).
+#[test]
+fn the_centre_distance_is_dimensioned_broken_off_where_o2_is_off_the_drawing() {
+    use tmm_sheets::drawing::obstacles::segments;
+    let b = sheet2(&pipeline::load(&fixture_text("gears/handbook-khk")).unwrap());
+    let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
+    assert!(!mesh.texts().any(|t| t.text == "O" && t.sub == "2"), "O2 is off the drawing");
+    let value = mesh.texts().find(|t| t.text == "a" && t.sub == "w").expect("a_w's value");
+    assert!([" = 56,50", " = 56.50"].contains(&value.tail.as_str()), "{}", value.tail);
+    let o1 = mesh.texts().find(|t| t.text == "O" && t.sub == "1").expect("O1's name").bbox();
+    let lines: Vec<_> = mesh.items.iter().flat_map(segments).collect();
+    let vertical = lines
+        .iter()
+        .find(|(a, b)| {
+            (a.x - b.x).abs() < 1e-9 && (a.y - b.y).abs() > 300.0 && (a.x - value.bbox().center().x).abs() < 25.0
+        })
+        .unwrap_or_else(|| {
+            panic!(
+                "a long vertical dimension line beside the value {:?}: {:?}",
+                value.bbox(),
+                lines.iter().filter(|(a, b)| (a.x - b.x).abs() < 1e-9 && (a.y - b.y).abs() > 100.0).collect::<Vec<_>>()
+            )
+        });
+    let bottom = vertical.0.y.max(vertical.1.y);
+    assert!((bottom - o1.center().y).abs() < 8.0, "the line ends at O1's level: {bottom} vs {:?}", o1);
+    let extension = lines.iter().find(|(a, b)| {
+        (a.y - bottom).abs() < 1e-9
+            && (b.y - bottom).abs() < 1e-9
+            && a.x.max(b.x) > vertical.0.x
+            && a.x.min(b.x) < o1.x1
+    });
+    assert!(extension.is_some(), "an extension line from O1 to the dimension line");
+}
+
 /// Wheel 1's addendum and dedendum are dimensioned along one of its radii, the guide's pair
 /// by hand: h_a = h_a*·m = 5 mm and h_f = (h_a* + c*)·m = 6.25 mm, at 5:1 lines 25 and 31.25 mm
 /// long pointing at O1, their values "h_a = 5,000" and "h_f = 6,250".
