@@ -17,7 +17,7 @@ use crate::drawing::symbols::{self, ARROW_LEN};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::gears::pair::Pair;
-use crate::num::math::from_angle;
+use crate::num::math::{from_angle, tan};
 use crate::num::units::mm;
 use kurbo::{Rect, Vec2};
 
@@ -161,7 +161,7 @@ pub fn base_pitch(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &P
         return;
     }
     let theta_n1 = std::f64::consts::FRAC_PI_2 - aw;
-    let n1p = rb * aw.tan();
+    let n1p = rb * tan(aw);
     let flank_p = theta_n1 + n1p / rb;
     let step = pb / rb;
     // On the line of action (its points at N1P + k·p_b), else centred in the flank's span.
