@@ -254,6 +254,10 @@ fn cams_the_sweep_found_with_texts_crossed_are_clean() {
         // other, their names knotted across the arms; positions drawn less than 1.5 mm apart
         // now share a name ("8≡9≡…≡14").
         cam("{rocker: {length: 0.0200, swing_deg: 5.0}}", (172.04, 0.0, 1.0), "linearly-decreasing", 10.0),
+        // A 6.7 mm stroke over a 236° return: H2 = 16 mm, and "μ_d²s/dφ² = 0.0005968 m/mm"
+        // reached into the pole's rays; a scale line the highest ray would cross is broken
+        // after its "=".
+        cam("{translating: {stroke: 0.0067, offset: auto}}", (55.09, 27.95, 235.73), "uniform-acceleration", 58.0),
     ] {
         assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
     }

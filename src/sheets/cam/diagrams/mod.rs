@@ -188,10 +188,13 @@ impl Stack<'_> {
         let v_drawn = integrated_curve(self.integrated, |i| &i.ds);
         v_plot.line(g, &v_drawn, MAIN);
         ordinates(g, &v_plot, &v_drawn);
-        let lines = [mu(name, sc.mu_ds, self.unit(), lang)];
-        scale_text(g, above_pole(self.left, v_plot.origin.y - vmax / sc.mu_ds, v_plot.origin.y, &lines), &lines);
         let means: Vec<f64> =
             self.integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
+        let lines = [mu(name, sc.mu_ds, self.unit(), lang)];
+        let top = v_plot.origin.y - vmax / sc.mu_ds;
+        let (at, lines) =
+            clear_of_rays(&lines, (self.left, top, v_plot.origin.y), top_ray(&v_plot, sc.h1, &means, sc.mu_ds));
+        scale_text(g, at, &lines);
         pole(g, &v_plot, Pole { h: sc.h1, index: "1" }, &means, sc.mu_ds, self.words);
         axis_values(g, &v_plot, &analog_ticks(vmax, sc.mu_ds, self.rocker, lang), start);
         v_plot.origin.y + vmax / sc.mu_ds + GAP
@@ -231,8 +234,11 @@ impl Stack<'_> {
         let phi_rad = LabelText::new(format!("({} {})", fmt::value(sc.mu_phi_rad, lang), l.unit_rad_per_mm()), "");
         let lines =
             [mu(name, sc.mu_dds, self.unit(), lang), mu("φ", sc.mu_phi_deg, l.unit_deg_per_mm(), lang), phi_rad];
-        scale_text(g, above_pole(self.left, a_plot.origin.y - amax / sc.mu_dds, a_plot.origin.y, &lines), &lines);
         let mids: Vec<f64> = self.integrated.iter().flat_map(|i| i.mid_dds.iter().copied()).collect();
+        let top = a_plot.origin.y - amax / sc.mu_dds;
+        let (at, lines) =
+            clear_of_rays(&lines, (self.left, top, a_plot.origin.y), top_ray(&a_plot, sc.h2, &mids, sc.mu_dds));
+        scale_text(g, at, &lines);
         pole(g, &a_plot, Pole { h: sc.h2, index: "2" }, &mids, sc.mu_dds, self.words);
         axis_values(g, &a_plot, &analog_ticks(amax, sc.mu_dds, self.rocker, lang), start);
         a_plot.origin.y + amax / sc.mu_dds + GAP
@@ -373,6 +379,35 @@ fn scale_text(g: &mut Group, at: Point, lines: &[LabelText]) {
     for (k, t) in lines.iter().enumerate() {
         t.draw(g, Point::new(at.x, at.y + 3.0 + 4.5 * k as f64), 2.5, Anchor::Start);
     }
+}
+
+/// The highest of a pole's rays (at H left of the plot's origin, to the ordinates `ys` at
+/// `mu` a mm): the one the scale texts above the axis may reach.
+fn top_ray(plot: &Plot, h: f64, ys: &[f64], mu: f64) -> (Point, Point) {
+    let high = ys.iter().copied().fold(0.0, f64::max);
+    (Point::new(plot.origin.x - h, plot.origin.y), Point::new(plot.origin.x, plot.origin.y - high / mu))
+}
+
+/// The scale `lines` at their place ([`above_pole`] from `(x, top, axis)`) with each line
+/// whose end would cross the pole's highest ray `ray` broken after its "=": a long μ (a
+/// short H, "μ_d²s/dφ² = 0.0005968 m/mm") reached into the fan.
+fn clear_of_rays(lines: &[LabelText], (x, top, axis): (f64, f64, f64), ray: (Point, Point)) -> (Point, Vec<LabelText>) {
+    let at = above_pole(x, top, axis, lines);
+    let crosses = |t: &LabelText, k: usize| {
+        let b = t.text(Point::new(at.x, at.y + 3.0 + 4.5 * k as f64), 2.5, Anchor::Start).bbox();
+        crate::drawing::obstacles::segment_meets_rect(ray.0, ray.1, b.inflate(0.5, 0.5))
+    };
+    let broken: Vec<LabelText> = lines
+        .iter()
+        .enumerate()
+        .flat_map(|(k, t)| match t.tail.strip_prefix(" = ") {
+            Some(value) if crosses(t, k) => {
+                vec![LabelText { tail: " =".into(), ..t.clone() }, LabelText::new(value, "")]
+            }
+            _ => vec![t.clone()],
+        })
+        .collect();
+    (above_pole(x, top, axis, &broken), broken)
 }
 
 /// Where a graph's scale `lines` start: at its top `top`, or higher where a low graph would
