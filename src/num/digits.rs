@@ -11,6 +11,15 @@ pub fn significant(x: f64) -> String {
     if a.is_nan() || a < tol::PRINTED_ZERO {
         return "0".into();
     }
+    // Rounded first to 12 significant digits: a value that is a tie in decimals (−0.21875)
+    // but computed a few ulps off it (−0.2187499999999999) printed one digit apart from its
+    // exact twin elsewhere in the same table. Then a tie is moved off by 1e-14 of itself,
+    // away from zero: rounded half up, as the course rounds (0.0028125 → 0.002813), where
+    // the formatter would take the binary value's side. Only a tie is that near a boundary:
+    // any other 12-digit value is at least 1e-12 of itself from one.
+    let x: f64 = format!("{x:.11e}").parse().unwrap_or(x);
+    let x = x + x * 1e-14;
+    let a = x.abs();
     let magnitude = math::log10(a).floor() as i32;
     let dec = (3 - magnitude).clamp(0, 9) as usize;
     let s = format!("{x:.dec$}");
@@ -104,6 +113,12 @@ mod tests {
         assert_eq!(significant(f64::NAN), "0");
         assert_eq!(significant(0.99999), "1.000", "rounding up to the next power keeps four digits");
         assert_eq!(significant(-9.99996), "-10.00");
+        // A tie computed a few ulps off prints as its exact twin (7/32 = 0.21875 exactly).
+        assert_eq!(significant(-0.21875), significant(-0.21875 + 3e-17));
+        assert_eq!(significant(-0.21875 + 3e-17), "-0.2188");
+        assert_eq!(significant(0.0028125), "0.002813", "half up, as the course rounds");
+        assert_eq!(significant(0.0028125 - 4e-19), "0.002813");
+        assert_eq!(significant(-1.0625), "-1.063");
     }
 
     #[test]
