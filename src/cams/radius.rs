@@ -108,23 +108,28 @@ pub struct Region {
     pub across: Vec2,
 }
 
-/// One φ's wedge of admissible centres in the (u, w) coordinates: its apex B′, the angle δ of
-/// its axis from d, and its half-angle α.
+/// One φ's wedge of admissible centres in the (u, w) coordinates: its apex B′ and the
+/// tangents of its two boundary rays' angles from d (δ ± α, δ the angle of its axis from d,
+/// α its half-angle), taken once: a wedge is asked its floor in every column of a nomogram.
 #[derive(Debug, Clone, Copy)]
 struct Wedge {
     u: f64,
     w: f64,
-    delta: f64,
-    alpha: f64,
+    /// tan(δ + α): the ray toward +u.
+    tan_plus: f64,
+    /// tan(δ − α): the ray toward −u.
+    tan_minus: f64,
 }
 
 impl Wedge {
+    fn new(u: f64, w: f64, delta: f64, alpha: f64) -> Wedge {
+        Wedge { u, w, tan_plus: tan(delta + alpha), tan_minus: tan(delta - alpha) }
+    }
+
     /// The lowest admissible height w above the column u.
     fn floor(&self, u: f64) -> f64 {
         let du = u - self.u;
-        // The boundary ray toward +u is at δ + α from d, toward −u at δ − α.
-        let gamma = if du >= 0.0 { self.delta + self.alpha } else { self.delta - self.alpha };
-        self.w + du / tan(gamma)
+        self.w + du / if du >= 0.0 { self.tan_plus } else { self.tan_minus }
     }
 }
 
@@ -168,12 +173,12 @@ impl Region {
     fn wedge(&self, phase: Phase, phi: f64) -> Wedge {
         let s = self.state(phi);
         let axis = -s.t;
-        Wedge {
-            u: s.analog.dot(self.across),
-            w: s.analog.dot(self.d),
-            delta: atan2(axis.dot(self.across), axis.dot(self.d)),
-            alpha: phase.allowed(&self.allowed),
-        }
+        Wedge::new(
+            s.analog.dot(self.across),
+            s.analog.dot(self.d),
+            atan2(axis.dot(self.across), axis.dot(self.d)),
+            phase.allowed(&self.allowed),
+        )
     }
 
     /// The lowest admissible height w above the column u for the wedge at φ of `phase`.
@@ -183,32 +188,32 @@ impl Region {
 
     /// W(u): the region's lower boundary in the column u (the maximum over both phases).
     pub fn floor(&self, u: f64) -> f64 {
-        self.floors(&[u])[0]
+        self.sampled(PHI_TOL).floor(u)
     }
 
-    /// W at many columns: each phase's wedges sampled once and shared by the columns, then
-    /// every column's sampled local maxima refined as [`sup`] does (the same values as
-    /// [`Region::floor`] column by column, without re-evaluating the law at every sample).
+    /// W at many columns as a drawing needs it, the wedges sampled once for all of them:
+    /// each column's maxima refined to [`tol::CAM_ANGLE_DRAWN`] (W then within 10⁻¹⁴ of its
+    /// curvature of [`Region::floor`]'s value, with a third fewer steps).
     pub fn floors(&self, us: &[f64]) -> Vec<f64> {
-        let mut out = vec![f64::NEG_INFINITY; us.len()];
-        for ph in Phase::BOTH {
+        let sampled = self.sampled(tol::CAM_ANGLE_DRAWN);
+        us.iter().map(|&u| sampled.floor(u)).collect()
+    }
+
+    /// Each phase's wedges at the [`grid`]'s angles, sampled once and shared by the columns
+    /// asked: the law is evaluated again only to refine a column's local maxima.
+    fn sampled(&self, phi_tol: f64) -> Sampled<'_> {
+        let of = |ph: Phase| {
             let span = ph.span(&self.program);
-            let wedges: Vec<Wedge> = (0..=SAMPLES).map(|k| self.wedge(ph, grid(span, k))).collect();
-            let mut vals = vec![0.0; wedges.len()];
-            for (w, &u) in out.iter_mut().zip(us) {
-                for (v, wedge) in vals.iter_mut().zip(&wedges) {
-                    *v = wedge.floor(u);
-                }
-                *w = w.max(refine(span, &vals, |phi| self.floor_at(ph, phi, u)).1);
-            }
-        }
-        out
+            (ph, span, (0..=SAMPLES).map(|k| self.wedge(ph, grid(span, k))).collect())
+        };
+        Sampled { region: self, phases: Phase::BOTH.map(of), phi_tol }
     }
 
     /// The nearest admissible centre to B₀ (the origin).
     pub fn nearest(&self, placement: Placement) -> Result<Centre, RadiusError> {
+        let sampled = self.sampled(PHI_TOL);
         let column = |u: f64| {
-            let w = self.floor(u).max(0.0);
+            let w = sampled.floor(u).max(0.0);
             (u * u + w * w, w)
         };
         let u = match (placement, self.follower) {
@@ -216,7 +221,7 @@ impl Region {
             (Placement::Offset(e), Follower::Translating) => e,
             (Placement::Free, _) => {
                 // |u*| ≤ r_min ≤ W(0): the column through B₀ bounds the search.
-                let bound = self.floor(0.0).max(0.0) * (1.0 + tol::BRACKET_MARGIN) + tol::CENTRE_SEARCH;
+                let bound = sampled.floor(0.0).max(0.0) * (1.0 + tol::BRACKET_MARGIN) + tol::CENTRE_SEARCH;
                 let m = minimise(
                     |u| Ok::<_, ()>(column(u).0),
                     -bound,
@@ -268,7 +273,27 @@ fn orientation(across: Vec2, d: Vec2) -> f64 {
 /// its neighbours. Returns (argmax, max).
 pub fn sup(span: (f64, f64), f: impl Fn(f64) -> f64) -> (f64, f64) {
     let vals: Vec<f64> = (0..=SAMPLES).map(|k| f(grid(span, k))).collect();
-    refine(span, &vals, f)
+    refine(span, &vals, f, PHI_TOL)
+}
+
+/// A region's wedges sampled on each phase's [`grid`].
+struct Sampled<'a> {
+    region: &'a Region,
+    phases: [(Phase, (f64, f64), Vec<Wedge>); 2],
+    /// Where the refinement of a column's maxima stops, radians.
+    phi_tol: f64,
+}
+
+impl Sampled<'_> {
+    /// W(u): every sampled local maximum over each phase refined as [`sup`] does.
+    fn floor(&self, u: f64) -> f64 {
+        let mut w = f64::NEG_INFINITY;
+        for (ph, span, wedges) in &self.phases {
+            let vals: Vec<f64> = wedges.iter().map(|wedge| wedge.floor(u)).collect();
+            w = w.max(refine(*span, &vals, |phi| self.region.floor_at(*ph, phi, u), self.phi_tol).1);
+        }
+        w
+    }
 }
 
 /// The k-th of the [`SAMPLES`] + 1 sample points of `span` (its end exactly).
@@ -277,8 +302,8 @@ fn grid((a, b): (f64, f64), k: usize) -> f64 {
 }
 
 /// The maximum of `f` from its values `vals` at the [`grid`] of `span`: every sampled local
-/// maximum refined between its neighbours.
-fn refine(span: (f64, f64), vals: &[f64], f: impl Fn(f64) -> f64) -> (f64, f64) {
+/// maximum refined between its neighbours to `phi_tol`.
+fn refine(span: (f64, f64), vals: &[f64], f: impl Fn(f64) -> f64, phi_tol: f64) -> (f64, f64) {
     let (a, n) = (span.0, SAMPLES);
     let at = |k: usize| grid(span, k);
     let mut best = (a, f64::NEG_INFINITY);
@@ -292,7 +317,7 @@ fn refine(span: (f64, f64), vals: &[f64], f: impl Fn(f64) -> f64) -> (f64, f64) 
             best = (at(k), vals[k]);
         }
         let (lo, hi) = (at(k.saturating_sub(1)), at((k + 1).min(n)));
-        if let Ok(m) = minimise(|x| Ok::<_, ()>(-f(x)), lo, hi, PHI_TOL)
+        if let Ok(m) = minimise(|x| Ok::<_, ()>(-f(x)), lo, hi, phi_tol)
             && -m.fx > best.1
         {
             best = (m.x, -m.fx);

@@ -15,6 +15,7 @@ const TITLE_TEXT_LARGE: f64 = 5.0;
 /// How every table's part id begins: "table.velocities".
 pub const PART: &str = "table.";
 
+#[derive(Clone)]
 pub struct Table {
     /// Its id on the sheet ([`PART`] and its name: "table.velocities"), its SVG group's;
     /// empty for none.

@@ -93,6 +93,12 @@ pub const INSIDE_PHASE: f64 = 1e-12;
 /// golden section cannot shrink past.
 pub const CAM_ANGLE_SEARCH: f64 = 1e-11;
 
+/// Radians: where a drawing's search for a maximum over the cam's φ stops (the nomogram's
+/// zone boundary at its 241 columns). The value found is then within 10⁻¹⁴ of its
+/// curvature, far below a thousandth of a millimetre on paper; [`CAM_ANGLE_SEARCH`] costs
+/// half as many steps again for digits no drawing shows.
+pub const CAM_ANGLE_DRAWN: f64 = 1e-7;
+
 /// Metres: where the search for the cam's centre along its column stops, and what pads the
 /// column's bound so that the bracket is never empty.
 pub const CENTRE_SEARCH: f64 = 1e-12;
@@ -162,6 +168,11 @@ pub const SINGULAR: f64 = 1e-12;
 /// re-parameterises its samples or checks a trajectory (metres, far below every fit's
 /// tolerance).
 pub const NEAREST: f64 = 1e-12;
+
+/// Of a Bézier piece's parameter (0 to 1): where Newton's search for the point nearest a
+/// sample stops. A piece is at most metres long, so the point is then found to well below
+/// [`NEAREST_MEASURE`] (and the distance, at a minimum, to its square).
+pub const NEWTON_PARAMETER: f64 = 1e-13;
 
 /// In the curve's units: the accuracy of the nearest-point search when a fit's deviation is
 /// measured, a tenth of [`NEAREST`], so that the measured deviation is the fit's and not the

@@ -27,8 +27,8 @@ use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::table::{self, CELL_TEXT, Table};
 use crate::drawing::text::{LINE_PITCH, LabelText, TooLong, paragraph, wrap};
 use crate::project::{CamProject, Project};
-use crate::report::AnswerKeys;
-use kurbo::{Point, Rect};
+use crate::report::{AnswerKeys, NoteTable};
+use kurbo::{Point, Rect, Vec2};
 use labels::CamWords;
 use nomogram::Placement;
 use regions::{COLUMN_WIDTHS, ColumnWidth, Content, Regions, SHEET, ViewSize, view_area};
@@ -99,8 +99,8 @@ impl Views {
     fn content<'a>(
         &self,
         (plan, text_h): (&'a diagrams::Plan, f64),
-        law: &'a [Table],
-        rest: &'a [Table],
+        law: &'a [regions::Size],
+        rest: &'a [regions::Size],
     ) -> Content<'a> {
         Content { nomogram: self.nomogram.clone(), profile: self.profile.clone(), plan, text_h, law, rest }
     }
@@ -181,8 +181,9 @@ fn head_h(title: &str, w: f64) -> f64 {
 /// layout is no less clean: a column too narrow for its views' room leaves a band across the
 /// sheet's middle; one too wide shrinks the views.
 pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
-    let usual = build_at(ctx, p, COLUMN_WIDTHS[0])?;
-    let wide = COLUMN_WIDTHS[1..].iter().filter_map(|&w| build_at(ctx, p, w).ok());
+    let prepared = Prepared::new(ctx, p);
+    let usual = build_at(ctx, p, &prepared, COLUMN_WIDTHS[0])?;
+    let wide = COLUMN_WIDTHS[1..].iter().filter_map(|&w| build_at(ctx, p, &prepared, w).ok());
     let (faults, empty) = measured(&usual);
     let first = ((faults, empty - 0.005), usual);
     let better = |a: (usize, f64), b: (usize, f64)| a.0 <= b.0 && a.1 < b.1;
@@ -201,27 +202,79 @@ fn measured(b: &CamBuild) -> (usize, f64) {
     (l.texts_crossed + l.text_overlaps + l.outside_region, empty)
 }
 
+/// What sheet 3 draws whatever its column's width: the integration, the positions, the
+/// notes' tables in both letterings, the fitted profiles and the views' extents, computed
+/// once for the widths tried.
+struct Prepared {
+    integrated: [Integrated; 2],
+    errors: (f64, f64),
+    phis: Vec<f64>,
+    notes: Vec<NoteTable>,
+    fitted: profile_view::Pieces,
+    /// The notes' tables in [`CELL_TEXT`] and in [`LARGE_TEXT`] lettering.
+    small: Lettered,
+    large: Lettered,
+    nomogram_extent: regions::Extent,
+    nomogram_reach: Vec<(Vec2, Vec2)>,
+    profile_extent: regions::Extent,
+}
+
+impl Prepared {
+    fn new(ctx: &Context, p: &CamProject) -> Self {
+        let lang = ctx.info.language;
+        let d = &p.design;
+        let integrated = integrate::turn(&d.spec.program, DIVISIONS);
+        let errors = diagrams::error_percent(d, &integrated);
+        let phis = nomogram::positions(d, DIVISIONS);
+        let notes = tables::notes(d, &phis, errors, lang, ctx.first_table);
+        let (law, rest): (Vec<_>, Vec<_>) = notes.iter().partition(|n| tables::is_law(n));
+        let drawn = |ns: &[&NoteTable], h: f64| -> Vec<Table> {
+            ns.iter().map(|n| Table { text_h: h, ..tables::sheet_table(n, lang) }).collect()
+        };
+        let small = Lettered::new(drawn(&law, CELL_TEXT), drawn(&rest, CELL_TEXT));
+        let large = Lettered::new(drawn(&law, LARGE_TEXT), drawn(&rest, LARGE_TEXT));
+        Prepared {
+            nomogram_extent: nomogram::extent(d, &phis),
+            nomogram_reach: nomogram::reach(d),
+            profile_extent: profile_view::extent(d),
+            fitted: profile_view::fit(d),
+            integrated,
+            errors,
+            phis,
+            notes,
+            small,
+            large,
+        }
+    }
+}
+
+/// The law's tables and the rest in one lettering, with their sizes measured once.
+struct Lettered {
+    law: Vec<Table>,
+    rest: Vec<Table>,
+    law_sizes: Vec<regions::Size>,
+    rest_sizes: Vec<regions::Size>,
+}
+
+impl Lettered {
+    fn new(law: Vec<Table>, rest: Vec<Table>) -> Self {
+        Lettered { law_sizes: regions::sizes(&law), rest_sizes: regions::sizes(&rest), law, rest }
+    }
+}
+
 /// Builds sheet 3 with the diagrams' column at most `width` wide.
-fn build_at(ctx: &Context, p: &CamProject, width: ColumnWidth) -> Result<CamBuild, SheetError> {
+fn build_at(ctx: &Context, p: &CamProject, prepared: &Prepared, width: ColumnWidth) -> Result<CamBuild, SheetError> {
     let words = CamWords::new(ctx.info.language);
-    let (l, lang) = (words.sheet, words.lang);
+    let l = words.sheet;
     let d = &p.design;
-    let integrated = integrate::turn(&d.spec.program, DIVISIONS);
-    let errors = diagrams::error_percent(d, &integrated);
-    let phis = nomogram::positions(d, DIVISIONS);
-    let notes = tables::notes(d, &phis, errors, lang, ctx.first_table);
-    let fitted = profile_view::fit(d);
-    let (law, rest): (Vec<_>, Vec<_>) = notes.iter().partition(|n| tables::is_law(n));
-    let drawn = |ns: &[&crate::report::NoteTable], h: f64| -> Vec<Table> {
-        ns.iter().map(|n| Table { text_h: h, ..tables::sheet_table(n, lang) }).collect()
-    };
-    let small = (drawn(&law, CELL_TEXT), drawn(&rest, CELL_TEXT));
-    let large = (drawn(&law, LARGE_TEXT), drawn(&rest, LARGE_TEXT));
+    let Prepared { integrated, errors, phis, notes, fitted, small, large, .. } = prepared;
+    let (integrated, errors, phis) = (integrated.clone(), *errors, phis.as_slice());
     let mut column = plan_column(p, errors, fitted.deviation, &words, width)?;
     // Besides the steps, the diagrams exactly as tall as leaves the law's tables room under
     // them in either lettering (a step short of that leaves a band empty above the tables).
-    let under = |law: &[Table]| column.room - regions::diagrams_above(law, column.plan.width, column.text_h);
-    let mut shorter: Vec<f64> = SHORTER.iter().copied().chain([under(&small.0), under(&large.0)]).collect();
+    let under = |law: &[regions::Size]| column.room - regions::diagrams_above(law, column.plan.width, column.text_h);
+    let mut shorter: Vec<f64> =
+        SHORTER.iter().copied().chain([under(&small.law_sizes), under(&large.law_sizes)]).collect();
     shorter.retain(|s| *s >= 0.0);
     shorter.sort_by(f64::total_cmp);
     shorter.dedup();
@@ -233,40 +286,40 @@ fn build_at(ctx: &Context, p: &CamProject, width: ColumnWidth) -> Result<CamBuil
     let (lay, (law, rest), nm, pv, prof) = loop {
         let views = Views {
             nomogram: ViewSize {
-                extent: nomogram::extent(d, &phis),
-                reach: nomogram::reach(d),
+                extent: prepared.nomogram_extent,
+                reach: prepared.nomogram_reach.clone(),
                 heading_w: heading_w(l.nomogram_title()),
                 fine,
             },
             profile: ViewSize {
-                extent: profile_view::extent(d),
+                extent: prepared.profile_extent,
                 reach: Vec::new(),
                 heading_w: heading_w(l.profile_title()),
                 fine: false,
             },
         };
-        let arranged = |plan: &diagrams::Plan, (law, rest): &(Vec<Table>, Vec<Table>)| {
-            regions::regions(&views.content((plan, column.text_h), law, rest))
+        let arranged = |plan: &diagrams::Plan, t: &Lettered| {
+            regions::regions(&views.content((plan, column.text_h), &t.law_sizes, &t.rest_sizes))
         };
         let kept = |a: &Regions, b: &Regions| a.profile_mu <= b.profile_mu && a.nomogram_mu <= b.nomogram_mu;
         // The diagrams as tall as the column allows, unless shorter ones leave the views larger
         // (the nomogram under them, the profile alone on the right at a larger scale): planned
         // for the tables in each lettering.
-        let planned = |tables: &(Vec<Table>, Vec<Table>)| {
+        let planned = |tables: &Lettered| {
             let tried = plans.iter().map(|plan| (*plan, arranged(plan, tables))).collect();
             let plan = balanced(tried).map_or(column.plan, |(plan, _)| plan);
             (plan, arranged(&plan, tables))
         };
-        let (small_plan, on_small) = planned(&small);
-        let (large_plan, on_large) = planned(&large);
+        let (small_plan, on_small) = planned(small);
+        let (large_plan, on_large) = planned(large);
         // The tables in 3.5 mm lettering where the views keep their scales beside them and
         // the diagrams most of their height.
         let lettered_large = kept(&on_large, &on_small)
-            && on_large.tables_fit(&large.0, &large.1)
+            && on_large.tables_fit(&large.law_sizes, &large.rest_sizes)
             && large_plan.height >= small_plan.height * LARGE_KEEPS;
         column.plan = if lettered_large { large_plan } else { small_plan };
-        let (lay, tables) = if lettered_large { (on_large, &large) } else { (on_small, &small) };
-        let content = views.content((&column.plan, column.text_h), &tables.0, &tables.1);
+        let (lay, tables) = if lettered_large { (on_large, large) } else { (on_small, small) };
+        let content = views.content((&column.plan, column.text_h), &tables.law_sizes, &tables.rest_sizes);
         let (nomogram_room, profile_room) = lay.label_rooms();
         let mut nm = view_group("nomogram", nomogram_room, l.nomogram_title());
         let mut nl = Labels::new();
@@ -275,7 +328,7 @@ fn build_at(ctx: &Context, p: &CamProject, width: ColumnWidth) -> Result<CamBuil
             extent: content.nomogram.at(lay.nomogram_mu),
             mu: lay.nomogram_mu,
         };
-        nomogram::draw(&mut nm, &at, d, &phis, &mut nl, &words);
+        nomogram::draw(&mut nm, &at, d, phis, &mut nl, &words);
         scale_note(&mut nm, lay.nomogram_mu, None, &words);
         let placed = nl.place(&mut nm, nomogram_room);
         if fine && placed.contains(&false) {
@@ -286,23 +339,23 @@ fn build_at(ctx: &Context, p: &CamProject, width: ColumnWidth) -> Result<CamBuil
         let mut pl = Labels::new();
         let at =
             Placement { area: view_area(lay.profile), extent: content.profile.at(lay.profile_mu), mu: lay.profile_mu };
-        let prof = profile_view::draw(&mut pv, &at, d, &fitted, &phis, &mut pl, &words);
+        let prof = profile_view::draw(&mut pv, &at, d, fitted, phis, &mut pl, &words);
         scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), &words);
         pl.place(&mut pv, profile_room);
-        break (lay, if lettered_large { large } else { small }, nm, pv, prof);
+        break (lay, (tables.law.clone(), tables.rest.clone()), nm, pv, prof);
     };
     let (dg, scales) = diagrams_group(&lay, &column, p, &integrated, &words);
-    let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), &notes);
-    let mut measured = segments::diagrams(d, &scales, &integrated, &phis, &answers);
+    let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), notes);
+    let mut measured = segments::diagrams(d, &scales, &integrated, phis, &answers);
     measured.extend(segments::nomogram(d, lay.nomogram_mu, &answers));
-    measured.extend(segments::profile(d, prof.mu, &phis, &answers));
+    measured.extend(segments::profile(d, prof.mu, phis, &answers));
     let mut groups = vec![dg, nm, pv];
     groups.extend(table_groups(&lay, law, rest));
     let composition = Composition {
         name: l.sheet_name().to_string(),
         mu_l: prof.mu,
         groups,
-        tables: notes,
+        tables: notes.clone(),
         results: serde_json::Value::Null,
         diagnostics: diagrams::squeezed(d, &scales).into_iter().collect(),
         smallest_plan_mm: None,

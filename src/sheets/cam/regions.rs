@@ -44,7 +44,7 @@ pub struct Regions {
 }
 
 /// A view's box in metres: its lower and upper corners.
-type Extent = (Vec2, Vec2);
+pub type Extent = (Vec2, Vec2);
 
 /// A view as the regions size it: its box in metres; what it draws at a paper distance from
 /// a world point (a dimension set so many mm under the point it measures from); and the
@@ -100,8 +100,9 @@ pub struct Content<'a> {
     pub profile: ViewSize,
     pub plan: &'a diagrams::Plan,
     pub text_h: f64,
-    pub law: &'a [Table],
-    pub rest: &'a [Table],
+    /// The sizes of the law's tables and of the rest (width, height), mm.
+    pub law: &'a [Size],
+    pub rest: &'a [Size],
 }
 
 /// The room the column and the strip leave.
@@ -135,12 +136,11 @@ impl Frame {
 impl Regions {
     /// Whether the tables fit the regions left for them: the law's each as wide as the
     /// column at most where they go under it, the rest (or all) flowed into the strip.
-    pub fn tables_fit(&self, law: &[Table], rest: &[Table]) -> bool {
-        let flows =
-            |ts: Vec<(f64, f64)>, r: Rect| table::flow_height(&ts, r.width(), 3.0).is_some_and(|h| h <= r.height());
+    pub fn tables_fit(&self, law: &[Size], rest: &[Size]) -> bool {
+        let flows = |ts: &[Size], r: Rect| table::flow_height(ts, r.width(), 3.0).is_some_and(|h| h <= r.height());
         match self.law_tables {
-            Some(col) => sizes(law).iter().all(|s| s.0 <= col.width()) && flows(sizes(rest), self.tables),
-            None => flows(sizes(law).into_iter().chain(sizes(rest)).collect(), self.tables),
+            Some(col) => law.iter().all(|s| s.0 <= col.width()) && flows(rest, self.tables),
+            None => flows(&[law, rest].concat(), self.tables),
         }
     }
 
@@ -171,18 +171,22 @@ fn grown(r: Rect, others: &[Rect]) -> Rect {
 
 /// The height the law's tables take under a column `width` wide, with the gap above them,
 /// mm: flowed in columns (side by side where the column is wide enough), else stacked.
-pub fn law_height(law: &[Table], width: f64) -> f64 {
-    let stacked = sizes(law).iter().map(|s| s.1 + 3.0).sum::<f64>();
-    table::flow_height(&sizes(law), width, 3.0).map_or(stacked, |h| h.min(stacked)) + GAP
+pub fn law_height(law: &[Size], width: f64) -> f64 {
+    let stacked = law.iter().map(|s| s.1 + 3.0).sum::<f64>();
+    table::flow_height(law, width, 3.0).map_or(stacked, |h| h.min(stacked)) + GAP
 }
 
 /// The height the column's diagrams `width` wide (with the column's margins) may take with
 /// the law's tables `law` under them, mm.
-pub fn diagrams_above(law: &[Table], width: f64, text_h: f64) -> f64 {
+pub fn diagrams_above(law: &[Size], width: f64, text_h: f64) -> f64 {
     SHEET.height() - law_height(law, width + 4.0) - text_h - 5.0
 }
 
-fn sizes(ts: &[Table]) -> Vec<(f64, f64)> {
+/// A table's width and height, mm.
+pub type Size = (f64, f64);
+
+/// The tables' sizes, measured once for the arrangements tried.
+pub fn sizes(ts: &[Table]) -> Vec<Size> {
     ts.iter().map(Table::size).collect()
 }
 
@@ -197,10 +201,9 @@ pub fn regions(c: &Content) -> Regions {
     let below = nomogram_in_column(c, &f);
     // Both on the right.
     let law_h = law_height(c.law, f.left_w);
-    let law_fits = f.column_used + law_h <= SHEET.height() && sizes(c.law).iter().all(|s| s.0 <= f.left_w);
-    let all: Vec<(f64, f64)> = sizes(c.law).into_iter().chain(sizes(c.rest)).collect();
-    let rest = sizes(c.rest);
-    let tables = f.strip(if law_fits { &rest } else { &all });
+    let law_fits = f.column_used + law_h <= SHEET.height() && c.law.iter().all(|s| s.0 <= f.left_w);
+    let all = [c.law, c.rest].concat();
+    let tables = f.strip(if law_fits { c.rest } else { &all });
     let views = f.views_above(tables);
     let law_tables = law_fits.then(|| Rect::new(SHEET.x0, SHEET.y1 - (law_h - GAP), SHEET.x0 + f.left_w, SHEET.y1));
     let diagrams = Rect::new(SHEET.x0, SHEET.y0, SHEET.x0 + f.left_w, law_tables.map_or(SHEET.y1, |r| r.y0 - GAP));
@@ -232,8 +235,7 @@ pub fn regions(c: &Content) -> Regions {
 
 /// The nomogram under the notes in the diagrams' column, the profile alone on the right.
 fn nomogram_in_column(c: &Content, f: &Frame) -> Option<Regions> {
-    let all: Vec<(f64, f64)> = sizes(c.law).into_iter().chain(sizes(c.rest)).collect();
-    let tables = f.strip(&all);
+    let tables = f.strip(&[c.law, c.rest].concat());
     let views = f.views_above(tables);
     let column = Rect::new(SHEET.x0, SHEET.y0 + f.column_used + GAP, SHEET.x0 + f.left_w, SHEET.y1);
     let n = fit_view(&c.nomogram, column, false)
