@@ -44,9 +44,10 @@ struct Stroke {
 const STROKE_SAME_MM: f64 = 0.5;
 /// The length of a slider's stroke each of its position numbers needs (2.5 mm lettering), mm.
 const SLIDER_NUMBER_MM: f64 = 5.0;
-/// Positions whose every point is nearer than this on paper are one drawn position, mm
-/// (about two thin lines' width).
-const SAME_POSITION_MM: f64 = 0.5;
+/// Positions whose every point is nearer than this on paper are one drawn position, mm:
+/// GOST 2.303's least distance between parallel lines (closer, two positions print as one
+/// thick line with two numbers).
+const SAME_POSITION_MM: f64 = 0.8;
 /// The length of the crank pin's circle each position number needs in 3.5 mm lettering, mm.
 const CROWDED_NUMBERS: f64 = 8.0;
 

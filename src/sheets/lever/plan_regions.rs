@@ -139,8 +139,15 @@ pub(super) fn plans_group(
         let mu = sizing.mu[i];
         let mut labels = Labels::new();
         let title = l.position(&pos.label);
-        let c =
-            PlanCell { cell, title: &title, plan, mu, pole: r.pole, scale_line: sizing.own(i).then(|| scale_line(mu)) };
+        let c = PlanCell {
+            cell,
+            title: &title,
+            plan,
+            mu,
+            pole: r.pole,
+            scale_line: sizing.own(i).then(|| scale_line(mu)),
+            extent: None,
+        };
         let start = g.mark();
         draw_plan(&mut g, &c, &mut labels);
         labels.place(&mut g, label_bounds(cell));

@@ -302,6 +302,9 @@ pub struct PlanCell<'a> {
     pub pole: &'a str,
     /// The plan's own scale line, when it has one.
     pub scale_line: Option<LabelText>,
+    /// The box (plan units) centred in the cell: the plan's own when none, the lever's with
+    /// its force arrows.
+    pub extent: Option<Rect>,
 }
 
 /// Draws a plan's title, vectors and image points, and asks `labels` for its letters;
@@ -316,7 +319,7 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
     }
     let inner = Rect::new(cell.x0 + 1.0, top, cell.x1 - 1.0, cell.y1 - 1.0);
     let (plan, mu) = (c.plan, c.mu);
-    let bb = plan_bbox(plan);
+    let bb = c.extent.unwrap_or_else(|| plan_bbox(plan));
     let area_c = inner.inflate(-MARGIN, -MARGIN).center();
     // Paper position of the pole: the plan's box centred in the cell.
     let pole_p = Point::new(area_c.x - (bb.center().x) / mu, area_c.y + (bb.center().y) / mu);

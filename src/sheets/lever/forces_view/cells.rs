@@ -4,8 +4,8 @@
 
 use super::group::{GroupLayout, group_layout, group_scales};
 use super::load::cell_size as load_cell;
-use super::zhukovsky::{DESCENT, LEVER_LINES, lever_arrow_scale, lever_legend};
-use super::{ARROW_MAX, ForcesInput, LINE};
+use super::zhukovsky::{DESCENT, LEVER_LINES, lever_arrow_scale, lever_extent, lever_legend};
+use super::{ForcesInput, LINE};
 use crate::drawing::scale;
 use crate::lever::plans::{Plan, velocity_plan};
 use crate::num::tol;
@@ -98,6 +98,10 @@ type PolygonKey = (usize, u64, u64, bool);
 /// A group cell's layout, width and height.
 type LaidOut = (Rc<GroupLayout>, f64, f64);
 
+/// Room round the lever's box (its plan and its arrows' tips) for the letters and the
+/// force labels set beside the arrows, mm.
+const LEVER_LABEL_ROOM: f64 = 6.0;
+
 pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let memo = inp.memo;
     let mut out = Vec::new();
@@ -123,10 +127,11 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let (bb, mu_f) = (*bb, *mu_f);
     let mu = s.round_up(bb.width().max(bb.height()) / s.lever_box);
     let (w, h) = *memo.lever_cells.borrow_mut().entry(mu.to_bits()).or_insert_with(|| {
-        let pad = MARGIN + ARROW_MAX + 4.0;
-        let w = (bb.width() / mu + 2.0 * pad).max(110.0);
+        let ext = lever_extent(inp, lever, mu, mu_f);
+        let pad = MARGIN + LEVER_LABEL_ROOM;
+        let w = (ext.width() / mu + 2.0 * pad).max(110.0);
         let text_lines = LEVER_LINES + lever_legend(inp, mu_f, w - 4.0).len();
-        let h = TITLE + bb.height() / mu + 2.0 * pad + text_lines as f64 * LINE + DESCENT;
+        let h = TITLE + ext.height() / mu + 2.0 * pad + text_lines as f64 * LINE + DESCENT;
         (w, h)
     });
     out.push(Cell { w, h, content: Content::Lever(Rc::clone(lever), mu, mu_f) });

@@ -2,7 +2,7 @@
 //! and inertia moments) beside its force polygon, the vector equation, the legend and the
 //! scales under them.
 
-use super::arrows::{Arrows, arrow_scale};
+use super::arrows::{Arrows, arrow_scale, twins_reach};
 use super::cells::Sizes;
 use super::inset::{self, Inset, Place};
 use super::legend::{
@@ -114,10 +114,16 @@ pub(super) fn group_layout(
     grow: bool,
 ) -> (GroupLayout, f64, f64) {
     let world = world_box(inp, poly);
-    let (drawing_w, drawing_h) = (world.width() / mu_l + 2.0 * PAD, world.height() / mu_l + 2.0 * PAD);
+    let mu_f = arrow_scale(poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max));
+    // Twin forces at one point are slid along their line past each other: room for the
+    // longest such row (on paper the y axis turns over, which keeps every angle between
+    // the forces, so the world's directions serve).
+    let on_paper = |v: Vec2| Point::new(v.x / mu_l, v.y / mu_l);
+    let reach = twins_reach(poly.terms.iter().map(|t| (on_paper(t.at), t.force)), mu_f);
+    let pad = PAD.max(reach + PAD - ARROW_MAX);
+    let (drawing_w, drawing_h) = (world.width() / mu_l + 2.0 * pad, world.height() / mu_l + 2.0 * pad);
     let chain = chain(poly);
     let chain_box = bbox_of(&chain);
-    let mu_f = arrow_scale(poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max));
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let poly_size = (poly_w, poly_h);
     let (insets, place, w, body_h) = with_insets(inp, poly, (&chain, mu_p), (drawing_w, drawing_h), poly_size, grow);

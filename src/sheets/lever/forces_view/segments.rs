@@ -73,8 +73,7 @@ pub(super) fn lever_arms(inp: &ForcesInput, mu: f64, part: &str) -> Vec<Segment>
             if l.couple { (format!("P_M{}", inp.m.links[l.on].number), None) } else { force_name(inp, l.kind, l.on) };
         out.push(Segment::new(format!("{part}.h_{name}"), format!("h_{name}"), arm(l.image, l.force), "m/s", mu));
     }
-    let crank = inp.m.crank();
-    let a_img = inp.state.points[crank.pin].v.turn_90() * inp.m.sense().sign();
+    let a_img = super::zhukovsky::balancing_image(inp);
     out.push(Segment::new(format!("{part}.h_P_m"), "h_P_m", arm(a_img, f.dir_m), "m/s", mu));
     unique(out)
 }

@@ -1,7 +1,7 @@
 //! The Zhukovsky lever: the velocity plan turned by 90° with every force at its point's
 //! image, the balancing force P′ₘ from it and its difference from the kinetostatics.
 
-use super::arrows::{Arrows, arrow_scale};
+use super::arrows::{Arrows, arrow_scale, twin_rows};
 use super::legend::{
     couple_label, force_label, scale_item, text_rows, value_item, with_semicolon, with_short_note, wrap_items,
 };
@@ -13,7 +13,7 @@ use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::plans::Plan;
 use crate::num::math::Norm;
-use crate::sheets::lever::plans_view::{PlanCell, draw_plan};
+use crate::sheets::lever::plans_view::{PlanCell, draw_plan, plan_bbox};
 use kurbo::{Rect, Vec2};
 
 /// Lines under the lever besides its legend: μ_v and μ_F, P′ₘ, Δ.
@@ -21,6 +21,24 @@ pub(super) const LEVER_LINES: usize = 3;
 /// Room under the last line's baseline for its subscripts and descenders, mm (3.5 mm
 /// lettering).
 pub(super) const DESCENT: f64 = 1.5;
+
+/// The crank pin's image on the lever, where P′ₘ is applied.
+pub(super) fn balancing_image(inp: &ForcesInput) -> Vec2 {
+    inp.state.points[inp.m.crank().pin].v.turn_90() * inp.m.sense().sign()
+}
+
+/// The lever's box at `mu` ((m/s)/mm) with its forces at `mu_f`, in the plan's units: the
+/// turned plan and every force arrow's tip, twins slid along their lines as drawn. The
+/// lever's cell is sized round it and the drawing centred on it, so arrows that point
+/// into the plan leave no room unused and a row of twins has the room it takes.
+pub(super) fn lever_extent(inp: &ForcesInput, plan: &Plan, mu: f64, mu_f: f64) -> Rect {
+    let f = &inp.fa.forces;
+    let forces = f.lever.iter().map(|l| (l.image, l.force)).chain([(balancing_image(inp), f.dir_m * f.p_m_lever)]);
+    // Twins are found on paper; turning the y axis over keeps every angle between forces.
+    let rows = twin_rows(forces.map(|(at, force)| (kurbo::Point::new(at.x / mu, at.y / mu), force)), mu_f);
+    let tips = rows.iter().map(|&(at, d, reach)| kurbo::Point::new(at.x * mu, at.y * mu) + d * (reach * mu));
+    tips.fold(plan_bbox(plan), |r, p| r.union_pt(p))
+}
 
 pub(super) fn lever_arrow_scale(inp: &ForcesInput) -> f64 {
     let f = &inp.fa.forces;
@@ -59,8 +77,15 @@ pub(super) fn draw_lever(
     let legend = lever_legend(inp, mu_f, r.width() - 4.0);
     let text_h = (LEVER_LINES + legend.len()) as f64 * LINE + DESCENT;
     let plan_cell = Rect::new(r.x0, r.y0, r.x1, r.y1 - text_h);
-    let cell =
-        PlanCell { cell: plan_cell, title: inp.words.sheet.lever_title(), plan, mu, pole: "p", scale_line: None };
+    let cell = PlanCell {
+        cell: plan_cell,
+        title: inp.words.sheet.lever_title(),
+        plan,
+        mu,
+        pole: "p",
+        scale_line: None,
+        extent: Some(lever_extent(inp, plan, mu, mu_f)),
+    };
     let pole = draw_plan(g, &cell, labels);
     let view = View::new(pole, mu);
     let at = |v: Vec2| view.p(v);
@@ -69,9 +94,13 @@ pub(super) fn draw_lever(
         let label = if l.couple { couple_label(inp, l.on) } else { force_label(inp, l.kind, l.on) };
         arrows.arrow(g, labels, at(l.image), l.force, label);
     }
-    let crank = inp.m.crank();
-    let a_img = inp.state.points[crank.pin].v.turn_90() * inp.m.sense().sign();
-    arrows.arrow(g, labels, at(a_img), f.dir_m * f.p_m_lever, LabelText::new("P′", inp.words.sheet.sub_balancing()));
+    arrows.arrow(
+        g,
+        labels,
+        at(balancing_image(inp)),
+        f.dir_m * f.p_m_lever,
+        LabelText::new("P′", inp.words.sheet.sub_balancing()),
+    );
     let lang = inp.words.lang;
     let lines = [
         vec![
