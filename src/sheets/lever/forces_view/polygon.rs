@@ -62,12 +62,41 @@ pub(super) fn draw_polygon(
     if let Some(inner) = &poly.inner {
         let (a, b) = (p(pts[poly.split]), p(pts[0]));
         if (b - a).norm() >= tol::PAPER_INVISIBLE {
+            // On a side (R32 ≈ −R12 when link 2's own forces are small) it would hide under
+            // it: set beside it, toward the polygon's inside, as a free vector may be.
+            let sides: Vec<(Point, Point)> = (0..poly.terms.len()).map(|k| (p(pts[k]), p(pts[k + 1]))).collect();
+            let shift = if lies_on(a, b, &sides) { inward(a, b, centre) * BESIDE_SIDE } else { Vec2::ZERO };
+            let (a, b) = (a + shift, b + shift);
             vector(g, a, b, DASHED);
             // The inner reaction runs inside the polygon: its label beside it, either side.
             labels.add(a.midpoint(b), (b - a).turn_90(), force_label(inp, inner.kind, inner.on), 3.5);
         }
     }
     g.dot(p(pts[0]), 0.5);
+}
+
+/// How far an inner reaction lying on a side is set beside it, mm: clear of the side's
+/// 0.5 mm stroke by twice GOST 2.303's least gap between parallel lines.
+const BESIDE_SIDE: f64 = 1.8;
+
+/// Whether the segment a–b runs along the drawn `sides` for most of its length: each of its
+/// inner sample points within GOST 2.303's 0.8 mm of some side.
+pub(super) fn lies_on(a: Point, b: Point, sides: &[(Point, Point)]) -> bool {
+    let near = |q: Point| sides.iter().any(|&(s, e)| distance_to_segment(q, s, e) < 0.8);
+    (1..8).all(|k| near(a.lerp(b, k as f64 / 8.0)))
+}
+
+fn distance_to_segment(q: Point, s: Point, e: Point) -> f64 {
+    let d = e - s;
+    let len2 = d.dot(d);
+    let t = if len2 > 0.0 { ((q - s).dot(d) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    (q - s.lerp(e, t)).norm()
+}
+
+/// The unit normal of a–b toward `centre` (either, where the centre is on its line).
+fn inward(a: Point, b: Point, centre: Point) -> Vec2 {
+    let n = (b - a).turn_90() / (b - a).norm();
+    if n.dot(centre - a.midpoint(b)) < 0.0 { -n } else { n }
 }
 
 /// The shortest side [`draw_polygon`] labels on the polygon, and the shortest its
