@@ -436,3 +436,44 @@ fn the_mesh_dimensions_s_e_and_p_on_wheel_1_in_true_size() {
         assert!(b.svg.contains(&written), "{written} on the sheet");
     }
 }
+
+/// The kinematic scheme draws each planet on its axle in a bearing (GOST 2.770: a revolute
+/// pair with the carrier, a short line along the axle on each side, not hatched): on the
+/// worked example's scheme, both planets shown have one on their axle, and so does each of
+/// a double planet's.
+#[test]
+fn each_planet_turns_on_its_axle_in_a_bearing() {
+    use tmm_sheets::drawing::path::Seg;
+    use tmm_sheets::drawing::scene::{Item, MAIN};
+    for name in ["worked-example", "gears/shifted-double-planet"] {
+        let p = pipeline::load(&fixture_text(name)).unwrap();
+        let b = pipeline::build(&p, &[2]).unwrap().remove(0);
+        let g = b.output.scene.groups.iter().find(|g| g.id == "planetary").expect("a planetary group");
+        // Horizontal thick lines (the scheme's axis runs across the sheet).
+        let flat: Vec<(f64, f64, f64)> = g
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                Item::Path { path, pen } if *pen == MAIN => match path.segs.as_slice() {
+                    [Seg::Line(e)] if (e.y - path.start.y).abs() < 1e-9 => {
+                        Some((path.start.x.min(e.x), path.start.x.max(e.x), e.y))
+                    }
+                    _ => None,
+                },
+                _ => None,
+            })
+            .collect();
+        // A bearing: two 5 mm lines 1.6 mm either side of a longer line (the axle) they lie along.
+        let bearings = flat
+            .iter()
+            .filter(|a| (a.1 - a.0 - 5.0).abs() < 1e-6)
+            .filter(|a| {
+                flat.iter().any(|axle| {
+                    axle.1 - axle.0 > 10.0 && (axle.2 - a.2 - 1.6).abs() < 1e-6 && axle.0 < a.0 && axle.1 > a.1
+                })
+            })
+            .filter(|a| flat.iter().any(|c| (c.2 - a.2 - 3.2).abs() < 1e-6 && (c.0 - a.0).abs() < 1e-6))
+            .count();
+        assert_eq!(bearings, 2, "{name}: one bearing on each of the two planets' axles the scheme shows");
+    }
+}

@@ -153,8 +153,11 @@ fn kinematic_scheme(g: &mut Group, side: Rect, st: &Drawn, labels: &mut Labels) 
             let (a, b) = lo(y(sign, r.carrier - r.planet2), y(sign, r.ring) - sign * half_gap);
             gear(g, x_ring, a, b);
         }
-        // The planet's axle on the carrier.
+        // The planet's axle on the carrier, the planet turning on it in a bearing (a
+        // revolute pair with the carrier: not hatched, as it is not the frame's).
         g.line(Point::new(x_sun, y(sign, r.carrier)), Point::new(x_h, y(sign, r.carrier)), MAIN);
+        let x_planet = if double { x_ring } else { x_sun };
+        axle_bearing(g, Point::new(x_planet + 0.45 * (x_h - x_planet), y(sign, r.carrier)));
         fixed_ring(g, x_ring, y(sign, r.ring) + sign * half_gap, sign);
     }
     // The bearings nearer the gears, the senses of rotation at the shafts' free ends.
@@ -206,6 +209,14 @@ fn bearing(g: &mut Group, c: Point) {
         let (a, b) = (c + Vec2::new(-3.5, sign * 2.2), c + Vec2::new(3.5, sign * 2.2));
         g.line(a, b, MAIN);
         symbols::hatch(g, a, b, Vec2::new(0.0, sign), 1.6);
+    }
+}
+
+/// The bearing of a planet on its axle at `c` (GOST 2.770's radial bearing: a short line
+/// along the axle on each side), in the carrier, so without the frame's hatching.
+fn axle_bearing(g: &mut Group, c: Point) {
+    for sign in [-1.0, 1.0] {
+        g.line(c + Vec2::new(-2.5, sign * 1.6), c + Vec2::new(2.5, sign * 1.6), MAIN);
     }
 }
 
