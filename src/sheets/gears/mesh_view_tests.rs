@@ -4,6 +4,30 @@
 use super::*;
 use crate::gears::pair::PairSpec;
 
+/// A pair of module 5 mm with shifts `x` and its wheels' exact outlines.
+fn pair_of(z: [u32; 2], x: [f64; 2]) -> (Pair, [Outline; 2]) {
+    let spec = PairSpec { shift: x, ..PairSpec::standard(0.005, z) };
+    let pair = Pair::new(&spec).unwrap();
+    let outlines = [Outline::new(&spec, &pair.wheels[0]), Outline::new(&spec, &pair.wheels[1])];
+    (pair, outlines)
+}
+
+fn input<'a>(pair: &'a Pair, outlines: &'a [Outline; 2]) -> MeshInput<'a> {
+    MeshInput { pair, outlines: [&outlines[0], &outlines[1]], lang: crate::drawing::labels::Language::En }
+}
+
+/// The mesh drawn as the sheet draws it, its labels placed, in a 420 × 580 mm group: the
+/// group and the mesh's view.
+fn drawn(inp: &MeshInput) -> (Group, View) {
+    let area = Rect::new(2.0, 10.0, 418.0, 540.0);
+    let mut g = Group::new("m", Rect::new(0.0, 0.0, 420.0, 580.0));
+    let mut labels = Labels::new();
+    let d = draw_mesh(&mut g, area, inp, &mut labels);
+    labels.place(&mut g, area);
+    let (v, _) = placement(inp.pair, area, d.mu);
+    (g, v)
+}
+
 /// Half the angular thickness of a wheel's tooth at radius `r` (root ≤ r ≤ tip), exact:
 /// the involute above the junction, the fillet below (its radius grows monotonically
 /// from the root to the junction, so a bisection finds the point).
@@ -129,20 +153,9 @@ fn each_mesh_dimension_value_is_nearest_its_own_arc() {
         ([10, 27], [0.0, 0.0]),
         ([25, 60], [0.2, 0.0]),
     ] {
-        let spec = PairSpec { shift: x, ..PairSpec::standard(0.005, z) };
-        let pair = Pair::new(&spec).unwrap();
-        let outlines = [Outline::new(&spec, &pair.wheels[0]), Outline::new(&spec, &pair.wheels[1])];
-        let area = Rect::new(2.0, 10.0, 418.0, 540.0);
-        let inp = MeshInput {
-            pair: &pair,
-            outlines: [&outlines[0], &outlines[1]],
-            lang: crate::drawing::labels::Language::En,
-        };
-        let mut g = Group::new("m", Rect::new(0.0, 0.0, 420.0, 580.0));
-        let mut labels = Labels::new();
-        let d = draw_mesh(&mut g, area, &inp, &mut labels);
-        labels.place(&mut g, area);
-        let (v, _) = placement(&pair, area, d.mu);
+        let (pair, outlines) = pair_of(z, x);
+        let inp = input(&pair, &outlines);
+        let (g, v) = drawn(&inp);
         let o1 = v.p(Vec2::ZERO);
         let root = v.len(pair.wheels[0].root);
         let (r_s, r_p) = (root - S_INSIDE_ROOT, root - P_INSIDE_ROOT);
@@ -176,20 +189,9 @@ fn the_base_pitch_spans_two_flanks_of_wheel_1_along_a_normal() {
     for (z, x) in
         [([17u32, 19u32], [0.0, 0.0]), ([12, 30], [0.295, 0.0]), ([40, 60], [0.0, 0.0]), ([25, 50], [0.2, 0.1])]
     {
-        let spec = PairSpec { shift: x, ..PairSpec::standard(0.005, z) };
-        let pair = Pair::new(&spec).unwrap();
-        let outlines = [Outline::new(&spec, &pair.wheels[0]), Outline::new(&spec, &pair.wheels[1])];
-        let area = Rect::new(2.0, 10.0, 418.0, 540.0);
-        let inp = MeshInput {
-            pair: &pair,
-            outlines: [&outlines[0], &outlines[1]],
-            lang: crate::drawing::labels::Language::En,
-        };
-        let mut g = Group::new("m", Rect::new(0.0, 0.0, 420.0, 580.0));
-        let mut labels = Labels::new();
-        let d = draw_mesh(&mut g, area, &inp, &mut labels);
-        labels.place(&mut g, area);
-        let (v, _) = placement(&pair, area, d.mu);
+        let (pair, outlines) = pair_of(z, x);
+        let inp = input(&pair, &outlines);
+        let (g, v) = drawn(&inp);
         assert!(g.texts().any(|t| t.text == "p" && t.sub == "b" && t.tail.starts_with(" = ")), "{z:?}: p_b's value");
         let length = v.len(pair.base_pitch);
         let lines: Vec<_> =

@@ -20,8 +20,9 @@ const GAP: f64 = 6.0;
 pub(super) enum Content {
     /// Index into the polygons, and the layout computed for the cell's size.
     Polygon(usize, Rc<GroupLayout>),
-    /// The turned velocity plan, its scale and the scale of its force arrows.
-    Lever(Rc<Plan>, f64, f64),
+    /// The turned velocity plan, its scale, the scale of its force arrows and the box its
+    /// cell was sized round (the plan and its arrows' tips, plan units).
+    Lever(Rc<Plan>, f64, f64, Rect),
     Load(usize),
     Table(usize),
 }
@@ -86,9 +87,10 @@ impl Sizes {
 #[derive(Default)]
 pub struct CellMemo {
     polygons: RefCell<HashMap<PolygonKey, LaidOut>>,
-    /// The turned velocity plan with its box, and the lever's cell at each μ: its size.
+    /// The turned velocity plan with its box, and the lever's cell at each μ: its size and
+    /// the box it is sized round.
     lever: OnceCell<(Rc<Plan>, Rect, f64)>,
-    lever_cells: RefCell<HashMap<u64, (f64, f64)>>,
+    lever_cells: RefCell<HashMap<u64, (f64, f64, Rect)>>,
     /// The load diagrams' and the tables' sizes, in the cells' order.
     fixed: OnceCell<Vec<(f64, f64)>>,
 }
@@ -126,15 +128,15 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     });
     let (bb, mu_f) = (*bb, *mu_f);
     let mu = s.round_up(bb.width().max(bb.height()) / s.lever_box);
-    let (w, h) = *memo.lever_cells.borrow_mut().entry(mu.to_bits()).or_insert_with(|| {
+    let (w, h, ext) = *memo.lever_cells.borrow_mut().entry(mu.to_bits()).or_insert_with(|| {
         let ext = lever_extent(inp, lever, mu, mu_f);
         let pad = MARGIN + LEVER_LABEL_ROOM;
         let w = (ext.width() / mu + 2.0 * pad).max(110.0);
         let text_lines = LEVER_LINES + lever_legend(inp, mu_f, w - 4.0).len();
         let h = TITLE + ext.height() / mu + 2.0 * pad + text_lines as f64 * LINE + DESCENT;
-        (w, h)
+        (w, h, ext)
     });
-    out.push(Cell { w, h, content: Content::Lever(Rc::clone(lever), mu, mu_f) });
+    out.push(Cell { w, h, content: Content::Lever(Rc::clone(lever), mu, mu_f, ext) });
     let fixed = memo.fixed.get_or_init(|| {
         let loads = inp.fa.model.loads.iter().map(load_cell);
         let tables = inp.tables.iter().map(|t| t.size()).map(|(w, h)| (w + 2.0, h + 2.0));

@@ -115,8 +115,8 @@ pub fn draw_forces(
                 scales.smallest_enlarged_side_mm = least(scales.smallest_enlarged_side_mm, enlarged);
                 measured.extend(segments::polygon(inp, poly, layout.mu_p, &part, answers));
             }
-            Content::Lever(ref plan, mu, mu_f) => {
-                zhukovsky::draw_lever(g, &mut labels, r, inp, plan, (mu, mu_f));
+            Content::Lever(ref plan, mu, mu_f, extent) => {
+                zhukovsky::draw_lever(g, &mut labels, r, inp, (plan, extent), (mu, mu_f));
                 scales.mu_lever = mu;
                 scales.mu_f_lever = mu_f;
                 measured.extend(segments::lever_arms(inp, mu, &part));

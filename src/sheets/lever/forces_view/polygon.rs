@@ -12,7 +12,7 @@ use crate::drawing::view::View;
 use crate::lever::kinetostatics::Polygon;
 use crate::num::math::Norm;
 use crate::num::tol;
-use kurbo::{Point, Rect, Vec2};
+use kurbo::{Line, ParamCurveNearest, Point, Rect, Vec2};
 
 /// Extent of a polygon's chain of vectors, in newtons, from its start.
 pub(super) fn chain(poly: &Polygon) -> Vec<Vec2> {
@@ -64,7 +64,7 @@ pub(super) fn draw_polygon(
         if (b - a).norm() >= tol::PAPER_INVISIBLE {
             // On a side (R32 ≈ −R12 when link 2's own forces are small) it would hide under
             // it: set beside it, toward the polygon's inside, as a free vector may be.
-            let sides: Vec<(Point, Point)> = (0..poly.terms.len()).map(|k| (p(pts[k]), p(pts[k + 1]))).collect();
+            let sides: Vec<Line> = (0..poly.terms.len()).map(|k| Line::new(p(pts[k]), p(pts[k + 1]))).collect();
             let shift = if lies_on(a, b, &sides) { inward(a, b, centre) * BESIDE_SIDE } else { Vec2::ZERO };
             let (a, b) = (a + shift, b + shift);
             vector(g, a, b, DASHED);
@@ -81,16 +81,9 @@ const BESIDE_SIDE: f64 = 1.8;
 
 /// Whether the segment a–b runs along the drawn `sides` for most of its length: each of its
 /// inner sample points within GOST 2.303's 0.8 mm of some side.
-pub(super) fn lies_on(a: Point, b: Point, sides: &[(Point, Point)]) -> bool {
-    let near = |q: Point| sides.iter().any(|&(s, e)| distance_to_segment(q, s, e) < 0.8);
+fn lies_on(a: Point, b: Point, sides: &[Line]) -> bool {
+    let near = |q: Point| sides.iter().any(|side| side.nearest(q, 0.0).distance_sq < 0.8 * 0.8);
     (1..8).all(|k| near(a.lerp(b, k as f64 / 8.0)))
-}
-
-fn distance_to_segment(q: Point, s: Point, e: Point) -> f64 {
-    let d = e - s;
-    let len2 = d.dot(d);
-    let t = if len2 > 0.0 { ((q - s).dot(d) / len2).clamp(0.0, 1.0) } else { 0.0 };
-    (q - s.lerp(e, t)).norm()
 }
 
 /// The unit normal of a–b toward `centre` (either, where the centre is on its line).

@@ -14,7 +14,7 @@ use crate::drawing::view::View;
 use crate::lever::plans::Plan;
 use crate::num::math::Norm;
 use crate::sheets::lever::plans_view::{PlanCell, draw_plan, plan_bbox};
-use kurbo::{Rect, Vec2};
+use kurbo::{Point, Rect, Vec2};
 
 /// Lines under the lever besides its legend: μ_v and μ_F, P′ₘ, Δ.
 pub(super) const LEVER_LINES: usize = 3;
@@ -35,8 +35,8 @@ pub(super) fn lever_extent(inp: &ForcesInput, plan: &Plan, mu: f64, mu_f: f64) -
     let f = &inp.fa.forces;
     let forces = f.lever.iter().map(|l| (l.image, l.force)).chain([(balancing_image(inp), f.dir_m * f.p_m_lever)]);
     // Twins are found on paper; turning the y axis over keeps every angle between forces.
-    let rows = twin_rows(forces.map(|(at, force)| (kurbo::Point::new(at.x / mu, at.y / mu), force)), mu_f);
-    let tips = rows.iter().map(|&(at, d, reach)| kurbo::Point::new(at.x * mu, at.y * mu) + d * (reach * mu));
+    let rows = twin_rows(forces.map(|(at, force)| (Point::new(at.x / mu, at.y / mu), force)), mu_f);
+    let tips = rows.iter().map(|&(at, d, reach)| Point::new(at.x * mu, at.y * mu) + d * (reach * mu));
     tips.fold(plan_bbox(plan), |r, p| r.union_pt(p))
 }
 
@@ -70,7 +70,7 @@ pub(super) fn draw_lever(
     labels: &mut Labels,
     r: Rect,
     inp: &ForcesInput,
-    plan: &Plan,
+    (plan, extent): (&Plan, Rect),
     (mu, mu_f): (f64, f64),
 ) {
     let f = &inp.fa.forces;
@@ -84,7 +84,7 @@ pub(super) fn draw_lever(
         mu,
         pole: "p",
         scale_line: None,
-        extent: Some(lever_extent(inp, plan, mu, mu_f)),
+        extent: Some(extent),
     };
     let pole = draw_plan(g, &cell, labels);
     let view = View::new(pole, mu);
