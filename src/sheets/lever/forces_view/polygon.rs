@@ -12,7 +12,7 @@ use crate::drawing::view::View;
 use crate::lever::kinetostatics::Polygon;
 use crate::num::math::Norm;
 use crate::num::tol;
-use kurbo::{Line, ParamCurveNearest, Point, Rect, Vec2};
+use kurbo::{Line, ParamCurve, ParamCurveNearest, Point, Rect, Vec2};
 
 /// Extent of a polygon's chain of vectors, in newtons, from its start.
 pub(super) fn chain(poly: &Polygon) -> Vec<Vec2> {
@@ -63,9 +63,9 @@ pub(super) fn draw_polygon(
         let (a, b) = (p(pts[poly.split]), p(pts[0]));
         if (b - a).norm() >= tol::PAPER_INVISIBLE {
             // On a side (R32 ≈ −R12 when link 2's own forces are small) it would hide under
-            // it: set beside it, toward the polygon's inside, as a free vector may be.
+            // it: set beside it, away from that side, as a free vector may be.
             let sides: Vec<Line> = (0..poly.terms.len()).map(|k| Line::new(p(pts[k]), p(pts[k + 1]))).collect();
-            let shift = if lies_on(a, b, &sides) { inward(a, b, centre) * BESIDE_SIDE } else { Vec2::ZERO };
+            let shift = side_under(a, b, &sides).map_or(Vec2::ZERO, |side| away_from(a, b, side, centre) * BESIDE_SIDE);
             let (a, b) = (a + shift, b + shift);
             vector(g, a, b, DASHED);
             // The inner reaction runs inside the polygon: its label beside it, either side.
@@ -79,17 +79,31 @@ pub(super) fn draw_polygon(
 /// 0.5 mm stroke by twice GOST 2.303's least gap between parallel lines.
 const BESIDE_SIDE: f64 = 1.8;
 
-/// Whether the segment a–b runs along the drawn `sides` for most of its length: each of its
-/// inner sample points within GOST 2.303's 0.8 mm of some side.
-fn lies_on(a: Point, b: Point, sides: &[Line]) -> bool {
-    let near = |q: Point| sides.iter().any(|side| side.nearest(q, 0.0).distance_sq < 0.8 * 0.8);
-    (1..8).all(|k| near(a.lerp(b, k as f64 / 8.0)))
+/// A segment within this of a side over most of its length reads as lying on it, mm: a
+/// dashed line converging on a thick one at a small angle is as hidden as one on it.
+const ON_SIDE: f64 = 1.2;
+
+/// The side the segment a–b runs along for most of its length (more than half of its inner
+/// sample points within [`ON_SIDE`] of it), if any.
+fn side_under(a: Point, b: Point, sides: &[Line]) -> Option<Line> {
+    let samples: Vec<Point> = (1..8).map(|k| a.lerp(b, k as f64 / 8.0)).collect();
+    let near = |side: &Line| samples.iter().filter(|&&q| side.nearest(q, 0.0).distance_sq < ON_SIDE * ON_SIDE).count();
+    sides
+        .iter()
+        .map(|side| (near(side), *side))
+        .filter(|(n, _)| 2 * n > samples.len())
+        .max_by_key(|(n, _)| *n)
+        .map(|(_, s)| s)
 }
 
-/// The unit normal of a–b toward `centre` (either, where the centre is on its line).
-fn inward(a: Point, b: Point, centre: Point) -> Vec2 {
+/// The unit normal of a–b pointing away from `side` (toward `centre` where a–b's middle is
+/// on the side's line).
+fn away_from(a: Point, b: Point, side: Line, centre: Point) -> Vec2 {
     let n = (b - a).turn_90() / (b - a).norm();
-    if n.dot(centre - a.midpoint(b)) < 0.0 { -n } else { n }
+    let mid = a.midpoint(b);
+    let from_side = mid - side.eval(side.nearest(mid, 0.0).t);
+    let toward = if from_side.norm() > tol::PAPER { from_side } else { centre - mid };
+    if n.dot(toward) < 0.0 { -n } else { n }
 }
 
 /// The shortest side [`draw_polygon`] labels on the polygon, and the shortest its
