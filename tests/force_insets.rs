@@ -96,3 +96,40 @@ fn no_inner_reaction_is_drawn_on_a_side() {
     }
     assert!(checked >= 10, "only {checked} inner reactions drawn");
 }
+
+/// A group (and the crank) is drawn released from the mechanism, the frame's action on it
+/// being the reactions drawn at its joints: no support symbol — a row of hatching strokes —
+/// is drawn in any force cell of any fixture (drawn too, it showed the frame twice, and
+/// the reaction R⁰³ at C through its hatching).
+#[test]
+fn released_groups_draw_no_frame_support() {
+    use tmm_sheets::drawing::path::Seg;
+    use tmm_sheets::drawing::scene::THIN;
+    for name in common::fixture_names() {
+        let built = pipeline::build(&fixture(&name), &[1]).unwrap();
+        let scene = &built[0].output.scene;
+        for g in &scene.groups {
+            for part in g.parts.iter().filter(|p| p.id.starts_with("forces.group") || p.id == "forces.crank") {
+                // Hatching: short thin strokes, parallel, a few mm apart.
+                let strokes: Vec<(kurbo::Point, kurbo::Vec2)> = g.items[part.items.clone()]
+                    .iter()
+                    .filter_map(|i| match i {
+                        Item::Path { path, pen } if *pen == THIN => match path.segs.as_slice() {
+                            [Seg::Line(e)] => Some((path.start, *e - path.start)),
+                            _ => None,
+                        },
+                        _ => None,
+                    })
+                    .filter(|(_, d)| (1.0..2.0).contains(&d.norm()))
+                    .collect();
+                let rows = strokes.iter().filter(|(a, d)| {
+                    let parallel = |(b, e): &&(kurbo::Point, kurbo::Vec2)| {
+                        d.cross(*e).abs() < 0.05 * d.norm() * e.norm() && (*b - *a).norm() < 6.0
+                    };
+                    strokes.iter().filter(parallel).count() >= 3
+                });
+                assert_eq!(rows.count(), 0, "{name}: hatching in {}", part.id);
+            }
+        }
+    }
+}

@@ -477,3 +477,43 @@ fn each_planet_turns_on_its_axle_in_a_bearing() {
         assert_eq!(bearings, 2, "{name}: one bearing on each of the two planets' axles the scheme shows");
     }
 }
+
+/// The front view numbers the ring on its rim between two planets: "3" is set within a few
+/// mm of the ring's pitch circle and outside every planet's circle (a double planet's larger
+/// gear reaches over the rim: a "3" inside it reads as that gear's number).
+#[test]
+fn the_ring_is_numbered_on_its_rim_clear_of_the_planets() {
+    use tmm_sheets::drawing::scene::{Item, MAIN};
+    for name in ["worked-example", "gears/shifted-double-planet"] {
+        let p = pipeline::load(&fixture_text(name)).unwrap();
+        let b = pipeline::build(&p, &[2]).unwrap().remove(0);
+        let g = b.output.scene.groups.iter().find(|g| g.id == "planetary").expect("a planetary group");
+        let circles: Vec<(kurbo::Point, f64)> = g
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                Item::Circle { c, r, pen, filled: false } if *pen == MAIN && *r > 5.0 => Some((*c, *r)),
+                _ => None,
+            })
+            .collect();
+        // The ring: the largest thick circle; the planets: the thick circles off its centre.
+        let ring = circles.iter().copied().fold((kurbo::Point::ZERO, 0.0), |a, c| if c.1 > a.1 { c } else { a });
+        let planets: Vec<_> = circles.iter().filter(|c| (c.0 - ring.0).hypot() > 1.0).collect();
+        assert!(planets.len() >= 2, "{name}: the planets drawn: {planets:?}");
+        let numbers: Vec<kurbo::Point> = g
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                Item::Text(t) if t.text == "3" => Some(t.bbox().center()),
+                _ => None,
+            })
+            .filter(|c| (*c - ring.0).hypot() < ring.1 + 15.0)
+            .collect();
+        assert_eq!(numbers.len(), 1, "{name}: one \"3\" in the front view: {numbers:?}");
+        let at = numbers[0];
+        assert!(((at - ring.0).hypot() - ring.1).abs() < 6.0, "{name}: \"3\" at {at:?} beside the rim {ring:?}");
+        for (c, r) in planets {
+            assert!((at - *c).hypot() > *r + 1.0, "{name}: \"3\" at {at:?} inside the planet at {c:?}, r {r}");
+        }
+    }
+}

@@ -11,7 +11,7 @@ use crate::drawing::view::View;
 use crate::gears::planetary::Stage;
 use crate::num::math::{self, from_angle};
 use kurbo::{Point, Rect, Vec2};
-use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 
 /// The stage's pitch radii (m): sun, planet meshing the sun, planet meshing the ring (the
 /// same for a single row), ring; and the carrier's radius.
@@ -101,8 +101,22 @@ fn front_view(g: &mut Group, front: Rect, st: &Drawn, labels: &mut Labels) {
             0,
         );
     }
-    labels.add_text_ranked(o + Vec2::new(v.len(r.ring) * 0.71, v.len(r.ring) * 0.71), Vec2::new(1.0, 1.0), "3", 3.5, 0);
+    // The ring's number on its rim between two planets (a planet drawn over the rim, a
+    // double planet's larger gear, would otherwise seem to be what "3" names).
+    let between = ring_label_angle(s.planets);
+    let out = from_angle(between);
+    labels.add_text_ranked(o + out * v.len(r.ring), out, "3", 3.5, 0);
     labels.add_text_ranked(o + Vec2::new(0.0, -v.len(r.carrier) * 0.5), Vec2::new(1.0, 0.0), "H", 3.5, 0);
+}
+
+/// The angle on paper (y down, radians) at which the ring is numbered: of the directions
+/// midway between neighbouring planets (drawn from the top, counter-clockwise on paper),
+/// the one nearest the lower right.
+fn ring_label_angle(planets: u32) -> f64 {
+    let k = f64::from(planets.max(1));
+    let mid = |i: u32| -FRAC_PI_2 - TAU * (f64::from(i) + 0.5) / k;
+    let off = |a: f64| (a - FRAC_PI_4).rem_euclid(TAU).min((FRAC_PI_4 - a).rem_euclid(TAU));
+    (0..planets.max(1)).map(mid).fold(f64::NAN, |best, a| if best.is_nan() || off(a) < off(best) { a } else { best })
 }
 
 /// Where the kinematic scheme puts the points the velocity picture projects (paper mm): the

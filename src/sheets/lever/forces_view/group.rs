@@ -14,7 +14,7 @@ use super::{ARROW_MAX, ARROW_MIN, ForcesInput, LINE};
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{Group, MAIN, THIN};
-use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, slider, turn_arrow_reach};
+use crate::drawing::symbols::{clear_turn_arrow, slider, turn_arrow_reach};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::kinetostatics::Polygon;
@@ -283,9 +283,10 @@ fn draw_group_geometry(
     }
     for &q in &points {
         let at = p(inp.state.points[q].p);
-        if m.is_frame(q) {
-            frame_pivot(g, at, 1.2);
-        } else if m.is_mass_centre(q) {
+        // A joint with the frame is drawn as a joint: the group is drawn released from the
+        // mechanism, the frame's action on it being the reaction drawn there (a support
+        // drawn too would show the frame twice, and the reaction through its hatching).
+        if m.is_mass_centre(q) && !m.is_frame(q) {
             g.dot(at, 0.6);
         } else {
             g.circle(at, 1.0, THIN);
