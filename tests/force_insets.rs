@@ -133,3 +133,31 @@ fn released_groups_draw_no_frame_support() {
         }
     }
 }
+
+/// The Zhukovsky lever's longer side is at least this on paper, mm: its arms are read off
+/// it with a ruler (the catalogue's 415 force analyses: least 40.7 mm, median 99 mm).
+const LEVER_MIN_MM: f64 = 40.0;
+
+/// Every fixture's lever is at least [`LEVER_MIN_MM`] long, and the length `results.json`
+/// reports is the box of the velocity vectors of the assigned position's points (from p, the
+/// lever being the velocity plan turned) at the lever's μ, computed here from those vectors.
+#[test]
+fn every_lever_is_long_enough_to_measure() {
+    for name in common::fixture_names() {
+        let built = pipeline::build(&fixture(&name), &[1]).unwrap();
+        let results = &built[0].output.results;
+        let scales = &results["forces"]["scales"];
+        let (side, mu) = (scales["lever_mm"].as_f64().unwrap(), scales["mu_lever"].as_f64().unwrap());
+        assert!(side >= LEVER_MIN_MM, "{name}: the lever is {side:.1} mm");
+        let points = results["assigned"]["points"].as_object().unwrap();
+        let (mut lo, mut hi) = ([0.0f64; 2], [0.0f64; 2]);
+        for v in points.values().map(|p| &p["v"]) {
+            for k in 0..2 {
+                let x = v[k].as_f64().unwrap();
+                (lo[k], hi[k]) = (lo[k].min(x), hi[k].max(x));
+            }
+        }
+        let expected = (hi[0] - lo[0]).max(hi[1] - lo[1]) / mu;
+        assert!((side - expected).abs() < 1e-9 * expected, "{name}: reported {side} mm, the plan's box {expected} mm");
+    }
+}

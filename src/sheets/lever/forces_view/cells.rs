@@ -46,6 +46,8 @@ pub(super) struct Sizes {
     /// of at most a third) rather than the course's {1, 2, 2.5, 4, 5} (steps up to 2×, which
     /// draw a polygon meant for 60 mm at 30).
     pub(super) fine: bool,
+    /// Whether the lever's μ comes from the finer series whatever the polygons' do.
+    pub(super) lever_fine: bool,
     /// Which polygons' cells (bit i: polygon i) may grow to enlarge their short sides
     /// beside them (tried only once the drawings fit without).
     pub(super) grow: u64,
@@ -127,7 +129,8 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
         (Rc::new(lever), bb, lever_arrow_scale(inp))
     });
     let (bb, mu_f) = (*bb, *mu_f);
-    let mu = s.round_up(bb.width().max(bb.height()) / s.lever_box);
+    let need = bb.width().max(bb.height()) / s.lever_box;
+    let mu = if s.lever_fine { scale::plan_round_up(need) } else { s.round_up(need) };
     let (w, h, ext) = *memo.lever_cells.borrow_mut().entry(mu.to_bits()).or_insert_with(|| {
         let ext = lever_extent(inp, lever, mu, mu_f);
         let pad = MARGIN + LEVER_LABEL_ROOM;

@@ -60,6 +60,8 @@ pub struct ForceScales {
     pub mu_lever: f64,
     /// The scale of the force arrows on the lever, N/mm.
     pub mu_f_lever: f64,
+    /// The lever's longer side on paper (its turned velocity plan's box), mm.
+    pub lever_mm: f64,
     /// The shortest labelled side of any force polygon at its μ_P on paper, mm (a force
     /// too small to draw is not a side: its value is in the legend; a side labelled in an
     /// enlargement is counted there).
@@ -81,13 +83,14 @@ pub fn draw_forces(
     let title = inp.words.sheet.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.words.lang));
     main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let bodies = bodies(region, side.as_ref().map(|g| g.region));
-    let (cells, at, _) = finer(inp, &bodies, arrange(inp, &bodies, DRAWN, SHRINK_TRIES));
+    let (cells, at, _) = larger_lever(inp, &bodies, finer(inp, &bodies, arrange(inp, &bodies, DRAWN, SHRINK_TRIES)));
     let mut scales = ForceScales {
         mu_l: vec![],
         mu_p: vec![],
         mu_f: vec![],
         mu_lever: 0.0,
         mu_f_lever: 0.0,
+        lever_mm: 0.0,
         smallest_polygon_side_mm: None,
         smallest_enlarged_side_mm: None,
     };
@@ -119,6 +122,8 @@ pub fn draw_forces(
                 zhukovsky::draw_lever(g, &mut labels, r, inp, (plan, extent), (mu, mu_f));
                 scales.mu_lever = mu;
                 scales.mu_f_lever = mu_f;
+                let bb = crate::sheets::lever::plans_view::plan_bbox(plan);
+                scales.lever_mm = bb.width().max(bb.height()) / mu;
                 measured.extend(segments::lever_arms(inp, mu, &part));
             }
             Content::Load(i) => {
@@ -164,8 +169,9 @@ const COMFORTABLE: usize = 3;
 /// The sizes a comfortable layout starts from (the mechanism above gets the rest), and the
 /// larger ones the drawings start from, shrinking until they fit what they got.
 const COMFORTABLE_START: Sizes =
-    Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0, fine: false, grow: 0 };
-const DRAWN: Sizes = Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0, fine: false, grow: 0 };
+    Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0, fine: false, lever_fine: false, grow: 0 };
+const DRAWN: Sizes =
+    Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0, fine: false, lever_fine: false, grow: 0 };
 
 /// Cells, where they are, whether they all fit, and the sizes they were made at.
 type Arranged = (Vec<Cell>, Vec<(usize, Point)>, bool, Sizes);
@@ -174,11 +180,7 @@ type Arranged = (Vec<Cell>, Vec<(usize, Point)>, bool, Sizes);
 /// the polygons and the lever at the finer series' scales, where those still fit: nothing
 /// else smaller. Only for drawing (the comfort test needs no more than whether the coarse
 /// cells fit).
-fn finer(
-    inp: &ForcesInput,
-    bodies: &[Rect],
-    (cells, at, ok, sizes): Arranged,
-) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
+fn finer(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arranged) -> Arranged {
     if ok {
         // The polygons' enlargements beside them (a knot of labels unread is worse than a
         // polygon a scale step smaller): every polygon's cell grown, at the finer series,
@@ -192,7 +194,7 @@ fn finer(
             if let (cells_at, true) = pack(&cells, bodies)
                 && enlarged(&cells)
             {
-                return (cells, cells_at, true);
+                return (cells, cells_at, true, all);
             }
         }
         for mut s in [fine, sizes] {
@@ -206,12 +208,35 @@ fn finer(
                 }
             }
             if let Some((cells, cells_at)) = grown.filter(|(c, _)| enlarged(c)) {
-                return (cells, cells_at, true);
+                return (cells, cells_at, true, s);
             }
         }
         let tried = self::cells::cells(inp, fine);
         if let (tried_at, true) = pack(&tried, bodies) {
-            return (tried, tried_at, true);
+            return (tried, tried_at, true, fine);
+        }
+    }
+    (cells, at, ok, sizes)
+}
+
+/// A fitting arrangement with the Zhukovsky lever as large as the cells still pack: its box
+/// from the drawings' starting size down to the one it got, at the finer series' scales
+/// (the lever's sides are the arms its forces are read by; the knot of a dozen arrows round
+/// p, b and s4 at the coarse scale is what a teacher marks down).
+fn larger_lever(
+    inp: &ForcesInput,
+    bodies: &[Rect],
+    (cells, at, ok, sizes): Arranged,
+) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
+    if ok {
+        let mut lever_box = DRAWN.lever_box;
+        while lever_box > sizes.lever_box {
+            let tried = Sizes { lever_box, lever_fine: true, ..sizes };
+            let tried_cells = self::cells::cells(inp, tried);
+            if let (tried_at, true) = pack(&tried_cells, bodies) {
+                return (tried_cells, tried_at, true);
+            }
+            lever_box *= 0.9;
         }
     }
     (cells, at, ok)
