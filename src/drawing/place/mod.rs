@@ -123,6 +123,14 @@ impl Labels {
         self.requests.push(Request { more: lines, ..Request::new(anchor, pref, first, h) });
     }
 
+    /// A label beside the first of `spots` (a point and its preferred direction), or beside
+    /// a further one when the spots near the first are taken: an arrow's name beside its
+    /// middle, else nearer its tip or its tail, rather than off on a long leader.
+    pub fn add_at_any(&mut self, spots: &[(Point, Vec2)], label: LabelText, h: f64) {
+        let Some((&(anchor, pref), others)) = spots.split_first() else { return };
+        self.requests.push(Request { others: others.to_vec(), ..Request::new(anchor, pref, label, h) });
+    }
+
     /// A line's name (a profile's, a circle's) with `anchor` on the line: set off on a leader
     /// that reaches the line, so that it cannot be taken for a neighbour's name.
     pub fn add_line_name(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
@@ -381,6 +389,35 @@ mod tests {
         assert!((a - on).norm() < 1e-9, "the leader starts at {a:?}, off the line");
         assert!(text.inflate(0.6, 0.6).contains(b) && text.y1 < on.y, "{b:?} {text:?}");
         assert!((b - a).norm() >= LEADER_FROM - 1e-9);
+    }
+
+    /// A label with further spots is set beside a further one, without a leader, when the
+    /// first is walled in for a leader's length round (an arrow's name beside its tip rather
+    /// than off on a long leader from its middle).
+    #[test]
+    fn a_label_walled_in_at_its_first_spot_goes_to_a_further_one() {
+        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+        let (first, further) = (Point::new(30.0, 50.0), Point::new(70.0, 50.0));
+        for with_further in [false, true] {
+            let mut g = Group::new("g", region);
+            // Circles round the first spot, 2 mm apart out to 12 mm: no box fits near it.
+            for k in 1..=6 {
+                g.circle(first, 2.0 * k as f64, THIN);
+            }
+            let mut labels = Labels::new();
+            let label = LabelText::new("P", "M4");
+            if with_further {
+                labels.add_at_any(&[(first, Vec2::new(0.0, -1.0)), (further, Vec2::new(0.0, -1.0))], label, 3.5);
+            } else {
+                labels.add(first, Vec2::new(0.0, -1.0), label, 3.5);
+            }
+            assert_eq!(labels.place(&mut g, region), vec![true]);
+            let text = g.texts().next().unwrap().bbox();
+            let near_further = (text.center() - further).norm() < 8.0;
+            assert_eq!(near_further, with_further, "{text:?}");
+            let leaders = g.items.iter().filter(|i| matches!(i, Item::Path { .. })).count();
+            assert_eq!(leaders, if with_further { 0 } else { 1 }, "a leader only from the walled-in spot");
+        }
     }
 
     /// Position numbers on neighbouring points stand a space apart, not 0.25 mm: "17" and

@@ -83,7 +83,10 @@ impl Arrows {
             g.line(at + d * exit, start, THIN);
         }
         vector(g, start, tip, VECTOR);
-        labels.add(start + d * (len * 0.55), n, label, self.h);
+        // Beside the arrow's middle, else nearer its tip or its tail on either side.
+        let along = |k: f64| start + d * (len * k);
+        let spots = [(along(0.55), n), (along(0.55), -n), (along(0.85), n), (along(0.85), -n), (along(0.25), n)];
+        labels.add_at_any(&spots, label, self.h);
         natural < ARROW_MIN
     }
 }
