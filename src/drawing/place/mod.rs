@@ -13,9 +13,11 @@
 use super::obstacles::{Obstacles, Piece};
 use super::scene::{Anchor, Group, THIN};
 use super::text::{LabelText, SLANT, SUB};
+use candidate::{Candidate, TOUCH, Verdict, least_bad};
 use kurbo::{Point, Rect, Vec2};
 use spots::Spots;
 
+mod candidate;
 mod spots;
 
 /// Distances tried between an anchor and its label's box, mm.
@@ -127,8 +129,13 @@ impl Labels {
     /// a further one when the spots near the first are taken: an arrow's name beside its
     /// middle, else nearer its tip or its tail, rather than off on a long leader.
     pub fn add_at_any(&mut self, spots: &[(Point, Vec2)], label: LabelText, h: f64) {
+        self.push_at_any(spots, Request::new(Point::ZERO, Vec2::ZERO, label, h));
+    }
+
+    /// `req` at the first of `spots`, the rest its further anchors.
+    fn push_at_any(&mut self, spots: &[(Point, Vec2)], req: Request) {
         let Some((&(anchor, pref), others)) = spots.split_first() else { return };
-        self.requests.push(Request { others: others.to_vec(), ..Request::new(anchor, pref, label, h) });
+        self.requests.push(Request { anchor, pref, others: others.to_vec(), ..req });
     }
 
     /// A line's name (a profile's, a circle's) with `anchor` on the line: set off on a leader
@@ -140,9 +147,7 @@ impl Labels {
     /// A line's name as [`Labels::add_line_name`], with further points of the line (and
     /// their directions) to name it at when the spots near the first are taken.
     pub fn add_line_name_at_any(&mut self, spots: &[(Point, Vec2)], label: LabelText, h: f64, rank: u8) {
-        let Some((&(anchor, pref), others)) = spots.split_first() else { return };
-        let others = others.to_vec();
-        self.requests.push(Request { others, rank, names_line: true, ..Request::new(anchor, pref, label, h) });
+        self.push_at_any(spots, Request { rank, names_line: true, ..Request::new(Point::ZERO, Vec2::ZERO, label, h) });
     }
 
     /// A disc (paper mm) every label keeps out of, though nothing drawn bounds it there.
@@ -248,28 +253,6 @@ impl Labels {
     }
 }
 
-/// A candidate's two tests against the fixed drawing, each asked at most once.
-#[derive(Debug, Clone, Copy, Default)]
-struct Verdict {
-    box_free: Option<bool>,
-    leader_clear: Option<bool>,
-}
-
-impl Verdict {
-    /// [`Candidate::box_is_free`] against `drawn`, remembered.
-    fn box_is_free(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
-        *self.box_free.get_or_insert_with(|| c.box_is_free(drawn))
-    }
-
-    /// [`Candidate::is_free`] against `drawn`, remembered.
-    fn is_free(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
-        self.box_is_free(c, drawn)
-            && *self
-                .leader_clear
-                .get_or_insert_with(|| c.leader.is_none_or(|(a, b)| !drawn.segment_crosses_stroke(a, b)))
-    }
-}
-
 /// How many of a label's spots around its first anchor are free against the drawing alone
 /// (further anchors are a fallback, not a reason to place it later).
 fn free_near_first(spots: &mut Spots, req: &Request, drawn: &Obstacles) -> usize {
@@ -289,51 +272,6 @@ const REACH: f64 = 1.0 + CLEAR + LEADER_GAP;
 
 /// Rounds of moving unplaced labels to the front.
 const REPAIR_ROUNDS: usize = 3;
-
-#[derive(Debug, Clone)]
-struct Candidate {
-    r: Rect,
-    /// The anchor it labels (a request may have several).
-    anchor: Point,
-    leader: Option<(Point, Point)>,
-    cost: f64,
-}
-
-/// A line's name's leader is checked against the drawing from this far off its line, mm
-/// (drawn from the line itself, [`Labels::add_line_name`]).
-const TOUCH: f64 = 0.4;
-
-impl Candidate {
-    fn is_free(&self, o: &Obstacles) -> bool {
-        self.box_is_free(o) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke(a, b))
-    }
-
-    /// The box is clear and its leader crosses no text (it may cross lines).
-    fn box_is_free(&self, o: &Obstacles) -> bool {
-        o.is_clear(self.r.inflate(CLEAR, CLEAR)) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
-    }
-}
-
-/// The candidate with the fewest crossings when none is free.
-fn least_bad(cands: &[Candidate], layers: [&Obstacles; 2], req: &Request, bounds: Rect) -> Candidate {
-    // No candidate inside the bounds (a label wider than its cell): beside the anchor,
-    // pushed inside the bounds as far as they allow.
-    let fallback = || {
-        let (w, up, down) = req.size();
-        let x0 = req.anchor.x.min(bounds.x1 - w).max(bounds.x0);
-        let y1 = req.anchor.y.max(bounds.y0 + up + down).min(bounds.y1);
-        Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), anchor: req.anchor, leader: None, cost: 0.0 }
-    };
-    cands
-        .iter()
-        .map(|c| {
-            let (strokes, area) = layers.iter().map(|o| o.hits(c.r)).fold((0, 0.0), |s, h| (s.0 + h.0, s.1 + h.1));
-            let leader_on_text = c.leader.is_some_and(|(a, b)| layers.iter().any(|o| o.segment_crosses_text(a, b)));
-            (strokes as f64 * 10.0 + area * 100.0 + if leader_on_text { 10.0 } else { 0.0 } + c.cost, c)
-        })
-        .min_by(|a, b| a.0.total_cmp(&b.0))
-        .map_or_else(fallback, |(_, c)| c.clone())
-}
 
 #[cfg(test)]
 mod tests {

@@ -113,10 +113,11 @@ fn front_view(g: &mut Group, front: Rect, st: &Drawn, labels: &mut Labels) {
 /// midway between neighbouring planets (drawn from the top, counter-clockwise on paper),
 /// the one nearest the lower right.
 fn ring_label_angle(planets: u32) -> f64 {
-    let k = f64::from(planets.max(1));
-    let mid = |i: u32| -FRAC_PI_2 - TAU * (f64::from(i) + 0.5) / k;
+    let k = planets.max(1);
+    let mid = |i: u32| -FRAC_PI_2 - TAU * (f64::from(i) + 0.5) / f64::from(k);
+    // The angle between a direction and the lower right, either way round.
     let off = |a: f64| (a - FRAC_PI_4).rem_euclid(TAU).min((FRAC_PI_4 - a).rem_euclid(TAU));
-    (0..planets.max(1)).map(mid).fold(f64::NAN, |best, a| if best.is_nan() || off(a) < off(best) { a } else { best })
+    (0..k).map(mid).min_by(|a, b| off(*a).total_cmp(&off(*b))).unwrap_or(FRAC_PI_4)
 }
 
 /// Where the kinematic scheme puts the points the velocity picture projects (paper mm): the

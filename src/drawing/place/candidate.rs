@@ -1,0 +1,73 @@
+//! A label's candidate box (with its leader) and what the drawing says of it: free, its
+//! verdict remembered, or the least bad when none is free.
+
+use super::{CLEAR, Request};
+use crate::drawing::obstacles::Obstacles;
+use kurbo::{Point, Rect};
+
+/// A candidate's two tests against the fixed drawing, each asked at most once.
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct Verdict {
+    box_free: Option<bool>,
+    leader_clear: Option<bool>,
+}
+
+impl Verdict {
+    /// [`Candidate::box_is_free`] against `drawn`, remembered.
+    pub(super) fn box_is_free(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
+        *self.box_free.get_or_insert_with(|| c.box_is_free(drawn))
+    }
+
+    /// [`Candidate::is_free`] against `drawn`, remembered.
+    pub(super) fn is_free(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
+        self.box_is_free(c, drawn)
+            && *self
+                .leader_clear
+                .get_or_insert_with(|| c.leader.is_none_or(|(a, b)| !drawn.segment_crosses_stroke(a, b)))
+    }
+}
+
+#[derive(Debug, Clone)]
+pub(super) struct Candidate {
+    pub(super) r: Rect,
+    /// The anchor it labels (a request may have several).
+    pub(super) anchor: Point,
+    pub(super) leader: Option<(Point, Point)>,
+    pub(super) cost: f64,
+}
+
+/// A line's name's leader is checked against the drawing from this far off its line, mm
+/// (drawn from the line itself, [`Labels::add_line_name`]).
+pub(super) const TOUCH: f64 = 0.4;
+
+impl Candidate {
+    pub(super) fn is_free(&self, o: &Obstacles) -> bool {
+        self.box_is_free(o) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke(a, b))
+    }
+
+    /// The box is clear and its leader crosses no text (it may cross lines).
+    pub(super) fn box_is_free(&self, o: &Obstacles) -> bool {
+        o.is_clear(self.r.inflate(CLEAR, CLEAR)) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
+    }
+}
+
+/// The candidate with the fewest crossings when none is free.
+pub(super) fn least_bad(cands: &[Candidate], layers: [&Obstacles; 2], req: &Request, bounds: Rect) -> Candidate {
+    // No candidate inside the bounds (a label wider than its cell): beside the anchor,
+    // pushed inside the bounds as far as they allow.
+    let fallback = || {
+        let (w, up, down) = req.size();
+        let x0 = req.anchor.x.min(bounds.x1 - w).max(bounds.x0);
+        let y1 = req.anchor.y.max(bounds.y0 + up + down).min(bounds.y1);
+        Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), anchor: req.anchor, leader: None, cost: 0.0 }
+    };
+    cands
+        .iter()
+        .map(|c| {
+            let (strokes, area) = layers.iter().map(|o| o.hits(c.r)).fold((0, 0.0), |s, h| (s.0 + h.0, s.1 + h.1));
+            let leader_on_text = c.leader.is_some_and(|(a, b)| layers.iter().any(|o| o.segment_crosses_text(a, b)));
+            (strokes as f64 * 10.0 + area * 100.0 + if leader_on_text { 10.0 } else { 0.0 } + c.cost, c)
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map_or_else(fallback, |(_, c)| c.clone())
+}
