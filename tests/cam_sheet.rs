@@ -489,43 +489,47 @@ fn the_analogs_axes_carry_values_at_their_own_scale() {
     }
 }
 
-/// The diagrams' column is drawn wider (a longer φ axis) only where that leaves less of the
-/// sheet empty: the worked example's views leave a band across the sheet's middle beside the
-/// usual 320 mm column, task 1 variant 5's nomogram fills the column under the notes, and its
-/// column stays as it was. Either way the φ axis is as long as the working angle at μ_φ.
+/// Of the column's widths and the tables' letterings, the sheet keeps the arrangement that
+/// leaves the least of it empty (the pressure angle's diagram in the room the others leave):
+/// at most half of the 20 mm cells are empty on the worked example and on task 1 variant 5.
 #[test]
-fn the_diagrams_column_widens_only_where_the_sheet_is_emptier_without() {
+fn sheet_3_keeps_the_arrangement_that_leaves_at_most_half_of_it_empty() {
     let catalogue = Catalogue::embedded().unwrap();
     let Variant::Project { text, .. } = catalogue.task("1").unwrap().project(5, Language::Uz, "").unwrap() else {
         panic!("task 1 variant 5: incomplete in the catalogue");
     };
-    for (name, text, wide) in [("worked example", pipeline::DEFAULT_PROJECT, true), ("task 1 variant 5", &text, false)]
-    {
+    for (name, text) in [("worked example", pipeline::DEFAULT_PROJECT), ("task 1 variant 5", &text)] {
         let b = sheet3(&pipeline::load(text).unwrap());
-        let column = b.output.scene.groups.iter().find(|g| g.id == "diagrams").unwrap().region;
-        assert_eq!(column.width() > 324.0, wide, "{name}: the column is {} mm wide", column.width());
         let empty = b.output.results["layout"]["empty_share"].as_f64().unwrap();
-        assert!(empty < 0.58, "{name}: {empty} of sheet 3 is empty");
+        assert!(empty <= 0.5, "{name}: {empty} of sheet 3 is empty");
     }
 }
 
-/// Where the column is wide enough for both law tables side by side, they stand so under the
-/// diagrams (stacked they took twice the height), and the diagrams are planned as tall as
-/// leaves them that room: no band of empty 20 mm cells between the notes and the tables.
+/// Where the law's tables stand under the diagrams, they stand side by side when the column
+/// is wide enough for both (stacked they took twice the height), and the diagrams are planned
+/// as tall as leaves them that room: no band of empty 20 mm cells between the notes and the
+/// tables.
 #[test]
 fn the_law_tables_stand_side_by_side_close_under_the_diagrams() {
-    let b = sheet3(&pipeline::load(pipeline::DEFAULT_PROJECT).unwrap());
-    let group = |id: &str| b.output.scene.groups.iter().find(|g| g.id == id).unwrap();
-    let law = group("law-tables");
-    let boxes: Vec<_> = law
-        .parts
-        .iter()
-        .map(|p| law.items[p.items.clone()].iter().map(|i| i.bbox()).reduce(|a, b| a.union(b)).unwrap())
-        .collect();
-    assert_eq!(boxes.len(), 2, "the rise's and the return's tables");
-    let (rise, ret) = (boxes[0], boxes[1]);
-    assert!((rise.y0 - ret.y0).abs() < 0.01 && ret.x0 > rise.x1, "side by side: {rise:?} {ret:?}");
-    let notes_end = group("diagrams").region.y1;
-    let gap = rise.y0.min(ret.y0) - notes_end;
-    assert!((0.0..20.0).contains(&gap), "{gap} mm between the notes and the law's tables");
+    let mut seen = 0;
+    for (name, text) in cam_projects() {
+        let b = sheet3(&pipeline::load(&text).unwrap());
+        let group = |id: &str| b.output.scene.groups.iter().find(|g| g.id == id);
+        let Some(law) = group("law-tables") else { continue };
+        seen += 1;
+        let boxes: Vec<_> = law
+            .parts
+            .iter()
+            .map(|p| law.items[p.items.clone()].iter().map(|i| i.bbox()).reduce(|a, b| a.union(b)).unwrap())
+            .collect();
+        assert_eq!(boxes.len(), 2, "{name}: the rise's and the return's tables");
+        let (rise, ret) = (boxes[0], boxes[1]);
+        if rise.width() + ret.width() + 3.0 <= law.region.width() {
+            assert!((rise.y0 - ret.y0).abs() < 0.01 && ret.x0 > rise.x1, "{name}: side by side: {rise:?} {ret:?}");
+        }
+        let notes_end = group("diagrams").unwrap().region.y1;
+        let gap = rise.y0.min(ret.y0) - notes_end;
+        assert!((0.0..20.0).contains(&gap), "{name}: {gap} mm between the notes and the law's tables");
+    }
+    assert!(seen > 0, "no fixture has the law's tables under its diagrams");
 }

@@ -35,6 +35,7 @@ crate::label_set! {
         angles_two(rise, ret),
         zone,
         profile_title,
+        pressure_title,
         pitch_profile,
         working_profile,
         knife_profile,

@@ -6,6 +6,7 @@ mod diagrams;
 pub mod labels;
 mod nomogram;
 mod notes;
+mod pressure_view;
 mod profile_view;
 mod regions;
 mod results;
@@ -61,6 +62,8 @@ pub struct CamBuild {
     pub profile_mu: f64,
     pub profile_pieces: usize,
     pub profile_deviation: f64,
+    /// The pressure angle's diagram's scales, where the sheet had room for it.
+    pub pressure: Option<pressure_view::PressureScales>,
 }
 
 /// Of columns planned shorter and shorter with the regions they leave, the one with the
@@ -176,18 +179,41 @@ fn head_h(title: &str, w: f64) -> f64 {
     5.0 + wrap(title, 3.5, w).len() as f64 * LINE_PITCH * 3.5 + 2.0
 }
 
-/// Builds sheet 3 with the diagrams' column at each of the widths `regions.rs` tries and keeps the one
-/// that leaves the least of the sheet empty (the usual width on a tie) among those whose
-/// layout is no less clean: a column too narrow for its views' room leaves a band across the
-/// sheet's middle; one too wide shrinks the views.
+/// Builds sheet 3 with the diagrams' column at each of the widths `regions.rs` tries, the
+/// tables lettered by the rule ([`Lettering::ByRule`]) and in the larger lettering wherever
+/// they fit ([`Lettering::Large`]), and keeps the one that leaves the least of the sheet empty
+/// (the usual width by the rule on a tie) among those whose layout is no less clean: a column
+/// too narrow for its views' room leaves a band across the sheet's middle; one too wide
+/// shrinks the views; larger tables can leave the pressure angle's diagram room beside them.
 pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
+    use rayon::prelude::*;
     let prepared = Prepared::new(ctx, p);
-    let usual = build_at(ctx, p, &prepared, COLUMN_WIDTHS[0])?;
-    let wide = COLUMN_WIDTHS[1..].iter().filter_map(|&w| build_at(ctx, p, &prepared, w).ok());
+    let variants: Vec<(ColumnWidth, Lettering)> =
+        COLUMN_WIDTHS.iter().flat_map(|&w| [(w, Lettering::ByRule), (w, Lettering::Large)]).skip(1).collect();
+    // The usual width by the rule refuses what the sheet refuses; the other variants are
+    // only tried, each composed and measured on rayon's pool.
+    let (usual, others) = rayon::join(
+        || build_at(ctx, p, &prepared, COLUMN_WIDTHS[0], Lettering::ByRule),
+        || {
+            let tried = variants.par_iter().map(|&(w, t)| build_at(ctx, p, &prepared, w, t).ok());
+            tried.flatten().map(|b| (measured(&b), b)).collect::<Vec<_>>()
+        },
+    );
+    let usual = usual?;
     let (faults, empty) = measured(&usual);
     let first = ((faults, empty - 0.005), usual);
     let better = |a: (usize, f64), b: (usize, f64)| a.0 <= b.0 && a.1 < b.1;
-    Ok(wide.map(|b| (measured(&b), b)).fold(first, |best, b| if better(b.0, best.0) { b } else { best }).1)
+    Ok(others.into_iter().fold(first, |best, b| if better(b.0, best.0) { b } else { best }).1)
+}
+
+/// How the tables are lettered.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Lettering {
+    /// In [`LARGE_TEXT`] where the views keep their scales beside them and the diagrams most
+    /// of their height, else in [`CELL_TEXT`].
+    ByRule,
+    /// In [`LARGE_TEXT`] wherever they fit.
+    Large,
 }
 
 /// A build's drawings as the layout measure finds them on the page: their faults (texts
@@ -263,7 +289,13 @@ impl Lettered {
 }
 
 /// Builds sheet 3 with the diagrams' column at most `width` wide.
-fn build_at(ctx: &Context, p: &CamProject, prepared: &Prepared, width: ColumnWidth) -> Result<CamBuild, SheetError> {
+fn build_at(
+    ctx: &Context,
+    p: &CamProject,
+    prepared: &Prepared,
+    width: ColumnWidth,
+    lettering: Lettering,
+) -> Result<CamBuild, SheetError> {
     let words = CamWords::new(ctx.info.language);
     let l = words.sheet;
     let d = &p.design;
@@ -314,9 +346,9 @@ fn build_at(ctx: &Context, p: &CamProject, prepared: &Prepared, width: ColumnWid
         let (large_plan, on_large) = planned(large);
         // The tables in 3.5 mm lettering where the views keep their scales beside them and
         // the diagrams most of their height.
-        let lettered_large = kept(&on_large, &on_small)
-            && on_large.tables_fit(&large.law_sizes, &large.rest_sizes)
-            && large_plan.height >= small_plan.height * LARGE_KEEPS;
+        let by_rule = kept(&on_large, &on_small) && large_plan.height >= small_plan.height * LARGE_KEEPS;
+        let lettered_large =
+            (lettering == Lettering::Large || by_rule) && on_large.tables_fit(&large.law_sizes, &large.rest_sizes);
         column.plan = if lettered_large { large_plan } else { small_plan };
         let (lay, tables) = if lettered_large { (on_large, large) } else { (on_small, small) };
         let content = views.content((&column.plan, column.text_h), &tables.law_sizes, &tables.rest_sizes);
@@ -349,7 +381,9 @@ fn build_at(ctx: &Context, p: &CamProject, prepared: &Prepared, width: ColumnWid
     let mut measured = segments::diagrams(d, &scales, &integrated, phis, &answers);
     measured.extend(segments::nomogram(d, lay.nomogram_mu, &answers));
     measured.extend(segments::profile(d, prof.mu, phis, &answers));
+    let pressure = lay.pressure.and_then(|r| pressure_view::draw(r, d, phis, l.pressure_title(), &words));
     let mut groups = vec![dg, nm, pv];
+    groups.extend(pressure.as_ref().map(|(g, _)| g.clone()));
     groups.extend(table_groups(&lay, law, rest));
     let composition = Composition {
         name: l.sheet_name().to_string(),
@@ -371,6 +405,7 @@ fn build_at(ctx: &Context, p: &CamProject, prepared: &Prepared, width: ColumnWid
         profile_mu: prof.mu,
         profile_pieces: prof.pieces,
         profile_deviation: prof.deviation,
+        pressure: pressure.map(|(_, scales)| scales),
     })
 }
 

@@ -2,7 +2,7 @@
 //! tables not kept in that column in a strip left of the title block, and the nomogram and
 //! the profile arranged where each comes out largest.
 
-use super::diagrams;
+use super::{diagrams, pressure_view};
 use crate::drawing::frame;
 use crate::drawing::scale;
 use crate::drawing::table::{self, Table};
@@ -20,8 +20,11 @@ pub struct ColumnWidth {
 
 /// The column's widths tried: the usual one, and a wider one (a longer φ axis) for a sheet
 /// whose views leave the middle of the sheet empty beside the usual column.
-pub const COLUMN_WIDTHS: [ColumnWidth; 2] =
-    [ColumnWidth { left: 320.0, phi: 240.0 }, ColumnWidth { left: 400.0, phi: 300.0 }];
+pub const COLUMN_WIDTHS: [ColumnWidth; 3] = [
+    ColumnWidth { left: 320.0, phi: 240.0 },
+    ColumnWidth { left: 400.0, phi: 300.0 },
+    ColumnWidth { left: 470.0, phi: 350.0 },
+];
 /// Between regions, mm.
 const GAP: f64 = 6.0;
 /// Room a view needs besides its drawing: its title and its scale above, its margins.
@@ -41,6 +44,8 @@ pub struct Regions {
     pub profile: Rect,
     pub nomogram_mu: f64,
     pub profile_mu: f64,
+    /// The room the other regions leave for the pressure angle's diagram ([`free_room`]).
+    pub pressure: Option<Rect>,
 }
 
 /// A view's box in metres: its lower and upper corners.
@@ -151,7 +156,7 @@ impl Regions {
     /// otherwise be set across the lines. `(nomogram, profile)`.
     pub fn label_rooms(&self) -> (Rect, Rect) {
         let tb = frame::title_block_rect();
-        let fixed = [Some(self.diagrams), self.law_tables, Some(self.tables), Some(tb)];
+        let fixed = [Some(self.diagrams), self.law_tables, Some(self.tables), Some(tb), self.pressure];
         let fixed: Vec<Rect> = fixed.into_iter().flatten().collect();
         let with = |other: Rect| fixed.iter().copied().chain([other]).collect::<Vec<_>>();
         (grown(self.nomogram, &with(self.profile)), grown(self.profile, &with(self.nomogram)))
@@ -215,6 +220,7 @@ pub fn regions(c: &Content) -> Regions {
         profile,
         nomogram_mu,
         profile_mu,
+        pressure: None,
     };
     let beside = side_by_side(c, views).map(|(pm, p, nm, n)| around(pm, p, nm, n));
     let stacked = nomogram_under_profile(c, views).map(|(pm, p, nm, n)| around(pm, p, nm, n));
@@ -226,11 +232,12 @@ pub fn regions(c: &Content) -> Regions {
     };
     let best = [stacked, below, beside].into_iter().flatten().reduce(|a, b| if better(&b, &a) { b } else { a });
     // Nothing fits at any scale (an extent of no size): the views at 1:1 side by side.
-    best.unwrap_or_else(|| {
+    let best = best.unwrap_or_else(|| {
         let half = views.width() / 2.0;
         let nomogram = Rect::new(views.x0, views.y0, views.x0 + half - GAP, views.y1);
         around(0.001, Rect::new(views.x0 + half, views.y0, views.x1, views.y1), 0.001, nomogram)
-    })
+    });
+    Regions { pressure: free_room(&best), ..best }
 }
 
 /// The nomogram under the notes in the diagrams' column, the profile alone on the right.
@@ -249,6 +256,7 @@ fn nomogram_in_column(c: &Content, f: &Frame) -> Option<Regions> {
         profile: centred_across(profile, views),
         nomogram_mu,
         profile_mu,
+        pressure: None,
     })
 }
 
@@ -273,6 +281,45 @@ fn nomogram_under_profile(c: &Content, views: Rect) -> Option<(f64, Rect, f64, R
         Rect::new(views.x0, profile.y1 + GAP, views.x1, views.y1)
     });
     found.map(|(pm, p, nm, n)| (pm, centred_across(p, views), nm, centred_across(n, views)))
+}
+
+/// The largest room on the sheet that no region of `r` (nor the title block) comes within
+/// [`GAP`] of, where the pressure angle's diagram is drawn at least at its least size: the
+/// rectangle whose plot ([`pressure_view::plot_size`]) is largest. Its sides are taken from
+/// the sheet's and the regions' edges, which is where a largest empty rectangle's lie.
+pub fn free_room(r: &Regions) -> Option<Rect> {
+    let taken: Vec<Rect> = [Some(r.diagrams), r.law_tables, Some(r.tables), Some(r.nomogram), Some(r.profile)]
+        .into_iter()
+        .flatten()
+        .chain([frame::title_block_rect()])
+        .map(|t| t.inflate(GAP, GAP))
+        .collect();
+    let xs: Vec<f64> = taken.iter().flat_map(|t| [t.x0, t.x1]).chain([SHEET.x0, SHEET.x1]).collect();
+    let ys: Vec<f64> = taken.iter().flat_map(|t| [t.y0, t.y1]).chain([SHEET.y0, SHEET.y1]).collect();
+    let inside = |v: f64, lo: f64, hi: f64| v >= lo && v <= hi;
+    let (xs, ys): (Vec<f64>, Vec<f64>) = (
+        xs.into_iter().filter(|&x| inside(x, SHEET.x0, SHEET.x1)).collect(),
+        ys.into_iter().filter(|&y| inside(y, SHEET.y0, SHEET.y1)).collect(),
+    );
+    let mut best: Option<(f64, Rect)> = None;
+    for &x0 in &xs {
+        for &x1 in xs.iter().filter(|&&x| x > x0) {
+            for &y0 in &ys {
+                for &y1 in ys.iter().filter(|&&y| y > y0) {
+                    let room = Rect::new(x0, y0, x1, y1);
+                    if taken.iter().any(|t| t.intersect(room).area() > 0.0) {
+                        continue;
+                    }
+                    if let Some((w, h)) = pressure_view::plot_size(room)
+                        && best.is_none_or(|(a, _)| w * h > a)
+                    {
+                        best = Some((w * h, room));
+                    }
+                }
+            }
+        }
+    }
+    best.map(|(_, room)| room)
 }
 
 /// Where a view draws: its region less its title, scale and margins.

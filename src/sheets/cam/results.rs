@@ -54,6 +54,9 @@ struct Sheet3<'a> {
     profile_mu_l: f64,
     profile_pieces: usize,
     profile_deviation: f64,
+    /// The pressure angle's diagram's scales, °/mm (absent where the sheet had no room).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pressure_diagram: Option<PressureDiagram>,
     integration_error: Integration,
     law_columns: [&'static str; 4],
     /// φ in degrees, s, ds/dφ, d²s/dφ² every quarter degree.
@@ -69,6 +72,13 @@ struct Sheet3<'a> {
     centre_distance: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     rocker_start_deg: Option<f64>,
+}
+
+/// The pressure angle's diagram's scales, °/mm.
+#[derive(Serialize)]
+struct PressureDiagram {
+    mu_phi_deg: f64,
+    mu_alpha_deg: f64,
 }
 
 /// The law every quarter degree: φ in degrees, s, ds/dφ, d²s/dφ².
@@ -137,6 +147,9 @@ pub fn section(p: &CamProject, b: &CamBuild) -> serde_json::Value {
         profile_mu_l: b.profile_mu,
         profile_pieces: b.profile_pieces,
         profile_deviation: b.profile_deviation,
+        pressure_diagram: b
+            .pressure
+            .map(|s| PressureDiagram { mu_phi_deg: s.mu_phi_deg, mu_alpha_deg: s.mu_alpha_deg }),
         integration_error: Integration {
             divisions: DIVISIONS,
             rise: err[0],

@@ -7,6 +7,7 @@
 mod axes;
 mod plan;
 
+use plan::velocity_range;
 pub use plan::{Plan, Scales, plan, squeezed};
 
 use super::labels::CamWords;
@@ -62,6 +63,7 @@ pub fn draw(
         left: area.x0,
         work: p.rise + p.far_dwell + p.ret,
         peaks: (vmax, amax),
+        v_range: velocity_range(d),
         rocker,
         names,
         words,
@@ -94,6 +96,8 @@ struct Stack<'a> {
     left: f64,
     work: f64,
     peaks: (f64, f64),
+    /// The velocity analog's range, (lowest, highest).
+    v_range: (f64, f64),
     rocker: bool,
     names: [&'static str; 3],
     words: &'a CamWords,
@@ -171,16 +175,17 @@ impl Stack<'_> {
     fn velocity(&self, g: &mut Group, top: f64) -> f64 {
         let (sc, p, lang) = (self.sc, self.p, self.words.lang);
         let (vmax, name) = (self.peaks.0, self.names[1]);
+        let (lo, hi) = self.v_range;
         let start = g.mark();
         let v_plot = Plot {
-            origin: Point::new(self.x0, top + vmax / sc.mu_ds + 4.0),
+            origin: Point::new(self.x0, top + hi / sc.mu_ds + 4.0),
             x: self.x_axis(),
             y: Axis {
-                lo: -vmax,
-                hi: vmax,
+                lo,
+                hi,
                 mu: sc.mu_ds,
                 name: self.analog_name(name),
-                ticks: unlabelled(analog_ticks(vmax, sc.mu_ds, self.rocker, lang)),
+                ticks: unlabelled(within(analog_ticks(vmax, sc.mu_ds, self.rocker, lang), (lo, hi))),
             },
         };
         v_plot.draw_axes(g);
@@ -191,13 +196,13 @@ impl Stack<'_> {
         let means: Vec<f64> =
             self.integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
         let lines = [mu(name, sc.mu_ds, self.unit(), lang)];
-        let top = v_plot.origin.y - vmax / sc.mu_ds;
+        let top = v_plot.origin.y - hi / sc.mu_ds;
         let (at, lines) =
             clear_of_rays(&lines, (self.left, top, v_plot.origin.y), top_ray(&v_plot, sc.h1, &means, sc.mu_ds));
         scale_text(g, at, &lines);
         pole(g, &v_plot, Pole { h: sc.h1, index: "1" }, &means, sc.mu_ds, self.words);
-        axis_values(g, &v_plot, &analog_ticks(vmax, sc.mu_ds, self.rocker, lang), start);
-        v_plot.origin.y + vmax / sc.mu_ds + GAP
+        axis_values(g, &v_plot, &within(analog_ticks(vmax, sc.mu_ds, self.rocker, lang), (lo, hi)), start);
+        v_plot.origin.y - lo / sc.mu_ds + GAP
     }
 
     /// d²s/dφ²: the given law, with its mid-ordinates and its pole; returns the bottom.
@@ -243,6 +248,11 @@ impl Stack<'_> {
         axis_values(g, &a_plot, &analog_ticks(amax, sc.mu_dds, self.rocker, lang), start);
         a_plot.origin.y + amax / sc.mu_dds + GAP
     }
+}
+
+/// The ticks within the range `(lo, hi)`.
+fn within(ticks: Vec<(f64, String)>, (lo, hi): (f64, f64)) -> Vec<(f64, String)> {
+    ticks.into_iter().filter(|(v, _)| *v >= lo * (1.0 + 1e-9) && *v <= hi * (1.0 + 1e-9)).collect()
 }
 
 /// The division points along the x axis; their numbers are placed as labels, clear of the

@@ -76,12 +76,13 @@ pub fn plan(d: &Design, (max_w, phi_max): (f64, f64), max_h: f64) -> Plan {
         .find(|&m| work / m <= phi_max && width(m) <= max_w)
         .unwrap_or_else(|| series.clone().find(|&m| work / m <= phi_max).unwrap_or(1.0));
     let mu_phi_rad = mu_phi_deg.to_radians();
-    let (vmax, amax) = peaks(d);
+    let (_, amax) = peaks(d);
+    let (v_lo, v_hi) = velocity_range(d);
     // A = k·H2: the analog's height per mm of pole distance. H2 aims at the guide's 70 mm;
     // `giving`, it gives up height (down to the least accepted) where the column has no more.
     let fit = |mu_s: f64, mu_ds: f64, giving: bool| {
         let k = amax * mu_phi_rad / mu_ds;
-        let rest = p.lift / mu_s + 2.0 * vmax / mu_ds + 4.0 * GAP + PHASES + 8.0;
+        let rest = p.lift / mu_s + (v_hi - v_lo) / mu_ds + 4.0 * GAP + PHASES + 8.0;
         let room = if giving { ((max_h - rest) / (2.0 * k)).floor() } else { f64::INFINITY };
         let h2 = (ACCELERATION_MM.1 / k).round().min(room).clamp(H2_MM.0, H2_MM.1);
         let a = k * h2;
@@ -158,4 +159,21 @@ pub(super) fn peaks(d: &Design) -> (f64, f64) {
     let (tv, ta) = p.return_law.peaks();
     let h = p.lift;
     ((rv * h / p.rise).max(tv * h / p.ret), (ra * h / (p.rise * p.rise)).max(ta * h / (p.ret * p.ret)))
+}
+
+/// The velocity analog's range over the working angle, (lowest, highest), each side of 0
+/// (from the exact law, four points a degree): a rise's ds/dφ is positive and a return's
+/// negative, so a slow rise before a fast return leaves no room empty over the rise's hump.
+pub(super) fn velocity_range(d: &Design) -> (f64, f64) {
+    let p = &d.spec.program;
+    let work = p.rise + p.far_dwell + p.ret;
+    let n = (work.to_degrees() * 4.0).ceil() as usize;
+    let (vmax, _) = peaks(d);
+    let (lo, hi) = (0..=n)
+        .map(|k| p.at((work * k as f64 / n as f64).min(work - crate::num::tol::INSIDE_PHASE)).ds)
+        .fold((0.0f64, 0.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    // Between samples a peak may be a little higher: the law's own peak where the sampled
+    // one is within a hundredth of it.
+    let snap = |v: f64| if v.abs() >= 0.99 * vmax { vmax.copysign(v) } else { v * 1.001 };
+    (snap(lo), snap(hi))
 }
