@@ -64,6 +64,9 @@ pub struct CamBuild {
     pub profile_deviation: f64,
     /// The pressure angle's diagram's scales, where the sheet had room for it.
     pub pressure: Option<pressure_view::PressureScales>,
+    /// Lettered by the rule in the smaller lettering where the larger one fits too: a build
+    /// in [`Lettering::Large`] would differ.
+    large_differs: bool,
 }
 
 /// Of columns planned shorter and shorter with the regions they leave, the one with the
@@ -180,30 +183,33 @@ fn head_h(title: &str, w: f64) -> f64 {
 }
 
 /// Builds sheet 3 with the diagrams' column at each of the widths `regions.rs` tries, the
-/// tables lettered by the rule ([`Lettering::ByRule`]) and in the larger lettering wherever
-/// they fit ([`Lettering::Large`]), and keeps the one that leaves the least of the sheet empty
-/// (the usual width by the rule on a tie) among those whose layout is no less clean: a column
+/// tables lettered by the rule and, where that differs, in the larger lettering wherever
+/// they fit, and keeps the one that leaves the least of the sheet empty (the usual width by
+/// the rule on a tie) among those whose layout is no less clean: a column
 /// too narrow for its views' room leaves a band across the sheet's middle; one too wide
 /// shrinks the views; larger tables can leave the pressure angle's diagram room beside them.
 pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     use rayon::prelude::*;
     let prepared = Prepared::new(ctx, p);
-    let variants: Vec<(ColumnWidth, Lettering)> =
-        COLUMN_WIDTHS.iter().flat_map(|&w| [(w, Lettering::ByRule), (w, Lettering::Large)]).skip(1).collect();
+    // A width by the rule, and in the larger lettering where that differs.
+    let at_width = |w: ColumnWidth| -> Result<(CamBuild, Option<CamBuild>), SheetError> {
+        let rule = build_at(ctx, p, &prepared, w, Lettering::ByRule)?;
+        let large = if rule.large_differs { build_at(ctx, p, &prepared, w, Lettering::Large).ok() } else { None };
+        Ok((rule, large))
+    };
     // The usual width by the rule refuses what the sheet refuses; the other variants are
-    // only tried, each composed and measured on rayon's pool.
+    // only tried, each composed on rayon's pool.
     let (usual, others) = rayon::join(
-        || build_at(ctx, p, &prepared, COLUMN_WIDTHS[0], Lettering::ByRule),
-        || {
-            let tried = variants.par_iter().map(|&(w, t)| build_at(ctx, p, &prepared, w, t).ok());
-            tried.flatten().map(|b| (measured(&b), b)).collect::<Vec<_>>()
-        },
+        || at_width(COLUMN_WIDTHS[0]),
+        || COLUMN_WIDTHS[1..].par_iter().filter_map(|&w| at_width(w).ok()).collect::<Vec<_>>(),
     );
-    let usual = usual?;
+    let (usual, usual_large) = usual?;
     let (faults, empty) = measured(&usual);
     let first = ((faults, empty - 0.005), usual);
     let better = |a: (usize, f64), b: (usize, f64)| a.0 <= b.0 && a.1 < b.1;
-    Ok(others.into_iter().fold(first, |best, b| if better(b.0, best.0) { b } else { best }).1)
+    let rest =
+        usual_large.into_iter().chain(others.into_iter().flat_map(|(rule, large)| [Some(rule), large]).flatten());
+    Ok(rest.map(|b| (measured(&b), b)).fold(first, |best, b| if better(b.0, best.0) { b } else { best }).1)
 }
 
 /// How the tables are lettered.
@@ -315,7 +321,7 @@ fn build_at(
     // (a tall, narrow nomogram beside the profile leaves r_min's label no room): then in the
     // coarse one, as large as the sheet allowed before the finer series.
     let mut fine = true;
-    let (lay, (law, rest), nm, pv, prof) = loop {
+    let (lay, (law, rest), nm, pv, prof, large_differs) = loop {
         let views = Views {
             nomogram: ViewSize {
                 extent: prepared.nomogram_extent,
@@ -347,8 +353,9 @@ fn build_at(
         // The tables in 3.5 mm lettering where the views keep their scales beside them and
         // the diagrams most of their height.
         let by_rule = kept(&on_large, &on_small) && large_plan.height >= small_plan.height * LARGE_KEEPS;
-        let lettered_large =
-            (lettering == Lettering::Large || by_rule) && on_large.tables_fit(&large.law_sizes, &large.rest_sizes);
+        let large_fits = on_large.tables_fit(&large.law_sizes, &large.rest_sizes);
+        let lettered_large = (lettering == Lettering::Large || by_rule) && large_fits;
+        let large_differs = large_fits && !lettered_large;
         column.plan = if lettered_large { large_plan } else { small_plan };
         let (lay, tables) = if lettered_large { (on_large, large) } else { (on_small, small) };
         let content = views.content((&column.plan, column.text_h), &tables.law_sizes, &tables.rest_sizes);
@@ -374,7 +381,7 @@ fn build_at(
         let prof = profile_view::draw(&mut pv, &at, d, fitted, phis, &mut pl, &words);
         scale_note(&mut pv, prof.mu, Some(scale::ratio(prof.mu)), &words);
         pl.place(&mut pv, profile_room);
-        break (lay, (tables.law.clone(), tables.rest.clone()), nm, pv, prof);
+        break (lay, (tables.law.clone(), tables.rest.clone()), nm, pv, prof, large_differs);
     };
     let (dg, scales) = diagrams_group(&lay, &column, p, &integrated, &words);
     let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), notes);
@@ -406,6 +413,7 @@ fn build_at(
         profile_pieces: prof.pieces,
         profile_deviation: prof.deviation,
         pressure: pressure.map(|(_, scales)| scales),
+        large_differs,
     })
 }
 
