@@ -12,15 +12,15 @@ use crate::drawing::fmt;
 use crate::drawing::place::Labels;
 use crate::drawing::plot::{Axis, Plot, round_ticks};
 use crate::drawing::scale;
-use crate::drawing::scene::{DASHED, Group, MAIN, THIN};
+use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN};
 use crate::drawing::text::LabelText;
 use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
-/// Room round the plot inside its region, mm: the title and two scale lines above (and the
-/// y axis' arrow and name over the plot), the y values on the left, the x axis' arrow and
+/// Room round the plot inside its region, mm: the title, two scale lines and the largest
+/// angles' line above (and the y axis' arrow and name over the plot), the y values on the left, the x axis' arrow and
 /// name on the right, the position numbers below.
-const TOP: f64 = 26.0;
+const TOP: f64 = 30.5;
 const LEFT: f64 = 12.0;
 const RIGHT: f64 = 14.0;
 const BOTTOM: f64 = 9.0;
@@ -116,9 +116,12 @@ pub fn draw(region: Rect, d: &Design, phis: &[f64], title: &str, words: &CamWord
     Some((g, PressureScales { mu_phi_deg: mu_phi, mu_alpha_deg: mu_alpha }))
 }
 
-/// Each phase's allowed angle dashed over its span, named at its end, and its largest angle
-/// as a dot on the curve, valued beside it.
+/// Each phase's allowed angle dashed over its span, named above its middle, and its largest
+/// angle as a dot on the curve, its value in a line under the scales (beside the dot, where
+/// the largest angle is the allowed one, the value's subscript met the dashed line).
 fn allowed_and_largest(g: &mut Group, plot: &Plot, d: &Design, labels: &mut Labels, words: &CamWords) {
+    // The largest angles' line under the scales, the values side by side.
+    let (mut x, baseline) = (g.region.x0 + 2.0, g.region.y0 + 19.5);
     let (l, lang) = (words.sheet, words.lang);
     for (k, ph) in Phase::BOTH.into_iter().enumerate() {
         let (a, b) = ph.span(&d.spec.program);
@@ -140,8 +143,9 @@ fn allowed_and_largest(g: &mut Group, plot: &Plot, d: &Design, labels: &mut Labe
             2.5,
         );
         let (largest, at) = d.max_pressure[k];
-        let peak = plot.at(at.to_degrees(), largest.to_degrees());
-        g.dot(peak, 0.6);
-        labels.add(peak, Vec2::new(0.0, -1.0), LabelText::new("α", sub_max).with_tail(deg(largest.to_degrees())), 2.5);
+        g.dot(plot.at(at.to_degrees(), largest.to_degrees()), 0.6);
+        let value = LabelText::new("α", sub_max).with_tail(deg(largest.to_degrees()));
+        value.draw(g, Point::new(x, baseline), 2.5, Anchor::Start);
+        x += value.width(2.5) + 5.0;
     }
 }
