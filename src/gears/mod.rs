@@ -4,4 +4,5 @@
 
 pub mod pair;
 pub mod planetary;
+pub mod sliding;
 pub mod tooth;

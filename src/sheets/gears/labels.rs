@@ -16,6 +16,7 @@ crate::label_set! {
         contact_ratio_drawn(e, d),
         involute_note(dev),
         active_note,
+        sliding_title,
         arc_of_action,
         undercut_note(w, x, xmin),
         auto_shift_note(w, x),

@@ -9,6 +9,7 @@ mod mesh_view;
 mod planetary_view;
 mod results;
 mod segments;
+mod sliding_view;
 mod stage_velocities;
 mod tables;
 mod teeth_view;
@@ -29,6 +30,7 @@ use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::table::{self, CELL_TEXT};
 use crate::drawing::text::{TooLong, paragraph, wrap};
 use crate::gears::pair::PairWarning;
+use crate::gears::sliding::Sliding;
 use crate::gears::tooth::Outline;
 use crate::num::units::mm;
 use crate::project::gears::PlanetaryProject;
@@ -60,6 +62,8 @@ pub struct GearsBuild {
     pub planetary_mu: Option<f64>,
     /// The ratio read off the plan of angular velocities.
     pub planetary_reading: Option<Reading>,
+    /// The specific sliding's diagram, where the mesh left it room.
+    pub sliding: Option<sliding_view::SlidingDrawn>,
 }
 
 /// The parts of the mesh's and the planetary stage's drawings (their ids in the SVG, and
@@ -98,7 +102,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
             Rect { x1: (right_of(0.0).x1 - w - 8.0).max(MESH.x1), ..MESH }
         }
     };
-    let (mesh, drawn) = mesh_group(p, region, &words)?;
+    let (mesh, drawn, sliding) = mesh_group(p, region, &words)?;
     let notes = tables::notes(p, drawn.contact_ratio_drawn, &words, ctx.first_table);
     let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), &notes);
     let mut measured = segments::mesh(&p.pair, drawn.mu, MESH_PART, &answers);
@@ -144,7 +148,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         segments: measured,
         measured: None,
     };
-    Ok(GearsBuild { composition, mesh: drawn, planetary_mu, planetary_reading })
+    Ok(GearsBuild { composition, mesh: drawn, planetary_mu, planetary_reading, sliding })
 }
 
 /// The notes under the mesh (its results, the sheet's notes and the assumptions) may take
@@ -154,7 +158,11 @@ const NOTES_MAX_H: f64 = 100.0;
 
 /// The mesh on the left half: title on top, notes at the bottom, the drawing between;
 /// refuses assumptions that would make the notes taller than [`NOTES_MAX_H`].
-fn mesh_group(p: &GearsProject, region: Rect, words: &GearWords) -> Result<(Group, MeshDrawn), TooLong> {
+fn mesh_group(
+    p: &GearsProject,
+    region: Rect,
+    words: &GearWords,
+) -> Result<(Group, MeshDrawn, Option<sliding_view::SlidingDrawn>), TooLong> {
     let (l, lang) = (words.sheet, words.lang);
     let outlines = [Outline::new(&p.pair.spec, &p.pair.wheels[0]), Outline::new(&p.pair.spec, &p.pair.wheels[1])];
     let notes = mesh_notes(p, words);
@@ -186,6 +194,11 @@ fn mesh_group(p: &GearsProject, region: Rect, words: &GearWords) -> Result<(Grou
     labels.place(&mut mesh, area);
     mesh.part_from(MESH_PART, start);
     let start = mesh.mark();
+    let sliding = sliding_view::draw(&mut mesh, area, &Sliding::of(&p.pair), l.sliding_title(), words);
+    if sliding.is_some() {
+        mesh.part_from("mesh.sliding", start);
+    }
+    let start = mesh.mark();
     let mut y = area.y1 + 5.0;
     let eps = &fmt::value;
     let diff = (drawn.contact_ratio_drawn - p.pair.contact_ratio) / p.pair.contact_ratio * 100.0;
@@ -199,7 +212,7 @@ fn mesh_group(p: &GearsProject, region: Rect, words: &GearWords) -> Result<(Grou
         y = paragraph(&mut mesh, Point::new(region.x0 + 2.0, y), &wrapped(n), CELL_TEXT, Anchor::Start) + 0.5;
     }
     mesh.part_from("mesh.notes", start);
-    Ok((mesh, drawn))
+    Ok((mesh, drawn, sliding))
 }
 
 /// The notes under the mesh: shifts chosen, warnings, the user's assumptions.

@@ -89,6 +89,19 @@ struct Sheet2<'a> {
     drawing: DrawingOut,
     #[serde(skip_serializing_if = "Option::is_none")]
     planetary: Option<PlanetaryOut<'a>>,
+    /// The specific sliding's diagram, where the mesh leaves it room.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    sliding: Option<SlidingOut>,
+}
+
+/// λ1 at B1 and λ2 at B2 (the flanks' largest specific sliding on the active line) and the
+/// diagram's scales.
+#[derive(Serialize)]
+struct SlidingOut {
+    lambda1_b1: f64,
+    lambda2_b2: f64,
+    mu_l: f64,
+    mu_lambda: f64,
 }
 
 fn pair_out(p: &GearsProject, pr: &Pair, eps_drawn: f64) -> PairOut {
@@ -158,6 +171,12 @@ pub fn section(p: &GearsProject, b: &GearsBuild) -> serde_json::Value {
                 read_to_mm: READ_TO_MM,
                 ratio: r.ratio,
             }),
+        }),
+        sliding: b.sliding.map(|s| SlidingOut {
+            lambda1_b1: s.lambda[0],
+            lambda2_b2: s.lambda[1],
+            mu_l: s.mu_l,
+            mu_lambda: s.mu_lambda,
         }),
     };
     serde_json::to_value(&out).expect("the results serialise")

@@ -1,0 +1,173 @@
+//! The diagram of specific sliding λ1, λ2 over the line of action N1N2 (`gears::sliding`),
+//! drawn inside the mesh's region in the largest room its circles leave (a large wheel's
+//! inside is otherwise empty), the active line B1B2 marked and the largest sliding of each
+//! flank, at B1 and B2, written under the scales. Left out where no room is large enough
+//! or a label finds no clean spot: the mesh is never moved or shrunk for it.
+
+use super::labels::GearWords;
+use crate::drawing::fmt;
+use crate::drawing::obstacles::Obstacles;
+use crate::drawing::place::Labels;
+use crate::drawing::plot::{Axis, Plot, round_ticks};
+use crate::drawing::scale;
+use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text};
+use crate::drawing::text::LabelText;
+use crate::gears::sliding::Sliding;
+use kurbo::{Point, Rect, Vec2};
+
+/// The room's grid, mm: a cell is free where nothing of the mesh meets it grown by 1 mm.
+const CELL: f64 = 4.0;
+/// The least room, mm (width, height), and how much taller than wide its plot may be.
+const MIN_ROOM: (f64, f64) = (120.0, 80.0);
+const MAX_ASPECT: f64 = 0.75;
+/// Room round the plot inside the diagram's box, mm: title, two scale lines and the
+/// largest slidings' line above (and the y axis' arrow), values left, the x axis' arrow
+/// and name right, the points' names below.
+const TOP: f64 = 30.0;
+const LEFT: f64 = 12.0;
+const RIGHT: f64 = 18.0;
+const BOTTOM: f64 = 8.0;
+/// The most negative sliding shown: the curves run off the plot beyond it.
+const LAMBDA_FLOOR: f64 = -8.0;
+
+/// What the diagram measured: λ1 at B1 and λ2 at B2, and its scales (m/mm, 1/mm).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlidingDrawn {
+    pub lambda: [f64; 2],
+    pub mu_l: f64,
+    pub mu_lambda: f64,
+}
+
+/// Draws the diagram into `mesh` in the largest free room of `area`; `None` (nothing
+/// drawn) where there is no room at least [`MIN_ROOM`] or its labels find no spot.
+pub fn draw(mesh: &mut Group, area: Rect, s: &Sliding, title: &str, words: &GearWords) -> Option<SlidingDrawn> {
+    let room = free_room(mesh, area)?;
+    let mut g = Group::new("sliding", room);
+    let drawn = draw_in(&mut g, room, s, title, words)?;
+    mesh.items.extend(g.items);
+    Some(drawn)
+}
+
+/// The largest rectangle of `area` on the grid of [`CELL`] that nothing of `g` meets (the
+/// histogram method, row by row), at least [`MIN_ROOM`], scored by the plot it holds.
+fn free_room(g: &Group, area: Rect) -> Option<Rect> {
+    let obstacles = Obstacles::of_items(&g.items);
+    let (nx, ny) = ((area.width() / CELL).floor() as usize, (area.height() / CELL).floor() as usize);
+    let cell = |i: usize, j: usize| {
+        let (x, y) = (area.x0 + i as f64 * CELL, area.y0 + j as f64 * CELL);
+        Rect::new(x, y, x + CELL, y + CELL)
+    };
+    let mut heights = vec![0usize; nx];
+    let mut best: Option<(f64, Rect)> = None;
+    for j in 0..ny {
+        for (i, h) in heights.iter_mut().enumerate() {
+            *h = if obstacles.is_clear(cell(i, j).inflate(1.0, 1.0)) { *h + 1 } else { 0 };
+        }
+        for i0 in 0..nx {
+            let mut h = usize::MAX;
+            for (i1, &column) in heights.iter().enumerate().skip(i0) {
+                h = h.min(column);
+                if h == 0 {
+                    break;
+                }
+                let (w, hh) = ((i1 + 1 - i0) as f64 * CELL, h as f64 * CELL);
+                if w < MIN_ROOM.0 || hh < MIN_ROOM.1 {
+                    continue;
+                }
+                let plot = (w - LEFT - RIGHT) * (hh - TOP - BOTTOM).min((w - LEFT - RIGHT) * MAX_ASPECT);
+                if best.is_none_or(|(b, _)| plot > b) {
+                    let y1 = area.y0 + (j + 1) as f64 * CELL;
+                    best = Some((
+                        plot,
+                        Rect::new(area.x0 + i0 as f64 * CELL, y1 - hh, area.x0 + (i1 + 1) as f64 * CELL, y1),
+                    ));
+                }
+            }
+        }
+    }
+    best.map(|(_, r)| r.inset(-1.0))
+}
+
+/// The diagram in `room`: its plot at round scales that fill the room.
+fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWords) -> Option<SlidingDrawn> {
+    let lang = words.lang;
+    let at_b = [s.lambda(0, s.active[0].max(s.line * 1e-9)), s.lambda(1, s.active[1].min(s.line * (1.0 - 1e-9)))];
+    let lowest = at_b[0].min(at_b[1]).clamp(LAMBDA_FLOOR, -1.0);
+    let w = room.width() - LEFT - RIGHT;
+    let mu_l = scale::plan_round_up(s.line / w);
+    let h = (room.height() - TOP - BOTTOM).min(s.line / mu_l * MAX_ASPECT);
+    let mu_lambda = scale::plan_round_up((1.0 - lowest) / h);
+    let ticks: Vec<(f64, String)> = Vec::new();
+    let plot = Plot {
+        origin: Point::new(room.x0 + LEFT, room.y0 + TOP + 1.0 / mu_lambda),
+        x: Axis { lo: 0.0, hi: s.line, mu: mu_l, name: "N₁N₂".into(), ticks },
+        y: Axis {
+            lo: lowest,
+            hi: 1.0,
+            mu: mu_lambda,
+            name: "λ".into(),
+            ticks: round_ticks(lowest, 1.0, mu_lambda, lang),
+        },
+    };
+    g.text(Text::new(Point::new(room.x0 + 2.0, room.y0 + 5.0), title, 3.5, Anchor::Start));
+    let unit = words.common.unit_m_per_mm();
+    let line =
+        |g: &mut Group, t: LabelText, y: f64| t.draw(g, Point::new(room.x0 + 2.0, room.y0 + y), 2.5, Anchor::Start);
+    line(g, LabelText::new("μ", "l").with_tail(format!(" = {} {unit}", fmt::trimmed(mu_l, lang))), 10.5);
+    line(
+        g,
+        LabelText::new("μ", "λ").with_tail(format!(
+            " = {} 1/{}",
+            fmt::trimmed(mu_lambda, lang),
+            words.common.unit_mm()
+        )),
+        15.0,
+    );
+    let mut x = room.x0 + 2.0;
+    for (i, point) in [(0, "B₁"), (1, "B₂")] {
+        let v = LabelText::new("λ", if i == 0 { "1" } else { "2" })
+            .with_tail(format!(" ({point}) = {}", fmt::value(at_b[i], lang)));
+        v.draw(g, Point::new(x, room.y0 + 19.5), 2.5, Anchor::Start);
+        x += v.width(2.5) + 5.0;
+    }
+    plot.draw_axes(g);
+    // Each flank's curve where it is within the plot: λ1 from where it reaches the lowest
+    // value to N2, λ2 from N1 to where it reaches it.
+    let from1 = s.line / (1.0 + (1.0 - lowest) * s.ratio);
+    let to2 = (1.0 - lowest) * s.line / (s.ratio + 1.0 - lowest);
+    let curve = |i: usize, a: f64, b: f64| -> Vec<(f64, f64)> {
+        (0..=200).map(|k| a + (b - a) * k as f64 / 200.0).map(|x| (x, s.lambda(i, x).max(lowest))).collect()
+    };
+    let edge = s.line * 1e-6;
+    plot.line(g, &curve(0, from1, s.line - edge), MAIN);
+    plot.line(g, &curve(1, edge, to2), MAIN);
+    let mut labels = Labels::new();
+    // The active line's ends, each with the sliding there; N1, P, N2 on the axis.
+    for (i, &xb) in s.active.iter().enumerate() {
+        let (a, b) = (plot.at(xb, 0.0), plot.at(xb, at_b[i].max(lowest)));
+        g.line(a, b, DASHED);
+    }
+    let names = [
+        (0.0, "N", "1"),
+        (s.active[0], "B", "1"),
+        (s.pitch_point, "P", ""),
+        (s.active[1], "B", "2"),
+        (s.line, "N", "2"),
+    ];
+    for (x, n, sub) in names {
+        let p = plot.at(x, 0.0);
+        g.line(p, p + Vec2::new(0.0, 1.5), THIN);
+        labels.add(p + Vec2::new(0.0, 1.5), Vec2::new(0.0, 1.0), LabelText::new(n, sub), 2.5);
+    }
+    for (i, x) in [(0, (s.pitch_point + s.line) / 2.0), (1, s.pitch_point / 2.0)] {
+        let p = plot.at(x, s.lambda(i, x).max(lowest));
+        labels.add(
+            p,
+            Vec2::new(if i == 0 { 1.0 } else { -1.0 }, -1.0),
+            LabelText::new("λ", if i == 0 { "1" } else { "2" }),
+            2.5,
+        );
+    }
+    let placed = labels.place(g, room);
+    (!placed.contains(&false)).then_some(SlidingDrawn { lambda: at_b, mu_l, mu_lambda })
+}

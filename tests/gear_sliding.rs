@@ -1,0 +1,96 @@
+//! Sheet 2's diagram of specific sliding: λ1 at B1 and λ2 at B2 against the textbook's
+//! λ1 = 1 − (g − x)/(u·x), λ2 = 1 − u·x/(g − x) (x from N1 along N1N2 = g = a_w·sin α_w,
+//! N1B2 = √(r_a1² − r_b1²), N2B1 = √(r_a2² − r_b2²)), computed here from the pair's radii in
+//! `results.json`; its ordinates at B1 and B2 drawn at its stated scale; drawn where the mesh
+//! leaves a wheel's inside empty.
+// Tests compute their references with the platform's math; only src/ must not (clippy.toml).
+#![allow(clippy::disallowed_methods)]
+
+mod common;
+
+use common::root;
+use kurbo::PathEl;
+use tmm_sheets::drawing::scene::{Item, LineType};
+use tmm_sheets::pipeline;
+
+fn sheet2(text: &str) -> pipeline::Built {
+    pipeline::build(&pipeline::load(text).unwrap(), &[2]).unwrap().remove(0)
+}
+
+/// The textbook's λ1 at B1 and λ2 at B2 from the pair's results.
+fn textbook(r: &serde_json::Value) -> [f64; 2] {
+    let p = &r["pair"];
+    let f = |v: &serde_json::Value| v.as_f64().unwrap();
+    let radii = |k: &str, i: usize| f(&p["radii"][k][i]);
+    let (aw, alpha) = (f(&p["centre_distance"]), f(&p["working_pressure_angle_deg"]).to_radians());
+    let g = aw * alpha.sin();
+    let u = f(&p["ratio"]);
+    let reach = |i: usize| (radii("tip", i).powi(2) - radii("base", i).powi(2)).sqrt();
+    // Where a tip reaches past the other wheel's N the active line stops at N.
+    let (x_b1, x_b2) = ((g - reach(1)).max(0.0), reach(0).min(g));
+    [1.0 - (g - x_b1) / (u * x_b1), 1.0 - u * x_b2 / (g - x_b2)]
+}
+
+#[test]
+fn the_specific_sliding_at_the_active_lines_ends_is_the_textbooks() {
+    let dir = root().join("fixtures/gears");
+    let mut texts: Vec<(String, String)> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "yaml"))
+        .map(|p| (p.file_stem().unwrap().to_string_lossy().into_owned(), std::fs::read_to_string(&p).unwrap()))
+        .collect();
+    texts.push(("worked-example".into(), pipeline::DEFAULT_PROJECT.to_string()));
+    for (name, text) in texts {
+        let b = sheet2(&text);
+        let r = &b.output.results;
+        let sliding = &r["sliding"];
+        // A wheel's inside leaves room for it on the handbook's pair and the double planet.
+        if ["handbook-khk", "shifted-double-planet"].contains(&name.as_str()) {
+            assert!(sliding.is_object(), "{name}: no diagram of specific sliding");
+        }
+        if !sliding.is_object() {
+            continue;
+        }
+        let expected = textbook(r);
+        let drawn = [sliding["lambda1_b1"].as_f64().unwrap(), sliding["lambda2_b2"].as_f64().unwrap()];
+        for i in 0..2 {
+            assert!(
+                (drawn[i] - expected[i]).abs() <= 1e-9 * expected[i].abs().max(1.0),
+                "{name}: λ{} = {} against the textbook's {}",
+                i + 1,
+                drawn[i],
+                expected[i]
+            );
+        }
+        // The dashed ordinates at B1 and B2, at μ_λ, are those values (or reach the plot's
+        // floor where the sliding runs off it).
+        let mu = sliding["mu_lambda"].as_f64().unwrap();
+        let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
+        let part = mesh.parts.iter().find(|p| p.id == "mesh.sliding").unwrap();
+        let dashed: Vec<f64> = mesh.items[part.items.clone()]
+            .iter()
+            .filter_map(|i| match i {
+                Item::Path { path, pen } if pen.line == LineType::Dashed => {
+                    let pts: Vec<_> = path
+                        .to_bez()
+                        .elements()
+                        .iter()
+                        .filter_map(|e| match e {
+                            PathEl::MoveTo(p) | PathEl::LineTo(p) => Some(*p),
+                            _ => None,
+                        })
+                        .collect();
+                    Some((pts[1].y - pts[0].y).abs() * mu)
+                }
+                _ => None,
+            })
+            .collect();
+        assert_eq!(dashed.len(), 2, "{name}: the ordinates at B1 and B2");
+        let floor = dashed.iter().copied().fold(0.0, f64::max);
+        for i in 0..2 {
+            let want = (-expected[i]).min(floor);
+            assert!((dashed[i] - want).abs() < 0.05 * mu, "{name}: ordinate {} at λ {}", dashed[i], expected[i]);
+        }
+    }
+}
