@@ -98,8 +98,11 @@ struct Sheet2<'a> {
 /// diagram's scales.
 #[derive(Serialize)]
 struct SlidingOut {
-    lambda1_b1: f64,
-    lambda2_b2: f64,
+    /// Absent where that end of the active line is at N (interference: unbounded).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lambda1_b1: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lambda2_b2: Option<f64>,
     mu_l: f64,
     mu_lambda: f64,
 }

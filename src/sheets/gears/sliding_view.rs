@@ -30,10 +30,11 @@ const BOTTOM: f64 = 8.0;
 /// The most negative sliding shown: the curves run off the plot beyond it.
 const LAMBDA_FLOOR: f64 = -8.0;
 
-/// What the diagram measured: λ1 at B1 and λ2 at B2, and its scales (m/mm, 1/mm).
+/// What the diagram measured: λ1 at B1 and λ2 at B2 (none where that end of the active line
+/// is at N: interference, the sliding there unbounded), and its scales (m/mm, 1/mm).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SlidingDrawn {
-    pub lambda: [f64; 2],
+    pub lambda: [Option<f64>; 2],
     pub mu_l: f64,
     pub mu_lambda: f64,
 }
@@ -91,8 +92,13 @@ fn free_room(g: &Group, area: Rect) -> Option<Rect> {
 /// The diagram in `room`: its plot at round scales that fill the room.
 fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWords) -> Option<SlidingDrawn> {
     let lang = words.lang;
-    let at_b = [s.lambda(0, s.active[0].max(s.line * 1e-9)), s.lambda(1, s.active[1].min(s.line * (1.0 - 1e-9)))];
-    let lowest = at_b[0].min(at_b[1]).clamp(LAMBDA_FLOOR, -1.0);
+    // An end of the active line at N (a tip reaching past it: interference) slides without
+    // bound there.
+    let at_b = [
+        (s.active[0] > s.line * 1e-9).then(|| s.lambda(0, s.active[0])),
+        (s.active[1] < s.line * (1.0 - 1e-9)).then(|| s.lambda(1, s.active[1])),
+    ];
+    let lowest = at_b.iter().map(|l| l.unwrap_or(f64::NEG_INFINITY)).fold(-1.0, f64::min).clamp(LAMBDA_FLOOR, -1.0);
     let w = room.width() - LEFT - RIGHT;
     let mu_l = scale::plan_round_up(s.line / w);
     let h = (room.height() - TOP - BOTTOM).min(s.line / mu_l * MAX_ASPECT);
@@ -125,8 +131,10 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
     );
     let mut x = room.x0 + 2.0;
     for (i, point) in [(0, "B₁"), (1, "B₂")] {
-        let v = LabelText::new("λ", if i == 0 { "1" } else { "2" })
-            .with_tail(format!(" ({point}) = {}", fmt::value(at_b[i], lang)));
+        let v = LabelText::new("λ", if i == 0 { "1" } else { "2" }).with_tail(match at_b[i] {
+            Some(v) => format!(" ({point}) = {}", fmt::value(v, lang)),
+            None => format!(" ({point}) → −∞"),
+        });
         v.draw(g, Point::new(x, room.y0 + 19.5), 2.5, Anchor::Start);
         x += v.width(2.5) + 5.0;
     }
@@ -143,18 +151,20 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
     plot.line(g, &curve(1, edge, to2), MAIN);
     let mut labels = Labels::new();
     // The active line's ends, each with the sliding there; N1, P, N2 on the axis.
-    for (i, &xb) in s.active.iter().enumerate() {
-        let (a, b) = (plot.at(xb, 0.0), plot.at(xb, at_b[i].max(lowest)));
-        g.line(a, b, DASHED);
+    for (&xb, v) in s.active.iter().zip(at_b) {
+        if let Some(v) = v {
+            g.line(plot.at(xb, 0.0), plot.at(xb, v.max(lowest)), DASHED);
+        }
     }
+    // A B at its N is named by N (its value line says so).
     let names = [
-        (0.0, "N", "1"),
-        (s.active[0], "B", "1"),
-        (s.pitch_point, "P", ""),
-        (s.active[1], "B", "2"),
-        (s.line, "N", "2"),
+        (Some(0.0), "N", "1"),
+        (at_b[0].map(|_| s.active[0]), "B", "1"),
+        (Some(s.pitch_point), "P", ""),
+        (at_b[1].map(|_| s.active[1]), "B", "2"),
+        (Some(s.line), "N", "2"),
     ];
-    for (x, n, sub) in names {
+    for (x, n, sub) in names.into_iter().filter_map(|(x, n, sub)| x.map(|x| (x, n, sub))) {
         let p = plot.at(x, 0.0);
         g.line(p, p + Vec2::new(0.0, 1.5), THIN);
         labels.add(p + Vec2::new(0.0, 1.5), Vec2::new(0.0, 1.0), LabelText::new(n, sub), 2.5);
