@@ -94,3 +94,16 @@ fn the_specific_sliding_at_the_active_lines_ends_is_the_textbooks() {
         }
     }
 }
+
+/// Found by the stress test: a pair alone's mesh region reaches over the title block's
+/// column, and the diagram took the room there, entering the title block. It keeps off it.
+#[test]
+fn a_pair_alones_sliding_diagram_keeps_off_the_title_block() {
+    let text = "project:\n  title: {uz: \"Sinov\", ru: \"Проба\", en: \"Stress\"}\n  designation: {uz: \"MMN KL 00.00.00\", ru: \"ТММ КП 00.00.00\", en: \"TMM CP 00.00.00\"}\n  language: en\n\ngears:\n  pair: {module: 13.49, z: [100, 22]}\n";
+    let b = sheet2(text);
+    let l = &b.output.results["layout"];
+    for key in ["texts_crossed", "text_overlaps", "outside_region"] {
+        assert_eq!(l[key], 0, "{key}: {}", l["problems"]);
+    }
+    assert!(b.output.results["sliding"].is_object(), "the diagram found room elsewhere");
+}
