@@ -8,7 +8,7 @@
 mod common;
 
 use common::root;
-use kurbo::{PathEl, Point};
+use kurbo::Point;
 use tmm_sheets::drawing::scene::{Group, Item, LineType};
 use tmm_sheets::pipeline;
 
@@ -31,19 +31,9 @@ fn built() -> Vec<(String, pipeline::Built)> {
         .collect()
 }
 
-/// A stroked path's points (its lines' ends).
+/// A stroked path's points (its lines' ends), pen width and line type.
 fn points(item: &Item) -> Option<(Vec<Point>, f64, LineType)> {
-    let Item::Path { path, pen } = item else { return None };
-    let pts = path
-        .to_bez()
-        .elements()
-        .iter()
-        .filter_map(|e| match e {
-            PathEl::MoveTo(p) | PathEl::LineTo(p) => Some(*p),
-            _ => None,
-        })
-        .collect();
-    Some((pts, pen.width, pen.line))
+    common::path_points(item).map(|(pts, pen)| (pts, pen.width, pen.line))
 }
 
 /// The diagram's x axis (paper y): where its position ticks, the 1.5 mm vertical strokes

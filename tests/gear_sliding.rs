@@ -9,8 +9,7 @@
 mod common;
 
 use common::root;
-use kurbo::PathEl;
-use tmm_sheets::drawing::scene::{Item, LineType};
+use tmm_sheets::drawing::scene::LineType;
 use tmm_sheets::pipeline;
 
 fn sheet2(text: &str) -> pipeline::Built {
@@ -70,21 +69,9 @@ fn the_specific_sliding_at_the_active_lines_ends_is_the_textbooks() {
         let part = mesh.parts.iter().find(|p| p.id == "mesh.sliding").unwrap();
         let dashed: Vec<f64> = mesh.items[part.items.clone()]
             .iter()
-            .filter_map(|i| match i {
-                Item::Path { path, pen } if pen.line == LineType::Dashed => {
-                    let pts: Vec<_> = path
-                        .to_bez()
-                        .elements()
-                        .iter()
-                        .filter_map(|e| match e {
-                            PathEl::MoveTo(p) | PathEl::LineTo(p) => Some(*p),
-                            _ => None,
-                        })
-                        .collect();
-                    Some((pts[1].y - pts[0].y).abs() * mu)
-                }
-                _ => None,
-            })
+            .filter_map(common::path_points)
+            .filter(|(_, pen)| pen.line == LineType::Dashed)
+            .map(|(pts, _)| (pts[1].y - pts[0].y).abs() * mu)
             .collect();
         assert_eq!(dashed.len(), expected.len(), "{name}: the ordinates at B1 and B2 inside N1N2");
         let floor = dashed.iter().copied().fold(0.0, f64::max);

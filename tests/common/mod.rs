@@ -160,3 +160,21 @@ pub fn env_seed(var: &str) -> proptest::test_runner::RngSeed {
         None => RngSeed::Fixed(2026),
     }
 }
+
+/// A stroked path's line ends (its move-to and line-to points) and its pen; `None` for any
+/// other item.
+pub fn path_points(
+    item: &tmm_sheets::drawing::scene::Item,
+) -> Option<(Vec<kurbo::Point>, tmm_sheets::drawing::scene::Pen)> {
+    let tmm_sheets::drawing::scene::Item::Path { path, pen } = item else { return None };
+    let pts = path
+        .to_bez()
+        .elements()
+        .iter()
+        .filter_map(|e| match e {
+            kurbo::PathEl::MoveTo(p) | kurbo::PathEl::LineTo(p) => Some(*p),
+            _ => None,
+        })
+        .collect();
+    Some((pts, *pen))
+}

@@ -12,6 +12,7 @@ mod regions;
 mod results;
 mod segments;
 mod tables;
+mod view_heading;
 
 pub use diagrams::Scales;
 pub use profile_view::{MAX_PIECES, PROFILE_TOL};
@@ -21,18 +22,18 @@ use super::scaffold::Composition;
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::cams::follower::Follower;
 use crate::cams::integrate::{self, Integrated};
-use crate::drawing::fmt;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
-use crate::drawing::scene::{Anchor, Group, Text};
+use crate::drawing::scene::{Anchor, Group};
 use crate::drawing::table::{self, CELL_TEXT, Table};
-use crate::drawing::text::{LINE_PITCH, LabelText, TooLong, paragraph, wrap};
+use crate::drawing::text::{LINE_PITCH, TooLong, paragraph, wrap};
 use crate::project::{CamProject, Project};
 use crate::report::{AnswerKeys, NoteTable};
 use kurbo::{Point, Rect, Vec2};
 use labels::CamWords;
 use nomogram::Placement;
 use regions::{COLUMN_WIDTHS, ColumnWidth, Content, Regions, SHEET, ViewSize, view_area};
+use view_heading::{heading_w, scale_note, view_group};
 
 /// This sheet's place in the course.
 pub const KIND: SheetKind = COURSE[2];
@@ -451,37 +452,6 @@ fn table_groups(lay: &Regions, law: Vec<Table>, rest: Vec<Table>) -> Vec<Group> 
         Some(r) => vec![table::flow("law-tables", law, r, 3.0), table::flow("tables", rest, lay.tables, 3.0)],
         None => vec![table::flow("tables", law.into_iter().chain(rest), lay.tables, 3.0)],
     }
-}
-
-/// A view's title, set at the region's top left.
-fn view_title(region: Rect, title: &str) -> Text {
-    Text::new(Point::new(region.x0 + 2.0, region.y0 + 5.0), title, 3.5, Anchor::Start)
-}
-
-/// The width a view's region needs for its title (and the scale under it, which is
-/// shorter): the title's box from the region's left edge, and as much again on the right.
-fn heading_w(title: &str) -> f64 {
-    let bb = view_title(Rect::ZERO, title).bbox();
-    bb.x1 + bb.x0
-}
-
-/// A view's group with its title at the region's top left.
-fn view_group(id: &str, region: Rect, title: &str) -> Group {
-    let mut g = Group::new(id, region);
-    g.text(view_title(region, title));
-    g
-}
-
-/// "μ_l = … m/mm" (and the GOST ratio) under a view's title: below the view it read as the
-/// scale of the view under it.
-fn scale_note(g: &mut Group, mu: f64, ratio: Option<String>, words: &CamWords) {
-    let lang = words.lang;
-    let mut tail = format!(" = {} {}", fmt::trimmed(mu, lang), words.common.unit_m_per_mm());
-    if let Some(r) = ratio {
-        tail.push_str(&format!(" ({})", fmt::localise(&r, lang)));
-    }
-    let r = g.region;
-    LabelText::new("μ", "l").with_tail(tail).draw(g, Point::new(r.x0 + 2.0, r.y0 + 10.5), 2.5, Anchor::Start);
 }
 
 impl Sheet for CamSheet<'_> {

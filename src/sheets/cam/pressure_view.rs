@@ -66,7 +66,7 @@ pub fn draw(region: Rect, d: &Design, phis: &[f64], title: &str, words: &CamWord
     let mu_phi = scale::plan_round_up(work / w);
     let top = alpha_top(d);
     let mu_alpha = scale::plan_round_up(top / h);
-    let mut g = super::view_group("pressure", region, title);
+    let mut g = super::view_heading::view_group("pressure", region, title);
     let l = words.sheet;
     let mu_line = |q: &str, mu: f64, y: f64, g: &mut Group| {
         LabelText::new("μ", q).with_tail(format!(" = {} {}", fmt::trimmed(mu, lang), l.unit_deg_per_mm())).draw(
