@@ -8,6 +8,8 @@ use kurbo::{Point, Rect};
 /// lettering ([`Table::text_h`]) scales both and its padding alike.
 pub const ROW_H: f64 = 5.0;
 pub const CELL_TEXT: f64 = 2.5;
+/// The larger lettering tables take where a sheet has room, mm.
+pub const LARGE_TEXT: f64 = 3.5;
 /// The title's lettering: one GOST size above the cells'.
 const TITLE_TEXT: f64 = 3.5;
 const TITLE_TEXT_LARGE: f64 = 5.0;

@@ -150,35 +150,50 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     out
 }
 
-/// Places cells in rows, first fit: each cell goes into the first body where it fits, in
-/// that body's current row or a new one. Returns each cell's body and corner, and whether
-/// all fit (a cell that fits nowhere overflows the first body).
+/// Places cells bottom-left under a skyline (see [`super::skyline`]), each into the first
+/// body where it fits; where that leaves one out, in rows (a skyline made uneven by short
+/// cells can leave no step wide enough for a later wide one, which a fresh row has).
+/// Returns each cell's body and corner, and whether all fit (a cell that fits nowhere
+/// overflows the first body).
 pub(super) fn pack(cells: &[Cell], bodies: &[Rect]) -> (Vec<(usize, Point)>, bool) {
+    let sizes: Vec<(f64, f64)> = cells.iter().map(|c| (c.w, c.h)).collect();
+    let skyline = super::skyline::pack(&sizes, bodies, GAP);
+    if skyline.1 {
+        return skyline;
+    }
+    match in_rows(&sizes, bodies) {
+        rows @ (_, true) => rows,
+        _ => skyline,
+    }
+}
+
+/// Places cells in rows, first fit: each cell goes into the first body where it fits, in
+/// that body's current row or a new one.
+fn in_rows(cells: &[(f64, f64)], bodies: &[Rect]) -> (Vec<(usize, Point)>, bool) {
     // Per body: the next cell's x, its row's top and the row's height so far.
     let mut rows: Vec<(f64, f64, f64)> = bodies.iter().map(|b| (b.x0, b.y0, 0.0)).collect();
     let mut out = Vec::new();
     let mut all = true;
-    for c in cells {
+    for &(w, h) in cells {
         let mut spot = None;
         for (i, b) in bodies.iter().enumerate() {
             let (x, y, row_h) = rows[i];
-            let fits = |x: f64, y: f64| x + c.w <= b.x1 + tol::PAPER && y + c.h <= b.y1 + tol::PAPER;
+            let fits = |x: f64, y: f64| x + w <= b.x1 + tol::PAPER && y + h <= b.y1 + tol::PAPER;
             if fits(x, y) {
-                spot = Some((i, Point::new(x, y), (x + c.w + GAP, y, row_h.max(c.h))));
+                spot = Some((i, Point::new(x, y), (x + w + GAP, y, row_h.max(h))));
             } else if row_h > 0.0 && fits(b.x0, y + row_h + GAP) {
                 let y = y + row_h + GAP;
-                spot = Some((i, Point::new(b.x0, y), (b.x0 + c.w + GAP, y, c.h)));
+                spot = Some((i, Point::new(b.x0, y), (b.x0 + w + GAP, y, h)));
             }
             if spot.is_some() {
                 break;
             }
         }
-        let (i, at, next) = spot.unwrap_or_else(|| {
+        let Some((i, at, next)) = spot else {
             all = false;
-            let (_, y, row_h) = rows[0];
-            let y = y + row_h + GAP;
-            (0, Point::new(bodies[0].x0, y), (bodies[0].x0 + c.w + GAP, y, c.h))
-        });
+            out.push((0, Point::new(bodies[0].x0, rows[0].1 + rows[0].2 + GAP)));
+            continue;
+        };
         rows[i] = next;
         out.push((i, at));
     }

@@ -13,6 +13,7 @@ mod legend;
 mod load;
 mod polygon;
 mod segments;
+mod skyline;
 mod zhukovsky;
 
 use super::labels::LeverWords;
@@ -25,6 +26,7 @@ use crate::lever::linkage::{Mechanism, State};
 use crate::report::{AnswerKeys, Segment};
 pub use cells::CellMemo;
 use cells::{Cell, Content, Sizes, cells, pack};
+pub use inset::SIDE_MIN;
 use kurbo::{Point, Rect};
 
 /// Longest and shortest force arrow on a group drawing or the lever, mm. A force whose
@@ -185,32 +187,22 @@ fn finer(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arranged) -
         // The polygons' enlargements beside them (a knot of labels unread is worse than a
         // polygon a scale step smaller): every polygon's cell grown, at the finer series,
         // else at the coarse; else one polygon's cell grown after another while the cells
-        // still pack; else the finer series alone where it packs.
-        let fine = Sizes { fine: true, ..sizes };
+        // still pack; else, where some polygon has sides to enlarge, the same with the
+        // drawings a step smaller (up to [`ENLARGE_SHRINKS`] steps: the skyline packs the
+        // drawings large and leaves the enlargements no room); else the finer series
+        // alone where it packs.
         let count = inp.fa.forces.polygons.len().min(64);
-        for s in [fine, sizes] {
-            let all = Sizes { grow: (1u64 << count) - 1, ..s };
-            let cells = self::cells::cells(inp, all);
-            if let (cells_at, true) = pack(&cells, bodies)
-                && enlarged(&cells)
-            {
-                return (cells, cells_at, true, all);
+        let mut base = sizes;
+        for _ in 0..=ENLARGE_SHRINKS {
+            if let Some(grown) = grown(inp, bodies, base, count) {
+                return grown;
             }
+            if !short_sides(inp, &self::cells::cells(inp, base)) {
+                break;
+            }
+            base = base.shrunk();
         }
-        for mut s in [fine, sizes] {
-            let mut grown = None;
-            for i in 0..count {
-                let tried = Sizes { grow: s.grow | 1 << i, ..s };
-                let cells = self::cells::cells(inp, tried);
-                if let (cells_at, true) = pack(&cells, bodies) {
-                    grown = Some((cells, cells_at));
-                    s = tried;
-                }
-            }
-            if let Some((cells, cells_at)) = grown.filter(|(c, _)| enlarged(c)) {
-                return (cells, cells_at, true, s);
-            }
-        }
+        let fine = Sizes { fine: true, ..sizes };
         let tried = self::cells::cells(inp, fine);
         if let (tried_at, true) = pack(&tried, bodies) {
             return (tried, tried_at, true, fine);
@@ -219,17 +211,55 @@ fn finer(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arranged) -
     (cells, at, ok, sizes)
 }
 
+/// How many steps smaller the drawings may get to make room for the polygons' enlargements.
+const ENLARGE_SHRINKS: usize = 8;
+
+/// The cells at `sizes` with the polygons' short sides enlarged beside them, if they pack:
+/// every polygon's cell grown, at the finer series, else at the coarse; else one polygon's
+/// cell grown after another while the cells still pack.
+fn grown(inp: &ForcesInput, bodies: &[Rect], sizes: Sizes, count: usize) -> Option<Arranged> {
+    let fine = Sizes { fine: true, ..sizes };
+    for s in [fine, sizes] {
+        let all = Sizes { grow: (1u64 << count) - 1, ..s };
+        let cells = self::cells::cells(inp, all);
+        if let (cells_at, true) = pack(&cells, bodies)
+            && enlarged(&cells)
+        {
+            return Some((cells, cells_at, true, all));
+        }
+    }
+    for mut s in [fine, sizes] {
+        let mut grown = None;
+        for i in 0..count {
+            let tried = Sizes { grow: s.grow | 1 << i, ..s };
+            let cells = self::cells::cells(inp, tried);
+            if let (cells_at, true) = pack(&cells, bodies) {
+                grown = Some((cells, cells_at));
+                s = tried;
+            }
+        }
+        if let Some((cells, cells_at)) = grown.filter(|(c, _)| enlarged(c)) {
+            return Some((cells, cells_at, true, s));
+        }
+    }
+    None
+}
+
+/// The largest box the lever is tried at, mm: beyond it its arrows stay at most
+/// [`ARROW_MAX`] while its arms grow, and the forces read no better.
+const LEVER_LARGEST: f64 = 200.0;
+
 /// A fitting arrangement with the Zhukovsky lever as large as the cells still pack: its box
-/// from the drawings' starting size down to the one it got, at the finer series' scales
-/// (the lever's sides are the arms its forces are read by; the knot of a dozen arrows round
-/// p, b and s4 at the coarse scale is what a teacher marks down).
+/// from [`LEVER_LARGEST`] down to the one it got, at the finer series' scales (the lever's
+/// sides are the arms its forces are read by; the knot of a dozen arrows round p, b and s4
+/// at the coarse scale is what a teacher marks down).
 fn larger_lever(
     inp: &ForcesInput,
     bodies: &[Rect],
     (cells, at, ok, sizes): Arranged,
 ) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
     if ok {
-        let mut lever_box = DRAWN.lever_box;
+        let mut lever_box = LEVER_LARGEST;
         while lever_box > sizes.lever_box {
             let tried = Sizes { lever_box, lever_fine: true, ..sizes };
             let tried_cells = self::cells::cells(inp, tried);
@@ -240,6 +270,16 @@ fn larger_lever(
         }
     }
     (cells, at, ok)
+}
+
+/// Whether any polygon labels a side shorter than [`SIDE_MIN`] on itself.
+fn short_sides(inp: &ForcesInput, cells: &[Cell]) -> bool {
+    cells.iter().any(|c| match &c.content {
+        Content::Polygon(i, l) => {
+            polygon::shortest_sides(&inp.fa.forces.polygons[*i], l).0.is_some_and(|s| s < SIDE_MIN)
+        }
+        _ => false,
+    })
 }
 
 /// Whether any polygon's cell draws enlargements.
