@@ -19,12 +19,11 @@ pub struct ColumnWidth {
 }
 
 /// The column's widths tried: the usual one, and a wider one (a longer φ axis) for a sheet
-/// whose views leave the middle of the sheet empty beside the usual column.
-pub const COLUMN_WIDTHS: [ColumnWidth; 3] = [
-    ColumnWidth { left: 320.0, phi: 240.0 },
-    ColumnWidth { left: 400.0, phi: 300.0 },
-    ColumnWidth { left: 470.0, phi: 350.0 },
-];
+/// whose views leave the middle of the sheet empty beside the usual column. A third, 470 mm
+/// (φ ≤ 350), won 13 of the catalogue's 523 sheets by at most 0.041 of empty share and none
+/// of the fixtures, for a quarter of the variants built: measured, and left out.
+pub const COLUMN_WIDTHS: [ColumnWidth; 2] =
+    [ColumnWidth { left: 320.0, phi: 240.0 }, ColumnWidth { left: 400.0, phi: 300.0 }];
 /// Between regions, mm.
 const GAP: f64 = 6.0;
 /// Room a view needs besides its drawing: its title and its scale above, its margins.
