@@ -82,7 +82,10 @@ fn velocity_shares() -> impl Iterator<Item = f64> {
 /// guide's plans are drawn that large, vectors read to a percent.
 pub const LARGEST_PLAN: f64 = 80.0;
 
-/// Splits `column` between two kinds of plans, the first above: at the share whose smallest
+/// Splits `column` between two kinds of plans, the first above or, across, on the left (a
+/// kulisa's one tall acceleration plan made a row as tall as itself, its three small
+/// neighbours lost in it; beside the velocity plans it is a column of its own, and the
+/// velocity plans take the height): at the share whose smallest
 /// plan is largest (a plan off the common scale counts as no larger than the minimum, and
 /// twice the minimum is enough), then whose smaller kind's largest plan is largest (up to
 /// [`LARGEST_PLAN`]), then whose two largest plans sum most. Returns each kind's region and
@@ -94,10 +97,15 @@ pub(super) fn split_plans(
 ) -> [(Rect, Sizing); 2] {
     // The same at every share.
     let measured = kinds.map(|(r, plans, positions)| r.measure(plans, positions, words));
+    // A share over 1 splits the column across instead: the velocity plans on the left.
     let split = |share: f64| {
-        let y = column.y0 + column.height() * share;
-        let regions =
-            [Rect::new(column.x0, column.y0, column.x1, y), Rect::new(column.x0, y + 4.0, column.x1, column.y1)];
+        let regions = if share <= 1.0 {
+            let y = column.y0 + column.height() * share;
+            [Rect::new(column.x0, column.y0, column.x1, y), Rect::new(column.x0, y + 4.0, column.x1, column.y1)]
+        } else {
+            let x = column.x0 + column.width() * (share - 1.0);
+            [Rect::new(column.x0, column.y0, x, column.y1), Rect::new(x + 4.0, column.y0, column.x1, column.y1)]
+        };
         let mut kind = kinds
             .iter()
             .zip(&measured)
@@ -111,6 +119,7 @@ pub(super) fn split_plans(
         (least_v.min(least_a).min(2.0 * MIN_PLAN), largest_v.min(largest_a).min(LARGEST_PLAN), largest_v + largest_a)
     };
     velocity_shares()
+        .chain(velocity_shares().map(|s| 1.0 + s))
         .map(|share| {
             let s = split(share);
             (score(&s), s)
