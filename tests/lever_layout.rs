@@ -1,0 +1,57 @@
+//! Sheet 1's regions sized for reading: the Zhukovsky lever large enough to measure its
+//! arms, a kulisa's one tall acceleration plan in a column of its own, and the force cells
+//! packed without a row-high hole under the tables.
+
+mod common;
+
+use common::{fixture, fixture_names};
+use tmm_sheets::pipeline;
+
+/// The lever's longer side on every fixture at least, mm: its arms are what P′ₘ is read by
+/// (the worked example's was 45.7 mm, twelve arrows knotted round p, b and s4).
+const LEVER_LEAST: f64 = 80.0;
+
+#[test]
+fn the_zhukovsky_lever_is_at_least_80_mm_on_every_fixture() {
+    let mut small = Vec::new();
+    for name in fixture_names() {
+        let built = pipeline::build(&fixture(&name), &[1]).unwrap();
+        let scales = &built[0].output.results["forces"]["scales"];
+        if let Some(lever) = scales["lever_mm"].as_f64()
+            && lever < LEVER_LEAST
+        {
+            small.push(format!("{name}: {lever:.1} mm"));
+        }
+    }
+    assert!(small.is_empty(), "levers under {LEVER_LEAST} mm: {small:?}");
+}
+
+/// The kulisa's acceleration plan of position 10 is five times its others: in a row it made
+/// the row as tall as itself and its neighbours were lost in it (smallest plan 45.3 mm, the
+/// sheet 58 % empty). Beside the velocity plans it stands in its own column.
+#[test]
+fn a_kulisas_acceleration_plans_stand_beside_the_velocity_plans_and_every_plan_is_50_mm() {
+    let built = pipeline::build(&fixture("kulisa"), &[1]).unwrap();
+    let scene = &built[0].output.scene;
+    let region = |id: &str| scene.groups.iter().find(|g| g.id == id).map(|g| g.region).expect(id);
+    let (v, a) = (region("velocity-plans"), region("acceleration-plans"));
+    assert!(a.x0 >= v.x1, "acceleration plans {a:?} beside the velocity plans {v:?}");
+    let smallest = built[0].output.results["layout"]["smallest_plan_mm"].as_f64().unwrap();
+    assert!(smallest >= 50.0, "smallest plan {smallest:.1} mm");
+}
+
+/// The force drawings stay in their region and use it to its bottom third on every fixture
+/// with a force analysis (the rows they were packed in left a band under the tables empty
+/// while the lever stood tall beside them).
+#[test]
+fn the_force_cells_fill_their_region_to_its_bottom_third() {
+    for name in fixture_names() {
+        let built = pipeline::build(&fixture(&name), &[1]).unwrap();
+        let scene = &built[0].output.scene;
+        let Some(forces) = scene.groups.iter().find(|g| g.id == "forces") else { continue };
+        let r = forces.region;
+        let lowest = forces.items.iter().map(|i| i.bbox().y1).fold(f64::MIN, f64::max);
+        assert!(lowest <= r.y1 + 0.5, "{name}: a force cell reaches {lowest:.1} below its region's {:.1}", r.y1);
+        assert!(lowest >= r.y0 + r.height() * 2.0 / 3.0, "{name}: the force cells end at {lowest:.1} in {r:?}");
+    }
+}
