@@ -23,7 +23,8 @@ pub(super) enum Content {
     /// The turned velocity plan, its scale, the scale of its force arrows and the box its
     /// cell was sized round (the plan and its arrows' tips, plan units).
     Lever(Rc<Plan>, f64, f64, Rect),
-    Load(usize),
+    /// Index into the loads, and how many times the least its plot is.
+    Load(usize, f64),
     Table(usize),
 }
 
@@ -51,6 +52,8 @@ pub(super) struct Sizes {
     /// Which polygons' cells (bit i: polygon i) may grow to enlarge their short sides
     /// beside them (tried only once the drawings fit without).
     pub(super) grow: u64,
+    /// How many times the least the load diagrams' plots are.
+    pub(super) load: f64,
 }
 
 impl Sizes {
@@ -82,8 +85,8 @@ impl Sizes {
 }
 
 /// The cells already laid out, by what each depends on: a polygon's cell on its μ_l, its
-/// μ_P and whether it may grow, the lever's on its μ, the load diagrams and the tables on
-/// nothing. The layout attempts (up to a dozen shrinks for each mechanism height tried,
+/// μ_P and whether it may grow, the lever's on its μ, the tables on nothing (the load
+/// diagrams' cells are sized each time from a few dozen points). The layout attempts (up to a dozen shrinks for each mechanism height tried,
 /// then the enlargements and the finer scales, for each width of the force column) ask
 /// for the same cells again and again: each is laid out once a sheet.
 #[derive(Default)]
@@ -93,7 +96,7 @@ pub struct CellMemo {
     /// the box it is sized round.
     lever: OnceCell<(Rc<Plan>, Rect, f64)>,
     lever_cells: RefCell<HashMap<u64, (f64, f64, Rect)>>,
-    /// The load diagrams' and the tables' sizes, in the cells' order.
+    /// The tables' sizes, in the cells' order.
     fixed: OnceCell<Vec<(f64, f64)>>,
 }
 
@@ -140,13 +143,13 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
         (w, h, ext)
     });
     out.push(Cell { w, h, content: Content::Lever(Rc::clone(lever), mu, mu_f, ext) });
-    let fixed = memo.fixed.get_or_init(|| {
-        let loads = inp.fa.model.loads.iter().map(load_cell);
-        let tables = inp.tables.iter().map(|t| t.size()).map(|(w, h)| (w + 2.0, h + 2.0));
-        loads.chain(tables).collect()
-    });
-    let contents = (0..inp.fa.model.loads.len()).map(Content::Load).chain((0..inp.tables.len()).map(Content::Table));
-    out.extend(fixed.iter().zip(contents).map(|(&(w, h), content)| Cell { w, h, content }));
+    for (i, load) in inp.fa.model.loads.iter().enumerate() {
+        let (w, h) = load_cell(load, s.load);
+        out.push(Cell { w, h, content: Content::Load(i, s.load) });
+    }
+    let fixed =
+        memo.fixed.get_or_init(|| inp.tables.iter().map(|t| t.size()).map(|(w, h)| (w + 2.0, h + 2.0)).collect());
+    out.extend(fixed.iter().enumerate().map(|(i, &(w, h))| Cell { w, h, content: Content::Table(i) }));
     out
 }
 

@@ -22,22 +22,30 @@ const BOTTOM: f64 = 22.0;
 pub(super) const WIDTH: f64 = 100.0;
 const MIN_HEIGHT: f64 = 60.0;
 
-/// The P range (spanning zero, where the S/H axis runs) and its round scale μ_P, N/mm.
-fn force_scale(load: &Load) -> (f64, f64, f64) {
+/// The P range (spanning zero, where the S/H axis runs) and its round scale μ_P, N/mm, for
+/// a plot `grown` times the least.
+fn force_scale(load: &Load, grown: f64) -> (f64, f64, f64) {
     let values = load.branches.iter().flat_map(|br| br.curve.points.iter().map(move |p| p.1 * br.scale));
     let (least, most) = values.fold((0.0f64, 0.0f64), |(lo, hi), y| (lo.min(y), hi.max(y)));
-    (least, most, scale::round_up((most - least) / (2.0 * MIN_HEIGHT)))
+    (least, most, scale::round_up((most - least) / (2.0 * MIN_HEIGHT * grown)))
 }
 
-/// A load diagram's cell, mm: the plot at its scale and the room around it.
-pub(super) fn cell_size(load: &Load) -> (f64, f64) {
-    let (lo, hi, mu) = force_scale(load);
-    (LEFT + WIDTH + 14.0, TOP + ((hi - lo) / mu).max(MIN_HEIGHT) + BOTTOM)
+/// A load diagram's cell, mm: the plot `grown` times the least at its scale and the room
+/// around it.
+pub(super) fn cell_size(load: &Load, grown: f64) -> (f64, f64) {
+    let (lo, hi, mu) = force_scale(load, grown);
+    (LEFT + WIDTH * grown + 14.0, TOP + ((hi - lo) / mu).max(MIN_HEIGHT * grown) + BOTTOM)
 }
 
-/// A load diagram: force against S/H for both strokes, the analysed position marked;
-/// returns its μ_P and the length of its S/H axis, mm.
-pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &ForcesInput, i: usize) -> (f64, f64) {
+/// A load diagram, its plot `grown` times the least: force against S/H for both strokes,
+/// the analysed position marked; returns its μ_P and the length of its S/H axis, mm.
+pub(super) fn draw_load(
+    g: &mut Group,
+    labels: &mut Labels,
+    r: Rect,
+    inp: &ForcesInput,
+    (i, grown): (usize, f64),
+) -> (f64, f64) {
     let load: &Load = &inp.fa.model.loads[i];
     let value = inp.fa.forces.loads[i];
     let n = inp.m.links[load.link].number;
@@ -45,7 +53,7 @@ pub(super) fn draw_load(g: &mut Group, labels: &mut Labels, r: Rect, inp: &Force
     cell_title(g, r, &inp.words.sheet.load_title(&n.to_string()));
     let area = Rect::new(r.x0 + LEFT, r.y0 + TOP, r.x1 - 14.0, r.y1 - BOTTOM);
     let signed = |b: usize, y: f64| y * load.branches[b].scale;
-    let (lo, hi, mu) = force_scale(load);
+    let (lo, hi, mu) = force_scale(load, grown);
     let along = value.force.dot(load.axis);
     let x = Axis {
         lo: 0.0,

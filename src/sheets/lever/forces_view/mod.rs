@@ -85,7 +85,8 @@ pub fn draw_forces(
     let title = inp.words.sheet.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.words.lang));
     main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let bodies = bodies(region, side.as_ref().map(|g| g.region));
-    let (cells, at, _) = larger_lever(inp, &bodies, finer(inp, &bodies, arrange(inp, &bodies, DRAWN, SHRINK_TRIES)));
+    let arranged = larger_lever(inp, &bodies, finer(inp, &bodies, arrange(inp, &bodies, DRAWN, SHRINK_TRIES)));
+    let (cells, at, _, _) = larger_loads(inp, &bodies, arranged);
     let mut scales = ForceScales {
         mu_l: vec![],
         mu_p: vec![],
@@ -128,8 +129,8 @@ pub fn draw_forces(
                 scales.lever_mm = bb.width().max(bb.height()) / mu;
                 measured.extend(segments::lever_arms(inp, mu, &part));
             }
-            Content::Load(i) => {
-                let drawn = load::draw_load(g, &mut labels, r, inp, i);
+            Content::Load(i, grown) => {
+                let drawn = load::draw_load(g, &mut labels, r, inp, (i, grown));
                 measured.extend(segments::load(inp, i, drawn, &part, answers));
             }
             Content::Table(i) => {
@@ -152,7 +153,7 @@ fn part_id(inp: &ForcesInput, content: &Content) -> String {
             None => "forces.crank".into(),
         },
         Content::Lever(..) => "forces.lever".into(),
-        Content::Load(i) => format!("forces.load.{}", number(inp.fa.model.loads[*i].link)),
+        Content::Load(i, _) => format!("forces.load.{}", number(inp.fa.model.loads[*i].link)),
         Content::Table(i) => format!("forces.table.{}", i + 1),
     }
 }
@@ -170,10 +171,26 @@ const SHRINK_TRIES: usize = 12;
 const COMFORTABLE: usize = 3;
 /// The sizes a comfortable layout starts from (the mechanism above gets the rest), and the
 /// larger ones the drawings start from, shrinking until they fit what they got.
-const COMFORTABLE_START: Sizes =
-    Sizes { group_box: 130.0, poly_box: 90.0, lever_box: 110.0, widest: 0.0, fine: false, lever_fine: false, grow: 0 };
-const DRAWN: Sizes =
-    Sizes { group_box: 170.0, poly_box: 120.0, lever_box: 150.0, widest: 0.0, fine: false, lever_fine: false, grow: 0 };
+const COMFORTABLE_START: Sizes = Sizes {
+    group_box: 130.0,
+    poly_box: 90.0,
+    lever_box: 110.0,
+    widest: 0.0,
+    fine: false,
+    lever_fine: false,
+    grow: 0,
+    load: 1.0,
+};
+const DRAWN: Sizes = Sizes {
+    group_box: 170.0,
+    poly_box: 120.0,
+    lever_box: 150.0,
+    widest: 0.0,
+    fine: false,
+    lever_fine: false,
+    grow: 0,
+    load: 1.0,
+};
 
 /// Cells, where they are, whether they all fit, and the sizes they were made at.
 type Arranged = (Vec<Cell>, Vec<(usize, Point)>, bool, Sizes);
@@ -253,23 +270,37 @@ const LEVER_LARGEST: f64 = 200.0;
 /// from [`LEVER_LARGEST`] down to the one it got, at the finer series' scales (the lever's
 /// sides are the arms its forces are read by; the knot of a dozen arrows round p, b and s4
 /// at the coarse scale is what a teacher marks down).
-fn larger_lever(
-    inp: &ForcesInput,
-    bodies: &[Rect],
-    (cells, at, ok, sizes): Arranged,
-) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
+fn larger_lever(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arranged) -> Arranged {
     if ok {
         let mut lever_box = LEVER_LARGEST;
         while lever_box > sizes.lever_box {
             let tried = Sizes { lever_box, lever_fine: true, ..sizes };
             let tried_cells = self::cells::cells(inp, tried);
             if let (tried_at, true) = pack(&tried_cells, bodies) {
-                return (tried_cells, tried_at, true);
+                return (tried_cells, tried_at, true, tried);
             }
             lever_box *= 0.9;
         }
     }
-    (cells, at, ok)
+    (cells, at, ok, sizes)
+}
+
+/// How many times the least a load diagram's plot is tried at, largest first.
+const LOAD_GROWN: [f64; 4] = [1.6, 1.45, 1.3, 1.15];
+
+/// A fitting arrangement with the load diagrams as large as the cells still pack (up to
+/// [`LOAD_GROWN`]'s first): last, so that nothing read by a ruler is smaller for them.
+fn larger_loads(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arranged) -> Arranged {
+    if ok && !inp.fa.model.loads.is_empty() {
+        for load in LOAD_GROWN {
+            let tried = Sizes { load, ..sizes };
+            let tried_cells = self::cells::cells(inp, tried);
+            if let (tried_at, true) = pack(&tried_cells, bodies) {
+                return (tried_cells, tried_at, true, tried);
+            }
+        }
+    }
+    (cells, at, ok, sizes)
 }
 
 /// Whether any polygon labels a side shorter than [`SIDE_MIN`] on itself.
