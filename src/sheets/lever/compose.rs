@@ -92,7 +92,7 @@ pub(super) const HEADER: f64 = 17.0;
 /// force analysis its tables 3–5 are lettered by the rule ([`CELL_TEXT`]) and, on rayon's
 /// pool beside it, in [`LARGE_TEXT`]; the larger lettering is kept where its layout is as
 /// clean, its plans no smaller, its polygons' shortest labelled side and its lever no
-/// smaller or still readable ([`POLYGON_SIDE_MIN`], [`LEVER_READABLE`]), and it leaves less of the
+/// smaller or still readable (`POLYGON_SIDE_MIN`, `LEVER_READABLE`), and it leaves less of the
 /// sheet empty (by more than half a percent: on a tie the rule's).
 pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let plans = PlansOf::new(inp, k);

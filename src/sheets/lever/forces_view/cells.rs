@@ -155,16 +155,62 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
 
 /// Places cells bottom-left under a skyline (see [`super::skyline`]), each into the first
 /// body where it fits; where that leaves one out, in rows (a skyline made uneven by short
-/// cells can leave no step wide enough for a later wide one, which a fresh row has).
-/// Returns each cell's body and corner, and whether all fit (a cell that fits nowhere
-/// overflows the first body).
+/// cells can leave no step wide enough for a later wide one, which a fresh row has). Tables
+/// 3–5 go together where they can, side by side, else one above the other (packed apart,
+/// table 5 could stand beside the mechanism, away from 3 and 4). Returns each cell's body
+/// and corner, and whether all fit (a cell that fits nowhere overflows the first body).
 pub(super) fn pack(cells: &[Cell], bodies: &[Rect]) -> (Vec<(usize, Point)>, bool) {
+    match together(cells, bodies) {
+        Some(at) => (at, true),
+        None => apart(&cells.iter().map(|c| (c.w, c.h)).collect::<Vec<_>>(), bodies),
+    }
+}
+
+/// The cells packed with tables 3–5 together (see [`pack`]), if they all fit so.
+fn together(cells: &[Cell], bodies: &[Rect]) -> Option<Vec<(usize, Point)>> {
     let sizes: Vec<(f64, f64)> = cells.iter().map(|c| (c.w, c.h)).collect();
-    let skyline = super::skyline::pack(&sizes, bodies, GAP);
+    // The tables are the last cells.
+    let first = cells.iter().position(|c| matches!(c.content, Content::Table(_))).unwrap_or(cells.len());
+    if cells.len() - first < 2 || !cells[first..].iter().all(|c| matches!(c.content, Content::Table(_))) {
+        return None;
+    }
+    [true, false].into_iter().find_map(|across| with_tables_together(&sizes, first, across, bodies))
+}
+
+/// The cells packed with the tables from `first` on as one block, side by side (`across`)
+/// or one above the other, if all fit.
+fn with_tables_together(
+    sizes: &[(f64, f64)],
+    first: usize,
+    across: bool,
+    bodies: &[Rect],
+) -> Option<Vec<(usize, Point)>> {
+    let tables = &sizes[first..];
+    let mut offsets = Vec::with_capacity(tables.len());
+    let (mut w, mut h) = (0.0f64, 0.0f64);
+    for &(tw, th) in tables {
+        if across {
+            offsets.push(kurbo::Vec2::new(if w > 0.0 { w + GAP } else { 0.0 }, 0.0));
+            (w, h) = (if w > 0.0 { w + GAP } else { 0.0 } + tw, h.max(th));
+        } else {
+            offsets.push(kurbo::Vec2::new(0.0, if h > 0.0 { h + GAP } else { 0.0 }));
+            (w, h) = (w.max(tw), if h > 0.0 { h + GAP } else { 0.0 } + th);
+        }
+    }
+    let mut merged = sizes[..first].to_vec();
+    merged.push((w, h));
+    let (mut at, all) = apart(&merged, bodies);
+    let (body, corner) = at.pop()?;
+    all.then(|| at.into_iter().chain(offsets.into_iter().map(|o| (body, corner + o))).collect())
+}
+
+/// The cells packed each on its own: under a skyline, else in rows.
+fn apart(sizes: &[(f64, f64)], bodies: &[Rect]) -> (Vec<(usize, Point)>, bool) {
+    let skyline = super::skyline::pack(sizes, bodies, GAP);
     if skyline.1 {
         return skyline;
     }
-    match in_rows(&sizes, bodies) {
+    match in_rows(sizes, bodies) {
         rows @ (_, true) => rows,
         _ => skyline,
     }
