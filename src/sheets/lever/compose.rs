@@ -5,11 +5,9 @@
 //! makes it; the velocity plans fill the rest of the top band; the acceleration plans at
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
-use super::forces_view::{
-    CellMemo, ForceScales, ForcesInput, SIDE_MIN as POLYGON_SIDE_MIN, draw_forces, fit_comfortably,
-};
+use super::forces_view::{CellMemo, ForceScales, ForcesInput, SIDE_MIN as POLYGON_SIDE_MIN, draw_forces};
 use super::labels::LeverWords;
-use super::mechanism_view::{MechanismView, TRAJECTORY, world_extent};
+use super::mechanism_place::{MechanismPlace, mechanism_group, mechanism_place};
 use super::note_tables::{NoteTables, note_tables, sheet_table, tables_group, with_units};
 pub use super::plan_regions::PlanDrawn;
 use super::plan_regions::{PlansRegion, plans_group, split_plans};
@@ -18,12 +16,10 @@ use super::segments;
 use crate::drawing::fmt;
 use crate::drawing::frame;
 use crate::drawing::layout::Layout;
-use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Scene, Text};
 use crate::drawing::table::{CELL_TEXT, LARGE_TEXT, Table};
 use crate::drawing::text::{LabelText, TooLong};
-use crate::drawing::view::View;
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
 use crate::project::LeverProject;
@@ -74,17 +70,9 @@ pub struct Input<'a> {
     pub forces: Option<&'a (ForceAnalysis, ForceTables)>,
 }
 
-const TOP: f64 = 12.0;
-/// The mechanism's region at most, mm; it shrinks to the drawing at the chosen μ_l.
-const MECH_MAX_W: f64 = 450.0;
-const MECH_MAX_H: f64 = 300.0;
-const MECH_MIN_W: f64 = 200.0;
-/// With a force analysis the mechanism's box is the first of these heights that leaves the
-/// force drawings enough room.
-const MECH_HEIGHTS_FORCES: [f64; 7] = [300.0, 260.0, 230.0, 200.0, 175.0, 150.0, 130.0];
+/// The top of the mechanism's and the plans' regions, mm.
+pub(super) const TOP: f64 = 12.0;
 const FORCES_MIN_W: f64 = 470.0;
-/// Space around the mechanism drawing for its letters, pivots and guides.
-const MECH_PAD: f64 = 14.0;
 /// A region's title and scale lines.
 pub(super) const HEADER: f64 = 17.0;
 
@@ -341,9 +329,9 @@ fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<
 
 /// The left column's least width for the force drawings and the frame's inside, mm.
 #[derive(Clone, Copy)]
-struct Column {
-    width: f64,
-    inner: Rect,
+pub(super) struct Column {
+    pub(super) width: f64,
+    pub(super) inner: Rect,
 }
 
 /// The force drawings' input (tables 3–5 as drawn, lettered `text_h` high), to size the
@@ -376,91 +364,11 @@ fn force_input<'a>(
 }
 
 /// The region of the force drawings below the mechanism's, at least as wide as the column.
-fn force_region_below(mech: Rect, column: Column) -> Rect {
+pub(super) fn force_region_below(mech: Rect, column: Column) -> Rect {
     let inner = column.inner;
     Rect::new(inner.x0 + 5.0, mech.y1 + 4.0, mech.x1.max(inner.x0 + 5.0 + column.width), inner.y1 - 4.0)
 }
 
-/// The mechanism's region and scale, before it is drawn.
-struct MechanismPlace {
-    world: Rect,
-    region: Rect,
-    mu_l: f64,
-    /// The drawing's height at `mu_l`, mm.
-    draw_h: f64,
-    /// Whether the force drawings fit below it comfortably.
-    comfortable: bool,
-}
-
-/// The mechanism drawn in its region.
-struct MechanismDrawn {
-    group: Group,
-    region: Rect,
-    mu_l: f64,
-}
-
-/// The mechanism's place: the largest GOST μ_l that fits its box, the region shrunk to the
-/// drawing. With a force analysis the box is the tallest that leaves the force drawings
-/// below it room without cramping them.
-fn mechanism_place(inp: &Input, k: &Kinematics, forces: Option<&ForcesInput>, column: Column) -> MechanismPlace {
-    let world = world_extent(&inp.project.mechanism, k, &inp.project.kulisa_lengths);
-    let heights: &[f64] = if forces.is_some() { &MECH_HEIGHTS_FORCES } else { &[MECH_MAX_H] };
-    let fits = |h: f64| {
-        let (r, _, _) = mechanism_region(world, h, column.inner);
-        let below = force_region_below(r, column);
-        forces.is_none_or(|fi| fit_comfortably(fi, below, side_region(r, below)))
-    };
-    let comfortable = heights.iter().copied().find(|&h| fits(h));
-    let max_h = comfortable.unwrap_or(heights[heights.len() - 1]);
-    let (region, mu_l, draw_h) = mechanism_region(world, max_h, column.inner);
-    MechanismPlace { world, region, mu_l, draw_h, comfortable: comfortable.is_some() }
-}
-
-/// The mechanism drawn at its place.
-fn mechanism_group(inp: &Input, k: &Kinematics, words: &LeverWords, place: MechanismPlace) -> MechanismDrawn {
-    let MechanismPlace { world, region, mu_l, draw_h, .. } = place;
-    let m = &inp.project.mechanism;
-    let mut group = Group::new("mechanism", region);
-    let origin = Point::new(
-        region.center().x - world.center().x / mu_l,
-        region.y0 + HEADER + MECH_PAD + draw_h / 2.0 + world.center().y / mu_l,
-    );
-    mechanism_header(&mut group, region, mu_l, k, words);
-    trajectory_legend(&mut group, region, words);
-    let mut labels = Labels::new();
-    MechanismView { m, k, view: View::new(origin, mu_l), kulisa: &inp.project.kulisa_lengths, words }
-        .draw(&mut group, &mut labels);
-    labels.place(&mut group, region.inflate(-0.5, -0.5));
-    MechanismDrawn { group, region, mu_l }
-}
-
-/// The mechanism's title, μ_l, the structure formula and the degrees of freedom.
-fn mechanism_header(g: &mut Group, region: Rect, mu_l: f64, k: &Kinematics, words: &LeverWords) {
-    let (l, c, lang) = (words.sheet, words.common, words.lang);
-    let s = &k.structure;
-    region_header(
-        g,
-        region,
-        l.positions_title(),
-        &[
-            LabelText::new("μ", "l").with_tail(format!(
-                " = {} {}",
-                fmt::localise(&scale::format(mu_l), lang),
-                c.unit_m_per_mm()
-            )),
-            LabelText::new(format!("{}: {}", l.structure(), s.formula), ""),
-            LabelText::new(format!("W = 3·{} − 2·{} − {} = {}", s.moving_links, s.p5, s.p4, s.dof), ""),
-        ],
-    );
-}
-
-/// The legend shows the trajectories' own line type, then says what it is.
-fn trajectory_legend(g: &mut Group, region: Rect, words: &LeverWords) {
-    let legend_y = region.y1 - 2.0;
-    let sample = (Point::new(region.x0 + 2.0, legend_y - 1.2), Point::new(region.x0 + 16.0, legend_y - 1.2));
-    g.writing_line(sample.0, sample.1, TRAJECTORY);
-    g.text(Text::new(Point::new(region.x0 + 18.0, legend_y), words.sheet.trajectories(), 2.5, Anchor::Start));
-}
 /// The force drawings below the mechanism and, when it leaves room, beside it.
 fn force_groups(
     region: Option<Rect>,
@@ -480,7 +388,7 @@ fn force_groups(
 }
 
 /// The room beside a narrow mechanism drawing, above the force region, for force cells.
-fn side_region(mech: Rect, forces: Rect) -> Option<Rect> {
+pub(super) fn side_region(mech: Rect, forces: Rect) -> Option<Rect> {
     let r = Rect::new(mech.x1 + 6.0, mech.y0, forces.x1, mech.y1);
     (r.width() >= SIDE_MIN.0 && r.height() >= SIDE_MIN.1).then_some(r)
 }
@@ -488,20 +396,6 @@ fn side_region(mech: Rect, forces: Rect) -> Option<Rect> {
 /// The least room beside the mechanism worth giving to force cells, mm.
 const SIDE_MIN: (f64, f64) = (80.0, 60.0);
 
-/// The mechanism's region for a box at most `max_h` tall: its scale, and the drawing's height.
-fn mechanism_region(world: Rect, max_h: f64, inner: Rect) -> (Rect, f64, f64) {
-    let (avail_w, avail_h) = (MECH_MAX_W - 2.0 * MECH_PAD, max_h - HEADER - 2.0 * MECH_PAD);
-    let mu_l = scale::length_scale((world.width() / avail_w).max(world.height() / avail_h));
-    let draw_w = (world.width() / mu_l).max(MECH_MIN_W);
-    let draw_h = world.height() / mu_l;
-    let r = Rect::new(
-        inner.x0 + 5.0,
-        TOP,
-        inner.x0 + 5.0 + draw_w + 2.0 * MECH_PAD,
-        TOP + HEADER + draw_h + 2.0 * MECH_PAD + 4.0,
-    );
-    (r, mu_l, draw_h)
-}
 /// A region's title (5 mm) and its line of scale and formula (3.5 mm).
 pub(super) fn region_header(g: &mut Group, r: Rect, title: &str, lines: &[LabelText]) {
     g.text(Text::new(Point::new(r.x0 + 2.0, r.y0 + 6.0), title, 5.0, Anchor::Start));

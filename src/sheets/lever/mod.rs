@@ -5,6 +5,7 @@
 pub mod compose;
 pub mod forces_view;
 pub mod labels;
+mod mechanism_place;
 mod mechanism_view;
 mod note_tables;
 mod plan_regions;

@@ -160,21 +160,22 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
 /// table 5 could stand beside the mechanism, away from 3 and 4). Returns each cell's body
 /// and corner, and whether all fit (a cell that fits nowhere overflows the first body).
 pub(super) fn pack(cells: &[Cell], bodies: &[Rect]) -> (Vec<(usize, Point)>, bool) {
-    match together(cells, bodies) {
+    let sizes: Vec<(f64, f64)> = cells.iter().map(|c| (c.w, c.h)).collect();
+    match together(cells, &sizes, bodies) {
         Some(at) => (at, true),
-        None => apart(&cells.iter().map(|c| (c.w, c.h)).collect::<Vec<_>>(), bodies),
+        None => apart(&sizes, bodies),
     }
 }
 
-/// The cells packed with tables 3–5 together (see [`pack`]), if they all fit so.
-fn together(cells: &[Cell], bodies: &[Rect]) -> Option<Vec<(usize, Point)>> {
-    let sizes: Vec<(f64, f64)> = cells.iter().map(|c| (c.w, c.h)).collect();
+/// The cells (sized `sizes`) packed with tables 3–5 together (see [`pack`]), if they all
+/// fit so.
+fn together(cells: &[Cell], sizes: &[(f64, f64)], bodies: &[Rect]) -> Option<Vec<(usize, Point)>> {
     // The tables are the last cells.
     let first = cells.iter().position(|c| matches!(c.content, Content::Table(_))).unwrap_or(cells.len());
     if cells.len() - first < 2 || !cells[first..].iter().all(|c| matches!(c.content, Content::Table(_))) {
         return None;
     }
-    [true, false].into_iter().find_map(|across| with_tables_together(&sizes, first, across, bodies))
+    [true, false].into_iter().find_map(|across| with_tables_together(sizes, first, across, bodies))
 }
 
 /// The cells packed with the tables from `first` on as one block, side by side (`across`)
