@@ -78,45 +78,99 @@ pub(super) const HEADER: f64 = 17.0;
 
 /// Lays out sheet 1; refuses a project text too long for its place on the sheet. With a
 /// force analysis its tables 3–5 are lettered by the rule ([`CELL_TEXT`]) and, on rayon's
-/// pool beside it, in [`LARGE_TEXT`]; the larger lettering is kept where its layout is as
-/// clean, its plans no smaller, its polygons' shortest labelled side and its lever no
-/// smaller or still readable (`POLYGON_SIDE_MIN`, `LEVER_READABLE`), and it leaves less of the
-/// sheet empty (by more than half a percent: on a tie the rule's).
+/// pool beside it, in [`LARGE_TEXT`]; the larger lettering is kept where it is better (as
+/// clean, the rule's floors kept, less empty). Where the sheet kept is still more than half
+/// empty (`EMPTY_MOST`), both are composed again with the group drawings and polygons grown
+/// into the room their cells leave, and the least empty of the four that keeps the rule's
+/// floors wins.
 pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let plans = PlansOf::new(inp, k);
+    let variant = |text_h, grow_drawings| compose_variant(inp, k, &plans, Variant { text_h, grow_drawings });
     if inp.forces.is_none() {
-        return compose_lettered(inp, k, &plans, CELL_TEXT);
+        return variant(CELL_TEXT, false);
     }
-    let (rule, large) =
-        rayon::join(|| compose_lettered(inp, k, &plans, CELL_TEXT), || compose_lettered(inp, k, &plans, LARGE_TEXT));
+    let (rule, large) = rayon::join(|| variant(CELL_TEXT, false), || variant(LARGE_TEXT, false));
     let rule = rule?;
-    let better = |l: &Composed| {
-        let empty = |c: &Composed| c.layout.empty_share.unwrap_or(1.0);
-        let plan = |c: &Composed| c.composition.smallest_plan_mm.unwrap_or(0.0);
-        let side = |c: &Composed| c.force_scales.as_ref().and_then(|f| f.smallest_polygon_side_mm).unwrap_or(f64::MAX);
-        let lever = |c: &Composed| c.force_scales.as_ref().map_or(0.0, |f| f.lever_mm);
-        let kept =
-            |size: &dyn Fn(&Composed) -> f64, enough: f64| size(l) >= size(&rule).min(enough) - crate::num::tol::PAPER;
-        (l.layout.is_clean() || !rule.layout.is_clean())
-            && kept(&plan, f64::MAX)
-            && kept(&side, POLYGON_SIDE_MIN)
-            && kept(&lever, LEVER_READABLE)
-            && empty(l) < empty(&rule) - 0.005
+    let floors = Floors::of(&rule);
+    let (kept, other) = match large.ok() {
+        Some(l) if better(&l, &rule, 0.005) => (l, Some(rule)),
+        l => (rule, l),
     };
-    Ok(match large {
-        Ok(l) if better(&l) => l,
-        _ => rule,
-    })
+    if empty(&kept) <= EMPTY_MOST {
+        return Ok(kept);
+    }
+    // Composing twice more costs only the sheets left too empty.
+    let (grown_rule, grown_large) = rayon::join(|| variant(CELL_TEXT, true), || variant(LARGE_TEXT, true));
+    let mut out = kept;
+    for c in [other, grown_rule.ok(), grown_large.ok()].into_iter().flatten() {
+        if floors.kept(&c) && empty(&c) < empty(&out) && (c.layout.is_clean() || !out.layout.is_clean()) {
+            out = c;
+        }
+    }
+    Ok(out)
+}
+
+/// The share of empty 20 mm cells above which a sheet is too empty (issue 22's bound).
+const EMPTY_MOST: f64 = 0.5;
+
+fn empty(c: &Composed) -> f64 {
+    c.layout.empty_share.unwrap_or(1.0)
+}
+
+/// Whether `l` is better than the rule's composition `rule`: as clean, keeping its
+/// [`Floors`], and less empty by more than `margin` (on a tie the rule's).
+fn better(l: &Composed, rule: &Composed, margin: f64) -> bool {
+    (l.layout.is_clean() || !rule.layout.is_clean()) && Floors::of(rule).kept(l) && empty(l) < empty(rule) - margin
+}
+
+/// What a variant must keep of the rule's composition: its smallest plan, and its shortest
+/// labelled polygon side and lever where those are under what reads plainly
+/// (`POLYGON_SIDE_MIN`, [`LEVER_READABLE`]).
+struct Floors {
+    plan: f64,
+    side: f64,
+    lever: f64,
+}
+
+impl Floors {
+    fn of(c: &Composed) -> Floors {
+        Floors { plan: plan_mm(c), side: side_mm(c).min(POLYGON_SIDE_MIN), lever: lever_mm(c).min(LEVER_READABLE) }
+    }
+
+    fn kept(&self, c: &Composed) -> bool {
+        let at_least = |size: f64, floor: f64| size >= floor - crate::num::tol::PAPER;
+        at_least(plan_mm(c), self.plan) && at_least(side_mm(c), self.side) && at_least(lever_mm(c), self.lever)
+    }
+}
+
+fn plan_mm(c: &Composed) -> f64 {
+    c.composition.smallest_plan_mm.unwrap_or(0.0)
+}
+
+fn side_mm(c: &Composed) -> f64 {
+    c.force_scales.as_ref().and_then(|f| f.smallest_polygon_side_mm).unwrap_or(f64::MAX)
+}
+
+fn lever_mm(c: &Composed) -> f64 {
+    c.force_scales.as_ref().map_or(0.0, |f| f.lever_mm)
 }
 
 /// A Zhukovsky lever this long reads its arms and forces plainly, mm: the larger lettering
 /// may take the rest of the lever's growth.
 const LEVER_READABLE: f64 = 100.0;
 
-/// Lays out sheet 1 with the force tables lettered `text_h` high.
-fn compose_lettered(inp: &Input, k: &Kinematics, plans: &PlansOf, text_h: f64) -> Result<Composed, TooLong> {
+/// How one composition of sheet 1 letters its tables 3–5 and whether its force drawings
+/// grow into the room their cells leave.
+#[derive(Clone, Copy)]
+struct Variant {
+    text_h: f64,
+    grow_drawings: bool,
+}
+
+/// Lays out sheet 1 as the variant `v` asks.
+fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> Result<Composed, TooLong> {
     let memo = CellMemo::default();
-    let arrange = |w: f64, memo| arrange(inp, k, plans, (w, text_h), memo);
+    let arrange = |w: f64, memo| arrange(inp, k, plans, (w, v), memo);
     if inp.forces.is_none() {
         return draw(inp, k, plans, arrange(FORCES_MIN_W, &memo)?);
     }
@@ -217,18 +271,17 @@ impl Arrangement<'_> {
     }
 }
 
-/// Arranges sheet 1 with a force column at least `forces_w` wide, its tables lettered
-/// `text_h` high.
+/// Arranges sheet 1 with a force column at least `forces_w` wide, as the variant `v` asks.
 fn arrange<'a>(
     inp: &'a Input,
     k: &'a Kinematics,
     plans: &PlansOf,
-    (forces_w, text_h): (f64, f64),
+    (forces_w, v): (f64, Variant),
     memo: &'a CellMemo,
 ) -> Result<Arrangement<'a>, TooLong> {
     let words = LeverWords::new(inp.ctx.info.language);
     let inner = frame::inner();
-    let force_input = force_input(inp, k, &words, (memo, text_h));
+    let force_input = force_input(inp, k, &words, (memo, v));
     let mech = mechanism_place(inp, k, force_input.as_ref(), Column { width: forces_w, inner });
     // With a force analysis, its drawings fill the left column below the mechanism and the
     // acceleration plans move to the right column.
@@ -334,14 +387,15 @@ pub(super) struct Column {
     pub(super) inner: Rect,
 }
 
-/// The force drawings' input (tables 3–5 as drawn, lettered `text_h` high), to size the
-/// regions by.
+/// The force drawings' input (tables 3–5 as drawn, lettered as the variant asks), to size
+/// the regions by.
 fn force_input<'a>(
     inp: &'a Input,
     k: &'a Kinematics,
     words: &LeverWords,
-    (memo, text_h): (&'a CellMemo, f64),
+    (memo, v): (&'a CellMemo, Variant),
 ) -> Option<ForcesInput<'a>> {
+    let text_h = v.text_h;
     let (c, lang) = (words.common, words.lang);
     inp.forces.map(|(fa, _)| {
         let (t3, t4, t5) = (&inp.notes[2], &inp.notes[3], &inp.notes[4]);
@@ -359,6 +413,7 @@ fn force_input<'a>(
             words: *words,
             tables,
             memo,
+            grow_drawings: v.grow_drawings,
         }
     })
 }

@@ -47,6 +47,9 @@ pub struct ForcesInput<'a> {
     pub tables: Vec<Table>,
     /// The cells laid out so far, shared by every layout the sheet tries.
     pub memo: &'a CellMemo,
+    /// Whether the group drawings and polygons grow into the room the cells leave (see
+    /// [`draw_forces`]).
+    pub grow_drawings: bool,
 }
 
 /// The scales the force drawings got.
@@ -74,7 +77,9 @@ pub struct ForceScales {
 
 /// Draws the force analysis into `main` (the region below the mechanism, titled) and, when
 /// the mechanism leaves room beside it, `side`; returns the scales the drawings got and the
-/// segments a student measures on them, tied to `answers`.
+/// segments a student measures on them, tied to `answers`. The drawings start as large as
+/// they fit, the polygons' enlargements get room, then the lever and the load diagrams grow
+/// into what is left, and, where the input asks, the group drawings and polygons.
 pub fn draw_forces(
     main: &mut Group,
     mut side: Option<&mut Group>,
@@ -86,7 +91,7 @@ pub fn draw_forces(
     main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let bodies = bodies(region, side.as_ref().map(|g| g.region));
     let arranged = larger_lever(inp, &bodies, finer(inp, &bodies, arrange(inp, &bodies, DRAWN, SHRINK_TRIES)));
-    let (cells, at, _, _) = larger_loads(inp, &bodies, arranged);
+    let (cells, at, _, _) = larger_drawings(inp, &bodies, larger_loads(inp, &bodies, arranged));
     let mut scales = ForceScales {
         mu_l: vec![],
         mu_p: vec![],
@@ -294,6 +299,29 @@ fn larger_loads(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arra
     if ok && !inp.fa.model.loads.is_empty() {
         for load in LOAD_GROWN {
             let tried = Sizes { load, ..sizes };
+            let tried_cells = self::cells::cells(inp, tried);
+            if let (tried_at, true) = pack(&tried_cells, bodies) {
+                return (tried_cells, tried_at, true, tried);
+            }
+        }
+    }
+    (cells, at, ok, sizes)
+}
+
+/// How many times their boxes the group drawings and the polygons are tried at, largest
+/// first, both together and then the polygons alone.
+const DRAWINGS_GROWN: [f64; 5] = [1.8, 1.6, 1.4, 1.25, 1.12];
+
+/// A fitting arrangement with the group drawings and their polygons as large as the cells
+/// still pack: last, after the lever and the load diagrams. Larger polygons are not always
+/// a fuller sheet (a thin triangle's inside is empty paper too), so the sheet composes
+/// with and without and measures which leaves less empty.
+fn larger_drawings(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arranged) -> Arranged {
+    if ok && inp.grow_drawings {
+        let both =
+            DRAWINGS_GROWN.map(|f| Sizes { group_box: sizes.group_box * f, poly_box: sizes.poly_box * f, ..sizes });
+        let polygons = DRAWINGS_GROWN.map(|f| Sizes { poly_box: sizes.poly_box * f, ..sizes });
+        for tried in both.into_iter().chain(polygons) {
             let tried_cells = self::cells::cells(inp, tried);
             if let (tried_at, true) = pack(&tried_cells, bodies) {
                 return (tried_cells, tried_at, true, tried);
