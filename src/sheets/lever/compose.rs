@@ -5,7 +5,8 @@
 //! makes it; the velocity plans fill the rest of the top band; the acceleration plans at
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
-use super::forces_view::{CellMemo, ForceScales, ForcesInput, SIDE_MIN as POLYGON_SIDE_MIN, draw_forces};
+use super::choice::{EMPTY_MOST, Floors, better, empty};
+use super::forces_view::{CellMemo, ForceScales, ForcesInput, draw_forces};
 use super::labels::LeverWords;
 use super::mechanism_place::{MechanismPlace, mechanism_group, mechanism_place};
 use super::note_tables::{NoteTables, note_tables, sheet_table, tables_group, with_units};
@@ -80,92 +81,75 @@ pub(super) const HEADER: f64 = 17.0;
 /// force analysis its tables 3–5 are lettered by the rule ([`CELL_TEXT`]) and, on rayon's
 /// pool beside it, in [`LARGE_TEXT`]; the larger lettering is kept where it is better (as
 /// clean, the rule's floors kept, less empty). Where the sheet kept is still more than half
-/// empty (`EMPTY_MOST`), both are composed again with the group drawings and polygons grown
-/// into the room their cells leave, and the least empty of the four that keeps the rule's
-/// floors wins.
+/// empty (`EMPTY_MOST`), fuller variants are composed (`FULLER`) and the least empty that
+/// keeps the rule's floors wins.
 pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let plans = PlansOf::new(inp, k);
-    let variant = |text_h, grow_drawings| compose_variant(inp, k, &plans, Variant { text_h, grow_drawings });
+    let variant = |v| compose_variant(inp, k, &plans, v);
     if inp.forces.is_none() {
-        return variant(CELL_TEXT, false);
+        // No force cells to grow or move: only table 1 into the corner.
+        let rule = variant(Variant::RULE)?;
+        if empty(&rule) <= EMPTY_MOST {
+            return Ok(rule);
+        }
+        let corner = variant(Variant { corner: true, ..Variant::RULE })?;
+        let kept = Floors::of(&rule).kept(&corner) && (corner.layout.is_clean() || !rule.layout.is_clean());
+        return Ok(if kept && empty(&corner) < empty(&rule) { corner } else { rule });
     }
-    let (rule, large) = rayon::join(|| variant(CELL_TEXT, false), || variant(LARGE_TEXT, false));
+    let large = Variant { text_h: LARGE_TEXT, ..Variant::RULE };
+    let (rule, large) = rayon::join(|| variant(Variant::RULE), || variant(large));
     let rule = rule?;
-    let floors = Floors::of(&rule);
-    let (kept, other) = match large.ok() {
+    let rule_floors = Floors::of(&rule);
+    let (mut out, other) = match large.ok() {
         Some(l) if better(&l, &rule, 0.005) => (l, Some(rule)),
         l => (rule, l),
     };
-    if empty(&kept) <= EMPTY_MOST {
-        return Ok(kept);
-    }
-    // Composing twice more costs only the sheets left too empty.
-    let (grown_rule, grown_large) = rayon::join(|| variant(CELL_TEXT, true), || variant(LARGE_TEXT, true));
-    let mut out = kept;
-    for c in [other, grown_rule.ok(), grown_large.ok()].into_iter().flatten() {
-        if floors.kept(&c) && empty(&c) < empty(&out) && (c.layout.is_clean() || !out.layout.is_clean()) {
-            out = c;
+    // The fuller variants keep tables 3–5 together where the sheet kept so far has them so.
+    let floors = rule_floors.with_tables_of(&out);
+    // Composing more costs only the sheets left too empty, and stops once one is not.
+    let mut candidates: Vec<Composed> = other.into_iter().collect();
+    for [a, b] in FULLER {
+        if empty(&out) <= EMPTY_MOST {
+            break;
+        }
+        let (a, b) = rayon::join(|| variant(a), || variant(b));
+        candidates.extend([a.ok(), b.ok()].into_iter().flatten());
+        for c in candidates.drain(..) {
+            if floors.kept(&c) && empty(&c) < empty(&out) && (c.layout.is_clean() || !out.layout.is_clean()) {
+                out = c;
+            }
         }
     }
     Ok(out)
 }
 
-/// The share of empty 20 mm cells above which a sheet is too empty (issue 22's bound).
-const EMPTY_MOST: f64 = 0.5;
-
-fn empty(c: &Composed) -> f64 {
-    c.layout.empty_share.unwrap_or(1.0)
-}
-
-/// Whether `l` is better than the rule's composition `rule`: as clean, keeping its
-/// [`Floors`], and less empty by more than `margin` (on a tie the rule's).
-fn better(l: &Composed, rule: &Composed, margin: f64) -> bool {
-    (l.layout.is_clean() || !rule.layout.is_clean()) && Floors::of(rule).kept(l) && empty(l) < empty(rule) - margin
-}
-
-/// What a variant must keep of the rule's composition: its smallest plan, and its shortest
-/// labelled polygon side and lever where those are under what reads plainly
-/// (`POLYGON_SIDE_MIN`, [`LEVER_READABLE`]).
-struct Floors {
-    plan: f64,
-    side: f64,
-    lever: f64,
-}
-
-impl Floors {
-    fn of(c: &Composed) -> Floors {
-        Floors { plan: plan_mm(c), side: side_mm(c).min(POLYGON_SIDE_MIN), lever: lever_mm(c).min(LEVER_READABLE) }
-    }
-
-    fn kept(&self, c: &Composed) -> bool {
-        let at_least = |size: f64, floor: f64| size >= floor - crate::num::tol::PAPER;
-        at_least(plan_mm(c), self.plan) && at_least(side_mm(c), self.side) && at_least(lever_mm(c), self.lever)
-    }
-}
-
-fn plan_mm(c: &Composed) -> f64 {
-    c.composition.smallest_plan_mm.unwrap_or(0.0)
-}
-
-fn side_mm(c: &Composed) -> f64 {
-    c.force_scales.as_ref().and_then(|f| f.smallest_polygon_side_mm).unwrap_or(f64::MAX)
-}
-
-fn lever_mm(c: &Composed) -> f64 {
-    c.force_scales.as_ref().map_or(0.0, |f| f.lever_mm)
-}
-
-/// A Zhukovsky lever this long reads its arms and forces plainly, mm: the larger lettering
-/// may take the rest of the lever's growth.
-const LEVER_READABLE: f64 = 100.0;
-
-/// How one composition of sheet 1 letters its tables 3–5 and whether its force drawings
-/// grow into the room their cells leave.
+/// How one composition of sheet 1 letters its tables 3–5, whether its force drawings grow
+/// into the room their cells leave, fill the region beside the mechanism first, and whether
+/// table 1 goes down into the corner beside the title block.
 #[derive(Clone, Copy)]
 struct Variant {
     text_h: f64,
     grow_drawings: bool,
+    side_first: bool,
+    corner: bool,
 }
+
+impl Variant {
+    const RULE: Variant = Variant { text_h: CELL_TEXT, grow_drawings: false, side_first: false, corner: false };
+}
+
+/// The variants tried, two at a time on rayon's pool, on a sheet still more than
+/// [`EMPTY_MOST`] empty, until one is not: each a step further from the rule's layout.
+const FULLER: [[Variant; 2]; 3] = {
+    let grown = Variant { grow_drawings: true, ..Variant::RULE };
+    let side = Variant { side_first: true, ..grown };
+    let corner = Variant { corner: true, ..side };
+    [
+        [grown, Variant { text_h: LARGE_TEXT, ..grown }],
+        [side, Variant { text_h: LARGE_TEXT, ..side }],
+        [corner, Variant { text_h: LARGE_TEXT, ..corner }],
+    ]
+};
 
 /// Lays out sheet 1 as the variant `v` asks.
 fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> Result<Composed, TooLong> {
@@ -290,7 +274,7 @@ fn arrange<'a>(
 
     // Right column: the tables above the title block decide how tall the velocity plans are.
     let right_x0 = left_x1 + 6.0;
-    let notes = note_tables(inp, &words, (right_x0, inner.x1 - 4.0))?;
+    let notes = note_tables(inp, &words, (right_x0, inner.x1 - 4.0), v.corner)?;
     let plans_bottom = notes.region.y0 - 6.0;
     let (l, c) = (words.sheet, words.common);
     let mut velocity = PlansRegion {
@@ -355,7 +339,8 @@ fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<
     let (forces, force_scales, force_segments) = force_groups(force_region, force_input.as_ref(), mech.region, &answer);
     drawn_segments.extend(force_segments);
     let mu_l = mech.mu_l;
-    let mut groups = vec![mech.group, vel, acc, tables];
+    let mut groups = vec![mech.group, vel, acc];
+    groups.extend(tables);
     groups.extend(forces);
     let composition = Composition {
         name: if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() }.to_string(),
@@ -414,6 +399,7 @@ fn force_input<'a>(
             tables,
             memo,
             grow_drawings: v.grow_drawings,
+            side_first: v.side_first,
         }
     })
 }

@@ -2,6 +2,7 @@
 //! `forces` section the kinetostatics at φ1), builds the note's tables and composes the
 //! sheet; the composition itself lives in [`compose`] and the views it places.
 
+mod choice;
 pub mod compose;
 pub mod forces_view;
 pub mod labels;

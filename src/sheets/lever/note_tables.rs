@@ -18,6 +18,9 @@ pub(super) struct NoteTables {
     t1: Table,
     t2: Table,
     side_by_side: bool,
+    /// Where table 1 stands in the corner left of the title block, the notes under it: the
+    /// notes' width. Else the tables and the notes under both end above the title block.
+    corner: Option<f64>,
     assumptions: Vec<String>,
     /// The region they take: as wide as the column, from their top to the title block.
     pub(super) region: Rect,
@@ -25,8 +28,14 @@ pub(super) struct NoteTables {
 
 /// Tables 1 and 2 side by side when the column (`across`: its left and right x) is wide enough,
 /// else one above the other, and the notes under them; refuses assumptions too long for
-/// the room above the title block.
-pub(super) fn note_tables(inp: &Input, words: &LeverWords, across: (f64, f64)) -> Result<NoteTables, TooLong> {
+/// the room above the title block. With `corner`, table 1 goes down into the corner left of
+/// the title block where it fits there.
+pub(super) fn note_tables(
+    inp: &Input,
+    words: &LeverWords,
+    across: (f64, f64),
+    corner: bool,
+) -> Result<NoteTables, TooLong> {
     let (c, lang) = (words.common, words.lang);
     let t1 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[0], lang) };
     let t2 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[1], lang) };
@@ -36,25 +45,48 @@ pub(super) fn note_tables(inp: &Input, words: &LeverWords, across: (f64, f64)) -
     let side_by_side = 1.0 + w1 + 8.0 + w2 + 1.0 <= right_w;
     let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
     let assumptions: Vec<String> = inp.project.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
+    let title = frame::title_block_rect();
+    // Table 1 beside the title block, down in its corner, where it fits there with the notes
+    // under it (as wide as it: table 2 stands beside it): the band left of the title block
+    // would be empty paper, and the plans above get its height.
+    let corner_w = w1 + 2.0;
+    let corner_notes = notes_height(&assumptions, corner_w);
+    let in_corner = corner && side_by_side && across.0 + corner_w + 4.0 <= title.x0 && corner_notes <= NOTES_MAX_H;
+    if in_corner {
+        let top = (title.y0 - 3.0 - h2).min(frame::inner().y1 - 3.0 - corner_notes - 4.0 - h1);
+        let region = Rect::new(across.0, top, across.1, frame::inner().y1 - 3.0);
+        return Ok(NoteTables { t1, t2, side_by_side, corner: Some(corner_w), assumptions, region });
+    }
     let notes_lines = notes_height(&assumptions, right_w);
     let room =
         Room { field: "mechanism.assumptions", place: "notes above the title block", size: (right_w, NOTES_MAX_H) };
     room.check(&assumptions, notes_lines)?;
-    let top = frame::title_block_rect().y0 - 3.0 - notes_lines - tables_h - 4.0;
-    let region = Rect::new(across.0, top, across.1, frame::title_block_rect().y0 - 3.0);
-    Ok(NoteTables { t1, t2, side_by_side, assumptions, region })
+    let top = title.y0 - 3.0 - notes_lines - tables_h - 4.0;
+    let region = Rect::new(across.0, top, across.1, title.y0 - 3.0);
+    Ok(NoteTables { t1, t2, side_by_side, corner: None, assumptions, region })
 }
 
-/// Tables 1 and 2 and the notes, drawn.
-pub(super) fn tables_group(n: &NoteTables, words: &LeverWords) -> Group {
+/// Tables 1 and 2 and the notes, drawn: one group, or, with table 1 in the corner beside
+/// the title block, table 1 with the notes under it and table 2 apart (`tables-2`), so that
+/// no region covers the title block.
+pub(super) fn tables_group(n: &NoteTables, words: &LeverWords) -> Vec<Group> {
     let r = n.region;
+    if let Some(w) = n.corner {
+        let split = r.x0 + w + 4.0;
+        let mut first = Group::new("tables", Rect::new(r.x0, r.y0, split, r.y1));
+        let r1 = n.t1.draw(&mut first, Point::new(r.x0 + 1.0, r.y0));
+        notes(&mut first, words, &n.assumptions, Rect::new(r.x0, r1.y1 + 4.0, r.x0 + w, r.y1));
+        let mut second = Group::new("tables-2", Rect::new(split, r.y0, r.x1, frame::title_block_rect().y0 - 3.0));
+        n.t2.draw(&mut second, Point::new(r1.x1 + 8.0, r.y0));
+        return vec![first, second];
+    }
     let mut tables = Group::new("tables", r);
     let r1 = n.t1.draw(&mut tables, Point::new(r.x0 + 1.0, r.y0));
     let at2 = if n.side_by_side { Point::new(r1.x1 + 8.0, r.y0) } else { Point::new(r.x0 + 1.0, r1.y1 + 6.0) };
     let r2 = n.t2.draw(&mut tables, at2);
     let notes_top = r1.y1.max(r2.y1) + 4.0;
     notes(&mut tables, words, &n.assumptions, Rect::new(r.x0, notes_top, r.x1, r.y1));
-    tables
+    vec![tables]
 }
 
 /// The notes (the exactness note and the assumptions) may take this much height, mm.

@@ -167,6 +167,21 @@ pub(super) fn pack(cells: &[Cell], bodies: &[Rect]) -> (Vec<(usize, Point)>, boo
     }
 }
 
+/// Whether the tables among `cells` placed `at` stand in one body, each within a gap of
+/// another.
+pub(super) fn tables_together(cells: &[Cell], at: &[(usize, Point)]) -> bool {
+    let tables: Vec<(usize, Rect)> = cells
+        .iter()
+        .zip(at)
+        .filter(|(c, _)| matches!(c.content, Content::Table(_)))
+        .map(|(c, &(body, p))| (body, Rect::new(p.x, p.y, p.x + c.w, p.y + c.h)))
+        .collect();
+    let near = |a: Rect, b: Rect| a.inflate(GAP + 1.0, GAP + 1.0).intersect(b).area() > 0.0;
+    tables.iter().all(|&(body, r)| {
+        body == tables[0].0 && (tables.len() < 2 || tables.iter().any(|&(b2, r2)| b2 == body && r2 != r && near(r, r2)))
+    })
+}
+
 /// The cells (sized `sizes`) packed with tables 3–5 together (see [`pack`]), if they all
 /// fit so.
 fn together(cells: &[Cell], sizes: &[(f64, f64)], bodies: &[Rect]) -> Option<Vec<(usize, Point)>> {

@@ -50,6 +50,9 @@ pub struct ForcesInput<'a> {
     /// Whether the group drawings and polygons grow into the room the cells leave (see
     /// [`draw_forces`]).
     pub grow_drawings: bool,
+    /// Whether the cells fill the region beside the mechanism before the one below it (a
+    /// side region the cells below did not need stood empty).
+    pub side_first: bool,
 }
 
 /// The scales the force drawings got.
@@ -73,6 +76,10 @@ pub struct ForceScales {
     pub smallest_polygon_side_mm: Option<f64>,
     /// The shortest side labelled in the polygons' enlargements of their short sides, mm.
     pub smallest_enlarged_side_mm: Option<f64>,
+    /// Whether tables 3–5 stand in one region, each beside another (the sheet's choice
+    /// between its layouts keeps them so where the rule's did).
+    #[serde(skip)]
+    pub tables_together: bool,
 }
 
 /// Draws the force analysis into `main` (the region below the mechanism, titled) and, when
@@ -89,7 +96,7 @@ pub fn draw_forces(
     let region = main.region;
     let title = inp.words.sheet.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.words.lang));
     main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
-    let bodies = bodies(region, side.as_ref().map(|g| g.region));
+    let bodies = bodies(region, side.as_ref().map(|g| g.region), inp.side_first);
     let arranged = larger_lever(inp, &bodies, finer(inp, &bodies, arrange(inp, &bodies, DRAWN, SHRINK_TRIES)));
     let (cells, at, _, _) = larger_drawings(inp, &bodies, larger_loads(inp, &bodies, arranged));
     let mut scales = ForceScales {
@@ -101,11 +108,12 @@ pub fn draw_forces(
         lever_mm: 0.0,
         smallest_polygon_side_mm: None,
         smallest_enlarged_side_mm: None,
+        tables_together: cells::tables_together(&cells, &at),
     };
     let mut measured = Vec::new();
     for (cell, &(body, origin)) in cells.iter().zip(&at) {
         let g: &mut Group = match (body, side.as_deref_mut()) {
-            (1, Some(sg)) => sg,
+            (b, Some(sg)) if (b == 1) != inp.side_first => sg,
             _ => &mut *main,
         };
         let r = Rect::new(origin.x, origin.y, origin.x + cell.w, origin.y + cell.h);
@@ -163,10 +171,14 @@ fn part_id(inp: &ForcesInput, content: &Content) -> String {
     }
 }
 
-/// The areas the cells may use: the main region below its title, then the side region.
-fn bodies(main: Rect, side: Option<Rect>) -> Vec<Rect> {
+/// The areas the cells may use: the main region below its title, then the side region (or
+/// the side region first, `side_first`).
+fn bodies(main: Rect, side: Option<Rect>, side_first: bool) -> Vec<Rect> {
     let mut out = vec![Rect::new(main.x0, main.y0 + 10.0, main.x1, main.y1)];
     out.extend(side);
+    if side_first {
+        out.reverse();
+    }
     out
 }
 
@@ -374,5 +386,5 @@ fn arrange(inp: &ForcesInput, bodies: &[Rect], start: Sizes, tries: usize) -> Ar
 /// Whether the force drawings fit the main region (and the side region, if any) without
 /// being cramped.
 pub fn fit_comfortably(inp: &ForcesInput, main: Rect, side: Option<Rect>) -> bool {
-    arrange(inp, &bodies(main, side), COMFORTABLE_START, COMFORTABLE + 1).2
+    arrange(inp, &bodies(main, side, false), COMFORTABLE_START, COMFORTABLE + 1).2
 }

@@ -1,0 +1,75 @@
+//! How sheet 1 chooses between its compositions: what a variant must keep of the rule's
+//! (its [`Floors`]) and how empty a sheet may be before fuller variants are tried.
+
+use super::compose::Composed;
+use super::forces_view::SIDE_MIN as POLYGON_SIDE_MIN;
+
+/// The share of empty 20 mm cells above which a sheet is too empty (issue 22's bound).
+pub(super) const EMPTY_MOST: f64 = 0.5;
+
+pub(super) fn empty(c: &Composed) -> f64 {
+    c.layout.empty_share.unwrap_or(1.0)
+}
+
+/// Whether `l` is better than the rule's composition `rule`: as clean, keeping its
+/// [`Floors`] but for the tables' togetherness (the larger tables may not fit as one
+/// block), and less empty by more than `margin` (on a tie the rule's).
+pub(super) fn better(l: &Composed, rule: &Composed, margin: f64) -> bool {
+    let floors = Floors { together: false, ..Floors::of(rule) };
+    (l.layout.is_clean() || !rule.layout.is_clean()) && floors.kept(l) && empty(l) < empty(rule) - margin
+}
+
+/// What a variant must keep of the rule's composition: its smallest plan, its shortest
+/// labelled polygon side and lever where those are under what reads plainly
+/// (`POLYGON_SIDE_MIN`, [`LEVER_READABLE`]), and tables 3–5 together where they were.
+pub(super) struct Floors {
+    plan: f64,
+    side: f64,
+    lever: f64,
+    /// Whether tables 3–5 must stand together.
+    together: bool,
+}
+
+impl Floors {
+    pub(super) fn of(c: &Composed) -> Floors {
+        Floors {
+            plan: plan_mm(c),
+            side: side_mm(c).min(POLYGON_SIDE_MIN),
+            lever: lever_mm(c).min(LEVER_READABLE),
+            together: together(c),
+        }
+    }
+
+    /// These floors with tables 3–5 kept together where `c` has them so.
+    pub(super) fn with_tables_of(self, c: &Composed) -> Floors {
+        Floors { together: together(c), ..self }
+    }
+
+    pub(super) fn kept(&self, c: &Composed) -> bool {
+        let at_least = |size: f64, floor: f64| size >= floor - crate::num::tol::PAPER;
+        at_least(plan_mm(c), self.plan)
+            && at_least(side_mm(c), self.side)
+            && at_least(lever_mm(c), self.lever)
+            && (together(c) || !self.together)
+    }
+}
+
+fn plan_mm(c: &Composed) -> f64 {
+    c.composition.smallest_plan_mm.unwrap_or(0.0)
+}
+
+fn side_mm(c: &Composed) -> f64 {
+    c.force_scales.as_ref().and_then(|f| f.smallest_polygon_side_mm).unwrap_or(f64::MAX)
+}
+
+pub(super) fn together(c: &Composed) -> bool {
+    c.force_scales.as_ref().is_some_and(|f| f.tables_together)
+}
+
+fn lever_mm(c: &Composed) -> f64 {
+    c.force_scales.as_ref().map_or(0.0, |f| f.lever_mm)
+}
+
+/// A Zhukovsky lever this long reads its arms and forces plainly, mm: the larger lettering
+/// may take the rest of the lever's growth.
+const LEVER_READABLE: f64 = 100.0;
