@@ -84,7 +84,7 @@ pub fn bounds(discs: impl IntoIterator<Item = (Vec2, f64)>) -> (Vec2, Vec2) {
     })
 }
 
-/// Every point the nomogram must show, follower frame.
+/// Every point the nomogram must show, follower frame (a rocker's pivot last).
 fn extent_points(d: &Design, phis: &[f64]) -> Vec<Vec2> {
     let r = &d.region;
     let mut pts: Vec<Vec2> = phis.iter().flat_map(|&phi| [r.state(phi).b, r.state(phi).analog]).collect();
@@ -108,10 +108,16 @@ fn exit(p: Vec2, dir: Vec2, lo: Vec2, hi: Vec2) -> f64 {
 }
 
 /// The follower-frame box (metres) the nomogram shows: every B_k and B′_k, O and the pivot,
-/// with room below O for the limiting lines to meet and round the picture for labels.
+/// with room below O for the limiting lines to meet and round the picture for labels. The
+/// room is in proportion to the curve and O, where the labels are, not to a rocker's pivot
+/// as well: a_w away, it made the room round a rocker's nomogram half as wide again as its
+/// curve (a knife-edged rocker's nomogram came out at 1:1 where 2:1 fits once it goes).
 pub fn extent(d: &Design, phis: &[f64]) -> (Vec2, Vec2) {
-    let (lo, hi) = bounds(extent_points(d, phis).into_iter().map(|p| (p, 0.0)));
-    let pad = 0.15 * (hi - lo).norm();
+    let mut points = extent_points(d, phis);
+    let (lo, hi) = bounds(points.iter().map(|&p| (p, 0.0)));
+    points.truncate(points.len() - usize::from(d.spec.follower.pivot().is_some()));
+    let (near_lo, near_hi) = bounds(points.into_iter().map(|p| (p, 0.0)));
+    let pad = 0.15 * (near_hi - near_lo).norm();
     (lo - Vec2::new(pad, pad), hi + Vec2::new(pad, pad * 0.5))
 }
 

@@ -35,6 +35,7 @@ const VIEW_SIDES: f64 = 8.0;
 const NOMOGRAM_MIN_MM: f64 = 130.0;
 
 /// The regions of the sheet and the views' scales, chosen by content.
+#[derive(Debug, Clone, Copy)]
 pub struct Regions {
     pub diagrams: Rect,
     pub law_tables: Option<Rect>,
@@ -236,7 +237,51 @@ pub fn regions(c: &Content) -> Regions {
         let nomogram = Rect::new(views.x0, views.y0, views.x0 + half - GAP, views.y1);
         around(0.001, Rect::new(views.x0 + half, views.y0, views.x1, views.y1), 0.001, nomogram)
     });
-    Regions { pressure: free_room(&best), ..best }
+    slid_for_pressure(best)
+}
+
+/// A view slid across is kept where it leaves the pressure angle's diagram a plot this many
+/// times larger than where it was arranged.
+const SLIDE_GAIN: f64 = 1.1;
+
+/// The regions with the pressure angle's room ([`free_room`]), the views on the right slid
+/// across, each flush with what is beside it on either side, where that leaves the diagram
+/// a larger plot: a profile centred over the views' room left a band too narrow for it on
+/// each side (a wide rocker's, 60 mm either side at 1:1) where one side could hold it.
+fn slid_for_pressure(arranged: Regions) -> Regions {
+    let plot = |r: &Regions| free_room(r).and_then(pressure_view::plot_size).map_or(0.0, |(w, h)| w * h);
+    let fixed: Vec<Rect> = [Some(arranged.diagrams), arranged.law_tables, Some(arranged.tables)]
+        .into_iter()
+        .flatten()
+        .chain([frame::title_block_rect()])
+        .collect();
+    let with = |other: Rect| fixed.iter().copied().chain([other]).collect::<Vec<_>>();
+    // The nomogram under the diagrams stays in their column.
+    let nomogram_slides = arranged.nomogram.x0 >= arranged.diagrams.x1;
+    let mut best = (plot(&arranged) * SLIDE_GAIN, arranged);
+    for profile in slides(arranged.profile, &with(arranged.nomogram)) {
+        let nomograms =
+            if nomogram_slides { slides(arranged.nomogram, &with(profile)) } else { vec![arranged.nomogram] };
+        for nomogram in nomograms {
+            let r = Regions { profile, nomogram, ..arranged };
+            let a = plot(&r);
+            if a > best.0 {
+                best = (a, r);
+            }
+        }
+    }
+    let r = best.1;
+    Regions { pressure: free_room(&r), ..r }
+}
+
+/// `r` where it is and slid across to either end of the room the sheet and `others` leave
+/// it, [`GAP`] from each of them beside it.
+fn slides(r: Rect, others: &[Rect]) -> Vec<Rect> {
+    let beside: Vec<&Rect> = others.iter().filter(|o| o.y0 < r.y1 + GAP - 1e-6 && o.y1 > r.y0 - GAP + 1e-6).collect();
+    let lo = beside.iter().filter(|o| o.x1 <= r.x0).fold(SHEET.x0, |x, o| x.max(o.x1 + GAP));
+    let hi = beside.iter().filter(|o| o.x0 >= r.x1).fold(SHEET.x1, |x, o| x.min(o.x0 - GAP));
+    let at = |x0: f64| r + Vec2::new(x0 - r.x0, 0.0);
+    vec![r, at(lo.min(r.x0)), at((hi - r.width()).max(r.x0))]
 }
 
 /// The nomogram under the notes in the diagrams' column, the profile alone on the right.
@@ -388,6 +433,19 @@ fn centred_across(r: Rect, within: Rect) -> Rect {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A view slides to either end of the room beside it: flush, [`GAP`] off, with what is
+    /// beside it (not with what is above or below it) or with the sheet's edge.
+    #[test]
+    fn a_view_slides_flush_with_what_is_beside_it() {
+        let view = Rect::new(400.0, 100.0, 600.0, 200.0);
+        let column = Rect::new(SHEET.x0, SHEET.y0, 300.0, 300.0);
+        let above = Rect::new(300.0, SHEET.y0, SHEET.x1, 100.0 - GAP);
+        let [stays, left, right] = slides(view, &[column, above])[..] else { panic!("three places") };
+        assert_eq!(stays, view);
+        assert_eq!((left.x0, left.width(), left.y0), (300.0 + GAP, 200.0, 100.0));
+        assert_eq!((right.x1, right.width()), (SHEET.x1, 200.0));
+    }
 
     /// A view that draws a paper depth under a world point (the offset's dimension under O)
     /// is fitted with that depth inside its region, at a coarser scale where the bare box
