@@ -9,7 +9,7 @@
 //! involute: the outline then takes the involute down to their crossing only (undercut).
 
 use super::pair::{PairSpec, Wheel, inv};
-use crate::num::math::{Norm, acos, atan2, cos, from_angle, rotate, sin, tan};
+use crate::num::math::{Norm, acos, atan2, cos, from_angle, rotate, sin};
 use crate::num::tol;
 use kurbo::Vec2;
 use std::f64::consts::PI;
@@ -61,12 +61,8 @@ fn perp(v: Vec2) -> Vec2 {
 
 impl Rack {
     fn of(spec: &PairSpec, w: &Wheel) -> Rack {
-        let m = spec.module;
-        let alpha = spec.pressure_angle;
-        let rho = spec.tip_round() * m;
-        let yc = w.shift * m - (spec.addendum + spec.clearance) * m + rho;
-        let xc = PI * m / 4.0 + (yc - w.shift * m) * tan(alpha) - rho / cos(alpha);
-        Rack { r: w.pitch, centre: Vec2::new(xc, yc), rho, alpha }
+        let c = super::rack::Cutter::of(spec, w);
+        Rack { r: w.pitch, centre: c.centre, rho: c.rho, alpha: c.alpha }
     }
 
     /// The fillet point generated at rack position φ, rack frame: on the tip round, on the
@@ -204,6 +200,7 @@ pub fn polar(p: Vec2) -> f64 {
 mod tests {
     use super::*;
     use crate::gears::pair::Pair;
+    use crate::num::math::tan;
 
     fn outline(z: [u32; 2], x: [f64; 2]) -> (Pair, Outline) {
         let spec = PairSpec { shift: x, ..PairSpec::standard(0.005, z) };

@@ -3,11 +3,13 @@
 //! views and the tables on the right, the notes and the title block.
 
 mod clip;
+mod generation_view;
 pub mod labels;
 mod mesh_dimensions;
 mod mesh_view;
 mod planetary_view;
 mod results;
+mod room;
 mod segments;
 mod sliding_view;
 mod stage_velocities;
@@ -24,6 +26,7 @@ use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::drawing::fmt;
 use crate::drawing::frame;
 use crate::drawing::labels::Language;
+use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
@@ -94,10 +97,20 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
                 .map(|lang| {
                     let words = GearWords::new(lang);
                     let sized = tables::notes(p, p.pair.contact_ratio, &words, ctx.first_table);
-                    let large = tables::large_sizes(&sized, tolerance, &words, ctx.first_table);
-                    table::flow_width(&large, right_of(RIGHT_X0).height(), tables::GAP)
+                    let height = right_of(RIGHT_X0).height();
+                    let largest = tables::largest_sizes(&sized, tolerance, &words, ctx.first_table);
+                    let one_column = largest.iter().map(|s| s.0).fold(0.0, f64::max);
+                    match table::flow_width(&largest, height, tables::GAP) {
+                        w if w <= one_column + 1e-9 => w,
+                        _ => table::flow_width(
+                            &tables::large_sizes(&sized, tolerance, &words, ctx.first_table),
+                            height,
+                            tables::GAP,
+                        ),
+                    }
                 })
                 .fold(0.0, f64::max);
+            // 5 mm lettering where the tables stand in one column so, else 3.5 mm.
             // Over the title block's column too: the circles' arcs stop short of the block.
             Rect { x1: (right_of(0.0).x1 - w - 8.0).max(MESH.x1), ..MESH }
         }
@@ -135,6 +148,14 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         &words,
         ctx.first_table,
     ));
+
+    // The rack generation of each wheel in the largest room the rest leaves on the sheet,
+    // wheel 1 first (the pinion, the shift chosen against its undercut).
+    for wheel in 0..2 {
+        let drawn_items = Obstacles::of_items(groups.iter().flat_map(|g| g.items.iter()));
+        let outline = Outline::new(&p.pair.spec, &p.pair.wheels[wheel]);
+        groups.extend(generation_view::draw(&drawn_items, inner.inset(-4.0), (&p.pair, wheel), &outline, &words));
+    }
 
     let name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
     let composition = Composition {

@@ -5,13 +5,13 @@
 //! or a label finds no clean spot: the mesh is never moved or shrunk for it.
 
 use super::labels::GearWords;
+use crate::drawing::fmt;
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
 use crate::drawing::plot::{Axis, Plot, round_ticks};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN, Text};
 use crate::drawing::text::LabelText;
-use crate::drawing::{fmt, frame};
 use crate::gears::sliding::Sliding;
 use kurbo::{Point, Rect, Vec2};
 
@@ -49,47 +49,11 @@ pub fn draw(mesh: &mut Group, area: Rect, s: &Sliding, title: &str, words: &Gear
     Some(drawn)
 }
 
-/// The largest rectangle of `area` on the grid of [`CELL`] that nothing of `g` meets, nor
-/// the title block (the histogram method, row by row), at least [`MIN_ROOM`], scored by the plot it holds.
+/// The largest rectangle of `area` on the grid of [`CELL`] that nothing of `g` meets, at
+/// least [`MIN_ROOM`], scored by the plot it holds.
 fn free_room(g: &Group, area: Rect) -> Option<Rect> {
-    let obstacles = Obstacles::of_items(&g.items);
-    // The mesh's region of a pair alone reaches over the title block's column.
-    let block = frame::title_block_rect().inflate(2.0, 2.0);
-    let (nx, ny) = ((area.width() / CELL).floor() as usize, (area.height() / CELL).floor() as usize);
-    let cell = |i: usize, j: usize| {
-        let (x, y) = (area.x0 + i as f64 * CELL, area.y0 + j as f64 * CELL);
-        Rect::new(x, y, x + CELL, y + CELL)
-    };
-    let mut heights = vec![0usize; nx];
-    let mut best: Option<(f64, Rect)> = None;
-    for j in 0..ny {
-        for (i, h) in heights.iter_mut().enumerate() {
-            let c = cell(i, j).inflate(1.0, 1.0);
-            *h = if c.intersect(block).area() <= 0.0 && obstacles.is_clear(c) { *h + 1 } else { 0 };
-        }
-        for i0 in 0..nx {
-            let mut h = usize::MAX;
-            for (i1, &column) in heights.iter().enumerate().skip(i0) {
-                h = h.min(column);
-                if h == 0 {
-                    break;
-                }
-                let (w, hh) = ((i1 + 1 - i0) as f64 * CELL, h as f64 * CELL);
-                if w < MIN_ROOM.0 || hh < MIN_ROOM.1 {
-                    continue;
-                }
-                let plot = (w - LEFT - RIGHT) * (hh - TOP - BOTTOM).min((w - LEFT - RIGHT) * MAX_ASPECT);
-                if best.is_none_or(|(b, _)| plot > b) {
-                    let y1 = area.y0 + (j + 1) as f64 * CELL;
-                    best = Some((
-                        plot,
-                        Rect::new(area.x0 + i0 as f64 * CELL, y1 - hh, area.x0 + (i1 + 1) as f64 * CELL, y1),
-                    ));
-                }
-            }
-        }
-    }
-    best.map(|(_, r)| r.inset(-1.0))
+    let plot = |w: f64, h: f64| (w - LEFT - RIGHT) * (h - TOP - BOTTOM).min((w - LEFT - RIGHT) * MAX_ASPECT);
+    super::room::largest(&Obstacles::of_items(&g.items), area, CELL, MIN_ROOM, plot).map(|r| r.inset(-1.0))
 }
 
 /// The diagram in `room`: its plot at round scales that fill the room.

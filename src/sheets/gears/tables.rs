@@ -62,6 +62,12 @@ pub fn large_sizes(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWord
     lettered(notes, tolerance, words, first, LARGE_TEXT).iter().map(Table::size).collect()
 }
 
+/// The tables' sizes in 5 mm lettering: a pair without a stage has the right column to
+/// itself, and takes it as wide as these need where they stand in one column.
+pub fn largest_sizes(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords, first: u32) -> Vec<(f64, f64)> {
+    lettered(notes, tolerance, words, first, LARGEST_TEXT).iter().map(Table::size).collect()
+}
+
 /// Whether tables of `sizes` fit `region` as [`group`] flows them.
 pub fn fit(sizes: &[(f64, f64)], region: Rect) -> bool {
     table::flow_fits(sizes, region, GAP)
