@@ -124,13 +124,17 @@ fn pieces(word: &str) -> std::str::SplitInclusive<'_, char> {
 /// The words of `text` as wrapping sees them: a one- or two-letter word (a preposition or
 /// conjunction: "в", "и", "da") goes to the next line with the word after it, as Russian
 /// typesetting asks ("длины в" over "мм" reads as if the unit were lost), and so does a
-/// number: "7" at a line's end over "mm" parts a length from its unit.
+/// number: "7" at a line's end over "mm" parts a length from its unit. A unit in brackets
+/// goes with the word before it.
 fn units(text: &str) -> Vec<String> {
     let mut out: Vec<String> = Vec::new();
     let mut glue = false;
     for word in text.split_whitespace() {
+        // A unit in brackets stays with the word before it: "(Н)" alone on a title's last
+        // line reads as a stray mark.
+        let unit = word.starts_with('(') && word.ends_with(')') && word.chars().count() <= 8;
         match out.last_mut() {
-            Some(last) if glue => {
+            Some(last) if glue || unit => {
                 last.push(' ');
                 last.push_str(word);
             }
@@ -333,6 +337,17 @@ mod tests {
         }
         assert_eq!(units("Таблица 5. Уравновешивающая сила")[1], "5.");
         assert_eq!(units("y = 0,06 m, 12 N·m"), ["y =", "0,06 m,", "12 N·m"]);
+    }
+
+    /// Russian table 4's title ended in "(Н)" alone on its third line.
+    #[test]
+    fn a_unit_in_brackets_stays_with_its_word() {
+        let text = "Таблица 4. Реакции в кинематических парах (Н)";
+        for width in (45..=90).step_by(5) {
+            let lines = wrap(text, 3.5, width as f64);
+            assert!(lines.iter().all(|l| !l.starts_with('(')), "{lines:?} at {width} mm");
+            assert_eq!(lines.join(" "), text);
+        }
     }
 
     #[test]
