@@ -99,7 +99,30 @@ fn a_too_empty_kulisa_sheet_grows_its_force_drawings() {
         let built = pipeline::build(&p, &[1]).unwrap();
         let layout = &built[0].output.results["layout"];
         let empty = layout["empty_share"].as_f64().unwrap();
-        assert!(empty <= 0.535, "{lang:?}: {empty}");
+        assert!(empty <= 0.53, "{lang:?}: {empty}");
         assert!(layout["smallest_plan_mm"].as_f64().unwrap() >= 50.0, "{lang:?}");
     }
+}
+
+/// Issue 22's bound on every sheet-1 fixture in every language: at most half the 20 mm
+/// cells inside the frame empty. The offset crank-slider in uz was 0.505 (its tall, thin
+/// mechanism centred in a region 200 mm wide); the kulisa is held to its own bound above.
+#[test]
+fn every_sheet_1_fixture_but_the_kulisa_is_at_most_half_empty_in_every_language() {
+    use tmm_sheets::drawing::labels::Language;
+    let mut over = Vec::new();
+    for name in fixture_names().into_iter().filter(|n| n != "kulisa") {
+        for lang in Language::ALL {
+            let mut p = fixture(&name);
+            p.info.language = lang;
+            let built = pipeline::build(&p, &[1]).unwrap();
+            let layout = &built[0].output.results["layout"];
+            let empty = layout["empty_share"].as_f64().unwrap();
+            let faults = ["texts_crossed", "text_overlaps", "outside_region"].map(|k| layout[k].as_u64().unwrap());
+            if empty > 0.5 || faults.iter().any(|&f| f > 0) {
+                over.push(format!("{name} {lang:?}: {empty:.3} empty, faults {faults:?}"));
+            }
+        }
+    }
+    assert!(over.is_empty(), "{over:?}");
 }

@@ -54,7 +54,13 @@ pub(super) struct Sizes {
     pub(super) grow: u64,
     /// How many times the least the load diagrams' plots are.
     pub(super) load: f64,
+    /// How many times `poly_box` each of the first [`GROWN_POLYGONS`] polygons' boxes is
+    /// (one polygon may grow where the others' cells leave it no room to).
+    pub(super) poly_grown: [f64; 8],
 }
+
+/// How many polygons may grow one by one: a mechanism has at most a few groups.
+pub(super) const GROWN_POLYGONS: usize = 8;
 
 impl Sizes {
     /// A round scale for `x` units a mm in the series [`Sizes::fine`] picks.
@@ -114,7 +120,7 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let mut out = Vec::new();
     for (i, poly) in inp.fa.forces.polygons.iter().enumerate() {
         let grow = s.grow >> i & 1 == 1;
-        let (mu_l, mu_p) = group_scales(poly, inp, s);
+        let (mu_l, mu_p) = group_scales(poly, inp, s, s.poly_grown.get(i).copied().unwrap_or(1.0));
         let (layout, w, h) = memo
             .polygons
             .borrow_mut()
@@ -159,12 +165,22 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
 /// 3–5 go together where they can, side by side, else one above the other (packed apart,
 /// table 5 could stand beside the mechanism, away from 3 and 4). Returns each cell's body
 /// and corner, and whether all fit (a cell that fits nowhere overflows the first body).
-pub(super) fn pack(cells: &[Cell], bodies: &[Rect]) -> (Vec<(usize, Point)>, bool) {
+pub(super) fn pack(cells: &[Cell], bodies: &Bodies) -> (Vec<(usize, Point)>, bool) {
     let sizes: Vec<(f64, f64)> = cells.iter().map(|c| (c.w, c.h)).collect();
     match together(cells, &sizes, bodies) {
         Some(at) => (at, true),
-        None => apart(&sizes, bodies),
+        None => apart(&sizes, &bodies.rects, None),
     }
+}
+
+/// The areas the force cells may use, in the order each cell tries them, and the one
+/// tables 3–5 (packed together) try first, if not the first.
+pub(super) struct Bodies {
+    pub(super) rects: Vec<Rect>,
+    pub(super) tables_first: Option<usize>,
+    /// Whether the layout puts its tables beside the mechanism where they fit: then tables
+    /// 3–5 may also stand two over one, and the polygons grow one by one.
+    pub(super) beside: bool,
 }
 
 /// Whether the tables among `cells` placed `at` stand in one body, each within a gap of
@@ -183,47 +199,66 @@ pub(super) fn tables_together(cells: &[Cell], at: &[(usize, Point)]) -> bool {
 }
 
 /// The cells (sized `sizes`) packed with tables 3–5 together (see [`pack`]), if they all
-/// fit so.
-fn together(cells: &[Cell], sizes: &[(f64, f64)], bodies: &[Rect]) -> Option<Vec<(usize, Point)>> {
+/// fit so: side by side, else (where the layout puts them beside the mechanism) two
+/// beside each other over the third, else one above the other.
+fn together(cells: &[Cell], sizes: &[(f64, f64)], bodies: &Bodies) -> Option<Vec<(usize, Point)>> {
     // The tables are the last cells.
     let first = cells.iter().position(|c| matches!(c.content, Content::Table(_))).unwrap_or(cells.len());
-    if cells.len() - first < 2 || !cells[first..].iter().all(|c| matches!(c.content, Content::Table(_))) {
+    let n = cells.len() - first;
+    if n < 2 || !cells[first..].iter().all(|c| matches!(c.content, Content::Table(_))) {
         return None;
     }
-    [true, false].into_iter().find_map(|across| with_tables_together(sizes, first, across, bodies))
+    let across: Vec<Vec<usize>> = vec![(0..n).collect()];
+    let stacked: Vec<Vec<usize>> = (0..n).map(|i| vec![i]).collect();
+    let mut arrangements = vec![across];
+    // Two over one only where the tables go beside the mechanism: elsewhere the rule's
+    // layouts stand as they were.
+    if n == 3 && bodies.beside {
+        arrangements.extend([vec![vec![0, 2], vec![1]], vec![vec![0, 1], vec![2]]]);
+    }
+    arrangements.push(stacked);
+    let packed = |rows: &Vec<Vec<usize>>| with_tables_together(sizes, first, rows, bodies);
+    // In the body the tables try first if any arrangement lands there, else wherever.
+    let preferred = bodies.tables_first.and_then(|k| {
+        arrangements.iter().filter_map(&packed).find(|at| at.last().is_some_and(|&(b, _)| b == k))
+    });
+    preferred.or_else(|| arrangements.iter().find_map(packed))
 }
 
-/// The cells packed with the tables from `first` on as one block, side by side (`across`)
-/// or one above the other, if all fit.
+/// The cells packed with the tables from `first` on as one block, in `rows` (each row's
+/// tables side by side, the rows one above the other), if all fit.
 fn with_tables_together(
     sizes: &[(f64, f64)],
     first: usize,
-    across: bool,
-    bodies: &[Rect],
+    rows: &[Vec<usize>],
+    bodies: &Bodies,
 ) -> Option<Vec<(usize, Point)>> {
     let tables = &sizes[first..];
-    let mut offsets = Vec::with_capacity(tables.len());
-    let (mut w, mut h) = (0.0f64, 0.0f64);
-    for &(tw, th) in tables {
-        if across {
-            offsets.push(kurbo::Vec2::new(if w > 0.0 { w + GAP } else { 0.0 }, 0.0));
-            (w, h) = (if w > 0.0 { w + GAP } else { 0.0 } + tw, h.max(th));
-        } else {
-            offsets.push(kurbo::Vec2::new(0.0, if h > 0.0 { h + GAP } else { 0.0 }));
-            (w, h) = (w.max(tw), if h > 0.0 { h + GAP } else { 0.0 } + th);
+    let mut offsets = vec![kurbo::Vec2::ZERO; tables.len()];
+    let (mut w, mut y) = (0.0f64, 0.0f64);
+    for row in rows {
+        let mut x = 0.0f64;
+        let mut row_h = 0.0f64;
+        for &i in row {
+            offsets[i] = kurbo::Vec2::new(x, y);
+            x += tables[i].0 + GAP;
+            row_h = row_h.max(tables[i].1);
         }
+        w = w.max(x - GAP);
+        y += row_h + GAP;
     }
     let mut merged = sizes[..first].to_vec();
-    merged.push((w, h));
-    let (mut at, all) = apart(&merged, bodies);
+    merged.push((w, y - GAP));
+    let (mut at, all) = apart(&merged, &bodies.rects, bodies.tables_first);
     let (body, corner) = at.pop()?;
     all.then(|| at.into_iter().chain(offsets.into_iter().map(|o| (body, corner + o))).collect())
 }
 
-/// The cells packed each on its own: under a skyline, else in rows.
-fn apart(sizes: &[(f64, f64)], bodies: &[Rect]) -> (Vec<(usize, Point)>, bool) {
-    let skyline = super::skyline::pack(sizes, bodies, GAP);
-    if skyline.1 {
+/// The cells packed each on its own: under a skyline (the last trying body `last_first`
+/// first, if any), else in rows.
+fn apart(sizes: &[(f64, f64)], bodies: &[Rect], last_first: Option<usize>) -> (Vec<(usize, Point)>, bool) {
+    let skyline = super::skyline::pack(sizes, bodies, GAP, last_first);
+    if skyline.1 || last_first.is_some() {
         return skyline;
     }
     match in_rows(sizes, bodies) {

@@ -99,11 +99,11 @@ fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec
     with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
 }
 
-/// A group drawing's length scale and its polygon's μ_P at the sizes `s`: all its cell's
-/// layout depends on besides whether it may grow.
-pub(super) fn group_scales(poly: &Polygon, inp: &ForcesInput, s: Sizes) -> (f64, f64) {
+/// A group drawing's length scale and its polygon's μ_P at the sizes `s`, its polygon's box
+/// `grown` times theirs: all its cell's layout depends on besides whether it may grow.
+pub(super) fn group_scales(poly: &Polygon, inp: &ForcesInput, s: Sizes, grown: f64) -> (f64, f64) {
     let chain_box = bbox_of(&chain(poly));
-    (s.mu_l(world_box(inp, poly)), s.round_up(chain_box.width().max(chain_box.height()) / s.poly_box))
+    (s.mu_l(world_box(inp, poly)), s.round_up(chain_box.width().max(chain_box.height()) / (s.poly_box * grown)))
 }
 
 /// A group cell's layout at its scales (see [`group_scales`]), with its width and height.

@@ -25,7 +25,7 @@ use crate::lever::analysis::ForceAnalysis;
 use crate::lever::linkage::{Mechanism, State};
 use crate::report::{AnswerKeys, Segment};
 pub use cells::CellMemo;
-use cells::{Cell, Content, Sizes, cells, pack};
+use cells::{Bodies, Cell, Content, GROWN_POLYGONS, Sizes, cells, pack};
 pub use inset::SIDE_MIN;
 use kurbo::{Point, Rect};
 
@@ -53,6 +53,10 @@ pub struct ForcesInput<'a> {
     /// Whether the cells fill the region beside the mechanism before the one below it (a
     /// side region the cells below did not need stood empty).
     pub side_first: bool,
+    /// Whether tables 3–5 go beside the mechanism where they fit there, leaving the region
+    /// below to the drawings (a kulisa's lever left the side region two-thirds empty while
+    /// the tables took the room its polygon could grow into).
+    pub tables_beside: bool,
 }
 
 /// The scales the force drawings got.
@@ -96,7 +100,7 @@ pub fn draw_forces(
     let region = main.region;
     let title = inp.words.sheet.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.words.lang));
     main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
-    let bodies = bodies(region, side.as_ref().map(|g| g.region), inp.side_first);
+    let bodies = bodies(region, side.as_ref().map(|g| g.region), (inp.side_first, inp.tables_beside));
     let arranged = larger_lever(inp, &bodies, finer(inp, &bodies, arrange(inp, &bodies, DRAWN, SHRINK_TRIES)));
     let (cells, at, _, _) = larger_drawings(inp, &bodies, larger_loads(inp, &bodies, arranged));
     let mut scales = ForceScales {
@@ -172,14 +176,17 @@ fn part_id(inp: &ForcesInput, content: &Content) -> String {
 }
 
 /// The areas the cells may use: the main region below its title, then the side region (or
-/// the side region first, `side_first`).
-fn bodies(main: Rect, side: Option<Rect>, side_first: bool) -> Vec<Rect> {
-    let mut out = vec![Rect::new(main.x0, main.y0 + 10.0, main.x1, main.y1)];
-    out.extend(side);
+/// the side region first, `side_first`); with `tables_beside`, tables 3–5 try the side
+/// region first whatever the drawings do.
+fn bodies(main: Rect, side: Option<Rect>, (side_first, tables_beside): (bool, bool)) -> Bodies {
+    let mut rects = vec![Rect::new(main.x0, main.y0 + 10.0, main.x1, main.y1)];
+    rects.extend(side);
+    let side_at = (rects.len() == 2).then_some(1);
     if side_first {
-        out.reverse();
+        rects.reverse();
     }
-    out
+    let tables_first = if tables_beside && !side_first { side_at } else { None };
+    Bodies { rects, tables_first, beside: tables_beside }
 }
 
 /// How many times the drawings may shrink by 10 % to fit; a region that needs more than
@@ -197,6 +204,7 @@ const COMFORTABLE_START: Sizes = Sizes {
     lever_fine: false,
     grow: 0,
     load: 1.0,
+    poly_grown: [1.0; GROWN_POLYGONS],
 };
 const DRAWN: Sizes = Sizes {
     group_box: 170.0,
@@ -207,6 +215,7 @@ const DRAWN: Sizes = Sizes {
     lever_fine: false,
     grow: 0,
     load: 1.0,
+    poly_grown: [1.0; GROWN_POLYGONS],
 };
 
 /// Cells, where they are, whether they all fit, and the sizes they were made at.
@@ -216,7 +225,7 @@ type Arranged = (Vec<Cell>, Vec<(usize, Point)>, bool, Sizes);
 /// the polygons and the lever at the finer series' scales, where those still fit: nothing
 /// else smaller. Only for drawing (the comfort test needs no more than whether the coarse
 /// cells fit).
-fn finer(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arranged) -> Arranged {
+fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -> Arranged {
     if ok {
         // The polygons' enlargements beside them (a knot of labels unread is worse than a
         // polygon a scale step smaller): every polygon's cell grown, at the finer series,
@@ -251,7 +260,7 @@ const ENLARGE_SHRINKS: usize = 8;
 /// The cells at `sizes` with the polygons' short sides enlarged beside them, if they pack:
 /// every polygon's cell grown, at the finer series, else at the coarse; else one polygon's
 /// cell grown after another while the cells still pack.
-fn grown(inp: &ForcesInput, bodies: &[Rect], sizes: Sizes, count: usize) -> Option<Arranged> {
+fn grown(inp: &ForcesInput, bodies: &Bodies, sizes: Sizes, count: usize) -> Option<Arranged> {
     let fine = Sizes { fine: true, ..sizes };
     for s in [fine, sizes] {
         let all = Sizes { grow: (1u64 << count) - 1, ..s };
@@ -287,7 +296,7 @@ const LEVER_LARGEST: f64 = 200.0;
 /// from [`LEVER_LARGEST`] down to the one it got, at the finer series' scales (the lever's
 /// sides are the arms its forces are read by; the knot of a dozen arrows round p, b and s4
 /// at the coarse scale is what a teacher marks down).
-fn larger_lever(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arranged) -> Arranged {
+fn larger_lever(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -> Arranged {
     if ok {
         let mut lever_box = LEVER_LARGEST;
         while lever_box > sizes.lever_box {
@@ -307,7 +316,7 @@ const LOAD_GROWN: [f64; 4] = [1.6, 1.45, 1.3, 1.15];
 
 /// A fitting arrangement with the load diagrams as large as the cells still pack (up to
 /// [`LOAD_GROWN`]'s first): last, so that nothing read by a ruler is smaller for them.
-fn larger_loads(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arranged) -> Arranged {
+fn larger_loads(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -> Arranged {
     if ok && !inp.fa.model.loads.is_empty() {
         for load in LOAD_GROWN {
             let tried = Sizes { load, ..sizes };
@@ -323,24 +332,44 @@ fn larger_loads(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arra
 /// How many times their boxes the group drawings and the polygons are tried at, largest
 /// first, both together and then the polygons alone.
 const DRAWINGS_GROWN: [f64; 5] = [1.8, 1.6, 1.4, 1.25, 1.12];
+/// How many times its box one polygon is tried at, beyond what they all got, largest first.
+const POLYGON_GROWN: [f64; 7] = [2.5, 2.2, 1.9, 1.6, 1.4, 1.25, 1.12];
 
 /// A fitting arrangement with the group drawings and their polygons as large as the cells
-/// still pack: last, after the lever and the load diagrams. Larger polygons are not always
-/// a fuller sheet (a thin triangle's inside is empty paper too), so the sheet composes
-/// with and without and measures which leaves less empty.
-fn larger_drawings(inp: &ForcesInput, bodies: &[Rect], (cells, at, ok, sizes): Arranged) -> Arranged {
-    if ok && inp.grow_drawings {
-        let both =
-            DRAWINGS_GROWN.map(|f| Sizes { group_box: sizes.group_box * f, poly_box: sizes.poly_box * f, ..sizes });
-        let polygons = DRAWINGS_GROWN.map(|f| Sizes { poly_box: sizes.poly_box * f, ..sizes });
-        for tried in both.into_iter().chain(polygons) {
-            let tried_cells = self::cells::cells(inp, tried);
-            if let (tried_at, true) = pack(&tried_cells, bodies) {
-                return (tried_cells, tried_at, true, tried);
-            }
+/// still pack: last, after the lever and the load diagrams — both together, else the
+/// polygons alone; then, where the tables go beside the mechanism, each polygon in turn larger still where the cells pack (a tall polygon may grow down into room its
+/// wide neighbour's growth would overflow). Larger
+/// polygons are not always a fuller sheet (a thin triangle's inside is empty paper too), so
+/// the sheet composes with and without and measures which leaves less empty.
+fn larger_drawings(inp: &ForcesInput, bodies: &Bodies, arranged: Arranged) -> Arranged {
+    let (cells, at, ok, sizes) = arranged;
+    if !(ok && inp.grow_drawings) {
+        return (cells, at, ok, sizes);
+    }
+    let both = DRAWINGS_GROWN.map(|f| Sizes { group_box: sizes.group_box * f, poly_box: sizes.poly_box * f, ..sizes });
+    let polygons = DRAWINGS_GROWN.map(|f| Sizes { poly_box: sizes.poly_box * f, ..sizes });
+    let packed = |tried: Sizes| {
+        let tried_cells = self::cells::cells(inp, tried);
+        let (tried_at, fits) = pack(&tried_cells, bodies);
+        fits.then_some((tried_cells, tried_at, true, tried))
+    };
+    let mut out = both.into_iter().chain(polygons).find_map(packed).unwrap_or((cells, at, ok, sizes));
+    let one_by_one = if bodies.beside { inp.fa.forces.polygons.len().min(GROWN_POLYGONS) } else { 0 };
+    for i in 0..one_by_one {
+        let base = out.3;
+        // At the finer series too: the course's steps up to 2× skip the size that fits.
+        let each = [true, base.fine].map(|fine| {
+            POLYGON_GROWN.map(|f| {
+                let mut poly_grown = base.poly_grown;
+                poly_grown[i] *= f;
+                Sizes { poly_grown, fine, ..base }
+            })
+        });
+        if let Some(grown) = each.into_iter().flatten().find_map(packed) {
+            out = grown;
         }
     }
-    (cells, at, ok, sizes)
+    out
 }
 
 /// Whether any polygon labels a side shorter than [`SIDE_MIN`] on itself.
@@ -361,7 +390,7 @@ fn enlarged(cells: &[Cell]) -> bool {
 /// Cells packed into the bodies, shrinking the drawings up to `tries − 1` times until they
 /// fit; the last attempt is returned even if it does not (the layout measurement then
 /// reports it), with whether it fits.
-fn arrange(inp: &ForcesInput, bodies: &[Rect], start: Sizes, tries: usize) -> Arranged {
+fn arrange(inp: &ForcesInput, bodies: &Bodies, start: Sizes, tries: usize) -> Arranged {
     let widest = inp
         .fa
         .forces
@@ -386,5 +415,5 @@ fn arrange(inp: &ForcesInput, bodies: &[Rect], start: Sizes, tries: usize) -> Ar
 /// Whether the force drawings fit the main region (and the side region, if any) without
 /// being cramped.
 pub fn fit_comfortably(inp: &ForcesInput, main: Rect, side: Option<Rect>) -> bool {
-    arrange(inp, &bodies(main, side, false), COMFORTABLE_START, COMFORTABLE + 1).2
+    arrange(inp, &bodies(main, side, (false, false)), COMFORTABLE_START, COMFORTABLE + 1).2
 }

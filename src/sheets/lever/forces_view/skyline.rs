@@ -51,15 +51,22 @@ impl Skyline {
     }
 }
 
-/// Places cells (`w`, `h`) bottom-left into the bodies, each into the first body it fits,
-/// `gap` apart. Returns each cell's body and corner, and whether all fit (a cell that fits
+/// Places cells (`w`, `h`) bottom-left into the bodies, each into the first body it fits
+/// (the last cell into body `last_first` first, if any), `gap` apart. Returns each cell's body and corner, and whether all fit (a cell that fits
 /// nowhere overflows the first body, under its lowest step).
-pub(super) fn pack(cells: &[(f64, f64)], bodies: &[Rect], gap: f64) -> (Vec<(usize, Point)>, bool) {
+pub(super) fn pack(
+    cells: &[(f64, f64)],
+    bodies: &[Rect],
+    gap: f64,
+    last_first: Option<usize>,
+) -> (Vec<(usize, Point)>, bool) {
     let mut skylines: Vec<Skyline> = bodies.iter().map(|&b| Skyline::new(b)).collect();
     let mut out = Vec::new();
     let mut all = true;
-    for &(w, h) in cells {
-        let found = skylines.iter().enumerate().find_map(|(i, s)| s.spot(w, h).map(|p| (i, p)));
+    for (k, &(w, h)) in cells.iter().enumerate() {
+        let first = last_first.filter(|_| k + 1 == cells.len());
+        let order = first.into_iter().chain((0..skylines.len()).filter(|&i| Some(i) != first));
+        let found = order.into_iter().find_map(|i| skylines[i].spot(w, h).map(|p| (i, p)));
         let (i, at) = found.unwrap_or_else(|| {
             all = false;
             let s = &skylines[0];
@@ -79,7 +86,7 @@ mod tests {
     fn a_short_cell_goes_under_its_short_neighbour_not_below_the_tall_one() {
         let body = Rect::new(0.0, 0.0, 100.0, 100.0);
         // A tall cell on the left, a short one on the right, then one as wide as the short.
-        let (at, all) = pack(&[(50.0, 90.0), (40.0, 20.0), (40.0, 30.0)], &[body], 5.0);
+        let (at, all) = pack(&[(50.0, 90.0), (40.0, 20.0), (40.0, 30.0)], &[body], 5.0, None);
         assert!(all);
         assert_eq!(at[0].1, Point::new(0.0, 0.0));
         assert_eq!(at[1].1, Point::new(55.0, 0.0));
@@ -89,7 +96,7 @@ mod tests {
     #[test]
     fn a_cell_spanning_steps_sits_below_the_lowest() {
         let body = Rect::new(0.0, 0.0, 100.0, 100.0);
-        let (at, all) = pack(&[(30.0, 40.0), (30.0, 10.0), (80.0, 20.0)], &[body], 0.0);
+        let (at, all) = pack(&[(30.0, 40.0), (30.0, 10.0), (80.0, 20.0)], &[body], 0.0, None);
         assert!(all);
         assert_eq!(at[2].1, Point::new(0.0, 40.0));
     }
@@ -97,9 +104,21 @@ mod tests {
     #[test]
     fn what_fits_nowhere_overflows_the_first_body_and_says_so() {
         let bodies = [Rect::new(0.0, 0.0, 50.0, 50.0), Rect::new(60.0, 0.0, 90.0, 30.0)];
-        let (at, all) = pack(&[(40.0, 40.0), (20.0, 20.0), (45.0, 45.0)], &bodies, 2.0);
+        let (at, all) = pack(&[(40.0, 40.0), (20.0, 20.0), (45.0, 45.0)], &bodies, 2.0, None);
         assert!(!all);
         assert_eq!(at[1].0, 1);
         assert_eq!(at[2], (0, Point::new(0.0, 42.0)));
+    }
+
+    #[test]
+    fn the_last_cell_tries_the_body_it_prefers_first() {
+        let bodies = [Rect::new(0.0, 0.0, 100.0, 100.0), Rect::new(200.0, 0.0, 260.0, 100.0)];
+        let (at, all) = pack(&[(40.0, 40.0), (50.0, 30.0)], &bodies, 2.0, Some(1));
+        assert!(all);
+        assert_eq!(at[0].0, 0, "the first cell keeps the bodies' order");
+        assert_eq!(at[1], (1, Point::new(200.0, 0.0)));
+        // Where it does not fit there, the bodies' order.
+        let (at, _) = pack(&[(40.0, 40.0), (70.0, 30.0)], &bodies, 2.0, Some(1));
+        assert_eq!(at[1].0, 0);
     }
 }
