@@ -35,6 +35,23 @@ pub fn scientific(x: f64, lang: Language) -> String {
     format!("{}·10{sign}{exp}", localise(&format!("{mantissa:.1}"), lang))
 }
 
+/// The least of 1, 2, 5 times a power of ten above `x` (> 0): a bound a reader takes in at
+/// a glance, where the measured value's digits say nothing a drawing can show ("within
+/// 0,5 µm", not "0,3357 µm").
+pub fn bound_above(x: f64, lang: Language) -> String {
+    let x = x.abs().max(f64::MIN_POSITIVE);
+    let e = math::log10(x).floor() as i32;
+    let bound =
+        [1.0, 2.0, 5.0, 10.0].into_iter().map(|m| m * 10f64.powi(e)).find(|&b| b > x).unwrap_or(10.0 * 10f64.powi(e));
+    value(bound, lang).trim_end_matches('0').trim_end_matches([',', '.']).to_string()
+}
+
+/// A relative difference in per cent as a drawing reports it: two decimals, or "< 0,01"
+/// where it is smaller (a drawing is read to 0,1 mm; 1,1·10⁻⁴ % says nothing more).
+pub fn percent_difference(d: f64, lang: Language) -> String {
+    if d.abs() < 0.01 { localise("< 0.01", lang) } else { localise(&format!("{d:.2}"), lang) }
+}
+
 /// A number written by Rust, as the sheet prints it: the decimal point for the language and
 /// a true minus sign.
 pub fn localise(s: &str, lang: Language) -> String {
@@ -63,5 +80,27 @@ mod tests {
         assert_eq!(scientific(-250.0, Language::En), "−2.5·10²");
         assert_eq!(value(-4600.0, Language::Ru), "−4600");
         assert_eq!(scientific(0.0, Language::En), "0");
+    }
+}
+
+#[cfg(test)]
+mod bound_tests {
+    use super::*;
+
+    #[test]
+    fn a_bound_above_is_the_next_one_two_or_five() {
+        let en = Language::En;
+        assert_eq!(bound_above(0.3357, en), "0.5");
+        assert_eq!(bound_above(0.5115, en), "1");
+        assert_eq!(bound_above(0.5, en), "1");
+        assert_eq!(bound_above(0.12, en), "0.2");
+        assert_eq!(bound_above(3.0, Language::Ru), "5");
+        assert_eq!(bound_above(0.0004, Language::Uz), "0,0005");
+    }
+
+    #[test]
+    fn a_tiny_difference_is_under_a_hundredth_of_a_percent() {
+        assert_eq!(percent_difference(1.1e-4, Language::Ru), "< 0,01");
+        assert_eq!(percent_difference(-0.384, Language::En), "-0.38".replace('-', "−"));
     }
 }

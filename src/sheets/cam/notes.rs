@@ -33,7 +33,7 @@ pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, words: &C
         let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
         out.push(if rocker { l.knife_note_rocker() } else { l.knife_note() }.to_string());
     } else {
-        out.push(l.profile_note(&fmt::value(deviation * 1e6, lang)));
+        out.push(l.profile_note(&fmt::bound_above(deviation * 1e6, lang)));
     }
     for w in &d.warnings {
         if let CamWarning::RollerBelowCourse { r, rho_min, .. } = w {

@@ -30,7 +30,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 const CELL: f64 = 4.0;
 const MIN_ROOM: (f64, f64) = (100.0, 70.0);
 /// The least pitch of the rack on paper, mm: smaller, its rounds and dimensions crowd.
-const MIN_PITCH_MM: f64 = 12.0;
+const MIN_PITCH_MM: f64 = 15.0;
 /// Paper mm round the picture: the title's two lines and the legend of the datum and
 /// rolling lines above (a name at a line's end took more width than the rack), the pitch's
 /// dimension over the rack, margins either side (the x·m dimension's value left), below.
@@ -59,7 +59,9 @@ struct Extent {
     wheel: usize,
 }
 
-fn extent(pair: &Pair, wheel: usize, c: &Cutter, o: &Outline) -> Option<Extent> {
+/// The picture's extent, with the wheel's centre where `centre` allows and the wheel is
+/// small enough for it.
+fn extent(pair: &Pair, wheel: usize, c: &Cutter, o: &Outline, centre: bool) -> Option<Extent> {
     let w = &pair.wheels[wheel];
     let (a, p, m) = (c.alpha, c.pitch, pair.spec.module);
     let n_x = w.pitch * sin(a) * cos(a);
@@ -69,7 +71,7 @@ fn extent(pair: &Pair, wheel: usize, c: &Cutter, o: &Outline) -> Option<Extent> 
     }
     let half = (f64::from(teeth) + 0.5) * p;
     // The wheel's centre where the picture is not then much taller than wide.
-    let with_centre = w.pitch <= 1.5 * half;
+    let with_centre = centre && w.pitch <= 1.5 * half;
     let step = 2.0 * PI / f64::from(w.z);
     let centres: Vec<f64> = (-teeth..teeth)
         .map(|j| FRAC_PI_2 + (f64::from(j) + 0.5) * step)
@@ -108,20 +110,33 @@ pub(super) fn draw(
     words: &GearWords,
 ) -> Option<Group> {
     let c = Cutter::of(&pair.spec, &pair.wheels[wheel]);
-    let e = extent(pair, wheel, &c, o)?;
     let value_room = if c.datum.abs() > 1e-12 { shift_text(&c, words).width(3.5) + 4.0 } else { 0.0 };
-    [value_room.max(SHIFT_ARROWS), SHIFT_ARROWS]
-        .into_iter()
-        .find_map(|left| attempt(obstacles, area, pair, o, words, (&c, &e), SIDE + left))
+    // The whole small wheel where that leaves its teeth large enough to read (at 1:1 its
+    // x·m of a millimetre and the labels at P piled up), else its teeth by the rack alone.
+    let centred = extent(pair, wheel, &c, o, true)?;
+    let tries = match centred.with_centre {
+        true => vec![(centred, READABLE_PITCH_MM), (extent(pair, wheel, &c, o, false)?, MIN_PITCH_MM)],
+        false => vec![(centred, MIN_PITCH_MM)],
+    };
+    tries.iter().find_map(|(e, least_pitch)| {
+        [value_room.max(SHIFT_ARROWS), SHIFT_ARROWS]
+            .into_iter()
+            .find_map(|left| attempt(obstacles, area, pair, o, words, (&c, e), (SIDE + left, *least_pitch)))
+    })
 }
+
+/// The least pitch of the rack on paper where the whole wheel is drawn, mm.
+const READABLE_PITCH_MM: f64 = 20.0;
 
 /// Room left of the lines for the x·m dimension's arrows, mm.
 const SHIFT_ARROWS: f64 = 4.0;
 /// The room's own margin inside the free cells, mm.
 const PAD: f64 = 2.0;
+/// The frame's inset from the room's edge, mm.
+const FRAME_IN: f64 = 0.5;
 
 /// The picture with `left` mm kept left of its lines, where it fits at a pitch of at least
-/// [`MIN_PITCH_MM`] and every label finds a spot.
+/// `least_pitch` mm and every label finds a spot.
 fn attempt(
     obstacles: &Obstacles,
     area: Rect,
@@ -129,7 +144,7 @@ fn attempt(
     o: &Outline,
     words: &GearWords,
     (c, e): (&Cutter, &Extent),
-    left: f64,
+    (left, least_pitch): (f64, f64),
 ) -> Option<Group> {
     let names = line_names(c, words);
     let l = words.sheet;
@@ -145,12 +160,20 @@ fn attempt(
     let cells = super::room::largest(obstacles, area, CELL, least, fit)?;
     let mu = scale::length_scale(1.0 / fit(cells.width(), cells.height()));
     let room = cells.inset(-PAD);
-    if c.pitch / mu < MIN_PITCH_MM {
+    if c.pitch / mu < least_pitch {
         return None;
     }
     let pic = Rect::new(room.x0 + left, room.y0 + head + OVER, room.x1 - SIDE, room.y1 - BELOW);
     let v = View::centred(e.world, pic, mu);
     let mut g = Group::new(format!("generation{n}"), room);
+    // Framed: drawn in a room among the mesh's arcs, its own r, r_b, r_a, r_f circles would
+    // read as theirs.
+    let f = room.inflate(-FRAME_IN, -FRAME_IN);
+    g.path(
+        vec![Point::new(f.x0, f.y0), Point::new(f.x1, f.y0), Point::new(f.x1, f.y1), Point::new(f.x0, f.y1)],
+        true,
+        THIN,
+    );
     g.text(Text::new(Point::new(room.x0 + 2.0, room.y0 + 5.0), l.generation_title(&n), 3.5, Anchor::Start));
     let sc = l.scale(&fmt::localise(&scale::ratio(mu), words.lang));
     g.text(Text::new(Point::new(room.x0 + 2.0, room.y0 + 10.0), sc, 2.5, Anchor::Start));

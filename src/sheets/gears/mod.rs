@@ -226,8 +226,8 @@ fn mesh_group(
     let head = [
         l.scale(&fmt::localise(&scale::ratio(drawn.mu), lang)),
         l.contact_ratio_exact(&eps(p.pair.contact_ratio, lang)),
-        l.contact_ratio_drawn(&eps(drawn.contact_ratio_drawn, lang), &fmt::scientific(diff, lang)),
-        l.involute_note(&fmt::value(drawn.involute_deviation * 1e6, lang)),
+        l.contact_ratio_drawn(&eps(drawn.contact_ratio_drawn, lang), &fmt::percent_difference(diff, lang)),
+        l.involute_note(&fmt::bound_above(drawn.involute_deviation * 1e6, lang)),
     ];
     for n in head.iter().chain(&notes) {
         y = paragraph(&mut mesh, Point::new(region.x0 + 2.0, y), &wrapped(n), CELL_TEXT, Anchor::Start) + 0.5;

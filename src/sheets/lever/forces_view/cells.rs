@@ -219,9 +219,9 @@ fn together(cells: &[Cell], sizes: &[(f64, f64)], bodies: &Bodies) -> Option<Vec
     arrangements.push(stacked);
     let packed = |rows: &Vec<Vec<usize>>| with_tables_together(sizes, first, rows, bodies);
     // In the body the tables try first if any arrangement lands there, else wherever.
-    let preferred = bodies.tables_first.and_then(|k| {
-        arrangements.iter().filter_map(&packed).find(|at| at.last().is_some_and(|&(b, _)| b == k))
-    });
+    let preferred = bodies
+        .tables_first
+        .and_then(|k| arrangements.iter().filter_map(&packed).find(|at| at.last().is_some_and(|&(b, _)| b == k)));
     preferred.or_else(|| arrangements.iter().find_map(packed))
 }
 
