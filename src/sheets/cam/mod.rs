@@ -318,9 +318,9 @@ fn build_at(
     shorter.sort_by(f64::total_cmp);
     shorter.dedup();
     let plans: Vec<diagrams::Plan> = shorter.iter().map(|&s| shorter_plan(p, &column, s)).collect();
-    // The nomogram in the plans' finer series, unless its labels then find no clean spot
-    // (a tall, narrow nomogram beside the profile leaves r_min's label no room): then in the
-    // coarse one, as large as the sheet allowed before the finer series.
+    // The nomogram at the largest GOST scale that fits, unless its labels then find no clean
+    // spot (a tall, narrow nomogram beside the profile leaves r_min's label no room): then a
+    // GOST scale coarser.
     let mut fine = true;
     let (lay, (law, rest), nm, pv, prof, large_differs) = loop {
         let views = Views {
@@ -334,7 +334,7 @@ fn build_at(
                 extent: prepared.profile_extent,
                 reach: Vec::new(),
                 heading_w: heading_w(l.profile_title()),
-                fine: false,
+                fine: true,
             },
         };
         let arranged = |plan: &diagrams::Plan, t: &Lettered| {
