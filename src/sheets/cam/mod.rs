@@ -32,7 +32,7 @@ use crate::report::{AnswerKeys, NoteTable};
 use kurbo::{Point, Rect, Vec2};
 use labels::CamWords;
 use nomogram::Placement;
-use regions::{COLUMN_WIDTHS, ColumnWidth, Content, Regions, SHEET, ViewSize, view_area};
+use regions::{COLUMN_WIDTHS, ColumnWidth, Content, Regions, SHEET, TABLE_GAP, ViewSize, view_area};
 use view_heading::{heading_w, scale_note, view_group};
 
 /// This sheet's place in the course.
@@ -449,8 +449,10 @@ fn diagrams_group(
 /// all) in the strip.
 fn table_groups(lay: &Regions, law: Vec<Table>, rest: Vec<Table>) -> Vec<Group> {
     match lay.law_tables {
-        Some(r) => vec![table::flow("law-tables", law, r, 3.0), table::flow("tables", rest, lay.tables, 3.0)],
-        None => vec![table::flow("tables", law.into_iter().chain(rest), lay.tables, 3.0)],
+        Some(r) => {
+            vec![table::flow("law-tables", law, r, TABLE_GAP), table::flow("tables", rest, lay.tables, TABLE_GAP)]
+        }
+        None => vec![table::flow("tables", law.into_iter().chain(rest), lay.tables, TABLE_GAP)],
     }
 }
 

@@ -26,6 +26,9 @@ pub const COLUMN_WIDTHS: [ColumnWidth; 2] =
     [ColumnWidth { left: 320.0, phi: 240.0 }, ColumnWidth { left: 400.0, phi: 300.0 }];
 /// Between regions, mm.
 const GAP: f64 = 6.0;
+/// Between tables stacked in a region, mm: 3 mm left a table's grid all but touching the
+/// next one's title under it.
+pub const TABLE_GAP: f64 = 5.0;
 /// Room a view needs besides its drawing: its title and its scale above, its margins.
 const VIEW_TOP: f64 = 15.0;
 const VIEW_BOTTOM: f64 = 3.0;
@@ -129,7 +132,7 @@ impl Frame {
     /// The strip for tables of `sizes` left of the title block, as low as fits.
     fn strip(&self, sizes: &[(f64, f64)]) -> Rect {
         let tb = frame::title_block_rect();
-        let h = table::flow_height(sizes, tb.x0 - GAP - self.right_x, 3.0).unwrap_or(SHEET.height() / 2.0);
+        let h = table::flow_height(sizes, tb.x0 - GAP - self.right_x, TABLE_GAP).unwrap_or(SHEET.height() / 2.0);
         Rect::new(self.right_x, SHEET.y1 - h, tb.x0 - GAP, SHEET.y1)
     }
 
@@ -143,7 +146,8 @@ impl Regions {
     /// Whether the tables fit the regions left for them: the law's each as wide as the
     /// column at most where they go under it, the rest (or all) flowed into the strip.
     pub fn tables_fit(&self, law: &[Size], rest: &[Size]) -> bool {
-        let flows = |ts: &[Size], r: Rect| table::flow_height(ts, r.width(), 3.0).is_some_and(|h| h <= r.height());
+        let flows =
+            |ts: &[Size], r: Rect| table::flow_height(ts, r.width(), TABLE_GAP).is_some_and(|h| h <= r.height());
         match self.law_tables {
             Some(col) => law.iter().all(|s| s.0 <= col.width()) && flows(rest, self.tables),
             None => flows(&[law, rest].concat(), self.tables),
@@ -178,8 +182,8 @@ fn grown(r: Rect, others: &[Rect]) -> Rect {
 /// The height the law's tables take under a column `width` wide, with the gap above them,
 /// mm: flowed in columns (side by side where the column is wide enough), else stacked.
 pub fn law_height(law: &[Size], width: f64) -> f64 {
-    let stacked = law.iter().map(|s| s.1 + 3.0).sum::<f64>();
-    table::flow_height(law, width, 3.0).map_or(stacked, |h| h.min(stacked)) + GAP
+    let stacked = law.iter().map(|s| s.1 + TABLE_GAP).sum::<f64>();
+    table::flow_height(law, width, TABLE_GAP).map_or(stacked, |h| h.min(stacked)) + GAP
 }
 
 /// The height the column's diagrams `width` wide (with the column's margins) may take with
