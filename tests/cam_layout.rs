@@ -45,3 +45,28 @@ fn sheet_3_is_at_most_half_empty_and_clean_on_every_cam_fixture_in_every_languag
     }
     assert!(failures.is_empty(), "{failures:#?}");
 }
+
+/// The nomogram (r_min is read off it in mm) and the profile are length drawings: each is at
+/// a GOST 2.302 scale on every cam fixture and the worked example in every language. The
+/// nomogram took the plans' finer series: the worked example's was 0.00075 m/mm (en, uz) and
+/// 0.00125 m/mm (ru), custom-laws' 0.0006 m/mm.
+#[test]
+fn sheet_3_draws_its_nomogram_and_profile_at_gost_scales() {
+    use tmm_sheets::drawing::scale;
+    let gost = |mu: f64| scale::length_scales().any(|s| (s / mu - 1.0).abs() < 1e-9);
+    let mut failures = Vec::new();
+    for (name, text) in cam_projects() {
+        for lang in Language::ALL {
+            let mut p = pipeline::load(&text).unwrap();
+            p.info.language = lang;
+            let b = pipeline::build(&p, &[3]).unwrap_or_else(|e| panic!("{name} {lang:?}: {e:#}")).remove(0);
+            for key in ["nomogram_mu", "profile_mu_l"] {
+                let mu = b.output.results[key].as_f64().unwrap_or_else(|| panic!("{name}: no {key}"));
+                if !gost(mu) {
+                    failures.push(format!("{name} {lang:?}: {key} = {mu} m/mm"));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}

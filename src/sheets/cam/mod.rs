@@ -32,7 +32,7 @@ use crate::report::{AnswerKeys, NoteTable};
 use kurbo::{Point, Rect, Vec2};
 use labels::CamWords;
 use nomogram::Placement;
-use regions::{COLUMN_WIDTHS, ColumnWidth, Content, Regions, SHEET, ViewSize, view_area};
+use regions::{COLUMN_WIDTHS, ColumnWidth, Content, Regions, SHEET, TABLE_GAP, ViewSize, view_area};
 use view_heading::{heading_w, scale_note, view_group};
 
 /// This sheet's place in the course.
@@ -318,9 +318,9 @@ fn build_at(
     shorter.sort_by(f64::total_cmp);
     shorter.dedup();
     let plans: Vec<diagrams::Plan> = shorter.iter().map(|&s| shorter_plan(p, &column, s)).collect();
-    // The nomogram in the plans' finer series, unless its labels then find no clean spot
-    // (a tall, narrow nomogram beside the profile leaves r_min's label no room): then in the
-    // coarse one, as large as the sheet allowed before the finer series.
+    // The nomogram at the largest GOST scale that fits, unless its labels then find no clean
+    // spot (a tall, narrow nomogram beside the profile leaves r_min's label no room): then a
+    // GOST scale coarser.
     let mut fine = true;
     let (lay, (law, rest), nm, pv, prof, large_differs) = loop {
         let views = Views {
@@ -334,7 +334,7 @@ fn build_at(
                 extent: prepared.profile_extent,
                 reach: Vec::new(),
                 heading_w: heading_w(l.profile_title()),
-                fine: false,
+                fine: true,
             },
         };
         let arranged = |plan: &diagrams::Plan, t: &Lettered| {
@@ -449,8 +449,10 @@ fn diagrams_group(
 /// all) in the strip.
 fn table_groups(lay: &Regions, law: Vec<Table>, rest: Vec<Table>) -> Vec<Group> {
     match lay.law_tables {
-        Some(r) => vec![table::flow("law-tables", law, r, 3.0), table::flow("tables", rest, lay.tables, 3.0)],
-        None => vec![table::flow("tables", law.into_iter().chain(rest), lay.tables, 3.0)],
+        Some(r) => {
+            vec![table::flow("law-tables", law, r, TABLE_GAP), table::flow("tables", rest, lay.tables, TABLE_GAP)]
+        }
+        None => vec![table::flow("tables", law.into_iter().chain(rest), lay.tables, TABLE_GAP)],
     }
 }
 

@@ -56,6 +56,11 @@ const ANGLE_MARK_MM: f64 = 10.0;
 const BOUNDARY_POINTS: usize = 240;
 const HATCH_STEP_MM: f64 = 2.5;
 const ON_LINE_MM: f64 = 0.3;
+/// The labels keep out of discs this large (mm) set this far into the zone from each of the
+/// boundary's points: the strokes reach 0.9·step/√2 ≈ 1.6 mm across the boundary, so the
+/// discs keep letters about 1.5 mm off the line and the tips.
+const BAND_CENTRE_MM: f64 = 0.8;
+const BAND_KEEP_MM: f64 = 2.3;
 /// The point the zone's name points at stays this far inside the picture, mm.
 const ZONE_NAME_INSET_MM: f64 = 4.0;
 
@@ -194,7 +199,7 @@ pub fn draw(g: &mut Group, at: &Placement, d: &Design, phis: &[f64], labels: &mu
         g.path(pts, false, MAIN);
     }
     let limiting = draw_limiting_lines(g, labels, view, at.extent, d, words);
-    draw_zone_boundary(g, view, at.extent, d, &limiting);
+    draw_zone_boundary(g, labels, view, at.extent, d, &limiting);
     labels.add_text_ranked(view.p(zone_anchor(d, at.extent, at.mu)), Vec2::ZERO, words.sheet.zone(), 2.5, 3);
     draw_centre(g, labels, view, d, words);
 }
@@ -282,8 +287,17 @@ fn draw_limiting_lines(
 }
 
 /// The zone's exact boundary across the picture, hatched on the zone's side; dashed where
-/// it does not run along a limiting line.
-fn draw_zone_boundary(g: &mut Group, view: View, (lo, hi): (Vec2, Vec2), d: &Design, limiting: &[Line]) {
+/// it does not run along a limiting line. The hatched band is kept out of every label: the
+/// placer sees only the strokes, so a label fitted between their tips (the zone's name in
+/// ru, "e = …" over the boundary's dashes) read as written over the hatching.
+fn draw_zone_boundary(
+    g: &mut Group,
+    labels: &mut Labels,
+    view: View,
+    (lo, hi): (Vec2, Vec2),
+    d: &Design,
+    limiting: &[Line],
+) {
     let r = &d.region;
     let paper = |v: Vec2| (view.p(v) - view.p(Vec2::ZERO)).unit();
     let span = (hi - lo).norm();
@@ -296,6 +310,11 @@ fn draw_zone_boundary(g: &mut Group, view: View, (lo, hi): (Vec2, Vec2), d: &Des
         .map(|p| view.p(p))
         .collect();
     hatch_along(g, &boundary, paper(r.d), HATCH_STEP_MM);
+    // Discs along the band, centred BAND_CENTRE_MM into the zone: they reach past the
+    // boundary and the strokes' tips on either side.
+    for p in &boundary {
+        labels.keep_out(*p + paper(r.d) * BAND_CENTRE_MM, BAND_KEEP_MM);
+    }
     let on_limiting = |p: &Point| limiting.iter().any(|l| l.nearest(*p, 0.0).distance_sq < ON_LINE_MM * ON_LINE_MM);
     for run in boundary.split(on_limiting).filter(|run| run.len() >= 2) {
         g.path(run.to_vec(), false, DASHED);

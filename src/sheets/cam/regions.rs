@@ -26,6 +26,9 @@ pub const COLUMN_WIDTHS: [ColumnWidth; 2] =
     [ColumnWidth { left: 320.0, phi: 240.0 }, ColumnWidth { left: 400.0, phi: 300.0 }];
 /// Between regions, mm.
 const GAP: f64 = 6.0;
+/// Between tables stacked in a region, mm: 3 mm left a table's grid all but touching the
+/// next one's title under it.
+pub const TABLE_GAP: f64 = 5.0;
 /// Room a view needs besides its drawing: its title and its scale above, its margins.
 const VIEW_TOP: f64 = 15.0;
 const VIEW_BOTTOM: f64 = 3.0;
@@ -64,8 +67,9 @@ pub struct ViewSize {
     /// offset at the view's scale must be inside the view's box too.
     pub reach: Vec<(Vec2, Vec2)>,
     pub heading_w: f64,
-    /// Scaled in the plans' finer round series (a nomogram up to 1.33 times larger), else
-    /// in the coarse one (its labels' room the wider).
+    /// Scaled at the largest GOST 2.302 scale that fits, else a GOST scale coarser (its
+    /// labels' room the wider). Both views are length drawings (r_min is read off the
+    /// nomogram in mm), so neither takes the plans' or the diagrams' round series.
     pub fine: bool,
 }
 
@@ -128,7 +132,7 @@ impl Frame {
     /// The strip for tables of `sizes` left of the title block, as low as fits.
     fn strip(&self, sizes: &[(f64, f64)]) -> Rect {
         let tb = frame::title_block_rect();
-        let h = table::flow_height(sizes, tb.x0 - GAP - self.right_x, 3.0).unwrap_or(SHEET.height() / 2.0);
+        let h = table::flow_height(sizes, tb.x0 - GAP - self.right_x, TABLE_GAP).unwrap_or(SHEET.height() / 2.0);
         Rect::new(self.right_x, SHEET.y1 - h, tb.x0 - GAP, SHEET.y1)
     }
 
@@ -142,7 +146,8 @@ impl Regions {
     /// Whether the tables fit the regions left for them: the law's each as wide as the
     /// column at most where they go under it, the rest (or all) flowed into the strip.
     pub fn tables_fit(&self, law: &[Size], rest: &[Size]) -> bool {
-        let flows = |ts: &[Size], r: Rect| table::flow_height(ts, r.width(), 3.0).is_some_and(|h| h <= r.height());
+        let flows =
+            |ts: &[Size], r: Rect| table::flow_height(ts, r.width(), TABLE_GAP).is_some_and(|h| h <= r.height());
         match self.law_tables {
             Some(col) => law.iter().all(|s| s.0 <= col.width()) && flows(rest, self.tables),
             None => flows(&[law, rest].concat(), self.tables),
@@ -177,8 +182,8 @@ fn grown(r: Rect, others: &[Rect]) -> Rect {
 /// The height the law's tables take under a column `width` wide, with the gap above them,
 /// mm: flowed in columns (side by side where the column is wide enough), else stacked.
 pub fn law_height(law: &[Size], width: f64) -> f64 {
-    let stacked = law.iter().map(|s| s.1 + 3.0).sum::<f64>();
-    table::flow_height(law, width, 3.0).map_or(stacked, |h| h.min(stacked)) + GAP
+    let stacked = law.iter().map(|s| s.1 + TABLE_GAP).sum::<f64>();
+    table::flow_height(law, width, TABLE_GAP).map_or(stacked, |h| h.min(stacked)) + GAP
 }
 
 /// The height the column's diagrams `width` wide (with the column's margins) may take with
@@ -289,9 +294,9 @@ fn nomogram_in_column(c: &Content, f: &Frame) -> Option<Regions> {
     let tables = f.strip(&[c.law, c.rest].concat());
     let views = f.views_above(tables);
     let column = Rect::new(SHEET.x0, SHEET.y0 + f.column_used + GAP, SHEET.x0 + f.left_w, SHEET.y1);
-    let n = fit_view(&c.nomogram, column, false)
-        .filter(|(mu, _)| longer_side(c.nomogram.at(*mu), *mu) >= NOMOGRAM_MIN_MM * 0.6);
-    let p = fit_view(&c.profile, views, true);
+    let n =
+        fit_view(&c.nomogram, column).filter(|(mu, _)| longer_side(c.nomogram.at(*mu), *mu) >= NOMOGRAM_MIN_MM * 0.6);
+    let p = fit_view(&c.profile, views);
     n.zip(p).map(|((nomogram_mu, nomogram), (profile_mu, profile))| Regions {
         diagrams: Rect::new(SHEET.x0, SHEET.y0, SHEET.x0 + f.left_w, nomogram.y0 - GAP),
         law_tables: None,
@@ -382,7 +387,7 @@ fn profile_and_nomogram(
     let mut found = None;
     for mu_p in scale::length_scales() {
         let Some((_, profile)) = fit_at(p_ext, views, mu_p) else { continue };
-        let Some((mu_n, nomogram)) = fit_view(n_ext, rest(profile), false) else { continue };
+        let Some((mu_n, nomogram)) = fit_view(n_ext, rest(profile)) else { continue };
         let enough = longer_side(n_ext.at(mu_n), mu_n) >= NOMOGRAM_MIN_MM;
         if found.is_none() || enough {
             found = Some((mu_p, profile, mu_n, nomogram));
@@ -408,20 +413,17 @@ fn fit_at(view: &ViewSize, room: Rect, mu: f64) -> Option<(f64, Rect)> {
     (w <= room.width() && h <= room.height()).then(|| (mu, Rect::new(room.x0, room.y0, room.x0 + w, room.y0 + h)))
 }
 
-/// The largest scale at which a view fits `room` — a GOST one, or of the round series — and
-/// its region there.
-fn fit_view(view: &ViewSize, room: Rect, gost: bool) -> Option<(f64, Rect)> {
+/// The largest GOST 2.302 scale at which a view fits `room` (a step coarser where the view
+/// is not [`ViewSize::fine`]) and its region there.
+fn fit_view(view: &ViewSize, room: Rect) -> Option<(f64, Rect)> {
     let need = view
         .least_mu(room.width() - VIEW_SIDES, |v| v.x)
         .max(view.least_mu(room.height() - VIEW_TOP - VIEW_BOTTOM, |v| v.y));
     if !(need.is_finite() && need > 0.0) {
         return None;
     }
-    let mu = match (gost, view.fine) {
-        (true, _) => scale::length_scale(need),
-        (false, true) => scale::plan_round_up(need),
-        (false, false) => scale::round_up(need),
-    };
+    let mu = scale::length_scale(need);
+    let mu = if view.fine { mu } else { scale::length_scale(mu * 1.001) };
     fit_at(view, room, mu)
 }
 
@@ -456,22 +458,19 @@ mod tests {
             extent: (Vec2::new(-0.05, -0.02), Vec2::new(0.05, 0.08)),
             reach: Vec::new(),
             heading_w: 0.0,
-            fine: false,
+            fine: true,
         };
         let view = ViewSize { reach: vec![(Vec2::new(0.01, -0.02), Vec2::new(0.0, -30.0))], ..bare.clone() };
         let room = Rect::new(0.0, 0.0, 200.0, 70.0);
-        let (mu0, _) = fit_view(&bare, room, false).unwrap();
-        let (mu, r) = fit_view(&view, room, false).unwrap();
+        let (mu0, _) = fit_view(&bare, room).unwrap();
+        let (mu, r) = fit_view(&view, room).unwrap();
         assert!(mu > mu0, "the reach costs scale: {mu} vs {mu0}");
         let (lo, hi) = view.at(mu);
         assert!(lo.y <= -0.02 - 30.0 * mu + 1e-12, "the box holds the reach: {lo:?}");
         assert!((hi.y - lo.y) / mu + VIEW_TOP + VIEW_BOTTOM <= r.height() + 1e-9 && r.height() <= room.height());
         let titled = ViewSize { heading_w: 150.0, ..bare };
-        let (_, r) = fit_view(&titled, room, false).unwrap();
+        let (_, r) = fit_view(&titled, room).unwrap();
         assert!(r.width() >= 150.0, "{r:?}");
-        assert!(
-            fit_view(&ViewSize { heading_w: 201.0, ..titled }, room, false).is_none(),
-            "a title wider than the room"
-        );
+        assert!(fit_view(&ViewSize { heading_w: 201.0, ..titled }, room).is_none(), "a title wider than the room");
     }
 }
