@@ -104,12 +104,6 @@ struct Stack<'a> {
 }
 
 impl Stack<'_> {
-    /// Where a graph's scale lines start: over its pole's name, H left of the axis (the
-    /// column's left edge is the longer pole's room: a short H₂ left its lines ~70 mm off).
-    fn over_pole(&self, h: f64) -> f64 {
-        (self.x0 - h - POLE_NAME).max(self.left)
-    }
-
     fn x_axis(&self) -> Axis {
         Axis {
             lo: 0.0,
@@ -166,17 +160,13 @@ impl Stack<'_> {
         ordinates(g, &s_plot, &s_drawn);
         number_divisions(&s_plot, self.integrated, labels);
         phase_dimensions(g, &s_plot, p, labels, w);
-        let lines = if self.rocker {
+        let s_top = Point::new(self.left, s_plot.origin.y - p.lift / sc.mu_s);
+        if self.rocker {
             let deg = format!("({} {})", fmt::trimmed(sc.mu_s.to_degrees(), lang), l.unit_deg_per_mm());
-            vec![mu("β", sc.mu_s, l.unit_rad_per_mm(), lang), LabelText::new(deg, "")]
+            scale_text(g, s_top, &[mu("β", sc.mu_s, l.unit_rad_per_mm(), lang), LabelText::new(deg, "")]);
         } else {
-            vec![mu("s", sc.mu_s, self.unit(), lang)]
-        };
-        // No pole here: the lines end [`TICK_ROOM`] left of the axis, not at the column's
-        // left edge, which is the poles' room and left them ~100 mm off their graph.
-        let widest = lines.iter().map(|t| label_size(t, 2.5).0).fold(0.0, f64::max);
-        let x = (self.x0 - TICK_ROOM - widest).max(self.left);
-        scale_text(g, Point::new(x, s_plot.origin.y - p.lift / sc.mu_s), &lines);
+            scale_text(g, s_top, &[mu("s", sc.mu_s, self.unit(), lang)]);
+        }
         s_plot.origin.y + PHASES + GAP
     }
 
@@ -207,11 +197,8 @@ impl Stack<'_> {
             self.integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
         let lines = [mu(name, sc.mu_ds, self.unit(), lang)];
         let top = v_plot.origin.y - hi / sc.mu_ds;
-        let (at, lines) = clear_of_rays(
-            &lines,
-            (self.over_pole(sc.h1), top, v_plot.origin.y),
-            top_ray(&v_plot, sc.h1, &means, sc.mu_ds),
-        );
+        let (at, lines) =
+            clear_of_rays(&lines, (self.left, top, v_plot.origin.y), top_ray(&v_plot, sc.h1, &means, sc.mu_ds));
         scale_text(g, at, &lines);
         pole(g, &v_plot, Pole { h: sc.h1, index: "1" }, &means, sc.mu_ds, self.words);
         axis_values(g, &v_plot, &within(analog_ticks(vmax, sc.mu_ds, self.rocker, lang), (lo, hi)), start);
@@ -254,11 +241,8 @@ impl Stack<'_> {
             [mu(name, sc.mu_dds, self.unit(), lang), mu("φ", sc.mu_phi_deg, l.unit_deg_per_mm(), lang), phi_rad];
         let mids: Vec<f64> = self.integrated.iter().flat_map(|i| i.mid_dds.iter().copied()).collect();
         let top = a_plot.origin.y - amax / sc.mu_dds;
-        let (at, lines) = clear_of_rays(
-            &lines,
-            (self.over_pole(sc.h2), top, a_plot.origin.y),
-            top_ray(&a_plot, sc.h2, &mids, sc.mu_dds),
-        );
+        let (at, lines) =
+            clear_of_rays(&lines, (self.left, top, a_plot.origin.y), top_ray(&a_plot, sc.h2, &mids, sc.mu_dds));
         scale_text(g, at, &lines);
         pole(g, &a_plot, Pole { h: sc.h2, index: "2" }, &mids, sc.mu_dds, self.words);
         axis_values(g, &a_plot, &analog_ticks(amax, sc.mu_dds, self.rocker, lang), start);
@@ -393,8 +377,6 @@ fn mu(q: &str, value: f64, unit: &str, lang: Language) -> LabelText {
 
 /// Room left of a pole for its name, mm.
 const POLE_NAME: f64 = 26.0;
-/// Room left of the displacement's axis for its values, mm: its scale lines end there.
-const TICK_ROOM: f64 = 15.0;
 
 /// An integrated quantity over the working angle: the rise's division points, the dwell,
 /// the return's.
