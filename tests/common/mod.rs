@@ -178,3 +178,13 @@ pub fn path_points(
         .collect();
     Some((pts, *pen))
 }
+
+/// The layout measure's faults in a sheet's `results.layout`: each non-zero count of texts
+/// crossed, texts overlapping and items outside their region, named.
+pub fn layout_faults(layout: &serde_json::Value) -> Vec<String> {
+    ["texts_crossed", "text_overlaps", "outside_region"]
+        .iter()
+        .filter(|k| layout[**k] != 0)
+        .map(|k| format!("{k} {}", layout[*k]))
+        .collect()
+}

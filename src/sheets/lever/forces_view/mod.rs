@@ -358,14 +358,16 @@ fn larger_drawings(inp: &ForcesInput, bodies: &Bodies, arranged: Arranged) -> Ar
     for i in 0..one_by_one {
         let base = out.3;
         // At the finer series too: the course's steps up to 2× skip the size that fits.
-        let each = [true, base.fine].map(|fine| {
+        // The course's series only where the finer was not tried already.
+        let series: &[bool] = if base.fine { &[true] } else { &[true, false] };
+        let each = series.iter().flat_map(|&fine| {
             POLYGON_GROWN.map(|f| {
                 let mut poly_grown = base.poly_grown;
                 poly_grown[i] *= f;
                 Sizes { poly_grown, fine, ..base }
             })
         });
-        if let Some(grown) = each.into_iter().flatten().find_map(packed) {
+        if let Some(grown) = each.into_iter().find_map(packed) {
             out = grown;
         }
     }
