@@ -89,7 +89,8 @@ fn tables_3_to_5_stand_together() {
 /// polygons grown into the room their cells leave, and the least empty of the variants
 /// that keep the rule's plans, polygon sides and lever wins: the kulisa's sheet 1 was
 /// 0.554 / 0.542 / 0.545 empty in uz / ru / en, its II(2,3) polygon 74 mm tall beside a
-/// band of empty paper as tall.
+/// band of empty paper as tall. Its crank's cell may stand its polygon under its drawing
+/// (264 mm wide beside it, the lever's room), which took uz from 0.526 to 0.515.
 #[test]
 fn a_too_empty_kulisa_sheet_grows_its_force_drawings() {
     use tmm_sheets::drawing::labels::Language;
@@ -99,7 +100,7 @@ fn a_too_empty_kulisa_sheet_grows_its_force_drawings() {
         let built = pipeline::build(&p, &[1]).unwrap();
         let layout = &built[0].output.results["layout"];
         let empty = layout["empty_share"].as_f64().unwrap();
-        assert!(empty <= 0.53, "{lang:?}: {empty}");
+        assert!(empty <= 0.52, "{lang:?}: {empty}");
         assert!(layout["smallest_plan_mm"].as_f64().unwrap() >= 50.0, "{lang:?}");
     }
 }

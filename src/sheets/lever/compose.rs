@@ -133,27 +133,38 @@ struct Variant {
     side_first: bool,
     tables_beside: bool,
     corner: bool,
+    compact_groups: bool,
 }
 
 impl Variant {
-    const RULE: Variant =
-        Variant { text_h: CELL_TEXT, grow_drawings: false, side_first: false, tables_beside: false, corner: false };
+    const RULE: Variant = Variant {
+        text_h: CELL_TEXT,
+        grow_drawings: false,
+        side_first: false,
+        tables_beside: false,
+        corner: false,
+        compact_groups: false,
+    };
 }
 
 /// The variants tried, two at a time on rayon's pool, on a sheet still more than
 /// [`EMPTY_MOST`] empty, until one is not: each a step further from the rule's layout.
-const FULLER: [[Variant; 2]; 5] = {
+const FULLER: [[Variant; 2]; 7] = {
     let grown = Variant { grow_drawings: true, ..Variant::RULE };
     let side = Variant { side_first: true, ..grown };
     let corner = Variant { corner: true, ..side };
     let side_beside = Variant { tables_beside: true, ..side };
     let beside = Variant { tables_beside: true, ..grown };
+    let compact = Variant { compact_groups: true, ..beside };
+    let side_compact = Variant { compact_groups: true, ..side_beside };
     [
         [grown, Variant { text_h: LARGE_TEXT, ..grown }],
         [side, Variant { text_h: LARGE_TEXT, ..side }],
         [corner, Variant { text_h: LARGE_TEXT, ..corner }],
         [side_beside, Variant { text_h: LARGE_TEXT, ..side_beside }],
         [beside, Variant { text_h: LARGE_TEXT, ..beside }],
+        [compact, Variant { text_h: LARGE_TEXT, ..compact }],
+        [side_compact, Variant { text_h: LARGE_TEXT, ..side_compact }],
     ]
 };
 
@@ -407,6 +418,7 @@ fn force_input<'a>(
             grow_drawings: v.grow_drawings,
             side_first: v.side_first,
             tables_beside: v.tables_beside,
+            compact_groups: v.compact_groups,
         }
     })
 }

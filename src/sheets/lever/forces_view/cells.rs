@@ -57,6 +57,9 @@ pub(super) struct Sizes {
     /// How many times `poly_box` each of the first [`GROWN_POLYGONS`] polygons' boxes is
     /// (one polygon may grow where the others' cells leave it no room to).
     pub(super) poly_grown: [f64; 8],
+    /// Whether each group cell takes the more compact of its polygon beside its drawing and
+    /// under it, rather than always beside.
+    pub(super) compact: bool,
 }
 
 /// How many polygons may grow one by one: a mechanism has at most a few groups.
@@ -106,8 +109,9 @@ pub struct CellMemo {
     fixed: OnceCell<Vec<(f64, f64)>>,
 }
 
-/// A polygon's index, its μ_l's and μ_P's bits, and whether its cell may grow.
-type PolygonKey = (usize, u64, u64, bool);
+/// A polygon's index, its μ_l's and μ_P's bits, whether its cell may grow and whether its
+/// polygon stands under its drawing.
+type PolygonKey = (usize, u64, u64, bool, bool);
 /// A group cell's layout, width and height.
 type LaidOut = (Rc<GroupLayout>, f64, f64);
 
@@ -121,15 +125,21 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     for (i, poly) in inp.fa.forces.polygons.iter().enumerate() {
         let grow = s.grow >> i & 1 == 1;
         let (mu_l, mu_p) = group_scales(poly, inp, s, s.poly_grown.get(i).copied().unwrap_or(1.0));
-        let (layout, w, h) = memo
-            .polygons
-            .borrow_mut()
-            .entry((i, mu_l.to_bits(), mu_p.to_bits(), grow))
-            .or_insert_with(|| {
-                let (layout, w, h) = group_layout(inp, poly, (mu_l, mu_p), grow);
-                (Rc::new(layout), w, h)
-            })
-            .clone();
+        let laid_out = |stacked: bool| {
+            memo.polygons
+                .borrow_mut()
+                .entry((i, mu_l.to_bits(), mu_p.to_bits(), grow, stacked))
+                .or_insert_with(|| {
+                    let (layout, w, h) = group_layout(inp, poly, (mu_l, mu_p), grow, stacked);
+                    (Rc::new(layout), w, h)
+                })
+                .clone()
+        };
+        let beside = laid_out(false);
+        let (layout, w, h) = match s.compact.then(|| laid_out(true)) {
+            Some(under) if under.1 * under.2 < beside.1 * beside.2 => under,
+            _ => beside,
+        };
         out.push(Cell { w, h, content: Content::Polygon(i, layout) });
     }
     let (lever, bb, mu_f) = memo.lever.get_or_init(|| {

@@ -35,8 +35,11 @@ pub(super) struct GroupLayout {
     /// The group's points in the world, m.
     pub(super) world: Rect,
     pub(super) mu_l: f64,
-    /// Width of the group drawing with its room for arrows, mm.
+    /// Width and height of the group drawing with its room for arrows, mm.
     pub(super) drawing_w: f64,
+    pub(super) drawing_h: f64,
+    /// Whether the polygon stands under the drawing rather than beside it.
+    pub(super) stacked: bool,
     pub(super) mu_p: f64,
     /// Scale of the force arrows on the group drawing, N/mm.
     pub(super) mu_f: f64,
@@ -112,6 +115,7 @@ pub(super) fn group_layout(
     poly: &Polygon,
     (mu_l, mu_p): (f64, f64),
     grow: bool,
+    stacked: bool,
 ) -> (GroupLayout, f64, f64) {
     let world = world_box(inp, poly);
     let mu_f = arrow_scale(poly.terms.iter().map(|t| t.force.norm()).fold(0.0, f64::max));
@@ -126,7 +130,8 @@ pub(super) fn group_layout(
     let chain_box = bbox_of(&chain);
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let poly_size = (poly_w, poly_h);
-    let (insets, place, w, body_h) = with_insets(inp, poly, (&chain, mu_p), (drawing_w, drawing_h), poly_size, grow);
+    let arrangement = Arrangement { drawing: (drawing_w, drawing_h), stacked };
+    let (insets, place, w, body_h) = with_insets(inp, poly, (&chain, mu_p), arrangement, poly_size, grow);
     let equation = equation_lines(inp, poly, w - 4.0);
     let legend = group_legend(inp, poly, mu_f, w - 4.0);
     let text_lines = equation.len() + legend.len() + SCALE_LINES;
@@ -135,6 +140,8 @@ pub(super) fn group_layout(
         world,
         mu_l,
         drawing_w,
+        drawing_h,
+        stacked,
         mu_p,
         mu_f,
         chain,
@@ -148,6 +155,32 @@ pub(super) fn group_layout(
     (layout, w, h)
 }
 
+/// How a group cell holds its drawing (its size with its room for arrows, mm) and the
+/// polygon's room: side by side, or the room under the drawing (`stacked`: a wide drawing
+/// over its polygon takes less width, where the region is tall rather than wide).
+#[derive(Clone, Copy)]
+struct Arrangement {
+    drawing: (f64, f64),
+    stacked: bool,
+}
+
+/// A group cell's least width, mm: its equation and legend need lines this long.
+const CELL_MIN_W: f64 = 120.0;
+
+impl Arrangement {
+    /// The cell's width and body height round a polygon's room `(w, h)`.
+    fn cell(self, (w, h): (f64, f64)) -> (f64, f64) {
+        let (dw, dh) = self.drawing;
+        if self.stacked { (dw.max(w).max(CELL_MIN_W), dh + h) } else { ((dw + w).max(CELL_MIN_W), dh.max(h)) }
+    }
+
+    /// The room a cell sized for a polygon of `poly`'s size leaves the polygon.
+    fn room(self, poly: (f64, f64)) -> (f64, f64) {
+        let (w, h) = self.cell(poly);
+        if self.stacked { (w, h - self.drawing.1) } else { (w - self.drawing.0, h) }
+    }
+}
+
 /// The enlargements of a polygon's short sides and where they go, with the cell's width and
 /// body height: in the room the cell leaves the polygon if they fit there; else, when the
 /// cell may `grow`, in the least room grown for them; else none.
@@ -155,17 +188,16 @@ fn with_insets(
     inp: &ForcesInput,
     poly: &Polygon,
     (chain, mu_p): (&[Vec2], f64),
-    (drawing_w, drawing_h): (f64, f64),
+    arrangement: Arrangement,
     poly_size: (f64, f64),
     grow: bool,
 ) -> (Vec<Inset>, Place, f64, f64) {
-    let w = (drawing_w + poly_size.0).max(120.0);
-    let body_h = drawing_h.max(poly_size.1);
+    let room = arrangement.room(poly_size);
+    let (w, body_h) = arrangement.cell(room);
     let runs = inset::Runs::of(inp, poly, chain, mu_p);
     if runs.is_empty() {
         return (Vec::new(), Place::None, w, body_h);
     }
-    let room = (w - drawing_w, body_h);
     let places = [Place::Below, Place::Beside];
     let least = |is: &Vec<Inset>| is.iter().map(|i| mu_p / i.mu).fold(f64::INFINITY, f64::min);
     let free = places
@@ -183,7 +215,10 @@ fn with_insets(
         runs.placed(p, room, poly_size).map(|is| (is, p, room))
     });
     match grown.min_by(|a, b| (a.2.0 * a.2.1).total_cmp(&(b.2.0 * b.2.1))) {
-        Some((is, p, (rw, rh))) => (is, p, (drawing_w + rw).max(120.0), rh),
+        Some((is, p, room)) => {
+            let (w, h) = arrangement.cell(room);
+            (is, p, w, h)
+        }
         None => (Vec::new(), Place::None, w, body_h),
     }
 }
@@ -213,14 +248,19 @@ pub(super) fn draw_group_cell(
     let top = r.y0 + CELL_TITLE;
     let lines = layout.equation.len() + layout.legend.len() + SCALE_LINES;
     let bottom = r.y1 - LINE * lines as f64 - 2.0;
-    let geo = Rect::new(r.x0, top, r.x0 + layout.drawing_w, bottom);
+    let (geo, room) = if layout.stacked {
+        let under = top + layout.drawing_h;
+        (Rect::new(r.x0, top, r.x1, under), Rect::new(r.x0, under, r.x1, bottom))
+    } else {
+        let beside = r.x0 + layout.drawing_w;
+        (Rect::new(r.x0, top, beside, bottom), Rect::new(beside, top, r.x1, bottom))
+    };
     draw_group_geometry(g, labels, inp, poly, geo, layout);
-    let room = Rect::new(r.x0 + layout.drawing_w, top, r.x1, bottom);
     let (w, h) = layout.poly_size;
     let pr = match layout.place {
         Place::None => room,
-        Place::Below => Rect::new(room.x0, top, room.x1, top + h),
-        Place::Beside => Rect::new(room.x0, top, room.x0 + w, bottom),
+        Place::Below => Rect::new(room.x0, room.y0, room.x1, room.y0 + h),
+        Place::Beside => Rect::new(room.x0, room.y0, room.x0 + w, room.y1),
     };
     draw_polygon(g, labels, inp, poly, layout, pr);
     inset::draw(g, labels, inp, poly, &layout.chain, &layout.insets, room);
@@ -332,3 +372,21 @@ fn draw_group_geometry(
 /// Radius and sweep of an inertia moment's arc, mm and degrees.
 const MOMENT_R: f64 = 6.0;
 const MOMENT_SWEEP: f64 = 120.0;
+
+#[cfg(test)]
+mod tests {
+    use super::{Arrangement, CELL_MIN_W};
+
+    #[test]
+    fn a_stacked_cell_is_as_wide_as_its_wider_part_and_as_tall_as_both() {
+        let beside = Arrangement { drawing: (150.0, 60.0), stacked: false };
+        let under = Arrangement { stacked: true, ..beside };
+        let poly = (130.0, 100.0);
+        assert_eq!(beside.cell(beside.room(poly)), (280.0, 100.0));
+        assert_eq!(under.cell(under.room(poly)), (150.0, 160.0));
+        // The polygon's room under the drawing spans the cell's width.
+        assert_eq!(under.room(poly), (150.0, 100.0));
+        let small = Arrangement { drawing: (40.0, 30.0), stacked: true };
+        assert_eq!(small.cell(small.room((50.0, 20.0))), (CELL_MIN_W, 50.0));
+    }
+}

@@ -57,6 +57,10 @@ pub struct ForcesInput<'a> {
     /// below to the drawings (a kulisa's lever left the side region two-thirds empty while
     /// the tables took the room its polygon could grow into).
     pub tables_beside: bool,
+    /// Whether each group cell stands its polygon under its drawing where that makes the
+    /// cell smaller (a kulisa's crank drawn wide beside its polygon took the width its
+    /// lever could grow into).
+    pub compact_groups: bool,
 }
 
 /// The scales the force drawings got.
@@ -101,7 +105,11 @@ pub fn draw_forces(
     let title = inp.words.sheet.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.words.lang));
     main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let bodies = bodies(region, side.as_ref().map(|g| g.region), (inp.side_first, inp.tables_beside));
-    let arranged = larger_lever(inp, &bodies, finer(inp, &bodies, arrange(inp, &bodies, DRAWN, SHRINK_TRIES)));
+    let arranged = larger_lever(
+        inp,
+        &bodies,
+        finer(inp, &bodies, arrange(inp, &bodies, Sizes { compact: inp.compact_groups, ..DRAWN }, SHRINK_TRIES)),
+    );
     let (cells, at, _, _) = larger_drawings(inp, &bodies, larger_loads(inp, &bodies, arranged));
     let mut scales = ForceScales {
         mu_l: vec![],
@@ -205,6 +213,7 @@ const COMFORTABLE_START: Sizes = Sizes {
     grow: 0,
     load: 1.0,
     poly_grown: [1.0; GROWN_POLYGONS],
+    compact: false,
 };
 const DRAWN: Sizes = Sizes {
     group_box: 170.0,
@@ -216,6 +225,7 @@ const DRAWN: Sizes = Sizes {
     grow: 0,
     load: 1.0,
     poly_grown: [1.0; GROWN_POLYGONS],
+    compact: false,
 };
 
 /// Cells, where they are, whether they all fit, and the sizes they were made at.
