@@ -13,7 +13,6 @@ mod svg_raster;
 
 use common::{fixture, root};
 use kurbo::{Point, Rect};
-use std::path::PathBuf;
 use std::process::Command;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use tmm_sheets::backend::{self, BackendError, Format};
@@ -118,13 +117,10 @@ fn resvg_at(scene: &Scene, dpi: f64) -> Ink {
 }
 
 /// A scratch directory of its own (tests run in parallel), made afresh.
-fn scratch(name: &str) -> PathBuf {
+fn scratch(name: &str) -> common::Scratch {
     static NEXT: AtomicUsize = AtomicUsize::new(0);
     let n = NEXT.fetch_add(1, Ordering::Relaxed);
-    let dir = std::env::temp_dir().join(format!("tmm-backends-{}-{name}-{n}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    common::Scratch::created(&format!("backends-{name}-{n}"))
 }
 
 /// Whether a poppler tool is installed; says so when it is not.

@@ -3,6 +3,8 @@
 //! 7.1, one with a planted misprint and one with a lost cell), and the embedded catalogue's
 //! own consistency.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -14,10 +16,8 @@ fn tmm(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_tmm")).arg("--catalogue").arg(sample()).args(args).output().unwrap()
 }
 
-fn temp_dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tmm-catalogue-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    d
+fn temp_dir(name: &str) -> common::Scratch {
+    common::Scratch::new(&format!("catalogue-{name}"))
 }
 
 fn text(b: &[u8]) -> String {

@@ -4,15 +4,14 @@
 // Tests compute their references with the platform's math; only src/ must not (clippy.toml).
 #![allow(clippy::disallowed_methods)]
 
-use std::path::PathBuf;
 use std::process::{Command, Output};
 
-fn temp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("tmm-check-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
+/// A file holding `text`, named `…-NAME` (its extension is what `tmm check` reads), removed
+/// when dropped.
+fn temp(name: &str, text: &str) -> tempfile::TempPath {
+    let file = tempfile::Builder::new().prefix("tmm-check-").suffix(&format!("-{name}")).tempfile().unwrap();
+    std::fs::write(file.path(), text).unwrap();
+    file.into_temp_path()
 }
 
 fn check(args: &[&str]) -> Output {

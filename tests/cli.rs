@@ -2,17 +2,17 @@
 // Tests compute their references with the platform's math; only src/ must not (clippy.toml).
 #![allow(clippy::disallowed_methods)]
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use std::path::Path;
 use std::process::{Command, Output};
 
 fn tmm() -> Command {
     Command::new(env!("CARGO_BIN_EXE_tmm"))
 }
 
-fn temp_dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tmm-cli-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    d
+fn temp_dir(name: &str) -> common::Scratch {
+    common::Scratch::new(&format!("cli-{name}"))
 }
 
 fn run(args: &[&str], out: &Path) -> Output {
@@ -275,7 +275,8 @@ fn the_ends_of_the_ranges_are_accepted() {
 #[test]
 fn a_wrong_section_refuses_its_own_sheet_only() {
     let text = std::fs::read_to_string(fixture("worked-example")).unwrap().replacen("law: sine", "law: wobbly", 1);
-    let file = temp_dir("cam-wrong").with_extension("yaml");
+    let dir = common::Scratch::created("cli-cam-wrong");
+    let file = dir.join("project.yaml");
     std::fs::write(&file, &text).unwrap();
     let out = temp_dir("cam-wrong-out");
     let o = tmm().arg("build").arg(&file).args(["--no-png", "--no-pdf", "-o"]).arg(&out).output().unwrap();

@@ -2,11 +2,13 @@
 //! folder, two builds writing into one folder at once, and project files that are too large
 //! or not text. Each test fails on the code before writes were atomic, guarded and limited.
 
+mod common;
+
 use std::collections::BTreeMap;
 use std::io::{BufRead, BufReader};
 use std::os::unix::fs::{PermissionsExt, symlink};
 use std::os::unix::process::ExitStatusExt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Child, Command, Output, Stdio};
 use std::sync::{Arc, Barrier};
 use std::time::Duration;
@@ -16,11 +18,8 @@ fn tmm() -> Command {
     Command::new(env!("CARGO_BIN_EXE_tmm"))
 }
 
-fn temp_dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("tmm-folder-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn temp_dir(name: &str) -> common::Scratch {
+    common::Scratch::created(&format!("folder-{name}"))
 }
 
 fn run(args: &[&str], out: &Path) -> Output {
@@ -200,7 +199,7 @@ fn concurrent_writes_into_one_folder_leave_exactly_one_writers_files() {
         let barrier = Arc::new(Barrier::new(2));
         let writers: Vec<_> = (0..2)
             .map(|i| {
-                let (sets, barrier, dir) = (Arc::clone(&sets), Arc::clone(&barrier), dir.clone());
+                let (sets, barrier, dir) = (Arc::clone(&sets), Arc::clone(&barrier), dir.to_path_buf());
                 std::thread::spawn(move || {
                     barrier.wait();
                     write_outputs(&dir, &sets[i]).unwrap();

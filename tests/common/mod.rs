@@ -188,3 +188,48 @@ pub fn layout_faults(layout: &serde_json::Value) -> Vec<String> {
         .map(|k| format!("{k} {}", layout[*k]))
         .collect()
 }
+
+/// A fresh folder for a test's outputs (`tmm-NAME-PID` under the temporary directory; not
+/// yet created, as `tmm` creates its output folder itself), removed when dropped so that a
+/// suite run leaves nothing behind.
+pub struct Scratch(PathBuf);
+
+impl Scratch {
+    pub fn new(name: &str) -> Scratch {
+        let d = std::env::temp_dir().join(format!("tmm-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        Scratch(d)
+    }
+
+    /// A fresh folder, made.
+    pub fn created(name: &str) -> Scratch {
+        let d = Scratch::new(name);
+        std::fs::create_dir_all(&d.0).unwrap();
+        d
+    }
+}
+
+impl std::ops::Deref for Scratch {
+    type Target = std::path::Path;
+    fn deref(&self) -> &std::path::Path {
+        &self.0
+    }
+}
+
+impl AsRef<std::path::Path> for Scratch {
+    fn as_ref(&self) -> &std::path::Path {
+        &self.0
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+impl AsRef<std::ffi::OsStr> for Scratch {
+    fn as_ref(&self) -> &std::ffi::OsStr {
+        self.0.as_os_str()
+    }
+}
