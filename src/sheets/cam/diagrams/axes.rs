@@ -38,25 +38,43 @@ pub(super) fn ordinates(g: &mut Group, plot: &Plot, drawn: &[(f64, f64)]) {
 /// The y axis' values of a graph with a pole: each beside its tick, right of the axis (the
 /// pole's rays fill the left) where the curves leave room, with the tick carried across the
 /// axis to it, else left of it where no ray crosses the place, else left out (the graph's
-/// scale is written above the pole). `start` marks the graph's first item: only its own
-/// lines are asked.
+/// scale is written above the pole). The values of one side of the x axis stand on one side
+/// of the y axis where all of them can (0.4 and 0.8 left of it with 1.2 and 1.6 right read
+/// as two scales). `start` marks the graph's first item: only its own lines are asked.
 pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], start: usize) {
     let drawn = Obstacles::of_items(&g.items[start..]);
     let x0 = plot.at(plot.x.lo, 0.0).x;
-    for (v, value) in ticks {
-        let y_tick = plot.at(0.0, *v).y;
+    let clear = |r: Rect| drawn.is_clear(r.inflate(0.3, 0.3));
+    let places: Vec<_> = ticks
+        .iter()
+        .map(|(v, value)| {
+            let y_tick = plot.at(0.0, *v).y;
+            let y = y_tick + VALUE_H / 2.0;
+            let w = LabelText::new(value.as_str(), "").width(VALUE_H);
+            let xr = x0 + VALUE_TICK + 0.8;
+            let right = Rect::new(x0 + 0.6, y - VALUE_H, xr + w, y);
+            let left = Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y);
+            (*v > 0.0, y_tick, clear(right), clear(left))
+        })
+        .collect();
+    let all =
+        |above: bool, side: fn(&(bool, f64, bool, bool)) -> bool| places.iter().filter(|p| p.0 == above).all(side);
+    for ((_, value), &(above, y_tick, right_clear, left_clear)) in ticks.iter().zip(&places) {
         let y = y_tick + VALUE_H / 2.0;
-        let w = LabelText::new(value.as_str(), "").width(VALUE_H);
-        let xr = x0 + VALUE_TICK + 0.8;
-        let right = (Point::new(xr, y), Anchor::Start, Rect::new(x0 + 0.6, y - VALUE_H, xr + w, y));
-        let left =
-            (Point::new(x0 - VALUE_TICK - 0.8, y), Anchor::End, Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y));
-        let clear = |r: Rect| drawn.is_clear(r.inflate(0.3, 0.3));
-        if clear(right.2) {
+        let right = if all(above, |p| p.2) {
+            true
+        } else if all(above, |p| p.3) {
+            false
+        } else if right_clear || left_clear {
+            right_clear
+        } else {
+            continue;
+        };
+        if right {
             g.line(Point::new(x0, y_tick), Point::new(x0 + VALUE_TICK, y_tick), THIN);
-            g.text(Text::new(right.0, value.clone(), VALUE_H, right.1));
-        } else if clear(left.2) {
-            g.text(Text::new(left.0, value.clone(), VALUE_H, left.1));
+            g.text(Text::new(Point::new(x0 + VALUE_TICK + 0.8, y), value.clone(), VALUE_H, Anchor::Start));
+        } else {
+            g.text(Text::new(Point::new(x0 - VALUE_TICK - 0.8, y), value.clone(), VALUE_H, Anchor::End));
         }
     }
 }
