@@ -8,38 +8,72 @@ use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
 
 /// A label's candidates, cheapest first, each with its verdict against the drawing: made
-/// as they are asked for (most labels take one of their first few spots of the 456), all
-/// at once for a label with further anchors (their spots interleave).
+/// as they are asked for (most labels take one of their first few spots of the 456). Each
+/// anchor's spots come in [`SPOTS_CHEAPEST_FIRST`]'s order, its cost raised by the same
+/// amount for all of them, so merging the anchors' streams (a tie to the earlier anchor)
+/// gives the order a stable sort of all their spots would, without making them all.
 pub(super) struct Spots<'a> {
     req: &'a Request,
     bounds: Rect,
     made: Vec<(Candidate, Verdict)>,
-    /// Around the one anchor: the next spot of [`SPOTS_CHEAPEST_FIRST`] to make (none: all
-    /// made).
-    next: Option<(Around, usize)>,
+    /// One per anchor, the label's own first.
+    streams: Vec<Stream>,
+}
+
+/// The spots around one anchor not yet taken: the next of [`SPOTS_CHEAPEST_FIRST`] to try
+/// and the cheapest made but not taken (none: all taken).
+struct Stream {
+    around: Around,
+    at: usize,
+    head: Option<Candidate>,
+}
+
+impl Stream {
+    fn new(req: &Request, bounds: Rect, around: Around) -> Stream {
+        let mut s = Stream { around, at: 0, head: None };
+        s.advance(req, bounds);
+        s
+    }
+
+    /// Makes the next spot inside `bounds` the head.
+    fn advance(&mut self, req: &Request, bounds: Rect) {
+        self.head = loop {
+            let Some(&(di, dir)) = SPOTS_CHEAPEST_FIRST.get(self.at) else { break None };
+            self.at += 1;
+            if let Some(c) = self.around.spot(req, bounds, di, dir) {
+                break Some(c);
+            }
+        };
+    }
 }
 
 impl<'a> Spots<'a> {
     pub(super) fn new(req: &'a Request, bounds: Rect) -> Spots<'a> {
-        let (made, next) = if req.others.is_empty() {
-            // One anchor: its spots in [`SPOTS_CHEAPEST_FIRST`] are already in order.
-            (Vec::with_capacity(64), Some((Around::new(req, req.anchor, req.pref, 0.0), 0)))
-        } else {
-            (candidates(req, bounds).into_iter().map(|c| (c, Verdict::default())).collect(), None)
-        };
-        Spots { req, bounds, made, next }
+        let anchors = std::iter::once((req.anchor, req.pref)).chain(req.others.iter().copied());
+        // A further anchor's spots cost as much as the first's a few distances out.
+        let streams = anchors
+            .enumerate()
+            .map(|(n, (anchor, pref))| {
+                Stream::new(req, bounds, Around::new(req, anchor, pref, n as f64 * FURTHER_ANCHOR))
+            })
+            .collect();
+        Spots { req, bounds, made: Vec::with_capacity(64), streams }
     }
 
     /// Candidate `k` and its verdict, made if need be; none past the last.
     pub(super) fn get(&mut self, k: usize) -> Option<(&Candidate, &mut Verdict)> {
         while self.made.len() <= k {
-            let (around, at) = self.next.as_mut()?;
-            let Some(&(di, dir)) = SPOTS_CHEAPEST_FIRST.get(*at) else {
-                self.next = None;
-                return None;
-            };
-            *at += 1;
-            self.made.extend(around.spot(self.req, self.bounds, di, dir).map(|c| (c, Verdict::default())));
+            let cheapest = self
+                .streams
+                .iter()
+                .enumerate()
+                .filter_map(|(i, s)| s.head.as_ref().map(|c| (i, c.cost)))
+                .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)))?
+                .0;
+            let stream = &mut self.streams[cheapest];
+            let c = stream.head.take()?;
+            stream.advance(self.req, self.bounds);
+            self.made.push((c, Verdict::default()));
         }
         self.made.get_mut(k).map(|(c, v)| (&*c, v))
     }
@@ -49,21 +83,6 @@ impl<'a> Spots<'a> {
         while self.get(self.made.len()).is_some() {}
         self.made.iter().map(|(c, _)| c.clone()).collect()
     }
-}
-
-/// Every candidate box inside `bounds` of a label with further anchors, cheapest first.
-fn candidates(req: &Request, bounds: Rect) -> Vec<Candidate> {
-    let mut out = Vec::with_capacity(SPOTS_CHEAPEST_FIRST.len() * (1 + req.others.len()));
-    let spots = std::iter::once((req.anchor, req.pref)).chain(req.others.iter().copied());
-    for (n, (anchor, pref)) in spots.enumerate() {
-        // A further anchor's spots cost as much as the first's a few distances out.
-        let around = Around::new(req, anchor, pref, n as f64 * FURTHER_ANCHOR);
-        for di in 0..DISTANCES.len() {
-            out.extend((0..DIRECTIONS).filter_map(|k| around.spot(req, bounds, di, k)));
-        }
-    }
-    out.sort_by(|a, b| a.cost.total_cmp(&b.cost));
-    out
 }
 
 /// Every (distance, direction) index pair, cheapest first and, among equals, in the order
