@@ -68,3 +68,80 @@ fn a_pair_alone_shows_both_wheels_rack_generation() {
         assert!(g.texts().any(|t| t.text == title), "{lang:?}: no title {title:?}");
     }
 }
+
+/// Each rack generation picture's group in sheet 2's SVG: its texts, in order.
+fn generation_texts(svg: &str) -> Vec<Vec<String>> {
+    let mut out = Vec::new();
+    for k in 1..=2 {
+        let id = format!("id=\"sheet2.generation{k}\"");
+        let Some(start) = svg.find(&id) else { continue };
+        let rest = &svg[start + id.len()..];
+        // The group ends where the next group not inside it starts.
+        let inner = format!("id=\"sheet2.generation{k}.");
+        let end = rest
+            .match_indices("id=\"sheet2.")
+            .find(|(i, _)| !rest[*i..].starts_with(&inner))
+            .map_or(rest.len(), |(i, _)| i);
+        out.push(texts_in(&rest[..end]));
+    }
+    out
+}
+
+/// The texts of an SVG fragment, their tags (the subscripts' tspans) taken out.
+fn texts_in(svg: &str) -> Vec<String> {
+    svg.split("<text")
+        .skip(1)
+        .filter_map(|t| t.split_once('>'))
+        .map(|(_, t)| untagged(t.split("</text>").next().unwrap_or("")))
+        .collect()
+}
+
+fn untagged(s: &str) -> String {
+    let mut out = String::new();
+    let mut inside = false;
+    for c in s.chars() {
+        match c {
+            '<' => inside = true,
+            '>' => inside = false,
+            c if !inside => out.push(c),
+            _ => {}
+        }
+    }
+    out
+}
+
+/// A GOST scale written "2,5:1" or "1:2", as paper mm per world mm.
+fn scale_of(text: &str) -> Option<f64> {
+    text.split_whitespace().find_map(|w| {
+        let (a, b) = w.split_once(':')?;
+        let (a, b) = (a.replace(',', ".").parse::<f64>().ok()?, b.replace(',', ".").parse::<f64>().ok()?);
+        Some(a / b)
+    })
+}
+
+/// A number as the sheet writes it (a decimal comma in uz and ru).
+fn number(s: &str) -> f64 {
+    s.trim().replace(',', ".").parse().unwrap_or_else(|e| panic!("{s:?}: {e}"))
+}
+
+/// The rack generation pictures keep their teeth readable: the rack's pitch on paper (its
+/// written p at the picture's written GOST scale) is at least 15 mm, and at least 20 mm where
+/// the whole wheel is drawn with its centre O (the shifted double planet's wheel 1 at 1:1 had
+/// its x·m of about a millimetre and the labels at P piled up).
+#[test]
+fn the_rack_generation_pictures_draw_the_pitch_at_least_15_mm_and_20_with_the_wheels_centre() {
+    let mut seen = 0;
+    for (name, p) in projects() {
+        for texts in generation_texts(&sheet2(&p).svg) {
+            let paper_per_world =
+                texts.iter().find_map(|t| scale_of(t)).unwrap_or_else(|| panic!("{name}: no scale in {texts:?}"));
+            let pitch = texts.iter().find_map(|t| t.strip_prefix("p = ")).map(number);
+            let pitch = pitch.unwrap_or_else(|| panic!("{name}: no pitch in {texts:?}")) * paper_per_world;
+            let centre = texts.iter().any(|t| t.len() <= 3 && t.starts_with('O'));
+            let least = if centre { 20.0 } else { 15.0 };
+            assert!(pitch >= least - 0.01, "{name}: pitch {pitch:.2} mm on paper (centre drawn: {centre})");
+            seen += 1;
+        }
+    }
+    assert!(seen >= 4, "only {seen} generation pictures");
+}
