@@ -8,7 +8,10 @@ use crate::drawing::obstacles::Obstacles;
 use kurbo::Rect;
 
 /// The best-scoring rectangle of `area` at least `min` (width, height) on the grid of
-/// `cell` whose cells `obstacles` leave clear; `score` takes its width and height.
+/// `cell` whose cells `obstacles` leave clear; `score` takes its width and height and never
+/// falls as either grows (a run from one cell rightwards stops once no wider run at its
+/// height, nor a lower one, could beat the best: the same rectangle as scanning them all,
+/// found in a fraction of the time).
 pub(super) fn largest(
     obstacles: &Obstacles,
     area: Rect,
@@ -23,22 +26,28 @@ pub(super) fn largest(
         let (x, y) = (area.x0 + i as f64 * cell, area.y0 + j as f64 * cell);
         Rect::new(x, y, x + cell, y + cell)
     };
+    let clear = clear_cells(obstacles, (area, cell), (nx, ny));
     let mut heights = vec![0usize; nx];
     let mut best: Option<(f64, Rect)> = None;
     for j in 0..ny {
         for (i, h) in heights.iter_mut().enumerate() {
             let c = at(i, j).inflate(1.0, 1.0);
-            *h = if c.intersect(block).area() <= 0.0 && obstacles.is_clear(c) { *h + 1 } else { 0 };
+            *h = if c.intersect(block).area() <= 0.0 && clear[j * nx + i] { *h + 1 } else { 0 };
         }
         for i0 in 0..nx {
             let mut h = usize::MAX;
+            let widest = (nx - i0) as f64 * cell;
             for (i1, &column) in heights.iter().enumerate().skip(i0) {
-                h = h.min(column);
-                if h == 0 {
-                    break;
+                if column < h {
+                    h = column;
+                    // Lower from here on, never wider than the row: past beating the best.
+                    let hh = h as f64 * cell;
+                    if h == 0 || hh < min.1 || best.is_some_and(|(b, _)| score(widest, hh) <= b) {
+                        break;
+                    }
                 }
                 let (w, hh) = ((i1 + 1 - i0) as f64 * cell, h as f64 * cell);
-                if w < min.0 || hh < min.1 {
+                if w < min.0 {
                     continue;
                 }
                 let s = score(w, hh);
@@ -51,4 +60,31 @@ pub(super) fn largest(
         }
     }
     best.map(|(_, r)| r)
+}
+
+/// Cells a block of this many a side are asked about together first.
+const BLOCK: usize = 8;
+
+/// Whether `obstacles` leave each cell of the `nx` × `ny` grid of `cell` over `area` clear
+/// (grown by 1 mm), row by row. A block of cells clear as a whole has every cell clear (a
+/// box inside a clear box is clear), so the empty paper is asked a block at a time and
+/// only the blocks something meets cell by cell.
+fn clear_cells(obstacles: &Obstacles, (area, cell): (Rect, f64), (nx, ny): (usize, usize)) -> Vec<bool> {
+    let col = |i: usize| area.x0 + i as f64 * cell;
+    let row = |j: usize| area.y0 + j as f64 * cell;
+    let mut clear = vec![false; nx * ny];
+    for bj in (0..ny).step_by(BLOCK) {
+        for bi in (0..nx).step_by(BLOCK) {
+            let (i1, j1) = ((bi + BLOCK).min(nx), (bj + BLOCK).min(ny));
+            let whole = Rect::new(col(bi), row(bj), col(i1), row(j1)).inflate(1.0, 1.0);
+            let all = obstacles.is_clear(whole);
+            for j in bj..j1 {
+                for i in bi..i1 {
+                    let c = Rect::new(col(i), row(j), col(i) + cell, row(j) + cell).inflate(1.0, 1.0);
+                    clear[j * nx + i] = all || obstacles.is_clear(c);
+                }
+            }
+        }
+    }
+    clear
 }
