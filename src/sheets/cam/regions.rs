@@ -346,13 +346,26 @@ pub fn free_room(r: &Regions) -> Option<Rect> {
     let xs: Vec<f64> = taken.iter().flat_map(|t| [t.x0, t.x1]).chain([SHEET.x0, SHEET.x1]).collect();
     let ys: Vec<f64> = taken.iter().flat_map(|t| [t.y0, t.y1]).chain([SHEET.y0, SHEET.y1]).collect();
     let inside = |v: f64, lo: f64, hi: f64| v >= lo && v <= hi;
-    let (xs, ys): (Vec<f64>, Vec<f64>) = (
-        xs.into_iter().filter(|&x| inside(x, SHEET.x0, SHEET.x1)).collect(),
-        ys.into_iter().filter(|&y| inside(y, SHEET.y0, SHEET.y1)).collect(),
-    );
+    // Each edge once, in the order first met: a repeated room could not beat itself.
+    let distinct = |vs: Vec<f64>, lo: f64, hi: f64| {
+        let mut out: Vec<f64> = Vec::new();
+        for v in vs.into_iter().filter(|&v| inside(v, lo, hi)) {
+            if !out.contains(&v) {
+                out.push(v);
+            }
+        }
+        out
+    };
+    let (xs, ys) = (distinct(xs, SHEET.x0, SHEET.x1), distinct(ys, SHEET.y0, SHEET.y1));
     let mut best: Option<(f64, Rect)> = None;
     for &x0 in &xs {
         for &x1 in xs.iter().filter(|&&x| x > x0) {
+            // The plot grows with its room's height: no room between these sides beats the
+            // best if the sheet's whole height would not.
+            let tallest = pressure_view::plot_size(Rect::new(x0, SHEET.y0, x1, SHEET.y1));
+            if tallest.is_none_or(|(w, h)| best.is_some_and(|(a, _)| w * h <= a)) {
+                continue;
+            }
             for &y0 in &ys {
                 for &y1 in ys.iter().filter(|&&y| y > y0) {
                     let room = Rect::new(x0, y0, x1, y1);
