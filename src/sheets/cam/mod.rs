@@ -250,6 +250,7 @@ struct Prepared {
     nomogram_extent: regions::Extent,
     nomogram_reach: Vec<(Vec2, Vec2)>,
     profile_extent: regions::Extent,
+    boundary: nomogram::BoundaryMemo,
 }
 
 impl Prepared {
@@ -270,6 +271,7 @@ impl Prepared {
             nomogram_extent: nomogram::extent(d, &phis),
             nomogram_reach: nomogram::reach(d),
             profile_extent: profile_view::extent(d),
+            boundary: nomogram::BoundaryMemo::default(),
             fitted: profile_view::fit(d),
             integrated,
             errors,
@@ -368,7 +370,7 @@ fn build_at(
             extent: content.nomogram.at(lay.nomogram_mu),
             mu: lay.nomogram_mu,
         };
-        nomogram::draw(&mut nm, &at, d, phis, &mut nl, &words);
+        nomogram::draw(&mut nm, (&at, &prepared.boundary), d, phis, &mut nl, &words);
         scale_note(&mut nm, lay.nomogram_mu, None, &words);
         let placed = nl.place(&mut nm, nomogram_room);
         if fine && placed.contains(&false) {

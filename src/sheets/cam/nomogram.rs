@@ -7,7 +7,7 @@
 
 use super::labels::CamWords;
 use crate::cams::follower::Follower;
-use crate::cams::radius::Phase;
+use crate::cams::radius::{Phase, Region};
 use crate::cams::{Design, Sense};
 use crate::drawing::fmt;
 use crate::drawing::place::Labels;
@@ -19,6 +19,7 @@ use crate::num::math::{self, Norm};
 use crate::num::tol;
 use crate::num::units::mm;
 use kurbo::{Line, ParamCurveNearest, Point, Rect, Vec2};
+use std::sync::{Mutex, PoisonError};
 
 /// The cam angles of the numbered positions: each phase's division points.
 pub fn positions(d: &Design, divisions: usize) -> Vec<f64> {
@@ -187,7 +188,14 @@ impl Placement {
 }
 
 /// Draws the nomogram of the box [`extent`] as `at` places it.
-pub fn draw(g: &mut Group, at: &Placement, d: &Design, phis: &[f64], labels: &mut Labels, words: &CamWords) {
+pub fn draw(
+    g: &mut Group,
+    (at, memo): (&Placement, &BoundaryMemo),
+    d: &Design,
+    phis: &[f64],
+    labels: &mut Labels,
+    words: &CamWords,
+) {
     let view = at.view(d.spec.sense);
     draw_follower(g, labels, view, at.extent, d, phis);
     draw_positions(g, labels, view, d, phis);
@@ -199,7 +207,7 @@ pub fn draw(g: &mut Group, at: &Placement, d: &Design, phis: &[f64], labels: &mu
         g.path(pts, false, MAIN);
     }
     let limiting = draw_limiting_lines(g, labels, view, at.extent, d, words);
-    draw_zone_boundary(g, labels, view, at.extent, d, &limiting);
+    draw_zone_boundary(g, labels, (view, memo), at.extent, d, &limiting);
     labels.add_text_ranked(view.p(zone_anchor(d, at.extent, at.mu)), Vec2::ZERO, words.sheet.zone(), 2.5, 3);
     draw_centre(g, labels, view, d, words);
 }
@@ -286,6 +294,26 @@ fn draw_limiting_lines(
     limiting
 }
 
+/// The zone boundary's heights already found, by the span of the picture they cross: the
+/// widths and letterings sheet 3 tries draw the same nomogram (the boundary's exact search
+/// was a sixth of the sheet, three times over).
+#[derive(Default)]
+pub struct BoundaryMemo(Mutex<Vec<(u64, Vec<f64>)>>);
+
+impl BoundaryMemo {
+    /// The region's floor at `us`, the columns across a picture of `span`.
+    fn floors(&self, r: &Region, span: f64, us: &[f64]) -> Vec<f64> {
+        let key = span.to_bits();
+        let found =
+            self.0.lock().unwrap_or_else(PoisonError::into_inner).iter().find(|e| e.0 == key).map(|e| e.1.clone());
+        found.unwrap_or_else(|| {
+            let floors = r.floors(us);
+            self.0.lock().unwrap_or_else(PoisonError::into_inner).push((key, floors.clone()));
+            floors
+        })
+    }
+}
+
 /// The zone's exact boundary across the picture, hatched on the zone's side; dashed where
 /// it does not run along a limiting line. The hatched band is kept out of every label: the
 /// placer sees only the strokes, so a label fitted between their tips (the zone's name in
@@ -293,7 +321,7 @@ fn draw_limiting_lines(
 fn draw_zone_boundary(
     g: &mut Group,
     labels: &mut Labels,
-    view: View,
+    (view, memo): (View, &BoundaryMemo),
     (lo, hi): (Vec2, Vec2),
     d: &Design,
     limiting: &[Line],
@@ -304,7 +332,7 @@ fn draw_zone_boundary(
     let us: Vec<f64> = (0..=BOUNDARY_POINTS).map(|k| span * (2.0 * k as f64 / BOUNDARY_POINTS as f64 - 1.0)).collect();
     let boundary: Vec<Point> = us
         .iter()
-        .zip(r.floors(&us))
+        .zip(memo.floors(r, span, &us))
         .map(|(&u, w)| r.point(u, w))
         .filter(|p| p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y)
         .map(|p| view.p(p))
