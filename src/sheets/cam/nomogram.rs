@@ -399,7 +399,14 @@ mod tests {
         let mu = 0.0005;
         let mut g = Group::new("nomogram", area);
         let at = Placement { area, extent: ext, mu };
-        draw(&mut g, &at, d, &phis, &mut Labels::new(), &CamWords::new(crate::drawing::labels::Language::Uz));
+        draw(
+            &mut g,
+            (&at, &BoundaryMemo::default()),
+            d,
+            &phis,
+            &mut Labels::new(),
+            &CamWords::new(crate::drawing::labels::Language::Uz),
+        );
         let view = at.view(d.spec.sense);
         let to_frame = |q: Point| {
             let x = (q.x - view.origin.x) * mu;
