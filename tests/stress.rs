@@ -272,10 +272,9 @@ fn cams_the_sweep_found_with_texts_crossed_are_clean() {
 /// modified-sine cam offset 11.18 mm (extension lines 1.1 mm apart on its nomogram), its value and r_min's
 /// competing for the one clean spot under the offset's close extension lines. Whichever is
 /// placed second is set across a line (r_min first: "e = 11.18 mm" across an extension line;
-/// e first: r_min across a limiting line). The labeller's candidates do not yet reach the
-/// free room beside the wedge.
+/// e first: r_min across a limiting line). Found clean on 2026-11-29 (the change that cleaned
+/// it was not bisected): no longer ignored, so that it stays clean.
 #[test]
-#[ignore = "open (issue 22): the offset's value and r_min compete for one spot"]
 fn cams_the_sweep_found_open_a_narrow_offset_and_r_min() {
     let text = format!(
         "{HEADER}cam:\n  follower: {{translating: {{stroke: 0.1599, offset: auto}}}}\n  roller: auto\n  phases_deg: {{rise: 156.90, far_dwell: 0.00, return: 202.10}}\n  law: modified-sine\n  pressure_angle_deg: 15.4\n  sense: cw\n"
