@@ -272,13 +272,46 @@ fn cams_the_sweep_found_with_texts_crossed_are_clean() {
 /// modified-sine cam offset 11.18 mm (extension lines 1.1 mm apart on its nomogram), its value and r_min's
 /// competing for the one clean spot under the offset's close extension lines. Whichever is
 /// placed second is set across a line (r_min first: "e = 11.18 mm" across an extension line;
-/// e first: r_min across a limiting line). The labeller's candidates do not yet reach the
-/// free room beside the wedge.
+/// e first: r_min across a limiting line). Found clean on 2026-11-29 (the change that cleaned
+/// it was not bisected): no longer ignored, so that it stays clean.
 #[test]
-#[ignore = "open (issue 22): the offset's value and r_min compete for one spot"]
 fn cams_the_sweep_found_open_a_narrow_offset_and_r_min() {
     let text = format!(
         "{HEADER}cam:\n  follower: {{translating: {{stroke: 0.1599, offset: auto}}}}\n  roller: auto\n  phases_deg: {{rise: 156.90, far_dwell: 0.00, return: 202.10}}\n  law: modified-sine\n  pressure_angle_deg: 15.4\n  sense: cw\n"
+    );
+    assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
+}
+
+/// An open find of a 5000-case sweep (seed 20261129), kept so that it is fixed and then held:
+/// a 20 mm rocker swinging 5.1° (a_w = 20.49 mm, r_min = 0.86 mm) has its nomogram in a
+/// strip 51 mm tall at 10:1, the pivot A 200 mm right of a B′ curve 25 mm across, and the
+/// zone under O cut 9 mm down by the pressure angle's diagram below. The zone's name
+/// (placed after r_min, a_w and the position numbers) finds no clean spot at either scale
+/// tried: r_min's and a_w's labels take the free strip right of O, and its least bad spot is
+/// by the view's title on a leader from under O across the position number "2" ("a line
+/// crosses “2”"). Neighbouring cases (45.2° at a 200° or 280° rise, 40° or 50° at this one)
+/// are clean. The zone's name needs a further anchor (or the strip more room) to be fixed.
+#[test]
+#[ignore = "open: the admissible zone's name finds no clean spot in a 51 mm strip; its leader crosses \"2\""]
+fn cams_the_sweep_found_open_a_rockers_zone_name_across_a_position_number() {
+    let text = format!(
+        "{HEADER}cam:\n  follower: {{rocker: {{length: 0.0200, swing_deg: 5.1}}}}\n  roller: auto\n  phases_deg: {{rise: 246.37, far_dwell: 0.00, return: 100.98}}\n  law: polynomial-345\n  pressure_angle_deg: 45.2\n  sense: cw\n"
+    );
+    assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
+}
+
+/// The same family, found by a 4000-case sweep (seed 31): a 20 mm rocker swinging 5.7°
+/// drawn at 2:1, its B′ curve 6 mm across with the pivot 40 mm to its right. Every position
+/// merges into five names ("0≡1≡15≡16≡17"), and the labels of the angles, the zone and r_min,
+/// 3.5 mm letters beside a picture a few mm tall, find no clean spot: the return's limiting
+/// line crosses "α_ret = 56.5°", "admissible zone" and "r_min = 0.4136 mm". Both finds are
+/// the stress generator's smallest rockers (its length is held at 20 mm while the stroke is
+/// small): a nomogram whose pivot sets its scale leaves its own labels no room.
+#[test]
+#[ignore = "open: a 20 mm rocker's nomogram at 2:1; the return's limiting line crosses three labels"]
+fn cams_the_sweep_found_open_a_small_rockers_labels_across_its_limiting_line() {
+    let text = format!(
+        "{HEADER}cam:\n  follower: {{rocker: {{length: 0.0200, swing_deg: 5.7}}}}\n  roller: auto\n  phases_deg: {{rise: 117.17, far_dwell: 0.00, return: 212.22}}\n  law: modified-sine\n  pressure_angle_deg: 56.5\n  sense: cw\n"
     );
     assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
 }
@@ -342,6 +375,21 @@ fn six_bars_a_crank_rocker_driving_a_slider() {
 fn a_six_bar_with_a_crank_a_fourteenth_of_its_frame_has_its_labels_clear() {
     let text = format!(
         "{HEADER}mechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [0.461563, 0]}}\n  crank: {{pivot: O, pin: A, length: 0.033111, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [0.271366, 0.529799], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: 2.425637, guide: {{through: [0, -0.183497], angle_deg: 0}}, branch: backward}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"
+    );
+    assert_eq!(verdict(&text), Ok(Outcome::Built));
+}
+
+/// Found by a 4000-case sweep (seed 31), within the generator's range (the crank 0.19 of
+/// its frame): a 78 mm crank beside a 2.47 m rod is a circle 12 mm across on paper, and its
+/// position numbers set off on leaders round it ("10", "11" below it) leave "8" crossed by a
+/// line ("a line crosses “8”"). The same crowding as the six-bar above with a crank 3 mm on
+/// paper, a size larger: left for the same fix (an enlarged detail of the crank, or the
+/// numbers on one leader each).
+#[test]
+#[ignore = "left: the position numbers crowd round a crank 12 mm across on paper; a line crosses \"8\""]
+fn a_six_bar_with_a_crank_a_fifth_of_its_frame_and_a_long_rod_has_its_numbers_clear() {
+    let text = format!(
+        "{HEADER}mechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [0.401235, 0]}}\n  crank: {{pivot: O, pin: A, length: 0.077826, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [0.238488, 0.485740], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: 2.468025, guide: {{through: [0, 0.169785], angle_deg: 0}}, branch: forward}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"
     );
     assert_eq!(verdict(&text), Ok(Outcome::Built));
 }
