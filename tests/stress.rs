@@ -229,13 +229,15 @@ fn pairs_the_sweep_found_off_the_page_fit_their_region() {
 /// 20.26°) and a 1° phase at either end of the axis: their values' shelves stay clear of each
 /// other and inside the column (the first shelves went off the column's right edge and across
 /// each other); a 1° rise's tables.
+/// A cam the sweeps found: its follower (YAML), phases in degrees, law and allowed angle.
+fn cam(follower: &str, (rise, dwell, ret): (f64, f64, f64), law: &str, alpha: f64) -> String {
+    format!(
+        "{HEADER}cam:\n  follower: {follower}\n  roller: auto\n  phases_deg: {{rise: {rise}, far_dwell: {dwell}, return: {ret}}}\n  law: {law}\n  pressure_angle_deg: {alpha}\n  sense: cw\n"
+    )
+}
+
 #[test]
 fn cams_the_sweep_found_with_texts_crossed_are_clean() {
-    let cam = |follower: &str, (rise, dwell, ret): (f64, f64, f64), law: &str, alpha: f64| {
-        format!(
-            "{HEADER}cam:\n  follower: {follower}\n  roller: auto\n  phases_deg: {{rise: {rise}, far_dwell: {dwell}, return: {ret}}}\n  law: {law}\n  pressure_angle_deg: {alpha}\n  sense: cw\n"
-        )
-    };
     let squeezed = cam("{translating: {stroke: 0.87, offset: auto}}", (283.27, 18.4, 3.53), "trapezoid", 31.8);
     for text in [
         squeezed.clone(),
@@ -276,9 +278,7 @@ fn cams_the_sweep_found_with_texts_crossed_are_clean() {
 /// it was not bisected): no longer ignored, so that it stays clean.
 #[test]
 fn cams_the_sweep_found_open_a_narrow_offset_and_r_min() {
-    let text = format!(
-        "{HEADER}cam:\n  follower: {{translating: {{stroke: 0.1599, offset: auto}}}}\n  roller: auto\n  phases_deg: {{rise: 156.90, far_dwell: 0.00, return: 202.10}}\n  law: modified-sine\n  pressure_angle_deg: 15.4\n  sense: cw\n"
-    );
+    let text = cam("{translating: {stroke: 0.1599, offset: auto}}", (156.90, 0.0, 202.10), "modified-sine", 15.4);
     assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
 }
 
@@ -294,9 +294,7 @@ fn cams_the_sweep_found_open_a_narrow_offset_and_r_min() {
 #[test]
 #[ignore = "open: the admissible zone's name finds no clean spot in a 51 mm strip; its leader crosses \"2\""]
 fn cams_the_sweep_found_open_a_rockers_zone_name_across_a_position_number() {
-    let text = format!(
-        "{HEADER}cam:\n  follower: {{rocker: {{length: 0.0200, swing_deg: 5.1}}}}\n  roller: auto\n  phases_deg: {{rise: 246.37, far_dwell: 0.00, return: 100.98}}\n  law: polynomial-345\n  pressure_angle_deg: 45.2\n  sense: cw\n"
-    );
+    let text = cam("{rocker: {length: 0.0200, swing_deg: 5.1}}", (246.37, 0.0, 100.98), "polynomial-345", 45.2);
     assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
 }
 
@@ -310,9 +308,7 @@ fn cams_the_sweep_found_open_a_rockers_zone_name_across_a_position_number() {
 #[test]
 #[ignore = "open: a 20 mm rocker's nomogram at 2:1; the return's limiting line crosses three labels"]
 fn cams_the_sweep_found_open_a_small_rockers_labels_across_its_limiting_line() {
-    let text = format!(
-        "{HEADER}cam:\n  follower: {{rocker: {{length: 0.0200, swing_deg: 5.7}}}}\n  roller: auto\n  phases_deg: {{rise: 117.17, far_dwell: 0.00, return: 212.22}}\n  law: modified-sine\n  pressure_angle_deg: 56.5\n  sense: cw\n"
-    );
+    let text = cam("{rocker: {length: 0.0200, swing_deg: 5.7}}", (117.17, 0.0, 212.22), "modified-sine", 56.5);
     assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
 }
 

@@ -19,20 +19,13 @@ pub(super) fn largest(
     min: (f64, f64),
     score: impl Fn(f64, f64) -> f64,
 ) -> Option<Rect> {
-    // A region may reach over the title block's column (the mesh of a pair alone does).
-    let block = frame::title_block_rect().inflate(2.0, 2.0);
     let (nx, ny) = ((area.width() / cell).floor() as usize, (area.height() / cell).floor() as usize);
-    let at = |i: usize, j: usize| {
-        let (x, y) = (area.x0 + i as f64 * cell, area.y0 + j as f64 * cell);
-        Rect::new(x, y, x + cell, y + cell)
-    };
     let clear = clear_cells(obstacles, (area, cell), (nx, ny));
     let mut heights = vec![0usize; nx];
     let mut best: Option<(f64, Rect)> = None;
     for j in 0..ny {
         for (i, h) in heights.iter_mut().enumerate() {
-            let c = at(i, j).inflate(1.0, 1.0);
-            *h = if c.intersect(block).area() <= 0.0 && clear[j * nx + i] { *h + 1 } else { 0 };
+            *h = if clear[j * nx + i] { *h + 1 } else { 0 };
         }
         for i0 in 0..nx {
             let mut h = usize::MAX;
@@ -66,12 +59,14 @@ pub(super) fn largest(
 const BLOCK: usize = 8;
 
 /// Whether `obstacles` leave each cell of the `nx` × `ny` grid of `cell` over `area` clear
-/// (grown by 1 mm), row by row. A block of cells clear as a whole has every cell clear (a
+/// (grown by 1 mm) and off the title block, row by row. A block of cells clear as a whole has every cell clear (a
 /// box inside a clear box is clear), so the empty paper is asked a block at a time and
 /// only the blocks something meets cell by cell.
 fn clear_cells(obstacles: &Obstacles, (area, cell): (Rect, f64), (nx, ny): (usize, usize)) -> Vec<bool> {
     let col = |i: usize| area.x0 + i as f64 * cell;
     let row = |j: usize| area.y0 + j as f64 * cell;
+    // A region may reach over the title block's column (the mesh of a pair alone does).
+    let block = frame::title_block_rect().inflate(2.0, 2.0);
     let mut clear = vec![false; nx * ny];
     for bj in (0..ny).step_by(BLOCK) {
         for bi in (0..nx).step_by(BLOCK) {
@@ -81,7 +76,7 @@ fn clear_cells(obstacles: &Obstacles, (area, cell): (Rect, f64), (nx, ny): (usiz
             for j in bj..j1 {
                 for i in bi..i1 {
                     let c = Rect::new(col(i), row(j), col(i) + cell, row(j) + cell).inflate(1.0, 1.0);
-                    clear[j * nx + i] = all || obstacles.is_clear(c);
+                    clear[j * nx + i] = c.intersect(block).area() <= 0.0 && (all || obstacles.is_clear(c));
                 }
             }
         }
