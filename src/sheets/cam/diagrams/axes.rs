@@ -45,31 +45,39 @@ pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], s
     let drawn = Obstacles::of_items(&g.items[start..]);
     let x0 = plot.at(plot.x.lo, 0.0).x;
     let clear = |r: Rect| drawn.is_clear(r.inflate(0.3, 0.3));
-    let places: Vec<_> = ticks
+    let places: Vec<Place> = ticks
         .iter()
         .map(|(v, value)| {
             let y_tick = plot.at(0.0, *v).y;
             let y = y_tick + VALUE_H / 2.0;
             let w = LabelText::new(value.as_str(), "").width(VALUE_H);
             let xr = x0 + VALUE_TICK + 0.8;
-            let right = Rect::new(x0 + 0.6, y - VALUE_H, xr + w, y);
-            let left = Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y);
-            (*v > 0.0, y_tick, clear(right), clear(left))
+            let right = clear(Rect::new(x0 + 0.6, y - VALUE_H, xr + w, y));
+            let left = clear(Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y));
+            Place { above: *v > 0.0, y_tick, right, left }
         })
         .collect();
-    let all =
-        |above: bool, side: fn(&(bool, f64, bool, bool)) -> bool| places.iter().filter(|p| p.0 == above).all(side);
-    for ((_, value), &(above, y_tick, right_clear, left_clear)) in ticks.iter().zip(&places) {
-        let y = y_tick + VALUE_H / 2.0;
-        let right = if all(above, |p| p.2) {
-            true
-        } else if all(above, |p| p.3) {
-            false
-        } else if right_clear || left_clear {
-            right_clear
+    // Per side of the x axis: right of the y axis if all its values fit there, else left if
+    // they all fit there, else each its own (`None`).
+    let half = |above: bool| {
+        let mut side = places.iter().filter(|p| p.above == above);
+        if side.clone().all(|p| p.right) {
+            Some(true)
+        } else if side.all(|p| p.left) {
+            Some(false)
         } else {
-            continue;
+            None
+        }
+    };
+    let sides = [half(false), half(true)];
+    for ((_, value), p) in ticks.iter().zip(&places) {
+        let y = p.y_tick + VALUE_H / 2.0;
+        let right = match sides[usize::from(p.above)] {
+            Some(right) => right,
+            None if p.right || p.left => p.right,
+            None => continue,
         };
+        let y_tick = p.y_tick;
         if right {
             g.line(Point::new(x0, y_tick), Point::new(x0 + VALUE_TICK, y_tick), THIN);
             g.text(Text::new(Point::new(x0 + VALUE_TICK + 0.8, y), value.clone(), VALUE_H, Anchor::Start));
@@ -77,6 +85,15 @@ pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], s
             g.text(Text::new(Point::new(x0 - VALUE_TICK - 0.8, y), value.clone(), VALUE_H, Anchor::End));
         }
     }
+}
+
+/// Where a tick's value may stand: its tick's height and whether the x axis' upper side
+/// holds it, and whether its place right and left of the y axis is clear.
+struct Place {
+    above: bool,
+    y_tick: f64,
+    right: bool,
+    left: bool,
 }
 
 /// An analog's ticks each side of its axis (`peak` its largest value): at a round step
