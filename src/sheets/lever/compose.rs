@@ -5,6 +5,8 @@
 //! makes it; the velocity plans fill the rest of the top band; the acceleration plans at
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
+mod widen;
+
 use super::choice::{EMPTY_MOST, Floors, better, empty};
 use super::forces_view::{CellMemo, ForceScales, ForcesInput, draw_forces};
 use super::labels::LeverWords;
@@ -108,14 +110,31 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     let floors = rule_floors.with_tables_of(&out);
     // Composing more costs only the sheets left too empty, and stops once one is not.
     let mut candidates: Vec<Composed> = other.into_iter().collect();
+    let admissible = |c: &Composed, out: &Composed| floors.kept(c) && (c.layout.is_clean() || !out.layout.is_clean());
+    // The variants that could win, with how empty each is, to widen below.
+    let mut kept: Vec<(f64, Variant)> = Vec::new();
     for [a, b] in FULLER {
         if empty(&out) <= EMPTY_MOST {
             break;
         }
-        let (a, b) = rayon::join(|| variant(a), || variant(b));
-        candidates.extend([a.ok(), b.ok()].into_iter().flatten());
+        let (ca, cb) = rayon::join(|| variant(a), || variant(b));
+        for (v, c) in [(a, ca), (b, cb)] {
+            let Ok(c) = c else { continue };
+            if admissible(&c, &out) {
+                kept.push((empty(&c), v));
+            }
+            candidates.push(c);
+        }
         for c in candidates.drain(..) {
-            if floors.kept(&c) && empty(&c) < empty(&out) && (c.layout.is_clean() || !out.layout.is_clean()) {
+            if admissible(&c, &out) && empty(&c) < empty(&out) {
+                out = c;
+            }
+        }
+    }
+    // Still too empty: the least empty again with the force column widened (`widen`).
+    if empty(&out) > EMPTY_MOST {
+        for c in widen::least_empty_widened(&variant, kept) {
+            if admissible(&c, &out) && empty(&c) < empty(&out) {
                 out = c;
             }
         }
@@ -134,6 +153,9 @@ struct Variant {
     tables_beside: bool,
     corner: bool,
     compact_groups: bool,
+    /// Whether a force column narrower than the widest is widened as far as every plan
+    /// keeps its scale (see `widen`).
+    widen: bool,
 }
 
 impl Variant {
@@ -144,6 +166,7 @@ impl Variant {
         tables_beside: false,
         corner: false,
         compact_groups: false,
+        widen: false,
     };
 }
 
@@ -193,13 +216,20 @@ fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> 
         let next = arrange(w, &memo)?;
         let grown = next.smallest_plan_mm(plans).unwrap_or(0.0);
         if next.mech.comfortable {
-            narrower.push((grown, next));
+            narrower.push((grown, (w, next)));
         }
     }
     narrower.sort_by(|a, b| b.0.total_cmp(&a.0));
     let (growing, rest): (Vec<_>, Vec<_>) = narrower.into_iter().partition(|(grown, _)| *grown > 1.1 * smallest);
+    let narrow = |next| {
+        if v.widen {
+            widen::widened(|w| arrange(w, &memo), |a| draw(inp, k, plans, a), next)
+        } else {
+            draw(inp, k, plans, next.1)
+        }
+    };
     for (_, next) in growing {
-        let drawn = draw(inp, k, plans, next)?;
+        let drawn = narrow(next)?;
         if drawn.layout.is_clean() {
             return Ok(drawn);
         }
@@ -209,7 +239,7 @@ fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> 
         return Ok(widest);
     }
     for (_, next) in rest {
-        let drawn = draw(inp, k, plans, next)?;
+        let drawn = narrow(next)?;
         if drawn.layout.is_clean() {
             return Ok(drawn);
         }
