@@ -71,3 +71,35 @@ fn sheet_3_draws_its_nomogram_and_profile_at_gost_scales() {
     });
     assert!(failures.is_empty(), "{failures:#?}");
 }
+
+/// The displacement diagram's scale (μ_s, or μ_β with its degrees) stands beside its axis's
+/// values: it stood at the column's left edge, 95 mm from the worked example's axis, where
+/// the diagrams below keep their poles' rays (this one has none).
+#[test]
+fn the_displacement_scale_stands_beside_its_axis() {
+    use tmm_sheets::drawing::scene::Item;
+    for (name, text) in cam_projects() {
+        let p = pipeline::load(&text).unwrap();
+        let b = pipeline::build(&p, &[3]).unwrap().remove(0);
+        let (g, part) = b
+            .output
+            .scene
+            .groups
+            .iter()
+            .find_map(|g| g.parts.iter().find(|p| p.id == "diagram.s").map(|p| (g, p)))
+            .unwrap_or_else(|| panic!("{name}: no displacement diagram"));
+        let items = &g.items[part.items.clone()];
+        let mu = items
+            .iter()
+            .find_map(|i| match i {
+                Item::Text(t) if t.text == "μ" => Some(i.bbox()),
+                _ => None,
+            })
+            .unwrap_or_else(|| panic!("{name}: no scale text"));
+        // The axis: the leftmost stroke (the tick marks reach 1.5 mm left of it).
+        let axis =
+            items.iter().filter(|i| matches!(i, Item::Path { .. })).map(|i| i.bbox().x0).fold(f64::MAX, f64::min);
+        let gap = axis - mu.x1;
+        assert!((0.0..20.0).contains(&gap), "{name}: the scale text ends {gap:.1} mm left of the axis");
+    }
+}

@@ -61,6 +61,15 @@ impl Plot {
         g.path(data.iter().map(|&(x, y)| self.at(x, y)).collect(), false, pen);
     }
 
+    /// The left end of the y axis's values and name as [`Plot::draw_axes`] writes them, mm:
+    /// what a text set left of the axis keeps clear of.
+    pub fn y_labels_left(&self) -> f64 {
+        let x0 = self.at(self.x.lo, 0.0).x;
+        let m = crate::font::metrics();
+        let values = self.y.ticks.iter().map(|(_, l)| x0 - TICK - 0.8 - m.width(l, TEXT));
+        values.chain([x0 - 1.0 - m.width(&self.y.name, TEXT)]).fold(x0 - TICK, f64::min)
+    }
+
     /// The axes with arrows, tick marks, tick values and names (labels placed afterwards
     /// keep clear of them).
     pub fn draw_axes(&self, g: &mut Group) {

@@ -160,13 +160,17 @@ impl Stack<'_> {
         ordinates(g, &s_plot, &s_drawn);
         number_divisions(&s_plot, self.integrated, labels);
         phase_dimensions(g, &s_plot, p, labels, w);
-        let s_top = Point::new(self.left, s_plot.origin.y - p.lift / sc.mu_s);
-        if self.rocker {
+        let lines = if self.rocker {
             let deg = format!("({} {})", fmt::trimmed(sc.mu_s.to_degrees(), lang), l.unit_deg_per_mm());
-            scale_text(g, s_top, &[mu("β", sc.mu_s, l.unit_rad_per_mm(), lang), LabelText::new(deg, "")]);
+            vec![mu("β", sc.mu_s, l.unit_rad_per_mm(), lang), LabelText::new(deg, "")]
         } else {
-            scale_text(g, s_top, &[mu("s", sc.mu_s, self.unit(), lang)]);
-        }
+            vec![mu("s", sc.mu_s, self.unit(), lang)]
+        };
+        // Beside the axis's values, not at the column's left edge: that room is the poles'
+        // of the diagrams below, and this one has none (its μ stood 95 mm from its axis).
+        let widest = lines.iter().map(|t| t.width(2.5)).fold(0.0, f64::max);
+        let x = (s_plot.y_labels_left() - SCALE_GAP - widest).max(self.left);
+        scale_text(g, Point::new(x, s_plot.origin.y - p.lift / sc.mu_s), &lines);
         s_plot.origin.y + PHASES + GAP
     }
 
@@ -383,6 +387,9 @@ const POLE_NAME: f64 = 26.0;
 fn integrated_curve(integrated: &[Integrated; 2], f: impl Fn(&Integrated) -> &Vec<f64>) -> Vec<(f64, f64)> {
     integrated.iter().flat_map(|i| i.phi.iter().zip(f(i)).map(|(&p, &v)| (p.to_degrees(), v))).collect()
 }
+
+/// Between a diagram's scale text and its axis's values, mm.
+const SCALE_GAP: f64 = 4.0;
 
 /// Lines of scale text at the graph's top left (above the pole's rays), from `at` down.
 fn scale_text(g: &mut Group, at: Point, lines: &[LabelText]) {
