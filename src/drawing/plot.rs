@@ -66,8 +66,21 @@ impl Plot {
     pub fn y_labels_left(&self) -> f64 {
         let x0 = self.at(self.x.lo, 0.0).x;
         let m = crate::font::metrics();
-        let values = self.y.ticks.iter().map(|(_, l)| x0 - TICK - 0.8 - m.width(l, TEXT));
-        values.chain([x0 - 1.0 - m.width(&self.y.name, TEXT)]).fold(x0 - TICK, f64::min)
+        let values = self.y.ticks.iter().map(|(v, l)| self.y_value(*v, l));
+        // Every one anchored at its end: its left is its end less its width.
+        values.chain([self.y_name()]).map(|t| t.at.x - m.width(&t.text, t.h)).fold(x0 - TICK, f64::min)
+    }
+
+    /// A y tick's value, left of its tick mark.
+    fn y_value(&self, v: f64, label: &str) -> Text {
+        let p = Point::new(self.at(self.x.lo, 0.0).x, self.at(0.0, v).y);
+        Text::new(Point::new(p.x - TICK - 0.8, p.y + TEXT / 2.0), label.to_string(), TEXT, Anchor::End)
+    }
+
+    /// The y axis's name, left of its arrow.
+    fn y_name(&self) -> Text {
+        let (x0, a) = (self.at(self.x.lo, 0.0).x, self.area());
+        Text::new(Point::new(x0 - 1.0, a.y0 - OVERRUN + TEXT), self.y.name.clone(), TEXT, Anchor::End)
     }
 
     /// The axes with arrows, tick marks, tick values and names (labels placed afterwards
@@ -91,7 +104,7 @@ impl Plot {
             let p = Point::new(x0, self.at(0.0, *v).y);
             g.line(p, Point::new(p.x - TICK, p.y), THIN);
             if !label.is_empty() {
-                text(g, Text::new(Point::new(p.x - TICK - 0.8, p.y + TEXT / 2.0), label.clone(), TEXT, Anchor::End));
+                text(g, self.y_value(*v, label));
             }
         }
         text(
@@ -103,7 +116,7 @@ impl Plot {
                 Anchor::Start,
             ),
         );
-        text(g, Text::new(Point::new(x0 - 1.0, a.y0 - OVERRUN + TEXT), self.y.name.clone(), TEXT, Anchor::End));
+        text(g, self.y_name());
     }
 }
 

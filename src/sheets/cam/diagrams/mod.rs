@@ -168,7 +168,7 @@ impl Stack<'_> {
         };
         // Beside the axis's values, not at the column's left edge: that room is the poles'
         // of the diagrams below, and this one has none (its μ stood 95 mm from its axis).
-        let widest = lines.iter().map(|t| t.width(2.5)).fold(0.0, f64::max);
+        let widest = lines.iter().map(|t| t.width(SCALE_TEXT)).fold(0.0, f64::max);
         let x = (s_plot.y_labels_left() - SCALE_GAP - widest).max(self.left);
         scale_text(g, Point::new(x, s_plot.origin.y - p.lift / sc.mu_s), &lines);
         s_plot.origin.y + PHASES + GAP
@@ -388,13 +388,14 @@ fn integrated_curve(integrated: &[Integrated; 2], f: impl Fn(&Integrated) -> &Ve
     integrated.iter().flat_map(|i| i.phi.iter().zip(f(i)).map(|(&p, &v)| (p.to_degrees(), v))).collect()
 }
 
-/// Between a diagram's scale text and its axis's values, mm.
+/// Between a diagram's scale text and its axis's values, and the text's height, mm.
 const SCALE_GAP: f64 = 4.0;
+const SCALE_TEXT: f64 = 2.5;
 
 /// Lines of scale text at the graph's top left (above the pole's rays), from `at` down.
 fn scale_text(g: &mut Group, at: Point, lines: &[LabelText]) {
     for (k, t) in lines.iter().enumerate() {
-        t.draw(g, Point::new(at.x, at.y + 3.0 + 4.5 * k as f64), 2.5, Anchor::Start);
+        t.draw(g, Point::new(at.x, at.y + 3.0 + 4.5 * k as f64), SCALE_TEXT, Anchor::Start);
     }
 }
 
@@ -411,7 +412,7 @@ fn top_ray(plot: &Plot, h: f64, ys: &[f64], mu: f64) -> (Point, Point) {
 fn clear_of_rays(lines: &[LabelText], (x, top, axis): (f64, f64, f64), ray: (Point, Point)) -> (Point, Vec<LabelText>) {
     let at = above_pole(x, top, axis, lines);
     let crosses = |t: &LabelText, k: usize| {
-        let b = t.text(Point::new(at.x, at.y + 3.0 + 4.5 * k as f64), 2.5, Anchor::Start).bbox();
+        let b = t.text(Point::new(at.x, at.y + 3.0 + 4.5 * k as f64), SCALE_TEXT, Anchor::Start).bbox();
         crate::drawing::obstacles::segment_meets_rect(ray.0, ray.1, b.inflate(0.5, 0.5))
     };
     let broken: Vec<LabelText> = lines

@@ -3,6 +3,7 @@
 //! plan exactly as it was while the force drawings get the room: the kulisa's group
 //! polygon went from μ_P = 1 to 0.6 N/mm and its sheet from 51.5 % empty to under half.
 
+use super::super::choice::empty;
 use super::{Arrangement, Composed, FORCES_WIDTHS, Variant};
 use crate::drawing::text::TooLong;
 use rayon::prelude::*;
@@ -40,11 +41,13 @@ pub(super) fn widened<'a>(
     };
     // A wider column leaves the plans less room, so the widths that keep them run from
     // `w` up to some limit: found by bisection on whole mm.
-    let (mut lo, mut hi) = (w, FORCES_WIDTHS[0]);
+    // The widest's arrangement is kept from the search: drawn first below.
+    let (mut lo, mut hi, mut widest) = (w, FORCES_WIDTHS[0], None);
     while hi - lo > 1.0 {
         let mid = ((lo + hi) / 2.0).floor();
-        if keeps(&arrange(mid)?) {
-            lo = mid;
+        let b = arrange(mid)?;
+        if keeps(&b) {
+            (lo, widest) = (mid, Some(b));
         } else {
             hi = mid;
         }
@@ -55,13 +58,15 @@ pub(super) fn widened<'a>(
         if width <= w {
             break;
         }
-        let b = arrange(width)?;
+        let b = match widest.take() {
+            Some(b) => b,
+            None => arrange(width)?,
+        };
         if !keeps(&b) {
             continue;
         }
         let drawn = draw(b)?;
-        let share = |c: &Composed| c.layout.empty_share.unwrap_or(1.0);
-        if drawn.layout.is_clean() && best.as_ref().is_none_or(|c| share(&drawn) < share(c)) {
+        if drawn.layout.is_clean() && best.as_ref().is_none_or(|c| empty(&drawn) < empty(c)) {
             best = Some(drawn);
         }
     }
