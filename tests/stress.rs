@@ -363,11 +363,9 @@ fn six_bars_a_crank_rocker_driving_a_slider() {
 
 /// Found by the six-bar sweep before its crank was kept to at least 0.15 of the frame: a
 /// crank of 33 mm in a 0.46 m frame with a 2.4 m rod is ~3 mm on paper, and its twelve
-/// position numbers, ω₁ and the letters crowd round it (a line crosses "ω₁"). Left for issue
-/// 22 (the mechanism's labels on a tiny crank: an enlarged detail of the crank, or the
-/// numbers on one leader each); run with `--ignored` to see it.
+/// position numbers, ω₁ and the letters crowded round it (a line crossed "ω₁"). The crank
+/// now has its enlarged detail beside the mechanism, where they stand clear.
 #[test]
-#[ignore = "left: the mechanism's labels crowd round a crank 3 mm on paper"]
 fn a_six_bar_with_a_crank_a_fourteenth_of_its_frame_has_its_labels_clear() {
     let text = format!(
         "{HEADER}mechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [0.461563, 0]}}\n  crank: {{pivot: O, pin: A, length: 0.033111, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [0.271366, 0.529799], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: 2.425637, guide: {{through: [0, -0.183497], angle_deg: 0}}, branch: backward}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"
@@ -378,11 +376,9 @@ fn a_six_bar_with_a_crank_a_fourteenth_of_its_frame_has_its_labels_clear() {
 /// Found by a 4000-case sweep (seed 31), within the generator's range (the crank 0.19 of
 /// its frame): a 78 mm crank beside a 2.47 m rod is a circle 12 mm across on paper, and its
 /// position numbers set off on leaders round it ("10", "11" below it) leave "8" crossed by a
-/// line ("a line crosses “8”"). The same crowding as the six-bar above with a crank 3 mm on
-/// paper, a size larger: left for the same fix (an enlarged detail of the crank, or the
-/// numbers on one leader each).
+/// line ("a line crossed “8”"). The same crowding as the six-bar above with a crank 3 mm on
+/// paper, a size larger: its numbers too are in the crank's enlarged detail now.
 #[test]
-#[ignore = "left: the position numbers crowd round a crank 12 mm across on paper; a line crosses \"8\""]
 fn a_six_bar_with_a_crank_a_fifth_of_its_frame_and_a_long_rod_has_its_numbers_clear() {
     let text = format!(
         "{HEADER}mechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [0.401235, 0]}}\n  crank: {{pivot: O, pin: A, length: 0.077826, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [0.238488, 0.485740], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: 2.468025, guide: {{through: [0, 0.169785], angle_deg: 0}}, branch: forward}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"

@@ -38,6 +38,9 @@ use kurbo::{Point, Rect};
 pub struct Scales {
     /// m/mm
     pub mu_l: f64,
+    /// The crank's enlarged detail's μ_l, m/mm, when the crank is too small on paper.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub detail_mu_l: Option<f64>,
     /// (m/s)/mm, shared by every velocity plan (none without plans).
     pub mu_v: Option<f64>,
     /// (m/s²)/mm, shared by every acceleration plan (none without plans).
@@ -385,7 +388,7 @@ fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<
     let tables = tables_group(&notes, &words);
     let (forces, force_scales, force_segments) = force_groups(force_region, force_input.as_ref(), mech.region, &answer);
     drawn_segments.extend(force_segments);
-    let mu_l = mech.mu_l;
+    let (mu_l, detail_mu_l) = (mech.mu_l, mech.detail_mu_l);
     let mut groups = vec![mech.group, vel, acc];
     groups.extend(tables);
     groups.extend(forces);
@@ -406,7 +409,7 @@ fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<
         composition,
         scene,
         layout,
-        scales: Scales { mu_l, mu_v, mu_a, velocity_plans: vdrawn, acceleration_plans: adrawn },
+        scales: Scales { mu_l, detail_mu_l, mu_v, mu_a, velocity_plans: vdrawn, acceleration_plans: adrawn },
         force_scales,
         trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
     })

@@ -58,6 +58,12 @@ impl LeverLabels {
     }
 }
 
+/// Letters that name the sheet's enlarged details (GOST 2.305 names a detail by a capital
+/// letter), none a symbol of the course's quantities: the force polygons' insets take them
+/// from the front, the crank's detail the last free one, so that two details never share
+/// a letter.
+pub const DETAIL_LETTERS: &str = "KLTUVWXYZ";
+
 #[cfg(test)]
 mod tests {
     use super::*;

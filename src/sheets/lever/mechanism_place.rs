@@ -5,7 +5,7 @@
 use super::compose::{Column, HEADER, Input, TOP, force_region_below, region_header, side_region};
 use super::forces_view::{ForcesInput, fit_comfortably};
 use super::labels::LeverWords;
-use super::mechanism_view::{MechanismView, TRAJECTORY, world_extent};
+use super::mechanism_view::{DETAIL_GAP, DetailAt, DetailPlace, MechanismView, TRAJECTORY, detail_place, world_extent};
 use crate::drawing::fmt;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
@@ -37,6 +37,8 @@ pub(super) struct MechanismPlace {
     draw_h: f64,
     /// Whether the force drawings fit below it comfortably.
     pub(super) comfortable: bool,
+    /// The crank's enlarged detail beside the drawing, when the crank is too small on paper.
+    detail: Option<DetailPlace>,
 }
 
 /// The mechanism drawn in its region.
@@ -44,6 +46,8 @@ pub(super) struct MechanismDrawn {
     pub(super) group: Group,
     pub(super) region: Rect,
     pub(super) mu_l: f64,
+    /// The crank's detail's μ_l, m/mm, where it has one.
+    pub(super) detail_mu_l: Option<f64>,
 }
 
 /// The mechanism's place: the largest GOST μ_l that fits its box, the region shrunk to the
@@ -57,6 +61,9 @@ pub(super) fn mechanism_place(
 ) -> MechanismPlace {
     let world = world_extent(&inp.project.mechanism, k, &inp.project.kulisa_lengths);
     let words = LeverWords::new(inp.ctx.info.language);
+    let m = &inp.project.mechanism;
+    let left = k.assigned.state.points[m.crank().pivot].p.x < world.center().x;
+    let detail = |mu_l: f64| detail_place(m, mu_l, left, &words);
     // Where the tables go beside the mechanism, a region wider than its drawing leaves
     // paper empty that they could use; narrower than its header, it would cross the
     // region beside it.
@@ -64,14 +71,14 @@ pub(super) fn mechanism_place(
     let header_w = |mu_l: f64| if beside { header_width(mu_l, k, &words).max(MECH_MIN_W_BESIDE) } else { MECH_MIN_W };
     let heights: &[f64] = if forces.is_some() { &MECH_HEIGHTS_FORCES } else { &[MECH_MAX_H] };
     let fits = |h: f64| {
-        let (r, _, _) = mechanism_region(world, h, column.inner, header_w);
+        let r = mechanism_region(world, h, column.inner, header_w, &detail).region;
         let below = force_region_below(r, column);
         forces.is_none_or(|fi| fit_comfortably(fi, below, side_region(r, below)))
     };
     let comfortable = heights.iter().copied().find(|&h| fits(h));
     let max_h = comfortable.unwrap_or(heights[heights.len() - 1]);
-    let (region, mu_l, draw_h) = mechanism_region(world, max_h, column.inner, header_w);
-    MechanismPlace { world, region, mu_l, draw_h, comfortable: comfortable.is_some() }
+    let Sized { region, mu_l, draw_h, detail } = mechanism_region(world, max_h, column.inner, header_w, &detail);
+    MechanismPlace { world, region, mu_l, draw_h, comfortable: comfortable.is_some(), detail }
 }
 
 /// The mechanism drawn at its place.
@@ -81,20 +88,38 @@ pub(super) fn mechanism_group(
     words: &LeverWords,
     place: MechanismPlace,
 ) -> MechanismDrawn {
-    let MechanismPlace { world, region, mu_l, draw_h, .. } = place;
+    let MechanismPlace { world, region, mu_l, draw_h, detail, .. } = place;
     let m = &inp.project.mechanism;
     let mut group = Group::new("mechanism", region);
+    // The drawing centred in what a detail beside or below it leaves of the region.
+    let band_h = match detail {
+        Some(d) if d.at == DetailAt::Below => world.height() / mu_l,
+        _ => draw_h,
+    };
+    let drawing = match detail {
+        Some(d) if d.at == DetailAt::Beside => beside_detail(region, &d).0,
+        _ => region,
+    };
     let origin = Point::new(
-        region.center().x - world.center().x / mu_l,
-        region.y0 + HEADER + MECH_PAD + draw_h / 2.0 + world.center().y / mu_l,
+        drawing.center().x - world.center().x / mu_l,
+        region.y0 + HEADER + MECH_PAD + band_h / 2.0 + world.center().y / mu_l,
     );
+    let detail = detail.map(|d| match d.at {
+        DetailAt::Beside => (d, Some(beside_detail(region, &d).1)),
+        DetailAt::Below => {
+            let crank_x = origin.x + k.assigned.state.points[m.crank().pivot].p.x / mu_l;
+            (d, Some(below_detail(region, band_h, crank_x, &d)))
+        }
+        DetailAt::Inside => (d, None),
+    });
     mechanism_header(&mut group, region, mu_l, k, words);
     trajectory_legend(&mut group, region, words);
     let mut labels = Labels::new();
-    MechanismView { m, k, view: View::new(origin, mu_l), kulisa: &inp.project.kulisa_lengths, words }
-        .draw(&mut group, &mut labels);
+    let detail_mu_l =
+        MechanismView { m, k, view: View::new(origin, mu_l), kulisa: &inp.project.kulisa_lengths, words, detail }
+            .draw(&mut group, &mut labels);
     labels.place(&mut group, region.inflate(-0.5, -0.5));
-    MechanismDrawn { group, region, mu_l }
+    MechanismDrawn { group, region, mu_l, detail_mu_l }
 }
 
 /// The mechanism's title, μ_l, the structure formula and the degrees of freedom.
@@ -136,18 +161,83 @@ fn trajectory_legend(g: &mut Group, region: Rect, words: &LeverWords) {
     g.text(Text::new(Point::new(region.x0 + 18.0, legend_y), words.sheet.trajectories(), 2.5, Anchor::Start));
 }
 
+/// A mechanism region, its scale, the drawing's height and the crank's detail.
+struct Sized {
+    region: Rect,
+    mu_l: f64,
+    draw_h: f64,
+    detail: Option<DetailPlace>,
+}
+
 /// The mechanism's region for a box at most `max_h` tall, its drawing at least
-/// `least_w(μ_l)` wide at the scale chosen: its scale, and the drawing's height.
-fn mechanism_region(world: Rect, max_h: f64, inner: Rect, least_w: impl Fn(f64) -> f64) -> (Rect, f64, f64) {
+/// `least_w(μ_l)` wide at the scale chosen: its scale, the drawing's height and, for a crank
+/// too small on paper, its detail and where it goes.
+fn mechanism_region(
+    world: Rect,
+    max_h: f64,
+    inner: Rect,
+    least_w: impl Fn(f64) -> f64,
+    detail: &dyn Fn(f64) -> Option<DetailPlace>,
+) -> Sized {
     let (avail_w, avail_h) = (MECH_MAX_W - 2.0 * MECH_PAD, max_h - HEADER - 2.0 * MECH_PAD);
     let mu_l = scale::length_scale((world.width() / avail_w).max(world.height() / avail_h));
-    let draw_w = (world.width() / mu_l).max(least_w(mu_l));
-    let draw_h = world.height() / mu_l;
+    let (world_w, world_h) = (world.width() / mu_l, world.height() / mu_l);
+    // Beside the drawing where the box has room for it; under a drawing whose band could
+    // not hold it, where the box is tall enough; else in a free spot of the region.
+    let detail = detail(mu_l).map(|d| {
+        let (w, h) = d.size;
+        let at = if world_w + w + DETAIL_GAP <= avail_w && h <= avail_h + 2.0 * MECH_PAD {
+            DetailAt::Beside
+        } else if h > world_h + 2.0 * MECH_PAD && world_h + DETAIL_GAP + h <= avail_h {
+            DetailAt::Below
+        } else {
+            DetailAt::Inside
+        };
+        DetailPlace { at, ..d }
+    });
+    let (mut draw_w, mut draw_h) = (world_w, world_h);
+    match detail {
+        Some(d) if d.at == DetailAt::Beside => {
+            draw_w += d.size.0 + DETAIL_GAP;
+            draw_h = draw_h.max(d.size.1 - 2.0 * MECH_PAD);
+        }
+        Some(d) if d.at == DetailAt::Below => {
+            draw_w = draw_w.max(d.size.0);
+            draw_h += DETAIL_GAP + d.size.1;
+        }
+        _ => {}
+    }
+    let draw_w = draw_w.max(least_w(mu_l));
     let r = Rect::new(
         inner.x0 + 5.0,
         TOP,
         inner.x0 + 5.0 + draw_w + 2.0 * MECH_PAD,
         TOP + HEADER + draw_h + 2.0 * MECH_PAD + 4.0,
     );
-    (r, mu_l, draw_h)
+    Sized { region: r, mu_l, draw_h, detail }
+}
+
+/// The part of the region the mechanism's drawing is centred in, and the detail's box on
+/// the crank's side (between the header and the legend).
+fn beside_detail(region: Rect, d: &DetailPlace) -> (Rect, Rect) {
+    let (w, h) = d.size;
+    let band = (region.y0 + HEADER, region.y1 - 6.0);
+    let y0 = (band.0 + band.1 - h) / 2.0;
+    if d.left {
+        let x0 = region.x0 + MECH_PAD;
+        (Rect::new(region.x0 + w + DETAIL_GAP, region.y0, region.x1, region.y1), Rect::new(x0, y0, x0 + w, y0 + h))
+    } else {
+        let x1 = region.x1 - MECH_PAD;
+        (Rect::new(region.x0, region.y0, region.x1 - w - DETAIL_GAP, region.y1), Rect::new(x1 - w, y0, x1, y0 + h))
+    }
+}
+
+/// The detail's box under the drawing (whose band is `band_h` tall), centred under the
+/// crank's pivot at `crank_x` as far as the region allows.
+fn below_detail(region: Rect, band_h: f64, crank_x: f64, d: &DetailPlace) -> Rect {
+    let (w, h) = d.size;
+    let (lo, hi) = (region.x0 + MECH_PAD, (region.x1 - MECH_PAD - w).max(region.x0 + MECH_PAD));
+    let x0 = (crank_x - w / 2.0).clamp(lo, hi);
+    let y0 = region.y0 + HEADER + MECH_PAD + band_h + DETAIL_GAP;
+    Rect::new(x0, y0, x0 + w, y0 + h)
 }

@@ -12,10 +12,13 @@ use crate::drawing::symbols::{clear_turn_arrow, dimension, frame_pivot, hatch, s
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::analysis::{Kinematics, Position};
-use crate::lever::linkage::{LinkKind, Mechanism, PointId, Step};
+use crate::lever::linkage::{LinkKind, Mechanism, PointId, State, Step};
 use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::{CubicBez, Point, Rect, Vec2};
+
+mod crank_detail;
+pub(super) use crank_detail::{DETAIL_GAP, DetailAt, DetailPlace, detail_place};
 
 /// Paper sizes of the symbols, mm.
 const SLIDER: (f64, f64) = (10.0, 5.0);
@@ -90,10 +93,15 @@ pub struct MechanismView<'a> {
     pub view: View,
     pub kulisa: &'a [(usize, Option<f64>)],
     pub words: &'a LeverWords,
+    /// The crank's enlarged detail, when the crank is too small on paper for its numbers,
+    /// and its box beside the drawing (none: a free spot in the drawing's region, if any).
+    /// The mechanism then leaves the crank's numbers, letters and ω₁ to it.
+    pub detail: Option<(DetailPlace, Option<Rect>)>,
 }
 
 impl MechanismView<'_> {
-    pub fn draw(&self, g: &mut Group, labels: &mut Labels) {
+    /// Draws the mechanism; returns the μ_l of the crank's detail where one was drawn.
+    pub fn draw(&self, g: &mut Group, labels: &mut Labels) -> Option<f64> {
         self.crank_circle(g);
         for t in &self.k.trajectories {
             // World to paper is affine, so the pieces map exactly through their control points.
@@ -121,9 +129,28 @@ impl MechanismView<'_> {
             }
         }
         self.strokes(g, labels);
-        self.senses(g, labels);
-        self.position_numbers(labels);
-        self.letters(labels);
+        // The other links' arrows before a free spot for the crank's detail is sought, so
+        // that it keeps clear of them; ω₁ in the mechanism only if no detail has it.
+        let not_crank = |kind: LinkKind| kind != LinkKind::Crank;
+        let detail = match self.detail {
+            None => {
+                self.senses(g, labels, |_| true);
+                None
+            }
+            Some((d, rect)) => {
+                self.senses(g, labels, not_crank);
+                let found = rect.map(|r| (d, r)).or_else(|| self.free_spot(g, &d));
+                match &found {
+                    Some((d, rect)) => self.crank_detail(g, labels, d, *rect),
+                    None => self.senses(g, labels, |kind| !not_crank(kind)),
+                }
+                found
+            }
+        };
+        let detailed = detail.is_some();
+        self.position_numbers(labels, detailed);
+        self.letters(labels, detailed);
+        detail.map(|d| d.0.mu)
     }
 
     /// A slider's point `d` over the positions: its least and largest distance along its
@@ -289,12 +316,17 @@ impl MechanismView<'_> {
     /// [`SAME_POSITION_MM`] of the run's first at every point (an extreme position a fraction
     /// of a degree from a numbered one, "5′" at 179.76° beside "6" at 180°).
     fn coincident(&self) -> Vec<Vec<usize>> {
+        self.coincident_in(&self.view)
+    }
+
+    /// As [`Self::coincident`], on paper at `view`'s scale.
+    fn coincident_in(&self, view: &View) -> Vec<Vec<usize>> {
         let mut out: Vec<Vec<usize>> = Vec::new();
         for (i, pos) in self.k.positions.iter().enumerate() {
             let same = |first: usize| {
                 let a = &self.k.positions[first].state.points;
                 let b = &pos.state.points;
-                a.iter().zip(b).all(|(p, q)| self.view.len((p.p - q.p).norm()) < SAME_POSITION_MM)
+                a.iter().zip(b).all(|(p, q)| view.len((p.p - q.p).norm()) < SAME_POSITION_MM)
             };
             match out.last_mut() {
                 Some(run) if same(run[0]) => run.push(i),
@@ -309,27 +341,30 @@ impl MechanismView<'_> {
         run.iter().map(|&i| self.k.positions[i].label.as_str()).collect::<Vec<_>>().join(" ≡ ")
     }
 
-    /// Position numbers beside the crank pin of every position, outward from the pivot.
-    fn position_numbers(&self, labels: &mut Labels) {
+    /// The lettering height of position numbers round a crank circle of radius `r` on
+    /// paper: 3.5 mm where each has about 8 mm of the circle, else 2.5 mm (GOST 2.304's next
+    /// size), lest they crowd onto the connecting rods' lines.
+    fn numbers_height(&self, r: f64) -> f64 {
+        let per_number = std::f64::consts::TAU * r / self.k.positions.len() as f64;
+        if per_number >= CROWDED_NUMBERS { 3.5 } else { 2.5 }
+    }
+
+    /// Position numbers beside the crank pin of every position, outward from the pivot
+    /// (in the crank's detail instead, when it has one).
+    fn position_numbers(&self, labels: &mut Labels, detailed: bool) {
         let crank = self.m.crank();
-        let ends =
-            |pos: &Position| (self.view.p(pos.state.points[crank.pivot].p), self.view.p(pos.state.points[crank.pin].p));
-        // Numbers in 3.5 mm lettering need about 8 mm of the pin's circle each; round a
-        // smaller crank they are set in 2.5 mm (GOST 2.304's next size), else they crowd
-        // onto the connecting rods' lines.
-        let h = match self.k.positions.first() {
-            Some(p) => {
-                let (o, a) = ends(p);
-                let per_number = std::f64::consts::TAU * (a - o).norm() / self.k.positions.len() as f64;
-                if per_number >= CROWDED_NUMBERS { 3.5 } else { 2.5 }
-            }
-            None => 3.5,
-        };
+        let ends = |st: &State| (self.view.p(st.points[crank.pivot].p), self.view.p(st.points[crank.pin].p));
+        let r = self.k.positions.first().map_or(f64::INFINITY, |p| {
+            let (o, a) = ends(&p.state);
+            (a - o).norm()
+        });
+        let h = self.numbers_height(r);
         let groups = self.coincident();
-        for group in &groups {
-            let pos = &self.k.positions[group[0]];
-            let (o, a) = ends(pos);
-            labels.add_text_ranked(a, a - o, &self.joined_label(group), h, 2);
+        if !detailed {
+            for group in &groups {
+                let (o, a) = ends(&self.k.positions[group[0]].state);
+                labels.add_text_ranked(a, a - o, &self.joined_label(group), h, 2);
+            }
         }
         // Each slider's positions numbered too, on the side of the guide away from its
         // hatching (where the rod comes from), as the guide numbers D0 … D11 — when its
@@ -350,14 +385,16 @@ impl MechanismView<'_> {
     }
 
     /// Letters of the assigned position's points, away from the mechanism's centre.
-    fn letters(&self, labels: &mut Labels) {
+    fn letters(&self, labels: &mut Labels, detailed: bool) {
         let st = &self.k.assigned.state;
         let centre = {
             let ps: Vec<Point> = st.points.iter().map(|q| self.view.p(q.p)).collect();
             crate::drawing::scene::points_bbox(&ps).center()
         };
+        let crank = (self.m.crank().pivot, self.crank_points());
+        let in_detail = |id: PointId| detailed && (id == crank.0 || crank.1.contains(&id));
         for (id, name) in self.m.point_names.iter().enumerate() {
-            if self.m.is_kulisa_image(id) {
+            if self.m.is_kulisa_image(id) || in_detail(id) {
                 continue;
             }
             let at = self.view.p(st.points[id].p);
@@ -367,15 +404,16 @@ impl MechanismView<'_> {
     }
 
     /// Arc arrows of ω (radius 6 mm) and ε (9.5 mm) at every turning link of the thick
-    /// position, each turned to where it crosses the fewest lines already drawn.
-    fn senses(&self, g: &mut Group, labels: &mut Labels) {
+    /// position (of the kinds `drawn_here` takes), each turned to where it crosses the fewest
+    /// lines already drawn.
+    fn senses(&self, g: &mut Group, labels: &mut Labels, drawn_here: impl Fn(LinkKind) -> bool) {
         let st = &self.k.assigned.state;
         let turning: Vec<_> = self
             .m
             .links
             .iter()
             .enumerate()
-            .filter(|(_, link)| !matches!(link.kind, LinkKind::Slider | LinkKind::Block))
+            .filter(|(_, link)| !matches!(link.kind, LinkKind::Slider | LinkKind::Block) && drawn_here(link.kind))
             .map(|(li, link)| {
                 let pts: Vec<Vec2> = link.points.iter().map(|&id| st.points[id].p).collect();
                 let centre = match link.kind {

@@ -19,6 +19,7 @@ use crate::drawing::view::View;
 use crate::lever::kinetostatics::Polygon;
 use crate::num::math::Norm;
 use crate::num::tol;
+use crate::sheets::lever::labels::DETAIL_LETTERS;
 use kurbo::{Point, Rect, Vec2};
 
 /// A labelled side shorter than this on paper is drawn again enlarged, mm: a side a ruler
@@ -179,7 +180,7 @@ fn run_points(chain: &[Vec2], terms: &[usize], n: usize) -> Vec<Vec2> {
 /// moment's symbol).
 fn free_letters(inp: &ForcesInput) -> Vec<String> {
     let used: Vec<char> = inp.m.point_names.iter().filter_map(|n| n.chars().next()).collect();
-    "KLTUVWXYZ".chars().filter(|c| !used.contains(c)).map(String::from).collect()
+    DETAIL_LETTERS.chars().filter(|c| !used.contains(c)).map(String::from).collect()
 }
 
 /// The side's terms that an inset labels (the polygon leaves them unlabelled).
