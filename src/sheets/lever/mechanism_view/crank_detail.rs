@@ -210,19 +210,22 @@ impl MechanismView<'_> {
         link.points.iter().copied().filter(|&id| id != crank.pivot && !self.m.is_mass_centre(id)).collect()
     }
 
-    /// ω₁'s arc arrow round the detail's pivot `o`, clear of its crank `o`–`a`.
+    /// ω₁'s arc arrow round the detail's pivot `o`, clear of its crank `o`–`a`: halfway out
+    /// to the pin (at least the mechanism's radius), so that the pivot's letter has room
+    /// inside it.
     fn detail_omega(&self, g: &mut Group, labels: &mut Labels, o: Point, a: Point) {
         let crank = self.m.crank();
         let w = self.k.assigned.state.links[crank.link].omega;
         if w == 0.0 {
             return;
         }
-        let mut drawn = Obstacles::of_items_within(&g.items, turn_arrow_reach(o, SENSE_R.0));
+        let r = (0.5 * (a - o).norm()).max(SENSE_R.0);
+        let mut drawn = Obstacles::of_items_within(&g.items, turn_arrow_reach(o, r));
         let along = (a - o).arg().to_degrees();
         let ccw = w > 0.0;
-        let start = clear_turn_arrow(g, &mut drawn, o, SENSE_R.0, along + 40.0, SENSE_SWEEP, ccw, THIN);
+        let start = clear_turn_arrow(g, &mut drawn, o, r, along + 40.0, SENSE_SWEEP, ccw, THIN);
         let mid = (start + if ccw { -SENSE_SWEEP / 2.0 } else { SENSE_SWEEP / 2.0 }).to_radians();
-        let at = o + math::from_angle(mid) * SENSE_R.0;
+        let at = o + math::from_angle(mid) * r;
         labels.add_ranked(at, at - o, LabelText::new("ω", self.m.links[crank.link].number.to_string()), 3.5, 1);
     }
 }
