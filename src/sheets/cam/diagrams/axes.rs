@@ -77,9 +77,8 @@ pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], s
             None if p.right || p.left => p.right,
             None => continue,
         };
-        let y_tick = p.y_tick;
         if right {
-            g.line(Point::new(x0, y_tick), Point::new(x0 + VALUE_TICK, y_tick), THIN);
+            g.line(Point::new(x0, p.y_tick), Point::new(x0 + VALUE_TICK, p.y_tick), THIN);
             g.text(Text::new(Point::new(x0 + VALUE_TICK + 0.8, y), value.clone(), VALUE_H, Anchor::Start));
         } else {
             g.text(Text::new(Point::new(x0 - VALUE_TICK - 0.8, y), value.clone(), VALUE_H, Anchor::End));

@@ -392,10 +392,16 @@ fn integrated_curve(integrated: &[Integrated; 2], f: impl Fn(&Integrated) -> &Ve
 const SCALE_GAP: f64 = 4.0;
 const SCALE_TEXT: f64 = 2.5;
 
+/// The baseline of the `k`-th line of scale text set from `at` down: the first 3 mm under
+/// `at`, the next 4.5 mm apart.
+fn scale_line(at: Point, k: usize) -> Point {
+    Point::new(at.x, at.y + 3.0 + 4.5 * k as f64)
+}
+
 /// Lines of scale text at the graph's top left (above the pole's rays), from `at` down.
 fn scale_text(g: &mut Group, at: Point, lines: &[LabelText]) {
     for (k, t) in lines.iter().enumerate() {
-        t.draw(g, Point::new(at.x, at.y + 3.0 + 4.5 * k as f64), SCALE_TEXT, Anchor::Start);
+        t.draw(g, scale_line(at, k), SCALE_TEXT, Anchor::Start);
     }
 }
 
@@ -412,7 +418,7 @@ fn top_ray(plot: &Plot, h: f64, ys: &[f64], mu: f64) -> (Point, Point) {
 fn clear_of_rays(lines: &[LabelText], (x, top, axis): (f64, f64, f64), ray: (Point, Point)) -> (Point, Vec<LabelText>) {
     let at = above_pole(x, top, axis, lines);
     let crosses = |t: &LabelText, k: usize| {
-        let b = t.text(Point::new(at.x, at.y + 3.0 + 4.5 * k as f64), SCALE_TEXT, Anchor::Start).bbox();
+        let b = t.text(scale_line(at, k), SCALE_TEXT, Anchor::Start).bbox();
         crate::drawing::obstacles::segment_meets_rect(ray.0, ray.1, b.inflate(0.5, 0.5))
     };
     let broken: Vec<LabelText> = lines
@@ -433,7 +439,7 @@ fn clear_of_rays(lines: &[LabelText], (x, top, axis): (f64, f64, f64), ray: (Poi
 /// 2 mm apart: a line's depth under its baseline 0.6 mm, the name's height over its own
 /// baseline, 1 mm under the axis, 1.8 mm).
 fn above_pole(x: f64, top: f64, axis: f64, lines: &[LabelText]) -> Point {
-    let last = 3.0 + 4.5 * (lines.len().max(1) - 1) as f64;
+    let last = scale_line(Point::ZERO, lines.len().max(1) - 1).y;
     Point::new(x, top.min(axis + 1.0 - 1.8 - 2.0 - 0.6 - last))
 }
 
