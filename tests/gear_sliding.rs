@@ -61,12 +61,22 @@ fn the_specific_sliding_at_the_active_lines_ends_is_the_textbooks() {
             };
             assert!(ok, "{name}: λ{} = {:?} against the textbook's {:?}", i + 1, drawn[i], expected[i]);
         }
+        // An end of the active line at its N (interference) is named with it on the axis.
+        let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
+        let part = mesh.parts.iter().find(|p| p.id == "mesh.sliding").unwrap();
+        for (i, b_sub) in ["₁", "₂"].iter().enumerate() {
+            let at_n = mesh.items[part.items.clone()].iter().any(|item| match item {
+                tmm_sheets::drawing::scene::Item::Text(t) => {
+                    t.text == "N" && t.sub == (i + 1).to_string() && t.tail == format!(" ≡ B{b_sub}")
+                }
+                _ => false,
+            });
+            assert_eq!(at_n, expected[i].is_none(), "{name}: N{} named with B{} on the axis", i + 1, i + 1);
+        }
         let expected: Vec<f64> = expected.into_iter().flatten().collect();
         // The dashed ordinates at B1 and B2, at μ_λ, are those values (or reach the plot's
         // floor where the sliding runs off it).
         let mu = sliding["mu_lambda"].as_f64().unwrap();
-        let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
-        let part = mesh.parts.iter().find(|p| p.id == "mesh.sliding").unwrap();
         let dashed: Vec<f64> = mesh.items[part.items.clone()]
             .iter()
             .filter_map(common::path_points)

@@ -123,18 +123,19 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
             g.line(plot.at(xb, 0.0), plot.at(xb, v.max(lowest)), DASHED);
         }
     }
-    // A B at its N is named by N (its value line says so).
+    // A B at its N (interference: the sliding there unbounded) is named with it, "N₁ ≡ B₁".
+    let at_n = |i: usize, n: &str| if at_b[i].is_none() { format!(" ≡ B{n}") } else { String::new() };
     let names = [
-        (Some(0.0), "N", "1"),
-        (at_b[0].map(|_| s.active[0]), "B", "1"),
-        (Some(s.pitch_point), "P", ""),
-        (at_b[1].map(|_| s.active[1]), "B", "2"),
-        (Some(s.line), "N", "2"),
+        (Some(0.0), LabelText::new("N", "1").with_tail(at_n(0, "₁"))),
+        (at_b[0].map(|_| s.active[0]), LabelText::new("B", "1")),
+        (Some(s.pitch_point), LabelText::new("P", "")),
+        (at_b[1].map(|_| s.active[1]), LabelText::new("B", "2")),
+        (Some(s.line), LabelText::new("N", "2").with_tail(at_n(1, "₂"))),
     ];
-    for (x, n, sub) in names.into_iter().filter_map(|(x, n, sub)| x.map(|x| (x, n, sub))) {
+    for (x, name) in names.into_iter().filter_map(|(x, name)| x.map(|x| (x, name))) {
         let p = plot.at(x, 0.0);
         g.line(p, p + Vec2::new(0.0, 1.5), THIN);
-        labels.add(p + Vec2::new(0.0, 1.5), Vec2::new(0.0, 1.0), LabelText::new(n, sub), 2.5);
+        labels.add(p + Vec2::new(0.0, 1.5), Vec2::new(0.0, 1.0), name, 2.5);
     }
     for (i, x) in [(0, (s.pitch_point + s.line) / 2.0), (1, s.pitch_point / 2.0)] {
         let p = plot.at(x, s.lambda(i, x).max(lowest));
