@@ -182,13 +182,14 @@ fn mechanism_region(
     let (avail_w, avail_h) = (MECH_MAX_W - 2.0 * MECH_PAD, max_h - HEADER - 2.0 * MECH_PAD);
     let mu_l = scale::length_scale((world.width() / avail_w).max(world.height() / avail_h));
     let (world_w, world_h) = (world.width() / mu_l, world.height() / mu_l);
-    // Beside the drawing where the box has room for it; under a drawing whose band could
-    // not hold it, where the box is tall enough; else in a free spot of the region.
+    // Beside the drawing where the box has room for it; under a drawing whose band it would
+    // fill more than half of (the drawing leaves such a band no free box that tall: a long
+    // rod runs across it), where the box is tall enough; else in a free spot of the region.
     let detail = detail(mu_l).map(|d| {
         let (w, h) = d.size;
         let at = if world_w + w + DETAIL_GAP <= avail_w && h <= avail_h + 2.0 * MECH_PAD {
             DetailAt::Beside
-        } else if h > world_h + 2.0 * MECH_PAD && world_h + DETAIL_GAP + h <= avail_h {
+        } else if 2.0 * h > world_h + 2.0 * MECH_PAD && world_h + DETAIL_GAP + h <= avail_h {
             DetailAt::Below
         } else {
             DetailAt::Inside

@@ -63,8 +63,9 @@ pub(in crate::sheets::lever) struct DetailPlace {
 pub(in crate::sheets::lever) enum DetailAt {
     /// Beside the drawing, on the crank's side, in room the region is widened by.
     Beside,
-    /// Under the drawing, below the crank, in room the region is heightened by (a long thin
-    /// mechanism, whose band could not hold it).
+    /// Under the drawing, below the crank, in room the region is heightened by (a drawing
+    /// whose band the detail would fill more than half of: a long rod across it leaves no
+    /// free box that tall).
     Below,
     /// In a free spot of the region, if the drawing leaves one.
     Inside,
