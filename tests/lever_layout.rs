@@ -133,13 +133,9 @@ fn every_sheet_1_fixture_is_at_most_half_empty_in_every_language() {
     assert!(over.is_empty(), "{over:?}");
 }
 
-/// A six-bar of the stress sweep's kind (a crank-rocker driving a slider) from its lengths, m:
-/// the frame, the crank, the coupler and rocker, the guide's offset, the rod, its branch.
-fn six_bar(frame: f64, crank: f64, (l2, l3): (f64, f64), offset: f64, rod: f64, branch: &str) -> String {
-    format!(
-        "project:\n  title: {{en: \"Detail\"}}\n  designation: {{en: \"TMM CP 00.00.00\"}}\n  language: en\n\nmechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [{frame}, 0]}}\n  crank: {{pivot: O, pin: A, length: {crank}, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [{l2}, {l3}], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: {rod}, guide: {{through: [0, {offset}], angle_deg: 0}}, branch: {branch}}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"
-    )
-}
+/// The header of the detail tests' projects.
+const DETAIL_HEADER: &str =
+    "project:\n  title: {en: \"Detail\"}\n  designation: {en: \"TMM CP 00.00.00\"}\n  language: en\n\n";
 
 /// The crank `crank` m long of the project `text` has its enlarged detail: the sheet clean,
 /// the crank under 9 mm in the mechanism and 15–30 mm in its detail at a GOST scale, every
@@ -198,7 +194,8 @@ fn assert_crank_detailed(text: &str, crank: f64) -> (kurbo::Point, f64) {
 /// mechanism's band leaves room beside it: the detail stands there.
 #[test]
 fn a_crank_a_few_millimetres_on_paper_is_drawn_again_enlarged_with_its_numbers() {
-    let text = six_bar(0.461563, 0.033111, (0.271366, 0.529799), -0.183497, 2.425637, "backward");
+    let text =
+        common::six_bar(DETAIL_HEADER, 0.461563, 0.033111, (0.271366, 0.529799), -0.183497, 2.425637, "backward");
     assert_crank_detailed(&text, 0.033111);
 }
 
@@ -206,7 +203,7 @@ fn a_crank_a_few_millimetres_on_paper_is_drawn_again_enlarged_with_its_numbers()
 /// too thin for the detail, which stands under the drawing, below everything drawn there.
 #[test]
 fn a_long_thin_mechanisms_crank_detail_stands_under_it() {
-    let text = six_bar(0.938925, 0.142453, (1.354698, 0.757122), -0.163246, 5.452642, "forward");
+    let text = common::six_bar(DETAIL_HEADER, 0.938925, 0.142453, (1.354698, 0.757122), -0.163246, 5.452642, "forward");
     let (centre, lowest_joint) = assert_crank_detailed(&text, 0.142453);
     assert!(centre.y > lowest_joint + 15.0, "the detail at y = {:.1}, a joint at {lowest_joint:.1}", centre.y);
 }

@@ -353,10 +353,7 @@ fn six_bars(crank: std::ops::Range<f64>, rod: std::ops::Range<f64>) -> impl Stra
             (crank_rocker && l4.max(longest) <= 10.0).then_some((d, r, l2, l3, e, l4, forward))
         })
         .prop_map(|(d, r, l2, l3, e, l4, forward)| {
-            let branch = if forward { "forward" } else { "backward" };
-            format!(
-                "{HEADER}mechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [{d:.6}, 0]}}\n  crank: {{pivot: O, pin: A, length: {r:.6}, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [{l2:.6}, {l3:.6}], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: {l4:.6}, guide: {{through: [0, {e:.6}], angle_deg: 0}}, branch: {branch}}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"
-            )
+            common::six_bar(HEADER, d, r, (l2, l3), e, l4, if forward { "forward" } else { "backward" })
         })
 }
 
@@ -380,9 +377,7 @@ fn six_bars_with_cranks_a_few_millimetres_on_paper() {
 /// now has its enlarged detail beside the mechanism, where they stand clear.
 #[test]
 fn a_six_bar_with_a_crank_a_fourteenth_of_its_frame_has_its_labels_clear() {
-    let text = format!(
-        "{HEADER}mechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [0.461563, 0]}}\n  crank: {{pivot: O, pin: A, length: 0.033111, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [0.271366, 0.529799], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: 2.425637, guide: {{through: [0, -0.183497], angle_deg: 0}}, branch: backward}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"
-    );
+    let text = common::six_bar(HEADER, 0.461563, 0.033111, (0.271366, 0.529799), -0.183497, 2.425637, "backward");
     assert_eq!(verdict(&text), Ok(Outcome::Built));
 }
 
@@ -393,9 +388,7 @@ fn a_six_bar_with_a_crank_a_fourteenth_of_its_frame_has_its_labels_clear() {
 /// paper, a size larger: its numbers too are in the crank's enlarged detail now.
 #[test]
 fn a_six_bar_with_a_crank_a_fifth_of_its_frame_and_a_long_rod_has_its_numbers_clear() {
-    let text = format!(
-        "{HEADER}mechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [0.401235, 0]}}\n  crank: {{pivot: O, pin: A, length: 0.077826, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [0.238488, 0.485740], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: 2.468025, guide: {{through: [0, 0.169785], angle_deg: 0}}, branch: forward}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"
-    );
+    let text = common::six_bar(HEADER, 0.401235, 0.077826, (0.238488, 0.485740), 0.169785, 2.468025, "forward");
     assert_eq!(verdict(&text), Ok(Outcome::Built));
 }
 
@@ -405,9 +398,7 @@ fn a_six_bar_with_a_crank_a_fifth_of_its_frame_and_a_long_rod_has_its_numbers_cl
 /// A detail that would fill more than half of its band now goes under the drawing.
 #[test]
 fn a_six_bar_with_a_crank_under_3_mm_and_an_8_m_rod_has_its_numbers_clear() {
-    let text = format!(
-        "{HEADER}mechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [0.754295, 0]}}\n  crank: {{pivot: O, pin: A, length: 0.070594, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [0.913781, 1.147984], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: 8.234664, guide: {{through: [0, 0.239350], angle_deg: 0}}, branch: backward}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"
-    );
+    let text = common::six_bar(HEADER, 0.754295, 0.070594, (0.913781, 1.147984), 0.239350, 8.234664, "backward");
     assert_eq!(verdict(&text), Ok(Outcome::Built));
 }
 

@@ -233,3 +233,21 @@ impl AsRef<std::ffi::OsStr> for Scratch {
         self.0.as_os_str()
     }
 }
+
+/// A six-bar of the stress sweep's kind under `header`: a crank-rocker (frame O–C of `frame`,
+/// crank O–A of `crank`, coupler and rocker `l2`, `l3`, m) whose rocker's joint B drives a
+/// slider D by a rod `rod` on a horizontal guide `offset` above O, the slider's branch
+/// `branch` ("forward" or "backward"); each link's centre of mass at its middle.
+pub fn six_bar(
+    header: &str,
+    frame: f64,
+    crank: f64,
+    (l2, l3): (f64, f64),
+    offset: f64,
+    rod: f64,
+    branch: &str,
+) -> String {
+    format!(
+        "{header}mechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [{frame:.6}, 0]}}\n  crank: {{pivot: O, pin: A, length: {crank:.6}, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [{l2:.6}, {l3:.6}], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: {rod:.6}, guide: {{through: [0, {offset:.6}], angle_deg: 0}}, branch: {branch}}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"
+    )
+}

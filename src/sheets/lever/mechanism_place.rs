@@ -5,8 +5,9 @@
 use super::compose::{Column, HEADER, Input, TOP, force_region_below, region_header, side_region};
 use super::forces_view::{ForcesInput, fit_comfortably};
 use super::labels::LeverWords;
-use super::mechanism_view::{DETAIL_GAP, DetailAt, DetailPlace, MechanismView, TRAJECTORY, detail_place, world_extent};
-use crate::drawing::fmt;
+use super::mechanism_view::{
+    DETAIL_GAP, DetailAt, DetailPlace, MechanismView, TRAJECTORY, detail_place, mu_l_text, world_extent,
+};
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
@@ -92,20 +93,16 @@ pub(super) fn mechanism_group(
     let m = &inp.project.mechanism;
     let mut group = Group::new("mechanism", region);
     // The drawing centred in what a detail beside or below it leaves of the region.
-    let band_h = match detail {
-        Some(d) if d.at == DetailAt::Below => world.height() / mu_l,
-        _ => draw_h,
-    };
-    let drawing = match detail {
-        Some(d) if d.at == DetailAt::Beside => beside_detail(region, &d).0,
-        _ => region,
-    };
+    let at = detail.map(|d| d.at);
+    let band_h = if at == Some(DetailAt::Below) { world.height() / mu_l } else { draw_h };
+    let beside = detail.filter(|d| d.at == DetailAt::Beside).map(|d| beside_detail(region, &d));
+    let drawing = beside.map_or(region, |b| b.0);
     let origin = Point::new(
         drawing.center().x - world.center().x / mu_l,
         region.y0 + HEADER + MECH_PAD + band_h / 2.0 + world.center().y / mu_l,
     );
     let detail = detail.map(|d| match d.at {
-        DetailAt::Beside => (d, Some(beside_detail(region, &d).1)),
+        DetailAt::Beside => (d, beside.map(|b| b.1)),
         DetailAt::Below => {
             let crank_x = origin.x + k.assigned.state.points[m.crank().pivot].p.x / mu_l;
             (d, Some(below_detail(region, band_h, crank_x, &d)))
@@ -129,14 +126,9 @@ fn mechanism_header(g: &mut Group, region: Rect, mu_l: f64, k: &Kinematics, word
 
 /// The header's line under its title: μ_l, the structure formula and the degrees of freedom.
 fn header_lines(mu_l: f64, k: &Kinematics, words: &LeverWords) -> [LabelText; 3] {
-    let (l, c, lang) = (words.sheet, words.common, words.lang);
-    let s = &k.structure;
+    let (l, s) = (words.sheet, &k.structure);
     [
-        LabelText::new("μ", "l").with_tail(format!(
-            " = {} {}",
-            fmt::localise(&scale::format(mu_l), lang),
-            c.unit_m_per_mm()
-        )),
+        mu_l_text(mu_l, words),
         LabelText::new(format!("{}: {}", l.structure(), s.formula), ""),
         LabelText::new(format!("W = 3·{} − 2·{} − {} = {}", s.moving_links, s.p5, s.p4, s.dof), ""),
     ]

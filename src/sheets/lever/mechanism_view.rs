@@ -354,13 +354,13 @@ impl MechanismView<'_> {
     fn position_numbers(&self, labels: &mut Labels, detailed: bool) {
         let crank = self.m.crank();
         let ends = |st: &State| (self.view.p(st.points[crank.pivot].p), self.view.p(st.points[crank.pin].p));
-        let r = self.k.positions.first().map_or(f64::INFINITY, |p| {
-            let (o, a) = ends(&p.state);
-            (a - o).norm()
-        });
-        let h = self.numbers_height(r);
         let groups = self.coincident();
         if !detailed {
+            let r = self.k.positions.first().map_or(f64::INFINITY, |p| {
+                let (o, a) = ends(&p.state);
+                (a - o).norm()
+            });
+            let h = self.numbers_height(r);
             for group in &groups {
                 let (o, a) = ends(&self.k.positions[group[0]].state);
                 labels.add_text_ranked(a, a - o, &self.joined_label(group), h, 2);
@@ -441,11 +441,8 @@ impl MechanismView<'_> {
                 if !drawn_here || value.abs() <= zero {
                     continue;
                 }
-                let ccw = value > 0.0;
-                let start = clear_turn_arrow(g, &mut drawn, centre, r, along + 40.0, SENSE_SWEEP, ccw, THIN);
-                let mid = (start + if ccw { -SENSE_SWEEP / 2.0 } else { SENSE_SWEEP / 2.0 }).to_radians();
-                let at = centre + math::from_angle(mid) * r;
-                labels.add_ranked(at, at - centre, LabelText::new(sym, link.number.to_string()), 3.5, 1);
+                let name = LabelText::new(sym, link.number.to_string());
+                sense_arrow(g, (&mut drawn, labels), (centre, r), along, value > 0.0, name);
             }
         }
     }
@@ -454,6 +451,30 @@ impl MechanismView<'_> {
 /// Radii of the ω and ε arrows, mm, and their sweep, degrees.
 const SENSE_R: (f64, f64) = (6.0, 9.5);
 const SENSE_SWEEP: f64 = 110.0;
+
+/// One arc arrow of a turn (counter-clockwise on paper if `ccw`) round `centre` at radius
+/// `r`, started 40° past the link's direction `along` (degrees on paper) and turned to where
+/// it crosses the fewest lines of `drawn`; its `name` beside its middle.
+fn sense_arrow(
+    g: &mut Group,
+    (drawn, labels): (&mut Obstacles, &mut Labels),
+    (centre, r): (Point, f64),
+    along: f64,
+    ccw: bool,
+    name: LabelText,
+) {
+    let start = clear_turn_arrow(g, drawn, centre, r, along + 40.0, SENSE_SWEEP, ccw, THIN);
+    let mid = (start + if ccw { -SENSE_SWEEP / 2.0 } else { SENSE_SWEEP / 2.0 }).to_radians();
+    let at = centre + math::from_angle(mid) * r;
+    labels.add_ranked(at, at - centre, name, 3.5, 1);
+}
+
+/// "μ_l = 0,005 m/mm": a length scale in the sheet's language (the mechanism's header, its
+/// crank's detail).
+pub fn mu_l_text(mu_l: f64, words: &LeverWords) -> LabelText {
+    let scale = fmt::localise(&crate::drawing::scale::format(mu_l), words.lang);
+    LabelText::new("μ", "l").with_tail(format!(" = {scale} {}", words.common.unit_m_per_mm()))
+}
 
 /// "S2" → ("S", "2"), "O1" → ("O", "1"), "A" → ("A", "").
 pub fn split_name(name: &str) -> (String, String) {

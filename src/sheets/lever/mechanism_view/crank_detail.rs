@@ -5,17 +5,16 @@
 //! the detail's letter. Round a crank a few mm across the numbers, O, A and ω₁ crowd onto the
 //! rods' lines; the detail gives them the room a teacher would.
 
-use super::{JOINT_R, MechanismView, SENSE_R, SENSE_SWEEP, split_name};
-use crate::drawing::fmt;
+use super::{JOINT_R, MechanismView, SENSE_R, mu_l_text, sense_arrow, split_name};
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, MAIN, THIN};
-use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, turn_arrow_reach};
+use crate::drawing::symbols::{frame_pivot, turn_arrow_reach};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::linkage::{Mechanism, PointId};
-use crate::num::math::{self, Norm};
+use crate::num::math::Norm;
 use crate::sheets::lever::labels::{DETAIL_LETTERS, LeverWords};
 use kurbo::{Point, Rect, Vec2};
 
@@ -99,12 +98,8 @@ fn at_scale(m: &Mechanism, mu: f64, left: bool, words: &LeverWords) -> DetailPla
 
 /// The detail's title: its letter, and its scale "(μ_l = 0.002 m/mm)".
 fn title(m: &Mechanism, mu: f64, words: &LeverWords) -> (LabelText, LabelText) {
-    let (lang, c) = (words.lang, words.common);
-    let scale = LabelText::new("(μ", "l").with_tail(format!(
-        " = {} {})",
-        fmt::localise(&scale::format(mu), lang),
-        c.unit_m_per_mm()
-    ));
+    let scale = mu_l_text(mu, words);
+    let scale = LabelText { main: format!("({}", scale.main), tail: format!("{})", scale.tail), ..scale };
     (LabelText::new(letter(m), ""), scale)
 }
 
@@ -124,14 +119,14 @@ impl MechanismView<'_> {
         let coarser = scale::length_scale(d.mu * 1.01);
         let smaller = (self.m.crank().length / coarser >= DETAIL_R_LEAST_MM)
             .then(|| at_scale(self.m, coarser, d.left, self.words));
-        std::iter::once(*d).chain(smaller).find_map(|d| self.free_box(g, d.size).map(|r| (d, r)))
+        let drawn = Obstacles::of_items_within(&g.items, g.region);
+        std::iter::once(*d).chain(smaller).find_map(|d| self.free_box(g.region, &drawn, d.size).map(|r| (d, r)))
     }
 
-    /// A box of `(w, h)` clear of everything drawn in the drawing's region (its header and
+    /// A box of `(w, h)` in `region` clear of everything `drawn` there (the header and
     /// legend included), nearest the crank, on a grid of FREE_STEP.
-    fn free_box(&self, g: &Group, (w, h): (f64, f64)) -> Option<Rect> {
-        let band = g.region.inflate(-2.0, -2.0);
-        let drawn = Obstacles::of_items_within(&g.items, band);
+    fn free_box(&self, region: Rect, drawn: &Obstacles, (w, h): (f64, f64)) -> Option<Rect> {
+        let band = region.inflate(-2.0, -2.0);
         let pivot = self.view.p(self.k.assigned.state.points[self.m.crank().pivot].p);
         let steps = |from: f64, room: f64| {
             let n = (room / FREE_STEP).floor().max(-1.0) as i64;
@@ -223,10 +218,7 @@ impl MechanismView<'_> {
         let r = (0.5 * (a - o).norm()).max(SENSE_R.0);
         let mut drawn = Obstacles::of_items_within(&g.items, turn_arrow_reach(o, r));
         let along = (a - o).arg().to_degrees();
-        let ccw = w > 0.0;
-        let start = clear_turn_arrow(g, &mut drawn, o, r, along + 40.0, SENSE_SWEEP, ccw, THIN);
-        let mid = (start + if ccw { -SENSE_SWEEP / 2.0 } else { SENSE_SWEEP / 2.0 }).to_radians();
-        let at = o + math::from_angle(mid) * r;
-        labels.add_ranked(at, at - o, LabelText::new("ω", self.m.links[crank.link].number.to_string()), 3.5, 1);
+        let name = LabelText::new("ω", self.m.links[crank.link].number.to_string());
+        sense_arrow(g, (&mut drawn, labels), (o, r), along, w > 0.0, name);
     }
 }
