@@ -248,7 +248,6 @@ fn a_crank_detail_and_the_force_insets_never_share_a_letter() {
 /// polygons' insets on one sheet are both "K". The letters must be counted across the
 /// sheet's polygons (their cells are laid out apart, memoised per scale).
 #[test]
-#[ignore = "open: each force polygon letters its insets from K, so two polygons' insets share K"]
 fn the_force_insets_of_one_sheet_have_distinct_letters() {
     let (_, insets) = task_14_v40_ru_detail_letters();
     let mut distinct = insets.clone();

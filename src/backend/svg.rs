@@ -271,8 +271,11 @@ pub fn write(scene: &Scene) -> Result<String, BackendError> {
     if scene.ink == Ink::Black {
         line(format!("<rect width=\"{w}\" height=\"{h}\" fill=\"#fff\"/>"));
     }
+    // Text set as the layout measured it, in any renderer: no kerning (the PDF and PNG place
+    // glyphs by their advances) and every space kept (librsvg and resvg strip a tail run's
+    // leading space without `xml:space`: "μP= 7,5 N/mm", "K( μP …").
     line(format!(
-        "<g fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\" font-family=\"{}\" font-stretch=\"{}\">",
+        "<g style=\"font-kerning:none\" xml:space=\"preserve\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\" font-family=\"{}\" font-stretch=\"{}\">",
         font::FAMILY,
         font::STRETCH
     ));

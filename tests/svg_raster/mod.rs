@@ -29,11 +29,3 @@ pub fn png(svg: &str, width_mm: f64, height_mm: f64, dpi: f64) -> Vec<u8> {
     resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(sx, sy), &mut pixmap.as_mut());
     pixmap.encode_png().expect("PNG encoding")
 }
-
-/// The SVG set as the PDF and PNG backends set text: without kerning (they place glyphs by
-/// the advances the layout measures) and with every space kept (resvg drops the space that
-/// starts a tail run after a lone symbol, "Δ = 0 %" → "Δ= 0 %"). What is left between them
-/// is then the drawing itself.
-pub fn set_as_measured(svg: &str) -> String {
-    svg.replacen("<g fill=\"none\"", "<g style=\"font-kerning:none\" xml:space=\"preserve\" fill=\"none\"", 1)
-}

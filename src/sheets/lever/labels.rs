@@ -64,6 +64,13 @@ impl LeverLabels {
 /// a letter.
 pub const DETAIL_LETTERS: &str = "KLTUVWXYZ";
 
+/// [`DETAIL_LETTERS`] that begin no point's name, in order: the last is the crank
+/// detail's, the rest the insets' (none if every one names a point).
+pub fn free_detail_letters(point_names: &[String]) -> Vec<String> {
+    let used: Vec<char> = point_names.iter().filter_map(|n| n.chars().next()).collect();
+    DETAIL_LETTERS.chars().filter(|c| !used.contains(c)).map(String::from).collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

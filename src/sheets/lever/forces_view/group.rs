@@ -131,7 +131,7 @@ pub(super) fn group_layout(
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let poly_size = (poly_w, poly_h);
     let arrangement = Arrangement { drawing: (drawing_w, drawing_h), stacked };
-    let (insets, place, w, body_h) = with_insets(inp, poly, (&chain, mu_p), arrangement, poly_size, grow);
+    let (insets, place, w, body_h) = with_insets(poly, (&chain, mu_p), arrangement, poly_size, grow);
     let equation = equation_lines(inp, poly, w - 4.0);
     let legend = group_legend(inp, poly, mu_f, w - 4.0);
     let text_lines = equation.len() + legend.len() + SCALE_LINES;
@@ -185,7 +185,6 @@ impl Arrangement {
 /// body height: in the room the cell leaves the polygon if they fit there; else, when the
 /// cell may `grow`, in the least room grown for them; else none.
 fn with_insets(
-    inp: &ForcesInput,
     poly: &Polygon,
     (chain, mu_p): (&[Vec2], f64),
     arrangement: Arrangement,
@@ -194,7 +193,7 @@ fn with_insets(
 ) -> (Vec<Inset>, Place, f64, f64) {
     let room = arrangement.room(poly_size);
     let (w, body_h) = arrangement.cell(room);
-    let runs = inset::Runs::of(inp, poly, chain, mu_p);
+    let runs = inset::Runs::of(poly, chain, mu_p);
     if runs.is_empty() {
         return (Vec::new(), Place::None, w, body_h);
     }
@@ -241,8 +240,8 @@ pub(super) fn draw_group_cell(
     labels: &mut Labels,
     r: Rect,
     inp: &ForcesInput,
-    poly: &Polygon,
-    layout: &GroupLayout,
+    (poly, layout): (&Polygon, &GroupLayout),
+    letters: &[String],
 ) {
     cell_title(g, r, &group_title(inp, poly));
     let top = r.y0 + CELL_TITLE;
@@ -262,8 +261,9 @@ pub(super) fn draw_group_cell(
         Place::Below => Rect::new(room.x0, room.y0, room.x1, room.y0 + h),
         Place::Beside => Rect::new(room.x0, room.y0, room.x0 + w, room.y1),
     };
-    draw_polygon(g, labels, inp, poly, layout, pr);
-    inset::draw(g, labels, inp, poly, &layout.chain, &layout.insets, room);
+    let named = inset::Named { insets: &layout.insets, letters };
+    draw_polygon(g, labels, inp, (poly, layout), named, pr);
+    inset::draw(g, labels, inp, poly, &layout.chain, named, room);
     let scales = vec![
         vec![
             with_semicolon(scale_item(inp, "l", layout.mu_l, inp.words.common.unit_m_per_mm())),

@@ -19,7 +19,7 @@ use crate::drawing::view::View;
 use crate::lever::kinetostatics::Polygon;
 use crate::num::math::Norm;
 use crate::num::tol;
-use crate::sheets::lever::labels::DETAIL_LETTERS;
+use crate::sheets::lever::labels::free_detail_letters;
 use kurbo::{Point, Rect, Vec2};
 
 /// A labelled side shorter than this on paper is drawn again enlarged, mm: a side a ruler
@@ -40,11 +40,11 @@ const STUB: f64 = 8.0;
 const RING_PAD: f64 = 3.0;
 
 /// One run of short sides: its terms (indices into the polygon's terms, in chain order,
-/// wrapping past the last), its letter and its μ_P.
+/// wrapping past the last) and its μ_P. Its letter is given when it is drawn, counted
+/// across the sheet's polygons (a layout is memoised and drawn once, in cell order).
 #[derive(Debug, Clone)]
 pub(super) struct Inset {
     pub(super) terms: Vec<usize>,
-    pub(super) letter: String,
     pub(super) mu: f64,
     /// The run's vertices' box, N.
     pub(super) world: Rect,
@@ -73,12 +73,11 @@ fn short(poly: &Polygon, k: usize, mu_p: f64) -> bool {
 /// with its box (N) and its longest side.
 pub(super) struct Runs {
     runs: Vec<(Vec<usize>, Rect, f64)>,
-    letters: Vec<String>,
     mu_p: f64,
 }
 
 impl Runs {
-    pub(super) fn of(inp: &ForcesInput, poly: &Polygon, chain: &[Vec2], mu_p: f64) -> Runs {
+    pub(super) fn of(poly: &Polygon, chain: &[Vec2], mu_p: f64) -> Runs {
         let n = poly.terms.len();
         let runs = runs(poly, mu_p)
             .into_iter()
@@ -89,7 +88,7 @@ impl Runs {
                 (terms, world, longest)
             })
             .collect();
-        Runs { runs, letters: free_letters(inp), mu_p }
+        Runs { runs, mu_p }
     }
 
     pub(super) fn is_empty(&self) -> bool {
@@ -124,8 +123,7 @@ impl Runs {
         self.runs
             .iter()
             .enumerate()
-            .zip(&self.letters)
-            .map(|((i, (terms, world, longest)), letter)| {
+            .map(|(i, (terms, world, longest))| {
                 let slot = slot(i);
                 let (w, h) = (slot.width() - 2.0 * PAD, slot.height() - 2.0 * PAD - TITLE);
                 if slot.width() < SLOT_MIN_W || w <= 0.0 || h <= 0.0 {
@@ -135,7 +133,6 @@ impl Runs {
                 let mu = scale::plan_round_up(need);
                 (mu > 0.0 && mu * ENLARGED_MIN <= self.mu_p).then(|| Inset {
                     terms: terms.clone(),
-                    letter: letter.clone(),
                     mu,
                     world: *world,
                     slot,
@@ -176,11 +173,38 @@ fn run_points(chain: &[Vec2], terms: &[usize], n: usize) -> Vec<Vec2> {
     pts
 }
 
-/// Letters for the enlargements that name no point of the mechanism (nor a force's or a
-/// moment's symbol).
-fn free_letters(inp: &ForcesInput) -> Vec<String> {
-    let used: Vec<char> = inp.m.point_names.iter().filter_map(|n| n.chars().next()).collect();
-    DETAIL_LETTERS.chars().filter(|c| !used.contains(c)).map(String::from).collect()
+/// The letters of a sheet's enlargements, in the order its polygons are drawn: the front
+/// of the detail letters without those that begin a point's name (or a force's or a
+/// moment's symbol) and without the last free one, which the crank's detail takes. Past
+/// the list, the first letter numbered on (K2, K3 …): a sheet with that many runs is
+/// beyond any the course sets, yet its letters stay distinct.
+pub(super) struct Letters {
+    free: Vec<String>,
+    next: usize,
+}
+
+impl Letters {
+    pub(super) fn of(inp: &ForcesInput) -> Letters {
+        let mut free = free_detail_letters(&inp.m.point_names);
+        free.pop();
+        Letters { free, next: 0 }
+    }
+
+    /// The next `n` letters.
+    pub(super) fn take(&mut self, n: usize) -> Vec<String> {
+        let first = self.free.first().cloned().unwrap_or_else(|| "K".to_string());
+        let beyond = |i: usize| format!("{first}{}", i + 2 - self.free.len());
+        let out = (self.next..self.next + n).map(|i| self.free.get(i).cloned().unwrap_or_else(|| beyond(i))).collect();
+        self.next += n;
+        out
+    }
+}
+
+/// A polygon's enlargements with the letters the sheet gave them.
+#[derive(Clone, Copy)]
+pub(super) struct Named<'a> {
+    pub(super) insets: &'a [Inset],
+    pub(super) letters: &'a [String],
 }
 
 /// The side's terms that an inset labels (the polygon leaves them unlabelled).
@@ -189,16 +213,16 @@ pub(super) fn labelled_elsewhere(insets: &[Inset], k: usize) -> bool {
 }
 
 /// Rings each run on the polygon drawn by `view` and names it with its letter.
-pub(super) fn ring(g: &mut Group, labels: &mut Labels, view: &View, chain: &[Vec2], insets: &[Inset]) {
+pub(super) fn ring(g: &mut Group, labels: &mut Labels, view: &View, chain: &[Vec2], named: Named) {
     let n = chain.len().saturating_sub(1);
-    for inset in insets {
+    for (inset, letter) in named.insets.iter().zip(named.letters) {
         let pts: Vec<Point> = run_points(chain, &inset.terms, n).iter().map(|&v| view.p(v)).collect();
         let c = pts.iter().fold(Vec2::ZERO, |a, p| a + p.to_vec2()) / pts.len() as f64;
         let r = pts.iter().map(|p| (p.to_vec2() - c).norm()).fold(0.0, f64::max) + RING_PAD;
         let c = c.to_point();
         g.circle(c, r, THIN);
         let top = c + Vec2::new(r * 0.7, -r * 0.7);
-        labels.add(top, Vec2::new(1.0, -1.0), LabelText::new(&inset.letter, ""), 3.5);
+        labels.add(top, Vec2::new(1.0, -1.0), LabelText::new(letter, ""), 3.5);
     }
 }
 
@@ -210,13 +234,13 @@ pub(super) fn draw(
     inp: &ForcesInput,
     poly: &Polygon,
     chain: &[Vec2],
-    insets: &[Inset],
+    named: Named,
     r: Rect,
 ) {
     let n = poly.terms.len();
-    for inset in insets {
+    for (inset, letter) in named.insets.iter().zip(named.letters) {
         let slot = inset.slot + r.origin().to_vec2();
-        let title = LabelText::new(&inset.letter, "").with_tail(" (");
+        let title = LabelText::new(letter, "").with_tail(" (");
         let at = Point::new(slot.x0 + 2.0, slot.y0 + 4.0);
         title.draw(g, at, 3.5, Anchor::Start);
         let mut mu = scale_item(inp, "P", inset.mu, inp.words.common.unit_n_per_mm());

@@ -123,6 +123,7 @@ pub fn draw_forces(
         tables_together: cells::tables_together(&cells, &at),
     };
     let mut measured = Vec::new();
+    let mut letters = inset::Letters::of(inp);
     for (cell, &(body, origin)) in cells.iter().zip(&at) {
         let g: &mut Group = match (body, side.as_deref_mut()) {
             (b, Some(sg)) if (b == 1) != inp.side_first => sg,
@@ -136,7 +137,8 @@ pub fn draw_forces(
         match cell.content {
             Content::Polygon(i, ref layout) => {
                 let poly = &inp.fa.forces.polygons[i];
-                group::draw_group_cell(g, &mut labels, r, inp, poly, layout);
+                let letters = letters.take(layout.insets.len());
+                group::draw_group_cell(g, &mut labels, r, inp, (poly, layout), &letters);
                 scales.mu_l.push(layout.mu_l);
                 scales.mu_p.push(layout.mu_p);
                 scales.mu_f.push(layout.mu_f);

@@ -31,8 +31,8 @@ pub(super) fn draw_polygon(
     g: &mut Group,
     labels: &mut Labels,
     inp: &ForcesInput,
-    poly: &Polygon,
-    layout: &GroupLayout,
+    (poly, layout): (&Polygon, &GroupLayout),
+    named: inset::Named,
     r: Rect,
 ) {
     let view = View::centred(layout.chain_box, r, layout.mu_p);
@@ -58,7 +58,7 @@ pub(super) fn draw_polygon(
             labels.add(a.midpoint(b), outward(a, b), force_label(inp, t.kind, t.on), 3.5);
         }
     }
-    inset::ring(g, labels, &view, pts, &layout.insets);
+    inset::ring(g, labels, &view, pts, named);
     if let Some(inner) = &poly.inner {
         let (a, b) = (p(pts[poly.split]), p(pts[0]));
         if (b - a).norm() >= tol::PAPER_INVISIBLE {

@@ -15,7 +15,7 @@ use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::linkage::{Mechanism, PointId};
 use crate::num::math::Norm;
-use crate::sheets::lever::labels::{DETAIL_LETTERS, LeverWords};
+use crate::sheets::lever::labels::{LeverWords, free_detail_letters};
 use kurbo::{Point, Rect, Vec2};
 
 /// A crank whose radius on paper is under this gets a detail, mm: its twelve numbers in
@@ -103,12 +103,10 @@ fn title(m: &Mechanism, mu: f64, words: &LeverWords) -> (LabelText, LabelText) {
     (LabelText::new(letter(m), ""), scale)
 }
 
-/// The detail's letter: the last of [`DETAIL_LETTERS`] that begins no point's name (the
+/// The detail's letter: the last of the detail letters that begins no point's name (the
 /// force polygons' insets take them from the first).
 fn letter(m: &Mechanism) -> String {
-    let taken: Vec<String> = m.point_names.iter().map(|n| split_name(n).0).collect();
-    let free = DETAIL_LETTERS.chars().rev().map(String::from).find(|l| !taken.contains(l));
-    free.unwrap_or_else(|| "I".to_string())
+    free_detail_letters(&m.point_names).pop().unwrap_or_else(|| "I".to_string())
 }
 
 impl MechanismView<'_> {
