@@ -103,3 +103,41 @@ fn the_displacement_scale_stands_beside_its_axis() {
         assert!((0.0..20.0).contains(&gap), "{name}: the scale text ends {gap:.1} mm left of the axis");
     }
 }
+
+/// A 20 mm rocker swinging 5.7° (a stress sweep's find): its B′ curve and O lie within
+/// 3 mm of each other and the pivot A 20 mm away. Drawn with the pivot, the nomogram came
+/// out at 2:1 with the curve 6 mm across and its labels crossed. The pivot, seven times the
+/// picture's size away, is left off: the nomogram is drawn at 20:1 or larger, and O's line
+/// to the pivot ends at the picture's edge in an arrow named A, in the pivot's direction.
+#[test]
+fn a_far_rocker_pivot_is_left_off_the_nomogram_with_an_arrow_toward_it() {
+    use tmm_sheets::drawing::scene::Item;
+    let text = "project:\n  title: {en: \"Rocker\"}\n  language: en\ncam:\n  follower: {rocker: {length: 0.0200, swing_deg: 5.7}}\n  roller: auto\n  phases_deg: {rise: 117.17, far_dwell: 0.0, return: 212.22}\n  law: modified-sine\n  pressure_angle_deg: 56.5\n  sense: cw\n";
+    let b = pipeline::build(&pipeline::load(text).unwrap(), &[3]).unwrap().remove(0);
+    let r = &b.output.results;
+    assert!(layout_faults(&r["layout"]).is_empty(), "{:?}", r["layout"]);
+    let mu = r["nomogram_mu"].as_f64().unwrap();
+    assert!(mu <= 0.00005, "the nomogram at {mu} m/mm");
+    let g = b.output.scene.groups.iter().find(|g| g.id == "nomogram").expect("the nomogram");
+    let a = g.texts().find(|t| t.text == "A").expect("A named").at;
+    let o = g
+        .items
+        .iter()
+        .find_map(|i| match i {
+            Item::Circle { c, r, filled: true, .. } if (*r - 0.8).abs() < 1e-9 => Some(*c),
+            _ => None,
+        })
+        .expect("O's dot");
+    assert!(g.region.contains(a), "A at {a:?} outside {:?}", g.region);
+    // The pivot (l, 0) from O in the follower's frame, y up; on paper y runs down.
+    let (ox, oy) = (r["centre"][0].as_f64().unwrap(), r["centre"][1].as_f64().unwrap());
+    let world = kurbo::Vec2::new(0.02 - ox, -(0.0 - oy));
+    let paper = a - o;
+    let length = |v: kurbo::Vec2| (v.x * v.x + v.y * v.y).sqrt();
+    // Within 5° of it: sin 5° = 0.087.
+    let sine = world.cross(paper) / (length(world) * length(paper));
+    assert!(world.dot(paper) > 0.0 && sine.abs() < 0.087, "A drawn off the pivot's direction: sine {sine:.3}");
+    // a_w cannot be measured where A is not drawn: no segment offers it; r_min still.
+    let ids: Vec<&str> = b.output.segments.iter().map(|s| s.id.as_str()).collect();
+    assert!(ids.contains(&"nomogram.r_min") && !ids.contains(&"nomogram.a_w"), "{ids:?}");
+}

@@ -389,7 +389,8 @@ fn build_at(
     let (dg, scales) = diagrams_group(&lay, &column, p, &integrated, &words);
     let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), notes);
     let mut measured = segments::diagrams(d, &scales, &integrated, phis, &answers);
-    measured.extend(segments::nomogram(d, lay.nomogram_mu, &answers));
+    let pivot_drawn = nomogram::draws_pivot(d, prepared.nomogram_extent);
+    measured.extend(segments::nomogram(d, (lay.nomogram_mu, pivot_drawn), &answers));
     measured.extend(segments::profile(d, prof.mu, phis, &answers));
     let pressure = lay.pressure.and_then(|r| pressure_view::draw(r, d, phis, l.pressure_title(), &words));
     let mut groups = vec![dg, nm, pv];

@@ -90,13 +90,32 @@ pub fn bounds(discs: impl IntoIterator<Item = (Vec2, f64)>) -> (Vec2, Vec2) {
     })
 }
 
-/// Every point the nomogram must show, follower frame (a rocker's pivot last).
-fn extent_points(d: &Design, phis: &[f64]) -> Vec<Vec2> {
+/// Every point of the nomogram's picture round its curve: each B_k and B′_k, and O.
+fn near_points(d: &Design, phis: &[f64]) -> Vec<Vec2> {
     let r = &d.region;
     let mut pts: Vec<Vec2> = phis.iter().flat_map(|&phi| [r.state(phi).b, r.state(phi).analog]).collect();
     pts.push(d.centre.o);
-    pts.extend(d.spec.follower.pivot());
     pts
+}
+
+/// A rocker's pivot further from the picture of the curve and O than this many times that
+/// picture's longer side is left off the nomogram: drawn, it set the scale, and the curve,
+/// the zone and their labels shrank into a few millimetres by O (a 20 mm rocker swinging
+/// 5.7°: its curve 6 mm across at 2:1 with the pivot 40 mm away, the limiting line across
+/// three labels). The rocker lines then run to the picture's edge, and O's line to the
+/// pivot ends there in an arrow named A, a_w written along it. The catalogue's rockers are
+/// at most 2.5 times (task 4): drawn whole, as the course draws them; the stress sweep's
+/// small rockers, 7 times.
+const PIVOT_FAR: f64 = 4.0;
+
+/// Whether the nomogram of the box `extent` draws the follower's pivot (see [`PIVOT_FAR`]).
+pub fn draws_pivot(d: &Design, extent: (Vec2, Vec2)) -> bool {
+    d.spec.follower.pivot().is_some_and(|a| holds(a, extent))
+}
+
+/// Whether the box `(lo, hi)` holds `a`.
+fn holds(a: Vec2, (lo, hi): (Vec2, Vec2)) -> bool {
+    a.x >= lo.x && a.x <= hi.x && a.y >= lo.y && a.y <= hi.y
 }
 
 /// How far a ray from `p` (inside the box) along the unit `dir` runs before it leaves the box.
@@ -113,16 +132,18 @@ fn exit(p: Vec2, dir: Vec2, lo: Vec2, hi: Vec2) -> f64 {
     along(p.x, dir.x, lo.x, hi.x).min(along(p.y, dir.y, lo.y, hi.y)).max(0.0)
 }
 
-/// The follower-frame box (metres) the nomogram shows: every B_k and B′_k, O and the pivot,
-/// with room below O for the limiting lines to meet and round the picture for labels. The
-/// room is in proportion to the curve and O, where the labels are, not to a rocker's pivot
-/// as well: a_w away, it made the room round a rocker's nomogram half as wide again as its
-/// curve (a knife-edged rocker's nomogram came out at 1:1 where 2:1 fits once it goes).
+/// The follower-frame box (metres) the nomogram shows: every B_k and B′_k, O and the pivot
+/// (unless it is far, [`PIVOT_FAR`]), with room below O for the limiting lines to meet and
+/// round the picture for labels. The room is in proportion to the curve and O, where the
+/// labels are, not to a rocker's pivot as well: a_w away, it made the room round a rocker's
+/// nomogram half as wide again as its curve (a knife-edged rocker's nomogram came out at
+/// 1:1 where 2:1 fits once it goes).
 pub fn extent(d: &Design, phis: &[f64]) -> (Vec2, Vec2) {
-    let mut points = extent_points(d, phis);
-    let (lo, hi) = bounds(points.iter().map(|&p| (p, 0.0)));
-    points.truncate(points.len() - usize::from(d.spec.follower.pivot().is_some()));
-    let (near_lo, near_hi) = bounds(points.into_iter().map(|p| (p, 0.0)));
+    let (near_lo, near_hi) = bounds(near_points(d, phis).into_iter().map(|p| (p, 0.0)));
+    let side = (near_hi.x - near_lo.x).max(near_hi.y - near_lo.y);
+    let gap = |a: Vec2| Vec2::new(a.x - a.x.clamp(near_lo.x, near_hi.x), a.y - a.y.clamp(near_lo.y, near_hi.y)).norm();
+    let pivot = d.spec.follower.pivot().filter(|&a| gap(a) <= PIVOT_FAR * side);
+    let (lo, hi) = bounds([near_lo, near_hi].into_iter().chain(pivot).map(|p| (p, 0.0)));
     let pad = 0.15 * (near_hi - near_lo).norm();
     (lo - Vec2::new(pad, pad), hi + Vec2::new(pad, pad * 0.5))
 }
@@ -209,7 +230,7 @@ pub fn draw(
     let limiting = draw_limiting_lines(g, labels, view, at.extent, d, words);
     draw_zone_boundary(g, labels, (view, memo), at.extent, d, &limiting);
     labels.add_text_ranked(view.p(zone_anchor(d, at.extent, at.mu)), Vec2::ZERO, words.sheet.zone(), 2.5, 3);
-    draw_centre(g, labels, view, d, words);
+    draw_centre(g, labels, (view, at.extent), d, words);
 }
 
 /// Where the zone's name points: into the zone from O, 0.4 r_min deep, but inside the
@@ -233,17 +254,30 @@ fn draw_follower(g: &mut Group, labels: &mut Labels, view: View, (lo, hi): (Vec2
         }
         Follower::Rocker { length } => {
             let a = Vec2::new(length, 0.0);
-            frame_pivot(g, view.p(a), 1.5);
-            labels.add_text(view.p(a), Vec2::new(1.0, -1.0), "A", 3.5);
+            if holds(a, (lo, hi)) {
+                frame_pivot(g, view.p(a), 1.5);
+                labels.add_text(view.p(a), Vec2::new(1.0, -1.0), "A", 3.5);
+            }
             let arc: Vec<Point> = (0..=60)
                 .map(|k| view.p(r.state(phis[0] + (phis[phis.len() / 2 - 1] - phis[0]) * k as f64 / 60.0).b))
                 .collect();
             g.path(arc, false, THIN);
             for &phi in phis {
-                g.line(view.p(a), view.p(r.state(phi).b), THIN);
+                let b = r.state(phi).b;
+                g.line(view.p(toward(b, a, (lo, hi))), view.p(b), THIN);
             }
         }
     }
+}
+
+/// From `p` toward `a`: `a` itself where the box `(lo, hi)` holds it, else where the line
+/// leaves the box.
+fn toward(p: Vec2, a: Vec2, (lo, hi): (Vec2, Vec2)) -> Vec2 {
+    if holds(a, (lo, hi)) {
+        return a;
+    }
+    let dir = (a - p).unit();
+    p + dir * exit(p, dir, lo, hi)
 }
 
 /// The positions and their analog segments; positions drawn at one point share a label.
@@ -351,7 +385,7 @@ fn draw_zone_boundary(
 
 /// O and r_min as a radius (thin, its arrow at B₀ as on the profile), and the rocker's
 /// centre distance or the translating follower's offset.
-fn draw_centre(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words: &CamWords) {
+fn draw_centre(g: &mut Group, labels: &mut Labels, (view, extent): (View, (Vec2, Vec2)), d: &Design, words: &CamWords) {
     let (l, c, lang) = (words.sheet, words.common, words.lang);
     let o = d.centre.o;
     g.dot(view.p(o), 0.8);
@@ -364,10 +398,16 @@ fn draw_centre(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words
     ));
     labels.add(view.p(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5);
     if let Some(a) = d.spec.follower.pivot() {
-        g.line(view.p(o), view.p(a), DASHED);
+        let end = toward(o, a, extent);
+        g.line(view.p(o), view.p(end), DASHED);
+        if end != a {
+            // The pivot off the picture: an arrow to it at the edge, named.
+            vector(g, view.p(o + (end - o) * 0.8), view.p(end), THIN);
+            labels.add_text(view.p(end), view.p(end) - view.p(o), "A", 3.5);
+        }
         let dist = d.centre_distance().unwrap_or_default();
         let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::trimmed(mm(dist), lang), c.unit_mm()));
-        labels.add(view.p((o + a) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
+        labels.add(view.p((o + end) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
     } else if o.x.abs() > tol::ZERO_OFFSET {
         let depth = offset_depth(d, view.len(o.x.abs()));
         let mid = dimension(g, view.p(Vec2::new(0.0, o.y)), view.p(o), Vec2::new(0.0, depth));

@@ -47,15 +47,15 @@ pub fn diagrams(
     out
 }
 
-/// r_min and the rocker's centre distance a_w (or the translating follower's offset e) on
-/// the nomogram drawn at `mu` (m/mm).
-pub fn nomogram(d: &Design, mu: f64, answers: &AnswerKeys) -> Vec<Segment> {
+/// r_min and the rocker's centre distance a_w (where the pivot is drawn: `pivot_drawn`) or
+/// the translating follower's offset e on the nomogram drawn at `mu` (m/mm).
+pub fn nomogram(d: &Design, (mu, pivot_drawn): (f64, bool), answers: &AnswerKeys) -> Vec<Segment> {
     let seg = |name: &str, value: f64| {
         Segment::new(format!("nomogram.{name}"), name, mm(value), "mm", mm(mu))
             .answering(&format!("results.{name}"), answers)
     };
     let mut out = vec![seg("r_min", d.centre.r_min)];
-    out.extend(d.centre_distance().map(|a| seg("a_w", a)));
+    out.extend(d.centre_distance().filter(|_| pivot_drawn).map(|a| seg("a_w", a)));
     out.extend(d.offset().filter(|e| e.abs() > 0.0).map(|e| seg("e", e.abs())));
     out
 }
