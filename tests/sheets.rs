@@ -713,3 +713,30 @@ fn positions_that_coincide_on_paper_are_numbered_once() {
     assert_eq!(numbers, vec!["3′ ≡ 4".to_string()], "the extreme position's numbers");
     assert!(!mech.texts().any(|t| t.plain() == "4"), "position 4 numbered on its own too");
 }
+
+/// The centres of mass' trajectories are thin dashed lines (GOST 2.303 keeps dash-dot for
+/// axes), cut into strokes of 4 mm on the scene so that every renderer dashes them alike:
+/// on every fixture's sheet 1, no curve is dash-dot, and the mechanism's thin curved
+/// strokes are each at most 4 mm long.
+#[test]
+fn trajectories_are_thin_dashed_curves_not_axes() {
+    use kurbo::ParamCurveArclen;
+    use tmm_sheets::drawing::scene::{LineType, Seg};
+    for name in fixture_names() {
+        let r = build(&fixture(&name));
+        let mut strokes = 0;
+        for g in &r.output.scene.groups {
+            for item in &g.items {
+                let Item::Path { path, pen } = item else { continue };
+                let curved = path.segs.iter().any(|s| matches!(s, Seg::Cubic(..)));
+                assert!(!(curved && pen.line == LineType::DashDot), "{name}: a dash-dot curve in {}", g.id);
+                if g.id == "mechanism" && curved && pen.line == LineType::Solid && pen.width < 0.3 {
+                    let length: f64 = path.to_bez().segments().map(|s| s.arclen(1e-6)).sum();
+                    assert!(length <= 4.01, "{name}: a thin curve {length:.2} mm long");
+                    strokes += 1;
+                }
+            }
+        }
+        assert!(strokes >= 20, "{name}: {strokes} trajectory strokes");
+    }
+}

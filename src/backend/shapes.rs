@@ -17,11 +17,7 @@ pub const ARC_TOLERANCE: f64 = 1e-4;
 
 /// The dash pattern of a line type (strokes and gaps, mm); `None`: solid.
 pub fn dash_array(line: LineType) -> Option<&'static [f64]> {
-    match line {
-        LineType::Solid => None,
-        LineType::Dashed => Some(&[4.0, 1.5]),
-        LineType::DashDot => Some(&[10.0, 1.5, 0.5, 1.5]),
-    }
+    line.dashes()
 }
 
 /// A path's lines, cubics and arcs as lines and cubics (arcs within [`ARC_TOLERANCE`]).

@@ -13,8 +13,20 @@ pub enum LineType {
     Solid,
     /// Strokes 4 mm, gaps 1.5 mm.
     Dashed,
-    /// Strokes 10 mm, gaps 3.5 mm with a dot: axes and trajectories.
+    /// Strokes 10 mm, 3.5 mm between them with a dot: axes (GOST 2.303 asks strokes of
+    /// 5–30 mm and 3–5 mm between strokes).
     DashDot,
+}
+
+impl LineType {
+    /// The dash pattern (strokes and gaps, mm); `None`: solid.
+    pub const fn dashes(self) -> Option<&'static [f64]> {
+        match self {
+            LineType::Solid => None,
+            LineType::Dashed => Some(&[4.0, 1.5]),
+            LineType::DashDot => Some(&[10.0, 1.5, 0.5, 1.5]),
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -306,6 +318,37 @@ impl Group {
     /// A path of lines, curves and arcs.
     pub fn curve(&mut self, path: Path, pen: Pen) {
         self.items.push(Item::Path { path, pen });
+    }
+
+    /// A curve in `pen`'s line type, its strokes cut here as solid pieces: every renderer
+    /// dashes a long Bézier curve by its own measure of its length, so the SVG, PDF and PNG
+    /// put the gaps of a dashed trajectory in different places (straight lines they dash
+    /// alike, and keep their line type).
+    pub fn dashed_curve(&mut self, path: Path, pen: Pen) {
+        let Some(pattern) = pen.line.dashes() else {
+            return self.curve(path, pen);
+        };
+        let solid = Pen { line: LineType::Solid, ..pen };
+        let mut piece: Option<Path> = None;
+        for el in kurbo::dash(path.to_bez().into_iter(), 0.0, pattern) {
+            match el {
+                kurbo::PathEl::MoveTo(p) => {
+                    self.items.extend(piece.replace(Path::new(p)).map(|path| Item::Path { path, pen: solid }));
+                }
+                kurbo::PathEl::LineTo(p) => piece.iter_mut().for_each(|q| q.segs.push(Seg::Line(p))),
+                kurbo::PathEl::QuadTo(p1, p2) => {
+                    // Raised to a cubic (dashing a cubic path never makes one; kept exact).
+                    let p0 = piece.as_ref().map_or(p1, Path::end);
+                    let (c1, c2) = (p0 + (p1 - p0) * (2.0 / 3.0), p2 + (p1 - p2) * (2.0 / 3.0));
+                    piece.iter_mut().for_each(|q| q.segs.push(Seg::Cubic(c1, c2, p2)));
+                }
+                kurbo::PathEl::CurveTo(p1, p2, p3) => {
+                    piece.iter_mut().for_each(|q| q.segs.push(Seg::Cubic(p1, p2, p3)))
+                }
+                kurbo::PathEl::ClosePath => {}
+            }
+        }
+        self.items.extend(piece.map(|path| Item::Path { path, pen: solid }));
     }
 
     /// A filled outline (an arrowhead).

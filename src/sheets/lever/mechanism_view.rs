@@ -7,7 +7,7 @@ use crate::drawing::fmt;
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
-use crate::drawing::scene::{AXIS, Group, Item, MAIN, Pen, THIN};
+use crate::drawing::scene::{AXIS, DASHED, Group, Item, MAIN, Pen, THIN};
 use crate::drawing::symbols::{clear_turn_arrow, dimension, frame_pivot, hatch, slider, turn_arrow_reach};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
@@ -24,11 +24,10 @@ pub(super) use crank_detail::{DETAIL_GAP, DetailAt, DetailPlace, detail_place};
 const SLIDER: (f64, f64) = (10.0, 5.0);
 const BLOCK: (f64, f64) = (7.0, 4.0);
 const JOINT_R: f64 = 1.0;
-/// The centres of mass' paths, and the legend's sample of them. (Thin dashed, as GOST 2.303
-/// would have it, renders its dashes along these long Bézier paths differently in the SVG,
-/// PDF and PNG renderers — the backends' agreement test sees it — so dash-dot stays until
-/// the backends dash curves alike.)
-pub const TRAJECTORY: Pen = AXIS;
+/// The centres of mass' paths, and the legend's sample of them: thin dashed (a dash-dot
+/// line is an axis in GOST 2.303), the paths' dashes cut on the scene
+/// ([`Group::dashed_curve`]) so that every renderer puts them in the same places.
+pub const TRAJECTORY: Pen = DASHED;
 /// A slider's stroke shorter than this on paper is not dimensioned: its arrows would hide it, mm.
 const STROKE_MIN_MM: f64 = 3.0;
 /// A slider's stroke to dimension: the rod's joint, the slider's point, the guide (a point and
@@ -113,7 +112,7 @@ impl MechanismView<'_> {
             let bb = path.bbox();
             // A path that is a point or a line (a slider's centre) is not drawn: its guide shows it.
             if bb.width().max(bb.height()) > 1.0 && bb.width().min(bb.height()) > 0.3 {
-                g.curve(path, TRAJECTORY);
+                g.dashed_curve(path, TRAJECTORY);
             }
         }
         self.guides(g);
