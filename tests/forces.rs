@@ -167,3 +167,39 @@ forces:
         assert_near!(f.p_m, -expected, Near::rel(1e-12).floor(1e-9), "θ = {deg}°: P_m against the closed form");
     }
 }
+
+/// A kulisa's block with a moment of inertia (`fixtures/kulisa.yaml` with J = 0.01 kg·m² on
+/// link 2): on the lever its couple stands at the images of the kulisa's joints, which the
+/// block turns with — the lever takes the same moment M·ω, computed here from the velocity
+/// plan. At a point a metre along the block, its second arrow stood 120 mm off the lever,
+/// alone. The balancing force still agrees three ways.
+#[test]
+fn a_blocks_inertia_couple_stands_on_its_kulisas_image() {
+    let text = std::fs::read_to_string(common::root().join("fixtures/kulisa.yaml"))
+        .unwrap()
+        .replace("- {link: 2, mass: 2}", "- {link: 2, mass: 2, inertia: 0.01}");
+    let p = lever_of(&text);
+    let k = analysis::kinematics(&p.mechanism, &p.settings).expect("kinematics");
+    let fa = analysis::forces(&p.mechanism, &k, p.forces.as_ref().unwrap()).unwrap();
+    let (m, f) = (&p.mechanism, &fa.forces);
+    let block = m.links.iter().position(|l| l.number == 2).unwrap();
+    let kulisa = m.links.iter().position(|l| l.number == 3).unwrap();
+    let state = &k.assigned.state;
+    let sense = if m.sense().sign() > 0.0 { 1.0 } else { -1.0 };
+    let images: Vec<_> = m.links[kulisa].points.iter().map(|&q| state.points[q].v.turn_90() * sense).collect();
+    let couple: Vec<_> = f.lever.iter().filter(|l| l.couple && l.on == block).collect();
+    assert_eq!(couple.len(), 2, "the block's couple");
+    for c in &couple {
+        let on_kulisa = images.iter().any(|&i| (i - c.image).hypot() < 1e-12);
+        assert!(on_kulisa, "a couple force at {:?}, not at a kulisa joint's image {images:?}", c.image);
+    }
+    // The couple's moment on the lever is its power M·ω turned into a moment about the pole:
+    // the images are the velocities turned 90° in ω1's sense, (v0 − v1) = ω·(p0 − p1)⊥,
+    // so Σ image × F = −sense·ω·M.
+    let inertia = f.inertia.iter().find(|i| i.link == block).unwrap();
+    let moment: f64 = couple.iter().map(|c| c.image.cross(c.force)).sum();
+    let power = inertia.moment * state.links[block].omega;
+    assert!((moment + power * sense).abs() < 1e-9 * power.abs().max(1e-9), "{moment} vs −M·ω = {}", -power * sense);
+    let tol = 1e-9 * largest_force(f);
+    assert_near!(f.p_m, f.p_m_lever, tol, "kinetostatics against the lever");
+}

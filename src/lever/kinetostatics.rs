@@ -464,15 +464,34 @@ fn zhukovsky(
     (lever, all, p)
 }
 
-/// Two points of `link` (position, velocity) for an inertia couple: its first two distinct
-/// points, or its first point and one a metre along the link.
+/// Two points (position, velocity) for `link`'s inertia couple: its first two distinct
+/// points; for a kulisa's block (one joint), the kulisa's, which it turns with — a
+/// couple's power is M·ω, so the lever takes the same moment, and the couple stands along
+/// the kulisa's image (at the block's joint and a point a metre along it, its second arrow
+/// stood 120 mm off the lever, alone); else its joint and the point along it as far as the
+/// mechanism's nearest other point.
 fn couple_points(m: &Mechanism, s: &State, link: LinkId) -> ((Vec2, Vec2), (Vec2, Vec2)) {
-    let pts = &m.links[link].points;
-    let k0 = s.points[pts[0]];
-    if let Some(&q) = pts.iter().skip(1).find(|&&q| (s.points[q].p - k0.p).norm() > tol::SAME_POINT * m.size) {
-        let k1 = s.points[q];
-        return ((k0.p, k0.v), (k1.p, k1.v));
+    let apart = |a: Vec2, b: Vec2| (a - b).norm() > tol::SAME_POINT * m.size;
+    let two = |l: LinkId| {
+        let pts = &m.links[l].points;
+        let k0 = s.points[pts[0]];
+        pts.iter().skip(1).map(|&q| s.points[q]).find(|k1| apart(k1.p, k0.p)).map(|k1| ((k0.p, k0.v), (k1.p, k1.v)))
+    };
+    if let Some(found) = two(link).or_else(|| kulisa_of(m, link).and_then(two)) {
+        return found;
     }
+    let k0 = s.points[m.links[link].points[0]];
+    let nearest =
+        s.points.iter().filter(|q| apart(q.p, k0.p)).map(|q| (q.p - k0.p).norm()).fold(f64::INFINITY, f64::min);
+    let d = if nearest.is_finite() { nearest } else { m.size };
     let lk = s.links[link];
-    ((k0.p, k0.v), (k0.p + lk.dir, k0.v + lk.dir.turn_90() * lk.omega))
+    ((k0.p, k0.v), (k0.p + lk.dir * d, k0.v + lk.dir.turn_90() * (lk.omega * d)))
+}
+
+/// The kulisa a block slides on (the other link of its RPR group).
+fn kulisa_of(m: &Mechanism, block: LinkId) -> Option<LinkId> {
+    m.steps.iter().find_map(|step| match *step {
+        Step::Rpr { links, .. } if links.contains(&block) => links.into_iter().find(|&l| l != block),
+        _ => None,
+    })
 }
