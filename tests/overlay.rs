@@ -7,6 +7,7 @@ mod common;
 use common::{fixture, fixture_names};
 use std::collections::BTreeMap;
 use tmm_sheets::backend::svg;
+use tmm_sheets::drawing::frame::DESIGNATION_BOX;
 use tmm_sheets::drawing::scene::{Ink, Item};
 use tmm_sheets::pipeline::{self, Built};
 use tmm_sheets::sheets::scaffold;
@@ -38,6 +39,7 @@ fn every_mark_of_the_overlay_is_a_mark_of_the_sheet_at_the_same_place() {
             }
             assert!(!text.contains("<text") && !text.contains("#000") && !text.contains("fill=\"#fff\""));
             assert!(!text.contains("title-block") && !text.contains(".table."), "{name}: a table on the overlay");
+            assert!(!text.contains(DESIGNATION_BOX), "{name}: box 26 (the title block's) on the overlay");
         }
     }
 }
@@ -46,7 +48,7 @@ fn every_mark_of_the_overlay_is_a_mark_of_the_sheet_at_the_same_place() {
 fn every_line_of_every_drawing_is_on_the_overlay() {
     let b = &sheets("worked-example")[0];
     let over = scaffold::overlay(&b.output.scene);
-    for g in b.output.scene.groups.iter().filter(|g| g.id != scaffold::TITLE_BLOCK) {
+    for g in b.output.scene.groups.iter().filter(|g| g.id != scaffold::TITLE_BLOCK && g.id != DESIGNATION_BOX) {
         let og = over.groups.iter().find(|o| o.id == g.id).expect("the group is on the overlay");
         let in_tables: usize = g
             .parts

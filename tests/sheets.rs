@@ -740,3 +740,43 @@ fn trajectories_are_thin_dashed_curves_not_axes() {
         assert!(strokes >= 20, "{name}: {strokes} trajectory strokes");
     }
 }
+
+/// GOST 2.104's box 26: 70 × 14 mm in the frame's top-left corner, the designation in it
+/// turned 180°, and no drawing or text of the sheet entering it (each sheet's first
+/// heading starts right of it). Every sheet of every fixture and of the worked example in
+/// every language.
+#[test]
+fn box_26_holds_the_designation_turned_and_nothing_else() {
+    use tmm_sheets::drawing::frame::{DESIGNATION_BOX, FRAME};
+    let mut projects: Vec<(String, Project)> = fixture_names().into_iter().map(|n| (n.clone(), fixture(&n))).collect();
+    for lang in Language::ALL {
+        let mut p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+        p.info.language = lang;
+        projects.push((format!("worked example {lang:?}"), p));
+    }
+    for (name, p) in projects {
+        for b in pipeline::build(&p, &[]).unwrap() {
+            let n = b.output.number;
+            let groups = &b.output.scene.groups;
+            let g = groups.iter().find(|g| g.id == DESIGNATION_BOX).unwrap_or_else(|| panic!("{name} {n}: no box 26"));
+            let f = frame::inner();
+            assert_eq!(g.region, Rect::new(f.x0, f.y0, f.x0 + 70.0, f.y0 + 14.0), "{name} {n}");
+            let texts: Vec<_> = g.texts().collect();
+            let written: String = texts.iter().map(|t| t.text.as_str()).collect::<Vec<_>>().join(" ");
+            assert_eq!(written, p.info.designation(), "{name} {n}: box 26 says {written:?}");
+            for t in &texts {
+                assert_eq!(t.rotate, 180.0, "{name} {n}: box 26's text turned {}°", t.rotate);
+                let bb = Item::Text((*t).clone()).bbox();
+                assert!(frame::is_inside(g.region, bb), "{name} {n}: box 26's text {bb:?} outside it");
+            }
+            let inside = g.region.inflate(-0.5, -0.5);
+            for other in groups.iter().filter(|o| o.id != DESIGNATION_BOX && o.id != FRAME) {
+                for item in &other.items {
+                    let bb = item.bbox();
+                    let meets = bb.x0 < inside.x1 && inside.x0 < bb.x1 && bb.y0 < inside.y1 && inside.y0 < bb.y1;
+                    assert!(!meets, "{name} {n}: '{}' enters box 26: {bb:?}", other.id);
+                }
+            }
+        }
+    }
+}

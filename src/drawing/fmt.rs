@@ -11,6 +11,17 @@ pub fn value(x: f64, lang: Language) -> String {
     localise(&digits::significant(x), lang)
 }
 
+/// Two values written as [`value`] does, with more digits where that writes them alike: a
+/// shift just under its limit read "x = 0,2941 < x_min = 0,2941".
+pub fn values_apart(a: f64, b: f64, lang: Language) -> (String, String) {
+    let (sa, sb) = (value(a, lang), value(b, lang));
+    if sa != sb || a == b {
+        return (sa, sb);
+    }
+    let at = |d: usize| (localise(&digits::sig(a, d), lang), localise(&digits::sig(b, d), lang));
+    (5..=15).map(at).find(|(x, y)| x != y).unwrap_or((sa, sb))
+}
+
 /// A value with four significant digits, trailing zeros dropped (a module of 5 mm is "5", a
 /// scale of 0,001000 m/mm is "0,001").
 pub fn trimmed(x: f64, lang: Language) -> String {
@@ -80,6 +91,15 @@ mod tests {
         assert_eq!(scientific(-250.0, Language::En), "−2.5·10²");
         assert_eq!(value(-4600.0, Language::Ru), "−4600");
         assert_eq!(scientific(0.0, Language::En), "0");
+    }
+
+    /// A shift just under the course's limit 5/17 = 0.294118 is written apart from it.
+    #[test]
+    fn values_written_alike_get_the_digits_that_tell_them_apart() {
+        assert_eq!(values_apart(0.2940, 5.0 / 17.0, Language::Ru), ("0,2940".into(), "0,2941".into()));
+        assert_eq!(values_apart(0.29410, 5.0 / 17.0, Language::En), ("0.2941".into(), "0.29412".into()));
+        assert_eq!(values_apart(0.2, 0.3, Language::En), ("0.2000".into(), "0.3000".into()));
+        assert_eq!(values_apart(0.25, 0.25, Language::En), ("0.2500".into(), "0.2500".into()));
     }
 }
 

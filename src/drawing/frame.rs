@@ -3,7 +3,7 @@
 
 use super::labels::Common;
 use super::scene::{Anchor, Group, MAIN, THIN, Text};
-use super::text::{Fitted, SLANT, TooLong, fit, paragraph_stretched, wrap};
+use super::text::{Fitted, LINE_PITCH, SLANT, TooLong, fit, paragraph_stretched, wrap};
 use crate::num::tol;
 use kurbo::{Point, Rect};
 use serde::Deserialize;
@@ -157,6 +157,8 @@ fn template() -> &'static Template {
 pub const FRAME: &str = "frame";
 /// The title block's group id.
 pub const TITLE_BLOCK: &str = "title-block";
+/// GOST 2.104's box 26's group id.
+pub const DESIGNATION_BOX: &str = "designation-box";
 
 pub const A1_W: f64 = 841.0;
 pub const A1_H: f64 = 594.0;
@@ -179,6 +181,51 @@ pub fn title_block_rect() -> Rect {
     let f = inner();
     let [w, h] = template().title_block.size;
     Rect::new(f.x1 - w, f.y1 - h, f.x1, f.y1)
+}
+
+/// GOST 2.104's box 26, 70 × 14 mm in the frame's top-left corner: the designation again,
+/// turned 180° (a sheet larger than A4 whose title block runs along its long side).
+pub fn designation_box() -> Rect {
+    let f = inner();
+    Rect::new(f.x0, f.y0, f.x0 + 70.0, f.y0 + 14.0)
+}
+
+/// Room kept between box 26 and a heading beside or under it, mm.
+const BOX_GAP: f64 = 1.5;
+
+/// Where a heading line set at `at` (its baseline's start) in `h` mm lettering starts clear
+/// of box 26: right of it where the line would run into it, else where it is. Each sheet's
+/// first heading stands in the frame's top-left corner.
+pub fn clear_of_designation_box(at: Point, h: f64) -> Point {
+    let b = designation_box().inflate(BOX_GAP, BOX_GAP);
+    // The lettering's ascent (capitals and their accents) above the baseline and its
+    // descenders below.
+    let (top, bottom) = (at.y - 1.1 * h, at.y + 0.3 * h);
+    if at.x < b.x1 && top < b.y1 && bottom > b.y0 { Point::new(b.x1, at.y) } else { at }
+}
+
+/// Draws box 26 with the designation turned 180° (none for an empty designation), in the
+/// designation's lettering where it fits, down to 2.5 mm over two lines.
+pub fn designation_box_group(designation: &str) -> Result<Group, TooLong> {
+    let r = designation_box();
+    let mut g = Group::new(DESIGNATION_BOX, r);
+    rect_path(&mut g, r);
+    if designation.is_empty() {
+        return Ok(g);
+    }
+    let f = fit_cell(designation, r, 7.0, FieldName::Designation.source(), "box 26 (top left)")?;
+    // Turned 180° about its baseline's middle, a line's letters hang below it: the first
+    // line (read with the sheet turned) is the lowest.
+    let pitch = LINE_PITCH * f.h;
+    let block = f.h + pitch * (f.lines.len() as f64 - 1.0);
+    let first = r.center().y + block / 2.0 - f.h;
+    for (i, line) in f.lines.iter().enumerate() {
+        let at = Point::new(r.center().x, first - pitch * i as f64);
+        let mut t = Text::new(at, line.clone(), f.h, Anchor::Middle).with_stretch(f.stretch);
+        t.rotate = 180.0;
+        g.text(t);
+    }
+    Ok(g)
 }
 
 /// The title block's name field (sheet name, project title, course), on the sheet.

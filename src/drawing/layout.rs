@@ -2,7 +2,7 @@
 //! each other, items leaving their region or the page. A teacher sends a sheet back for any of them, so
 //! `results.json` reports the counts and the tests hold them at zero.
 
-use super::frame::{FRAME, TITLE_BLOCK};
+use super::frame::{DESIGNATION_BOX, FRAME, TITLE_BLOCK};
 use super::obstacles::{Obstacles, Piece, segment_meets_rect, segments};
 use super::scene::{Item, Scene};
 use crate::num::math::Norm;
@@ -114,18 +114,23 @@ fn measure_flat(scene: &Scene, flat: &Flattened) -> Layout {
         }
     }
     let page = Rect::new(0.0, 0.0, scene.width, scene.height);
-    // The title block is no drawing's room, whatever its region says.
-    let title_block = scene.groups.iter().find(|g| g.id == TITLE_BLOCK).map(|g| g.region.inflate(-EDGE, -EDGE));
+    // The title block and box 26 are no drawing's room, whatever its region says.
+    let blocks: Vec<Rect> = scene
+        .groups
+        .iter()
+        .filter(|g| g.id == TITLE_BLOCK || g.id == DESIGNATION_BOX)
+        .map(|g| g.region.inflate(-EDGE, -EDGE))
+        .collect();
     for g in &scene.groups {
         let region = g.region.inflate(EDGE, EDGE);
-        let block = title_block.filter(|_| g.id != TITLE_BLOCK && g.id != FRAME);
+        let own = [TITLE_BLOCK, DESIGNATION_BOX, FRAME].contains(&g.id.as_str());
         for item in &g.items {
             let bb = item.bbox();
-            if let Some(tb) =
-                block.filter(|tb| tb.intersect(bb).area() > 0.0 && !Obstacles::of_items([item]).is_clear(*tb))
-            {
-                out.outside_region += 1;
-                out.note(format!("drawing '{}': {} enters the title block {}", g.id, extent(bb), extent(tb)));
+            for tb in blocks.iter().filter(|tb| !own && tb.intersect(bb).area() > 0.0) {
+                if !Obstacles::of_items([item]).is_clear(*tb) {
+                    out.outside_region += 1;
+                    out.note(format!("drawing '{}': {} enters the title block {}", g.id, extent(bb), extent(*tb)));
+                }
             }
             if !inside(page.inflate(EDGE, EDGE), bb) {
                 out.outside_region += 1;

@@ -46,10 +46,11 @@ pub fn scene(ctx: &Context, kind: SheetKind, c: &Composition) -> Result<Scene, T
     let mut fr = Group::new(frame::FRAME, Rect::new(0.0, 0.0, A1_W, A1_H));
     frame::frame(&mut fr);
     let tb = ctx.title_block(Common::get(lang), &c.name, &fmt::localise(&scale::ratio(c.mu_l), lang))?;
-    let mut groups = Vec::with_capacity(c.groups.len() + 2);
+    let mut groups = Vec::with_capacity(c.groups.len() + 3);
     groups.push(fr);
     groups.extend(c.groups.iter().cloned());
     groups.push(tb);
+    groups.push(frame::designation_box_group(ctx.info.designation())?);
     Ok(Scene {
         ink: Default::default(),
         name: format!("sheet{}", kind.number),
@@ -67,7 +68,12 @@ pub use crate::drawing::frame::TITLE_BLOCK;
 /// and arrowheads; no letters, no tables, no title block — what a student draws with
 /// instruments, not what they write.
 pub fn overlay(scene: &Scene) -> Scene {
-    let groups = scene.groups.iter().filter(|g| g.id != TITLE_BLOCK).map(constructions).collect();
+    let groups = scene
+        .groups
+        .iter()
+        .filter(|g| g.id != TITLE_BLOCK && g.id != frame::DESIGNATION_BOX)
+        .map(constructions)
+        .collect();
     Scene { ink: Ink::Overlay, groups, ..scene.clone() }
 }
 
@@ -95,8 +101,12 @@ fn constructions(g: &Group) -> Group {
 /// The layout measurement of the whole sheet (see [`layout::measure`]).
 pub fn measure(scene: &Scene, c: &Composition) -> Layout {
     // The drawing field: inside the frame, the title block left out.
-    let (mut layout, share) =
-        layout::measure_with_share(scene, frame::inner(), frame::title_block_rect(), &["frame", TITLE_BLOCK]);
+    let (mut layout, share) = layout::measure_with_share(
+        scene,
+        frame::inner(),
+        frame::title_block_rect(),
+        &["frame", TITLE_BLOCK, frame::DESIGNATION_BOX],
+    );
     layout.smallest_plan_mm = c.smallest_plan_mm;
     // Three decimals: the same bytes on every machine.
     layout.empty_share = Some((share * 1e3).round() / 1e3);

@@ -432,8 +432,10 @@ fn diagrams_group(
 ) -> (Group, Scales) {
     let width = lay.diagrams.width() - 4.0;
     let mut dg = Group::new("diagrams", lay.diagrams);
-    let at = Point::new(lay.diagrams.x0 + 2.0, lay.diagrams.y0 + 5.0);
-    let mut y = paragraph(&mut dg, at, &wrap(&column.title, 3.5, width), 3.5, Anchor::Start);
+    let at =
+        crate::drawing::frame::clear_of_designation_box(Point::new(lay.diagrams.x0 + 2.0, lay.diagrams.y0 + 5.0), 3.5);
+    let mut y =
+        paragraph(&mut dg, at, &wrap(&column.title, 3.5, width - (at.x - lay.diagrams.x0 - 2.0)), 3.5, Anchor::Start);
     // The diagrams spread over what the region leaves under the notes.
     let below = lay.diagrams.y1 - (y + 2.0 + column.plan.height + 4.0 + notes_h(&column.notes, width) + 1.0);
     let area =

@@ -22,7 +22,10 @@ pub(super) fn heading_w(title: &str) -> f64 {
 /// A view's group with its title at the region's top left.
 pub(super) fn view_group(id: &str, region: Rect, title: &str) -> Group {
     let mut g = Group::new(id, region);
-    g.text(view_title(region, title));
+    let mut t = view_title(region, title);
+    // Clear of box 26 in the frame's top-left corner (no view stands there yet).
+    t.at = crate::drawing::frame::clear_of_designation_box(t.at, t.h);
+    g.text(t);
     g
 }
 

@@ -194,7 +194,8 @@ fn mesh_group(
         &p.pair.wheels[0].z.to_string(),
         &p.pair.wheels[1].z.to_string(),
     );
-    mesh.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
+    let at = crate::drawing::frame::clear_of_designation_box(Point::new(region.x0 + 2.0, region.y0 + 6.0), 5.0);
+    mesh.text(Text::new(at, title, 5.0, Anchor::Start));
     // The notes' height: four lines of results and the notes, each wrapped.
     let notes_w = region.width() - 4.0;
     let wrapped = |n: &str| wrap(n, CELL_TEXT, notes_w);
@@ -248,7 +249,10 @@ fn mesh_notes(p: &GearsProject, words: &GearWords) -> Vec<String> {
     }
     for w in &p.warnings {
         out.push(match w {
-            PairWarning::Undercut { wheel, x, x_min, .. } => l.undercut_note(&wheel.to_string(), &v(*x), &v(*x_min)),
+            PairWarning::Undercut { wheel, x, x_min, .. } => {
+                let (x, x_min) = fmt::values_apart(*x, *x_min, lang);
+                l.undercut_note(&wheel.to_string(), &x, &x_min)
+            }
             PairWarning::ThinTip { wheel, s_a, .. } => l.thin_tip_note(&wheel.to_string(), &v(mm(*s_a))),
             PairWarning::LowContactRatio { eps } => l.low_ratio_note(&v(*eps)),
             PairWarning::Interference { wheel } => l.interference_note(&wheel.to_string()),

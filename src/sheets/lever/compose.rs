@@ -490,9 +490,11 @@ pub(super) fn side_region(mech: Rect, forces: Rect) -> Option<Rect> {
 const SIDE_MIN: (f64, f64) = (80.0, 60.0);
 
 /// A region's title (5 mm) and its line of scale and formula (3.5 mm).
+/// Each starts clear of box 26 where the region is in the frame's top-left corner.
 pub(super) fn region_header(g: &mut Group, r: Rect, title: &str, lines: &[LabelText]) {
-    g.text(Text::new(Point::new(r.x0 + 2.0, r.y0 + 6.0), title, 5.0, Anchor::Start));
-    let mut x = r.x0 + 2.0;
+    let clear = frame::clear_of_designation_box;
+    g.text(Text::new(clear(Point::new(r.x0 + 2.0, r.y0 + 6.0), 5.0), title, 5.0, Anchor::Start));
+    let mut x = clear(Point::new(r.x0 + 2.0, r.y0 + 12.5), 3.5).x;
     for line in lines {
         let bb = line.draw(g, Point::new(x, r.y0 + 12.5), 3.5, Anchor::Start);
         x = bb.x1 + 8.0;
