@@ -409,3 +409,32 @@ fn turned_and_anchored_text_lands_where_the_svg_puts_it() {
     let turned_back = unmatched(&png_at(&turned_texts(-1.0), dpi), &svg);
     assert!(!turned_back.within(TOLERANCE), "turning the other way must show: {turned_back:?}");
 }
+
+/// Box 26 with a designation that wraps nowhere, so it is condensed (and turned 180°): the
+/// PNG, the PDF and the SVG set it in the same place. Centred by its anchor, a condensed
+/// turned line was put 14 mm left of the box by the PDF's viewer and 22 mm right by librsvg.
+#[test]
+fn a_condensed_turned_designation_lands_alike_in_every_backend() {
+    let g =
+        tmm_sheets::drawing::frame::designation_box_group("ТММ-КП-01.00.00-ПЗ-ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789")
+            .unwrap();
+    let t = g.texts().next().expect("the designation");
+    assert!(t.stretch < 1.0 && t.rotate == 180.0, "condensed and turned: {t:?}");
+    let scene = Scene {
+        ink: Default::default(),
+        name: "s".into(),
+        width: 100.0,
+        height: 30.0,
+        title: "test".into(),
+        groups: vec![g],
+    };
+    let dpi = 200.0;
+    let (ours, svg) = (png_at(&scene, dpi), resvg_at(&scene, dpi));
+    let same = unmatched(&ours, &svg);
+    assert!(same.within(TOLERANCE), "PNG / SVG: {same:?}");
+    if have("pdftoppm") {
+        let page = poppler("pdftoppm", &["-r", &dpi.to_string(), "-png"], &pdf(&scene), &[]);
+        let from_pdf = unmatched(&Ink::from_png(&page), &ours);
+        assert!(from_pdf.within(TOLERANCE), "PDF / PNG: {from_pdf:?}");
+    }
+}

@@ -220,8 +220,11 @@ pub fn designation_box_group(designation: &str) -> Result<Group, TooLong> {
     let block = f.h + pitch * (f.lines.len() as f64 - 1.0);
     let first = r.center().y + block / 2.0 - f.h;
     for (i, line) in f.lines.iter().enumerate() {
-        let at = Point::new(r.center().x, first - pitch * i as f64);
-        let mut t = Text::new(at, line.clone(), f.h, Anchor::Middle).with_stretch(f.stretch);
+        // Set from its start, half its advance right of the middle (it runs leftwards):
+        // renderers centre a condensed, turned line each its own way (a PDF viewer put it
+        // 14 mm left of the box, librsvg 22 mm right).
+        let mut t = Text::new(Point::ZERO, line.clone(), f.h, Anchor::Start).with_stretch(f.stretch);
+        t.at = Point::new(r.center().x + t.advance() / 2.0, first - pitch * i as f64);
         t.rotate = 180.0;
         g.text(t);
     }
