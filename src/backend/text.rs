@@ -45,10 +45,14 @@ pub struct SetText<'a> {
 
 /// Sets a text's runs with the embedded font.
 pub fn set(t: &Text) -> SetText<'_> {
+    // The runs are set in the text's frame, which the stretch then scales: the anchor's
+    // offset is the advance before it (a condensed, centred line set from half its condensed
+    // advance stood off its middle by a sixth of its width in the PDF and PNG, not the SVG).
+    let advance = t.advance() / t.stretch;
     let mut x = match t.anchor {
         Anchor::Start => 0.0,
-        Anchor::Middle => -t.advance() / 2.0,
-        Anchor::End => -t.advance(),
+        Anchor::Middle => -advance / 2.0,
+        Anchor::End => -advance,
     };
     let runs = t
         .runs()
