@@ -394,18 +394,25 @@ fn turned_texts(sign: f64) -> Scene {
     scene_of(items)
 }
 
+/// Our PNG of `scene` at `dpi` matches resvg's of our SVG and poppler's of our PDF within
+/// [`TOLERANCE`].
+fn assert_backends_agree(scene: &Scene, dpi: f64) {
+    let (ours, svg) = (png_at(scene, dpi), resvg_at(scene, dpi));
+    let same = unmatched(&ours, &svg);
+    assert!(same.within(TOLERANCE), "PNG / SVG: {same:?}");
+    if have("pdftoppm") {
+        let page = poppler("pdftoppm", &["-r", &dpi.to_string(), "-png"], &pdf(scene), &[]);
+        let from_pdf = unmatched(&Ink::from_png(&page), &ours);
+        assert!(from_pdf.within(TOLERANCE), "PDF / PNG: {from_pdf:?}");
+    }
+}
+
 #[test]
 fn turned_and_anchored_text_lands_where_the_svg_puts_it() {
     let dpi = 200.0;
     let scene = turned_texts(1.0);
-    let (ours, svg) = (png_at(&scene, dpi), resvg_at(&scene, dpi));
-    let same = unmatched(&ours, &svg);
-    assert!(same.within(TOLERANCE), "PNG / SVG: {same:?}");
-    if have("pdftoppm") {
-        let page = poppler("pdftoppm", &["-r", &dpi.to_string(), "-png"], &pdf(&scene), &[]);
-        let from_pdf = unmatched(&Ink::from_png(&page), &ours);
-        assert!(from_pdf.within(TOLERANCE), "PDF / PNG: {from_pdf:?}");
-    }
+    assert_backends_agree(&scene, dpi);
+    let svg = resvg_at(&scene, dpi);
     let turned_back = unmatched(&png_at(&turned_texts(-1.0), dpi), &svg);
     assert!(!turned_back.within(TOLERANCE), "turning the other way must show: {turned_back:?}");
 }
@@ -429,14 +436,7 @@ fn a_condensed_turned_designation_lands_alike_in_every_backend() {
         groups: vec![g],
     };
     let dpi = 200.0;
-    let (ours, svg) = (png_at(&scene, dpi), resvg_at(&scene, dpi));
-    let same = unmatched(&ours, &svg);
-    assert!(same.within(TOLERANCE), "PNG / SVG: {same:?}");
-    if have("pdftoppm") {
-        let page = poppler("pdftoppm", &["-r", &dpi.to_string(), "-png"], &pdf(&scene), &[]);
-        let from_pdf = unmatched(&Ink::from_png(&page), &ours);
-        assert!(from_pdf.within(TOLERANCE), "PDF / PNG: {from_pdf:?}");
-    }
+    assert_backends_agree(&scene, dpi);
 }
 
 /// Condensed texts anchored at their middle or end, upright and turned: the PNG and the PDF
@@ -458,12 +458,5 @@ fn condensed_texts_anchored_at_their_middle_or_end_land_alike_in_every_backend()
     }
     let scene = scene_of(items);
     let dpi = 200.0;
-    let (ours, svg) = (png_at(&scene, dpi), resvg_at(&scene, dpi));
-    let same = unmatched(&ours, &svg);
-    assert!(same.within(TOLERANCE), "PNG / SVG: {same:?}");
-    if have("pdftoppm") {
-        let page = poppler("pdftoppm", &["-r", &dpi.to_string(), "-png"], &pdf(&scene), &[]);
-        let from_pdf = unmatched(&Ink::from_png(&page), &ours);
-        assert!(from_pdf.within(TOLERANCE), "PDF / PNG: {from_pdf:?}");
-    }
+    assert_backends_agree(&scene, dpi);
 }

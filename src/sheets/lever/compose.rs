@@ -5,7 +5,10 @@
 //! makes it; the velocity plans fill the rest of the top band; the acceleration plans at
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
+mod header;
 mod widen;
+
+pub(super) use header::region_header;
 
 use super::choice::{EMPTY_MOST, Floors, better, empty};
 use super::forces_view::{CellMemo, ForceScales, ForcesInput, draw_forces};
@@ -20,9 +23,9 @@ use crate::drawing::fmt;
 use crate::drawing::frame;
 use crate::drawing::layout::Layout;
 use crate::drawing::scale;
-use crate::drawing::scene::{Anchor, Group, Scene, Text};
+use crate::drawing::scene::{Group, Scene};
 use crate::drawing::table::{CELL_TEXT, LARGE_TEXT, Table};
-use crate::drawing::text::{LabelText, TooLong};
+use crate::drawing::text::TooLong;
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
 use crate::project::LeverProject;
@@ -31,7 +34,7 @@ use crate::report::lever::ForceTables;
 use crate::report::{AnswerKeys, Segment};
 use crate::sheets::scaffold::{self, Composition};
 use crate::sheets::{Context, SheetKind};
-use kurbo::{Point, Rect};
+use kurbo::Rect;
 
 /// The scales chosen for the sheet.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -488,15 +491,3 @@ pub(super) fn side_region(mech: Rect, forces: Rect) -> Option<Rect> {
 
 /// The least room beside the mechanism worth giving to force cells, mm.
 const SIDE_MIN: (f64, f64) = (80.0, 60.0);
-
-/// A region's title (5 mm) and its line of scale and formula (3.5 mm).
-/// Each starts clear of box 26 where the region is in the frame's top-left corner.
-pub(super) fn region_header(g: &mut Group, r: Rect, title: &str, lines: &[LabelText]) {
-    let clear = frame::clear_of_designation_box;
-    g.text(Text::new(clear(Point::new(r.x0 + 2.0, r.y0 + 6.0), 5.0), title, 5.0, Anchor::Start));
-    let mut x = clear(Point::new(r.x0 + 2.0, r.y0 + 12.5), 3.5).x;
-    for line in lines {
-        let bb = line.draw(g, Point::new(x, r.y0 + 12.5), 3.5, Anchor::Start);
-        x = bb.x1 + 8.0;
-    }
-}
