@@ -10,8 +10,8 @@ use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::pipeline::{self, Built};
 
 /// No velocity or acceleration plan is shorter than this (its longer side, mm): one μ_v and one
-/// μ_a a sheet leave a kulisa's slowest positions' plans a fifth of its fastest, and a plan
-/// that would be under 25 mm leaves the common scale only if the others then fit.
+/// μ_a a sheet leave a kulisa's slowest positions' plans a tenth of its fastest (task 10
+/// variant 17's smallest is 20.3 mm).
 const SMALLEST_PLAN_MM: f64 = 20.0;
 
 /// What one variant's build showed: (faults, texts crossed by a line). A fault is anything a
@@ -58,6 +58,12 @@ fn check(task: &Task, variant: u32) -> (Vec<String>, usize) {
         let scales = &b.output.results["scales"];
         if b.output.number == 1 && (scales["mu_v"].as_f64().is_none() || scales["mu_a"].as_f64().is_none()) {
             faults.push(format!("{at}: no common μ_v or μ_a: {scales}"));
+        }
+        for (kind, common) in [("velocity_plans", "mu_v"), ("acceleration_plans", "mu_a")] {
+            let own = scales[kind].as_array().into_iter().flatten().filter(|p| p["mu"] != scales[common]);
+            if let Some(p) = own.map(|p| p["position"].to_string()).reduce(|a, b| a + ", " + &b) {
+                faults.push(format!("{at}: {kind} {p} off the sheet's {common}"));
+            }
         }
     }
     let answer = |id: &str| answers(&built).into_iter().find(|(k, _)| k == id).map(|(_, v)| v);

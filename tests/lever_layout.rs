@@ -255,3 +255,81 @@ fn the_force_insets_of_one_sheet_have_distinct_letters() {
     distinct.dedup();
     assert_eq!(distinct.len(), insets.len(), "inset letters {insets:?}");
 }
+
+/// The guide's `task`, `variant` built (sheet 1, Uzbek): its `results.json`.
+fn catalogue_results(task: &str, variant: u32) -> serde_json::Value {
+    catalogue_sheet1(task, variant).results
+}
+
+/// The guide's `task`, `variant`: its sheet 1 built in Uzbek.
+fn catalogue_sheet1(task: &str, variant: u32) -> tmm_sheets::sheets::SheetOutput {
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    use tmm_sheets::drawing::labels::Language;
+    let catalogue = Catalogue::embedded().unwrap();
+    let Variant::Project { text, .. } = catalogue.task(task).unwrap().project(variant, Language::Uz, "test").unwrap()
+    else {
+        panic!("task {task}, variant {variant} gives a project");
+    };
+    // Read for sheet 1 alone: some variants' planetary stage is refused by design.
+    pipeline::build(&pipeline::load_for(&text, &[1]).unwrap(), &[1]).unwrap().remove(0).output
+}
+
+/// One μ_v and one μ_a a sheet, as the guide draws them, where a kulisa's fastest plan is
+/// many times its slowest: task 10 variant 17's velocity plans span 8:1 and its acceleration
+/// plans 8:1, task 15 variant 4's 5.6:1 (each had two to five plans at scales of their own).
+/// Every plan keeps its kind's scale, its cell grown to hold it, and the smallest is still
+/// measurable: its longer side at least 20 mm, computed here from the plans' boxes in m/s
+/// (the recorded size times μ) over the one μ.
+#[test]
+fn a_kulisas_plans_many_times_apart_share_one_scale_a_kind() {
+    for (task, variant) in [("10", 17), ("15", 4), ("10", 2), ("4", 40)] {
+        let results = catalogue_results(task, variant);
+        let scales = &results["scales"];
+        let mut span = 0.0f64;
+        for (kind, mu_key) in [("velocity_plans", "mu_v"), ("acceleration_plans", "mu_a")] {
+            let common = scales[mu_key].as_f64().unwrap();
+            let plans = scales[kind].as_array().unwrap();
+            let sides: Vec<f64> = plans
+                .iter()
+                .map(|p| {
+                    let mu = p["mu"].as_f64().unwrap();
+                    assert_eq!(mu, common, "task {task} v{variant}: {kind} {} at its own μ", p["position"]);
+                    let size = |k: usize| p["size_mm"][k].as_f64().unwrap() * mu;
+                    size(0).max(size(1)) / common
+                })
+                .collect();
+            let (least, most) = sides.iter().fold((f64::MAX, 0.0f64), |(a, b), &s| (a.min(s), b.max(s)));
+            assert!(least >= 20.0, "task {task} v{variant}: {kind}' smallest {least:.1} mm");
+            span = span.max(most / least);
+        }
+        assert!(span > 5.0, "task {task} v{variant}: its plans span {span:.1}:1 only");
+        let layout = &results["layout"];
+        assert_eq!(layout["texts_crossed"].as_u64().unwrap() + layout["text_overlaps"].as_u64().unwrap(), 0);
+    }
+}
+
+/// Task 10 variant 45's extreme position 7′ is 0.01° from position 7: their velocity plans
+/// coincide on paper and are drawn once, titled "7 ≡ 7′", while the student may still
+/// measure either (both positions' segments, each with its own value). Task 12 variant 7's
+/// 6′ is 2° from 7, its slider at rest where 7's moves: the two plans differ by 2 % of the
+/// largest and each keeps its cell.
+#[test]
+fn velocity_plans_that_coincide_on_paper_are_drawn_once() {
+    let out = catalogue_sheet1("10", 45);
+    let plans = out.results["scales"]["velocity_plans"].as_array().unwrap();
+    let names: Vec<&str> = plans.iter().map(|p| p["position"].as_str().unwrap()).collect();
+    assert!(names.contains(&"7 ≡ 7′") && !names.contains(&"7′"), "{names:?}");
+    let positions = out.results["positions"].as_array().unwrap().len();
+    assert_eq!(names.len(), positions - 1, "{names:?}");
+    let group = out.scene.groups.iter().find(|g| g.id == "velocity-plans").unwrap();
+    let titles = group.texts().filter(|t| t.text.starts_with("7 ≡ 7′") || t.text.starts_with("7′")).count();
+    assert_eq!(titles, 1, "one cell titled 7 ≡ 7′");
+    let value = |id: &str| out.segments.iter().find(|s| s.id == id).map(|s| s.value).expect(id);
+    let (seven, prime, v_a) = (value("plan.v.7.pb"), value("plan.v.7p.pb"), value("plan.v.7.pa"));
+    assert!(seven != prime && (seven - prime).abs() < 1e-3 * v_a, "v_B {seven} and {prime}, v_A {v_a}");
+
+    let out = catalogue_sheet1("12", 7);
+    let plans = out.results["scales"]["velocity_plans"].as_array().unwrap();
+    let names: Vec<&str> = plans.iter().map(|p| p["position"].as_str().unwrap()).collect();
+    assert!(names.contains(&"6′") && names.contains(&"7"), "{names:?}");
+}

@@ -16,7 +16,7 @@ use super::labels::LeverWords;
 use super::mechanism_place::{MechanismPlace, mechanism_group, mechanism_place};
 use super::note_tables::{NoteTables, note_tables, sheet_table, tables_group, with_units};
 pub use super::plan_regions::PlanDrawn;
-use super::plan_regions::{PlansRegion, plans_group, split_plans};
+use super::plan_regions::{PlansRegion, Twins, plans_group, split_plans};
 use super::plans_view::Sizing;
 use super::segments;
 use crate::drawing::fmt;
@@ -27,7 +27,7 @@ use crate::drawing::scene::{Group, Scene};
 use crate::drawing::table::{CELL_TEXT, LARGE_TEXT, Table};
 use crate::drawing::text::TooLong;
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
-use crate::lever::plans::{Plan, acceleration_plan, velocity_plan};
+use crate::lever::plans::{acceleration_plan, velocity_plan};
 use crate::project::LeverProject;
 use crate::report::NoteTable;
 use crate::report::lever::ForceTables;
@@ -266,23 +266,21 @@ fn title_block_refusal(inp: &Input, a: &Arrangement) -> Result<(), TooLong> {
 /// Widths of the force column tried, mm.
 const FORCES_WIDTHS: [f64; 3] = [FORCES_MIN_W, 430.0, 390.0];
 
-/// The velocity and acceleration plans (the same at every layout) and their positions.
+/// The velocity and acceleration plans (the same at every layout), those that coincide on
+/// paper drawn once.
 struct PlansOf<'a> {
-    velocity: Vec<Plan>,
-    acceleration: Vec<Plan>,
-    vpositions: Vec<&'a Position>,
-    apositions: Vec<&'a Position>,
+    velocity: Twins<'a>,
+    acceleration: Twins<'a>,
 }
 
 impl<'a> PlansOf<'a> {
     fn new(inp: &Input, k: &'a Kinematics) -> PlansOf<'a> {
         let m = &inp.project.mechanism;
-        PlansOf {
-            velocity: k.positions.iter().map(|p| velocity_plan(m, &p.state)).collect(),
-            acceleration: k.acceleration.iter().map(|&i| acceleration_plan(m, &k.positions[i].state)).collect(),
-            vpositions: k.positions.iter().collect(),
-            apositions: k.acceleration.iter().map(|&i| &k.positions[i]).collect(),
-        }
+        let vpositions: Vec<&Position> = k.positions.iter().collect();
+        let apositions: Vec<&Position> = k.acceleration.iter().map(|&i| &k.positions[i]).collect();
+        let velocity = Twins::of(vpositions.iter().map(|p| velocity_plan(m, &p.state)).collect(), &vpositions);
+        let acceleration = Twins::of(apositions.iter().map(|p| acceleration_plan(m, &p.state)).collect(), &apositions);
+        PlansOf { velocity, acceleration }
     }
 }
 
@@ -303,7 +301,8 @@ struct Arrangement<'a> {
 impl Arrangement<'_> {
     /// The largest side of the smallest plan, mm (as the drawn plans will have it).
     fn smallest_plan_mm(&self, plans: &PlansOf) -> Option<f64> {
-        let drawn = self.vsizing.drawn(&plans.velocity).into_iter().chain(self.asizing.drawn(&plans.acceleration));
+        let drawn =
+            self.vsizing.drawn(&plans.velocity.plans).into_iter().chain(self.asizing.drawn(&plans.acceleration.plans));
         drawn.map(|size_mm| size_mm[0].max(size_mm[1])).reduce(f64::min)
     }
 }
@@ -348,23 +347,17 @@ fn arrange<'a>(
         symbol: "a",
         unit: c.unit_a_per_mm(),
     };
-    let (vplans, aplans) = (&plans.velocity[..], &plans.acceleration[..]);
     // With a force analysis both kinds of plans share the right column: split at the
     // height that leaves the smallest plan of either kind largest.
     let [vsizing, asizing] = match force_region {
         Some(_) => {
             let column = Rect::new(right_x0, TOP, inner.x1 - 4.0, plans_bottom);
-            let [(vr, vs), (ar, as_)] = split_plans(
-                column,
-                [(&velocity, vplans, &plans.vpositions[..]), (&acceleration, aplans, &plans.apositions[..])],
-                &words,
-            );
+            let [(vr, vs), (ar, as_)] =
+                split_plans(column, [(&velocity, &plans.velocity), (&acceleration, &plans.acceleration)], &words);
             (velocity.region, acceleration.region) = (vr, ar);
             [vs, as_]
         }
-        None => {
-            [velocity.sizing(vplans, &plans.vpositions, &words), acceleration.sizing(aplans, &plans.apositions, &words)]
-        }
+        None => [velocity.sizing(&plans.velocity, &words), acceleration.sizing(&plans.acceleration, &words)],
     };
     Ok(Arrangement { words, force_input, mech, force_region, notes, velocity, acceleration, vsizing, asizing })
 }
@@ -378,14 +371,10 @@ fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<
     let answer = AnswerKeys::of(&format!("sheet{}", inp.kind.number), inp.notes);
     let mut drawn_segments = segments::link_segments(&inp.project.mechanism, &k.positions, mech.mu_l);
     // Velocity plans: every position, one common μ_v.
-    let vpositions = plans.vpositions.clone();
-    let (vel, vdrawn, mu_v, vel_segments) =
-        plans_group(&velocity, &plans.velocity, vsizing, vpositions, &words, &answer);
+    let (vel, vdrawn, mu_v, vel_segments) = plans_group(&velocity, &plans.velocity, vsizing, &words, &answer);
     drawn_segments.extend(vel_segments);
     // Acceleration plans: the chosen positions, one common μ_a.
-    let apositions = plans.apositions.clone();
-    let (acc, adrawn, mu_a, acc_segments) =
-        plans_group(&acceleration, &plans.acceleration, asizing, apositions, &words, &answer);
+    let (acc, adrawn, mu_a, acc_segments) = plans_group(&acceleration, &plans.acceleration, asizing, &words, &answer);
     drawn_segments.extend(acc_segments);
 
     let tables = tables_group(&notes, &words);

@@ -48,20 +48,21 @@ impl PlansRegion<'_> {
     }
 
     /// The plans' scales and cells below the region's header (see [`size_plans`]).
-    pub(super) fn sizing(&self, plans: &[Plan], positions: &[&Position], words: &LeverWords) -> Sizing {
-        self.sizing_of(&self.measure(plans, positions, words))
+    pub(super) fn sizing(&self, twins: &Twins, words: &LeverWords) -> Sizing {
+        self.sizing_of(&self.measure(twins, words))
     }
 
     /// What [`PlansRegion::sizing`] asks of the plans whatever the region: their boxes and
     /// labels, and their cells' least width.
-    fn measure(&self, plans: &[Plan], positions: &[&Position], words: &LeverWords) -> (PlanBoxes, f64) {
+    fn measure(&self, twins: &Twins, words: &LeverWords) -> (PlanBoxes, f64) {
         // A cell holds its title (3.5 mm) and, at a scale of its own, its scale line (2.5 mm).
-        let min_w = positions
+        let min_w = twins
+            .runs
             .iter()
-            .map(|p| LabelText::new(words.sheet.position(&p.label), "").width(3.5))
+            .map(|run| LabelText::new(words.sheet.position(&joined_label(run)), "").width(3.5))
             .fold(self.scale_line(0.0025, words).width(2.5), f64::max)
             + 5.0;
-        (PlanBoxes::of(plans, self.pole), min_w)
+        (PlanBoxes::of(&twins.plans, self.pole), min_w)
     }
 
     /// [`PlansRegion::sizing`] of plans measured `(boxes, min_w)`.
@@ -85,18 +86,14 @@ pub const LARGEST_PLAN: f64 = 80.0;
 /// Splits `column` between two kinds of plans, the first above or, across, on the left (a
 /// kulisa's one tall acceleration plan made a row as tall as itself, its three small
 /// neighbours lost in it; beside the velocity plans it is a column of its own, and the
-/// velocity plans take the height): at the share whose smallest
-/// plan is largest (a plan off the common scale counts as no larger than the minimum, and
-/// twice the minimum is enough), then whose smaller kind's largest plan is largest (up to
+/// velocity plans take the height): at the share with the fewest plans off their kind's
+/// one scale (none where every plan can be measured at it), then whose smallest plan is
+/// largest (twice [`MIN_PLAN`] is enough), then whose smaller kind's largest plan is largest (up to
 /// [`LARGEST_PLAN`]), then whose two largest plans sum most. Returns each kind's region and
 /// sizing.
-pub(super) fn split_plans(
-    column: Rect,
-    kinds: [(&PlansRegion, &[Plan], &[&Position]); 2],
-    words: &LeverWords,
-) -> [(Rect, Sizing); 2] {
+pub(super) fn split_plans(column: Rect, kinds: [(&PlansRegion, &Twins); 2], words: &LeverWords) -> [(Rect, Sizing); 2] {
     // The same at every share.
-    let measured = kinds.map(|(r, plans, positions)| r.measure(plans, positions, words));
+    let measured = kinds.map(|(r, twins)| r.measure(twins, words));
     // A share over 1 splits the column across instead: the velocity plans on the left.
     let split = |share: f64| {
         let regions = if share <= 1.0 {
@@ -115,8 +112,14 @@ pub(super) fn split_plans(
     };
     let score = |s: &[(Rect, Sizing); 2]| {
         let [(least_v, largest_v), (least_a, largest_a)] =
-            [0, 1].map(|k| (s[k].1.least_measured(kinds[k].1), s[k].1.largest(kinds[k].1)));
-        (least_v.min(least_a).min(2.0 * MIN_PLAN), largest_v.min(largest_a).min(LARGEST_PLAN), largest_v + largest_a)
+            [0, 1].map(|k| (s[k].1.least_measured(&kinds[k].1.plans), s[k].1.largest(&kinds[k].1.plans)));
+        let own = s[0].1.own_count() + s[1].1.own_count();
+        (
+            own,
+            least_v.min(least_a).min(2.0 * MIN_PLAN),
+            largest_v.min(largest_a).min(LARGEST_PLAN),
+            largest_v + largest_a,
+        )
     };
     velocity_shares()
         .chain(velocity_shares().map(|s| 1.0 + s))
@@ -124,30 +127,88 @@ pub(super) fn split_plans(
             let s = split(share);
             (score(&s), s)
         })
-        .max_by(|a, b| a.0.0.total_cmp(&b.0.0).then(a.0.1.total_cmp(&b.0.1)).then(a.0.2.total_cmp(&b.0.2)))
+        .max_by(|a, b| {
+            (b.0.0.cmp(&a.0.0))
+                .then(a.0.1.total_cmp(&b.0.1))
+                .then(a.0.2.total_cmp(&b.0.2))
+                .then(a.0.3.total_cmp(&b.0.3))
+        })
         .map(|(_, s)| s)
         .expect("shares to try")
+}
+
+/// Two plans of a kind coincide on paper when no image or vector end of one is farther from
+/// the other's than this share of the kind's largest plan: 0.45 mm where that plan is drawn
+/// 300 mm long, the most a column allows.
+const SAME_PLAN: f64 = 0.0015;
+
+/// Plans of consecutive positions that coincide on paper, drawn once ("7 ≡ 7′", an extreme
+/// position a hundredth of a degree from a numbered one); a few degrees apart they do not
+/// (the extreme's slider at rest), and each keeps its cell.
+pub(super) struct Twins<'a> {
+    /// The plans drawn, the first of each run.
+    pub(super) plans: Vec<Plan>,
+    /// Each drawn plan's positions: its own first, then the ones it stands for.
+    pub(super) runs: Vec<Vec<(&'a Position, Plan)>>,
+}
+
+impl<'a> Twins<'a> {
+    /// Groups `plans` of `positions` (in order) into runs that coincide on paper.
+    pub(super) fn of(plans: Vec<Plan>, positions: &[&'a Position]) -> Twins<'a> {
+        let largest = plans.iter().map(plan_side).fold(0.0, f64::max);
+        let mut runs: Vec<Vec<(&'a Position, Plan)>> = Vec::new();
+        for (plan, &pos) in plans.into_iter().zip(positions) {
+            match runs.last_mut() {
+                Some(run) if coincide(&run[0].1, &plan, SAME_PLAN * largest) => run.push((pos, plan)),
+                _ => runs.push(vec![(pos, plan)]),
+            }
+        }
+        Twins { plans: runs.iter().map(|r| r[0].1.clone()).collect(), runs }
+    }
+}
+
+/// A plan's longer side, in its units.
+fn plan_side(plan: &Plan) -> f64 {
+    let b = super::plans_view::plan_bbox(plan);
+    b.width().max(b.height())
+}
+
+/// Whether plans `a` and `b` (of one mechanism: the same images and vectors in the same
+/// order) put every image and vector end within `tol` of each other.
+fn coincide(a: &Plan, b: &Plan, tol: f64) -> bool {
+    use crate::num::math::Norm;
+    let near = |p: kurbo::Vec2, q: kurbo::Vec2| (p - q).norm() <= tol;
+    a.images.len() == b.images.len()
+        && a.segs.len() == b.segs.len()
+        && a.images.iter().zip(&b.images).all(|(i, j)| i.label == j.label && near(i.at, j.at))
+        && a.segs.iter().zip(&b.segs).all(|(s, t)| s.of == t.of && near(s.from, t.from) && near(s.to, t.to))
+}
+
+/// The name of a run of coinciding positions: "7 ≡ 7′".
+fn joined_label(run: &[(&Position, Plan)]) -> String {
+    run.iter().map(|(p, _)| p.label.as_str()).collect::<Vec<_>>().join(" ≡ ")
 }
 
 /// Draws plans in the cells of their `sizing` (see [`size_plans`]) below the region's header; returns
 /// the group, what each plan became and the scale they share, if one.
 pub(super) fn plans_group(
     r: &PlansRegion,
-    plans: &[Plan],
+    twins: &Twins,
     sizing: Sizing,
-    positions: Vec<&Position>,
     words: &LeverWords,
     answer: &AnswerKeys,
 ) -> (Group, Vec<PlanDrawn>, Option<f64>, Vec<Segment>) {
+    let plans = &twins.plans;
     let l = words.sheet;
     let mut g = Group::new(r.id, r.region);
     let scale_line = |mu: f64| r.scale_line(mu, words);
     region_header(&mut g, r.region, r.title, &[scale_line(sizing.common)]);
     let mut segments = Vec::new();
-    for (i, ((plan, &cell), pos)) in plans.iter().zip(&sizing.cells).zip(&positions).enumerate() {
+    for (i, ((plan, &cell), run)) in plans.iter().zip(&sizing.cells).zip(&twins.runs).enumerate() {
         let mu = sizing.mu[i];
         let mut labels = Labels::new();
-        let title = l.position(&pos.label);
+        let pos = run[0].0;
+        let title = l.position(&joined_label(run));
         let c = PlanCell {
             cell,
             title: &title,
@@ -161,13 +222,16 @@ pub(super) fn plans_group(
         draw_plan(&mut g, &c, &mut labels);
         labels.place(&mut g, label_bounds(cell));
         g.part_from(format!("plan.{}.{}", r.symbol, ascii_key(&pos.label)), start);
-        segments.extend(plan_segments(plan, r.kind, &pos.label, mu, answer));
+        // Each position's own values: a twin's differ from the drawn ones below the paper's
+        // precision, and the student may measure either.
+        segments.extend(run.iter().flat_map(|(p, plan)| plan_segments(plan, r.kind, &p.label, mu, answer)));
     }
-    let drawn = positions
+    let drawn = twins
+        .runs
         .iter()
         .zip(sizing.drawn(plans))
         .zip(&sizing.mu)
-        .map(|((p, size_mm), &mu)| PlanDrawn { position: p.label.clone(), mu, size_mm })
+        .map(|((run, size_mm), &mu)| PlanDrawn { position: joined_label(run), mu, size_mm })
         .collect();
     (g, drawn, (!plans.is_empty()).then_some(sizing.common), segments)
 }

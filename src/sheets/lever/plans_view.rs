@@ -9,11 +9,13 @@
 //! velocity plan, μ_a for every acceleration plan), so their vectors compare at a glance;
 //! the smallest μ of the plans' series at which the cells pack, so the largest plan is as
 //! large as the region allows. A plan's side is then at least its crank vector (pa = ω1·l_OA
-//! is the same in every velocity plan, πa = ω1²·l_OA in every acceleration plan) — unless
-//! one position's plan is many times the others' (a kulisa's near its fast stroke): at the
-//! scale that fits it the rest would be under [`MIN_PLAN`], too small to measure. Then the
-//! fewest plans possible leave the common scale: a plan under [`MIN_PLAN`] is enlarged, one
-//! over [`MAX_PLAN`] reduced, each to a round μ of its own written in its cell.
+//! is the same in every velocity plan, πa = ω1²·l_OA in every acceleration plan), and a
+//! kulisa's plan near its fast stroke may be ten times its slowest: its cell grows to hold
+//! it and the rest keep the one μ while they are at least [`MEASURABLE_PLAN`] long (every
+//! variant of the guide's catalogue: its smallest is 20.3 mm). Only where one μ would draw
+//! a plan shorter than that (a ratio beyond any task of the guide) do the fewest plans
+//! possible leave the common scale: a plan under [`MIN_PLAN`] is enlarged, one over
+//! [`MAX_PLAN`] reduced, each to a round μ of its own written in its cell.
 //! Cells are sized by their plans and packed in rows that fill the region.
 
 use crate::drawing::place::Labels;
@@ -38,6 +40,9 @@ const GAP: f64 = 2.0;
 /// A plan's longer side is at least this long, mm: measured with a ruler to 0.5 mm, its
 /// vectors read to 2 % (the guide draws pa = 40 mm).
 pub const MIN_PLAN: f64 = 25.0;
+/// The least a plan is drawn at its kind's one scale, mm: read with a ruler to 0.5 mm, its
+/// longest vector to 2.5 %. Shorter, the plan leaves the common scale for one of its own.
+pub const MEASURABLE_PLAN: f64 = 20.0;
 /// A plan leaving the common scale for a smaller one is drawn this long, mm.
 const MAX_PLAN: f64 = 70.0;
 /// The own scale's line under a cell's title, mm.
@@ -81,13 +86,15 @@ impl Sizing {
         self.sides(plans).fold(0.0, f64::max)
     }
 
-    /// The smallest plan's longer side, mm, a plan off the common scale counting as no
-    /// larger than [`MIN_PLAN`] (it is measured at another scale than its neighbours).
+    /// The smallest longer side of the plans at the common scale, mm (those with a scale
+    /// of their own left out: [`Sizing::own_count`] counts them).
     pub fn least_measured(&self, plans: &[Plan]) -> f64 {
-        self.sides(plans)
-            .enumerate()
-            .map(|(i, d)| if self.own(i) { d.min(MIN_PLAN) } else { d })
-            .fold(f64::MAX, f64::min)
+        self.sides(plans).enumerate().filter(|&(i, _)| !self.own(i)).map(|(_, d)| d).fold(f64::MAX, f64::min)
+    }
+
+    /// How many plans have a scale of their own.
+    pub fn own_count(&self) -> usize {
+        (0..self.mu.len()).filter(|&i| self.own(i)).count()
     }
 
     /// Whether plan `i` has a scale of its own.
@@ -250,10 +257,10 @@ pub fn size_plans(body: Rect, measured: &PlanBoxes, min_w: f64) -> Sizing {
         let cells = pack(&sizes, Rect::new(body.x0, body.y0, body.x0 + 1e6, body.y0 + 1e6)).unwrap_or_default();
         return Sizing { cells, common: mu, mu: vec![mu; boxes.len()] };
     };
-    if sides.iter().all(|&s| s / all.common >= MIN_PLAN) {
+    if sides.iter().all(|&s| s / all.common >= MEASURABLE_PLAN) {
         return all;
     }
-    // Some would be too small: the common scale with the fewest plans of their own (then
+    // Some would be too small to measure: the common scale with the fewest plans of their own (then
     // the largest drawing), over every scale from the one that draws the smallest plan at
     // MAX_PLAN to the one that fits them all.
     let smallest = sides.iter().copied().fold(f64::MAX, f64::min);
@@ -429,5 +436,36 @@ mod tests {
         }
         assert!(cells[3].y0 > cells[0].y0, "the fourth cell starts a row");
         assert!(pack(&[(60.0, 140.0)], body).is_none());
+    }
+
+    /// `n` square plans of side `small` (plan units) and one `ratio` times as large, sized in
+    /// a 300 × 250 mm region.
+    fn sized(n: usize, small: f64, ratio: f64) -> (Sizing, Vec<f64>) {
+        let square = |side: f64| Rect::new(0.0, 0.0, side, side);
+        let mut boxes = vec![square(small); n];
+        boxes.push(square(small * ratio));
+        let measured = PlanBoxes { labels: vec![10.0; boxes.len()], boxes: boxes.clone() };
+        let sizing = size_plans(Rect::new(0.0, 0.0, 300.0, 250.0), &measured, 20.0);
+        let sides = boxes.iter().zip(&sizing.mu).map(|(b, mu)| b.width() / mu).collect();
+        (sizing, sides)
+    }
+
+    /// The small plans at 22.5 mm, under the own scale's 25 mm but measurable, keep the
+    /// large plan's scale (they had one of their own before).
+    #[test]
+    fn plans_seven_times_apart_keep_one_scale_and_are_measurable() {
+        let (sizing, sides) = sized(8, 0.09, 7.0);
+        assert_eq!(sizing.own_count(), 0, "{:?}", sizing.mu);
+        assert!(sides[..8].iter().all(|&s| (MEASURABLE_PLAN..MIN_PLAN).contains(&s)), "{sides:?}");
+        assert!((sides[8] / sides[0] - 7.0).abs() < 1e-9, "{sides:?}");
+    }
+
+    #[test]
+    fn only_a_plan_a_hundred_times_the_rest_leaves_the_common_scale() {
+        let (sizing, sides) = sized(8, 0.1, 100.0);
+        assert_eq!(sizing.own_count(), 1, "{:?}", sizing.mu);
+        assert!(sizing.own(8), "the large plan has its own μ: {:?}", sizing.mu);
+        assert!(sides[..8].iter().all(|&s| s >= MIN_PLAN), "{sides:?}");
+        assert!(sides[8] <= MAX_PLAN + 1e-9, "{sides:?}");
     }
 }
