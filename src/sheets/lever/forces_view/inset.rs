@@ -320,4 +320,17 @@ mod tests {
         // At 1 N/mm every side is long: nothing to enlarge.
         assert!(runs(&p, 1.0).is_empty());
     }
+
+    /// Past the free letters an inset is named after the first with a number, "K2", "K3", so
+    /// that no two insets of a sheet share a name however many there are.
+    #[test]
+    fn letters_past_the_free_ones_are_numbered_and_never_repeat() {
+        let letters = |free: &[&str]| Letters { free: free.iter().map(|s| s.to_string()).collect(), next: 0 };
+        let mut two = letters(&["K", "L"]);
+        assert_eq!(two.take(1), ["K"]);
+        assert_eq!(two.take(3), ["L", "K2", "K3"]);
+        assert_eq!(two.take(1), ["K4"]);
+        let mut none = letters(&[]);
+        assert_eq!(none.take(2), ["K2", "K3"]);
+    }
 }
