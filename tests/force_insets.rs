@@ -161,3 +161,54 @@ fn every_lever_is_long_enough_to_measure() {
         assert!((side - expected).abs() < 1e-9 * expected, "{name}: reported {side} mm, the plan's box {expected} mm");
     }
 }
+
+/// The reactions a polygon finds (R, and Rⁿ where R is split) are what the student measures
+/// on it: at least this long where they are labelled, mm — on the polygon, or on the
+/// enlargement that draws them again.
+const REACTION_MIN_MM: f64 = 5.0;
+
+/// A force polygon's segment of force `name` (its id's last part) under `part`, from the
+/// measured segments of sheet 1.
+fn segment<'a>(segments: &'a [tmm_sheets::report::Segment], part: &str, name: &str) -> &'a tmm_sheets::report::Segment {
+    let id = format!("{part}.{name}");
+    segments.iter().find(|s| s.id.ends_with(&id)).unwrap_or_else(|| panic!("no segment {id}"))
+}
+
+/// Every fixture's polygons: each reaction they find is at least [`REACTION_MIN_MM`] where
+/// it is labelled, its recorded length its value over the scale it is drawn at.
+#[test]
+fn every_reaction_a_polygon_finds_is_long_enough_to_measure() {
+    let mut checked = 0;
+    for name in common::fixture_names() {
+        let built = pipeline::build(&fixture(&name), &[1]).unwrap();
+        let segments = &built[0].output.segments;
+        let polygons = segments.iter().filter(|s| s.id.starts_with("forces.group") || s.id.starts_with("forces.crank"));
+        for s in polygons.filter(|s| s.name.starts_with("R_") || s.name.starts_with("Rn_")) {
+            checked += 1;
+            assert!(s.length_mm >= REACTION_MIN_MM, "{name}: {} drawn {:.2} mm", s.id, s.length_mm);
+            assert!((s.length_mm * s.scale - s.value).abs() < 1e-9 * s.value, "{name}: {}", s.id);
+        }
+    }
+    assert!(checked >= 30, "only {checked} reactions");
+}
+
+/// Task 12 variant 1: R₀₅ = 885 N stands between forces of 20 kN in II(4,5)'s polygon, 2.2 mm
+/// at its 400 N/mm; the sheet draws it again in an enlargement at 40 N/mm, and that is where
+/// it is measured: its segment is recorded there, 22.1 mm (it was recorded at 2.2 mm).
+#[test]
+fn a_reaction_drawn_again_enlarged_is_measured_there() {
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    use tmm_sheets::drawing::labels::Language;
+    let catalogue = Catalogue::embedded().unwrap();
+    let Variant::Project { text, .. } = catalogue.task("12").unwrap().project(1, Language::En, "test").unwrap() else {
+        panic!("task 12, variant 1 gives a project");
+    };
+    let built = pipeline::build(&pipeline::load_for(&text, &[1]).unwrap(), &[1]).unwrap();
+    let out = &built[0].output;
+    let r05 = segment(&out.segments, "forces.group.4-5", "R_05");
+    let polygon_mu = out.results["forces"]["scales"]["mu_p"][0].as_f64().unwrap();
+    assert!(r05.scale < polygon_mu / 2.0, "R_05 at {} N/mm, its polygon at {polygon_mu}", r05.scale);
+    let written = format!("= {} N/mm)", r05.scale);
+    assert!(out.scene.texts().any(|t| t.tail.contains(&written)), "no enlargement titled {written}");
+    assert!(r05.length_mm >= REACTION_MIN_MM, "R_05 {} mm", r05.length_mm);
+}

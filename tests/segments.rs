@@ -167,7 +167,10 @@ fn every_segment_is_drawn_at_a_scale_its_sheet_states() {
                 let plans = ["velocity_plans", "acceleration_plans"]
                     .iter()
                     .flat_map(|k| r["scales"][*k].as_array().unwrap().iter().map(|p| p["mu"].as_f64().unwrap()));
-                let forces = r["forces"]["scales"]["mu_p"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap());
+                let scales = &r["forces"]["scales"];
+                let forces = ["mu_p", "mu_p_enlarged"]
+                    .into_iter()
+                    .flat_map(|k| scales[k].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()));
                 let mechanism = 1e3 * f(&["scales", "mu_l"]);
                 plans.chain(forces).chain([f(&["forces", "scales", "mu_lever"]), mechanism]).collect()
             }

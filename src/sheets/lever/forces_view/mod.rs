@@ -70,6 +70,9 @@ pub struct ForceScales {
     pub mu_l: Vec<f64>,
     /// μ_P of each polygon (groups from the last, then the crank), N/mm.
     pub mu_p: Vec<f64>,
+    /// μ_P of each enlargement of a polygon's short sides, in the order they are lettered
+    /// (K, L …), N/mm.
+    pub mu_p_enlarged: Vec<f64>,
     /// The scale of the force arrows on each group drawing, N/mm.
     pub mu_f: Vec<f64>,
     /// Velocity scale of the Zhukovsky lever, (m/s)/mm.
@@ -114,6 +117,7 @@ pub fn draw_forces(
     let mut scales = ForceScales {
         mu_l: vec![],
         mu_p: vec![],
+        mu_p_enlarged: vec![],
         mu_f: vec![],
         mu_lever: 0.0,
         mu_f_lever: 0.0,
@@ -141,12 +145,13 @@ pub fn draw_forces(
                 group::draw_group_cell(g, &mut labels, r, inp, (poly, layout), &letters);
                 scales.mu_l.push(layout.mu_l);
                 scales.mu_p.push(layout.mu_p);
+                scales.mu_p_enlarged.extend(layout.insets.iter().map(|i| i.mu));
                 scales.mu_f.push(layout.mu_f);
                 let (on_polygon, enlarged) = polygon::shortest_sides(poly, layout);
                 let least = |a: Option<f64>, b: Option<f64>| a.into_iter().chain(b).reduce(f64::min);
                 scales.smallest_polygon_side_mm = least(scales.smallest_polygon_side_mm, on_polygon);
                 scales.smallest_enlarged_side_mm = least(scales.smallest_enlarged_side_mm, enlarged);
-                measured.extend(segments::polygon(inp, poly, layout.mu_p, &part, answers));
+                measured.extend(segments::polygon(inp, (poly, layout.mu_p, &layout.insets), &part, answers));
             }
             Content::Lever(ref plan, mu, mu_f, extent) => {
                 zhukovsky::draw_lever(g, &mut labels, r, inp, (plan, extent), (mu, mu_f));
