@@ -333,3 +333,29 @@ fn velocity_plans_that_coincide_on_paper_are_drawn_once() {
     let names: Vec<&str> = plans.iter().map(|p| p["position"].as_str().unwrap()).collect();
     assert!(names.contains(&"6′") && names.contains(&"7"), "{names:?}");
 }
+
+/// In a row that a large plan makes tall, a small plan stands under its title: task 10
+/// variant 17's velocity plan 8 (its longer side 20 mm beside plan 11's 165 mm) was centred in
+/// its cell, 40 mm below "8-holat". The gap between each title and its plan's highest line or
+/// letter is at most the title strip, the label margin and 10 mm: 25 mm.
+#[test]
+fn a_small_plan_stands_under_its_title() {
+    use tmm_sheets::drawing::scene::Item;
+    let out = catalogue_sheet1("10", 17);
+    let group = out.scene.groups.iter().find(|g| g.id == "velocity-plans").unwrap();
+    let mut checked = 0;
+    for part in group.parts.iter().filter(|p| p.id.starts_with("plan.v.")) {
+        let items = &group.items[part.items.clone()];
+        let title = items
+            .iter()
+            .find_map(|i| match i {
+                Item::Text(t) if t.text.ends_with("-holat") => Some(i.bbox()),
+                _ => None,
+            })
+            .unwrap_or_else(|| panic!("{}: no title", part.id));
+        let top = items.iter().filter(|i| i.bbox() != title).map(|i| i.bbox().y0).fold(f64::MAX, f64::min);
+        assert!(top - title.y1 <= 25.0, "{}: the plan starts {:.1} mm under its title", part.id, top - title.y1);
+        checked += 1;
+    }
+    assert!(checked >= 12, "{checked} plans");
+}

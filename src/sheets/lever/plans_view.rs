@@ -45,6 +45,9 @@ pub const MIN_PLAN: f64 = 25.0;
 pub const MEASURABLE_PLAN: f64 = 20.0;
 /// A plan leaving the common scale for a smaller one is drawn this long, mm.
 const MAX_PLAN: f64 = 70.0;
+/// A plan in a cell taller than it stands at most this far below the room under its title,
+/// mm (centred below that).
+const PLAN_DROP: f64 = 10.0;
 /// The own scale's line under a cell's title, mm.
 const SCALE_LINE: f64 = 5.0;
 
@@ -327,8 +330,13 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
     let inner = Rect::new(cell.x0 + 1.0, top, cell.x1 - 1.0, cell.y1 - 1.0);
     let (plan, mu) = (c.plan, c.mu);
     let bb = c.extent.unwrap_or_else(|| plan_bbox(plan));
-    let area_c = inner.inflate(-MARGIN, -MARGIN).center();
-    // Paper position of the pole: the plan's box centred in the cell.
+    let area = inner.inflate(-MARGIN, -MARGIN);
+    // The plan's box centred in the cell across, and down as far as PLAN_DROP below the
+    // room under its title: a small plan in a row a large one makes tall stands under its
+    // title, not 40 mm below it.
+    let drop = ((area.height() - bb.height() / mu) / 2.0).clamp(0.0, PLAN_DROP);
+    let area_c = Point::new(area.center().x, area.y0 + drop + bb.height() / mu / 2.0);
+    // Paper position of the pole.
     let pole_p = Point::new(area_c.x - (bb.center().x) / mu, area_c.y + (bb.center().y) / mu);
     let view = View::new(pole_p, mu);
     let p = |v: Vec2| view.p(v);
