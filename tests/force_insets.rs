@@ -197,14 +197,7 @@ fn every_reaction_a_polygon_finds_is_long_enough_to_measure() {
 /// it is measured: its segment is recorded there, 22.1 mm (it was recorded at 2.2 mm).
 #[test]
 fn a_reaction_drawn_again_enlarged_is_measured_there() {
-    use tmm_sheets::catalogue::{Catalogue, Variant};
-    use tmm_sheets::drawing::labels::Language;
-    let catalogue = Catalogue::embedded().unwrap();
-    let Variant::Project { text, .. } = catalogue.task("12").unwrap().project(1, Language::En, "test").unwrap() else {
-        panic!("task 12, variant 1 gives a project");
-    };
-    let built = pipeline::build(&pipeline::load_for(&text, &[1]).unwrap(), &[1]).unwrap();
-    let out = &built[0].output;
+    let out = &common::catalogue_sheet1("12", 1, tmm_sheets::drawing::labels::Language::En);
     let r05 = segment(&out.segments, "forces.group.4-5", "R_05");
     let polygon_mu = out.results["forces"]["scales"]["mu_p"][0].as_f64().unwrap();
     assert!(r05.scale < polygon_mu / 2.0, "R_05 at {} N/mm, its polygon at {polygon_mu}", r05.scale);

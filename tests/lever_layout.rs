@@ -211,14 +211,8 @@ fn a_long_thin_mechanisms_crank_detail_stands_under_it() {
 /// The guide's task 14, variant 40 in Russian: its sheet 1's crank detail letter and its
 /// force polygons' inset letters (each inset's title: its letter, then " (").
 fn task_14_v40_ru_detail_letters() -> (Option<String>, Vec<String>) {
-    use tmm_sheets::catalogue::{Catalogue, Variant};
-    use tmm_sheets::drawing::labels::Language;
-    let catalogue = Catalogue::embedded().unwrap();
-    let Variant::Project { text, .. } = catalogue.task("14").unwrap().project(40, Language::Ru, "test").unwrap() else {
-        panic!("task 14, variant 40 gives a project");
-    };
-    let built = pipeline::build(&pipeline::load(&text).unwrap(), &[1]).unwrap();
-    let scene = &built[0].output.scene;
+    let out = common::catalogue_sheet1("14", 40, tmm_sheets::drawing::labels::Language::Ru);
+    let scene = &out.scene;
     let mech = scene.groups.iter().find(|g| g.id == "mechanism").unwrap();
     let texts: Vec<_> = mech.texts().collect();
     // The detail's title: its letter, then "(μ_l = …)".
@@ -263,15 +257,7 @@ fn catalogue_results(task: &str, variant: u32) -> serde_json::Value {
 
 /// The guide's `task`, `variant`: its sheet 1 built in Uzbek.
 fn catalogue_sheet1(task: &str, variant: u32) -> tmm_sheets::sheets::SheetOutput {
-    use tmm_sheets::catalogue::{Catalogue, Variant};
-    use tmm_sheets::drawing::labels::Language;
-    let catalogue = Catalogue::embedded().unwrap();
-    let Variant::Project { text, .. } = catalogue.task(task).unwrap().project(variant, Language::Uz, "test").unwrap()
-    else {
-        panic!("task {task}, variant {variant} gives a project");
-    };
-    // Read for sheet 1 alone: some variants' planetary stage is refused by design.
-    pipeline::build(&pipeline::load_for(&text, &[1]).unwrap(), &[1]).unwrap().remove(0).output
+    common::catalogue_sheet1(task, variant, tmm_sheets::drawing::labels::Language::Uz)
 }
 
 /// One μ_v and one μ_a a sheet, as the guide draws them, where a kulisa's fastest plan is

@@ -253,3 +253,19 @@ pub fn six_bar(
         "{header}mechanism:\n  frame:\n    - {{name: O, at: [0, 0]}}\n    - {{name: C, at: [{frame:.6}, 0]}}\n  crank: {{pivot: O, pin: A, length: {crank:.6}, rpm: 90, sense: cw}}\n  groups:\n    - rrr: {{links: [2, 3], joints: [A, C], point: B, lengths: [{l2:.6}, {l3:.6}], branch: left}}\n    - rrp: {{links: [4, 5], joint: B, point: D, length: {rod:.6}, guide: {{through: [0, {offset:.6}], angle_deg: 0}}, branch: {branch}}}\n  points:\n    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}}\n    - {{name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}}\n    - {{name: S5, link: 5, from: D, mass_centre: true}}\n"
     )
 }
+
+/// The guide's `task`, `variant` in `lang`: its sheet 1 built (read for sheet 1 alone: some
+/// variants' planetary stage is refused by design).
+#[allow(dead_code)]
+pub fn catalogue_sheet1(
+    task: &str,
+    variant: u32,
+    lang: tmm_sheets::drawing::labels::Language,
+) -> tmm_sheets::sheets::SheetOutput {
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    let catalogue = Catalogue::embedded().unwrap();
+    let Variant::Project { text, .. } = catalogue.task(task).unwrap().project(variant, lang, "test").unwrap() else {
+        panic!("task {task}, variant {variant} gives a project");
+    };
+    tmm_sheets::pipeline::build(&tmm_sheets::pipeline::load_for(&text, &[1]).unwrap(), &[1]).unwrap().remove(0).output
+}

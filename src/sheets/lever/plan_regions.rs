@@ -3,7 +3,7 @@
 
 use super::compose::{HEADER, region_header};
 use super::labels::LeverWords;
-use super::plans_view::{MIN_PLAN, PlanBoxes, PlanCell, Sizing, draw_plan, label_bounds, size_plans};
+use super::plans_view::{MIN_PLAN, PlanBoxes, PlanCell, Sizing, draw_plan, label_bounds, plan_side, size_plans};
 use super::segments::{PlanKind, plan_segments};
 use crate::drawing::fmt;
 use crate::drawing::place::Labels;
@@ -165,12 +165,6 @@ impl<'a> Twins<'a> {
         }
         Twins { plans: runs.iter().map(|r| r[0].1.clone()).collect(), runs }
     }
-}
-
-/// A plan's longer side, in its units.
-fn plan_side(plan: &Plan) -> f64 {
-    let b = super::plans_view::plan_bbox(plan);
-    b.width().max(b.height())
 }
 
 /// Whether plans `a` and `b` (of one mechanism: the same images and vectors in the same

@@ -63,6 +63,12 @@ pub fn plan_bbox(plan: &Plan) -> Rect {
     r
 }
 
+/// A plan's longer side, in its units (m/s or m/s²).
+pub fn plan_side(plan: &Plan) -> f64 {
+    let b = plan_bbox(plan);
+    b.width().max(b.height())
+}
+
 /// How a region's plans are drawn: each plan's cell and scale.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Sizing {

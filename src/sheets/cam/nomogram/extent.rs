@@ -30,7 +30,7 @@ fn near_points(d: &Design, phis: &[f64]) -> Vec<Vec2> {
 /// pivot ends there in an arrow named A, a_w written along it. The catalogue's rockers are
 /// at most 2.5 times (task 4): drawn whole, as the course draws them; the stress sweep's
 /// small rockers, 7 times.
-pub(super) const PIVOT_FAR: f64 = 4.0;
+const PIVOT_FAR: f64 = 4.0;
 
 /// Whether the nomogram of the box `extent` draws the follower's pivot (see [`PIVOT_FAR`]).
 pub fn draws_pivot(d: &Design, extent: (Vec2, Vec2)) -> bool {
