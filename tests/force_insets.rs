@@ -205,3 +205,26 @@ fn a_reaction_drawn_again_enlarged_is_measured_there() {
     assert!(out.scene.texts().any(|t| t.tail.contains(&written)), "no enlargement titled {written}");
     assert!(r05.length_mm >= REACTION_MIN_MM, "R_05 {} mm", r05.length_mm);
 }
+
+/// Task 1 variant 6 at φ1 = 180°: the compressor's crank, rods and pistons all stand on the
+/// cylinders' vertical axis and every force on them is vertical, so the guides' horizontal
+/// reactions R₀₃, R₀₅ and the balancing force P_m (horizontal, across the crank) vanish.
+/// Round-off left them at 10⁻¹² N, and the sheet drew each again enlarged "at μP = 0 N/mm"
+/// as an arrow 40 mm long with a made-up sense.
+#[test]
+fn forces_that_vanish_at_a_dead_centre_are_zero_and_not_enlarged() {
+    let out = &common::catalogue_sheet1("1", 6, tmm_sheets::drawing::labels::Language::En);
+    let forces = &out.results["forces"];
+    assert_eq!(forces["phi_deg"].as_f64(), Some(180.0));
+    for r in ["R03", "R05"] {
+        let xy: Vec<f64> = forces["reactions"][r].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+        assert_eq!(xy, [0.0, 0.0], "{r}");
+    }
+    assert_eq!(forces["balancing_force"].as_f64(), Some(0.0));
+    let mu_p = forces["scales"]["mu_p"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).fold(0.0, f64::max);
+    for mu in forces["scales"]["mu_p_enlarged"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()) {
+        // An enlargement is at most a hundred times its polygon (a 40 mm box of 0.4 mm).
+        assert!(mu >= mu_p / 1000.0, "an enlargement at {mu} N/mm beside polygons at up to {mu_p}");
+    }
+    assert!(!out.scene.texts().any(|t| t.tail.contains("= 0 N/mm")), "a drawing at μ = 0");
+}

@@ -188,6 +188,20 @@ fn unit(v: Vec2) -> (Vec2, f64) {
     (v / l, l)
 }
 
+/// `v` itself, or exactly zero where it is below [`tol::ZERO_FORCE`] of `scale` (the
+/// largest force it balances): the round-off of a reaction that vanishes (a guide's normal
+/// force at a dead centre, 10⁻¹⁶ of the group's forces), which a sheet would otherwise
+/// enlarge to a drawing "at μP = 0 N/mm" or draw as an arrow with a made-up sense.
+fn snap(v: Vec2, scale: f64) -> Vec2 {
+    if v.norm() <= tol::ZERO_FORCE * scale { Vec2::ZERO } else { v }
+}
+
+/// The largest of the forces `known` on a group and of `moments` turned into forces, N.
+fn force_scale(known: &[&[Applied]], moments: &[f64]) -> f64 {
+    let forces = known.iter().flat_map(|k| k.iter()).map(|a| a.force.norm());
+    forces.chain(moments.iter().map(|m| m.abs())).fold(0.0, f64::max)
+}
+
 /// Solves n_a·a + n_b·b = −k for the magnitudes along the known directions `a`, `b`.
 fn polygon_pair(a: Vec2, b: Vec2, k: Vec2) -> Option<(f64, f64)> {
     let det = a.cross(b);
@@ -278,7 +292,8 @@ fn react(
             kind: Kind::Reaction { from: on, part: Part::Whole },
             at,
             point,
-            force: -force,
+            // Not `-force`: a vanishing reaction's opposite stays +0, not −0 in results.json.
+            force: Vec2::ZERO - force,
         });
     }
     r
@@ -309,15 +324,17 @@ fn solve_group(
             let (e1, len1) = unit(pb - p(jq));
             let (sum0, mom0) = resultant(applied, inertia, l0, pb);
             let (sum1, mom1) = resultant(applied, inertia, l1, pb);
-            let (t0, t1) = (e0.turn_90() * (mom0 / len0), e1.turn_90() * (mom1 / len1));
+            let big = force_scale(&[&known0, &known1], &[mom0 / len0, mom1 / len1]);
+            let (t0, t1) = (snap(e0.turn_90() * (mom0 / len0), big), snap(e1.turn_90() * (mom1 / len1), big));
             let (n0, n1) = polygon_pair(e0, e1, t0 + t1 + sum0 + sum1).ok_or_else(|| singular("two links"))?;
-            let r0 = react(applied, owner(m, jp, g.links), l0, pp, Some(jp), e0 * n0 + t0);
-            let r1 = react(applied, owner(m, jq, g.links), l1, p(jq), Some(jq), e1 * n1 + t1);
-            let inner = react(applied, l1, l0, pb, Some(b), -(r0.force + sum0));
-            let mut terms0 = vec![part(&r0, Part::Normal, e0 * n0), part(&r0, Part::Tangential, t0)];
+            let (n0, n1) = (snap(e0 * n0, big), snap(e1 * n1, big));
+            let r0 = react(applied, owner(m, jp, g.links), l0, pp, Some(jp), n0 + t0);
+            let r1 = react(applied, owner(m, jq, g.links), l1, p(jq), Some(jq), n1 + t1);
+            let inner = react(applied, l1, l0, pb, Some(b), snap(-(r0.force + sum0), big));
+            let mut terms0 = vec![part(&r0, Part::Normal, n0), part(&r0, Part::Tangential, t0)];
             terms0.extend(known0);
             let mut terms1 = known1;
-            terms1.extend([part(&r1, Part::Tangential, t1), part(&r1, Part::Normal, e1 * n1)]);
+            terms1.extend([part(&r1, Part::Tangential, t1), part(&r1, Part::Normal, n1)]);
             (terms0, terms1, inner)
         }
         Step::Rrp { p: jp, d, dir, .. } => {
@@ -326,17 +343,21 @@ fn solve_group(
             let normal = dir.turn_90();
             let (sum0, mom0) = resultant(applied, inertia, l0, pd);
             let (sum1, mom1) = resultant(applied, inertia, l1, pd);
-            let t0 = e0.turn_90() * (mom0 / len0);
+            let big = force_scale(&[&known0, &known1], &[mom0 / len0]);
+            let t0 = snap(e0.turn_90() * (mom0 / len0), big);
             let (n0, nf) =
                 polygon_pair(e0, normal, t0 + sum0 + sum1).ok_or_else(|| singular("rod and guide normal"))?;
+            let n0 = snap(e0 * n0, big);
+            let nf = if snap(normal * nf, big) == Vec2::ZERO { 0.0 } else { nf };
             // The guide's reaction passes at h along the guide from D, so that the slider's
             // moments about D balance: h·N + M_D = 0 (a vanishing N acts anywhere: at D).
-            let scale = sum0.norm() + sum1.norm() + t0.norm() + n0.abs();
+            let scale = sum0.norm() + sum1.norm() + t0.norm() + n0.norm();
             let h = if nf.abs() > tol::ZERO_FORCE * scale { -mom1 / nf } else { 0.0 };
-            let r0 = react(applied, owner(m, jp, g.links), l0, p(jp), Some(jp), e0 * n0 + t0);
-            let r1 = react(applied, FRAME, l1, pd + dir * h, if h == 0.0 { Some(d) } else { None }, normal * nf);
-            let inner = react(applied, l1, l0, pd, Some(d), -(r0.force + sum0));
-            let mut terms0 = vec![part(&r0, Part::Normal, e0 * n0), part(&r0, Part::Tangential, t0)];
+            let r0 = react(applied, owner(m, jp, g.links), l0, p(jp), Some(jp), n0 + t0);
+            let r1 =
+                react(applied, FRAME, l1, pd + dir * h, if h == 0.0 { Some(d) } else { None }, snap(normal * nf, big));
+            let inner = react(applied, l1, l0, pd, Some(d), snap(-(r0.force + sum0), big));
+            let mut terms0 = vec![part(&r0, Part::Normal, n0), part(&r0, Part::Tangential, t0)];
             terms0.extend(known0);
             let mut terms1 = known1;
             terms1.push(r1);
@@ -349,12 +370,15 @@ fn solve_group(
             let (sum0, mom0) = resultant(applied, inertia, l0, pa);
             let (sum1, mom1) = resultant(applied, inertia, l1, pc);
             // Block about A: h·N + M_A = 0; kulisa about C: (l + h)·N = M_C; hence l·N = M_C + M_A.
+            let big = force_scale(&[&known0, &known1], &[mom0 / len, mom1 / len]);
             let nf = (mom1 + mom0) / len;
+            let nf = if snap(normal * nf, big) == Vec2::ZERO { 0.0 } else { nf };
             let scale = sum0.norm() + sum1.norm() + (mom0.abs() + mom1.abs()) / len;
             let h = if nf.abs() > tol::ZERO_FORCE * scale { -mom0 / nf } else { 0.0 };
-            let inner = react(applied, l1, l0, pa + e * h, if h == 0.0 { Some(a) } else { None }, normal * nf);
-            let r0 = react(applied, owner(m, a, g.links), l0, pa, Some(a), -(sum0 + inner.force));
-            let r1 = react(applied, owner(m, c, g.links), l1, pc, Some(c), -(sum1 - inner.force));
+            let inner =
+                react(applied, l1, l0, pa + e * h, if h == 0.0 { Some(a) } else { None }, snap(normal * nf, big));
+            let r0 = react(applied, owner(m, a, g.links), l0, pa, Some(a), snap(-(sum0 + inner.force), big));
+            let r1 = react(applied, owner(m, c, g.links), l1, pc, Some(c), snap(-(sum1 - inner.force), big));
             let mut terms0 = vec![r0];
             terms0.extend(known0);
             let mut terms1 = known1;
@@ -394,10 +418,12 @@ fn solve_crank(
     let known: Vec<Applied> = applied.iter().filter(|a| a.on == link).copied().collect();
     let (sum, mom) = resultant(applied, inertia, link, po);
     let arm = (pa - po).cross(dir);
-    let p_m = -mom / arm;
-    let bal = Applied { on: link, kind: Kind::Balancing, at: pa, point: Some(pin), force: dir * p_m };
+    let big = force_scale(&[&known], &[]);
+    let force = snap(dir * (-mom / arm), big);
+    let p_m = if force == Vec2::ZERO { 0.0 } else { -mom / arm };
+    let bal = Applied { on: link, kind: Kind::Balancing, at: pa, point: Some(pin), force };
     applied.push(bal);
-    let r01 = react(applied, FRAME, link, po, Some(pivot), -(sum + bal.force));
+    let r01 = react(applied, FRAME, link, po, Some(pivot), snap(-(sum + bal.force), big));
     let mut terms = known;
     terms.extend([bal, r01]);
     let split = terms.len();
