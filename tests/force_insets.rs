@@ -208,9 +208,10 @@ fn a_reaction_drawn_again_enlarged_is_measured_there() {
 
 /// Task 1 variant 6 at φ1 = 180°: the compressor's crank, rods and pistons all stand on the
 /// cylinders' vertical axis and every force on them is vertical, so the guides' horizontal
-/// reactions R₀₃, R₀₅ and the balancing force P_m (horizontal, across the crank) vanish.
-/// Round-off left them at 10⁻¹² N, and the sheet drew each again enlarged "at μP = 0 N/mm"
-/// as an arrow 40 mm long with a made-up sense.
+/// reactions R₀₃, R₀₅ and the balancing force P_m (horizontal, across the crank) vanish, and
+/// by symmetry so do the rods' angular accelerations. Round-off left them at 10⁻¹² N, and
+/// the sheet drew each reaction again enlarged "at μP = 0 N/mm" as an arrow 40 mm long, and
+/// P′_m and the inertia couples on the lever, with senses round-off chose.
 #[test]
 fn forces_that_vanish_at_a_dead_centre_are_zero_and_not_enlarged() {
     let out = &common::catalogue_sheet1("1", 6, tmm_sheets::drawing::labels::Language::En);
@@ -220,7 +221,13 @@ fn forces_that_vanish_at_a_dead_centre_are_zero_and_not_enlarged() {
         let xy: Vec<f64> = forces["reactions"][r].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
         assert_eq!(xy, [0.0, 0.0], "{r}");
     }
-    assert_eq!(forces["balancing_force"].as_f64(), Some(0.0));
+    for p_m in ["balancing_force", "balancing_force_lever", "balancing_force_power"] {
+        assert_eq!(forces[p_m].as_f64(), Some(0.0), "{p_m}");
+    }
+    // The rods' ε vanish too, so no inertia couple is drawn on the groups or the lever.
+    for (link, load) in forces["inertia"].as_object().unwrap() {
+        assert_eq!(load["inertia_moment"].as_f64(), Some(0.0), "M_i{link}");
+    }
     let mu_p = forces["scales"]["mu_p"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).fold(0.0, f64::max);
     for mu in forces["scales"]["mu_p_enlarged"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()) {
         // An enlargement is at most a hundred times its polygon (a 40 mm box of 0.4 mm).

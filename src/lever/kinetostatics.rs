@@ -214,29 +214,39 @@ fn polygon_pair(a: Vec2, b: Vec2, k: Vec2) -> Option<(f64, f64)> {
 pub fn analyse(m: &Mechanism, s: &State, model: &ForceModel) -> Result<Forces, ForceError> {
     let mut applied = Vec::new();
     let mut inertia = Vec::new();
-    for lm in &model.masses {
-        let k = s.points[lm.centre];
-        let eps = s.links[lm.link].eps;
-        let il = InertiaLoad {
-            link: lm.link,
-            mass: lm.mass,
-            j: lm.j,
-            a_s: k.a,
-            eps,
-            force: -k.a * lm.mass,
-            moment: -lm.j * eps,
-            weight: lm.mass * model.g,
-        };
+    let raw: Vec<InertiaLoad> = model
+        .masses
+        .iter()
+        .map(|lm| {
+            let (k, eps) = (s.points[lm.centre], s.links[lm.link].eps);
+            let (force, moment) = (-k.a * lm.mass, -lm.j * eps);
+            InertiaLoad {
+                link: lm.link,
+                mass: lm.mass,
+                j: lm.j,
+                a_s: k.a,
+                eps,
+                force,
+                moment,
+                weight: lm.mass * model.g,
+            }
+        })
+        .collect();
+    // An inertia force or moment of a link at rest at this instant is the round-off of an
+    // acceleration that vanishes (ε of a rod at a dead centre, 10⁻¹³ 1/s²): zero, or the
+    // group drawing and the lever show it with a sense round-off chose.
+    let big = raw.iter().map(|i| i.force.norm().max(i.weight)).fold(0.0, f64::max);
+    let reach =
+        s.points.iter().map(|a| s.points.iter().map(|b| (a.p - b.p).norm()).fold(0.0, f64::max)).fold(0.0, f64::max);
+    for (lm, il) in model.masses.iter().zip(raw) {
+        let moment = if il.moment.abs() <= tol::ZERO_FORCE * big * reach { 0.0 } else { il.moment };
+        let il = InertiaLoad { force: snap(il.force, big), moment, ..il };
+        let at = s.points[lm.centre].p;
         if il.weight != 0.0 {
-            applied.push(Applied {
-                on: lm.link,
-                kind: Kind::Weight,
-                at: k.p,
-                point: Some(lm.centre),
-                force: Vec2::new(0.0, -il.weight),
-            });
+            let weight = Vec2::new(0.0, -il.weight);
+            applied.push(Applied { on: lm.link, kind: Kind::Weight, at, point: Some(lm.centre), force: weight });
         }
-        applied.push(Applied { on: lm.link, kind: Kind::Inertia, at: k.p, point: Some(lm.centre), force: il.force });
+        applied.push(Applied { on: lm.link, kind: Kind::Inertia, at, point: Some(lm.centre), force: il.force });
         inertia.push(il);
     }
     let mut loads = Vec::new();
@@ -449,7 +459,15 @@ fn power_balance(s: &State, applied: &[Applied], inertia: &[InertiaLoad], v_a: V
         .map(|a| a.force.dot(s.points[a.point.expect("active forces act at points")].v))
         .sum();
     let moments: f64 = inertia.iter().map(|i| i.moment * s.links[i.link].omega).sum();
-    -(forces + moments) / v_a.norm()
+    let p = -(forces + moments) / v_a.norm();
+    // Zero where it is round-off of the powers it balances (see `zhukovsky`).
+    let active = applied.iter().filter(|a| is_active(a));
+    let largest = active
+        .map(|a| a.force.norm() * s.points[a.point.expect("active forces act at points")].v.norm())
+        .chain(inertia.iter().map(|i| (i.moment * s.links[i.link].omega).abs()))
+        .fold(0.0, f64::max)
+        / v_a.norm();
+    if p.abs() <= tol::ZERO_FORCE * largest { 0.0 } else { p }
 }
 
 /// The Zhukovsky lever: every active force at its point's image on the velocity plan turned
@@ -485,6 +503,11 @@ fn zhukovsky(
     let a_image = turn(s.points[pin].v);
     let arm = a_image.cross(v_a.unit());
     let p = -moments.iter().sum::<f64>() / arm;
+    // As for P_m from the polygon: the round-off of a vanishing force is zero.
+    // (Each moment may itself be round-off, a force along its image's line: compare with
+    // what it would be across it.)
+    let largest = lever.iter().map(|l| l.force.norm() * l.image.norm()).fold(0.0, f64::max) / arm.abs();
+    let p = if p.abs() <= tol::ZERO_FORCE * largest { 0.0 } else { p };
     let mut all = moments;
     all.push(arm * p);
     (lever, all, p)
