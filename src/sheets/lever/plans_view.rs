@@ -327,12 +327,7 @@ pub struct PlanCell<'a> {
 /// returns the paper position of the pole. The caller places the labels.
 pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
     let cell = c.cell;
-    g.text(Text::new(Point::new(cell.x0 + 2.0, cell.y0 + 4.5), c.title, 3.5, Anchor::Start));
-    let mut top = cell.y0 + TITLE;
-    if let Some(line) = &c.scale_line {
-        line.draw(g, Point::new(cell.x0 + 2.0, cell.y0 + TITLE + 3.5), 2.5, Anchor::Start);
-        top += SCALE_LINE;
-    }
+    let top = cell.y0 + TITLE + if c.scale_line.is_some() { SCALE_LINE } else { 0.0 };
     let inner = Rect::new(cell.x0 + 1.0, top, cell.x1 - 1.0, cell.y1 - 1.0);
     let (plan, mu) = (c.plan, c.mu);
     let bb = c.extent.unwrap_or_else(|| plan_bbox(plan));
@@ -342,6 +337,15 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
     // title, not 40 mm below it.
     let drop = ((area.height() - bb.height() / mu) / 2.0).clamp(0.0, PLAN_DROP);
     let area_c = Point::new(area.center().x, area.y0 + drop + bb.height() / mu / 2.0);
+    // The title (and own scale) over the plan's left edge and its letters' room there, not
+    // at the cell's: a cell stretched across a row put it 90 mm left of a small plan.
+    let title = Text::new(Point::ZERO, c.title, 3.5, Anchor::Start);
+    let title_w = title.advance().max(c.scale_line.as_ref().map_or(0.0, |l| l.width(2.5)));
+    let x = (area_c.x - bb.width() / mu / 2.0 - MARGIN).min(cell.x1 - 1.0 - title_w).max(cell.x0 + 2.0);
+    g.text(Text { at: Point::new(x, cell.y0 + 4.5), ..title });
+    if let Some(line) = &c.scale_line {
+        line.draw(g, Point::new(x, cell.y0 + TITLE + 3.5), 2.5, Anchor::Start);
+    }
     // Paper position of the pole.
     let pole_p = Point::new(area_c.x - (bb.center().x) / mu, area_c.y + (bb.center().y) / mu);
     let view = View::new(pole_p, mu);
