@@ -235,3 +235,48 @@ fn forces_that_vanish_at_a_dead_centre_are_zero_and_not_enlarged() {
     }
     assert!(!out.scene.texts().any(|t| t.tail.contains("= 0 N/mm")), "a drawing at μ = 0");
 }
+
+/// An enlargement's title stands just over its drawing: at the top of its slot it stood
+/// under the polygon's last labels, 2 mm from them and 15 mm above its own drawing (the
+/// worked example's K). On every fixture, in every language, each title "K (μP = …)" has
+/// a line of the drawing starting at most 6 mm from its baseline, below it.
+#[test]
+fn an_enlargements_title_stands_just_over_its_drawing() {
+    use tmm_sheets::drawing::labels::Language;
+    let mut far = Vec::new();
+    let mut checked = 0;
+    for name in common::fixture_names() {
+        for lang in Language::ALL {
+            let mut p = fixture(&name);
+            p.info.language = lang;
+            let built = pipeline::build(&p, &[1]).unwrap();
+            for group in &built[0].output.scene.groups {
+                for part in group.parts.iter().filter(|p| p.id.starts_with("forces.")) {
+                    let items = &group.items[part.items.clone()];
+                    for (k, item) in items.iter().enumerate() {
+                        let Item::Text(t) = item else { continue };
+                        let Some(Item::Text(mu)) = items.get(k + 1) else { continue };
+                        if !(t.tail == " (" && mu.text == "μ" && mu.sub == "P") {
+                            continue;
+                        }
+                        let (x0, x1) = (t.at.x, mu.bbox().x1);
+                        // How far each line below the baseline is from the title's baseline.
+                        let below = items
+                            .iter()
+                            .filter(|i| !matches!(i, Item::Text(_)))
+                            .map(|i| i.bbox())
+                            .filter(|b| b.y0 >= t.at.y - 0.5)
+                            .map(|b| kurbo::Vec2::new(b.y0 - t.at.y, (b.x0 - x1).max(x0 - b.x1).max(0.0)).norm())
+                            .fold(f64::MAX, f64::min);
+                        if below > 6.0 {
+                            far.push(format!("{name} {lang:?} {} {}: drawing {below:.1} mm below", part.id, t.text));
+                        }
+                        checked += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(far.is_empty(), "{far:#?}");
+    assert!(checked >= 12, "{checked} enlargements");
+}

@@ -36,6 +36,8 @@ const SLOT_MIN_W: f64 = 40.0;
 /// Room round an enlarged run for its labels, and for its title above, mm.
 const PAD: f64 = 9.0;
 const TITLE: f64 = 6.0;
+/// From an enlargement's title's baseline down to its drawing's top, mm.
+const TITLE_GAP: f64 = 4.0;
 /// The neighbouring long sides' stubs in the enlargement, mm.
 const STUB: f64 = 8.0;
 /// The ring round a run on the polygon: this much beyond its vertices, mm.
@@ -242,13 +244,6 @@ pub(super) fn draw(
     let n = poly.terms.len();
     for (inset, letter) in named.insets.iter().zip(named.letters) {
         let slot = inset.slot + r.origin().to_vec2();
-        let title = LabelText::new(letter, "").with_tail(" (");
-        let at = Point::new(slot.x0 + 2.0, slot.y0 + 4.0);
-        title.draw(g, at, 3.5, Anchor::Start);
-        let mut mu = scale_item(inp, "P", inset.mu, inp.words.common.unit_n_per_mm());
-        mu.tail.push(')');
-        // Set where the title's advance ends: its box's slant would leave a gap after "(".
-        mu.draw(g, Point::new(at.x + title.width(3.5), at.y), 3.5, Anchor::Start);
         // Under its title, not in the middle of a tall slot.
         let drawn_h = inset.world.height() / inset.mu + 2.0 * PAD;
         let area = Rect::new(slot.x0, slot.y0 + TITLE, slot.x1, slot.y1.min(slot.y0 + TITLE + drawn_h));
@@ -259,11 +254,33 @@ pub(super) fn draw(
         let before = poly.terms[(first + n - 1) % n].force;
         let after = poly.terms[(last + 1) % n].force;
         let (start, end) = (p(chain[first]), p(chain[(last + 1) % n]));
+        let mut stubs = Vec::new();
         if before.norm() > 0.0 {
-            g.line(start - view.dir(before).unit() * STUB, start, THIN);
+            stubs.push((start - view.dir(before).unit() * STUB, start));
         }
         if after.norm() > 0.0 {
-            g.line(end, end + view.dir(after).unit() * STUB, THIN);
+            stubs.push((end, end + view.dir(after).unit() * STUB));
+        }
+        // The title just over the drawing (stubs included) and over its left edge and its
+        // labels' room, not at the slot's top left: there "K (μP = …)" stood under the
+        // polygon's last labels, nearer the polygon than its own drawing.
+        let title = LabelText::new(letter, "").with_tail(" (");
+        let mut mu = scale_item(inp, "P", inset.mu, inp.words.common.unit_n_per_mm());
+        mu.tail.push(')');
+        let title_w = title.width(3.5) + mu.width(3.5);
+        let left = area.center().x - inset.world.width() / inset.mu / 2.0 - PAD;
+        let top = stubs.iter().flat_map(|&(a, b)| [a.y, b.y]).fold(p(Vec2::new(0.0, inset.world.y1)).y, f64::min);
+        let at = Point::new(left.min(slot.x1 - 1.0 - title_w).max(slot.x0 + 2.0), (top - TITLE_GAP).max(slot.y0 + 4.0));
+        title.draw(g, at, 3.5, Anchor::Start);
+        // Set where the title's advance ends: its box's slant would leave a gap after "(".
+        mu.draw(g, Point::new(at.x + title.width(3.5), at.y), 3.5, Anchor::Start);
+        // The drawing's labels keep clear of the whole title, the room under its scale's
+        // text beside the subscript included.
+        for k in 0..=(title_w / 2.0).ceil() as usize {
+            labels.keep_out(Point::new(at.x + 2.0 * k as f64, at.y - 1.0), 2.5);
+        }
+        for (a, b) in stubs {
+            g.line(a, b, THIN);
         }
         for &k in &inset.terms {
             let (a, b) = (p(chain[k]), p(chain[(k + 1) % n]));
