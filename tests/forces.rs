@@ -203,3 +203,39 @@ fn a_blocks_inertia_couple_stands_on_its_kulisas_image() {
     let tol = 1e-9 * largest_force(f);
     assert_near!(f.p_m, f.p_m_lever, tol, "kinetostatics against the lever");
 }
+
+/// The crank's polygon is drawn without crossing itself on every fixture: its equation may
+/// list the known forces in any order, and G₁ + R₂₁ + P_m + R₀₁ = 0 of the offset
+/// crank-slider crossed R₂₁ with R₀₁, both labelled at the crossing. Its sides (the forces
+/// head to tail) are checked pairwise here, and the polygon must still close.
+#[test]
+fn every_crank_polygon_is_drawn_without_crossing_itself() {
+    let mut checked = 0;
+    for name in fixture_names() {
+        if lever(&name).forces.is_none() {
+            continue;
+        }
+        let (_, f) = analysed(&name);
+        let crank = f.polygons.iter().find(|p| p.group.is_none()).expect("the crank's polygon");
+        let mut pts = vec![kurbo::Vec2::ZERO];
+        for t in &crank.terms {
+            pts.push(*pts.last().unwrap() + t.force);
+        }
+        let scale = crank.terms.iter().map(|t| t.force.hypot()).fold(0.0, f64::max);
+        assert!(pts.last().unwrap().hypot() < 1e-9 * scale, "{name}: the polygon does not close");
+        let n = crank.terms.len();
+        let cross = |p: kurbo::Vec2, q: kurbo::Vec2, r: kurbo::Vec2| (q - p).cross(r - p);
+        for i in 0..n {
+            for j in i + 2..n {
+                if i == 0 && j == n - 1 {
+                    continue;
+                }
+                let (a, b, c, d) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
+                let crossing = cross(c, d, a) * cross(c, d, b) < 0.0 && cross(a, b, c) * cross(a, b, d) < 0.0;
+                assert!(!crossing, "{name}: sides {i} and {j} of the crank's polygon cross");
+            }
+        }
+        checked += 1;
+    }
+    assert!(checked >= 6, "{checked} fixtures");
+}

@@ -11,6 +11,7 @@ use crate::num::tol;
 use kurbo::Vec2;
 
 mod checks;
+mod order;
 use checks::{power_balance, zhukovsky};
 
 /// The frame, as the body a reaction comes from.
@@ -437,7 +438,7 @@ fn solve_crank(
     let bal = Applied { on: link, kind: Kind::Balancing, at: pa, point: Some(pin), force };
     applied.push(bal);
     let r01 = react(applied, FRAME, link, po, Some(pivot), snap(-(sum + bal.force), big));
-    let mut terms = known;
+    let mut terms = order::uncrossed(known, &[bal, r01]);
     terms.extend([bal, r01]);
     let split = terms.len();
     Ok(CrankSolution {
