@@ -200,6 +200,11 @@ fn snap(v: Vec2, scale: f64) -> Vec2 {
     if v.norm() <= tol::ZERO_FORCE * scale { Vec2::ZERO } else { v }
 }
 
+/// [`snap`] for a signed magnitude: `x`, or 0 where it is below [`tol::ZERO_FORCE`] of `scale`.
+fn snap_value(x: f64, scale: f64) -> f64 {
+    if x.abs() <= tol::ZERO_FORCE * scale { 0.0 } else { x }
+}
+
 /// The largest of the forces `known` on a group and of `moments` turned into forces, N.
 fn force_scale(known: &[&[Applied]], moments: &[f64]) -> f64 {
     let forces = known.iter().flat_map(|k| k.iter()).map(|a| a.force.norm());
@@ -243,7 +248,7 @@ pub fn analyse(m: &Mechanism, s: &State, model: &ForceModel) -> Result<Forces, F
     let reach =
         s.points.iter().map(|a| s.points.iter().map(|b| (a.p - b.p).norm()).fold(0.0, f64::max)).fold(0.0, f64::max);
     for (lm, il) in model.masses.iter().zip(raw) {
-        let moment = if il.moment.abs() <= tol::ZERO_FORCE * big * reach { 0.0 } else { il.moment };
+        let moment = snap_value(il.moment, big * reach);
         let il = InertiaLoad { force: snap(il.force, big), moment, ..il };
         let at = s.points[lm.centre].p;
         if il.weight != 0.0 {
@@ -362,7 +367,7 @@ fn solve_group(
             let (n0, nf) =
                 polygon_pair(e0, normal, t0 + sum0 + sum1).ok_or_else(|| singular("rod and guide normal"))?;
             let n0 = snap(e0 * n0, big);
-            let nf = if snap(normal * nf, big) == Vec2::ZERO { 0.0 } else { nf };
+            let nf = snap_value(nf, big);
             // The guide's reaction passes at h along the guide from D, so that the slider's
             // moments about D balance: h·N + M_D = 0 (a vanishing N acts anywhere: at D).
             let scale = sum0.norm() + sum1.norm() + t0.norm() + n0.norm();
@@ -386,7 +391,7 @@ fn solve_group(
             // Block about A: h·N + M_A = 0; kulisa about C: (l + h)·N = M_C; hence l·N = M_C + M_A.
             let big = force_scale(&[&known0, &known1], &[mom0 / len, mom1 / len]);
             let nf = (mom1 + mom0) / len;
-            let nf = if snap(normal * nf, big) == Vec2::ZERO { 0.0 } else { nf };
+            let nf = snap_value(nf, big);
             let scale = sum0.norm() + sum1.norm() + (mom0.abs() + mom1.abs()) / len;
             let h = if nf.abs() > tol::ZERO_FORCE * scale { -mom0 / nf } else { 0.0 };
             let inner =

@@ -1,7 +1,7 @@
 //! P_m two more ways, each independent of the polygons: the Zhukovsky lever (every active
 //! force turned about its point's image on the velocity plan) and the power balance.
 
-use super::{Applied, InertiaLoad, Kind, LeverForce};
+use super::{Applied, InertiaLoad, Kind, LeverForce, snap_value};
 use crate::lever::linkage::{LinkId, Mechanism, PointId, State, Step};
 use crate::num::math::Norm;
 use crate::num::tol;
@@ -27,7 +27,7 @@ pub(super) fn power_balance(s: &State, applied: &[Applied], inertia: &[InertiaLo
         .chain(inertia.iter().map(|i| (i.moment * s.links[i.link].omega).abs()))
         .fold(0.0, f64::max)
         / v_a.norm();
-    if p.abs() <= tol::ZERO_FORCE * largest { 0.0 } else { p }
+    snap_value(p, largest)
 }
 
 /// The Zhukovsky lever: every active force at its point's image on the velocity plan turned
@@ -67,7 +67,7 @@ pub(super) fn zhukovsky(
     // (Each moment may itself be round-off, a force along its image's line: compare with
     // what it would be across it.)
     let largest = lever.iter().map(|l| l.force.norm() * l.image.norm()).fold(0.0, f64::max) / arm.abs();
-    let p = if p.abs() <= tol::ZERO_FORCE * largest { 0.0 } else { p };
+    let p = snap_value(p, largest);
     let mut all = moments;
     all.push(arm * p);
     (lever, all, p)
