@@ -206,6 +206,39 @@ fn a_reaction_drawn_again_enlarged_is_measured_there() {
     assert!(r05.length_mm >= REACTION_MIN_MM, "R_05 {} mm", r05.length_mm);
 }
 
+/// Where the cells cannot hold a polygon's enlargements, the sheet draws its drawings
+/// smaller, then the enlargements smaller, before it leaves short sides labelled on a
+/// polygon. Task 6 variant 12's II(2,3) labelled G₂, P_i2 and G₃, 0.05–0.14 mm long, at one
+/// vertex (its II(4,5) had got an enlargement, and the search stopped there); task 12
+/// variant 1's II(2,3) labelled G₂, G₃ and R^t03, 0.06–0.12 mm, where 40 mm enlargements
+/// did not pack at any size tried. Each polygon's sides at its own μ_P (the coarsest scale
+/// its segments are recorded at; an enlargement's are finer) are at least [`SIDE_MIN`] or
+/// too short to draw at all (0.05 mm).
+#[test]
+fn every_polygon_enlarges_its_short_sides_where_the_sheet_can_make_room() {
+    use std::collections::BTreeMap;
+    for (task, variant) in [("6", 12), ("12", 1)] {
+        let out = common::catalogue_sheet1(task, variant, tmm_sheets::drawing::labels::Language::Uz);
+        let mut parts: BTreeMap<&str, Vec<&tmm_sheets::report::Segment>> = BTreeMap::new();
+        for s in out.segments.iter().filter(|s| s.id.starts_with("forces.group") || s.id.starts_with("forces.crank")) {
+            parts.entry(s.id.rsplit_once('.').unwrap().0).or_default().push(s);
+        }
+        assert!(parts.len() >= 3, "task {task} v{variant}: polygons {:?}", parts.keys());
+        for (part, sides) in &parts {
+            let mu_p = sides.iter().map(|s| s.scale).fold(0.0, f64::max);
+            for s in sides.iter().filter(|s| s.scale == mu_p) {
+                let drawn = s.length_mm >= 0.05;
+                assert!(
+                    !drawn || s.length_mm >= SIDE_MIN,
+                    "task {task} v{variant} {part}: {} {:.3} mm",
+                    s.name,
+                    s.length_mm
+                );
+            }
+        }
+    }
+}
+
 /// Task 1 variant 6 at φ1 = 180°: the compressor's crank, rods and pistons all stand on the
 /// cylinders' vertical axis and every force on them is vertical, so the guides' horizontal
 /// reactions R₀₃, R₀₅ and the balancing force P_m (horizontal, across the crank) vanish, and

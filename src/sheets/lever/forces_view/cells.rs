@@ -60,6 +60,9 @@ pub(super) struct Sizes {
     /// Whether each group cell takes the more compact of its polygon beside its drawing and
     /// under it, rather than always beside.
     pub(super) compact: bool,
+    /// The enlargements' longer side at most, mm (`inset::INSET_BOX`, smaller where the
+    /// cells are cramped).
+    pub(super) inset_box: f64,
 }
 
 /// How many polygons may grow one by one: a mechanism has at most a few groups.
@@ -109,9 +112,9 @@ pub struct CellMemo {
     fixed: OnceCell<Vec<(f64, f64)>>,
 }
 
-/// A polygon's index, its μ_l's and μ_P's bits, whether its cell may grow and whether its
-/// polygon stands under its drawing.
-type PolygonKey = (usize, u64, u64, bool, bool);
+/// A polygon's index, its μ_l's and μ_P's bits, whether its cell may grow, its enlargements'
+/// box's bits and whether its polygon stands under its drawing.
+type PolygonKey = (usize, u64, u64, bool, u64, bool);
 /// A group cell's layout, width and height.
 type LaidOut = (Rc<GroupLayout>, f64, f64);
 
@@ -128,9 +131,9 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
         let laid_out = |stacked: bool| {
             memo.polygons
                 .borrow_mut()
-                .entry((i, mu_l.to_bits(), mu_p.to_bits(), grow, stacked))
+                .entry((i, mu_l.to_bits(), mu_p.to_bits(), grow, s.inset_box.to_bits(), stacked))
                 .or_insert_with(|| {
-                    let (layout, w, h) = group_layout(inp, poly, (mu_l, mu_p), grow, stacked);
+                    let (layout, w, h) = group_layout(inp, poly, (mu_l, mu_p), (grow, s.inset_box), stacked);
                     (Rc::new(layout), w, h)
                 })
                 .clone()

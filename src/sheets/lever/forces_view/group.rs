@@ -114,7 +114,7 @@ pub(super) fn group_layout(
     inp: &ForcesInput,
     poly: &Polygon,
     (mu_l, mu_p): (f64, f64),
-    grow: bool,
+    (grow, inset_box): (bool, f64),
     stacked: bool,
 ) -> (GroupLayout, f64, f64) {
     let world = world_box(inp, poly);
@@ -131,7 +131,7 @@ pub(super) fn group_layout(
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let poly_size = (poly_w, poly_h);
     let arrangement = Arrangement { drawing: (drawing_w, drawing_h), stacked };
-    let (insets, place, w, body_h) = with_insets(poly, (&chain, mu_p), arrangement, poly_size, grow);
+    let (insets, place, w, body_h) = with_insets(poly, (&chain, mu_p), arrangement, poly_size, (grow, inset_box));
     let equation = equation_lines(inp, poly, w - 4.0);
     let legend = group_legend(inp, poly, mu_f, w - 4.0);
     let text_lines = equation.len() + legend.len() + SCALE_LINES;
@@ -189,11 +189,11 @@ fn with_insets(
     (chain, mu_p): (&[Vec2], f64),
     arrangement: Arrangement,
     poly_size: (f64, f64),
-    grow: bool,
+    (grow, inset_box): (bool, f64),
 ) -> (Vec<Inset>, Place, f64, f64) {
     let room = arrangement.room(poly_size);
     let (w, body_h) = arrangement.cell(room);
-    let runs = inset::Runs::of(poly, chain, mu_p);
+    let runs = inset::Runs::of(poly, chain, mu_p, inset_box);
     if runs.is_empty() {
         return (Vec::new(), Place::None, w, body_h);
     }
@@ -203,22 +203,23 @@ fn with_insets(
         .iter()
         .filter_map(|&p| runs.placed(p, room, poly_size).map(|is| (is, p)))
         .reduce(|a, b| if least(&b.0) > least(&a.0) { b } else { a });
-    if let Some((is, p)) = free {
-        return (is, p, w, body_h);
-    }
-    if !grow {
-        return (Vec::new(), Place::None, w, body_h);
-    }
-    let grown = places.iter().filter_map(|&p| {
-        let room = runs.grown(p, room, poly_size);
-        runs.placed(p, room, poly_size).map(|is| (is, p, room))
+    let grown = grow.then(|| {
+        let grown = places.iter().filter_map(|&p| {
+            let room = runs.grown(p, room, poly_size);
+            runs.placed(p, room, poly_size).map(|is| (is, p, room))
+        });
+        grown.min_by(|a, b| (a.2.0 * a.2.1).total_cmp(&(b.2.0 * b.2.1)))
     });
-    match grown.min_by(|a, b| (a.2.0 * a.2.1).total_cmp(&(b.2.0 * b.2.1))) {
-        Some((is, p, room)) => {
+    // The room the cell leaves serves unless a grown cell enlarges the runs more: a slot
+    // squeezed under the polygon may enlarge a run only a few times, its sides still short.
+    match (free, grown.flatten()) {
+        (Some((is, p)), Some(g)) if least(&g.0) <= least(&is) => (is, p, w, body_h),
+        (_, Some((is, p, room))) => {
             let (w, h) = arrangement.cell(room);
             (is, p, w, h)
         }
-        None => (Vec::new(), Place::None, w, body_h),
+        (Some((is, p)), None) => (is, p, w, body_h),
+        (None, None) => (Vec::new(), Place::None, w, body_h),
     }
 }
 

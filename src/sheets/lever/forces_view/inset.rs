@@ -26,7 +26,11 @@ use kurbo::{Point, Rect, Vec2};
 /// measures to 2 % and that holds its 3.5 mm label beside it.
 pub const SIDE_MIN: f64 = 5.0;
 /// The enlarged run's longer side at most, mm.
-const INSET_BOX: f64 = 40.0;
+pub(super) const INSET_BOX: f64 = 40.0;
+/// The same where the cells cannot pack a polygon's enlargements at [`INSET_BOX`] at any
+/// size tried: a run enlarged in a smaller slot reads better than one left knotted on its
+/// polygon (over the catalogue, sheets with short sides labelled on a polygon 27 → 1).
+pub(super) const INSET_BOX_CRAMPED: f64 = 25.0;
 /// An enlargement less than this many times the polygon's scale is not worth its room.
 const ENLARGED_MIN: f64 = 2.0;
 /// A slot narrower than this cannot hold an enlargement's title, mm ("K (μP = 12,5 N/mm)"
@@ -78,10 +82,12 @@ fn short(poly: &Polygon, k: usize, mu_p: f64) -> bool {
 pub(super) struct Runs {
     runs: Vec<(Vec<usize>, Rect, f64)>,
     mu_p: f64,
+    /// The enlarged run's longer side at most, mm.
+    inset_box: f64,
 }
 
 impl Runs {
-    pub(super) fn of(poly: &Polygon, chain: &[Vec2], mu_p: f64) -> Runs {
+    pub(super) fn of(poly: &Polygon, chain: &[Vec2], mu_p: f64, inset_box: f64) -> Runs {
         let n = poly.terms.len();
         let runs = runs(poly, mu_p)
             .into_iter()
@@ -92,7 +98,7 @@ impl Runs {
                 (terms, world, longest)
             })
             .collect();
-        Runs { runs, mu_p }
+        Runs { runs, mu_p, inset_box }
     }
 
     pub(super) fn is_empty(&self) -> bool {
@@ -102,7 +108,7 @@ impl Runs {
     /// The room `(w, h)` that holds the polygon (`poly` its size with its label room) and
     /// the enlargements placed `place`, from the room `(w, h)` the cell leaves it.
     pub(super) fn grown(&self, place: Place, (w, h): (f64, f64), poly: (f64, f64)) -> (f64, f64) {
-        let (slot_w, slot_h) = (INSET_BOX + 2.0 * PAD, INSET_BOX + 2.0 * PAD + TITLE);
+        let (slot_w, slot_h) = (self.inset_box + 2.0 * PAD, self.inset_box + 2.0 * PAD + TITLE);
         let n = self.runs.len() as f64;
         match place {
             Place::None => (w, h),
@@ -133,7 +139,7 @@ impl Runs {
                 if slot.width() < SLOT_MIN_W || w <= 0.0 || h <= 0.0 {
                     return None;
                 }
-                let need = (world.width() / w).max(world.height() / h).max(longest / INSET_BOX);
+                let need = (world.width() / w).max(world.height() / h).max(longest / self.inset_box);
                 let mu = scale::plan_round_up(need);
                 (mu > 0.0 && mu * ENLARGED_MIN <= self.mu_p).then(|| Inset {
                     terms: terms.clone(),
