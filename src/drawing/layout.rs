@@ -75,22 +75,44 @@ pub fn measure(scene: &Scene) -> Layout {
     measure_flat(scene, &flattened(scene))
 }
 
-fn measure_flat(scene: &Scene, flat: &Flattened) -> Layout {
-    let mut out = Layout::default();
+/// The texts of `scene` whose letters' boxes, grown by `clearance` (mm; negative shrinks
+/// them), a drawn line meets: each as its group's and its item's index.
+fn texts_meeting_lines(scene: &Scene, flat: &Flattened, clearance: f64) -> Vec<(usize, usize)> {
     let drawn = scene.groups.iter().zip(flat).flat_map(|(g, segs)| g.items.iter().zip(segs));
     let strokes = Obstacles::of_flattened(drawn.filter(|(i, _)| !is_text(i)).map(|(i, s)| (i, &s[..])), STROKE_CELL);
-    let texts: Vec<(&str, &super::scene::Text)> =
-        scene.groups.iter().flat_map(|g| g.texts().map(move |t| (g.id.as_str(), t))).collect();
-    for (group, t) in &texts {
-        let crossed = t.core_boxes().any(|b| {
-            let r = b.inflate(-TOUCH, -TOUCH);
-            strokes.near(r).any(|(p, _)| matches!(*p, Piece::Segment(a, b) if segment_meets_rect(a, b, r)))
-        });
-        if crossed {
-            out.texts_crossed += 1;
-            out.note(format!("drawing '{group}': a line crosses “{}” at ({:.1}, {:.1}) mm", t.plain(), t.at.x, t.at.y));
+    let mut out = Vec::new();
+    for (gi, g) in scene.groups.iter().enumerate() {
+        for (ii, item) in g.items.iter().enumerate() {
+            let Item::Text(t) = item else { continue };
+            let met = t.core_boxes().any(|b| {
+                let r = b.inflate(clearance, clearance);
+                strokes.near(r).any(|(p, _)| matches!(*p, Piece::Segment(a, b) if segment_meets_rect(a, b, r)))
+            });
+            if met {
+                out.push((gi, ii));
+            }
         }
     }
+    out
+}
+
+/// The texts of `scene` that a drawn line passes within `clearance` of (mm, from the
+/// letters' boxes), each as its group's and its item's index: letters that touch a line
+/// read as crowded even where none crosses them (the tests hold placed labels 0.4 mm clear).
+pub fn texts_near_lines(scene: &Scene, clearance: f64) -> Vec<(usize, usize)> {
+    texts_meeting_lines(scene, &flattened(scene), clearance)
+}
+
+fn measure_flat(scene: &Scene, flat: &Flattened) -> Layout {
+    let mut out = Layout::default();
+    for (gi, ii) in texts_meeting_lines(scene, flat, -TOUCH) {
+        let g = &scene.groups[gi];
+        let Item::Text(t) = &g.items[ii] else { continue };
+        out.texts_crossed += 1;
+        out.note(format!("drawing '{}': a line crosses “{}” at ({:.1}, {:.1}) mm", g.id, t.plain(), t.at.x, t.at.y));
+    }
+    let texts: Vec<(&str, &super::scene::Text)> =
+        scene.groups.iter().flat_map(|g| g.texts().map(move |t| (g.id.as_str(), t))).collect();
     // Every run's box, tagged with its text: a text's own runs touch, never count.
     let runs: Vec<(Rect, usize)> =
         texts.iter().enumerate().flat_map(|(k, (_, t))| t.core_boxes().map(move |b| (b, k))).collect();

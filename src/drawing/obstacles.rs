@@ -307,15 +307,23 @@ impl Obstacles {
 
     /// Whether the segment `a`–`b` crosses any text box.
     pub fn segment_crosses_text(&self, a: Point, b: Point) -> bool {
-        let meets = |id: u32| matches!(self.pieces[id as usize].0, Piece::TextBox(t) if segment_meets_rect(a, b, t.inflate(-0.05, -0.05)));
+        let clear = |t: Rect| t.inflate(LEADER_CLEAR, LEADER_CLEAR);
+        let meets =
+            |id: u32| matches!(self.pieces[id as usize].0, Piece::TextBox(t) if segment_meets_rect(a, b, clear(t)));
         self.boxes.any_on_segment(a, b, meets)
     }
 }
 
+/// A leader passes a text's letters' box at least this far off, mm: one grazing the letters
+/// reads as a line through the label.
+const LEADER_CLEAR: f64 = 0.4;
+
+/// A piece's box in the index: a text's with the room a leader keeps from it, so that the
+/// cells a leader passes through list every text it comes near.
 fn bounds(p: &Piece) -> Rect {
     match *p {
         Piece::Segment(a, b) => Rect::from_points(a, b),
-        Piece::TextBox(r) => r,
+        Piece::TextBox(r) => r.inflate(LEADER_CLEAR, LEADER_CLEAR),
         Piece::Disc(c, r) => Rect::from_center_size(c, (2.0 * r, 2.0 * r)),
     }
 }

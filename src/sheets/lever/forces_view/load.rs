@@ -101,7 +101,12 @@ pub(super) fn draw_load(
         labels.add_text(at, pref, name, 2.5);
     }
     let phi = fmt::localise(&format!("{:.1}", inp.phi_deg), lang);
-    labels.add(mark, Vec2::new(1.0, -1.0), LabelText::new("φ", "1").with_tail(format!(" = {phi}°")), 2.5);
+    // On the side of its branch away from that branch's name (the first's is above it):
+    // beside the name, "φ1 = 45,0° ishchi yurish" read as one phrase.
+    let off = |b: usize| (signed(b, load.branches[b].curve.at(value.s)) - along).abs();
+    let on = (0..load.branches.len()).min_by(|&a, &b| off(a).total_cmp(&off(b))).unwrap_or(0);
+    let side = if on == 0 { 1.0 } else { -1.0 };
+    labels.add(mark, Vec2::new(1.0, side), LabelText::new("φ", "1").with_tail(format!(" = {phi}°")), 2.5);
     let lines = [
         vec![LabelText::new("φ", "1").with_tail(format!(
             ": S/H = {}, P = {} {}",
