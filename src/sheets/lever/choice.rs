@@ -2,6 +2,7 @@
 //! (its [`Floors`]) and how empty a sheet may be before fuller variants are tried.
 
 use super::compose::Composed;
+use super::forces_view::DRAWING_READABLE;
 use super::forces_view::SIDE_MIN as POLYGON_SIDE_MIN;
 
 /// The share of empty 20 mm cells above which a sheet is too empty (issue 22's bound).
@@ -20,12 +21,14 @@ pub(super) fn better(l: &Composed, rule: &Composed, margin: f64) -> bool {
 }
 
 /// What a variant must keep of the rule's composition: its smallest plan, its shortest
-/// labelled polygon side and lever where those are under what reads plainly
-/// (`POLYGON_SIDE_MIN`, [`LEVER_READABLE`]), and tables 3–5 together where they were.
+/// labelled polygon side, lever and group drawing where those are under what reads plainly
+/// (`POLYGON_SIDE_MIN`, [`LEVER_READABLE`], [`DRAWING_READABLE`]), and tables 3–5 together
+/// where they were.
 pub(super) struct Floors {
     plan: f64,
     side: f64,
     lever: f64,
+    drawing: f64,
     /// Whether tables 3–5 must stand together.
     together: bool,
 }
@@ -36,6 +39,9 @@ impl Floors {
             plan: plan_mm(c),
             side: side_mm(c).min(POLYGON_SIDE_MIN),
             lever: lever_mm(c).min(LEVER_READABLE),
+            // The worked example in Russian took a fuller variant with its group drawings
+            // halved (0.428 empty against 0.445).
+            drawing: drawing_mm(c).min(DRAWING_READABLE),
             together: together(c),
         }
     }
@@ -50,6 +56,7 @@ impl Floors {
         at_least(plan_mm(c), self.plan)
             && at_least(side_mm(c), self.side)
             && at_least(lever_mm(c), self.lever)
+            && at_least(drawing_mm(c), self.drawing)
             && (together(c) || !self.together)
     }
 }
@@ -64,6 +71,10 @@ fn side_mm(c: &Composed) -> f64 {
 
 pub(super) fn together(c: &Composed) -> bool {
     c.force_scales.as_ref().is_some_and(|f| f.tables_together)
+}
+
+fn drawing_mm(c: &Composed) -> f64 {
+    c.force_scales.as_ref().map_or(0.0, |f| f.smallest_drawing_mm)
 }
 
 fn lever_mm(c: &Composed) -> f64 {

@@ -91,6 +91,10 @@ pub struct ForceScales {
     /// between its layouts keeps them so where the rule's did).
     #[serde(skip)]
     pub tables_together: bool,
+    /// The smallest group (or crank) drawing's longer side on paper, mm: what a fuller
+    /// composition must not halve.
+    #[serde(skip)]
+    pub smallest_drawing_mm: f64,
 }
 
 /// Draws the force analysis into `main` (the region below the mechanism, titled) and, when
@@ -125,6 +129,7 @@ pub fn draw_forces(
         smallest_polygon_side_mm: None,
         smallest_enlarged_side_mm: None,
         tables_together: cells::tables_together(&cells, &at),
+        smallest_drawing_mm: smallest_drawing_mm(&cells),
     };
     let mut measured = Vec::new();
     let mut letters = inset::Letters::of(inp);
@@ -255,14 +260,19 @@ fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -
         // alone where it packs.
         // A step that enlarges only some polygons' short sides is kept only if no smaller
         // step, nor smaller enlargements, enlarge them all: one knot left on the sheet is
-        // what a teacher marks.
+        // what a teacher marks. But not at any price: a step that enlarges them all while
+        // it draws a group smaller than [`DRAWING_READABLE`] and than 0.8 of the smallest
+        // drawing before is not taken for it (task 4 variant 42's II(2,3) went from 0.015 to
+        // 0.04 m/mm, and a halved drawing is as unreadable as the knot).
         let count = inp.fa.forces.polygons.len().min(64);
+        let floor = (smallest_drawing_mm(&cells) * ENLARGE_SHRUNK_MOST).min(DRAWING_READABLE);
         let mut partial = None;
         for inset_box in [inset::INSET_BOX, inset::INSET_BOX_CRAMPED] {
             let mut base = Sizes { inset_box, ..sizes };
             for _ in 0..=ENLARGE_SHRINKS {
                 if let Some(grown) = grown(inp, bodies, base, count) {
-                    if !short_sides(inp, &grown.0) {
+                    let complete = !short_sides(inp, &grown.0);
+                    if complete && smallest_drawing_mm(&grown.0) >= floor - crate::num::tol::PAPER {
                         return grown;
                     }
                     partial.get_or_insert(grown);
@@ -287,6 +297,24 @@ fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -
 
 /// How many steps smaller the drawings may get to make room for the polygons' enlargements.
 const ENLARGE_SHRINKS: usize = 8;
+
+/// A group drawing this long reads its forces' points and arms plainly, mm (its longer
+/// side): the drawings are not shrunk below it (or below what they were) to make room for
+/// enlargements, nor does a fuller composition shrink them below it (`choice::Floors`).
+pub(super) const DRAWING_READABLE: f64 = 80.0;
+
+/// The least share of its size a drawing under [`DRAWING_READABLE`] keeps where the
+/// drawings shrink to make room for every polygon's enlargements (two of the 0.9 steps).
+const ENLARGE_SHRUNK_MOST: f64 = 0.8;
+
+/// The smallest group (or crank) drawing's longer side on paper, mm.
+fn smallest_drawing_mm(cells: &[Cell]) -> f64 {
+    let drawn = cells.iter().filter_map(|c| match &c.content {
+        Content::Polygon(_, l) => Some(l.world.width().max(l.world.height()) / l.mu_l),
+        _ => None,
+    });
+    drawn.fold(f64::MAX, f64::min)
+}
 
 /// The cells at `sizes` with the polygons' short sides enlarged beside them, if they pack:
 /// every polygon's cell grown, at the finer series, else at the coarse; else one polygon's
