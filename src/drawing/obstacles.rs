@@ -336,9 +336,7 @@ fn disc_meets_rect(c: Point, rad: f64, r: Rect) -> bool {
 
 /// Whether segments `a`–`b` and `c`–`d` share a point.
 pub fn segments_cross(a: Point, b: Point, c: Point, d: Point) -> bool {
-    let orient = |p: Point, q: Point, r: Point| (q - p).cross(r - p);
-    let (d1, d2) = (orient(c, d, a), orient(c, d, b));
-    let (d3, d4) = (orient(a, b, c), orient(a, b, d));
+    let [d1, d2, d3, d4] = crate::num::math::orientations(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2());
     if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
         return true;
     }

@@ -57,6 +57,20 @@ pub fn rotate(v: Vec2, angle: f64) -> Vec2 {
     Vec2::new(c * v.x - s * v.y, s * v.x + c * v.y)
 }
 
+/// The orientations of `a` and `b` about the line `c`–`d`, then of `c` and `d` about `a`–`b`
+/// (twice the signed triangles' areas): what decides whether the two segments cross.
+pub fn orientations(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> [f64; 4] {
+    let orient = |p: Vec2, q: Vec2, r: Vec2| (q - p).cross(r - p);
+    [orient(c, d, a), orient(c, d, b), orient(a, b, c), orient(a, b, d)]
+}
+
+/// Whether segments `a`–`b` and `c`–`d` cross strictly: each pair of ends on opposite sides
+/// of the other's line (segments that meet end to end, or lie along one line, do not).
+pub fn segments_cross_strictly(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> bool {
+    let [d1, d2, d3, d4] = orientations(a, b, c, d);
+    d1 * d2 < 0.0 && d3 * d4 < 0.0
+}
+
 /// Lengths and directions of vectors through an exactly rounded square root.
 pub trait Norm {
     /// √(x² + y²): inputs are limited to ±10⁹, so the squares cannot overflow.

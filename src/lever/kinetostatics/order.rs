@@ -5,6 +5,7 @@
 //! two sides crossing is kept; where every order crosses, the course's.
 
 use super::Applied;
+use crate::num::math::segments_cross_strictly;
 use kurbo::Vec2;
 
 /// `known` reordered so that the chain `known`, then `closing` (the balancing force and the
@@ -41,9 +42,7 @@ fn crosses(pts: &[Vec2]) -> bool {
     (0..n).any(|i| {
         (i + 2..n).filter(|&j| !(i == 0 && j == n - 1)).any(|j| {
             let ((a, b), (c, d)) = (side(i), side(j));
-            let orient = |p: Vec2, q: Vec2, r: Vec2| (q - p).cross(r - p);
-            let (d1, d2, d3, d4) = (orient(c, d, a), orient(c, d, b), orient(a, b, c), orient(a, b, d));
-            d1 * d2 < 0.0 && d3 * d4 < 0.0
+            segments_cross_strictly(a, b, c, d)
         })
     })
 }

@@ -266,7 +266,9 @@ fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -
         // 0.04 m/mm, and a halved drawing is as unreadable as the knot).
         let count = inp.fa.forces.polygons.len().min(64);
         let floor = (smallest_drawing_mm(&cells) * ENLARGE_SHRUNK_MOST).min(DRAWING_READABLE);
-        let mut partial = None;
+        // The first that packs, kept where nothing better does (the search before stopped
+        // there): some polygons enlarged, or all with a drawing below the floor.
+        let mut first = None;
         for inset_box in [inset::INSET_BOX, inset::INSET_BOX_CRAMPED] {
             let mut base = Sizes { inset_box, ..sizes };
             for _ in 0..=ENLARGE_SHRINKS {
@@ -275,7 +277,7 @@ fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -
                     if complete && smallest_drawing_mm(&grown.0) >= floor - crate::num::tol::PAPER {
                         return grown;
                     }
-                    partial.get_or_insert(grown);
+                    first.get_or_insert(grown);
                 }
                 if !short_sides(inp, &self::cells::cells(inp, base)) {
                     break;
@@ -283,8 +285,8 @@ fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -
                 base = base.shrunk();
             }
         }
-        if let Some(partial) = partial {
-            return partial;
+        if let Some(first) = first {
+            return first;
         }
         let fine = Sizes { fine: true, ..sizes };
         let tried = self::cells::cells(inp, fine);
