@@ -346,6 +346,22 @@ pub fn segments_cross(a: Point, b: Point, c: Point, d: Point) -> bool {
     on(c, d, a, d1) || on(c, d, b, d2) || on(a, b, c, d3) || on(a, b, d, d4)
 }
 
+/// The distance between the rectangle `r` and the segment `a`–`b`, mm (0 where they meet):
+/// the least of the ends' distances to the rectangle and the corners' to the segment.
+pub fn rect_segment_distance(r: Rect, (a, b): (Point, Point)) -> f64 {
+    if segment_meets_rect(a, b, r) {
+        return 0.0;
+    }
+    let to_rect = |p: Point| (p - Point::new(p.x.clamp(r.x0, r.x1), p.y.clamp(r.y0, r.y1))).norm();
+    let line = kurbo::Line::new(a, b);
+    let corners = [(r.x0, r.y0), (r.x1, r.y0), (r.x0, r.y1), (r.x1, r.y1)];
+    let to_segment = corners.map(|(x, y)| {
+        use kurbo::ParamCurveNearest;
+        line.nearest(Point::new(x, y), 0.0).distance_sq.sqrt()
+    });
+    to_segment.into_iter().fold(to_rect(a).min(to_rect(b)), f64::min)
+}
+
 /// Whether the segment `a`–`b` has a point inside or on the rectangle `r` (Liang–Barsky).
 pub fn segment_meets_rect(a: Point, b: Point, r: Rect) -> bool {
     if r.width() < 0.0 || r.height() < 0.0 {

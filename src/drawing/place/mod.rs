@@ -8,7 +8,9 @@
 //! takes the best one that no stroke crosses, no text overlaps and the bounds contain. Labels
 //! are resolved most-constrained first (fewest free candidates against the drawing), and
 //! each placed label becomes an obstacle for the rest. A label standing off its anchor
-//! gets a short thin leader line. The geometry sits in an R-tree ([`super::obstacles`]).
+//! gets a short thin leader line. A side's name ([`Labels::add_side`]) prefers a spot that
+//! is nearer its own side than any other named one: beside a vertex, the nearest free spot
+//! may be beside the neighbouring side, and read as its name. The geometry sits in an R-tree ([`super::obstacles`]).
 
 use super::obstacles::{Obstacles, Piece};
 use super::scene::{Anchor, Group, THIN};
@@ -56,12 +58,15 @@ struct Request {
     rank: u8,
     /// A label naming a line (a curve's name): always on a leader that touches the line.
     names_line: bool,
+    /// The segment the label names (a polygon's side): a spot nearer another named segment
+    /// than this one reads as that one's name, and is taken only when no other is free.
+    side: Option<(Point, Point)>,
 }
 
 impl Request {
     /// A one-line label of rank 0 at one anchor.
     fn new(anchor: Point, pref: Vec2, label: LabelText, h: f64) -> Request {
-        Request { anchor, pref, others: Vec::new(), label, more: Vec::new(), h, rank: 0, names_line: false }
+        Request { anchor, pref, others: Vec::new(), label, more: Vec::new(), h, rank: 0, names_line: false, side: None }
     }
 
     /// The label's box: width, height above the first baseline, depth below it (the further
@@ -105,6 +110,13 @@ impl Labels {
     /// up and right).
     pub fn add(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64) {
         self.add_ranked(anchor, pref, label, h, 0);
+    }
+
+    /// A label naming the segment a–b (a force polygon's side), beside its middle,
+    /// preferably in direction `pref`: nearer to a–b than to any other segment named so in
+    /// this batch, where a free spot allows (see [`unambiguous`]).
+    pub fn add_side(&mut self, (a, b): (Point, Point), pref: Vec2, label: LabelText, h: f64) {
+        self.requests.push(Request { side: Some((a, b)), ..Request::new(a.midpoint(b), pref, label, h) });
     }
 
     /// A label placed after every label of a lower rank.
@@ -235,8 +247,13 @@ impl Labels {
                 (0..).map_while(|k| s.get(k).map(|(c, v)| free(c, v).then(|| c.clone()))).flatten().next()
             };
             // A leader may cross thin lines (out of a fan of links) when no label spot can be
-            // reached without: a free box comes first, a clean leader second.
-            let best = first(s, &|c, v| v.is_free(c, drawn) && c.is_free(&placed))
+            // reached without: a free box comes first, a clean leader second. A side's name
+            // takes a spot that reads as another side's only when none that does not is
+            // free a few steps further.
+            let free = |c: &Candidate, v: &mut Verdict| v.is_free(c, drawn) && c.is_free(&placed);
+            let best = self
+                .unambiguous_spot(i, s, &free)
+                .or_else(|| first(s, &free))
                 .or_else(|| first(s, &|c, v| v.box_is_free(c, drawn) && c.box_is_free(&placed)));
             let (cand, clear) = match best {
                 Some(c) => (c, true),
@@ -254,6 +271,57 @@ impl Labels {
         out
     }
 }
+
+impl Labels {
+    /// For a side's name, its first free spot that reads as naming that side (see
+    /// [`unambiguous`]), looked for up to [`AMBIGUITY_LOOKAHEAD`] spots past its first free
+    /// one; none for other labels, or when there is none.
+    fn unambiguous_spot(
+        &self,
+        i: usize,
+        s: &mut Spots,
+        free: &dyn Fn(&Candidate, &mut Verdict) -> bool,
+    ) -> Option<Candidate> {
+        let own = self.requests[i].side?;
+        let others: Vec<(Point, Point)> =
+            self.requests.iter().enumerate().filter(|&(j, _)| j != i).filter_map(|(_, r)| r.side).collect();
+        if others.is_empty() {
+            return None;
+        }
+        let mut last = usize::MAX;
+        for k in 0.. {
+            if k > last {
+                return None;
+            }
+            let (c, v) = s.get(k)?;
+            if !free(c, v) {
+                continue;
+            }
+            if unambiguous(c, own, &others) {
+                return Some(c.clone());
+            }
+            last = last.min(k + AMBIGUITY_LOOKAHEAD);
+        }
+        None
+    }
+}
+
+/// How many spots past its first free one a side's name looks for one that is not nearer
+/// another side: two rings of directions.
+const AMBIGUITY_LOOKAHEAD: usize = 2 * DIRECTIONS;
+
+/// A side's name reads as that side's when its box is nearer to it than to any other named
+/// side by [`NEARER_BY`] (a name on a leader is read along the leader).
+fn unambiguous(c: &Candidate, own: (Point, Point), others: &[(Point, Point)]) -> bool {
+    if c.leader.is_some() {
+        return true;
+    }
+    let d_own = super::obstacles::rect_segment_distance(c.r, own);
+    others.iter().all(|&o| super::obstacles::rect_segment_distance(c.r, o) >= d_own + NEARER_BY)
+}
+
+/// How much nearer its own side than any other a side's name stands, mm.
+const NEARER_BY: f64 = 0.5;
 
 /// How many of a label's spots around its first anchor are free against the drawing alone
 /// (further anchors are a fallback, not a reason to place it later).
@@ -276,178 +344,4 @@ const REACH: f64 = 1.0 + CLEAR + LEADER_GAP;
 const REPAIR_ROUNDS: usize = 3;
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::drawing::layout;
-    use crate::drawing::scene::{Item, Text};
-    use crate::num::math::{self, Norm};
-
-    /// A label asked for inside a ring of discs (rollers round a profile) is placed outside
-    /// every disc, though no stroke bounds them.
-    /// The layout measure of a 100 × 100 mm scene of the one group `g` finds nothing.
-    fn assert_clean(g: Group) {
-        let l = layout::measure(&layout::tests::scene(g.items));
-        assert!(l.is_clean(), "{l:?}");
-    }
-
-    #[test]
-    fn labels_keep_out_of_the_discs_they_are_given() {
-        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
-        let mut g = Group::new("g", region);
-        let mut labels = Labels::new();
-        let discs: Vec<(Point, f64)> =
-            (0..6).map(|k| (Point::new(50.0, 50.0) + math::from_angle(k as f64) * 6.0, 7.0)).collect();
-        for &(c, r) in &discs {
-            labels.keep_out(c, r);
-        }
-        labels.add_text(Point::new(50.0, 50.0), Vec2::ZERO, "12", 2.5);
-        assert_eq!(labels.place(&mut g, region), vec![true]);
-        let text = g.texts().next().unwrap().bbox();
-        for (c, r) in discs {
-            let nearest = Point::new(c.x.clamp(text.x0, text.x1), c.y.clamp(text.y0, text.y1));
-            assert!((nearest - c).norm() >= r, "the label {text:?} enters the disc at {c:?}");
-        }
-    }
-
-    /// A line's name stands off on a leader that starts on the line itself (not short of
-    /// it) and ends on the name's box, the line not counted as crossed.
-    #[test]
-    fn a_lines_name_has_a_leader_from_the_line() {
-        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
-        let mut g = Group::new("g", region);
-        let on = Point::new(50.0, 50.0);
-        g.line(Point::new(10.0, 50.0), Point::new(90.0, 50.0), crate::drawing::scene::MAIN);
-        let mut labels = Labels::new();
-        labels.add_line_name(on, Vec2::new(0.0, -1.0), LabelText::new("profile", ""), 2.5, 0);
-        assert_eq!(labels.place(&mut g, region), vec![true]);
-        let text = g.texts().next().unwrap().bbox();
-        let leader = g.items.last().and_then(|i| match i {
-            Item::Path { path, .. } => Some((path.start, path.end())),
-            _ => None,
-        });
-        let (a, b) = leader.expect("a leader");
-        assert!((a - on).norm() < 1e-9, "the leader starts at {a:?}, off the line");
-        assert!(text.inflate(0.6, 0.6).contains(b) && text.y1 < on.y, "{b:?} {text:?}");
-        assert!((b - a).norm() >= LEADER_FROM - 1e-9);
-    }
-
-    /// A label with further spots is set beside a further one, without a leader, when the
-    /// first is walled in for a leader's length round (an arrow's name beside its tip rather
-    /// than off on a long leader from its middle).
-    #[test]
-    fn a_label_walled_in_at_its_first_spot_goes_to_a_further_one() {
-        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
-        let (first, further) = (Point::new(30.0, 50.0), Point::new(70.0, 50.0));
-        for with_further in [false, true] {
-            let mut g = Group::new("g", region);
-            // Circles round the first spot, 2 mm apart out to 12 mm: no box fits near it.
-            for k in 1..=6 {
-                g.circle(first, 2.0 * k as f64, THIN);
-            }
-            let mut labels = Labels::new();
-            let label = LabelText::new("P", "M4");
-            if with_further {
-                labels.add_at_any(&[(first, Vec2::new(0.0, -1.0)), (further, Vec2::new(0.0, -1.0))], label, 3.5);
-            } else {
-                labels.add(first, Vec2::new(0.0, -1.0), label, 3.5);
-            }
-            assert_eq!(labels.place(&mut g, region), vec![true]);
-            let text = g.texts().next().unwrap().bbox();
-            let near_further = (text.center() - further).norm() < 8.0;
-            assert_eq!(near_further, with_further, "{text:?}");
-            let leaders = g.items.iter().filter(|i| matches!(i, Item::Path { .. })).count();
-            assert_eq!(leaders, if with_further { 0 } else { 1 }, "a leader only from the walled-in spot");
-        }
-    }
-
-    /// Position numbers on neighbouring points stand a space apart, not 0.25 mm: "17" and
-    /// "16" side by side must not read as "17 16" run together.
-    #[test]
-    fn position_numbers_keep_a_space_between_them() {
-        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
-        // The second point at every distance from 1 to 6 mm from the first.
-        for k in 0..=50 {
-            let mut g = Group::new("g", region);
-            // Lines under and over the anchors (and 2 mm strips beyond them) keep both
-            // numbers in one row, side by side (a row [`CLEAR`] from each line).
-            for y in [41.5, 43.5, 45.5, 51.0, 53.0, 55.0] {
-                g.line(Point::new(10.0, y), Point::new(90.0, y), THIN);
-            }
-            let mut labels = Labels::new();
-            let second = 51.0 + 0.1 * k as f64;
-            labels.add_text_ranked(Point::new(50.0, 50.0), Vec2::new(0.0, -1.0), "17", 2.5, NUMBERS_RANK);
-            labels.add_text_ranked(Point::new(second, 50.0), Vec2::new(0.0, -1.0), "16", 2.5, NUMBERS_RANK);
-            assert_eq!(labels.place(&mut g, region), vec![true, true], "at {second}");
-            let boxes: Vec<Rect> = g.texts().map(Text::bbox).collect();
-            let (a, b) = (boxes[0], boxes[1]);
-            assert!(a.y1 <= 50.5 && a.y0 >= 45.5 && b.y1 <= 50.5 && b.y0 >= 45.5, "at {second}: {a:?} {b:?}");
-            let apart = (b.x0 - a.x1).max(a.x0 - b.x1);
-            assert!(apart >= LABEL_GAP, "at {second}: {apart} mm between {a:?} and {b:?}");
-        }
-    }
-
-    /// A stacked label is placed by the box of all its lines: between two lines 8 mm apart
-    /// where one line of 3.5 mm letters would fit but two do not, it goes elsewhere, and
-    /// nothing crosses any of its lines; the lines stand in order, one centre.
-    #[test]
-    fn a_stacked_label_keeps_every_line_clear() {
-        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
-        let mut g = Group::new("g", region);
-        for y in [46.0, 54.0] {
-            g.line(Point::new(0.0, y), Point::new(100.0, y), THIN);
-        }
-        let mut labels = Labels::new();
-        let lines = ["p=b=s3=".to_string(), "c=s4=s5".to_string()];
-        labels.add_text_lines(Point::new(50.0, 50.0), Vec2::new(1.0, 0.0), &lines, 3.5);
-        labels.place(&mut g, region);
-        let texts: Vec<&Text> = g.texts().collect();
-        assert_eq!(texts.iter().map(|t| t.text.as_str()).collect::<Vec<_>>(), lines);
-        let (a, b) = (texts[0].bbox(), texts[1].bbox());
-        assert!(b.y0 >= a.y1 - 1.0 && (a.center().x - b.center().x).abs() < 1e-9, "{a:?} {b:?}");
-        assert_clean(g);
-    }
-
-    /// A leader stops short of its label's letters: a line touching the letters reads as
-    /// part of them ("α = 45°" with a stroke into the 4).
-    #[test]
-    fn a_leader_stops_short_of_its_label() {
-        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
-        let mut g = Group::new("g", region);
-        let c = Point::new(50.0, 50.0);
-        // A disc kept clear round the anchor puts the label beyond the leader's distance.
-        let mut labels = Labels::new();
-        labels.keep_out(c, 8.0);
-        labels.add_text(c, Vec2::new(0.0, 1.0), "45,00°", 3.5);
-        assert_eq!(labels.place(&mut g, region), vec![true]);
-        let text = g.texts().next().unwrap().bbox();
-        let end = g
-            .items
-            .iter()
-            .find_map(|i| match i {
-                Item::Path { path, .. } => Some(path.end()),
-                _ => None,
-            })
-            .expect("a leader");
-        let gap = (Point::new(end.x.clamp(text.x0, text.x1), end.y.clamp(text.y0, text.y1)) - end).norm();
-        assert!(gap >= 0.4, "the leader ends {gap} mm from {text:?}");
-    }
-
-    #[test]
-    fn labels_keep_off_lines_crossing_at_their_anchor_and_off_each_other() {
-        let region = Rect::new(0.0, 0.0, 100.0, 100.0);
-        let mut g = Group::new("g", region);
-        let c = Point::new(50.0, 50.0);
-        // Eight lines radiating from the anchor leave only narrow sectors.
-        for k in 0..8 {
-            let d = math::from_angle(k as f64 * std::f64::consts::FRAC_PI_4 + 0.2) * 40.0;
-            g.line(c, c + d, THIN);
-        }
-        let mut labels = Labels::new();
-        for name in ["A", "B", "C", "S", "D"] {
-            labels.add(c, Vec2::new(1.0, -1.0), LabelText::new(name, "2"), 5.0);
-        }
-        let placed = labels.place(&mut g, region);
-        assert!(placed.iter().all(|&clear| clear), "{placed:?}");
-        assert_clean(g);
-    }
-}
+mod tests;

@@ -295,7 +295,7 @@ pub(super) fn draw(
             }
             vector(g, a, b, VECTOR);
             let t = &poly.terms[k];
-            labels.add(a.midpoint(b), (b - a).turn_90(), force_label(inp, t.kind, t.on), 3.5);
+            labels.add_side((a, b), (b - a).turn_90(), force_label(inp, t.kind, t.on), 3.5);
         }
     }
 }

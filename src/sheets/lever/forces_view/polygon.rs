@@ -55,7 +55,7 @@ pub(super) fn draw_polygon(
         }
         vector(g, a, b, VECTOR);
         if !inset::labelled_elsewhere(&layout.insets, k) {
-            labels.add(a.midpoint(b), outward(a, b), force_label(inp, t.kind, t.on), 3.5);
+            labels.add_side((a, b), outward(a, b), force_label(inp, t.kind, t.on), 3.5);
         }
     }
     inset::ring(g, labels, &view, pts, named);
@@ -69,7 +69,7 @@ pub(super) fn draw_polygon(
             let (a, b) = (a + shift, b + shift);
             vector(g, a, b, DASHED);
             // The inner reaction runs inside the polygon: its label beside it, either side.
-            labels.add(a.midpoint(b), (b - a).turn_90(), force_label(inp, inner.kind, inner.on), 3.5);
+            labels.add_side((a, b), (b - a).turn_90(), force_label(inp, inner.kind, inner.on), 3.5);
         }
     }
     g.dot(p(pts[0]), 0.5);

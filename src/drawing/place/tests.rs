@@ -1,0 +1,206 @@
+//! The placer's unit tests: each builds a small drawing and checks where its labels went.
+use super::*;
+use crate::drawing::layout;
+use crate::drawing::obstacles::rect_segment_distance;
+use crate::drawing::scene::{Item, Text};
+use crate::num::math::{self, Norm};
+
+/// A label asked for inside a ring of discs (rollers round a profile) is placed outside
+/// every disc, though no stroke bounds them.
+/// The layout measure of a 100 × 100 mm scene of the one group `g` finds nothing.
+fn assert_clean(g: Group) {
+    let l = layout::measure(&layout::tests::scene(g.items));
+    assert!(l.is_clean(), "{l:?}");
+}
+
+#[test]
+fn labels_keep_out_of_the_discs_they_are_given() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let mut g = Group::new("g", region);
+    let mut labels = Labels::new();
+    let discs: Vec<(Point, f64)> =
+        (0..6).map(|k| (Point::new(50.0, 50.0) + math::from_angle(k as f64) * 6.0, 7.0)).collect();
+    for &(c, r) in &discs {
+        labels.keep_out(c, r);
+    }
+    labels.add_text(Point::new(50.0, 50.0), Vec2::ZERO, "12", 2.5);
+    assert_eq!(labels.place(&mut g, region), vec![true]);
+    let text = g.texts().next().unwrap().bbox();
+    for (c, r) in discs {
+        let nearest = Point::new(c.x.clamp(text.x0, text.x1), c.y.clamp(text.y0, text.y1));
+        assert!((nearest - c).norm() >= r, "the label {text:?} enters the disc at {c:?}");
+    }
+}
+
+/// A line's name stands off on a leader that starts on the line itself (not short of
+/// it) and ends on the name's box, the line not counted as crossed.
+#[test]
+fn a_lines_name_has_a_leader_from_the_line() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let mut g = Group::new("g", region);
+    let on = Point::new(50.0, 50.0);
+    g.line(Point::new(10.0, 50.0), Point::new(90.0, 50.0), crate::drawing::scene::MAIN);
+    let mut labels = Labels::new();
+    labels.add_line_name(on, Vec2::new(0.0, -1.0), LabelText::new("profile", ""), 2.5, 0);
+    assert_eq!(labels.place(&mut g, region), vec![true]);
+    let text = g.texts().next().unwrap().bbox();
+    let leader = g.items.last().and_then(|i| match i {
+        Item::Path { path, .. } => Some((path.start, path.end())),
+        _ => None,
+    });
+    let (a, b) = leader.expect("a leader");
+    assert!((a - on).norm() < 1e-9, "the leader starts at {a:?}, off the line");
+    assert!(text.inflate(0.6, 0.6).contains(b) && text.y1 < on.y, "{b:?} {text:?}");
+    assert!((b - a).norm() >= LEADER_FROM - 1e-9);
+}
+
+/// A label with further spots is set beside a further one, without a leader, when the
+/// first is walled in for a leader's length round (an arrow's name beside its tip rather
+/// than off on a long leader from its middle).
+#[test]
+fn a_label_walled_in_at_its_first_spot_goes_to_a_further_one() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let (first, further) = (Point::new(30.0, 50.0), Point::new(70.0, 50.0));
+    for with_further in [false, true] {
+        let mut g = Group::new("g", region);
+        // Circles round the first spot, 2 mm apart out to 12 mm: no box fits near it.
+        for k in 1..=6 {
+            g.circle(first, 2.0 * k as f64, THIN);
+        }
+        let mut labels = Labels::new();
+        let label = LabelText::new("P", "M4");
+        if with_further {
+            labels.add_at_any(&[(first, Vec2::new(0.0, -1.0)), (further, Vec2::new(0.0, -1.0))], label, 3.5);
+        } else {
+            labels.add(first, Vec2::new(0.0, -1.0), label, 3.5);
+        }
+        assert_eq!(labels.place(&mut g, region), vec![true]);
+        let text = g.texts().next().unwrap().bbox();
+        let near_further = (text.center() - further).norm() < 8.0;
+        assert_eq!(near_further, with_further, "{text:?}");
+        let leaders = g.items.iter().filter(|i| matches!(i, Item::Path { .. })).count();
+        assert_eq!(leaders, if with_further { 0 } else { 1 }, "a leader only from the walled-in spot");
+    }
+}
+
+/// Position numbers on neighbouring points stand a space apart, not 0.25 mm: "17" and
+/// "16" side by side must not read as "17 16" run together.
+#[test]
+fn position_numbers_keep_a_space_between_them() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    // The second point at every distance from 1 to 6 mm from the first.
+    for k in 0..=50 {
+        let mut g = Group::new("g", region);
+        // Lines under and over the anchors (and 2 mm strips beyond them) keep both
+        // numbers in one row, side by side (a row [`CLEAR`] from each line).
+        for y in [41.5, 43.5, 45.5, 51.0, 53.0, 55.0] {
+            g.line(Point::new(10.0, y), Point::new(90.0, y), THIN);
+        }
+        let mut labels = Labels::new();
+        let second = 51.0 + 0.1 * k as f64;
+        labels.add_text_ranked(Point::new(50.0, 50.0), Vec2::new(0.0, -1.0), "17", 2.5, NUMBERS_RANK);
+        labels.add_text_ranked(Point::new(second, 50.0), Vec2::new(0.0, -1.0), "16", 2.5, NUMBERS_RANK);
+        assert_eq!(labels.place(&mut g, region), vec![true, true], "at {second}");
+        let boxes: Vec<Rect> = g.texts().map(Text::bbox).collect();
+        let (a, b) = (boxes[0], boxes[1]);
+        assert!(a.y1 <= 50.5 && a.y0 >= 45.5 && b.y1 <= 50.5 && b.y0 >= 45.5, "at {second}: {a:?} {b:?}");
+        let apart = (b.x0 - a.x1).max(a.x0 - b.x1);
+        assert!(apart >= LABEL_GAP, "at {second}: {apart} mm between {a:?} and {b:?}");
+    }
+}
+
+/// A stacked label is placed by the box of all its lines: between two lines 8 mm apart
+/// where one line of 3.5 mm letters would fit but two do not, it goes elsewhere, and
+/// nothing crosses any of its lines; the lines stand in order, one centre.
+#[test]
+fn a_stacked_label_keeps_every_line_clear() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let mut g = Group::new("g", region);
+    for y in [46.0, 54.0] {
+        g.line(Point::new(0.0, y), Point::new(100.0, y), THIN);
+    }
+    let mut labels = Labels::new();
+    let lines = ["p=b=s3=".to_string(), "c=s4=s5".to_string()];
+    labels.add_text_lines(Point::new(50.0, 50.0), Vec2::new(1.0, 0.0), &lines, 3.5);
+    labels.place(&mut g, region);
+    let texts: Vec<&Text> = g.texts().collect();
+    assert_eq!(texts.iter().map(|t| t.text.as_str()).collect::<Vec<_>>(), lines);
+    let (a, b) = (texts[0].bbox(), texts[1].bbox());
+    assert!(b.y0 >= a.y1 - 1.0 && (a.center().x - b.center().x).abs() < 1e-9, "{a:?} {b:?}");
+    assert_clean(g);
+}
+
+/// A leader stops short of its label's letters: a line touching the letters reads as
+/// part of them ("α = 45°" with a stroke into the 4).
+#[test]
+fn a_leader_stops_short_of_its_label() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let mut g = Group::new("g", region);
+    let c = Point::new(50.0, 50.0);
+    // A disc kept clear round the anchor puts the label beyond the leader's distance.
+    let mut labels = Labels::new();
+    labels.keep_out(c, 8.0);
+    labels.add_text(c, Vec2::new(0.0, 1.0), "45,00°", 3.5);
+    assert_eq!(labels.place(&mut g, region), vec![true]);
+    let text = g.texts().next().unwrap().bbox();
+    let end = g
+        .items
+        .iter()
+        .find_map(|i| match i {
+            Item::Path { path, .. } => Some(path.end()),
+            _ => None,
+        })
+        .expect("a leader");
+    let gap = (Point::new(end.x.clamp(text.x0, text.x1), end.y.clamp(text.y0, text.y1)) - end).norm();
+    assert!(gap >= 0.4, "the leader ends {gap} mm from {text:?}");
+}
+
+/// A short side's name is not set beside its long neighbour, where it would read as that
+/// side's name (the worked example's enlargement K had "Rᵗ24" beside G4, its own side
+/// the short slanted one at the top): each name stands nearer its own side.
+#[test]
+fn a_sides_name_stands_nearer_its_own_side_than_its_neighbours() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let mut g = Group::new("g", region);
+    let (top, low, bottom) = (Point::new(50.0, 30.0), Point::new(47.5, 40.0), Point::new(50.0, 60.0));
+    let sides = [(low, top), (top, bottom)];
+    let mut labels = Labels::new();
+    for ((a, b), (main, sub)) in sides.into_iter().zip([("R", "t24"), ("G", "4")]) {
+        g.line(a, b, crate::drawing::scene::VECTOR);
+        labels.add_side((a, b), (b - a).turn_90(), LabelText::new(main, sub), 3.5);
+    }
+    // The stubs where the run joins the polygon.
+    g.line(Point::new(42.0, 41.0), low, THIN);
+    g.line(bottom, Point::new(45.0, 62.0), THIN);
+    assert_eq!(labels.place(&mut g, region), vec![true, true]);
+    let boxes: Vec<Rect> = g.texts().map(Text::bbox).collect();
+    for (k, own) in sides.iter().enumerate() {
+        let other = sides[1 - k];
+        let (d_own, d_other) = (rect_segment_distance(boxes[k], *own), rect_segment_distance(boxes[k], other));
+        assert!(
+            d_own + NEARER_BY <= d_other,
+            "label {k} at {:?}: {d_own} mm from its side, {d_other} from the other",
+            boxes[k]
+        );
+    }
+    assert_clean(g);
+}
+
+#[test]
+fn labels_keep_off_lines_crossing_at_their_anchor_and_off_each_other() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let mut g = Group::new("g", region);
+    let c = Point::new(50.0, 50.0);
+    // Eight lines radiating from the anchor leave only narrow sectors.
+    for k in 0..8 {
+        let d = math::from_angle(k as f64 * std::f64::consts::FRAC_PI_4 + 0.2) * 40.0;
+        g.line(c, c + d, THIN);
+    }
+    let mut labels = Labels::new();
+    for name in ["A", "B", "C", "S", "D"] {
+        labels.add(c, Vec2::new(1.0, -1.0), LabelText::new(name, "2"), 5.0);
+    }
+    let placed = labels.place(&mut g, region);
+    assert!(placed.iter().all(|&clear| clear), "{placed:?}");
+    assert_clean(g);
+}
