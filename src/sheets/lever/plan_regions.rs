@@ -87,9 +87,10 @@ pub const LARGEST_PLAN: f64 = 80.0;
 /// kulisa's one tall acceleration plan made a row as tall as itself, its three small
 /// neighbours lost in it; beside the velocity plans it is a column of its own, and the
 /// velocity plans take the height): at the share with the fewest plans off their kind's
-/// one scale (none where every plan can be measured at it), then whose smallest plan is
-/// largest (twice [`MIN_PLAN`] is enough), then whose smaller kind's largest plan is largest (up to
-/// [`LARGEST_PLAN`]), then whose two largest plans sum most. Returns each kind's region and
+/// one scale (none where every plan can be measured at it); of those whose smallest plan is
+/// within [`SMALLEST_GIVE`] of the largest smallest (twice [`MIN_PLAN`] is enough), the one
+/// whose smaller kind's largest plan is largest (up to [`LARGEST_PLAN`]), then whose smallest
+/// plan is largest, then whose two largest plans sum most. Returns each kind's region and
 /// sizing.
 pub(super) fn split_plans(column: Rect, kinds: [(&PlansRegion, &Twins); 2], words: &LeverWords) -> [(Rect, Sizing); 2] {
     // The same at every share.
@@ -114,28 +115,40 @@ pub(super) fn split_plans(column: Rect, kinds: [(&PlansRegion, &Twins); 2], word
         let [(least_v, largest_v), (least_a, largest_a)] =
             [0, 1].map(|k| (s[k].1.least_measured(&kinds[k].1.plans), s[k].1.largest(&kinds[k].1.plans)));
         let own = s[0].1.own_count() + s[1].1.own_count();
-        (
-            own,
-            least_v.min(least_a).min(2.0 * MIN_PLAN),
-            largest_v.min(largest_a).min(LARGEST_PLAN),
-            largest_v + largest_a,
-        )
+        (own, least_v.min(least_a), largest_v.min(largest_a).min(LARGEST_PLAN), largest_v + largest_a)
     };
-    velocity_shares()
+    let tried: Vec<_> = velocity_shares()
         .chain(velocity_shares().map(|s| 1.0 + s))
         .map(|share| {
             let s = split(share);
             (score(&s), s)
         })
+        .collect();
+    // The fewest plans off their kind's scale, then a smallest plan within SMALLEST_GIVE of
+    // the best the column allows (or twice MIN_PLAN), then the largest of each kind, the
+    // smallest (to twice MIN_PLAN), the sum.
+    let own = tried.iter().map(|t| t.0.0).min().expect("shares to try");
+    let least = tried.iter().filter(|t| t.0.0 == own).map(|t| t.0.1).fold(0.0, f64::max);
+    let enough = (least - SMALLEST_GIVE).min(2.0 * MIN_PLAN);
+    tried
+        .into_iter()
+        .filter(|t| t.0.0 == own && t.0.1 >= enough)
         .max_by(|a, b| {
-            (b.0.0.cmp(&a.0.0))
-                .then(a.0.1.total_cmp(&b.0.1))
-                .then(a.0.2.total_cmp(&b.0.2))
-                .then(a.0.3.total_cmp(&b.0.3))
+            let smallest = |t: &Tried| t.0.1.min(2.0 * MIN_PLAN);
+            a.0.2.total_cmp(&b.0.2).then(smallest(a).total_cmp(&smallest(b))).then(a.0.3.total_cmp(&b.0.3))
         })
         .map(|(_, s)| s)
-        .expect("shares to try")
+        .expect("the best share is kept")
 }
+
+/// A split tried: (plans off their kind's scale, smallest plan, the smaller kind's largest
+/// plan up to [`LARGEST_PLAN`], the two largest plans' sum), and the split.
+type Tried = ((usize, f64, f64, f64), [(Rect, Sizing); 2]);
+
+/// How much of its smallest plan a split may give for a larger largest plan of a kind, mm:
+/// a step of the round scales at the smallest plans' 50 mm is 10–17 mm, so a 5 mm give
+/// lets the largest plans grow a step where the smallest stay within a tenth.
+const SMALLEST_GIVE: f64 = 5.0;
 
 /// Two plans of a kind coincide on paper when no image or vector end of one is farther from
 /// the other's than this share of the kind's largest plan: 0.45 mm where that plan is drawn
