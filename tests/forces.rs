@@ -239,3 +239,74 @@ fn every_crank_polygon_is_drawn_without_crossing_itself() {
     }
     assert!(checked >= 6, "{checked} fixtures");
 }
+
+/// A group polygon's faults, from the forces head to tail: sides that turn back over the
+/// side before them (within 12°, the last side before the first), and pairs of sides that
+/// cross (strictly, sharing no vertex).
+fn faults(forces: &[kurbo::Vec2]) -> usize {
+    let sides: Vec<kurbo::Vec2> = forces.iter().copied().filter(|v| v.hypot() > 0.0).collect();
+    let folds = (0..sides.len())
+        .filter(|&k| {
+            let (a, b) = (sides[k], sides[(k + 1) % sides.len()]);
+            let turn = (-a.dot(b) / (a.hypot() * b.hypot())).clamp(-1.0, 1.0).acos().to_degrees();
+            sides.len() > 1 && turn < 12.0
+        })
+        .count();
+    let mut pts = vec![kurbo::Vec2::ZERO];
+    for f in forces {
+        pts.push(*pts.last().unwrap() + *f);
+    }
+    let n = forces.len();
+    let cross = |p: kurbo::Vec2, q: kurbo::Vec2, r: kurbo::Vec2| (q - p).cross(r - p);
+    let crossings = (0..n)
+        .flat_map(|i| (i + 2..n).filter(move |&j| !(i == 0 && j == n - 1)).map(move |j| (i, j)))
+        .filter(|&(i, j)| {
+            let (a, b, c, d) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
+            cross(c, d, a) * cross(c, d, b) < 0.0 && cross(a, b, c) * cross(a, b, d) < 0.0
+        })
+        .count();
+    folds + crossings
+}
+
+/// A group's polygon lists each link's own loads (G and P_i) in the order that draws no side
+/// back over the one before and no two sides crossing, where one does: the worked example's
+/// II(2,3) drew P_i3 and then Rᵗ03 across it (their arrows one over the other in the
+/// enlargement T). On every fixture each group's polygon closes, starts and ends with its
+/// reactions, and has no more faults than the course's order (each link's G before its P_i,
+/// rebuilt here); the worked example's II(2,3) fewer.
+#[test]
+fn group_polygons_list_g_and_p_i_so_that_no_side_runs_back_over_the_last() {
+    let mut checked = 0;
+    for name in fixture_names() {
+        if lever(&name).forces.is_none() {
+            continue;
+        }
+        let (_, f) = analysed(&name);
+        for poly in f.polygons.iter().filter(|p| p.group.is_some()) {
+            let scale = poly.terms.iter().map(|t| t.force.hypot()).fold(0.0, f64::max);
+            let sum = poly.terms.iter().fold(kurbo::Vec2::ZERO, |s, t| s + t.force);
+            assert!(sum.hypot() < 1e-9 * scale, "{name}: a polygon does not close");
+            for t in [&poly.terms[0], poly.terms.last().unwrap()] {
+                assert!(matches!(t.kind, Kind::Reaction { .. }), "{name}: {:?} at an end", t.kind);
+            }
+            // The course's order: each link's own loads in their places, G first.
+            let own = |k: &Kind| matches!(k, Kind::Weight | Kind::Inertia);
+            let mut course = poly.terms.clone();
+            let places: Vec<usize> = (0..course.len()).filter(|&k| own(&course[k].kind)).collect();
+            let mut loads: Vec<_> = places.iter().map(|&k| poly.terms[k]).collect();
+            loads.sort_by_key(|t| (t.on, matches!(t.kind, Kind::Inertia)));
+            for (&k, t) in places.iter().zip(loads) {
+                course[k] = t;
+            }
+            let forces = |terms: &[kinetostatics::Applied]| terms.iter().map(|t| t.force).collect::<Vec<_>>();
+            let (drawn, listed) = (faults(&forces(&poly.terms)), faults(&forces(&course)));
+            assert!(drawn <= listed, "{name} group {:?}: {drawn} faults, the course's order {listed}", poly.group);
+            if name == "worked-example" && poly.terms.iter().any(|t| t.on == 2) {
+                assert!(drawn < listed, "the worked example's II(2,3): {drawn} faults, the course's order {listed}");
+                checked += 1;
+            }
+        }
+    }
+    // Link 3 (its forces' `on` is 2) is in II(2,3) only.
+    assert_eq!(checked, 1, "the worked example's II(2,3) checked");
+}

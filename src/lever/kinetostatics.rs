@@ -334,6 +334,7 @@ fn solve_group(
     let [l0, l1] = g.links;
     let known0: Vec<Applied> = applied.iter().filter(|a| a.on == l0).copied().collect();
     let known1: Vec<Applied> = applied.iter().filter(|a| a.on == l1).copied().collect();
+    let known = (known0.len(), known1.len());
     let singular = |what| ForceError::Singular { group: describe(m, gi), what };
     let p = |id: PointId| s.points[id].p;
     let (terms0, terms1, inner) = match m.steps[g.step] {
@@ -409,6 +410,7 @@ fn solve_group(
     let split = terms0.len();
     let mut terms = terms0;
     terms.extend(terms1);
+    let terms = order::unfolded(terms, [(split - known.0, known.0), (split, known.1)]);
     Ok(Polygon { group: Some(gi), terms, split, inner: Some(inner) })
 }
 

@@ -2,10 +2,11 @@
 //! list the known forces in any order (their sum is the same), but the order draws the
 //! polygon: G₁ + R₂₁ + P_m + R₀₁ = 0 of the offset crank-slider crossed R₂₁ with R₀₁, both
 //! labelled at the crossing. The first order, from the course's, whose closed chain has no
-//! two sides crossing is kept; where every order crosses, the course's.
+//! two sides crossing is kept; where every order crosses, the course's. A group's polygon
+//! reorders each link's known forces likewise ([`unfolded`]).
 
-use super::Applied;
-use crate::num::math::segments_cross_strictly;
+use super::{Applied, Kind};
+use crate::num::math::{self, Norm, segments_cross_strictly};
 use kurbo::Vec2;
 
 /// `known` reordered so that the chain `known`, then `closing` (the balancing force and the
@@ -21,6 +22,74 @@ pub(super) fn uncrossed(known: Vec<Applied>, closing: &[Applied]) -> Vec<Applied
             return known;
         }
     }
+}
+
+/// A group's polygon `terms` with each link's own loads (G and P_i; `blocks`: where each
+/// link's known forces start in `terms`, and how many) reordered among their places, so that
+/// no side runs back over the side before it and no two sides cross, where some order does
+/// that: the course's order where it has no such fault, else the first order with the
+/// fewest. The worked example's II(2,3) drew P_i3 and then R^t03 back along it, their two
+/// arrows one over the other; its equation may list G₃ and P_i3 either way. A reordering
+/// within a link keeps the vertex where the links' forces meet, so the inner reaction and
+/// the reactions at the ends are drawn as before.
+pub(super) fn unfolded(terms: Vec<Applied>, blocks: [(usize, usize); 2]) -> Vec<Applied> {
+    // Each link's own loads' places in `terms`, in the course's order, and the orders of
+    // those places to try (the course's first).
+    let places = blocks.map(|(start, len)| -> Vec<usize> {
+        (start..start + len).filter(|&k| matches!(terms[k].kind, Kind::Weight | Kind::Inertia)).collect()
+    });
+    let orders = |places: &[usize]| -> Vec<Vec<usize>> {
+        let mut p = places.to_vec();
+        let mut all = vec![p.clone()];
+        while places.len() <= PERMUTED_MOST && next_permutation(&mut p) {
+            all.push(p.clone());
+        }
+        all
+    };
+    let (first, second) = (orders(&places[0]), orders(&places[1]));
+    let arranged = |a: &[usize], b: &[usize]| -> Vec<Applied> {
+        let mut out = terms.clone();
+        for (&slot, &from) in places[0].iter().zip(a).chain(places[1].iter().zip(b)) {
+            out[slot] = terms[from];
+        }
+        out
+    };
+    let mut best: Option<(usize, Vec<Applied>)> = None;
+    for a in &first {
+        for b in &second {
+            let candidate = arranged(a, b);
+            let count = faults(&chain(candidate.iter().map(|t| t.force)));
+            if best.as_ref().is_none_or(|(least, _)| count < *least) {
+                best = Some((count, candidate));
+            }
+            if count == 0 {
+                return best.map(|(_, t)| t).expect("just set");
+            }
+        }
+    }
+    best.map_or(terms, |(_, t)| t)
+}
+
+/// A link's own loads are reordered when there are at most this many (120 orders).
+const PERMUTED_MOST: usize = 5;
+
+/// A side runs back over the one before it when it turns back within this angle of it:
+/// the two arrows' lines less than a line's width apart along the shorter one.
+const FOLD_DEG: f64 = 12.0;
+
+/// The closed chain `pts`'s faults: sides running back over the (non-vanishing) side before
+/// them, and pairs of sides that cross.
+fn faults(pts: &[Vec2]) -> usize {
+    let n = pts.len() - 1;
+    let sides: Vec<Vec2> = (0..n).map(|k| pts[k + 1] - pts[k]).filter(|v| v.hypot2() > 0.0).collect();
+    let cos_fold = math::cos(FOLD_DEG.to_radians());
+    let folds = (0..sides.len())
+        .filter(|&k| {
+            let (a, b) = (sides[k], sides[(k + 1) % sides.len()]);
+            sides.len() > 1 && -a.dot(b) > cos_fold * a.norm() * b.norm()
+        })
+        .count();
+    folds + usize::from(crosses(pts))
 }
 
 /// The vertices of the chain of `forces` laid head to tail from the origin.
