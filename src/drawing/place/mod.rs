@@ -114,7 +114,7 @@ impl Labels {
 
     /// A label naming the segment a–b (a force polygon's side), beside its middle,
     /// preferably in direction `pref`: nearer to a–b than to any other segment named so in
-    /// this batch, where a free spot allows (see [`unambiguous`]).
+    /// this batch by 0.5 mm, where a free spot allows (a name on a leader is read along it).
     pub fn add_side(&mut self, (a, b): (Point, Point), pref: Vec2, label: LabelText, h: f64) {
         self.requests.push(Request { side: Some((a, b)), ..Request::new(a.midpoint(b), pref, label, h) });
     }
