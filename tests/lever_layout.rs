@@ -407,3 +407,39 @@ fn the_largest_plan_of_a_kind_grows_where_the_smallest_plan_need_not_shrink() {
     let smallest = results["layout"]["smallest_plan_mm"].as_f64().unwrap();
     assert!(v.min(a) >= 70.0 && smallest >= 45.0, "largest {v:.1} and {a:.1} mm, smallest {smallest:.1} mm");
 }
+
+/// A slider's stroke is written along its dimension line, as GOST 2.307 writes a dimension,
+/// where there is room: task 6 variant 12's vertical stroke reads upward just left of its
+/// line (it stood 30 mm off on a leader across the slider's positions), the worked example's
+/// horizontal one under its line, centred on it. Each value's box is checked against the
+/// dimension line found in the scene: the longest thin vertical (or horizontal) line there.
+#[test]
+fn a_strokes_value_is_written_along_its_dimension_line() {
+    use tmm_sheets::drawing::scene::Item;
+    let cases = [(common::catalogue_sheet1("6", 12, tmm_sheets::drawing::labels::Language::Uz), true), {
+        let p = fixture("worked-example");
+        (pipeline::build(&p, &[1]).unwrap().remove(0).output, false)
+    }];
+    for (out, vertical) in cases {
+        let mechanism = out.scene.groups.iter().find(|g| g.id.ends_with("mechanism")).expect("the mechanism's group");
+        let value = mechanism.texts().find(|t| t.text == "H" && t.tail.contains("mm")).expect("the stroke's value");
+        assert_eq!(value.rotate, if vertical { 90.0 } else { 0.0 }, "{value:?}");
+        let bb = value.bbox();
+        // The dimension line: a thin straight line along the value, at most 2 mm from its box.
+        let along = mechanism.items.iter().any(|i| match i {
+            Item::Path { path, .. } if path.segs.len() == 1 => {
+                let (a, b) = (path.start, path.end());
+                let parallel = if vertical { (a.x - b.x).abs() < 1e-9 } else { (a.y - b.y).abs() < 1e-9 };
+                let (lo, hi) = if vertical { (a.y.min(b.y), a.y.max(b.y)) } else { (a.x.min(b.x), a.x.max(b.x)) };
+                let (c, from) = if vertical {
+                    (bb.center().y, (a.x - bb.x1).max(bb.x0 - a.x))
+                } else {
+                    (bb.center().x, (a.y - bb.y1).max(bb.y0 - a.y))
+                };
+                parallel && lo < c && c < hi && (0.4..2.0).contains(&from) && (hi - lo) > bb.width().max(bb.height())
+            }
+            _ => false,
+        });
+        assert!(along, "no dimension line along {bb:?}");
+    }
+}

@@ -2,7 +2,8 @@
 
 use super::obstacles::{Obstacles, Piece, segments};
 use super::path::{Path, on_circle};
-use super::scene::{Group, Pen, THIN};
+use super::scene::{Anchor, Group, Pen, THIN, Text};
+use super::text::LabelText;
 use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
@@ -179,6 +180,56 @@ pub fn dimension(g: &mut Group, a: Point, b: Point, offset: Vec2) -> Point {
     }
     da.midpoint(db)
 }
+
+/// A dimension's value written along its horizontal or vertical dimension line `a`–`b` (GOST
+/// 2.307: over a horizontal line, left of a vertical one reading upward; else on the other
+/// side), where nothing drawn in `g` is within 0.5 mm of it and it stays inside
+/// `bounds`; returns whether it was written (else the caller places it as a label: an oblique
+/// line, a value longer than its line, or no room on either side).
+pub fn value_along(g: &mut Group, value: &LabelText, (a, b): (Point, Point), h: f64, bounds: Rect) -> bool {
+    let d = b - a;
+    let len = d.norm();
+    let axis_aligned = d.x.abs() < tol::PAPER || d.y.abs() < tol::PAPER;
+    if !axis_aligned || value.width(h) + 2.0 * ARROW_LEN > len {
+        return false;
+    }
+    // Reading left to right, or upward: its "up" to the left of the reading direction.
+    let t = if d.x.abs() >= tol::PAPER { d * d.x.signum() / len } else { Vec2::new(0.0, -1.0) };
+    let up = Vec2::new(t.y, -t.x);
+    let rotate = math::atan2(-t.y, t.x).to_degrees();
+    let drawn = Obstacles::of_items(&g.items);
+    let mid = a.midpoint(b);
+    // The value's box across the line when its baseline is on it: the lowest and highest
+    // points "up" from the line.
+    let on_line = Text { rotate, ..value.text(mid, h, Anchor::Middle) }.bbox();
+    let corners = [
+        on_line.origin(),
+        Point::new(on_line.x1, on_line.y0),
+        Point::new(on_line.x0, on_line.y1),
+        Point::new(on_line.x1, on_line.y1),
+    ];
+    let across = corners.map(|c| (c - mid).dot(up));
+    let (lo, hi) = (across.iter().copied().fold(f64::MAX, f64::min), across.iter().copied().fold(f64::MIN, f64::max));
+    // Over the line, then under it, its box VALUE_GAP from the line.
+    for shift in [VALUE_GAP - lo, -VALUE_GAP - hi] {
+        let text = Text { rotate, ..value.text(mid + up * shift, h, Anchor::Middle) };
+        let bb = text.bbox();
+        if bounds.contains(bb.origin())
+            && bounds.contains(Point::new(bb.x1, bb.y1))
+            && drawn.is_clear(bb.inflate(VALUE_CLEAR, VALUE_CLEAR))
+        {
+            g.text(text);
+            return true;
+        }
+    }
+    false
+}
+
+/// From a dimension line to its value's box, mm (GOST 2.307: about 1 mm to the letters;
+/// more than [`VALUE_CLEAR`], so that the line itself leaves the box clear).
+const VALUE_GAP: f64 = 0.7;
+/// Room kept between a dimension's value and anything else drawn, mm (the label placer's).
+const VALUE_CLEAR: f64 = 0.5;
 
 /// An angle's mark at `apex` from the unit direction `from` to the unit direction `to` (the
 /// smaller turn): an arc of radius `r`. Returns the point just outside the arc's middle, where

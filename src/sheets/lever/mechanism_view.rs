@@ -8,7 +8,7 @@ use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, Item, MAIN, Pen, THIN};
-use crate::drawing::symbols::{clear_turn_arrow, dimension, frame_pivot, hatch, slider, turn_arrow_reach};
+use crate::drawing::symbols::{clear_turn_arrow, dimension, frame_pivot, hatch, slider, turn_arrow_reach, value_along};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::analysis::{Kinematics, Position};
@@ -236,7 +236,10 @@ impl MechanismView<'_> {
             let (lang, c) = (self.words.lang, self.words.common);
             let value = format!(" = {} {}", fmt::value(1e3 * length, lang), c.unit_mm());
             let sub = if named { self.m.name(slider) } else { "" };
-            labels.add(mid, off, LabelText::new("H", sub).with_tail(value), 3.5);
+            let label = LabelText::new("H", sub).with_tail(value);
+            if !value_along(g, &label, (ea + off, eb + off), 3.5, inside) {
+                labels.add(mid, off, label, 3.5);
+            }
         }
     }
 
