@@ -346,3 +346,42 @@ fn group_drawings_keep_their_scale_in_every_language() {
     }
     assert!(checked >= 20, "only {checked} drawings");
 }
+
+/// Two enlargements' titles side by side keep a clear gap between them (at least 4 mm, where
+/// a word space is 1 mm): the v-compressor's "L (μP = 6 N/mm)" and "T (μP = 1,25 N/mm)"
+/// stood 3 mm apart and read as one line. Every fixture in every language: each title's
+/// scale text (the μ after "X (") and the next title's letter on the same baseline.
+#[test]
+fn enlargement_titles_side_by_side_stand_apart() {
+    use tmm_sheets::drawing::labels::Language;
+    let mut rows = 0;
+    for name in common::fixture_names() {
+        for lang in Language::ALL {
+            let mut p = fixture(&name);
+            p.info.language = lang;
+            let Ok(built) = pipeline::build(&p, &[1]) else { continue };
+            let scene = &built[0].output.scene;
+            let Some(forces) = scene.groups.iter().find(|g| g.id == "forces") else { continue };
+            let texts: Vec<_> = forces.texts().collect();
+            // A title: its letter with the tail " (", then its scale starting with "μ".
+            let letters: Vec<_> = texts.iter().filter(|t| t.tail == " (").collect();
+            for first in &letters {
+                let Some(scale) = texts.iter().find(|t| {
+                    t.text.starts_with('μ')
+                        && (t.at.y - first.at.y).abs() < 1e-9
+                        && t.at.x > first.at.x
+                        && t.at.x - first.at.x < 10.0
+                }) else {
+                    continue;
+                };
+                let end = scale.bbox().x1;
+                for next in letters.iter().filter(|t| (t.at.y - first.at.y).abs() < 1e-9 && t.at.x > end) {
+                    rows += 1;
+                    let gap = next.bbox().x0 - end;
+                    assert!(gap >= 4.0, "{name} {lang:?}: {gap:.2} mm between '{}' and '{}'", first.text, next.text);
+                }
+            }
+        }
+    }
+    assert!(rows >= 1, "no titles side by side among the fixtures");
+}

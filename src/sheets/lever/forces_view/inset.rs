@@ -42,6 +42,9 @@ const PAD: f64 = 9.0;
 const TITLE: f64 = 6.0;
 /// From an enlargement's title's baseline down to its drawing's top, mm.
 const TITLE_GAP: f64 = 4.0;
+/// An enlargement's title keeps this far inside its slot's sides where it can, mm: two
+/// titles side by side 3 mm apart ran together ("L (μP = 6 N/mm)  T (μP = 1,25 N/mm)").
+const TITLE_SIDE: f64 = 2.5;
 /// The neighbouring long sides' stubs in the enlargement, mm.
 const STUB: f64 = 8.0;
 /// The ring round a run on the polygon: this much beyond its vertices, mm.
@@ -276,7 +279,10 @@ pub(super) fn draw(
         let title_w = title.width(3.5) + mu.width(3.5);
         let left = area.center().x - inset.world.width() / inset.mu / 2.0 - PAD;
         let top = stubs.iter().flat_map(|&(a, b)| [a.y, b.y]).fold(p(Vec2::new(0.0, inset.world.y1)).y, f64::min);
-        let at = Point::new(left.min(slot.x1 - 1.0 - title_w).max(slot.x0 + 2.0), (top - TITLE_GAP).max(slot.y0 + 4.0));
+        let at = Point::new(
+            left.min(slot.x1 - TITLE_SIDE - title_w).max(slot.x0 + TITLE_SIDE),
+            (top - TITLE_GAP).max(slot.y0 + 4.0),
+        );
         title.draw(g, at, 3.5, Anchor::Start);
         // Set where the title's advance ends: its box's slant would leave a gap after "(".
         mu.draw(g, Point::new(at.x + title.width(3.5), at.y), 3.5, Anchor::Start);
