@@ -223,17 +223,8 @@ fn every_crank_polygon_is_drawn_without_crossing_itself() {
         }
         let scale = crank.terms.iter().map(|t| t.force.hypot()).fold(0.0, f64::max);
         assert!(pts.last().unwrap().hypot() < 1e-9 * scale, "{name}: the polygon does not close");
-        let n = crank.terms.len();
-        let cross = |p: kurbo::Vec2, q: kurbo::Vec2, r: kurbo::Vec2| (q - p).cross(r - p);
-        for i in 0..n {
-            for j in i + 2..n {
-                if i == 0 && j == n - 1 {
-                    continue;
-                }
-                let (a, b, c, d) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
-                let crossing = cross(c, d, a) * cross(c, d, b) < 0.0 && cross(a, b, c) * cross(a, b, d) < 0.0;
-                assert!(!crossing, "{name}: sides {i} and {j} of the crank's polygon cross");
-            }
+        if let Some((i, j)) = crossing_sides(&pts).first() {
+            panic!("{name}: sides {i} and {j} of the crank's polygon cross");
         }
         checked += 1;
     }
@@ -256,16 +247,21 @@ fn faults(forces: &[kurbo::Vec2]) -> usize {
     for f in forces {
         pts.push(*pts.last().unwrap() + *f);
     }
-    let n = forces.len();
+    folds + crossing_sides(&pts).len()
+}
+
+/// The pairs of sides of the closed chain `pts` (the forces head to tail) that cross
+/// strictly, sides sharing a vertex left out.
+fn crossing_sides(pts: &[kurbo::Vec2]) -> Vec<(usize, usize)> {
+    let n = pts.len() - 1;
     let cross = |p: kurbo::Vec2, q: kurbo::Vec2, r: kurbo::Vec2| (q - p).cross(r - p);
-    let crossings = (0..n)
+    (0..n)
         .flat_map(|i| (i + 2..n).filter(move |&j| !(i == 0 && j == n - 1)).map(move |j| (i, j)))
         .filter(|&(i, j)| {
             let (a, b, c, d) = (pts[i], pts[i + 1], pts[j], pts[j + 1]);
             cross(c, d, a) * cross(c, d, b) < 0.0 && cross(a, b, c) * cross(a, b, d) < 0.0
         })
-        .count();
-    folds + crossings
+        .collect()
 }
 
 /// A group's polygon lists each link's own loads (G and P_i) in the order that draws no side

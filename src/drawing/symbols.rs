@@ -183,10 +183,19 @@ pub fn dimension(g: &mut Group, a: Point, b: Point, offset: Vec2) -> Point {
 
 /// A dimension's value written along its horizontal or vertical dimension line `a`–`b` (GOST
 /// 2.307: over a horizontal line, left of a vertical one reading upward; else on the other
-/// side), where nothing drawn in `g` is within 0.5 mm of it and it stays inside
+/// side), where nothing drawn in `g` is within 0.5 mm of it (`drawn` indexes its items
+/// before `since`, the caller's index reused; those after are indexed here) and it stays
+/// inside
 /// `bounds`; returns whether it was written (else the caller places it as a label: an oblique
 /// line, a value longer than its line, or no room on either side).
-pub fn value_along(g: &mut Group, value: &LabelText, (a, b): (Point, Point), h: f64, bounds: Rect) -> bool {
+pub fn value_along(
+    g: &mut Group,
+    (drawn, since): (&Obstacles, usize),
+    value: &LabelText,
+    (a, b): (Point, Point),
+    h: f64,
+    bounds: Rect,
+) -> bool {
     let d = b - a;
     let len = d.norm();
     let axis_aligned = d.x.abs() < tol::PAPER || d.y.abs() < tol::PAPER;
@@ -197,7 +206,8 @@ pub fn value_along(g: &mut Group, value: &LabelText, (a, b): (Point, Point), h: 
     let t = if d.x.abs() >= tol::PAPER { d * d.x.signum() / len } else { Vec2::new(0.0, -1.0) };
     let up = Vec2::new(t.y, -t.x);
     let rotate = math::atan2(-t.y, t.x).to_degrees();
-    let drawn = Obstacles::of_items(&g.items);
+    // What `drawn` does not hold: the items drawn since it was indexed (the dimension).
+    let added = Obstacles::of_items(&g.items[since..]);
     let mid = a.midpoint(b);
     // The value's box across the line when its baseline is on it: the lowest and highest
     // points "up" from the line.
@@ -216,7 +226,7 @@ pub fn value_along(g: &mut Group, value: &LabelText, (a, b): (Point, Point), h: 
         let bb = text.bbox();
         if bounds.contains(bb.origin())
             && bounds.contains(Point::new(bb.x1, bb.y1))
-            && drawn.is_clear(bb.inflate(VALUE_CLEAR, VALUE_CLEAR))
+            && [drawn, &added].iter().all(|o| o.is_clear(bb.inflate(VALUE_CLEAR, VALUE_CLEAR)))
         {
             g.text(text);
             return true;

@@ -283,11 +283,8 @@ impl Labels {
         free: &dyn Fn(&Candidate, &mut Verdict) -> bool,
     ) -> Option<Candidate> {
         let own = self.requests[i].side?;
-        let others: Vec<(Point, Point)> =
-            self.requests.iter().enumerate().filter(|&(j, _)| j != i).filter_map(|(_, r)| r.side).collect();
-        if others.is_empty() {
-            return None;
-        }
+        let others = || self.requests.iter().enumerate().filter(move |&(j, _)| j != i).filter_map(|(_, r)| r.side);
+        others().next()?;
         let mut last = usize::MAX;
         for k in 0.. {
             if k > last {
@@ -297,7 +294,7 @@ impl Labels {
             if !free(c, v) {
                 continue;
             }
-            if unambiguous(c, own, &others) {
+            if unambiguous(c, own, others()) {
                 return Some(c.clone());
             }
             last = last.min(k + AMBIGUITY_LOOKAHEAD);
@@ -312,12 +309,12 @@ const AMBIGUITY_LOOKAHEAD: usize = 2 * DIRECTIONS;
 
 /// A side's name reads as that side's when its box is nearer to it than to any other named
 /// side by [`NEARER_BY`] (a name on a leader is read along the leader).
-fn unambiguous(c: &Candidate, own: (Point, Point), others: &[(Point, Point)]) -> bool {
+fn unambiguous(c: &Candidate, own: (Point, Point), mut others: impl Iterator<Item = (Point, Point)>) -> bool {
     if c.leader.is_some() {
         return true;
     }
     let d_own = super::obstacles::rect_segment_distance(c.r, own);
-    others.iter().all(|&o| super::obstacles::rect_segment_distance(c.r, o) >= d_own + NEARER_BY)
+    others.all(|o| super::obstacles::rect_segment_distance(c.r, o) >= d_own + NEARER_BY)
 }
 
 /// How much nearer its own side than any other a side's name stands, mm.

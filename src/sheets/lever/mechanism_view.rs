@@ -232,12 +232,13 @@ impl MechanismView<'_> {
                 [hatch_side * hatch_off, hatch_side * (hatch_off + 4.0), -hatch_side * 6.0, -hatch_side * 10.0];
             let fits = |off: &Vec2| lines(*off).iter().all(|&(a, b)| inside.contains(a) && inside.contains(b));
             let Some(off) = candidates.into_iter().filter(fits).min_by_key(|&off| cost(off)) else { continue };
+            let since = g.items.len();
             let mid = dimension(g, ea, eb, off);
             let (lang, c) = (self.words.lang, self.words.common);
             let value = format!(" = {} {}", fmt::value(1e3 * length, lang), c.unit_mm());
             let sub = if named { self.m.name(slider) } else { "" };
             let label = LabelText::new("H", sub).with_tail(value);
-            if !value_along(g, &label, (ea + off, eb + off), 3.5, inside) {
+            if !value_along(g, (&all, since), &label, (ea + off, eb + off), 3.5, inside) {
                 labels.add(mid, off, label, 3.5);
             }
         }
