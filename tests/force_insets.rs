@@ -215,25 +215,66 @@ fn a_reaction_drawn_again_enlarged_is_measured_there() {
 /// least [`SIDE_MIN`] or too short to draw at all (0.05 mm).
 #[test]
 fn every_polygon_enlarges_its_short_sides_where_the_sheet_can_make_room() {
-    use std::collections::BTreeMap;
     for (task, variant) in [("1", 17), ("1", 21)] {
         let out = common::catalogue_sheet1(task, variant, tmm_sheets::drawing::labels::Language::Uz);
-        let mut parts: BTreeMap<&str, Vec<&tmm_sheets::report::Segment>> = BTreeMap::new();
-        for s in out.segments.iter().filter(|s| s.id.starts_with("forces.group") || s.id.starts_with("forces.crank")) {
-            parts.entry(s.id.rsplit_once('.').unwrap().0).or_default().push(s);
+        assert_no_short_side_on_a_polygon(&format!("task {task} v{variant}"), &out);
+    }
+}
+
+/// Each polygon's sides at its own μ_P (the coarsest scale its segments are recorded at; an
+/// enlargement's are finer) are at least [`SIDE_MIN`] or too short to draw at all (0.05 mm).
+fn assert_no_short_side_on_a_polygon(name: &str, out: &tmm_sheets::sheets::SheetOutput) {
+    use std::collections::BTreeMap;
+    let mut parts: BTreeMap<&str, Vec<&tmm_sheets::report::Segment>> = BTreeMap::new();
+    for s in out.segments.iter().filter(|s| s.id.starts_with("forces.group") || s.id.starts_with("forces.crank")) {
+        parts.entry(s.id.rsplit_once('.').unwrap().0).or_default().push(s);
+    }
+    assert!(parts.len() >= 3, "{name}: polygons {:?}", parts.keys());
+    for (part, sides) in &parts {
+        let mu_p = sides.iter().map(|s| s.scale).fold(0.0, f64::max);
+        for s in sides.iter().filter(|s| s.scale == mu_p) {
+            let drawn = s.length_mm >= 0.05;
+            assert!(!drawn || s.length_mm >= SIDE_MIN, "{name} {part}: {} {:.3} mm", s.name, s.length_mm);
         }
-        assert!(parts.len() >= 3, "task {task} v{variant}: polygons {:?}", parts.keys());
-        for (part, sides) in &parts {
-            let mu_p = sides.iter().map(|s| s.scale).fold(0.0, f64::max);
-            for s in sides.iter().filter(|s| s.scale == mu_p) {
-                let drawn = s.length_mm >= 0.05;
-                assert!(
-                    !drawn || s.length_mm >= SIDE_MIN,
-                    "task {task} v{variant} {part}: {} {:.3} mm",
-                    s.name,
-                    s.length_mm
-                );
-            }
+    }
+}
+
+/// Where a polygon's cell has no room for its enlargements and a cell grown for them packs
+/// nowhere, each stands in a cell of its own where the force cells leave room, named by its
+/// letter (GOST 2.305's extension element), rather than the short sides knotted on the
+/// polygon. Task 12 variants 1 and 10 (the press's II(2,3): G₂, G₃, R^t03 0.06–0.14 mm at
+/// 400 N/mm) and task 15 variant 8 (II(2,3) and II(4,5): G, P_i 0.05–0.3 mm) labelled them
+/// on their polygons. Every polygon's labelled sides are now at least [`SIDE_MIN`]; each
+/// enlargement apart is an SVG part `forces.group.2-3.L` of its own, outside its polygon's
+/// cell, with its letter's title in it and its letter ringed on the polygon.
+#[test]
+fn enlargements_with_no_room_beside_their_polygon_stand_in_cells_of_their_own() {
+    use tmm_sheets::drawing::scene::Item;
+    let bbox = |items: &[Item]| items.iter().map(Item::bbox).reduce(|a, b| a.union(b)).unwrap();
+    for (task, variant) in [("12", 1), ("12", 10), ("15", 8)] {
+        let name = format!("task {task} v{variant}");
+        let out = common::catalogue_sheet1(task, variant, tmm_sheets::drawing::labels::Language::Ru);
+        assert_no_short_side_on_a_polygon(&name, &out);
+        let parts: Vec<(&str, &[Item])> = out
+            .scene
+            .groups
+            .iter()
+            .flat_map(|g| g.parts.iter().map(move |p| (p.id.as_str(), &g.items[p.items.clone()])))
+            .collect();
+        let apart: Vec<_> = parts.iter().filter(|(id, _)| id.matches('.').count() == 3).collect();
+        assert!(!apart.is_empty(), "{name}: no enlargement in a cell of its own among {:?}", parts);
+        for (id, items) in apart {
+            let (polygon, letter) = id.rsplit_once('.').unwrap();
+            let (_, own) = parts.iter().find(|(p, _)| *p == polygon).unwrap();
+            let ring = own.iter().any(|i| matches!(i, Item::Text(t) if t.text == letter));
+            assert!(ring, "{name}: {letter} is not on its polygon {polygon}");
+            let (cell, enlargement) = (bbox(own), bbox(items));
+            assert!(
+                cell.intersect(enlargement).area() <= 0.0,
+                "{name}: {id} {enlargement:?} in its polygon's {cell:?}"
+            );
+            let title = items.iter().any(|i| matches!(i, Item::Text(t) if t.text == letter));
+            assert!(title, "{name}: {id} has no title {letter}");
         }
     }
 }

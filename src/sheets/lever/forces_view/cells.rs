@@ -3,6 +3,7 @@
 //! attempt.
 
 use super::group::{GroupLayout, group_layout, group_scales};
+use super::inset::{Enlarge, Place};
 use super::load::cell_size as load_cell;
 use super::zhukovsky::{DESCENT, LEVER_LINES, lever_arrow_scale, lever_extent, lever_legend};
 use super::{ForcesInput, LINE};
@@ -26,6 +27,9 @@ pub(super) enum Content {
     /// Index into the loads, and how many times the least its plot is.
     Load(usize, f64),
     Table(usize),
+    /// A polygon's enlargement in a cell of its own ([`super::inset::Place::Apart`]): the
+    /// polygon's index, the enlargement's among its own, and the polygon's layout.
+    Enlargement(usize, usize, Rc<GroupLayout>),
 }
 
 pub(super) struct Cell {
@@ -52,6 +56,9 @@ pub(super) struct Sizes {
     /// Which polygons' cells (bit i: polygon i) may grow to enlarge their short sides
     /// beside them (tried only once the drawings fit without).
     pub(super) grow: u64,
+    /// Which polygons (bit i: polygon i) set their enlargements in cells of their own where
+    /// their cell leaves no room (before `grow`).
+    pub(super) apart: u64,
     /// How many times the least the load diagrams' plots are.
     pub(super) load: f64,
     /// How many times `poly_box` each of the first [`GROWN_POLYGONS`] polygons' boxes is
@@ -112,9 +119,9 @@ pub struct CellMemo {
     fixed: OnceCell<Vec<(f64, f64)>>,
 }
 
-/// A polygon's index, its μ_l's and μ_P's bits, whether its cell may grow, its enlargements'
-/// box's bits and whether its polygon stands under its drawing.
-type PolygonKey = (usize, u64, u64, bool, u64, bool);
+/// A polygon's index, its μ_l's and μ_P's bits, where its enlargements may go, their box's
+/// bits and whether its polygon stands under its drawing.
+type PolygonKey = (usize, u64, u64, Enlarge, u64, bool);
 /// A group cell's layout, width and height.
 type LaidOut = (Rc<GroupLayout>, f64, f64);
 
@@ -125,15 +132,20 @@ const LEVER_LABEL_ROOM: f64 = 6.0;
 pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let memo = inp.memo;
     let mut out = Vec::new();
+    let mut enlargements = Vec::new();
     for (i, poly) in inp.fa.forces.polygons.iter().enumerate() {
-        let grow = s.grow >> i & 1 == 1;
+        let enlarge = match (s.apart >> i & 1 == 1, s.grow >> i & 1 == 1) {
+            (true, _) => Enlarge::Apart,
+            (false, true) => Enlarge::Grow,
+            (false, false) => Enlarge::InRoom,
+        };
         let (mu_l, mu_p) = group_scales(poly, inp, s, s.poly_grown.get(i).copied().unwrap_or(1.0));
         let laid_out = |stacked: bool| {
             memo.polygons
                 .borrow_mut()
-                .entry((i, mu_l.to_bits(), mu_p.to_bits(), grow, s.inset_box.to_bits(), stacked))
+                .entry((i, mu_l.to_bits(), mu_p.to_bits(), enlarge, s.inset_box.to_bits(), stacked))
                 .or_insert_with(|| {
-                    let (layout, w, h) = group_layout(inp, poly, (mu_l, mu_p), (grow, s.inset_box), stacked);
+                    let (layout, w, h) = group_layout(inp, poly, (mu_l, mu_p), (enlarge, s.inset_box), stacked);
                     (Rc::new(layout), w, h)
                 })
                 .clone()
@@ -143,7 +155,19 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
             Some(under) if under.1 * under.2 < beside.1 * beside.2 => under,
             _ => beside,
         };
+        // Its enlargements' own cells after the drawings and before the tables: small, they
+        // fill what the larger cells leave.
+        let apart: Vec<Cell> = match layout.place {
+            Place::Apart => (0..layout.insets.len())
+                .map(|j| {
+                    let slot = layout.insets[j].slot;
+                    Cell { w: slot.width(), h: slot.height(), content: Content::Enlargement(i, j, Rc::clone(&layout)) }
+                })
+                .collect(),
+            _ => Vec::new(),
+        };
         out.push(Cell { w, h, content: Content::Polygon(i, layout) });
+        enlargements.extend(apart);
     }
     let (lever, bb, mu_f) = memo.lever.get_or_init(|| {
         let lever = velocity_plan(inp.m, inp.state).turned(inp.m.sense());
@@ -166,6 +190,7 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
         let (w, h) = load_cell(load, s.load);
         out.push(Cell { w, h, content: Content::Load(i, s.load) });
     }
+    out.extend(enlargements);
     let fixed =
         memo.fixed.get_or_init(|| inp.tables.iter().map(|t| t.size()).map(|(w, h)| (w + 2.0, h + 2.0)).collect());
     out.extend(fixed.iter().enumerate().map(|(i, &(w, h))| Cell { w, h, content: Content::Table(i) }));

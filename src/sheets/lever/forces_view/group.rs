@@ -4,7 +4,7 @@
 
 use super::arrows::{Arrows, arrow_scale, twins_reach};
 use super::cells::Sizes;
-use super::inset::{self, Inset, Place};
+use super::inset::{self, Enlarge, Inset, Place};
 use super::legend::{
     cell_title, equation_lines, force_label, scale_item, text_rows, value_item, with_semicolon, with_short_note,
     wrap_items,
@@ -114,7 +114,7 @@ pub(super) fn group_layout(
     inp: &ForcesInput,
     poly: &Polygon,
     (mu_l, mu_p): (f64, f64),
-    (grow, inset_box): (bool, f64),
+    (enlarge, inset_box): (Enlarge, f64),
     stacked: bool,
 ) -> (GroupLayout, f64, f64) {
     let world = world_box(inp, poly);
@@ -131,7 +131,7 @@ pub(super) fn group_layout(
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let poly_size = (poly_w, poly_h);
     let arrangement = Arrangement { drawing: (drawing_w, drawing_h), stacked };
-    let (insets, place, w, body_h) = with_insets(poly, (&chain, mu_p), arrangement, poly_size, (grow, inset_box));
+    let (insets, place, w, body_h) = with_insets(poly, (&chain, mu_p), arrangement, poly_size, (enlarge, inset_box));
     let equation = equation_lines(inp, poly, w - 4.0);
     let legend = group_legend(inp, poly, mu_f, w - 4.0);
     let text_lines = equation.len() + legend.len() + SCALE_LINES;
@@ -182,14 +182,14 @@ impl Arrangement {
 }
 
 /// The enlargements of a polygon's short sides and where they go, with the cell's width and
-/// body height: in the room the cell leaves the polygon if they fit there; else, when the
-/// cell may `grow`, in the least room grown for them; else none.
+/// body height: in the room the cell leaves the polygon if they fit there; else, as
+/// `enlarge` allows, in the least room grown for them or in cells of their own; else none.
 fn with_insets(
     poly: &Polygon,
     (chain, mu_p): (&[Vec2], f64),
     arrangement: Arrangement,
     poly_size: (f64, f64),
-    (grow, inset_box): (bool, f64),
+    (enlarge, inset_box): (Enlarge, f64),
 ) -> (Vec<Inset>, Place, f64, f64) {
     let room = arrangement.room(poly_size);
     let (w, body_h) = arrangement.cell(room);
@@ -203,16 +203,21 @@ fn with_insets(
         .iter()
         .filter_map(|&p| runs.placed(p, room, poly_size).map(|is| (is, p)))
         .reduce(|a, b| if least(&b.0) > least(&a.0) { b } else { a });
-    let grown = grow.then(|| {
-        let grown = places.iter().filter_map(|&p| {
-            let room = runs.grown(p, room, poly_size);
-            runs.placed(p, room, poly_size).map(|is| (is, p, room))
-        });
-        grown.min_by(|a, b| (a.2.0 * a.2.1).total_cmp(&(b.2.0 * b.2.1)))
-    });
+    let grown = match enlarge {
+        Enlarge::InRoom => None,
+        Enlarge::Grow => {
+            let grown = places.iter().filter_map(|&p| {
+                let room = runs.grown(p, room, poly_size);
+                runs.placed(p, room, poly_size).map(|is| (is, p, room))
+            });
+            grown.min_by(|a, b| (a.2.0 * a.2.1).total_cmp(&(b.2.0 * b.2.1)))
+        }
+        // The cell keeps its size: the enlargements' cells are the caller's.
+        Enlarge::Apart => runs.apart().map(|is| (is, Place::Apart, room)),
+    };
     // The room the cell leaves serves unless a grown cell enlarges the runs more: a slot
     // squeezed under the polygon may enlarge a run only a few times, its sides still short.
-    match (free, grown.flatten()) {
+    match (free, grown) {
         (Some((is, p)), Some(g)) if least(&g.0) <= least(&is) => (is, p, w, body_h),
         (_, Some((is, p, room))) => {
             let (w, h) = arrangement.cell(room);
@@ -258,13 +263,15 @@ pub(super) fn draw_group_cell(
     draw_group_geometry(g, labels, inp, poly, geo, layout);
     let (w, h) = layout.poly_size;
     let pr = match layout.place {
-        Place::None => room,
+        Place::None | Place::Apart => room,
         Place::Below => Rect::new(room.x0, room.y0, room.x1, room.y0 + h),
         Place::Beside => Rect::new(room.x0, room.y0, room.x0 + w, room.y1),
     };
     let named = inset::Named { insets: &layout.insets, letters };
     draw_polygon(g, labels, inp, (poly, layout), named, pr);
-    inset::draw(g, labels, inp, poly, &layout.chain, named, room);
+    if layout.place != Place::Apart {
+        inset::draw(g, labels, inp, poly, &layout.chain, named, room);
+    }
     let scales = vec![
         vec![
             with_semicolon(scale_item(inp, "l", layout.mu_l, inp.words.common.unit_m_per_mm())),

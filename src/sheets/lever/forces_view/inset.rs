@@ -4,9 +4,10 @@
 //! sides shorter than [`SIDE_MIN`] is ringed on the polygon and drawn again beside it at its
 //! own round μ_P (a detail view, GOST 2.305's "extension element"), labelled there only —
 //! in the room the cell already leaves the polygon (under it beside a tall group drawing,
-//! or beside it), else in a cell grown for them where the cells still pack (the caller
-//! decides which cells may grow). A run with no room at least [`ENLARGED_MIN`] times larger
-//! keeps its labels on the polygon.
+//! or beside it), else in a cell grown for them where the cells still pack, else each in a
+//! cell of its own packed wherever the force cells leave room (the caller decides which
+//! polygons may do which, [`Enlarge`]). A run with no room at least [`ENLARGED_MIN`] times
+//! larger keeps its labels on the polygon.
 
 use super::ForcesInput;
 use super::legend::{force_label, scale_item};
@@ -72,6 +73,21 @@ pub(super) enum Place {
     Below,
     /// The polygon at the left, the enlargements stacked right of it.
     Beside,
+    /// Each enlargement in a cell of its own, packed wherever the force cells leave room
+    /// (GOST 2.305 sets an extension element anywhere on the sheet, named by its letter):
+    /// where the polygon's cell has no room and cannot grow without overflowing.
+    Apart,
+}
+
+/// Where a polygon's enlargements may go besides the room its cell leaves.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub(super) enum Enlarge {
+    /// Only in the room the cell leaves.
+    InRoom,
+    /// In a cell grown for them.
+    Grow,
+    /// In cells of their own ([`Place::Apart`]).
+    Apart,
 }
 
 /// Whether term `k`'s side is drawn on the polygon and shorter than [`SIDE_MIN`].
@@ -111,13 +127,19 @@ impl Runs {
     /// The room `(w, h)` that holds the polygon (`poly` its size with its label room) and
     /// the enlargements placed `place`, from the room `(w, h)` the cell leaves it.
     pub(super) fn grown(&self, place: Place, (w, h): (f64, f64), poly: (f64, f64)) -> (f64, f64) {
-        let (slot_w, slot_h) = (self.inset_box + 2.0 * PAD, self.inset_box + 2.0 * PAD + TITLE);
+        let (slot_w, slot_h) = self.slot();
         let n = self.runs.len() as f64;
         match place {
-            Place::None => (w, h),
+            Place::None | Place::Apart => (w, h),
             Place::Below => (w.max(n * slot_w), h.max(poly.1 + slot_h)),
             Place::Beside => (w.max(poly.0 + slot_w), h.max(n * slot_h)),
         }
+    }
+
+    /// An enlargement's slot at its full size, mm: its drawing's box with room for its
+    /// labels and title.
+    fn slot(&self) -> (f64, f64) {
+        (self.inset_box + 2.0 * PAD, self.inset_box + 2.0 * PAD + TITLE)
     }
 
     /// Each run enlarged in a slot of `room` left by the polygon (`poly` its size) placed
@@ -132,7 +154,21 @@ impl Runs {
                 _ => Rect::new(poly.0, h * i / count, w, h * (i + 1.0) / count),
             }
         };
-        (place != Place::None && !self.runs.is_empty()).then_some(())?;
+        (place != Place::None && place != Place::Apart).then_some(())?;
+        self.in_slots(slot)
+    }
+
+    /// Each run enlarged in a cell of its own ([`Place::Apart`]), its slot from the cell's
+    /// top left.
+    pub(super) fn apart(&self) -> Option<Vec<Inset>> {
+        let (w, h) = self.slot();
+        self.in_slots(|_| Rect::new(0.0, 0.0, w, h))
+    }
+
+    /// Each run enlarged in its slot `slot(i)`: `None` unless every run gets one that
+    /// enlarges it [`ENLARGED_MIN`] times.
+    fn in_slots(&self, slot: impl Fn(usize) -> Rect) -> Option<Vec<Inset>> {
+        (!self.runs.is_empty()).then_some(())?;
         self.runs
             .iter()
             .enumerate()

@@ -8,6 +8,7 @@
 mod arrows;
 mod cells;
 mod group;
+mod growth;
 mod inset;
 mod legend;
 mod load;
@@ -26,6 +27,8 @@ use crate::lever::linkage::{Mechanism, State};
 use crate::report::{AnswerKeys, Segment};
 pub use cells::CellMemo;
 use cells::{Bodies, Cell, Content, GROWN_POLYGONS, Sizes, cells, pack};
+pub(super) use growth::DRAWING_READABLE;
+use growth::{finer, larger_drawings, larger_lever, larger_loads, smallest_drawing_mm};
 pub use inset::SIDE_MIN;
 use kurbo::{Point, Rect};
 
@@ -133,6 +136,9 @@ pub fn draw_forces(
     };
     let mut measured = Vec::new();
     let mut letters = inset::Letters::of(inp);
+    // Each polygon's enlargements' letters, given where the polygon is drawn (before its
+    // enlargements' own cells, which follow it).
+    let mut lettered: Vec<(usize, Vec<String>)> = Vec::new();
     for (cell, &(body, origin)) in cells.iter().zip(&at) {
         let g: &mut Group = match (body, side.as_deref_mut()) {
             (b, Some(sg)) if (b == 1) != inp.side_first => sg,
@@ -142,12 +148,17 @@ pub fn draw_forces(
         // Each cell places its own labels inside itself, so cells never collide.
         let mut labels = Labels::new();
         let start = g.mark();
-        let part = part_id(inp, &cell.content);
+        let letter_of = |i: usize, j: usize| {
+            let of = lettered.iter().find(|(k, _)| *k == i);
+            of.and_then(|(_, l)| l.get(j).cloned()).unwrap_or_default()
+        };
+        let part = part_id(inp, &cell.content, letter_of);
         match cell.content {
             Content::Polygon(i, ref layout) => {
                 let poly = &inp.fa.forces.polygons[i];
                 let letters = letters.take(layout.insets.len());
                 group::draw_group_cell(g, &mut labels, r, inp, (poly, layout), &letters);
+                lettered.push((i, letters));
                 scales.mu_l.push(layout.mu_l);
                 scales.mu_p.push(layout.mu_p);
                 scales.mu_p_enlarged.extend(layout.insets.iter().map(|i| i.mu));
@@ -173,6 +184,11 @@ pub fn draw_forces(
             Content::Table(i) => {
                 inp.tables[i].draw(g, origin);
             }
+            Content::Enlargement(i, j, ref layout) => {
+                let letter = [letter_of(i, j)];
+                let named = inset::Named { insets: &layout.insets[j..=j], letters: &letter };
+                inset::draw(g, &mut labels, inp, &inp.fa.forces.polygons[i], &layout.chain, named, r);
+            }
         }
         labels.place(g, r.inflate(-0.5, -0.5));
         g.part_from(part, start);
@@ -181,14 +197,18 @@ pub fn draw_forces(
 }
 
 /// A force cell's id: `forces.group.2-3` (an Assur group by its links' numbers),
-/// `forces.crank`, `forces.lever`, `forces.load.5` (by the loaded link), `forces.table.1`.
-fn part_id(inp: &ForcesInput, content: &Content) -> String {
+/// `forces.crank`, `forces.lever`, `forces.load.5` (by the loaded link), `forces.table.1`,
+/// and a polygon's enlargement in a cell of its own by its letter, `forces.group.2-3.K`
+/// (`letter_of(polygon, enlargement)`).
+fn part_id(inp: &ForcesInput, content: &Content, letter_of: impl Fn(usize, usize) -> String) -> String {
     let number = |l: usize| inp.m.links[l].number.to_string();
+    let polygon = |i: usize| match inp.fa.forces.polygons[i].group {
+        Some(k) => format!("forces.group.{}", inp.m.groups[k].links.map(number).join("-")),
+        None => "forces.crank".into(),
+    };
     match content {
-        Content::Polygon(i, _) => match inp.fa.forces.polygons[*i].group {
-            Some(k) => format!("forces.group.{}", inp.m.groups[k].links.map(number).join("-")),
-            None => "forces.crank".into(),
-        },
+        Content::Polygon(i, _) => polygon(*i),
+        Content::Enlargement(i, j, _) => format!("{}.{}", polygon(*i), letter_of(*i, *j)),
         Content::Lever(..) => "forces.lever".into(),
         Content::Load(i, _) => format!("forces.load.{}", number(inp.fa.model.loads[*i].link)),
         Content::Table(i) => format!("forces.table.{}", i + 1),
@@ -223,6 +243,7 @@ const COMFORTABLE_START: Sizes = Sizes {
     fine: false,
     lever_fine: false,
     grow: 0,
+    apart: 0,
     load: 1.0,
     poly_grown: [1.0; GROWN_POLYGONS],
     compact: false,
@@ -236,6 +257,7 @@ const DRAWN: Sizes = Sizes {
     fine: false,
     lever_fine: false,
     grow: 0,
+    apart: 0,
     load: 1.0,
     poly_grown: [1.0; GROWN_POLYGONS],
     compact: false,
@@ -244,211 +266,6 @@ const DRAWN: Sizes = Sizes {
 
 /// Cells, where they are, whether they all fit, and the sizes they were made at.
 type Arranged = (Vec<Cell>, Vec<(usize, Point)>, bool, Sizes);
-
-/// A fitting arrangement's boxes with the polygons' short sides enlarged beside them and
-/// the polygons and the lever at the finer series' scales, where those still fit: nothing
-/// else smaller. Only for drawing (the comfort test needs no more than whether the coarse
-/// cells fit).
-fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -> Arranged {
-    if ok {
-        // The polygons' enlargements beside them (a knot of labels unread is worse than a
-        // polygon a scale step smaller): every polygon's cell grown, at the finer series,
-        // else at the coarse; else one polygon's cell grown after another while the cells
-        // still pack; else, where some polygon has sides to enlarge, the same with the
-        // drawings a step smaller (up to [`ENLARGE_SHRINKS`] steps: the skyline packs the
-        // drawings large and leaves the enlargements no room); else the finer series
-        // alone where it packs.
-        // A step that enlarges only some polygons' short sides is kept only if no smaller
-        // step, nor smaller enlargements, enlarge them all: one knot left on the sheet is
-        // what a teacher marks. But not at any price: a step that enlarges them all while
-        // it draws a group smaller than [`DRAWING_READABLE`] and than 0.8 of the smallest
-        // drawing before is not taken for it (task 4 variant 42's II(2,3) went from 0.015 to
-        // 0.04 m/mm, and a halved drawing is as unreadable as the knot).
-        let count = inp.fa.forces.polygons.len().min(64);
-        let floor = (smallest_drawing_mm(&cells) * ENLARGE_SHRUNK_MOST).min(DRAWING_READABLE);
-        // The first that packs, kept where nothing better does (the search before stopped
-        // there): some polygons enlarged, or all with a drawing below the floor.
-        let mut first = None;
-        for inset_box in [inset::INSET_BOX, inset::INSET_BOX_CRAMPED] {
-            let mut base = Sizes { inset_box, ..sizes };
-            for _ in 0..=ENLARGE_SHRINKS {
-                if let Some(grown) = grown(inp, bodies, base, count) {
-                    let complete = !short_sides(inp, &grown.0);
-                    if complete && smallest_drawing_mm(&grown.0) >= floor - crate::num::tol::PAPER {
-                        return grown;
-                    }
-                    first.get_or_insert(grown);
-                }
-                if !short_sides(inp, &self::cells::cells(inp, base)) {
-                    break;
-                }
-                base = base.shrunk();
-            }
-        }
-        if let Some(first) = first {
-            return first;
-        }
-        let fine = Sizes { fine: true, ..sizes };
-        let tried = self::cells::cells(inp, fine);
-        if let (tried_at, true) = pack(&tried, bodies) {
-            return (tried, tried_at, true, fine);
-        }
-    }
-    (cells, at, ok, sizes)
-}
-
-/// How many steps smaller the drawings may get to make room for the polygons' enlargements.
-const ENLARGE_SHRINKS: usize = 8;
-
-/// A group drawing this long reads its forces' points and arms plainly, mm (its longer
-/// side): the drawings are not shrunk below it (or below what they were) to make room for
-/// enlargements, nor does a fuller composition shrink them below it (`choice::Floors`).
-pub(super) const DRAWING_READABLE: f64 = 80.0;
-
-/// The least share of its size a drawing under [`DRAWING_READABLE`] keeps where the
-/// drawings shrink to make room for every polygon's enlargements (two of the 0.9 steps).
-const ENLARGE_SHRUNK_MOST: f64 = 0.8;
-
-/// The smallest group (or crank) drawing's longer side on paper, mm.
-fn smallest_drawing_mm(cells: &[Cell]) -> f64 {
-    let drawn = cells.iter().filter_map(|c| match &c.content {
-        Content::Polygon(_, l) => Some(l.world.width().max(l.world.height()) / l.mu_l),
-        _ => None,
-    });
-    drawn.fold(f64::MAX, f64::min)
-}
-
-/// The cells at `sizes` with the polygons' short sides enlarged beside them, if they pack:
-/// every polygon's cell grown, at the finer series, else at the coarse; else one polygon's
-/// cell grown after another while the cells still pack.
-fn grown(inp: &ForcesInput, bodies: &Bodies, sizes: Sizes, count: usize) -> Option<Arranged> {
-    let fine = Sizes { fine: true, ..sizes };
-    for s in [fine, sizes] {
-        let all = Sizes { grow: (1u64 << count) - 1, ..s };
-        let cells = self::cells::cells(inp, all);
-        if let (cells_at, true) = pack(&cells, bodies)
-            && enlarged(&cells)
-        {
-            return Some((cells, cells_at, true, all));
-        }
-    }
-    for mut s in [fine, sizes] {
-        let mut grown = None;
-        for i in 0..count {
-            let tried = Sizes { grow: s.grow | 1 << i, ..s };
-            let cells = self::cells::cells(inp, tried);
-            if let (cells_at, true) = pack(&cells, bodies) {
-                grown = Some((cells, cells_at));
-                s = tried;
-            }
-        }
-        if let Some((cells, cells_at)) = grown.filter(|(c, _)| enlarged(c)) {
-            return Some((cells, cells_at, true, s));
-        }
-    }
-    None
-}
-
-/// The largest box the lever is tried at, mm: beyond it its arrows stay at most
-/// [`ARROW_MAX`] while its arms grow, and the forces read no better.
-const LEVER_LARGEST: f64 = 200.0;
-
-/// A fitting arrangement with the Zhukovsky lever as large as the cells still pack: its box
-/// from [`LEVER_LARGEST`] down to the one it got, at the finer series' scales (the lever's
-/// sides are the arms its forces are read by; the knot of a dozen arrows round p, b and s4
-/// at the coarse scale is what a teacher marks down).
-fn larger_lever(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -> Arranged {
-    if ok {
-        let mut lever_box = LEVER_LARGEST;
-        while lever_box > sizes.lever_box {
-            let tried = Sizes { lever_box, lever_fine: true, ..sizes };
-            let tried_cells = self::cells::cells(inp, tried);
-            if let (tried_at, true) = pack(&tried_cells, bodies) {
-                return (tried_cells, tried_at, true, tried);
-            }
-            lever_box *= 0.9;
-        }
-    }
-    (cells, at, ok, sizes)
-}
-
-/// How many times the least a load diagram's plot is tried at, largest first.
-const LOAD_GROWN: [f64; 4] = [1.6, 1.45, 1.3, 1.15];
-
-/// A fitting arrangement with the load diagrams as large as the cells still pack (up to
-/// [`LOAD_GROWN`]'s first): last, so that nothing read by a ruler is smaller for them.
-fn larger_loads(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -> Arranged {
-    if ok && !inp.fa.model.loads.is_empty() {
-        for load in LOAD_GROWN {
-            let tried = Sizes { load, ..sizes };
-            let tried_cells = self::cells::cells(inp, tried);
-            if let (tried_at, true) = pack(&tried_cells, bodies) {
-                return (tried_cells, tried_at, true, tried);
-            }
-        }
-    }
-    (cells, at, ok, sizes)
-}
-
-/// How many times their boxes the group drawings and the polygons are tried at, largest
-/// first, both together and then the polygons alone.
-const DRAWINGS_GROWN: [f64; 5] = [1.8, 1.6, 1.4, 1.25, 1.12];
-/// How many times its box one polygon is tried at, beyond what they all got, largest first.
-const POLYGON_GROWN: [f64; 7] = [2.5, 2.2, 1.9, 1.6, 1.4, 1.25, 1.12];
-
-/// A fitting arrangement with the group drawings and their polygons as large as the cells
-/// still pack: last, after the lever and the load diagrams — both together, else the
-/// polygons alone; then, where the tables go beside the mechanism, each polygon in turn larger still where the cells pack (a tall polygon may grow down into room its
-/// wide neighbour's growth would overflow). Larger
-/// polygons are not always a fuller sheet (a thin triangle's inside is empty paper too), so
-/// the sheet composes with and without and measures which leaves less empty.
-fn larger_drawings(inp: &ForcesInput, bodies: &Bodies, arranged: Arranged) -> Arranged {
-    let (cells, at, ok, sizes) = arranged;
-    if !(ok && inp.grow_drawings) {
-        return (cells, at, ok, sizes);
-    }
-    let both = DRAWINGS_GROWN.map(|f| Sizes { group_box: sizes.group_box * f, poly_box: sizes.poly_box * f, ..sizes });
-    let polygons = DRAWINGS_GROWN.map(|f| Sizes { poly_box: sizes.poly_box * f, ..sizes });
-    let packed = |tried: Sizes| {
-        let tried_cells = self::cells::cells(inp, tried);
-        let (tried_at, fits) = pack(&tried_cells, bodies);
-        fits.then_some((tried_cells, tried_at, true, tried))
-    };
-    let mut out = both.into_iter().chain(polygons).find_map(packed).unwrap_or((cells, at, ok, sizes));
-    let one_by_one = if bodies.beside { inp.fa.forces.polygons.len().min(GROWN_POLYGONS) } else { 0 };
-    for i in 0..one_by_one {
-        let base = out.3;
-        // At the finer series too: the course's steps up to 2× skip the size that fits.
-        // The course's series only where the finer was not tried already.
-        let series: &[bool] = if base.fine { &[true] } else { &[true, false] };
-        let each = series.iter().flat_map(|&fine| {
-            POLYGON_GROWN.map(|f| {
-                let mut poly_grown = base.poly_grown;
-                poly_grown[i] *= f;
-                Sizes { poly_grown, fine, ..base }
-            })
-        });
-        if let Some(grown) = each.into_iter().find_map(packed) {
-            out = grown;
-        }
-    }
-    out
-}
-
-/// Whether any polygon labels a side shorter than [`SIDE_MIN`] on itself.
-fn short_sides(inp: &ForcesInput, cells: &[Cell]) -> bool {
-    cells.iter().any(|c| match &c.content {
-        Content::Polygon(i, l) => {
-            polygon::shortest_sides(&inp.fa.forces.polygons[*i], l).0.is_some_and(|s| s < SIDE_MIN)
-        }
-        _ => false,
-    })
-}
-
-/// Whether any polygon's cell draws enlargements.
-fn enlarged(cells: &[Cell]) -> bool {
-    cells.iter().any(|c| matches!(&c.content, Content::Polygon(_, l) if !l.insets.is_empty()))
-}
 
 /// Cells packed into the bodies, shrinking the drawings up to `tries − 1` times until they
 /// fit; the last attempt is returned even if it does not (the layout measurement then
