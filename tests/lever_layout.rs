@@ -357,9 +357,11 @@ fn a_small_plan_stands_under_its_title() {
 /// a row, titles stood at the cell's left edge, up to 90 mm left of a small plan
 /// (crank-slider-axial's position 9, crank-slider-offset-vertical's 0, 5 and 6). On every
 /// fixture in every language, each plan's title overlaps its plan's box across and starts
-/// at most 10 mm left of it (the leftmost letter may reach past the box's edge).
+/// at most 10 mm left of it (the leftmost letter may reach past the box's edge); and two
+/// titles on one line stand at least [`TITLES_APART`] apart (in Russian "Положение 0" and
+/// "Положение 1" stood 3.5 mm apart over narrow plans and read as one caption).
 #[test]
-fn every_plans_title_stands_over_its_plan() {
+fn every_plans_title_stands_over_its_plan_and_apart_from_its_neighbours() {
     use tmm_sheets::drawing::labels::Language;
     use tmm_sheets::drawing::scene::Item;
     let mut far = Vec::new();
@@ -371,6 +373,7 @@ fn every_plans_title_stands_over_its_plan() {
             let built = pipeline::build(&p, &[1]).unwrap();
             let scene = &built[0].output.scene;
             for group in scene.groups.iter().filter(|g| g.id == "velocity-plans" || g.id == "acceleration-plans") {
+                let mut titles: Vec<kurbo::Rect> = Vec::new();
                 for part in group.parts.iter().filter(|p| p.id.starts_with("plan.")) {
                     let items = &group.items[part.items.clone()];
                     let Some(Item::Text(_)) = items.first() else { panic!("{name} {}: no title first", part.id) };
@@ -384,6 +387,14 @@ fn every_plans_title_stands_over_its_plan() {
                         ));
                     }
                     checked += 1;
+                    titles.push(title);
+                }
+                titles.sort_by(|a, b| a.x0.total_cmp(&b.x0));
+                for (k, a) in titles.iter().enumerate() {
+                    let next = titles[k + 1..].iter().find(|b| (b.y0 - a.y0).abs() < 0.5);
+                    if let Some(b) = next.filter(|b| b.x0 - a.x1 < TITLES_APART) {
+                        far.push(format!("{name} {lang:?} {}: titles {:.1} mm apart", group.id, b.x0 - a.x1));
+                    }
                 }
             }
         }
@@ -391,6 +402,10 @@ fn every_plans_title_stands_over_its_plan() {
     assert!(far.is_empty(), "{far:#?}");
     assert!(checked >= 200, "{checked} plans");
 }
+
+/// Two plans' titles on one line at least this far apart, mm: a word space at 3.5 mm is
+/// about 1 mm, and 5 mm reads as two captions.
+const TITLES_APART: f64 = 5.0;
 
 /// The split between the velocity and the acceleration plans gives the largest plan of each
 /// kind its size where the smallest plan stays within 5 mm of the best the column allows:

@@ -35,6 +35,10 @@ pub const MARGIN: f64 = 7.0;
 const SHARED_LABEL: f64 = 0.8;
 /// Height of a cell's title strip, mm.
 pub const TITLE: f64 = 6.0;
+/// A title ends at least this far inside its cell's right side, mm: with the next cell's
+/// title 2 mm inside its left side, two titles on one line stand 5 mm apart (1 mm inside,
+/// "Положение 0 Положение 1" stood 4 mm apart and read as one caption).
+const TITLE_END: f64 = 2.5;
 /// Gap between cells, mm.
 const GAP: f64 = 2.0;
 /// A plan's longer side is at least this long, mm: measured with a ruler to 0.5 mm, its
@@ -341,7 +345,7 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
     // at the cell's: a cell stretched across a row put it 90 mm left of a small plan.
     let title = Text::new(Point::ZERO, c.title, 3.5, Anchor::Start);
     let title_w = title.advance().max(c.scale_line.as_ref().map_or(0.0, |l| l.width(2.5)));
-    let x = (area_c.x - bb.width() / mu / 2.0 - MARGIN).min(cell.x1 - 1.0 - title_w).max(cell.x0 + 2.0);
+    let x = (area_c.x - bb.width() / mu / 2.0 - MARGIN).min(cell.x1 - TITLE_END - title_w).max(cell.x0 + 2.0);
     g.text(Text { at: Point::new(x, cell.y0 + 4.5), ..title });
     if let Some(line) = &c.scale_line {
         line.draw(g, Point::new(x, cell.y0 + TITLE + 3.5), 2.5, Anchor::Start);
