@@ -242,18 +242,18 @@ fn assert_no_short_side_on_a_polygon(name: &str, out: &tmm_sheets::sheets::Sheet
 /// Where a polygon's cell has no room for its enlargements and a cell grown for them packs
 /// nowhere, each stands in a cell of its own where the force cells leave room, named by its
 /// letter (GOST 2.305's extension element), rather than the short sides knotted on the
-/// polygon. Task 12 variants 1 and 10 (the press's II(2,3): G₂, G₃, R^t03 0.06–0.14 mm at
-/// 400 N/mm) and task 15 variant 8 (II(2,3) and II(4,5): G, P_i 0.05–0.3 mm) labelled them
-/// on their polygons. Every polygon's labelled sides are now at least [`SIDE_MIN`]; each
+/// polygon. Task 12 variants 1 and 16 (the press's II(2,3): G₂, G₃, R^t03 0.06–0.12 mm at
+/// 400 N/mm) and task 8 variant 20 (II(4,5): G₄, G₅ 0.1–0.2 mm) labelled them on their
+/// polygons. Every polygon's labelled sides are now at least [`SIDE_MIN`]; each
 /// enlargement apart is an SVG part `forces.group.2-3.L` of its own, outside its polygon's
 /// cell, with its letter's title in it and its letter ringed on the polygon.
 #[test]
 fn enlargements_with_no_room_beside_their_polygon_stand_in_cells_of_their_own() {
     use tmm_sheets::drawing::scene::Item;
     let bbox = |items: &[Item]| items.iter().map(Item::bbox).reduce(|a, b| a.union(b)).unwrap();
-    for (task, variant) in [("12", 1), ("12", 10), ("15", 8)] {
+    for (task, variant) in [("12", 1), ("12", 16), ("8", 20)] {
         let name = format!("task {task} v{variant}");
-        let out = common::catalogue_sheet1(task, variant, tmm_sheets::drawing::labels::Language::Ru);
+        let out = common::catalogue_sheet1(task, variant, tmm_sheets::drawing::labels::Language::Uz);
         assert_no_short_side_on_a_polygon(&name, &out);
         let parts: Vec<(&str, &[Item])> = out
             .scene
@@ -262,7 +262,8 @@ fn enlargements_with_no_room_beside_their_polygon_stand_in_cells_of_their_own() 
             .flat_map(|g| g.parts.iter().map(move |p| (p.id.as_str(), &g.items[p.items.clone()])))
             .collect();
         let apart: Vec<_> = parts.iter().filter(|(id, _)| id.matches('.').count() == 3).collect();
-        assert!(!apart.is_empty(), "{name}: no enlargement in a cell of its own among {:?}", parts);
+        let ids: Vec<&str> = parts.iter().map(|p| p.0).collect();
+        assert!(!apart.is_empty(), "{name}: no enlargement in a cell of its own among {ids:?}");
         for (id, items) in apart {
             let (polygon, letter) = id.rsplit_once('.').unwrap();
             let (_, own) = parts.iter().find(|(p, _)| *p == polygon).unwrap();

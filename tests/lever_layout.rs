@@ -215,10 +215,10 @@ fn a_long_thin_mechanisms_crank_detail_stands_under_it() {
     assert!(centre.y > lowest_joint + 15.0, "the detail at y = {:.1}, a joint at {lowest_joint:.1}", centre.y);
 }
 
-/// The guide's task 12, variant 3 in Russian: its sheet 1's crank detail letter and its
+/// The guide's task 12, variant 23 in Russian: its sheet 1's crank detail letter and its
 /// force polygons' inset letters (each inset's title: its letter, then " (").
-fn task_12_v3_ru_detail_letters() -> (Option<String>, Vec<String>) {
-    let out = common::catalogue_sheet1("12", 3, tmm_sheets::drawing::labels::Language::Ru);
+fn task_12_v23_ru_detail_letters() -> (Option<String>, Vec<String>) {
+    let out = common::catalogue_sheet1("12", 23, tmm_sheets::drawing::labels::Language::Ru);
     let scene = &out.scene;
     let mech = scene.groups.iter().find(|g| g.id == "mechanism").unwrap();
     let texts: Vec<_> = mech.texts().collect();
@@ -233,13 +233,13 @@ fn task_12_v3_ru_detail_letters() -> (Option<String>, Vec<String>) {
     (detail, insets)
 }
 
-/// Task 12, variant 3 in Russian has both a crank detail and three force polygons' enlarged
-/// insets: the insets take their letters from the front of the shared list, the detail from
+/// Task 12, variant 23 in Russian has both a crank detail and four force polygons' enlarged
+/// insets (variant 3 had, until the tables' decimals per row moved its composition): the insets take their letters from the front of the shared list, the detail from
 /// its end, so that the detail never shares an inset's letter (task 14 variant 40's were
 /// both "K"; it lost its detail when its polygons' cells grew for their enlargements).
 #[test]
 fn a_crank_detail_and_the_force_insets_never_share_a_letter() {
-    let (detail, insets) = task_12_v3_ru_detail_letters();
+    let (detail, insets) = task_12_v23_ru_detail_letters();
     let detail = detail.expect("a crank detail");
     assert!(!insets.is_empty(), "the force polygons' insets");
     assert!(!insets.contains(&detail), "the detail {detail} and the insets {insets:?}");
@@ -250,7 +250,7 @@ fn a_crank_detail_and_the_force_insets_never_share_a_letter() {
 /// sheet's polygons (their cells are laid out apart, memoised per scale).
 #[test]
 fn the_force_insets_of_one_sheet_have_distinct_letters() {
-    let (_, insets) = task_12_v3_ru_detail_letters();
+    let (_, insets) = task_12_v23_ru_detail_letters();
     let mut distinct = insets.clone();
     distinct.sort();
     distinct.dedup();

@@ -45,6 +45,25 @@ pub fn exact_decimals(values: &[f64]) -> Option<usize> {
     })
 }
 
+/// The decimals of one row of a table: those that give its largest value four significant
+/// digits (as [`significant`] writes it), so that every value of the row has as many (GOST
+/// 2.105: the values of one quantity in a table have the same number of decimals; "116,2"
+/// beside "96,21" and "0" beside "12,31" read as different precisions).
+pub fn row_decimals(values: &[f64]) -> usize {
+    let largest = values.iter().map(|v| v.abs()).filter(|a| a.is_finite()).fold(0.0, f64::max);
+    significant(largest).split_once('.').map_or(0, |(_, d)| d.len())
+}
+
+/// `x` with `decimals` fixed decimals, rounded as [`significant`] rounds (half up, after
+/// rounding to 12 significant digits), a value that rounds to zero without its sign.
+pub fn at_decimals(x: f64, decimals: usize) -> String {
+    if x.is_nan() || x.abs() < tol::PRINTED_ZERO {
+        return fixed(0.0, decimals);
+    }
+    let x: f64 = format!("{x:.11e}").parse().unwrap_or(x);
+    fixed(x + x * 1e-14, decimals)
+}
+
 /// `x` to `digits` significant digits (at least one), trailing zeros dropped, for a message:
 /// plain between 10⁻⁴ and 10⁶, else in scientific notation (`-2e-9`, `1.23e9`), so that neither
 /// a tiny imbalance nor a huge size prints as a row of zeros or of hundreds of digits.
@@ -93,6 +112,23 @@ fn trim_zeros(s: String) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A row's decimals are its largest value's at four significant digits, and every value
+    /// of the row is written with them, rounded half up, zero unsigned.
+    #[test]
+    fn a_rows_values_share_the_decimals_of_its_largest() {
+        let row = [0.0, 12.31, 96.21, -0.004];
+        assert_eq!(row_decimals(&row), 2);
+        let printed: Vec<String> = row.iter().map(|&v| at_decimals(v, row_decimals(&row))).collect();
+        assert_eq!(printed, ["0.00", "12.31", "96.21", "0.00"]);
+        assert_eq!(row_decimals(&[116.2, 200.0]), 1);
+        assert_eq!(row_decimals(&[0.0018, 0.0000005]), 6);
+        assert_eq!(row_decimals(&[0.0, 0.0]), 0);
+        // 9.99995 is 10.00 at four significant digits: two decimals, not three.
+        assert_eq!(row_decimals(&[9.99995]), 2);
+        assert_eq!(at_decimals(0.0028125, 6), "0.002813", "half up");
+        assert_eq!(at_decimals(-0.21875, 4), "-0.2188");
+    }
 
     #[test]
     fn exact_decimals_are_the_fewest_that_write_every_value() {

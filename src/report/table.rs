@@ -187,15 +187,18 @@ impl Row {
 
     /// The values as a reader gets them (a point and a hyphen-minus): a whole count (when
     /// `whole` counts are printed so) without decimals, an exact row with its fewest exact
-    /// decimals, anything else with four significant digits.
+    /// decimals, anything else with the decimals that give the row's largest value four
+    /// significant digits, the same in every cell of the row.
     pub fn printed(&self, whole: bool) -> Vec<String> {
-        let decimals = if self.exact { crate::num::digits::exact_decimals(&self.values) } else { None };
+        use crate::num::digits;
+        let decimals = if self.exact { digits::exact_decimals(&self.values) } else { None };
+        let row = decimals.unwrap_or_else(|| digits::row_decimals(&self.values));
         self.values
             .iter()
             .map(|&v| match decimals {
                 _ if whole && v.fract() == 0.0 && v.abs() < 1e9 => format!("{v:.0}"),
-                Some(d) => crate::num::digits::fixed(v, d),
-                None => crate::num::digits::significant(v),
+                Some(d) => digits::fixed(v, d),
+                None => digits::at_decimals(v, row),
             })
             .collect()
     }
