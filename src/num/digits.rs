@@ -17,8 +17,7 @@ pub fn significant(x: f64) -> String {
     // away from zero: rounded half up, as the course rounds (0.0028125 → 0.002813), where
     // the formatter would take the binary value's side. Only a tie is that near a boundary:
     // any other 12-digit value is at least 1e-12 of itself from one.
-    let x: f64 = format!("{x:.11e}").parse().unwrap_or(x);
-    let x = x + x * 1e-14;
+    let x = tie_moved(x);
     let a = x.abs();
     let magnitude = math::log10(a).floor() as i32;
     let dec = (3 - magnitude).clamp(0, 9) as usize;
@@ -60,8 +59,14 @@ pub fn at_decimals(x: f64, decimals: usize) -> String {
     if x.is_nan() || x.abs() < tol::PRINTED_ZERO {
         return fixed(0.0, decimals);
     }
+    fixed(tie_moved(x), decimals)
+}
+
+/// `x` rounded to 12 significant digits and, a tie there, moved 1e-14 of itself away from
+/// zero, so that formatting it rounds half up (see [`significant`]).
+fn tie_moved(x: f64) -> f64 {
     let x: f64 = format!("{x:.11e}").parse().unwrap_or(x);
-    fixed(x + x * 1e-14, decimals)
+    x + x * 1e-14
 }
 
 /// `x` to `digits` significant digits (at least one), trailing zeros dropped, for a message:

@@ -158,10 +158,10 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
         // Its enlargements' own cells after the drawings and before the tables: small, they
         // fill what the larger cells leave.
         let apart: Vec<Cell> = match layout.place {
-            Place::Apart => (0..layout.insets.len())
-                .map(|j| {
-                    let slot = layout.insets[j].slot;
-                    Cell { w: slot.width(), h: slot.height(), content: Content::Enlargement(i, j, Rc::clone(&layout)) }
+            Place::Apart => (layout.insets.iter().enumerate())
+                .map(|(j, inset)| {
+                    let (w, h) = (inset.slot.width(), inset.slot.height());
+                    Cell { w, h, content: Content::Enlargement(i, j, Rc::clone(&layout)) }
                 })
                 .collect(),
             _ => Vec::new(),

@@ -32,8 +32,7 @@ pub(super) fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): 
         let mut first = None;
         let readable = |a: &Arranged| smallest_drawing_mm(&a.0) >= floor - crate::num::tol::PAPER;
         for inset_box in [inset::INSET_BOX, inset::INSET_BOX_CRAMPED] {
-            let mut base = Sizes { inset_box, ..sizes };
-            for _ in 0..=ENLARGE_SHRINKS {
+            for base in shrink_steps(Sizes { inset_box, ..sizes }) {
                 if let Some(grown) = grown(inp, bodies, base, count) {
                     if !short_sides(inp, &grown.0) && readable(&grown) {
                         return grown;
@@ -43,7 +42,6 @@ pub(super) fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): 
                 if !short_sides(inp, &self::cells::cells(inp, base)) {
                     break;
                 }
-                base = base.shrunk();
             }
         }
         let fine = Sizes { fine: true, ..sizes };
@@ -60,7 +58,13 @@ pub(super) fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): 
         if short_sides(inp, &cells)
             && knotted(&first)
             && knotted(&fine)
-            && let Some(apart) = apart(inp, bodies, sizes, count, |a| readable(a) && lever_kept(inp, bodies, sizes, a))
+            && let Some(apart) = {
+                // The lever keeps [`LEVER_KEPT`] of what it grows to without them.
+                let lever_floor = (largest_lever_mm(inp, bodies, sizes) * LEVER_KEPT).min(LEVER_KEPT_ABOVE);
+                let lever_kept =
+                    |a: &Arranged| largest_lever_mm(inp, bodies, a.3) >= lever_floor - crate::num::tol::PAPER;
+                apart(inp, bodies, sizes, count, |a| readable(a) && lever_kept(a))
+            }
         {
             return apart;
         }
@@ -73,6 +77,11 @@ pub(super) fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): 
 
 /// How many steps smaller the drawings may get to make room for the polygons' enlargements.
 const ENLARGE_SHRINKS: usize = 8;
+
+/// `sizes`, then the drawings a step smaller at a time, up to [`ENLARGE_SHRINKS`] steps.
+fn shrink_steps(sizes: Sizes) -> impl Iterator<Item = Sizes> {
+    std::iter::successors(Some(sizes), |s| Some(s.shrunk())).take(ENLARGE_SHRINKS + 1)
+}
 
 /// A group drawing this long reads its forces' points and arms plainly, mm (its longer
 /// side): the drawings are not shrunk below it (or below what they were) to make room for
@@ -89,27 +98,14 @@ const ENLARGE_SHRUNK_MOST: f64 = 0.8;
 const LEVER_KEPT: f64 = 0.8;
 const LEVER_KEPT_ABOVE: f64 = 100.0;
 
-/// Whether `arranged` (the enlargements in cells of their own) leaves the Zhukovsky lever,
-/// grown as large as its cells pack, at least [`LEVER_KEPT`] of what the cells at `sizes`
-/// would grow it to (or [`LEVER_KEPT_ABOVE`]).
-fn lever_kept(inp: &ForcesInput, bodies: &Bodies, sizes: Sizes, arranged: &Arranged) -> bool {
-    let largest = |(cells, at, ok, sizes): Arranged| lever_mm(&larger_lever(inp, bodies, (cells, at, ok, sizes)).0);
-    let without = self::cells::cells(inp, sizes);
-    let (at, ok) = pack(&without, bodies);
-    let floor = (largest((without, at, ok, sizes)) * LEVER_KEPT).min(LEVER_KEPT_ABOVE);
-    let (cells, at, ok, s) = arranged;
-    let with = self::cells::cells(inp, *s);
-    debug_assert_eq!(with.len(), cells.len());
-    largest((with, at.clone(), *ok, *s)) >= floor - crate::num::tol::PAPER
-}
-
-/// The Zhukovsky lever's longer side on paper among `cells`, mm.
-fn lever_mm(cells: &[Cell]) -> f64 {
+/// The Zhukovsky lever's longer side on paper once it grows as large as the cells at
+/// `sizes` still pack ([`larger_lever`]), mm.
+fn largest_lever_mm(inp: &ForcesInput, bodies: &Bodies, sizes: Sizes) -> f64 {
+    let cells = self::cells::cells(inp, sizes);
+    let (at, ok) = pack(&cells, bodies);
+    let (cells, ..) = larger_lever(inp, bodies, (cells, at, ok, sizes));
     let lever = cells.iter().find_map(|c| match &c.content {
-        Content::Lever(plan, mu, _, _) => {
-            let bb = crate::sheets::lever::plans_view::plan_bbox(plan);
-            Some(bb.width().max(bb.height()) / mu)
-        }
+        Content::Lever(plan, mu, _, _) => Some(super::zhukovsky::lever_side_mm(plan, *mu)),
         _ => None,
     });
     lever.unwrap_or(0.0)
@@ -169,8 +165,7 @@ fn apart(
 ) -> Option<Arranged> {
     let all = (1u64 << count) - 1;
     for inset_box in [inset::INSET_BOX, inset::INSET_BOX_CRAMPED] {
-        let mut base = Sizes { inset_box, apart: all, ..sizes };
-        for _ in 0..=ENLARGE_SHRINKS {
+        for base in shrink_steps(Sizes { inset_box, apart: all, ..sizes }) {
             let packed = [true, false].into_iter().find_map(|fine| {
                 let s = Sizes { fine, ..base };
                 let cells = self::cells::cells(inp, s);
@@ -186,7 +181,6 @@ fn apart(
                 }
                 break;
             }
-            base = base.shrunk();
         }
     }
     None

@@ -173,8 +173,7 @@ pub fn draw_forces(
                 zhukovsky::draw_lever(g, &mut labels, r, inp, (plan, extent), (mu, mu_f));
                 scales.mu_lever = mu;
                 scales.mu_f_lever = mu_f;
-                let bb = crate::sheets::lever::plans_view::plan_bbox(plan);
-                scales.lever_mm = bb.width().max(bb.height()) / mu;
+                scales.lever_mm = zhukovsky::lever_side_mm(plan, mu);
                 measured.extend(segments::lever_arms(inp, mu, &part));
             }
             Content::Load(i, grown) => {

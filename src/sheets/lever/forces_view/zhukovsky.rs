@@ -117,3 +117,10 @@ pub(super) fn draw_lever(
     let y = text_rows(g, r.x0 + 2.0, r.y1 - text_h + LINE, &legend);
     text_rows(g, r.x0 + 2.0, y, &lines);
 }
+
+/// The lever's longer side on paper at velocity scale `mu`, mm: its turned velocity plan's
+/// box (what `results.json` reports as `lever_mm`).
+pub(super) fn lever_side_mm(plan: &Plan, mu: f64) -> f64 {
+    let bb = plan_bbox(plan);
+    bb.width().max(bb.height()) / mu
+}
