@@ -63,7 +63,14 @@ pub(super) fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): 
                 let lever_floor = (largest_lever_mm(inp, bodies, sizes) * LEVER_KEPT).min(LEVER_KEPT_ABOVE);
                 let lever_kept =
                     |a: &Arranged| largest_lever_mm(inp, bodies, a.3) >= lever_floor - crate::num::tol::PAPER;
-                apart(inp, bodies, sizes, count, |a| readable(a) && lever_kept(a))
+                // Only the polygons the enlargements beside them left knotted first, the others
+                // as enlarged there; then every polygon's apart.
+                let beside = first.as_ref().map_or(0, |a| a.3.grow);
+                let knotted = knotted_polygons(inp, first.as_ref().map_or(&cells, |a| &a.0));
+                let all = (1u64 << count) - 1;
+                let masks = [(beside, knotted), (0, all)];
+                let keep = |a: &Arranged| readable(a) && lever_kept(a);
+                masks.into_iter().find_map(|(grow, mask)| apart(inp, bodies, Sizes { grow, ..sizes }, mask, keep))
             }
         {
             return apart;
@@ -160,12 +167,11 @@ fn apart(
     inp: &ForcesInput,
     bodies: &Bodies,
     sizes: Sizes,
-    count: usize,
+    mask: u64,
     readable: impl Fn(&Arranged) -> bool,
 ) -> Option<Arranged> {
-    let all = (1u64 << count) - 1;
     for inset_box in [inset::INSET_BOX, inset::INSET_BOX_CRAMPED] {
-        for base in shrink_steps(Sizes { inset_box, apart: all, ..sizes }) {
+        for base in shrink_steps(Sizes { inset_box, apart: mask, ..sizes }) {
             let packed = [true, false].into_iter().find_map(|fine| {
                 let s = Sizes { fine, ..base };
                 let cells = self::cells::cells(inp, s);
@@ -274,12 +280,20 @@ pub(super) fn larger_drawings(inp: &ForcesInput, bodies: &Bodies, arranged: Arra
 
 /// Whether any polygon labels a side shorter than [`SIDE_MIN`] on itself.
 pub(super) fn short_sides(inp: &ForcesInput, cells: &[Cell]) -> bool {
-    cells.iter().any(|c| match &c.content {
+    knotted_polygons(inp, cells) != 0
+}
+
+/// The polygons (bit i: polygon i) that label a side shorter than [`SIDE_MIN`] on
+/// themselves.
+fn knotted_polygons(inp: &ForcesInput, cells: &[Cell]) -> u64 {
+    let knotted = cells.iter().filter_map(|c| match &c.content {
         Content::Polygon(i, l) => {
-            polygon::shortest_sides(&inp.fa.forces.polygons[*i], l).0.is_some_and(|s| s < SIDE_MIN)
+            let short = polygon::shortest_sides(&inp.fa.forces.polygons[*i], l).0.is_some_and(|s| s < SIDE_MIN);
+            (short && *i < 64).then_some(1u64 << i)
         }
-        _ => false,
-    })
+        _ => None,
+    });
+    knotted.fold(0, |m, b| m | b)
 }
 
 /// Whether any polygon's cell draws enlargements.

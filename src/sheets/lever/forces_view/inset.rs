@@ -162,7 +162,12 @@ impl Runs {
     /// top left.
     pub(super) fn apart(&self) -> Option<Vec<Inset>> {
         let (w, h) = self.slot();
-        self.in_slots(|_| Rect::new(0.0, 0.0, w, h))
+        let full = self.in_slots(|_| Rect::new(0.0, 0.0, w, h))?;
+        // Each cell only as large as its drawing at that μ_P: a run of two sides of a few
+        // hundred newtons left most of its full slot empty, and the smaller cells pack where
+        // the full ones found no room (task 1 variant 1's II(2,3) kept Rᵗ₁₂ and G₂ 1.6 mm long
+        // on its polygon).
+        Some(full.into_iter().map(|inset| Inset { slot: tight_slot(&inset), ..inset }).collect())
     }
 
     /// Each run enlarged in its slot `slot(i)`: `None` unless every run gets one that
@@ -189,6 +194,13 @@ impl Runs {
             })
             .collect()
     }
+}
+
+/// The slot that holds an enlargement's drawing at its μ_P with room for its labels, its
+/// stubs and its title, from its cell's top left.
+fn tight_slot(inset: &Inset) -> Rect {
+    let (w, h) = (inset.world.width() / inset.mu, inset.world.height() / inset.mu);
+    Rect::new(0.0, 0.0, (w + 2.0 * PAD).max(SLOT_MIN_W), h + 2.0 * PAD + TITLE)
 }
 
 /// The runs of consecutive short sides, each its terms in chain order.
