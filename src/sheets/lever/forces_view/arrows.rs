@@ -2,6 +2,7 @@
 //! apart from the links and from each other.
 
 use super::{ARROW_MAX, ARROW_MIN};
+use crate::drawing::obstacles::segments_cross;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Group, THIN, VECTOR};
@@ -10,7 +11,7 @@ use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::num::math::Norm;
 use crate::num::tol;
-use kurbo::{Point, Vec2};
+use kurbo::{Point, Rect, Vec2};
 
 /// The round scale (N/mm) that draws the largest of `forces` no longer than [`ARROW_MAX`].
 pub(super) fn arrow_scale(largest: f64) -> f64 {
@@ -18,23 +19,49 @@ pub(super) fn arrow_scale(largest: f64) -> f64 {
 }
 
 /// Force arrows of one drawing, kept apart: an arrow along a link is drawn beside it, and
-/// one from the same point in (nearly) the same direction as an earlier one slid along its
-/// own line of action past that one's tip. Sliding keeps the force's moment about every
-/// point (set beside, it would change its arm, which the lever and the groups' moment
-/// equations are read by).
+/// one from the same point in (nearly) the same direction as an earlier one drawn pushing
+/// (its tip at the point, from the other side) where that side is free, else slid along its
+/// own line of action past the earlier one's tip. Either keeps the force's moment about
+/// every point (set beside, it would change its arm, which the lever and the groups' moment
+/// equations are read by); pushing keeps the two arrows on either side of the point, where
+/// slid end to end the first one's head read as a second head on the other's shaft.
 pub(super) struct Arrows {
     /// The drawing's world-to-paper map.
     pub(super) view: View,
-    /// The drawing's link lines, paper mm.
+    /// The drawing's link lines, paper mm: an arrow along one is set beside it.
     pub(super) links: Vec<(Point, Point)>,
+    /// Where twins may be drawn pushing, what a pushing arrow keeps clear of (the lever);
+    /// `None` on the group drawings, whose twins stand at blocks and centres of mass on
+    /// their links and slide.
+    pub(super) push: Option<Push>,
     /// Slider blocks: centre, unit direction along the block, half length and half width.
     pub(super) blocks: Vec<(Point, Vec2, f64, f64)>,
-    /// Each arrow drawn: its point, its unit direction on paper and how far from the point
-    /// its tip is, mm.
+    /// Each arrow drawn: its point, the unit direction from the point along which it lies
+    /// on paper (its force's, or the opposite for one drawn pushing) and how far from the
+    /// point its farther end is, mm.
     pub(super) drawn: Vec<(Point, Vec2, f64)>,
     pub(super) mu_f: f64,
     pub(super) h: f64,
 }
+
+/// What a twin drawn pushing keeps clear of, paper mm: its shaft lies on the side of its
+/// point that no other arrow or line takes, crosses no line, passes no other point near and
+/// stays where the arrows slid would reach (so that pushing never makes the drawing
+/// larger, and its scale coarser).
+#[derive(Debug, Clone, Default)]
+pub(super) struct Push {
+    /// The drawing's lines.
+    pub(super) lines: Vec<(Point, Point)>,
+    /// The drawing's named points.
+    pub(super) points: Vec<Point>,
+    /// Every force's point and unit direction, those drawn later included.
+    pub(super) forces: Vec<(Point, Vec2)>,
+    /// The box the arrows reach with every twin slid.
+    pub(super) within: Rect,
+}
+
+/// A pushing arrow's shaft passes no other point nearer than this, mm.
+const PUSH_POINT_CLEAR: f64 = 5.0;
 
 /// How far an arrow along a link or another arrow is set beside it, mm.
 const BESIDE: f64 = 2.5;
@@ -42,6 +69,9 @@ const BESIDE: f64 = 2.5;
 const TWIN_GAP: f64 = 1.5;
 /// Directions closer than this (sine of the angle) count as along.
 const ALONG: f64 = 0.17;
+/// A pushing arrow keeps at least this far from every line at its point (sine of the
+/// angle): nearer, it and the line close a wedge its label and the line's crowd.
+const PUSH_CLEAR: f64 = 0.34;
 
 impl Arrows {
     /// Draws a force arrow from `at` (nothing for a zero force) and asks for its label
@@ -67,21 +97,31 @@ impl Arrows {
             let (along, across) = (d.dot(u).abs(), d.dot(u.turn_90()).abs());
             (hl / along.max(tol::PARALLEL_SIN)).min(hw / across.max(tol::PARALLEL_SIN))
         });
-        let mut start = at + d * exit;
-        let along_link = self.links.iter().any(|&(a, b)| {
-            let u = b - a;
-            let on_line = (at - a).cross(u).abs() / u.norm().max(tol::PAPER) < 0.5;
-            on_line && (d.cross(u) / u.norm().max(tol::PAPER)).abs() < ALONG
-        });
-        if along_link {
-            start += n * BESIDE;
-        }
-        start += d * (past_twins(&self.drawn, at, d) - exit).max(0.0);
-        let tip = start + d * len;
-        self.drawn.push((at, d, (tip - at).norm()));
-        if (start - (at + d * exit)).norm() > 0.0 {
-            g.line(at + d * exit, start, THIN);
-        }
+        let push = self.push.as_ref().filter(|_| exit == 0.0);
+        let (start, tip) = match way(&self.drawn, push, at, d, len) {
+            Way::Push => {
+                self.drawn.push((at, -d, len));
+                (at - d * len, at)
+            }
+            Way::Pull(slide) => {
+                let mut start = at + d * exit;
+                let along_link = self.links.iter().any(|&(a, b)| {
+                    let u = b - a;
+                    let on_line = (at - a).cross(u).abs() / u.norm().max(tol::PAPER) < 0.5;
+                    on_line && (d.cross(u) / u.norm().max(tol::PAPER)).abs() < ALONG
+                });
+                if along_link {
+                    start += n * BESIDE;
+                }
+                start += d * (slide - exit).max(0.0);
+                let tip = start + d * len;
+                self.drawn.push((at, d, (tip - at).norm()));
+                if (start - (at + d * exit)).norm() > 0.0 {
+                    g.line(at + d * exit, start, THIN);
+                }
+                (start, tip)
+            }
+        };
         vector(g, start, tip, VECTOR);
         // Beside the arrow's middle, else nearer its tip or its tail on either side.
         let along = |k: f64| start + d * (len * k);
@@ -96,8 +136,8 @@ fn length(f: f64, mu_f: f64) -> f64 {
     (f / mu_f).clamp(ARROW_MIN, ARROW_MAX)
 }
 
-/// How far from `at` along `d` an arrow starts past the tips of the arrows `drawn` earlier
-/// from the same point in nearly its direction, mm (0 for none).
+/// How far from `at` along `d` an arrow starts past the far ends of the arrows `drawn`
+/// earlier from the same point along `d`, mm (0 for none).
 fn past_twins(drawn: &[(Point, Vec2, f64)], at: Point, d: Vec2) -> f64 {
     drawn
         .iter()
@@ -106,24 +146,77 @@ fn past_twins(drawn: &[(Point, Vec2, f64)], at: Point, d: Vec2) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Each of `forces` (at its point on paper) as drawn at `mu_f`, twins slid along their
-/// lines: its point, its unit direction and how far from the point its tip is, mm.
-pub(super) fn twin_rows(forces: impl IntoIterator<Item = (Point, Vec2)>, mu_f: f64) -> Vec<(Point, Vec2, f64)> {
+/// How an arrow stands at its point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Way {
+    /// From the point, this far along its direction past earlier twins (0 for none), mm.
+    Pull(f64),
+    /// Its tip at the point, from the other side.
+    Push,
+}
+
+/// How an arrow `len` long from `at` along `d` stands: where pushing is allowed (`push`),
+/// pushing where an earlier arrow lies along `d` and its shaft keeps clear of all `push`
+/// names; else slid past the earlier ones.
+fn way(drawn: &[(Point, Vec2, f64)], push: Option<&Push>, at: Point, d: Vec2, len: f64) -> Way {
+    let slide = past_twins(drawn, at, d);
+    let tail = at - d * len;
+    let near = |q: Point| (q - at).norm() < 1.0;
+    let clear = |p: &Push| {
+        past_twins(drawn, at, -d) == 0.0
+            && !p.forces.iter().any(|&(q, e)| near(q) && e.dot(-d) > 1.0 - ALONG)
+            && !p.lines.iter().any(|&l| line_along(l, at, -d, PUSH_CLEAR))
+            && !p.lines.iter().any(|&(a, b)| !near(a) && !near(b) && segments_cross(tail, at, a, b))
+            && !p.points.iter().any(|&q| !near(q) && point_segment_distance(q, (tail, at)) < PUSH_POINT_CLEAR)
+            && p.within.inflate(tol::PAPER, tol::PAPER).contains(tail)
+    };
+    if slide > 0.0 && push.is_some_and(clear) { Way::Push } else { Way::Pull(slide) }
+}
+
+/// The distance from `q` to the segment `a`–`b`, mm.
+fn point_segment_distance(q: Point, (a, b): (Point, Point)) -> f64 {
+    use kurbo::ParamCurveNearest;
+    kurbo::Line::new(a, b).nearest(q, 0.0).distance_sq.sqrt()
+}
+
+/// Whether line `(a, b)` runs from `at` within the angle whose sine is `within` of the ray
+/// `e` (a unit vector), for more than half a millimetre.
+fn line_along((a, b): (Point, Point), at: Point, e: Vec2, within: f64) -> bool {
+    let u = b - a;
+    let l = u.norm();
+    let through = l > tol::PAPER && (at - a).cross(u).abs() / l < 0.5;
+    let on_line = through && (e.cross(u) / l).abs() < within;
+    on_line && [a, b].iter().any(|&p| (p - at).dot(e) > 0.5)
+}
+
+/// Each of `forces` (at its point on paper, its direction on paper) as drawn at `mu_f`,
+/// twins pushing where `push` lets them (as [`Arrows::push`]) or slid along their lines: its
+/// point, the unit direction from the point along which it lies and how far from the point
+/// its farther end is, mm.
+pub(super) fn twin_rows(
+    forces: impl IntoIterator<Item = (Point, Vec2)>,
+    push: Option<&Push>,
+    mu_f: f64,
+) -> Vec<(Point, Vec2, f64)> {
     let mut drawn: Vec<(Point, Vec2, f64)> = Vec::new();
     for (at, force) in forces {
         let f = force.norm();
         if f > 0.0 {
             let d = force / f;
-            drawn.push((at, d, past_twins(&drawn, at, d) + length(f, mu_f)));
+            let row = match way(&drawn, push, at, d, length(f, mu_f)) {
+                Way::Push => (at, -d, length(f, mu_f)),
+                Way::Pull(slide) => (at, d, slide + length(f, mu_f)),
+            };
+            drawn.push(row);
         }
     }
     drawn
 }
 
-/// The farthest an arrow's tip reaches from its point (see [`twin_rows`]), mm: the room a
-/// drawing needs round its points.
+/// The farthest a group drawing's arrow reaches from its point, twins slid (see
+/// [`twin_rows`]), mm: the room the drawing needs round its points.
 pub(super) fn twins_reach(forces: impl IntoIterator<Item = (Point, Vec2)>, mu_f: f64) -> f64 {
-    twin_rows(forces, mu_f).iter().map(|x| x.2).fold(0.0, f64::max)
+    twin_rows(forces, None, mu_f).iter().map(|x| x.2).fold(0.0, f64::max)
 }
 
 #[cfg(test)]
@@ -142,11 +235,23 @@ mod tests {
         let at = Point::new(50.0, 50.0);
         let forces = [Vec2::new(0.0, -300.0), Vec2::new(0.0, -120.0), Vec2::new(20.0, -200.0)];
         let view = View::new(Point::new(20.0, 80.0), 0.01);
-        let mut arrows = Arrows { view, links: Vec::new(), blocks: Vec::new(), drawn: Vec::new(), mu_f: 20.0, h: 2.5 };
+        let spans = spans_drawn(view, at, &forces, None);
+        // The second (same direction as the first) starts past the first's tip.
+        assert!(spans[1].1 > spans[0].2, "{spans:?}");
+    }
+
+    /// Each arrow's unit direction on paper and the least and greatest distance along it
+    /// from the point of its shaft's ends, every end checked to lie on the force's line
+    /// through the point; and whether the room [`twin_rows`] gives them is the farthest
+    /// drawn.
+    fn spans_drawn(view: View, at: Point, forces: &[Vec2], push: Option<Push>) -> Vec<(Vec2, f64, f64)> {
+        let kept = push.clone();
+        let mut arrows =
+            Arrows { view, links: Vec::new(), push, blocks: Vec::new(), drawn: Vec::new(), mu_f: 20.0, h: 2.5 };
         let mut g = Group::new("test", Rect::new(0.0, 0.0, 100.0, 100.0));
         let mut labels = Labels::new();
         let mut spans = Vec::new();
-        for f in forces {
+        for &f in forces {
             let from = g.items.len();
             arrows.arrow(&mut g, &mut labels, at, f, LabelText::new("F", ""));
             let d = view.dir(f) / f.norm();
@@ -171,10 +276,47 @@ mod tests {
                 along.iter().copied().fold(0.0, f64::max),
             ));
         }
-        // The second (same direction as the first) starts past the first's tip.
-        assert!(spans[1].1 > spans[0].2, "{spans:?}");
-        // The room a drawing sizes for them is the farthest tip drawn.
-        let tips = arrows.drawn.iter().map(|x| x.2).fold(0.0, f64::max);
-        assert!((twins_reach(forces.map(|f| (at, view.dir(f))), 20.0) - tips).abs() < 1e-9);
+        // The room a drawing sizes for them is where each arrow's far end is drawn.
+        let rows = twin_rows(forces.iter().map(|&f| (at, view.dir(f))), kept.as_ref(), 20.0);
+        assert_eq!(rows.len(), arrows.drawn.len());
+        for (row, drawn) in rows.iter().zip(&arrows.drawn) {
+            assert!((row.1 - drawn.1).norm() < 1e-9 && (row.2 - drawn.2).abs() < 1e-9, "{row:?} {drawn:?}");
+        }
+        spans
+    }
+
+    /// On the lever the smaller of two twins is drawn pushing, its tip at the point and its
+    /// shaft on the other side, where nothing lies there; a third along the first slides past
+    /// the first's tip. The second slides too where a line of the lever leaves the point on
+    /// the other side, where a force drawn later points that way, or where its shaft would
+    /// reach beyond the arrows slid.
+    #[test]
+    fn twins_push_from_the_free_side_and_slide_where_it_is_taken() {
+        let at = Point::new(50.0, 50.0);
+        let view = View::new(Point::new(20.0, 80.0), 0.01);
+        let forces = [Vec2::new(0.0, -300.0), Vec2::new(0.0, -120.0), Vec2::new(20.0, -200.0)];
+        let on_paper: Vec<(Point, Vec2)> = forces.iter().map(|&f| (at, view.dir(f) / f.norm())).collect();
+        let push = |lines: Vec<(Point, Point)>, later: Option<Vec2>, within: Rect| Push {
+            lines,
+            points: vec![at],
+            forces: on_paper.iter().copied().chain(later.map(|e| (at, e))).collect(),
+            within,
+        };
+        let page = Rect::new(0.0, 0.0, 100.0, 100.0);
+        let spans = spans_drawn(view, at, &forces, Some(push(Vec::new(), None, page)));
+        assert!(spans[1].2.abs() < 1e-9 && spans[1].1 < -5.0, "the second pushes: {spans:?}");
+        assert!(spans[2].1 > spans[0].2, "the third slides past the first: {spans:?}");
+        // On paper y runs down: the forces point down the page and the pushing side is
+        // above the point. A line from the point there, 6° off the second's line:
+        let above = vec![(at, at + Vec2::new(3.0, -30.0))];
+        let spans = spans_drawn(view, at, &forces, Some(push(above, None, page)));
+        assert!(spans[1].1 > spans[0].2, "a line: the second slides: {spans:?}");
+        // A force up the page at the point, drawn after them:
+        let spans = spans_drawn(view, at, &forces, Some(push(Vec::new(), Some(Vec2::new(0.0, -1.0)), page)));
+        assert!(spans[1].1 > spans[0].2, "a later force: the second slides: {spans:?}");
+        // The arrows slid reach no higher than the point:
+        let below = Rect::new(0.0, at.y, 100.0, 100.0);
+        let spans = spans_drawn(view, at, &forces, Some(push(Vec::new(), None, below)));
+        assert!(spans[1].1 > spans[0].2, "beyond the slid arrows' box: the second slides: {spans:?}");
     }
 }

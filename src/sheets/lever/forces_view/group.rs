@@ -365,7 +365,8 @@ fn draw_group_geometry(
             3.5,
         );
     }
-    let mut arrows = Arrows { view, links: link_lines, blocks, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
+    let mut arrows =
+        Arrows { view, links: link_lines, push: None, blocks, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
     for t in &poly.terms {
         arrows.arrow(g, labels, p(t.at), t.force, force_label(inp, t.kind, t.on));
     }

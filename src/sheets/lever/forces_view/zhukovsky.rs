@@ -1,7 +1,7 @@
 //! The Zhukovsky lever: the velocity plan turned by 90° with every force at its point's
 //! image, the balancing force P′ₘ from it and its difference from the kinetostatics.
 
-use super::arrows::{Arrows, arrow_scale, twin_rows};
+use super::arrows::{Arrows, Push, arrow_scale, twin_rows};
 use super::legend::{
     couple_label, force_label, scale_item, text_rows, value_item, with_semicolon, with_short_note, wrap_items,
 };
@@ -28,16 +28,54 @@ pub(super) fn balancing_image(inp: &ForcesInput) -> Vec2 {
 }
 
 /// The lever's box at `mu` ((m/s)/mm) with its forces at `mu_f`, in the plan's units: the
-/// turned plan and every force arrow's tip, twins slid along their lines as drawn. The
+/// turned plan and every force arrow's far end, twins pushing or slid as drawn. The
 /// lever's cell is sized round it and the drawing centred on it, so arrows that point
 /// into the plan leave no room unused and a row of twins has the room it takes.
 pub(super) fn lever_extent(inp: &ForcesInput, plan: &Plan, mu: f64, mu_f: f64) -> Rect {
+    // Twins are found on paper, the pole at the origin.
+    let view = View::new(Point::ZERO, mu);
+    let push = lever_push(inp, plan, &view, mu_f);
+    let rows = twin_rows(forces_on_paper(inp, &view), Some(&push), mu_f);
+    let world = |p: Point| Point::new(p.x * mu, -p.y * mu);
+    rows.iter().map(|&(at, d, reach)| world(at + d * reach)).fold(plan_bbox(plan), |r, p| r.union_pt(p))
+}
+
+/// The lever's forces at their images on paper by `view`: each's point and direction.
+fn forces_on_paper(inp: &ForcesInput, view: &View) -> Vec<(Point, Vec2)> {
+    lever_forces(inp).iter().map(|(at, force, _)| (view.p(*at), view.dir(*force))).collect()
+}
+
+/// What the lever's twins drawn pushing keep clear of on paper by `view` (see [`Push`]):
+/// the plan's lines and points, every force and the box the arrows reach slid.
+fn lever_push(inp: &ForcesInput, plan: &Plan, view: &View, mu_f: f64) -> Push {
+    let forces = forces_on_paper(inp, view);
+    let bb = plan_bbox(plan);
+    let plan_box = Rect::from_points(view.p(bb.origin().to_vec2()), view.p(Vec2::new(bb.x1, bb.y1)));
+    let slid = twin_rows(forces.iter().copied(), None, mu_f);
+    let within = slid.iter().fold(plan_box, |r, &(at, d, reach)| r.union_pt(at + d * reach));
+    Push {
+        lines: plan.segs.iter().map(|s| (view.p(s.from), view.p(s.to))).collect(),
+        points: plan.images.iter().map(|i| view.p(i.at)).collect(),
+        forces: forces.iter().map(|&(at, d)| (at, d / d.norm().max(f64::MIN_POSITIVE))).collect(),
+        within,
+    }
+}
+
+/// The lever's forces at their images, with their labels, in the kinetostatics' order and
+/// P′ₘ last: of two twins the later is drawn pushing where it may.
+fn lever_forces(inp: &ForcesInput) -> Vec<(Vec2, Vec2, LabelText)> {
     let f = &inp.fa.forces;
-    let forces = f.lever.iter().map(|l| (l.image, l.force)).chain([(balancing_image(inp), f.dir_m * f.p_m_lever)]);
-    // Twins are found on paper; turning the y axis over keeps every angle between forces.
-    let rows = twin_rows(forces.map(|(at, force)| (Point::new(at.x / mu, at.y / mu), force)), mu_f);
-    let tips = rows.iter().map(|&(at, d, reach)| Point::new(at.x * mu, at.y * mu) + d * (reach * mu));
-    tips.fold(plan_bbox(plan), |r, p| r.union_pt(p))
+    let mut forces: Vec<(Vec2, Vec2, LabelText)> = f
+        .lever
+        .iter()
+        .map(|l| {
+            let label = if l.couple { couple_label(inp, l.on) } else { force_label(inp, l.kind, l.on) };
+            (l.image, l.force, label)
+        })
+        .collect();
+    let balancing = LabelText::new("P′", inp.words.sheet.sub_balancing());
+    forces.push((balancing_image(inp), f.dir_m * f.p_m_lever, balancing));
+    forces
 }
 
 pub(super) fn lever_arrow_scale(inp: &ForcesInput) -> f64 {
@@ -89,18 +127,11 @@ pub(super) fn draw_lever(
     let pole = draw_plan(g, &cell, labels);
     let view = View::new(pole, mu);
     let at = |v: Vec2| view.p(v);
-    let mut arrows = Arrows { view, links: Vec::new(), blocks: Vec::new(), drawn: Vec::new(), mu_f, h: 2.5 };
-    for l in &f.lever {
-        let label = if l.couple { couple_label(inp, l.on) } else { force_label(inp, l.kind, l.on) };
-        arrows.arrow(g, labels, at(l.image), l.force, label);
+    let push = Some(lever_push(inp, plan, &view, mu_f));
+    let mut arrows = Arrows { view, links: Vec::new(), push, blocks: Vec::new(), drawn: Vec::new(), mu_f, h: 2.5 };
+    for (image, force, label) in lever_forces(inp) {
+        arrows.arrow(g, labels, at(image), force, label);
     }
-    arrows.arrow(
-        g,
-        labels,
-        at(balancing_image(inp)),
-        f.dir_m * f.p_m_lever,
-        LabelText::new("P′", inp.words.sheet.sub_balancing()),
-    );
     let lang = inp.words.lang;
     let lines = [
         vec![
