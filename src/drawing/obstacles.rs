@@ -305,6 +305,29 @@ impl Obstacles {
         self.strokes.any_on_segment(a, b, |s| segments_cross(a, b, s.a, s.b))
     }
 
+    /// Whether a stroke runs along the segment `a`–`b` over a stretch: nearly parallel to it
+    /// ([`ALONG_SIN`]) and within [`ALONG_NEAR`] of two of five points spread along it. A
+    /// leader so drawn is lost in the line it follows.
+    pub fn segment_runs_along_stroke(&self, a: Point, b: Point) -> bool {
+        let u = b - a;
+        let l = u.norm();
+        if l <= 0.0 {
+            return false;
+        }
+        let near = |s: Stroke| {
+            let v = s.b - s.a;
+            let lv = v.norm();
+            let parallel = lv > 0.0 && (u.cross(v) / (l * lv)).abs() < ALONG_SIN;
+            let close = |t: &&f64| {
+                let p = a + u * **t;
+                let k = ((p - s.a).dot(v) / (lv * lv)).clamp(0.0, 1.0);
+                (p - (s.a + v * k)).norm() < ALONG_NEAR
+            };
+            parallel && [0.1, 0.3, 0.5, 0.7, 0.9].iter().filter(close).count() >= 2
+        };
+        self.strokes.any_on_segment(a, b, near)
+    }
+
     /// Whether the segment `a`–`b` crosses any text box.
     pub fn segment_crosses_text(&self, a: Point, b: Point) -> bool {
         let clear = |t: Rect| t.inflate(LEADER_CLEAR, LEADER_CLEAR);
@@ -313,6 +336,12 @@ impl Obstacles {
         self.boxes.any_on_segment(a, b, meets)
     }
 }
+
+/// A stroke this near a leader's points, mm, and this near its direction (the sine of the
+/// angle, about 6°), runs along it ([`Obstacles::segment_runs_along_stroke`]): the two
+/// pens' half widths and a gap under 0.3 mm.
+const ALONG_NEAR: f64 = 0.6;
+const ALONG_SIN: f64 = 0.1;
 
 /// A leader passes a text's letters' box at least this far off, mm: one grazing the letters
 /// reads as a line through the label.

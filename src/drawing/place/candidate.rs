@@ -3,6 +3,7 @@
 
 use super::{CLEAR, Request};
 use crate::drawing::obstacles::Obstacles;
+use crate::num::math::Norm;
 use kurbo::{Point, Rect};
 
 /// A candidate's two tests against the fixed drawing, each asked at most once.
@@ -10,12 +11,21 @@ use kurbo::{Point, Rect};
 pub(super) struct Verdict {
     box_free: Option<bool>,
     leader_clear: Option<bool>,
+    leader_seen: Option<bool>,
 }
 
 impl Verdict {
     /// [`Candidate::box_is_free`] against `drawn`, remembered.
     pub(super) fn box_is_free(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
         *self.box_free.get_or_insert_with(|| c.box_is_free(drawn))
+    }
+
+    /// Whether its leader, if any, is short ([`SEEN_SHORT`]) or runs along no stroke of
+    /// `drawn` (where it would be lost in the line), remembered.
+    pub(super) fn leader_seen(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
+        *self.leader_seen.get_or_insert_with(|| {
+            c.leader.is_none_or(|(a, b)| (b - a).norm() < SEEN_SHORT || !drawn.segment_runs_along_stroke(a, b))
+        })
     }
 
     /// [`Candidate::is_free`] against `drawn`, remembered.
@@ -35,6 +45,10 @@ pub(super) struct Candidate {
     pub(super) leader: Option<(Point, Point)>,
     pub(super) cost: f64,
 }
+
+/// A leader shorter than this leaves its label beside its point, seen or lost in a line,
+/// mm: a label further off in the open on a longer leader reads no better.
+const SEEN_SHORT: f64 = 8.0;
 
 /// A line's name's leader is checked against the drawing from this far off its line, mm
 /// (drawn from the line itself, [`Labels::add_line_name`]).

@@ -203,19 +203,16 @@ impl Labels {
         let free: Vec<usize> =
             (0..self.requests.len()).map(|i| free_near_first(&mut spots[i], &self.requests[i], &drawn)).collect();
         order.sort_by_key(|&i| (self.requests[i].rank, free[i]));
-        // A label left without a clean spot goes first in the next round (labels placed
-        // before it took its spots), up to a few rounds; the best round is kept.
-        let mut best = self.attempt(&drawn, &mut spots, &order, bounds);
-        for _ in 0..REPAIR_ROUNDS {
-            let failed: Vec<usize> = order.iter().copied().filter(|&i| !best[i].1).collect();
-            if failed.is_empty() {
-                break;
-            }
-            order.retain(|i| !failed.contains(i));
-            order.splice(0..0, failed);
-            let next = self.attempt(&drawn, &mut spots, &order, bounds);
-            if next.iter().filter(|p| !p.1).count() < best.iter().filter(|p| !p.1).count() {
-                best = next;
+        // Leaders seen preferred; where that leaves a label without a clean spot, the
+        // rounds again taking each label's first free spot, and the one with fewer left
+        // kept: a leader lost in a line is better than a label on a line (a stress cam's
+        // r_min, moved to a seen leader, left e = … no spot but across its leader).
+        let failures = |placed: &[(Candidate, bool)]| placed.iter().filter(|p| !p.1).count();
+        let mut best = self.rounds(&drawn, &mut spots, order.clone(), bounds, true);
+        if failures(&best) > 0 {
+            let plain = self.rounds(&drawn, &mut spots, order, bounds, false);
+            if failures(&plain) < failures(&best) {
+                best = plain;
             }
         }
         let mut placed = Vec::with_capacity(best.len());
@@ -234,10 +231,46 @@ impl Labels {
         placed
     }
 
+    /// Greedy rounds from `order`: a label left without a clean spot goes first in the next
+    /// round (labels placed before it took its spots), up to a few rounds; the best round is
+    /// kept.
+    fn rounds(
+        &self,
+        drawn: &Obstacles,
+        spots: &mut [Spots],
+        mut order: Vec<usize>,
+        bounds: Rect,
+        prefer_seen: bool,
+    ) -> Vec<(Candidate, bool)> {
+        let mut best = self.attempt(drawn, spots, &order, bounds, prefer_seen);
+        for _ in 0..REPAIR_ROUNDS {
+            let failed: Vec<usize> = order.iter().copied().filter(|&i| !best[i].1).collect();
+            if failed.is_empty() {
+                break;
+            }
+            order.retain(|i| !failed.contains(i));
+            order.splice(0..0, failed);
+            let next = self.attempt(drawn, spots, &order, bounds, prefer_seen);
+            if next.iter().filter(|p| !p.1).count() < best.iter().filter(|p| !p.1).count() {
+                best = next;
+            }
+        }
+        best
+    }
+
     /// One greedy round in `order`: each label's candidate and whether it is clean. A
     /// candidate is free when it is free against the drawing (its verdict, remembered) and
     /// against the labels this round has placed.
-    fn attempt(&self, drawn: &Obstacles, spots: &mut [Spots], order: &[usize], bounds: Rect) -> Vec<(Candidate, bool)> {
+    /// With `prefer_seen`, a spot whose leader is seen goes before one lost in a line
+    /// ([`seen_spot`]).
+    fn attempt(
+        &self,
+        drawn: &Obstacles,
+        spots: &mut [Spots],
+        order: &[usize],
+        bounds: Rect,
+        prefer_seen: bool,
+    ) -> Vec<(Candidate, bool)> {
         let mut placed = Obstacles::empty_over(drawn.extent().map_or(bounds, |e| e.union(bounds)));
         let none = Candidate { r: Rect::ZERO, anchor: Point::ZERO, leader: None, cost: 0.0 };
         let mut out = vec![(none, false); self.requests.len()];
@@ -251,10 +284,13 @@ impl Labels {
             // takes a spot that reads as another side's only when none that does not is
             // free a few steps further.
             let free = |c: &Candidate, v: &mut Verdict| v.is_free(c, drawn) && c.is_free(&placed);
+            let box_free = |c: &Candidate, v: &mut Verdict| v.box_is_free(c, drawn) && c.box_is_free(&placed);
             let best = self
                 .unambiguous_spot(i, s, &free)
+                .or_else(|| prefer_seen.then(|| seen_spot(s, &free, drawn)).flatten())
+                .or_else(|| prefer_seen.then(|| seen_spot(s, &box_free, drawn)).flatten())
                 .or_else(|| first(s, &free))
-                .or_else(|| first(s, &|c, v| v.box_is_free(c, drawn) && c.box_is_free(&placed)));
+                .or_else(|| first(s, &box_free));
             let (cand, clear) = match best {
                 Some(c) => (c, true),
                 None => (least_bad(&s.all(), [drawn, &placed], &self.requests[i], bounds), false),
@@ -302,6 +338,35 @@ impl Labels {
         None
     }
 }
+
+/// A label's first spot that `fits` (free, or free but for thin lines its leader crosses)
+/// whose leader, if any, runs along no line of the drawing, looked for up to
+/// [`SEEN_LOOKAHEAD`] spots past the first that fits: a leader along a line is lost in it
+/// and its label seems to name nothing (the compressors' crank centre "O" hung 30 mm down
+/// its own centre line, the one way out of the fan of position lines a leader crossed no
+/// line by). None where there is none: a leader crossing thin lines, seen, is tried before
+/// one lost in a line.
+fn seen_spot(s: &mut Spots, fits: &dyn Fn(&Candidate, &mut Verdict) -> bool, drawn: &Obstacles) -> Option<Candidate> {
+    let mut last = usize::MAX;
+    for k in 0.. {
+        if k > last {
+            return None;
+        }
+        let (c, v) = s.get(k)?;
+        if !fits(c, v) {
+            continue;
+        }
+        if v.leader_seen(c, drawn) {
+            return Some(c.clone());
+        }
+        last = last.min(k + SEEN_LOOKAHEAD);
+    }
+    None
+}
+
+/// How many spots past its first that fits a label looks for one whose leader is seen: two
+/// rings of directions.
+const SEEN_LOOKAHEAD: usize = 2 * DIRECTIONS;
 
 /// How many spots past its first free one a side's name looks for one that is not nearer
 /// another side: two rings of directions.
