@@ -246,7 +246,9 @@ fn assert_no_short_side_on_a_polygon(name: &str, out: &tmm_sheets::sheets::Sheet
 /// 400 N/mm) and task 8 variant 20 (II(4,5): G₄, G₅ 0.1–0.2 mm) labelled them on their
 /// polygons. Task 1 variant 1 (the compressor: II(2,3)'s Rᵗ₁₂ and G₂ 1.6 mm at 250 N/mm)
 /// too, while II(4,5)'s enlargements stood beside it: only the polygons still knotted go
-/// apart, each cell as large as its drawing. Every polygon's labelled sides are now at
+/// apart, each cell as large as its drawing. Task 15 variant 3 (the automaton's II(2,3):
+/// four sides of 0.5–2.7 mm) too, its lever kept at 98 mm of the 125 it could grow to
+/// (three quarters). Every polygon's labelled sides are now at
 /// least [`SIDE_MIN`]; each
 /// enlargement apart is an SVG part `forces.group.2-3.L` of its own, outside its polygon's
 /// cell, with its letter's title in it and its letter ringed on the polygon.
@@ -254,7 +256,7 @@ fn assert_no_short_side_on_a_polygon(name: &str, out: &tmm_sheets::sheets::Sheet
 fn enlargements_with_no_room_beside_their_polygon_stand_in_cells_of_their_own() {
     use tmm_sheets::drawing::scene::Item;
     let bbox = |items: &[Item]| items.iter().map(Item::bbox).reduce(|a, b| a.union(b)).unwrap();
-    for (task, variant) in [("12", 1), ("12", 16), ("8", 20), ("1", 1)] {
+    for (task, variant) in [("12", 1), ("12", 16), ("8", 20), ("1", 1), ("15", 3)] {
         let name = format!("task {task} v{variant}");
         let out = common::catalogue_sheet1(task, variant, tmm_sheets::drawing::labels::Language::Uz);
         assert_no_short_side_on_a_polygon(&name, &out);

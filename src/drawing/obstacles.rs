@@ -306,8 +306,8 @@ impl Obstacles {
     }
 
     /// Whether a stroke runs along the segment `a`–`b` over a stretch: nearly parallel to it
-    /// ([`ALONG_SIN`]) and within [`ALONG_NEAR`] of two of five points spread along it. A
-    /// leader so drawn is lost in the line it follows.
+    /// (within about 6°) and within 0.6 mm of two of five points spread along it. A leader so
+    /// drawn is lost in the line it follows.
     pub fn segment_runs_along_stroke(&self, a: Point, b: Point) -> bool {
         let u = b - a;
         let l = u.norm();
@@ -338,7 +338,7 @@ impl Obstacles {
 }
 
 /// A stroke this near a leader's points, mm, and this near its direction (the sine of the
-/// angle, about 6°), runs along it ([`Obstacles::segment_runs_along_stroke`]): the two
+/// angle, about 6°), runs along it (`Obstacles::segment_runs_along_stroke`): the two
 /// pens' half widths and a gap under 0.3 mm.
 const ALONG_NEAR: f64 = 0.6;
 const ALONG_SIN: f64 = 0.1;

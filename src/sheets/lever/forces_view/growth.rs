@@ -63,14 +63,22 @@ pub(super) fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): 
                 let lever_floor = (largest_lever_mm(inp, bodies, sizes) * LEVER_KEPT).min(LEVER_KEPT_ABOVE);
                 let lever_kept =
                     |a: &Arranged| largest_lever_mm(inp, bodies, a.3) >= lever_floor - crate::num::tol::PAPER;
-                // Only the polygons the enlargements beside them left knotted first, the others
-                // as enlarged there; then every polygon's apart.
+                // Only the polygons the enlargements beside them left knotted, the others as
+                // enlarged there, or every polygon's apart; each at 40 mm or 25 mm: of those
+                // that pack, the one whose lever grows largest (on a tie the first; task 8
+                // variant 20's lever kept 121 mm with 25 mm enlargements, 91 with 40 mm).
                 let beside = first.as_ref().map_or(0, |a| a.3.grow);
                 let knotted = knotted_polygons(inp, first.as_ref().map_or(&cells, |a| &a.0));
                 let all = (1u64 << count) - 1;
                 let masks = [(beside, knotted), (0, all)];
                 let keep = |a: &Arranged| readable(a) && lever_kept(a);
-                masks.into_iter().find_map(|(grow, mask)| apart(inp, bodies, Sizes { grow, ..sizes }, mask, keep))
+                let found =
+                    masks.into_iter().flat_map(|(grow, mask)| apart(inp, bodies, Sizes { grow, ..sizes }, mask, keep));
+                let lever = |a: &Arranged| largest_lever_mm(inp, bodies, a.3);
+                found
+                    .map(|a| (lever(&a), a))
+                    .reduce(|a, b| if b.0 > a.0 + crate::num::tol::PAPER { b } else { a })
+                    .map(|(_, a)| a)
             }
         {
             return apart;
@@ -101,8 +109,10 @@ const ENLARGE_SHRUNK_MOST: f64 = 0.8;
 
 /// The least share of the lever it would grow to without them that the enlargements in
 /// cells of their own may leave it, where it is under [`LEVER_KEPT_ABOVE`]: task 12 variant
-/// 10's lever went from 87 to 52 mm, a knot of a dozen arrows for the polygon's knot undone.
-const LEVER_KEPT: f64 = 0.8;
+/// 10's lever went from 87 to 52 mm, a knot of a dozen arrows for the polygon's knot undone
+/// (at 0.8, task 15 variant 3's II(2,3) kept sides of 0.5–2.7 mm on its polygon for a lever
+/// of 98 mm against 125).
+const LEVER_KEPT: f64 = 0.75;
 const LEVER_KEPT_ABOVE: f64 = 100.0;
 
 /// The Zhukovsky lever's longer side on paper once it grows as large as the cells at
@@ -158,18 +168,19 @@ fn grown(inp: &ForcesInput, bodies: &Bodies, sizes: Sizes, count: usize) -> Opti
     None
 }
 
-/// The cells with every polygon's enlargements in the room its cell leaves or in cells of
-/// their own, if they pack, no polygon labels a short side on itself and the drawings stay
-/// `readable`: at `sizes`, else with the drawings a step smaller (as [`finer`] shrinks them
-/// for enlargements beside the polygons), the enlargements at their full box first, the
-/// finer series first.
+/// The cells with the `mask` polygons' enlargements in cells of their own (the others' as
+/// `sizes` places them), where they pack, no polygon labels a short side on itself and the
+/// drawings stay `readable`: at `sizes`, else with the drawings a step smaller (as [`finer`]
+/// shrinks them for enlargements beside the polygons), the finer series first — the first
+/// found with the enlargements at their full box and the first at the cramped one.
 fn apart(
     inp: &ForcesInput,
     bodies: &Bodies,
     sizes: Sizes,
     mask: u64,
     readable: impl Fn(&Arranged) -> bool,
-) -> Option<Arranged> {
+) -> Vec<Arranged> {
+    let mut found = Vec::new();
     for inset_box in [inset::INSET_BOX, inset::INSET_BOX_CRAMPED] {
         for base in shrink_steps(Sizes { inset_box, apart: mask, ..sizes }) {
             let packed = [true, false].into_iter().find_map(|fine| {
@@ -181,15 +192,13 @@ fn apart(
                 }
             });
             // Smaller drawings only get less readable: the next box size, if any.
-            if let Some(found) = packed {
-                if readable(&found) {
-                    return Some(found);
-                }
+            if let Some(packed) = packed {
+                found.extend(readable(&packed).then_some(packed));
                 break;
             }
         }
     }
-    None
+    found
 }
 
 /// The largest box the lever is tried at, mm: beyond it its arrows stay at most
