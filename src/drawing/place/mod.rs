@@ -321,22 +321,33 @@ impl Labels {
         let own = self.requests[i].side?;
         let others = || self.requests.iter().enumerate().filter(move |&(j, _)| j != i).filter_map(|(_, r)| r.side);
         others().next()?;
-        let mut last = usize::MAX;
-        for k in 0.. {
-            if k > last {
-                return None;
-            }
-            let (c, v) = s.get(k)?;
-            if !free(c, v) {
-                continue;
-            }
-            if unambiguous(c, own, others()) {
-                return Some(c.clone());
-            }
-            last = last.min(k + AMBIGUITY_LOOKAHEAD);
-        }
-        None
+        first_preferred(s, free, |c, _| unambiguous(c, own, others()), AMBIGUITY_LOOKAHEAD)
     }
+}
+
+/// The first of a label's spots that `fits` and that `prefer` accepts, looked for up to
+/// `lookahead` spots past the first that fits; none where there is none.
+fn first_preferred(
+    s: &mut Spots,
+    fits: &dyn Fn(&Candidate, &mut Verdict) -> bool,
+    mut prefer: impl FnMut(&Candidate, &mut Verdict) -> bool,
+    lookahead: usize,
+) -> Option<Candidate> {
+    let mut last = usize::MAX;
+    for k in 0.. {
+        if k > last {
+            return None;
+        }
+        let (c, v) = s.get(k)?;
+        if !fits(c, v) {
+            continue;
+        }
+        if prefer(c, v) {
+            return Some(c.clone());
+        }
+        last = last.min(k + lookahead);
+    }
+    None
 }
 
 /// A label's first spot that `fits` (free, or free but for thin lines its leader crosses)
@@ -347,21 +358,7 @@ impl Labels {
 /// line by). None where there is none: a leader crossing thin lines, seen, is tried before
 /// one lost in a line.
 fn seen_spot(s: &mut Spots, fits: &dyn Fn(&Candidate, &mut Verdict) -> bool, drawn: &Obstacles) -> Option<Candidate> {
-    let mut last = usize::MAX;
-    for k in 0.. {
-        if k > last {
-            return None;
-        }
-        let (c, v) = s.get(k)?;
-        if !fits(c, v) {
-            continue;
-        }
-        if v.leader_seen(c, drawn) {
-            return Some(c.clone());
-        }
-        last = last.min(k + SEEN_LOOKAHEAD);
-    }
-    None
+    first_preferred(s, fits, |c, v| v.leader_seen(c, drawn), SEEN_LOOKAHEAD)
 }
 
 /// How many spots past its first that fits a label looks for one whose leader is seen: two
