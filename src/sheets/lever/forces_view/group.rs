@@ -131,7 +131,9 @@ pub(super) fn group_layout(
     let (poly_w, poly_h) = (chain_box.width() / mu_p + 2.0 * POLY_PAD, chain_box.height() / mu_p + 2.0 * POLY_PAD);
     let poly_size = (poly_w, poly_h);
     let arrangement = Arrangement { drawing: (drawing_w, drawing_h), stacked };
-    let (insets, place, w, body_h) = with_insets(poly, (&chain, mu_p), arrangement, poly_size, (enlarge, inset_box));
+    let title_w = |mu: f64| inset::title_width(inp, mu);
+    let (insets, place, w, body_h) =
+        with_insets(poly, (&chain, mu_p), arrangement, poly_size, (enlarge, inset_box, &title_w));
     let equation = equation_lines(inp, poly, w - 4.0);
     let legend = group_legend(inp, poly, mu_f, w - 4.0);
     let text_lines = equation.len() + legend.len() + SCALE_LINES;
@@ -189,11 +191,11 @@ fn with_insets(
     (chain, mu_p): (&[Vec2], f64),
     arrangement: Arrangement,
     poly_size: (f64, f64),
-    (enlarge, inset_box): (Enlarge, f64),
+    (enlarge, inset_box, title_w): (Enlarge, f64, &dyn Fn(f64) -> f64),
 ) -> (Vec<Inset>, Place, f64, f64) {
     let room = arrangement.room(poly_size);
     let (w, body_h) = arrangement.cell(room);
-    let runs = inset::Runs::of(poly, chain, mu_p, inset_box);
+    let runs = inset::Runs::of(poly, chain, (mu_p, inset_box), title_w);
     if runs.is_empty() {
         return (Vec::new(), Place::None, w, body_h);
     }

@@ -98,15 +98,23 @@ fn short(poly: &Polygon, k: usize, mu_p: f64) -> bool {
 
 /// The runs of short sides of `poly` at `mu_p` (`chain` its vertices from its start), each
 /// with its box (N) and its longest side.
-pub(super) struct Runs {
+pub(super) struct Runs<'a> {
     runs: Vec<(Vec<usize>, Rect, f64)>,
     mu_p: f64,
     /// The enlarged run's longer side at most, mm.
     inset_box: f64,
+    /// An enlargement's title's width at its μ_P ([`title_width`]), mm: a cell of its own
+    /// holds it [`TITLE_SIDE`] inside each side.
+    title_w: &'a dyn Fn(f64) -> f64,
 }
 
-impl Runs {
-    pub(super) fn of(poly: &Polygon, chain: &[Vec2], mu_p: f64, inset_box: f64) -> Runs {
+impl<'a> Runs<'a> {
+    pub(super) fn of(
+        poly: &Polygon,
+        chain: &[Vec2],
+        (mu_p, inset_box): (f64, f64),
+        title_w: &'a dyn Fn(f64) -> f64,
+    ) -> Runs<'a> {
         let n = poly.terms.len();
         let runs = runs(poly, mu_p)
             .into_iter()
@@ -117,7 +125,7 @@ impl Runs {
                 (terms, world, longest)
             })
             .collect();
-        Runs { runs, mu_p, inset_box }
+        Runs { runs, mu_p, inset_box, title_w }
     }
 
     pub(super) fn is_empty(&self) -> bool {
@@ -167,7 +175,11 @@ impl Runs {
         // hundred newtons left most of its full slot empty, and the smaller cells pack where
         // the full ones found no room (task 1 variant 1's II(2,3) kept Rᵗ₁₂ and G₂ 1.6 mm long
         // on its polygon).
-        Some(full.into_iter().map(|inset| Inset { slot: tight_slot(&inset), ..inset }).collect())
+        Some(
+            full.into_iter()
+                .map(|inset| Inset { slot: tight_slot(&inset, (self.title_w)(inset.mu)), ..inset })
+                .collect(),
+        )
     }
 
     /// Each run enlarged in its slot `slot(i)`: `None` unless every run gets one that
@@ -197,10 +209,25 @@ impl Runs {
 }
 
 /// The slot that holds an enlargement's drawing at its μ_P with room for its labels, its
-/// stubs and its title, from its cell's top left.
-fn tight_slot(inset: &Inset) -> Rect {
+/// stubs and its title (`title_w` wide, [`TITLE_SIDE`] inside each side, so that two
+/// cells side by side keep their titles apart), from its cell's top left.
+fn tight_slot(inset: &Inset, title_w: f64) -> Rect {
     let (w, h) = (inset.world.width() / inset.mu, inset.world.height() / inset.mu);
-    Rect::new(0.0, 0.0, (w + 2.0 * PAD).max(SLOT_MIN_W), h + 2.0 * PAD + TITLE)
+    Rect::new(0.0, 0.0, (w + 2.0 * PAD).max(SLOT_MIN_W).max(title_w + 2.0 * TITLE_SIDE), h + 2.0 * PAD + TITLE)
+}
+
+/// An enlargement's title at `mu` with its letter `letter`: "K (", then "μP = … N/mm)".
+fn title(inp: &ForcesInput, letter: &str, mu: f64) -> (LabelText, LabelText) {
+    let mut scale = scale_item(inp, "P", mu, inp.words.common.unit_n_per_mm());
+    scale.tail.push(')');
+    (LabelText::new(letter, "").with_tail(" ("), scale)
+}
+
+/// The width of an enlargement's title at `mu` (3.5 mm lettering), mm, its letter as wide as
+/// the widest single capital: its letter is given when it is drawn.
+pub(super) fn title_width(inp: &ForcesInput, mu: f64) -> f64 {
+    let (name, scale) = title(inp, "W", mu);
+    name.width(3.5) + scale.width(3.5)
 }
 
 /// The runs of consecutive short sides, each its terms in chain order.
@@ -321,19 +348,21 @@ pub(super) fn draw(
         // The title just over the drawing (stubs included) and over its left edge and its
         // labels' room, not at the slot's top left: there "K (μP = …)" stood under the
         // polygon's last labels, nearer the polygon than its own drawing.
-        let title = LabelText::new(letter, "").with_tail(" (");
-        let mut mu = scale_item(inp, "P", inset.mu, inp.words.common.unit_n_per_mm());
-        mu.tail.push(')');
-        let title_w = title.width(3.5) + mu.width(3.5);
+        let (title, mu) = title(inp, letter, inset.mu);
+        // In GOST 2.304's next smaller size where 3.5 mm lettering is wider than its slot:
+        // side by side under a polygon, two titles ran together ("L (μP = 12.5 N/mm)T (…").
+        let fits = |h: f64| title.width(h) + mu.width(h) + 2.0 * TITLE_SIDE <= slot.width();
+        let h = if fits(3.5) { 3.5 } else { 2.5 };
+        let title_w = title.width(h) + mu.width(h);
         let left = area.center().x - inset.world.width() / inset.mu / 2.0 - PAD;
         let top = stubs.iter().flat_map(|&(a, b)| [a.y, b.y]).fold(p(Vec2::new(0.0, inset.world.y1)).y, f64::min);
         let at = Point::new(
             left.min(slot.x1 - TITLE_SIDE - title_w).max(slot.x0 + TITLE_SIDE),
             (top - TITLE_GAP).max(slot.y0 + 4.0),
         );
-        title.draw(g, at, 3.5, Anchor::Start);
+        title.draw(g, at, h, Anchor::Start);
         // Set where the title's advance ends: its box's slant would leave a gap after "(".
-        mu.draw(g, Point::new(at.x + title.width(3.5), at.y), 3.5, Anchor::Start);
+        mu.draw(g, Point::new(at.x + title.width(h), at.y), h, Anchor::Start);
         // The drawing's labels keep clear of the whole title, the room under its scale's
         // text beside the subscript included.
         for k in 0..=(title_w / 2.0).ceil() as usize {
