@@ -61,8 +61,6 @@ pub(super) fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): 
             && let Some(apart) = {
                 // The lever keeps [`LEVER_KEPT`] of what it grows to without them.
                 let lever_floor = (largest_lever_mm(inp, bodies, sizes) * LEVER_KEPT).min(LEVER_KEPT_ABOVE);
-                let lever_kept =
-                    |a: &Arranged| largest_lever_mm(inp, bodies, a.3) >= lever_floor - crate::num::tol::PAPER;
                 // Only the polygons the enlargements beside them left knotted, the others as
                 // enlarged there, or every polygon's apart; each at 40 mm or 25 mm: of those
                 // that pack, the one whose lever grows largest (on a tie the first; task 8
@@ -71,14 +69,13 @@ pub(super) fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): 
                 let knotted = knotted_polygons(inp, first.as_ref().map_or(&cells, |a| &a.0));
                 let all = (1u64 << count) - 1;
                 let masks = [(beside, knotted), (0, all)];
-                let keep = |a: &Arranged| readable(a) && lever_kept(a);
-                let found =
-                    masks.into_iter().flat_map(|(grow, mask)| apart(inp, bodies, Sizes { grow, ..sizes }, mask, keep));
-                let lever = |a: &Arranged| largest_lever_mm(inp, bodies, a.3);
-                found
-                    .map(|a| (lever(&a), a))
-                    .reduce(|a, b| if b.0 > a.0 + crate::num::tol::PAPER { b } else { a })
-                    .map(|(_, a)| a)
+                // Each lever measured once: the floor and the choice read the same length.
+                let found = masks
+                    .into_iter()
+                    .flat_map(|(grow, mask)| apart(inp, bodies, Sizes { grow, ..sizes }, mask, readable))
+                    .map(|a| (largest_lever_mm(inp, bodies, a.3), a))
+                    .filter(|(lever, _)| *lever >= lever_floor - crate::num::tol::PAPER);
+                found.reduce(|a, b| if b.0 > a.0 + crate::num::tol::PAPER { b } else { a }).map(|(_, a)| a)
             }
         {
             return apart;

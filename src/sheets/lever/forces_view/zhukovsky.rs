@@ -34,21 +34,22 @@ pub(super) fn balancing_image(inp: &ForcesInput) -> Vec2 {
 pub(super) fn lever_extent(inp: &ForcesInput, plan: &Plan, mu: f64, mu_f: f64) -> Rect {
     // Twins are found on paper, the pole at the origin.
     let view = View::new(Point::ZERO, mu);
-    let push = lever_push(inp, plan, &view, mu_f);
-    let rows = twin_rows(forces_on_paper(inp, &view), Some(&push), mu_f);
+    let forces = on_paper(&lever_forces(inp), &view);
+    let push = lever_push(plan, &view, &forces, mu_f);
+    let rows = twin_rows(forces, Some(&push), mu_f);
     let world = |p: Point| Point::new(p.x * mu, -p.y * mu);
     rows.iter().map(|&(at, d, reach)| world(at + d * reach)).fold(plan_bbox(plan), |r, p| r.union_pt(p))
 }
 
-/// The lever's forces at their images on paper by `view`: each's point and direction.
-fn forces_on_paper(inp: &ForcesInput, view: &View) -> Vec<(Point, Vec2)> {
-    lever_forces(inp).iter().map(|(at, force, _)| (view.p(*at), view.dir(*force))).collect()
+/// The lever's `forces` at their images on paper by `view`: each's point and direction.
+fn on_paper(forces: &[(Vec2, Vec2, LabelText)], view: &View) -> Vec<(Point, Vec2)> {
+    forces.iter().map(|(at, force, _)| (view.p(*at), view.dir(*force))).collect()
 }
 
 /// What the lever's twins drawn pushing keep clear of on paper by `view` (see [`Push`]):
-/// the plan's lines and points, every force and the box the arrows reach slid.
-fn lever_push(inp: &ForcesInput, plan: &Plan, view: &View, mu_f: f64) -> Push {
-    let forces = forces_on_paper(inp, view);
+/// the plan's lines and points, every force (`forces` on paper) and the box the arrows
+/// reach slid.
+fn lever_push(plan: &Plan, view: &View, forces: &[(Point, Vec2)], mu_f: f64) -> Push {
     let bb = plan_bbox(plan);
     let plan_box = Rect::from_points(view.p(bb.origin().to_vec2()), view.p(Vec2::new(bb.x1, bb.y1)));
     let slid = twin_rows(forces.iter().copied(), None, mu_f);
@@ -127,9 +128,10 @@ pub(super) fn draw_lever(
     let pole = draw_plan(g, &cell, labels);
     let view = View::new(pole, mu);
     let at = |v: Vec2| view.p(v);
-    let push = Some(lever_push(inp, plan, &view, mu_f));
+    let forces = lever_forces(inp);
+    let push = Some(lever_push(plan, &view, &on_paper(&forces, &view), mu_f));
     let mut arrows = Arrows { view, links: Vec::new(), push, blocks: Vec::new(), drawn: Vec::new(), mu_f, h: 2.5 };
-    for (image, force, label) in lever_forces(inp) {
+    for (image, force, label) in forces {
         arrows.arrow(g, labels, at(image), force, label);
     }
     let lang = inp.words.lang;
