@@ -16,7 +16,7 @@ use super::labels::LeverWords;
 use super::mechanism_place::{MechanismPlace, mechanism_group, mechanism_place};
 use super::note_tables::{NoteTables, note_tables, sheet_table, tables_group, with_units};
 pub use super::plan_regions::PlanDrawn;
-use super::plan_regions::{PlansRegion, Twins, plans_group, split_plans};
+use super::plan_regions::{LARGEST_PLAN, PlansRegion, Twins, plans_group, split_plans};
 use super::plans_view::Sizing;
 use super::segments;
 use crate::drawing::fmt;
@@ -217,16 +217,22 @@ fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> 
     // widest's refusal, as when it was drawn first.
     title_block_refusal(inp, &widest)?;
     let smallest = widest.smallest_plan_mm(plans).unwrap_or(0.0);
+    let largest = widest.largest_plan_mm(plans);
     let mut narrower = Vec::new();
     for &w in &FORCES_WIDTHS[1..] {
         let next = arrange(w, &memo)?;
         let grown = next.smallest_plan_mm(plans).unwrap_or(0.0);
+        let larger = next.largest_plan_mm(plans);
         if next.mech.comfortable {
-            narrower.push((grown, (w, next)));
+            narrower.push(((grown, larger), (w, next)));
         }
     }
-    narrower.sort_by(|a, b| b.0.total_cmp(&a.0));
-    let (growing, rest): (Vec<_>, Vec<_>) = narrower.into_iter().partition(|(grown, _)| *grown > 1.1 * smallest);
+    narrower.sort_by(|a, b| b.0.0.total_cmp(&a.0.0));
+    // A narrower column takes the plans' room where their smallest grows by a tenth; where
+    // only the smaller kind's largest plan under LARGEST_PLAN grows by a tenth, it does so
+    // if the force drawings keep the widest's floors (a lever halved for it was worse).
+    let (growing, rest): (Vec<_>, Vec<_>) = narrower.into_iter().partition(|((grown, _), _)| *grown > 1.1 * smallest);
+    let (larger, rest): (Vec<_>, Vec<_>) = rest.into_iter().partition(|((_, larger), _)| *larger > 1.1 * largest);
     let narrow = |next| {
         if v.widen {
             widen::widened(|w| arrange(w, &memo), |a| draw(inp, k, plans, a), next)
@@ -242,9 +248,16 @@ fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> 
     }
     let widest = draw(inp, k, plans, widest)?;
     if widest.layout.is_clean() {
+        let floors = Floors::of(&widest);
+        for (_, next) in larger {
+            let drawn = narrow(next)?;
+            if drawn.layout.is_clean() && floors.kept(&drawn) {
+                return Ok(drawn);
+            }
+        }
         return Ok(widest);
     }
-    for (_, next) in rest {
+    for (_, next) in larger.into_iter().chain(rest) {
         let drawn = narrow(next)?;
         if drawn.layout.is_clean() {
             return Ok(drawn);
@@ -300,6 +313,14 @@ struct Arrangement<'a> {
 
 impl Arrangement<'_> {
     /// The largest side of the smallest plan, mm (as the drawn plans will have it).
+    /// The smaller of the two kinds' largest plans, mm, up to [`LARGEST_PLAN`] (the
+    /// velocity plans' alone without acceleration plans).
+    fn largest_plan_mm(&self, plans: &PlansOf) -> f64 {
+        let v = self.vsizing.largest(&plans.velocity.plans);
+        let a = if plans.acceleration.plans.is_empty() { v } else { self.asizing.largest(&plans.acceleration.plans) };
+        v.min(a).min(LARGEST_PLAN)
+    }
+
     fn smallest_plan_mm(&self, plans: &PlansOf) -> Option<f64> {
         let drawn =
             self.vsizing.drawn(&plans.velocity.plans).into_iter().chain(self.asizing.drawn(&plans.acceleration.plans));
