@@ -6,11 +6,30 @@
 mod common;
 
 use common::{fixture, fixture_names};
+use std::sync::OnceLock;
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::drawing::layout::texts_near_lines;
-use tmm_sheets::drawing::scene::{Group, Item};
+use tmm_sheets::drawing::scene::{Group, Item, MAIN, Scene, VECTOR};
 use tmm_sheets::num::math::Norm;
 use tmm_sheets::pipeline;
+
+/// Every fixture's sheets in the three languages, built once for this file's tests:
+/// (fixture, language, scenes).
+fn fixture_scenes() -> &'static [(String, Language, Vec<Scene>)] {
+    static BUILT: OnceLock<Vec<(String, Language, Vec<Scene>)>> = OnceLock::new();
+    BUILT.get_or_init(|| {
+        let mut built = Vec::new();
+        for name in fixture_names() {
+            for lang in [Language::Uz, Language::Ru, Language::En] {
+                let mut p = fixture(&name);
+                p.info.language = lang;
+                let scenes = pipeline::build(&p, &[]).unwrap().into_iter().map(|b| b.output.scene).collect();
+                built.push((name.clone(), lang, scenes));
+            }
+        }
+        built
+    })
+}
 
 /// From a label's letters' box to the nearest line's centre, mm, at least.
 const CLEARANCE: f64 = 0.4;
@@ -24,12 +43,9 @@ fn in_a_table(g: &Group, item: usize) -> bool {
 fn every_label_stands_clear_of_the_lines_on_every_fixture_in_every_language() {
     let mut near = Vec::new();
     let mut checked = 0;
-    for name in fixture_names() {
-        for lang in [Language::Uz, Language::Ru, Language::En] {
-            let mut p = fixture(&name);
-            p.info.language = lang;
-            for b in pipeline::build(&p, &[]).unwrap() {
-                let scene = &b.output.scene;
+    for (name, lang, scenes) in fixture_scenes() {
+        {
+            for scene in scenes {
                 checked += scene.texts().count();
                 for (gi, ii) in texts_near_lines(scene, CLEARANCE) {
                     let g = &scene.groups[gi];
@@ -109,12 +125,10 @@ fn hidden_leaders(scene: &tmm_sheets::drawing::scene::Scene) -> (usize, Vec<Stri
 #[test]
 fn no_leader_runs_hidden_along_a_line_on_any_fixture() {
     let (mut leaders, mut hidden) = (0, Vec::new());
-    for name in fixture_names() {
-        for lang in [Language::Uz, Language::Ru, Language::En] {
-            let mut p = fixture(&name);
-            p.info.language = lang;
-            for b in pipeline::build(&p, &[]).unwrap() {
-                let (n, h) = hidden_leaders(&b.output.scene);
+    for (name, lang, scenes) in fixture_scenes() {
+        {
+            for scene in scenes {
+                let (n, h) = hidden_leaders(scene);
                 leaders += n;
                 hidden.extend(h.into_iter().map(|h| format!("{name} {lang:?} {h}")));
             }
@@ -122,4 +136,77 @@ fn no_leader_runs_hidden_along_a_line_on_any_fixture() {
     }
     assert!(leaders > 100, "only {leaders} leaders");
     assert!(hidden.is_empty(), "{} of {leaders} leaders run along a line:\n{}", hidden.len(), hidden.join("\n"));
+}
+
+/// A force arrow's shaft is hidden in a link where it runs within this of the link's
+/// centre line, mm (the two pens' half widths, 0.225 + 0.35, and a hair).
+const MERGED: f64 = 0.7;
+/// The most of a shaft that may run merged into a link, mm: an arrow crossing a link at a
+/// joint merges for a millimetre; one 12° off its link (the four-bar's P_i2) for 3.4 mm
+/// and reads as drawn along the link.
+const MERGED_MOST: f64 = 3.0;
+
+/// The force arrows (shafts in the vector pen) of the force drawings that run merged into
+/// a link (a line in the main pen) of their drawing over more than [`MERGED_MOST`], each
+/// named; and how many shafts were checked.
+fn arrows_in_links(scene: &Scene) -> (usize, Vec<String>) {
+    let (mut shafts, mut merged) = (0, Vec::new());
+    for g in scene.groups.iter().filter(|g| g.id.contains("forces")) {
+        let lines_of = |pen| -> Vec<(usize, Vec<kurbo::Point>)> {
+            (g.items.iter().enumerate())
+                .filter_map(|(k, item)| common::path_points(item).filter(|(_, p)| *p == pen).map(|(pts, _)| (k, pts)))
+                .collect()
+        };
+        let links: Vec<(kurbo::Point, kurbo::Point)> = lines_of(MAIN)
+            .iter()
+            .flat_map(|(_, pts)| pts.windows(2).map(|w| (w[0], w[1])).collect::<Vec<_>>())
+            .collect();
+        // Links and arrows are parts of one drawing: each part's own, else the group's.
+        let part_of = |k: usize| g.parts.iter().position(|p| p.items.contains(&k));
+        for (k, pts) in lines_of(VECTOR) {
+            let [a, b] = [pts[0], pts[pts.len() - 1]];
+            let u = b - a;
+            let len = u.norm();
+            if len < MERGED_MOST {
+                continue;
+            }
+            shafts += 1;
+            let steps = (len / 0.1).ceil() as usize;
+            let near = |p: kurbo::Point| {
+                links.iter().any(|&(c, d)| {
+                    let v = d - c;
+                    let s = ((p - c).dot(v) / v.hypot2().max(1e-12)).clamp(0.0, 1.0);
+                    (p - (c + v * s)).norm() < MERGED
+                })
+            };
+            let hidden =
+                (0..=steps).filter(|&i| near(a + u * (i as f64 / steps as f64))).count() as f64 * len / steps as f64;
+            if hidden > MERGED_MOST {
+                let part = part_of(k).map_or(g.id.clone(), |i| g.parts[i].id.clone());
+                merged.push(format!(
+                    "'{part}' arrow ({:.1}, {:.1})–({:.1}, {:.1}): {hidden:.1} mm in a link",
+                    a.x, a.y, b.x, b.y
+                ));
+            }
+        }
+    }
+    (shafts, merged)
+}
+
+/// A force arrow is seen beside the link it acts on, not drawn into it: where a force
+/// points nearly along its link (an inertia force along a connecting rod, a weight along a
+/// vertical slider's rod), the arrow is set beside the link, on the side it leaves it
+/// toward. Every fixture's sheets in the three languages.
+#[test]
+fn no_force_arrow_runs_inside_a_link_on_any_fixture() {
+    let (mut shafts, mut merged) = (0, Vec::new());
+    for (name, lang, scenes) in fixture_scenes() {
+        for scene in scenes {
+            let (n, m) = arrows_in_links(scene);
+            shafts += n;
+            merged.extend(m.into_iter().map(|m| format!("{name} {lang:?} {m}")));
+        }
+    }
+    assert!(shafts > 100, "only {shafts} arrows");
+    assert!(merged.is_empty(), "{} of {shafts} arrows run inside a link:\n{}", merged.len(), merged.join("\n"));
 }
