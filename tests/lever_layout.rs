@@ -5,6 +5,7 @@
 mod common;
 
 use common::{fixture, fixture_names};
+use tmm_sheets::drawing::scene::Item;
 use tmm_sheets::pipeline;
 
 /// The lever's longer side on every fixture at least, mm: its arms are what P′ₘ is read by
@@ -457,4 +458,45 @@ fn a_strokes_value_is_written_along_its_dimension_line() {
         });
         assert!(along, "no dimension line along {bb:?}");
     }
+}
+
+/// The force analysis's title ("Kinetostatic analysis of the mechanism, φ₁ = 60.0°") heads
+/// its drawings: where a group, the crank or the lever goes beside the mechanism, the title
+/// goes there with it (the kulisa's and the jaw crusher's groups and the offset
+/// crank-slider's lever stood above it, at the sheet's top, with the title under the
+/// mechanism). Every fixture: no force drawing starts above the title's foot.
+#[test]
+fn no_force_drawing_stands_above_the_force_analysis_title() {
+    let mut above = Vec::new();
+    let mut beside = 0;
+    for name in fixture_names() {
+        let built = pipeline::build(&fixture(&name), &[1]).unwrap();
+        let scene = &built[0].output.scene;
+        let groups: Vec<_> = scene.groups.iter().filter(|g| g.id.starts_with("forces")).collect();
+        if groups.is_empty() {
+            continue;
+        }
+        let (title_group, title) = (groups.iter())
+            .flat_map(|g| g.items.iter().map(move |i| (g.id.as_str(), i)))
+            .find_map(|(id, i)| match i {
+                Item::Text(t) if t.h == 5.0 && t.plain().contains('φ') => Some((id, t.bbox())),
+                _ => None,
+            })
+            .unwrap_or_else(|| panic!("{name}: no force analysis title"));
+        beside += usize::from(title_group == "forces-beside-mechanism");
+        for g in &groups {
+            for part in g
+                .parts
+                .iter()
+                .filter(|p| ["forces.group", "forces.crank", "forces.lever"].iter().any(|k| p.id.starts_with(k)))
+            {
+                let top = part.items.clone().map(|k| g.items[k].bbox().y0).fold(f64::MAX, f64::min);
+                if top < title.y1 {
+                    above.push(format!("{name}: '{}' from {top:.1}, the title's foot at {:.1}", part.id, title.y1));
+                }
+            }
+        }
+    }
+    assert!(above.is_empty(), "force drawings above their title:\n{}", above.join("\n"));
+    assert!(beside >= 2, "the title beside the mechanism on {beside} fixtures");
 }

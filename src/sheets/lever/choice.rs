@@ -2,8 +2,8 @@
 //! (its [`Floors`]) and how empty a sheet may be before fuller variants are tried.
 
 use super::compose::Composed;
-use super::forces_view::DRAWING_READABLE;
 use super::forces_view::SIDE_MIN as POLYGON_SIDE_MIN;
+use super::forces_view::{DRAWING_READABLE, LEVER_READABLE};
 
 /// The share of empty 20 mm cells above which a sheet is too empty (issue 22's bound).
 pub(super) const EMPTY_MOST: f64 = 0.5;
@@ -80,7 +80,3 @@ fn drawing_mm(c: &Composed) -> f64 {
 fn lever_mm(c: &Composed) -> f64 {
     c.force_scales.as_ref().map_or(0.0, |f| f.lever_mm)
 }
-
-/// A Zhukovsky lever this long reads its arms and forces plainly, mm: the larger lettering
-/// may take the rest of the lever's growth.
-const LEVER_READABLE: f64 = 100.0;

@@ -219,6 +219,8 @@ pub(super) struct Bodies {
     /// Whether the layout puts its tables beside the mechanism where they fit: then tables
     /// 3–5 may also stand two over one, and the polygons grow one by one.
     pub(super) beside: bool,
+    /// The body beside the mechanism, if any.
+    pub(super) side: Option<usize>,
 }
 
 /// Whether the tables among `cells` placed `at` stand in one body, each within a gap of

@@ -100,6 +100,10 @@ fn shrink_steps(sizes: Sizes) -> impl Iterator<Item = Sizes> {
 /// enlargements, nor does a fuller composition shrink them below it (`choice::Floors`).
 pub(in crate::sheets::lever) const DRAWING_READABLE: f64 = 80.0;
 
+/// A Zhukovsky lever this long reads its arms and forces plainly, mm: the larger lettering
+/// may take the rest of the lever's growth.
+pub(in crate::sheets::lever) const LEVER_READABLE: f64 = 100.0;
+
 /// The least share of its size a drawing under [`DRAWING_READABLE`] keeps where the
 /// drawings shrink to make room for every polygon's enlargements (two of the 0.9 steps).
 const ENLARGE_SHRUNK_MOST: f64 = 0.8;

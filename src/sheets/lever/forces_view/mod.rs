@@ -27,7 +27,7 @@ use crate::lever::linkage::{Mechanism, State};
 use crate::report::{AnswerKeys, Segment};
 pub use cells::CellMemo;
 use cells::{Bodies, Cell, Content, GROWN_POLYGONS, Sizes, cells, pack};
-pub(super) use growth::DRAWING_READABLE;
+pub(super) use growth::{DRAWING_READABLE, LEVER_READABLE};
 use growth::{finer, larger_drawings, larger_lever, larger_loads, smallest_drawing_mm};
 pub use inset::SIDE_MIN;
 use kurbo::{Point, Rect};
@@ -112,15 +112,34 @@ pub fn draw_forces(
     answers: &AnswerKeys,
 ) -> (ForceScales, Vec<Segment>) {
     let region = main.region;
-    let title = inp.words.sheet.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.words.lang));
-    main.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
-    let bodies = bodies(region, side.as_ref().map(|g| g.region), (inp.side_first, inp.tables_beside));
-    let arranged = larger_lever(
-        inp,
-        &bodies,
-        finer(inp, &bodies, arrange(inp, &bodies, Sizes { compact: inp.compact_groups, ..DRAWN }, SHRINK_TRIES)),
-    );
-    let (cells, at, _, _) = larger_drawings(inp, &bodies, larger_loads(inp, &bodies, arranged));
+    let title = section_title(inp);
+    let side_region = side.as_ref().map(|g| g.region);
+    let flags = (inp.side_first, inp.tables_beside);
+    let laid_out = |bodies: &Bodies| {
+        let start = Sizes { compact: inp.compact_groups, ..DRAWN };
+        let arranged = larger_lever(inp, bodies, finer(inp, bodies, arrange(inp, bodies, start, SHRINK_TRIES)));
+        let (cells, at, _, _) = larger_drawings(inp, bodies, larger_loads(inp, bodies, arranged));
+        (cells, at)
+    };
+    // The title heads the section where its first drawing stands: where a drawing goes
+    // beside the mechanism (it read below drawings of its own), the cells are laid out
+    // again with the title's strip there and the cells below the mechanism risen into
+    // theirs, and kept so if a drawing still goes beside.
+    let below = bodies(region, side_region, flags, None);
+    let (mut cells, mut at) = laid_out(&below);
+    let mut beside = false;
+    let titled_side = side_region.filter(|s| title.advance() + 4.0 <= s.width());
+    if let Some(s) = titled_side.filter(|_| drawing_in(&cells, &at, below.side)) {
+        let titled = bodies(region, Some(s), flags, Some(s));
+        let (c, a) = laid_out(&titled);
+        if drawing_in(&c, &a, titled.side) && readable(inp, &cells).kept_by(readable(inp, &c)) {
+            (cells, at, beside) = (c, a, true);
+        }
+    }
+    match (side.as_deref_mut(), side_region) {
+        (Some(sg), Some(r)) if beside => sg.text(Text { at: Point::new(r.x0 + 2.0, r.y0 + 6.0), ..title }),
+        _ => main.text(Text { at: Point::new(region.x0 + 2.0, region.y0 + 6.0), ..title }),
+    }
     let mut scales = ForceScales {
         mu_l: vec![],
         mu_p: vec![],
@@ -214,18 +233,77 @@ fn part_id(inp: &ForcesInput, content: &Content, letter_of: impl Fn(usize, usize
     }
 }
 
+/// The force analysis's title, "Kinetostatic analysis of the mechanism, φ₁ = 30.0°", at
+/// the origin.
+fn section_title(inp: &ForcesInput) -> Text {
+    let title = inp.words.sheet.forces_title(&fmt::localise(&format!("{:.1}", inp.phi_deg), inp.words.lang));
+    Text::new(Point::ZERO, title, 5.0, Anchor::Start)
+}
+
+/// The title's strip above a region's cells, mm.
+const TITLE_STRIP: f64 = 10.0;
+/// The cells below the mechanism stand this far below its region's top where the title
+/// went beside the mechanism, mm.
+const UNTITLED_TOP: f64 = 2.0;
+
 /// The areas the cells may use: the main region below its title, then the side region (or
 /// the side region first, `side_first`); with `tables_beside`, tables 3–5 try the side
-/// region first whatever the drawings do.
-fn bodies(main: Rect, side: Option<Rect>, (side_first, tables_beside): (bool, bool)) -> Bodies {
-    let mut rects = vec![Rect::new(main.x0, main.y0 + 10.0, main.x1, main.y1)];
-    rects.extend(side);
-    let side_at = (rects.len() == 2).then_some(1);
+/// region first whatever the drawings do. With `titled_side`, the title's strip is kept at
+/// the top of the side region instead, and the main region's cells start near its top.
+fn bodies(
+    main: Rect,
+    side: Option<Rect>,
+    (side_first, tables_beside): (bool, bool),
+    titled_side: Option<Rect>,
+) -> Bodies {
+    let main_top = if titled_side.is_some() { UNTITLED_TOP } else { TITLE_STRIP };
+    let mut rects = vec![Rect::new(main.x0, main.y0 + main_top, main.x1, main.y1)];
+    rects.extend(titled_side.map(|s| Rect::new(s.x0, s.y0 + TITLE_STRIP, s.x1, s.y1)).or(side));
+    let side_at = (rects.len() == 2).then_some(if side_first { 0 } else { 1 });
     if side_first {
         rects.reverse();
     }
     let tables_first = if tables_beside && !side_first { side_at } else { None };
-    Bodies { rects, tables_first, beside: tables_beside }
+    Bodies { rects, tables_first, beside: tables_beside, side: side_at }
+}
+
+/// What a layout's drawings must keep where another is tried for them: the lever's
+/// length and the shortest labelled polygon side (enlargements' included), mm.
+struct Readable {
+    lever: f64,
+    side: f64,
+}
+
+impl Readable {
+    /// Whether `other` keeps these, each up to what reads plainly.
+    fn kept_by(&self, other: Readable) -> bool {
+        let kept = |size: f64, floor: f64| size >= floor - crate::num::tol::PAPER;
+        kept(other.lever, self.lever.min(LEVER_READABLE)) && kept(other.side, self.side.min(SIDE_MIN))
+    }
+}
+
+fn readable(inp: &ForcesInput, cells: &[Cell]) -> Readable {
+    let mut r = Readable { lever: f64::MAX, side: f64::MAX };
+    for c in cells {
+        match c.content {
+            Content::Lever(ref plan, mu, ..) => r.lever = zhukovsky::lever_side_mm(plan, mu),
+            Content::Polygon(i, ref layout) => {
+                let (on, enlarged) = polygon::shortest_sides(&inp.fa.forces.polygons[i], layout);
+                r.side = on.into_iter().chain(enlarged).fold(r.side, f64::min);
+            }
+            _ => {}
+        }
+    }
+    r
+}
+
+/// Whether a drawing (a group, the crank, an enlargement or the lever; not a table or a
+/// load diagram, titled by themselves) stands in the body `side`.
+fn drawing_in(cells: &[Cell], at: &[(usize, Point)], side: Option<usize>) -> bool {
+    cells
+        .iter()
+        .zip(at)
+        .any(|(c, &(body, _))| Some(body) == side && !matches!(c.content, Content::Table(_) | Content::Load(..)))
 }
 
 /// How many times the drawings may shrink by 10 % to fit; a region that needs more than
@@ -294,5 +372,5 @@ fn arrange(inp: &ForcesInput, bodies: &Bodies, start: Sizes, tries: usize) -> Ar
 /// Whether the force drawings fit the main region (and the side region, if any) without
 /// being cramped.
 pub fn fit_comfortably(inp: &ForcesInput, main: Rect, side: Option<Rect>) -> bool {
-    arrange(inp, &bodies(main, side, (false, false)), COMFORTABLE_START, COMFORTABLE + 1).2
+    arrange(inp, &bodies(main, side, (false, false), None), COMFORTABLE_START, COMFORTABLE + 1).2
 }
