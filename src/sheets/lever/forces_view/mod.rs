@@ -122,18 +122,27 @@ pub fn draw_forces(
         (cells, at)
     };
     // The title heads the section where its first drawing stands: where a drawing goes
-    // beside the mechanism (it read below drawings of its own), the cells are laid out
-    // again with the title's strip there and the cells below the mechanism risen into
-    // theirs, and kept so if a drawing still goes beside.
+    // beside the mechanism (it read below drawings of its own), the title goes there and
+    // the cells below the mechanism rise into its strip; the cells beside move down under
+    // the title where they leave room below, else they are laid out again with the strip
+    // kept there, and kept so if a drawing still goes beside and reads as well.
     let below = bodies(region, side_region, flags, None);
     let (mut cells, mut at) = laid_out(&below);
     let mut beside = false;
     let titled_side = side_region.filter(|s| title.advance() + 4.0 <= s.width());
-    if let Some(s) = titled_side.filter(|_| drawing_in(&cells, &at, below.side)) {
-        let titled = bodies(region, Some(s), flags, Some(s));
-        let (c, a) = laid_out(&titled);
-        if drawing_in(&c, &a, titled.side) && readable(inp, &cells).kept_by(readable(inp, &c)) {
-            (cells, at, beside) = (c, a, true);
+    if let (Some(s), Some(side_body)) = (titled_side, below.side.filter(|_| drawing_in(&cells, &at, below.side))) {
+        let lowest = (cells.iter().zip(&at)).filter(|(_, (b, _))| *b == side_body).map(|(c, (_, p))| p.y + c.h);
+        if lowest.fold(s.y0, f64::max) + TITLE_STRIP <= s.y1 {
+            for (body, origin) in &mut at {
+                origin.y += if *body == side_body { TITLE_STRIP } else { UNTITLED_TOP - TITLE_STRIP };
+            }
+            beside = true;
+        } else {
+            let titled = bodies(region, Some(s), flags, Some(s));
+            let (c, a) = laid_out(&titled);
+            if drawing_in(&c, &a, titled.side) && readable(inp, &cells).kept_by(readable(inp, &c)) {
+                (cells, at, beside) = (c, a, true);
+            }
         }
     }
     match (side.as_deref_mut(), side_region) {
