@@ -158,13 +158,14 @@ fn arrows_in_links(scene: &Scene) -> (usize, Vec<String>) {
                 .filter_map(|(k, item)| common::path_points(item).filter(|(_, p)| *p == pen).map(|(pts, _)| (k, pts)))
                 .collect()
         };
-        let links: Vec<(kurbo::Point, kurbo::Point)> = lines_of(MAIN)
-            .iter()
-            .flat_map(|(_, pts)| pts.windows(2).map(|w| (w[0], w[1])).collect::<Vec<_>>())
-            .collect();
         // Links and arrows are parts of one drawing: each part's own, else the group's.
         let part_of = |k: usize| g.parts.iter().position(|p| p.items.contains(&k));
-        for (k, pts) in lines_of(VECTOR) {
+        let shafts_drawn = lines_of(VECTOR);
+        for (k, pts) in shafts_drawn.iter().cloned() {
+            let others = lines_of(MAIN);
+
+            let links: Vec<(kurbo::Point, kurbo::Point)> =
+                others.iter().flat_map(|(_, pts)| pts.windows(2).map(|w| (w[0], w[1])).collect::<Vec<_>>()).collect();
             let [a, b] = [pts[0], pts[pts.len() - 1]];
             let u = b - a;
             let len = u.norm();
@@ -186,7 +187,7 @@ fn arrows_in_links(scene: &Scene) -> (usize, Vec<String>) {
                 let part = part_of(k).map_or(g.id.clone(), |i| g.parts[i].id.clone());
                 merged.push(format!(
                     "'{part}' arrow ({:.1}, {:.1})–({:.1}, {:.1}): {hidden:.1} mm in a link",
-                    a.x, a.y, b.x, b.y
+                    a.x, a.y, b.x, b.y,
                 ));
             }
         }
@@ -210,4 +211,30 @@ fn no_force_arrow_runs_inside_a_link_on_any_fixture() {
     }
     assert!(shafts > 100, "only {shafts} arrows");
     assert!(merged.is_empty(), "{} of {shafts} arrows run inside a link:\n{}", merged.len(), merged.join("\n"));
+}
+
+/// A force polygon's side that runs back over the side before it is set 1.8 mm beside it:
+/// the offset crank-slider's G₃ down and P_i3 up along one guide drew one line with a head
+/// at each end, neither measurable. Its II(2,3) polygon now has the two on parallel lines
+/// 1.8 mm apart, overlapping along the guide. (The general measure, any arrow of a group
+/// part along another over 4 mm, still finds the compressors' drawings' twins at their
+/// pistons: left.)
+#[test]
+fn a_polygon_side_running_back_over_the_one_before_is_set_beside_it() {
+    for (name, lang, scenes) in fixture_scenes().iter().filter(|(n, ..)| n == "crank-slider-offset-vertical") {
+        let g = scenes[0].groups.iter().find(|g| g.parts.iter().any(|p| p.id == "forces.group.2-3")).expect("II(2,3)");
+        let part = g.parts.iter().find(|p| p.id == "forces.group.2-3").expect("II(2,3)");
+        let vertical: Vec<(f64, f64, f64)> = part
+            .items
+            .clone()
+            .filter_map(|k| common::path_points(&g.items[k]).filter(|(_, pen)| *pen == VECTOR))
+            .map(|(pts, _)| (pts[0], pts[pts.len() - 1]))
+            .filter(|(a, b)| (a.x - b.x).abs() < 1e-6 && (a.y - b.y).abs() > 20.0)
+            .map(|(a, b)| (a.x, a.y.min(b.y), a.y.max(b.y)))
+            .collect();
+        let beside = vertical.iter().enumerate().any(|(i, p)| {
+            vertical[i + 1..].iter().any(|q| ((p.0 - q.0).abs() - 1.8).abs() < 0.05 && p.1.max(q.1) < p.2.min(q.2))
+        });
+        assert!(beside, "{name} {lang:?}: no two sides 1.8 mm apart along the guide: {vertical:?}");
+    }
 }

@@ -6,7 +6,7 @@ use super::group::GroupLayout;
 use super::inset;
 use super::legend::force_label;
 use crate::drawing::place::Labels;
-use crate::drawing::scene::{DASHED, Group, VECTOR};
+use crate::drawing::scene::{DASHED, Group, THIN, VECTOR};
 use crate::drawing::symbols::vector;
 use crate::drawing::view::View;
 use crate::lever::kinetostatics::Polygon;
@@ -48,11 +48,26 @@ pub(super) fn draw_polygon(
         let n = (b - a).turn_90();
         if n.dot(a.midpoint(b) - centre) < 0.0 { -n } else { n }
     };
+    // The side drawn before, to set beside it a side that runs back over it.
+    let mut before: Option<Vec2> = None;
     for (k, t) in poly.terms.iter().enumerate() {
         let (a, b) = (p(pts[k]), p(pts[k + 1]));
         if (b - a).norm() < tol::PAPER_INVISIBLE {
             continue;
         }
+        // Sides under SIDE_MIN are drawn again enlarged, where they are read.
+        let measured = (b - a).norm() >= inset::SIDE_MIN && !inset::labelled_elsewhere(&layout.insets, k);
+        let back = before.filter(|&d| measured && d.norm() >= inset::SIDE_MIN && runs_back(d, b - a));
+        let shift = back.map_or(Vec2::ZERO, |_| outward(a, b) / (b - a).norm() * BESIDE_SIDE);
+        before = Some(b - a);
+        let (a, b) = if shift == Vec2::ZERO {
+            (a, b)
+        } else {
+            // Joined to its true ends by thin lines, the chain reads unbroken.
+            g.line(a, a + shift, THIN);
+            g.line(b + shift, b, THIN);
+            (a + shift, b + shift)
+        };
         vector(g, a, b, VECTOR);
         if !inset::labelled_elsewhere(&layout.insets, k) {
             labels.add_side((a, b), outward(a, b), force_label(inp, t.kind, t.on), 3.5);
@@ -75,9 +90,21 @@ pub(super) fn draw_polygon(
     g.dot(p(pts[0]), 0.5);
 }
 
-/// How far an inner reaction lying on a side is set beside it, mm: clear of the side's
-/// 0.5 mm stroke by twice GOST 2.303's least gap between parallel lines.
+/// How far an inner reaction lying on a side, or a side running back over the one before
+/// it, is set beside it, mm: clear of the side's 0.5 mm stroke by twice GOST 2.303's least
+/// gap between parallel lines.
 const BESIDE_SIDE: f64 = 1.8;
+
+/// Whether a side along `next` runs back over the side along `before` drawn just before
+/// it (within 12°; the order of a link's own loads avoids that where it can, `order.rs`):
+/// a slider's weight down and its inertia force up along one guide drew one line with a
+/// head at each end, neither measurable (the offset crank-slider's G₃ and P_i3).
+fn runs_back(before: Vec2, next: Vec2) -> bool {
+    -before.dot(next) > crate::num::math::cos(RUNS_BACK_DEG.to_radians()) * before.norm() * next.norm()
+}
+
+/// See [`runs_back`].
+const RUNS_BACK_DEG: f64 = 12.0;
 
 /// A segment within this of a side over most of its length reads as lying on it, mm: a
 /// dashed line converging on a thick one at a small angle is as hidden as one on it.
