@@ -48,8 +48,10 @@ pub(super) fn draw_polygon(
         let n = (b - a).turn_90();
         if n.dot(a.midpoint(b) - centre) < 0.0 { -n } else { n }
     };
-    // The side drawn before, to set beside it a side that runs back over it.
-    let mut before: Option<Vec2> = None;
+    // The last side drawn at least SIDE_MIN long, to set beside it a side that starts on
+    // it and runs back over it: the short sides between are drawn again enlarged (the
+    // compressors' P_g3 ran back over P_i3 past a G₃ of a millimetre or two).
+    let mut before: Option<Line> = None;
     for (k, t) in poly.terms.iter().enumerate() {
         let (a, b) = (p(pts[k]), p(pts[k + 1]));
         if (b - a).norm() < tol::PAPER_INVISIBLE {
@@ -57,9 +59,12 @@ pub(super) fn draw_polygon(
         }
         // Sides under SIDE_MIN are drawn again enlarged, where they are read.
         let measured = (b - a).norm() >= inset::SIDE_MIN && !inset::labelled_elsewhere(&layout.insets, k);
-        let back = before.filter(|&d| measured && d.norm() >= inset::SIDE_MIN && runs_back(d, b - a));
+        let follows = |side: &Line| side.nearest(a, 0.0).distance_sq < ON_SIDE * ON_SIDE;
+        let back = before.filter(|side| measured && follows(side) && runs_back(side.p1 - side.p0, b - a));
         let shift = back.map_or(Vec2::ZERO, |_| outward(a, b) / (b - a).norm() * BESIDE_SIDE);
-        before = Some(b - a);
+        if (b - a).norm() >= inset::SIDE_MIN {
+            before = Some(Line::new(a, b));
+        }
         let (a, b) = if shift == Vec2::ZERO {
             (a, b)
         } else {
