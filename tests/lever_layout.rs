@@ -460,11 +460,8 @@ fn a_strokes_value_is_written_along_its_dimension_line() {
     }
 }
 
-/// The force analysis's title ("Kinetostatic analysis of the mechanism, φ₁ = 60.0°") heads
-/// its drawings: where a group, the crank or the lever goes beside the mechanism, the title
-/// goes there with it (the kulisa's and the jaw crusher's groups and the offset
-/// crank-slider's lever stood above it, at the sheet's top, with the title under the
-/// mechanism). Every fixture: no force drawing starts above the title's foot.
+/// The force analysis's title heads its drawings: beside the mechanism where one goes there
+/// (the kulisa's group stood at the sheet's top, the title under the mechanism).
 #[test]
 fn no_force_drawing_stands_above_the_force_analysis_title() {
     let mut above = Vec::new();

@@ -216,21 +216,18 @@ fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> 
     // Drawing fails only where the title block refuses the sheet's texts: then with the
     // widest's refusal, as when it was drawn first.
     title_block_refusal(inp, &widest)?;
-    let smallest = widest.smallest_plan_mm(plans).unwrap_or(0.0);
-    let largest = widest.largest_plan_mm(plans);
+    let (smallest, largest) = (widest.smallest_plan_mm(plans).unwrap_or(0.0), widest.largest_plan_mm(plans));
     let mut narrower = Vec::new();
     for &w in &FORCES_WIDTHS[1..] {
         let next = arrange(w, &memo)?;
-        let grown = next.smallest_plan_mm(plans).unwrap_or(0.0);
-        let larger = next.largest_plan_mm(plans);
+        let (grown, larger) = (next.smallest_plan_mm(plans).unwrap_or(0.0), next.largest_plan_mm(plans));
         if next.mech.comfortable {
             narrower.push(((grown, larger), (w, next)));
         }
     }
     narrower.sort_by(|a, b| b.0.0.total_cmp(&a.0.0));
-    // A narrower column takes the plans' room where their smallest grows by a tenth; where
-    // only the smaller kind's largest plan under LARGEST_PLAN grows by a tenth, it does so
-    // if the force drawings keep the widest's floors (a lever halved for it was worse).
+    // A narrower column wins where the smallest plan grows by a tenth, or the smaller kind's
+    // largest (to LARGEST_PLAN) does and the forces keep the widest's floors (below).
     let (growing, rest): (Vec<_>, Vec<_>) = narrower.into_iter().partition(|((grown, _), _)| *grown > 1.1 * smallest);
     let (larger, rest): (Vec<_>, Vec<_>) = rest.into_iter().partition(|((_, larger), _)| *larger > 1.1 * largest);
     let narrow = |next| {
@@ -312,15 +309,14 @@ struct Arrangement<'a> {
 }
 
 impl Arrangement<'_> {
-    /// The largest side of the smallest plan, mm (as the drawn plans will have it).
-    /// The smaller of the two kinds' largest plans, mm, up to [`LARGEST_PLAN`] (the
-    /// velocity plans' alone without acceleration plans).
+    /// The smaller of the two kinds' largest plans, mm, up to [`LARGEST_PLAN`].
     fn largest_plan_mm(&self, plans: &PlansOf) -> f64 {
         let v = self.vsizing.largest(&plans.velocity.plans);
         let a = if plans.acceleration.plans.is_empty() { v } else { self.asizing.largest(&plans.acceleration.plans) };
         v.min(a).min(LARGEST_PLAN)
     }
 
+    /// The largest side of the smallest plan, mm (as the drawn plans will have it).
     fn smallest_plan_mm(&self, plans: &PlansOf) -> Option<f64> {
         let drawn =
             self.vsizing.drawn(&plans.velocity.plans).into_iter().chain(self.asizing.drawn(&plans.acceleration.plans));

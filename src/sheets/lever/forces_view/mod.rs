@@ -114,37 +114,7 @@ pub fn draw_forces(
     let region = main.region;
     let title = section_title(inp);
     let side_region = side.as_ref().map(|g| g.region);
-    let flags = (inp.side_first, inp.tables_beside);
-    let laid_out = |bodies: &Bodies| {
-        let start = Sizes { compact: inp.compact_groups, ..DRAWN };
-        let arranged = larger_lever(inp, bodies, finer(inp, bodies, arrange(inp, bodies, start, SHRINK_TRIES)));
-        let (cells, at, _, _) = larger_drawings(inp, bodies, larger_loads(inp, bodies, arranged));
-        (cells, at)
-    };
-    // The title heads the section where its first drawing stands: where a drawing goes
-    // beside the mechanism (it read below drawings of its own), the title goes there and
-    // the cells below the mechanism rise into its strip; the cells beside move down under
-    // the title where they leave room below, else they are laid out again with the strip
-    // kept there, and kept so if a drawing still goes beside and reads as well.
-    let below = bodies(region, side_region, flags, None);
-    let (mut cells, mut at) = laid_out(&below);
-    let mut beside = false;
-    let titled_side = side_region.filter(|s| title.advance() + 4.0 <= s.width());
-    if let (Some(s), Some(side_body)) = (titled_side, below.side.filter(|_| drawing_in(&cells, &at, below.side))) {
-        let lowest = (cells.iter().zip(&at)).filter(|(_, (b, _))| *b == side_body).map(|(c, (_, p))| p.y + c.h);
-        if lowest.fold(s.y0, f64::max) + TITLE_STRIP <= s.y1 {
-            for (body, origin) in &mut at {
-                origin.y += if *body == side_body { TITLE_STRIP } else { UNTITLED_TOP - TITLE_STRIP };
-            }
-            beside = true;
-        } else {
-            let titled = bodies(region, Some(s), flags, Some(s));
-            let (c, a) = laid_out(&titled);
-            if drawing_in(&c, &a, titled.side) && readable(inp, &cells).kept_by(readable(inp, &c)) {
-                (cells, at, beside) = (c, a, true);
-            }
-        }
-    }
+    let (cells, at, beside) = titled_layout(inp, region, side_region, title.advance());
     match (side.as_deref_mut(), side_region) {
         (Some(sg), Some(r)) if beside => sg.text(Text { at: Point::new(r.x0 + 2.0, r.y0 + 6.0), ..title }),
         _ => main.text(Text { at: Point::new(region.x0 + 2.0, region.y0 + 6.0), ..title }),
@@ -239,6 +209,48 @@ fn part_id(inp: &ForcesInput, content: &Content, letter_of: impl Fn(usize, usize
         Content::Lever(..) => "forces.lever".into(),
         Content::Load(i, _) => format!("forces.load.{}", number(inp.fa.model.loads[*i].link)),
         Content::Table(i) => format!("forces.table.{}", i + 1),
+    }
+}
+
+/// The cells laid out in the region below the mechanism and the one beside it, and whether
+/// the section's title heads the region beside it. The title heads the section where its
+/// first drawing stands: where a drawing goes beside the mechanism (it read below drawings
+/// of its own), the title goes there and the cells below the mechanism rise into its strip;
+/// the cells beside move down under the title where they leave room below, else they are
+/// laid out again with the strip kept there, and kept so if a drawing still goes beside
+/// and reads as well.
+fn titled_layout(
+    inp: &ForcesInput,
+    region: Rect,
+    side: Option<Rect>,
+    title_w: f64,
+) -> (Vec<Cell>, Vec<(usize, Point)>, bool) {
+    let flags = (inp.side_first, inp.tables_beside);
+    let laid_out = |bodies: &Bodies| {
+        let start = Sizes { compact: inp.compact_groups, ..DRAWN };
+        let arranged = larger_lever(inp, bodies, finer(inp, bodies, arrange(inp, bodies, start, SHRINK_TRIES)));
+        let (cells, at, _, _) = larger_drawings(inp, bodies, larger_loads(inp, bodies, arranged));
+        (cells, at)
+    };
+    let below = bodies(region, side, flags, None);
+    let (cells, mut at) = laid_out(&below);
+    let titled_side = side.filter(|s| title_w + 4.0 <= s.width());
+    let Some((s, side_body)) = titled_side.zip(below.side).filter(|_| drawing_in(&cells, &at, below.side)) else {
+        return (cells, at, false);
+    };
+    let lowest = (cells.iter().zip(&at)).filter(|(_, (b, _))| *b == side_body).map(|(c, (_, p))| p.y + c.h);
+    if lowest.fold(s.y0, f64::max) + TITLE_STRIP <= s.y1 {
+        for (body, origin) in &mut at {
+            origin.y += if *body == side_body { TITLE_STRIP } else { UNTITLED_TOP - TITLE_STRIP };
+        }
+        return (cells, at, true);
+    }
+    let titled = bodies(region, Some(s), flags, Some(s));
+    let (c, a) = laid_out(&titled);
+    if drawing_in(&c, &a, titled.side) && readable(inp, &cells).kept_by(readable(inp, &c)) {
+        (c, a, true)
+    } else {
+        (cells, at, false)
     }
 }
 
