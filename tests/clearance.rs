@@ -31,6 +31,20 @@ fn fixture_scenes() -> &'static [(String, Language, Vec<Scene>)] {
     })
 }
 
+/// `measure` (what it checked, what it found) summed over every fixture's sheets in the
+/// three languages, each finding named by its fixture and language.
+fn on_every_fixture(measure: impl Fn(&Scene) -> (usize, Vec<String>)) -> (usize, Vec<String>) {
+    let (mut checked, mut found) = (0, Vec::new());
+    for (name, lang, scenes) in fixture_scenes() {
+        for scene in scenes {
+            let (n, f) = measure(scene);
+            checked += n;
+            found.extend(f.into_iter().map(|f| format!("{name} {lang:?} {f}")));
+        }
+    }
+    (checked, found)
+}
+
 /// From a label's letters' box to the nearest line's centre, mm, at least.
 const CLEARANCE: f64 = 0.4;
 
@@ -124,16 +138,7 @@ fn hidden_leaders(scene: &tmm_sheets::drawing::scene::Scene) -> (usize, Vec<Stri
 /// sheets in the three languages.
 #[test]
 fn no_leader_runs_hidden_along_a_line_on_any_fixture() {
-    let (mut leaders, mut hidden) = (0, Vec::new());
-    for (name, lang, scenes) in fixture_scenes() {
-        {
-            for scene in scenes {
-                let (n, h) = hidden_leaders(scene);
-                leaders += n;
-                hidden.extend(h.into_iter().map(|h| format!("{name} {lang:?} {h}")));
-            }
-        }
-    }
+    let (leaders, hidden) = on_every_fixture(hidden_leaders);
     assert!(leaders > 100, "only {leaders} leaders");
     assert!(hidden.is_empty(), "{} of {leaders} leaders run along a line:\n{}", hidden.len(), hidden.join("\n"));
 }
@@ -220,14 +225,7 @@ fn arrows_in_links(scene: &Scene, over_arrows: bool) -> (usize, Vec<String>) {
 /// toward. Every fixture's sheets in the three languages.
 #[test]
 fn no_force_arrow_runs_inside_a_link_on_any_fixture() {
-    let (mut shafts, mut merged) = (0, Vec::new());
-    for (name, lang, scenes) in fixture_scenes() {
-        for scene in scenes {
-            let (n, m) = arrows_in_links(scene, false);
-            shafts += n;
-            merged.extend(m.into_iter().map(|m| format!("{name} {lang:?} {m}")));
-        }
-    }
+    let (shafts, merged) = on_every_fixture(|scene| arrows_in_links(scene, false));
     assert!(shafts > 100, "only {shafts} arrows");
     assert!(merged.is_empty(), "{} of {shafts} arrows run inside a link:\n{}", merged.len(), merged.join("\n"));
 }
@@ -262,14 +260,7 @@ fn a_polygon_side_running_back_over_the_one_before_is_set_beside_it() {
 /// slide end to end. Every fixture's sheets in the three languages.
 #[test]
 fn no_force_arrow_lies_over_another_on_any_fixture() {
-    let (mut shafts, mut over) = (0, Vec::new());
-    for (name, lang, scenes) in fixture_scenes() {
-        for scene in scenes {
-            let (n, m) = arrows_in_links(scene, true);
-            shafts += n;
-            over.extend(m.into_iter().map(|m| format!("{name} {lang:?} {m}")));
-        }
-    }
+    let (shafts, over) = on_every_fixture(|scene| arrows_in_links(scene, true));
     assert!(shafts > 100, "only {shafts} arrows");
     assert!(over.is_empty(), "{} of {shafts} arrows lie over another:\n{}", over.len(), over.join("\n"));
 }
