@@ -1,0 +1,29 @@
+//! Sheet 1's force column gives the plans its room where that draws the smaller kind's
+//! largest plan a tenth larger and the force drawings keep their floors.
+
+mod common;
+
+use tmm_sheets::drawing::labels::Language;
+
+/// Task 8 variants 2 and 19 (twelve velocity plans, four acceleration plans in a narrow
+/// column): with the widest force column their largest acceleration plan was 60.8 and
+/// 61.5 mm; a narrower one, whose smallest plan grows less than a tenth, draws it 81 and
+/// 82 mm while the lever keeps a readable length (87 and 110 mm; it was 70 and 66 mm).
+#[test]
+fn the_plans_take_the_force_columns_room_where_their_largest_grows() {
+    for variant in [2, 19] {
+        let results = common::catalogue_sheet1("8", variant, Language::Uz).results;
+        let largest = |kind: &str| {
+            let plans = results["scales"][kind].as_array().unwrap();
+            plans
+                .iter()
+                .flat_map(|p| [&p["size_mm"][0], &p["size_mm"][1]])
+                .map(|v| v.as_f64().unwrap())
+                .fold(0.0, f64::max)
+        };
+        let (v, a) = (largest("velocity_plans"), largest("acceleration_plans"));
+        let lever = results["forces"]["scales"]["lever_mm"].as_f64().unwrap();
+        assert!(v.min(a) >= 78.0, "variant {variant}: largest plans {v:.1} and {a:.1} mm");
+        assert!(lever >= 80.0, "variant {variant}: lever {lever:.1} mm");
+    }
+}
