@@ -264,3 +264,38 @@ fn no_force_arrow_lies_over_another_on_any_fixture() {
     assert!(shafts > 100, "only {shafts} arrows");
     assert!(over.is_empty(), "{} of {shafts} arrows lie over another:\n{}", over.len(), over.join("\n"));
 }
+
+/// The force arrows leaving one point the opposite ways on a group's drawing or the
+/// crank's, each named; and how many arrows were checked.
+fn opposite_arrows(scene: &Scene) -> (usize, Vec<String>) {
+    let (mut checked, mut found) = (0, Vec::new());
+    for g in scene.groups.iter().filter(|g| g.id.contains("forces")) {
+        for part in g.parts.iter().filter(|p| p.id.contains("forces.group") || p.id.contains("forces.crank")) {
+            let shafts: Vec<(kurbo::Point, kurbo::Vec2)> = (part.items.clone())
+                .filter_map(|k| common::path_points(&g.items[k]).filter(|(_, pen)| *pen == VECTOR))
+                .map(|(pts, _)| (pts[0], pts[pts.len() - 1] - pts[0]))
+                .filter(|(_, u)| u.norm() > 0.0)
+                .collect();
+            checked += shafts.len();
+            for (i, (a, u)) in shafts.iter().enumerate() {
+                for (b, v) in &shafts[i + 1..] {
+                    if (*a - *b).norm() < 0.3 && u.dot(*v) < -0.985 * u.norm() * v.norm() {
+                        found.push(format!("'{}': two arrows from ({:.1}, {:.1}) opposite ways", part.id, a.x, a.y));
+                    }
+                }
+            }
+        }
+    }
+    (checked, found)
+}
+
+/// Two forces at one point pointing opposite ways are not drawn as one line with a head at
+/// each end (the v-compressor's P_i4 up and G4 down at S4, a teacher's review): the second
+/// is set beside the first. The lever is left to the unit test: its turned plan's own
+/// vectors leave p both ways. Every fixture's sheets in the three languages.
+#[test]
+fn no_two_force_arrows_leave_one_point_opposite_ways_on_any_fixture() {
+    let (checked, found) = on_every_fixture(opposite_arrows);
+    assert!(checked > 100, "only {checked} arrows");
+    assert!(found.is_empty(), "{} pairs:\n{}", found.len(), found.join("\n"));
+}

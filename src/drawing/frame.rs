@@ -75,6 +75,11 @@ struct Field {
     cell: [f64; 4],
     h: f64,
     anchor: TemplateAnchor,
+    /// Room kept each side between the cell's rules and the text, mm ([`CELL_PAD`]'s by
+    /// default): the letter's 5 mm cell holds a 3.5 mm capital only with less (at the
+    /// default it fell to 2.5 mm and read as a lowercase "у", a teacher's review).
+    #[serde(default)]
+    pad: Option<f64>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize)]
@@ -213,7 +218,7 @@ pub fn designation_box_group(designation: &str) -> Result<Group, TooLong> {
     if designation.is_empty() {
         return Ok(g);
     }
-    let f = fit_cell(designation, r, 7.0, FieldName::Designation.source(), "box 26 (top left)")?;
+    let f = fit_cell(designation, r, (7.0, CELL_PAD.0), FieldName::Designation.source(), "box 26 (top left)")?;
     // Turned 180° about its baseline's middle, a line's letters hang below it: the first
     // line (read with the sheet turned) is the lowest.
     let pitch = LINE_PITCH * f.h;
@@ -289,8 +294,8 @@ fn draw_fitted(g: &mut Group, cell: Rect, f: &Fitted, anchor: Anchor) {
 }
 
 /// `text` fitted into `cell` (less its padding), or the refusal naming `field`.
-fn fit_cell(text: &str, cell: Rect, h: f64, field: &str, place: &str) -> Result<Fitted, TooLong> {
-    let (w, ht) = (cell.width() - 2.0 * CELL_PAD.0, cell.height() - 2.0 * CELL_PAD.1);
+fn fit_cell(text: &str, cell: Rect, (h, pad): (f64, f64), field: &str, place: &str) -> Result<Fitted, TooLong> {
+    let (w, ht) = (cell.width() - 2.0 * pad, cell.height() - 2.0 * CELL_PAD.1);
     fit(text, w, ht, h).ok_or_else(|| TooLong::new(field, text, place, (cell.width(), cell.height())))
 }
 
@@ -331,7 +336,7 @@ pub fn title_block(g: &mut Group, l: &Common, tb: &TitleBlock) -> Result<(), Too
         }
         let [x0, y0, x1, y1] = f.cell;
         let cell = Rect::new(x0, y0, x1, y1) + o;
-        let fitted = fit_cell(value, cell, f.h, f.field.source(), "title-block cell")?;
+        let fitted = fit_cell(value, cell, (f.h, f.pad.unwrap_or(CELL_PAD.0)), f.field.source(), "title-block cell")?;
         draw_fitted(g, cell, &fitted, f.anchor.into());
     }
     let [x0, y0, x1, y1] = t.name_field;
@@ -412,6 +417,36 @@ mod tests {
         let t = &template().title_block;
         for &[x1, y1, x2, y2] in t.main.iter().chain(&t.thin) {
             assert!(is_inside(block, Rect::new(x1.min(x2), y1.min(y2), x1.max(x2), y1.max(y2))));
+        }
+    }
+
+    /// The document's letter stands at 3.5 mm in its 5 mm cell in every language (at the
+    /// cells' usual padding it fell to 2.5 mm and read as a lowercase "у"), inside the cell.
+    #[test]
+    fn the_documents_letter_is_a_3_5_mm_capital_inside_its_cell() {
+        let tb = TitleBlock {
+            designation: "TMM KP 05.00.00",
+            sheet_name: "",
+            project_title: "x",
+            student: "",
+            supervisor: "",
+            organisation: "",
+            scale: "",
+            sheet_no: 1,
+            sheet_count: 3,
+        };
+        let r = title_block_rect();
+        let cell = Rect::new(135.0, 20.0, 140.0, 35.0) + r.origin().to_vec2();
+        for lang in [Language::Uz, Language::Ru, Language::En] {
+            let l = Common::get(lang);
+            let mut g = Group::new("tb", r);
+            title_block(&mut g, l, &tb).expect("fits");
+            let letter = g.texts().find(|t| t.text == l.tb_lit_letter()).expect("the letter is drawn");
+            assert_eq!(letter.h, 3.5, "{lang:?}");
+            // The box is the advance plus the slant; the letter's side bearing (over 0.1 mm)
+            // keeps its ink off the rule.
+            let room = cell.inflate(0.1, 0.0);
+            assert!(is_inside(room, letter.bbox()), "{lang:?}: {:?} outside {cell:?}", letter.bbox());
         }
     }
 }

@@ -18,7 +18,9 @@ pub(super) fn arrow_scale(largest: f64) -> f64 {
     scale::round_up(largest.max(f64::MIN_POSITIVE) / ARROW_MAX)
 }
 
-/// Force arrows of one drawing, kept apart: an arrow along a link is drawn beside it, and
+/// Force arrows of one drawing, kept apart: an arrow along a link is drawn beside it (or
+/// pushing, at the link's end), one opposite to an earlier one at its point beside that (on
+/// a group drawing), and
 /// one from the same point in (nearly) the same direction as an earlier one drawn pushing
 /// (its tip at the point, from the other side) where that side is free, else slid along its
 /// own line of action past the earlier one's tip. Either keeps the force's moment about
@@ -30,9 +32,9 @@ pub(super) struct Arrows {
     pub(super) view: View,
     /// The drawing's link lines, paper mm: an arrow along one is set beside it.
     pub(super) links: Vec<(Point, Point)>,
-    /// Where twins may be drawn pushing, what a pushing arrow keeps clear of (the lever);
-    /// `None` on the group drawings, whose twins stand at blocks and centres of mass on
-    /// their links and slide.
+    /// Where arrows may be drawn pushing, what a pushing arrow keeps clear of: twins on
+    /// the lever; on the group drawings (whose twins stand at blocks and centres of mass on
+    /// their links and slide) an arrow into its link at the link's end. `None`: none pushes.
     pub(super) push: Option<Push>,
     /// Slider blocks: centre, unit direction along the block, half length and half width.
     pub(super) blocks: Vec<(Point, Vec2, f64, f64)>,
@@ -58,6 +60,12 @@ pub(super) struct Push {
     pub(super) forces: Vec<(Point, Vec2)>,
     /// The box the arrows reach with every twin slid.
     pub(super) within: Rect,
+    /// Whether every arrow keeps its line of action through its point (the lever, whose
+    /// arms are read on paper): twins push, and none is set beside another. Else (a group
+    /// drawing) only an arrow that would run into its link from the link's end pushes, its
+    /// shaft on the link's line past the end (the jaw crusher's Rn03 ran up link 3 into
+    /// G3's head at S3, a teacher's review).
+    pub(super) keep_lines: bool,
 }
 
 /// A pushing arrow's shaft passes no other point nearer than this, mm.
@@ -106,14 +114,18 @@ impl Arrows {
             (hl / along.max(tol::PARALLEL_SIN)).min(hw / across.max(tol::PARALLEL_SIN))
         });
         let push = self.push.as_ref().filter(|_| exit == 0.0);
-        let (start, tip) = match way(&self.drawn, push, at, d, len) {
+        let into_link = beside_link(&self.links, at, d, (exit, len));
+        let (start, tip) = match way(&self.drawn, push, at, d, (len, into_link.is_some())) {
             Way::Push => {
                 self.drawn.push((at, -d, len));
                 (at - d * len, at)
             }
             Way::Pull(slide) => {
                 let mut start = at + d * exit;
-                if let Some(side) = beside_link(&self.links, at, d, (exit, len)) {
+                // At a block the forces leave its outline apart already; one slid past a
+                // twin starts away from the point (and a twin drawn pushing ends at it).
+                let opposite = || self.beside_opposite(at, d, len).filter(|_| exit == 0.0 && slide == 0.0);
+                if let Some(side) = into_link.or_else(opposite) {
                     start += side * BESIDE;
                 }
                 start += d * (slide - exit).max(0.0);
@@ -131,6 +143,30 @@ impl Arrows {
         let spots = [(along(0.55), n), (along(0.55), -n), (along(0.85), n), (along(0.85), -n), (along(0.25), n)];
         labels.add_at_any(&spots, label, self.h);
         natural < ARROW_MIN
+    }
+}
+
+impl Arrows {
+    /// The side (unit, across `d`) an arrow `len` long from `at` along `d` is set to where
+    /// an earlier arrow from the same point lies the opposite way: drawn from the point both,
+    /// they read as one arrow with a head at each end (the v-compressor's P_i4 up and G4 down,
+    /// a teacher's review). The side whose shaft keeps farther from the links (crossing one
+    /// counts as touching it); level, the arrow's left. Never on the lever (see
+    /// [`Push::keep_lines`]).
+    fn beside_opposite(&self, at: Point, d: Vec2, len: f64) -> Option<Vec2> {
+        let keep_lines = self.push.as_ref().is_some_and(|p| p.keep_lines);
+        let opposite =
+            !keep_lines && self.drawn.iter().any(|(p, e, _)| (*p - at).norm() < 1.0 && e.dot(d) < ALONG - 1.0);
+        let n = d.turn_90();
+        let clearance = |s: Vec2| {
+            let (a, b) = (at + s * BESIDE, at + s * BESIDE + d * len);
+            let from_link = |&(p, q): &(Point, Point)| {
+                let ends = [a, a.midpoint(b), b].map(|x| point_segment_distance(x, (p, q)));
+                if segments_cross(a, b, p, q) { 0.0 } else { ends.into_iter().fold(f64::INFINITY, f64::min) }
+            };
+            self.links.iter().map(from_link).fold(f64::INFINITY, f64::min)
+        };
+        opposite.then(|| if clearance(-n) > clearance(n) { -n } else { n })
     }
 }
 
@@ -185,7 +221,7 @@ enum Way {
 /// How an arrow `len` long from `at` along `d` stands: where pushing is allowed (`push`),
 /// pushing where an earlier arrow lies along `d` and its shaft keeps clear of all `push`
 /// names; else slid past the earlier ones.
-fn way(drawn: &[(Point, Vec2, f64)], push: Option<&Push>, at: Point, d: Vec2, len: f64) -> Way {
+fn way(drawn: &[(Point, Vec2, f64)], push: Option<&Push>, at: Point, d: Vec2, (len, into_link): (f64, bool)) -> Way {
     let slide = past_twins(drawn, at, d);
     let tail = at - d * len;
     let near = |q: Point| (q - at).norm() < 1.0;
@@ -197,7 +233,8 @@ fn way(drawn: &[(Point, Vec2, f64)], push: Option<&Push>, at: Point, d: Vec2, le
             && !p.points.iter().any(|&q| !near(q) && point_segment_distance(q, (tail, at)) < PUSH_POINT_CLEAR)
             && p.within.inflate(tol::PAPER, tol::PAPER).contains(tail)
     };
-    if slide > 0.0 && push.is_some_and(clear) { Way::Push } else { Way::Pull(slide) }
+    let wanted = |p: &Push| (slide > 0.0 && p.keep_lines) || into_link;
+    if push.is_some_and(|p| wanted(p) && clear(p)) { Way::Push } else { Way::Pull(slide) }
 }
 
 /// The distance from `q` to the segment `a`–`b`, mm.
@@ -230,7 +267,7 @@ pub(super) fn twin_rows(
         let f = force.norm();
         if f > 0.0 {
             let d = force / f;
-            let row = match way(&drawn, push, at, d, length(f, mu_f)) {
+            let row = match way(&drawn, push, at, d, (length(f, mu_f), false)) {
                 Way::Push => (at, -d, length(f, mu_f)),
                 Way::Pull(slide) => (at, d, slide + length(f, mu_f)),
             };
@@ -350,6 +387,7 @@ mod tests {
             points: vec![at],
             forces: on_paper.iter().copied().chain(later.map(|e| (at, e))).collect(),
             within,
+            keep_lines: true,
         };
         let page = Rect::new(0.0, 0.0, 100.0, 100.0);
         let spans = spans_drawn(view, at, &forces, Some(push(Vec::new(), None, page)));
@@ -367,5 +405,76 @@ mod tests {
         let below = Rect::new(0.0, at.y, 100.0, 100.0);
         let spans = spans_drawn(view, at, &forces, Some(push(Vec::new(), None, below)));
         assert!(spans[1].1 > spans[0].2, "beyond the slid arrows' box: the second slides: {spans:?}");
+    }
+
+    /// The ends of the vector-pen shafts drawn since item `from`.
+    fn shafts(g: &Group, from: usize) -> Vec<(Point, Point)> {
+        (g.items[from..].iter())
+            .filter_map(|item| match item {
+                Item::Path { path, pen } if *pen == VECTOR => match path.segs.last() {
+                    Some(Seg::Line(p)) => Some((path.start, *p)),
+                    _ => None,
+                },
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// On a group's drawing a force at a link's end pointing into the link is drawn pushing,
+    /// its tip at the joint and its shaft on the link's line past the end; at a point inside
+    /// the link, where the link goes on past the point, it is set beside the link as before.
+    #[test]
+    fn an_arrow_into_its_link_at_the_links_end_pushes_from_outside() {
+        let (a, b) = (Point::new(30.0, 50.0), Point::new(70.0, 50.0));
+        let view = View::new(Point::new(0.0, 100.0), 1.0);
+        let push = Push {
+            lines: vec![(a, b)],
+            points: vec![a, b],
+            forces: vec![(a, Vec2::new(1.0, 0.0))],
+            within: Rect::new(0.0, 0.0, 100.0, 100.0),
+            keep_lines: false,
+        };
+        let mut arrows = Arrows {
+            view,
+            links: vec![(a, b)],
+            push: Some(push),
+            blocks: Vec::new(),
+            drawn: Vec::new(),
+            mu_f: 1.0,
+            h: 3.5,
+        };
+        let mut g = Group::new("test", Rect::new(0.0, 0.0, 100.0, 100.0));
+        let mut labels = Labels::new();
+        arrows.arrow(&mut g, &mut labels, a, Vec2::new(12.0, 0.0), LabelText::new("R", "n"));
+        let [(start, tip)] = shafts(&g, 0)[..] else { panic!("one shaft") };
+        assert!((start.y - a.y).abs() < 1e-9 && (tip.y - a.y).abs() < 1e-9, "on the link's line");
+        assert!(start.x < a.x - 5.0 && tip.x <= a.x, "pushing from outside: {start:?} {tip:?}");
+        // Inside the link (its middle), the link goes on past the point: beside it.
+        let from = g.items.len();
+        arrows.arrow(&mut g, &mut labels, a.midpoint(b), Vec2::new(12.0, 0.0), LabelText::new("P", ""));
+        let [(start, tip)] = shafts(&g, from)[..] else { panic!("one shaft") };
+        assert!(((start.y - a.y).abs() - BESIDE).abs() < 1e-9 && tip.x > start.x, "beside: {start:?} {tip:?}");
+    }
+
+    /// A second force at a point pointing opposite to the first is set beside it, off the
+    /// first's line (a thin line joins it to its point): drawn from the point both, they read
+    /// as one arrow with a head at each end.
+    #[test]
+    fn an_arrow_opposite_to_an_earlier_one_at_its_point_is_set_beside_it() {
+        let at = Point::new(50.0, 50.0);
+        let view = View::new(Point::new(0.0, 100.0), 1.0);
+        let mut arrows =
+            Arrows { view, links: Vec::new(), push: None, blocks: Vec::new(), drawn: Vec::new(), mu_f: 1.0, h: 3.5 };
+        let mut g = Group::new("test", Rect::new(0.0, 0.0, 100.0, 100.0));
+        let mut labels = Labels::new();
+        arrows.arrow(&mut g, &mut labels, at, Vec2::new(0.0, -10.0), LabelText::new("G", ""));
+        let from = g.items.len();
+        arrows.arrow(&mut g, &mut labels, at, Vec2::new(0.0, 10.0), LabelText::new("P", ""));
+        let [(start, tip)] = shafts(&g, from)[..] else { panic!("one shaft") };
+        assert!(((start.x - at.x).abs() - BESIDE).abs() < 1e-9 && start.x == tip.x, "beside: {start:?} {tip:?}");
+        assert!(
+            g.items[from..].iter().any(|i| matches!(i, Item::Path { pen, .. } if *pen == THIN)),
+            "joined to its point"
+        );
     }
 }

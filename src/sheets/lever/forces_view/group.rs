@@ -2,7 +2,7 @@
 //! and inertia moments) beside its force polygon, the vector equation, the legend and the
 //! scales under them.
 
-use super::arrows::{Arrows, arrow_scale, twins_reach};
+use super::arrows::{Arrows, Push, arrow_scale, twins_reach};
 use super::cells::Sizes;
 use super::inset::{self, Enlarge, Inset, Place};
 use super::legend::{
@@ -367,8 +367,19 @@ fn draw_group_geometry(
             3.5,
         );
     }
+    let push = Push {
+        lines: link_lines.clone(),
+        points: points.iter().map(|&q| p(inp.state.points[q].p)).collect(),
+        forces: poly
+            .terms
+            .iter()
+            .map(|t| (p(t.at), view.dir(t.force) / t.force.norm().max(f64::MIN_POSITIVE)))
+            .collect(),
+        within: r,
+        keep_lines: false,
+    };
     let mut arrows =
-        Arrows { view, links: link_lines, push: None, blocks, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
+        Arrows { view, links: link_lines, push: Some(push), blocks, drawn: Vec::new(), mu_f: layout.mu_f, h: 3.5 };
     for t in &poly.terms {
         arrows.arrow(g, labels, p(t.at), t.force, force_label(inp, t.kind, t.on));
     }

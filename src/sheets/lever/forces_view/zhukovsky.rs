@@ -59,6 +59,7 @@ fn lever_push(plan: &Plan, view: &View, forces: &[(Point, Vec2)], mu_f: f64) -> 
         points: plan.images.iter().map(|i| view.p(i.at)).collect(),
         forces: forces.iter().map(|&(at, d)| (at, d / d.norm().max(f64::MIN_POSITIVE))).collect(),
         within,
+        keep_lines: true,
     }
 }
 
