@@ -36,6 +36,9 @@ pub struct Plot {
     pub origin: Point,
     pub x: Axis,
     pub y: Axis,
+    /// Whether the x values stand above the x axis; `None`: on the side with less of the
+    /// data range.
+    pub x_above: Option<bool>,
 }
 
 impl Plot {
@@ -43,7 +46,7 @@ impl Plot {
     /// must include 0 on y, where the x axis runs.
     pub fn in_area(area: Rect, x: Axis, y: Axis) -> Plot {
         let origin = Point::new(area.x0 - x.lo / x.mu, area.y1 + y.lo / y.mu);
-        Plot { origin, x, y }
+        Plot { origin, x, y, x_above: None }
     }
 
     /// The paper point of data (x, y).
@@ -121,11 +124,11 @@ impl Plot {
 }
 
 impl Plot {
-    /// Whether the x values stand above the x axis: on the side with less of the data range,
-    /// where the curves are least likely to run through them (above it when the data lies
-    /// mostly below zero, as a resistance does).
-    fn x_values_above(&self) -> bool {
-        -self.y.lo > self.y.hi
+    /// Whether the x values stand above the x axis: as set, else on the side with less of
+    /// the data range, where the curves are least likely to run through them (above it when
+    /// the data lies mostly below zero, as a resistance does).
+    pub fn x_values_above(&self) -> bool {
+        self.x_above.unwrap_or(-self.y.lo > self.y.hi)
     }
 
     /// The x axis' value `label` at `v` as [`Plot::draw_axes`] sets it: under its tick, or
@@ -157,13 +160,15 @@ pub fn round_ticks(lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, Strin
         .collect()
 }
 
-/// Ticks at the diagram's own force levels (each printed with its value, closer ones than
-/// 4 mm merged), then the round ticks of [`round_ticks`] that keep 4 mm clear of them: a
+/// Ticks at the diagram's own force levels (each printed with its value left of the P
+/// axis, however near the S/H axis, from a millimetre off it; closer ones than 4 mm
+/// merged), then the round ticks of [`round_ticks`] that keep 4 mm clear of them: a
 /// reader finds P_max and the idle level on the axis, not only round numbers.
 pub fn level_ticks(levels: &[f64], lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, String)> {
     const CLEAR: f64 = 4.0;
     let mut marked: Vec<f64> = Vec::new();
-    let mut sorted: Vec<f64> = levels.iter().copied().filter(|v| v.abs() / mu >= CLEAR).collect();
+    // A level nearer the axis than a millimetre is drawn on it.
+    let mut sorted: Vec<f64> = levels.iter().copied().filter(|v| v.abs() / mu >= 1.0).collect();
     sorted.sort_by(|a, b| b.abs().total_cmp(&a.abs()));
     for v in sorted {
         if marked.iter().all(|m| (m - v).abs() / mu >= CLEAR) {
@@ -216,7 +221,10 @@ mod tests {
         // goes; −250 is 6 mm from −130 and stays.
         assert_eq!(values, [-1299.0, -1000.0, -750.0, -500.0, -250.0, -130.0]);
         assert_eq!(t[0].1, "−1299");
-        // A level under 4 mm from the axis is not marked (its value would sit on the axis').
-        assert!(level_ticks(&[30.0], 0.0, 1000.0, 20.0, Language::En).iter().all(|x| x.0 != 30.0));
+        // A small idle level 1.5 mm from the axis is marked (its value left of the P axis,
+        // where the S/H axis does not run); one 0.5 mm from it is drawn on the axis.
+        let idle = level_ticks(&[30.0, -1000.0], -1000.0, 30.0, 20.0, Language::En);
+        assert!(idle.iter().any(|x| x.0 == 30.0 && x.1 == "30"), "{idle:?}");
+        assert!(level_ticks(&[10.0], 0.0, 1000.0, 20.0, Language::En).iter().all(|x| x.0 != 10.0));
     }
 }

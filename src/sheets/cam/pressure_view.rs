@@ -89,6 +89,7 @@ pub fn draw(region: Rect, d: &Design, phis: &[f64], title: &str, words: &CamWord
             name: format!("α, {}", l.unit_deg()),
             ticks: round_ticks(0.0, top, mu_alpha, lang),
         },
+        x_above: None,
     };
     plot.draw_axes(&mut g);
     let alpha = |phi: f64| d.profile.pressure_angle_on_profile(phi).to_degrees();

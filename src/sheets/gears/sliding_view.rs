@@ -81,6 +81,7 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
             name: "λ".into(),
             ticks: round_ticks(lowest, 1.0, mu_lambda, lang),
         },
+        x_above: None,
     };
     g.text(Text::new(Point::new(room.x0 + 2.0, room.y0 + 5.0), title, 3.5, Anchor::Start));
     let unit = words.common.unit_m_per_mm();

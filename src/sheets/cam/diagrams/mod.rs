@@ -152,6 +152,7 @@ impl Stack<'_> {
                 name: format!("{}, {}", self.names[0], if self.rocker { l.unit_deg() } else { w.common.unit_mm() }),
                 ticks: lift_ticks(p.lift, sc.mu_s, self.rocker, lang),
             },
+            x_above: None,
         };
         s_plot.draw_axes(g);
         s_plot.line(g, &self.exact(&|phi| p.at(phi).s), THIN);
@@ -191,6 +192,7 @@ impl Stack<'_> {
                 name: self.analog_name(name),
                 ticks: unlabelled(within(analog_ticks(vmax, sc.mu_ds, self.rocker, lang), (lo, hi))),
             },
+            x_above: None,
         };
         v_plot.draw_axes(g);
         v_plot.line(g, &self.exact(&|phi| p.at(phi).ds), THIN);
@@ -225,6 +227,7 @@ impl Stack<'_> {
                 name: self.analog_name(name),
                 ticks: unlabelled(analog_ticks(amax, sc.mu_dds, self.rocker, lang)),
             },
+            x_above: None,
         };
         a_plot.draw_axes(g);
         // From the axis and back to it: the near dwell's s″ = 0 on both sides of the working

@@ -4,6 +4,7 @@
 use super::legend::{cell_title, scale_item, text_rows};
 use super::{ForcesInput, LINE};
 use crate::drawing::fmt;
+use crate::drawing::obstacles::segment_meets_rect;
 use crate::drawing::place::Labels;
 use crate::drawing::plot::{Axis, Plot, level_ticks};
 use crate::drawing::scale;
@@ -73,6 +74,10 @@ pub(super) fn draw_load(
     let y = Axis { lo, hi, mu, name: format!("P, {}", inp.words.common.unit_n()), ticks };
     let mut plot = Plot::in_area(Rect::new(area.x0, area.y1 - (hi - lo) / mu, area.x1, area.y1), x, y);
     let (foot, mark) = (plot.at(value.s, 0.0), plot.at(value.s, along));
+    let curves: Vec<Vec<Point>> = (load.branches.iter().enumerate())
+        .map(|(b, br)| br.curve.points.iter().map(|&(s, y)| plot.at(s, signed(b, y))).collect())
+        .collect();
+    plot.x_above = Some(values_side(&plot, &curves));
     leave_out_crossed_values(&mut plot, (foot, mark));
     plot.draw_axes(g);
     let mut names = Vec::new();
@@ -118,6 +123,21 @@ pub(super) fn draw_load(
     ];
     text_rows(g, r.x0 + 2.0, r.y1 - 2.0 - LINE, &lines);
     (mu, area.width())
+}
+
+/// The side of the S/H axis (above: `true`) its values stand on: the plot's own where no
+/// curve runs through them, else the other where none does there (a small idle force's line
+/// ran through "0", "0.5" and "1" above the axis, an audit of 120 random crank-sliders).
+fn values_side(plot: &Plot, curves: &[Vec<Point>]) -> bool {
+    let crossed = |above: bool| {
+        let p = Plot { x_above: Some(above), ..plot.clone() };
+        p.x.ticks.iter().filter(|(_, label)| !label.is_empty()).any(|(v, label)| {
+            let b = p.x_value(*v, label).bbox().inflate(0.3, 0.3);
+            curves.iter().any(|c| c.windows(2).any(|w| segment_meets_rect(w[0], w[1], b)))
+        })
+    };
+    let own = plot.x_values_above();
+    if crossed(own) && !crossed(!own) { !own } else { own }
 }
 
 /// Leaves out an x value that the analysed position's ordinate (from the axis to its mark)

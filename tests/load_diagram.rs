@@ -1,0 +1,51 @@
+//! The load diagram on inputs the fixtures do not have: a crank-slider whose idle force is a
+//! few percent of its working force (found by an audit of 120 random crank-sliders: 10 had
+//! the idle line through the S/H values "0", "0.5", "1" and the idle level unmarked).
+
+mod common;
+
+use tmm_sheets::drawing::labels::Language;
+use tmm_sheets::drawing::scene::Item;
+use tmm_sheets::pipeline;
+
+/// A crank-slider resisting 16 505 N on its working stroke and 655 N on its idle one (4 %).
+const SMALL_IDLE: &str = r#"
+project: {title: "R", designation: "TMM CP 01", language: en}
+mechanism:
+  frame:
+    - {name: O, at: [0, 0]}
+  crank: {pivot: O, pin: A, length: 0.2788, rpm: 621, sense: cw}
+  groups:
+    - rrp: {links: [2, 3], joint: A, point: B, length: 0.8896, guide: {through: [0, -0.0710], angle_deg: 30}, branch: forward}
+  points:
+    - {name: S2, link: 2, from: A, toward: B, ratio: 0.32, mass_centre: true}
+    - {name: S3, link: 3, from: B, mass_centre: true}
+analysis:
+  positions: 12
+  assigned_deg: 60
+forces:
+  links:
+    - {link: 2, mass: 6.8, inertia: rod}
+    - {link: 3, mass: 4.1}
+  loads:
+    - resistance: {point: B, working: backward, force: 16505, idle_force: 655}
+"#;
+
+/// The S/H values stand on the side of the axis no curve runs through (below it here, where
+/// the idle line runs 1.6 mm above), the sheet's layout measure is clean, and the idle level
+/// is written on the P axis, in every language.
+#[test]
+fn a_small_idle_force_keeps_its_line_off_the_stroke_values_and_is_marked() {
+    for lang in Language::ALL {
+        let text = SMALL_IDLE.replace("language: en", &format!("language: {}", lang.key()));
+        let p = pipeline::load(&text).unwrap_or_else(|e| panic!("{e:#}"));
+        let lever = common::build_lever(&p);
+        let scene = &lever.composed.scene;
+        common::check_layout(&format!("small idle force {lang:?}"), scene);
+        let texts: Vec<&str> = (scene.groups.iter().filter(|g| g.id.starts_with("forces")))
+            .flat_map(|g| &g.items)
+            .filter_map(|i| if let Item::Text(t) = i { Some(t.text.as_str()) } else { None })
+            .collect();
+        assert!(texts.contains(&"655"), "{lang:?}: the idle level is not written: {texts:?}");
+    }
+}
