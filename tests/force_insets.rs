@@ -224,17 +224,38 @@ fn every_polygon_enlarges_its_short_sides_where_the_sheet_can_make_room() {
 /// Each polygon's sides at its own μ_P (the coarsest scale its segments are recorded at; an
 /// enlargement's are finer) are at least [`SIDE_MIN`] or too short to draw at all (0.05 mm).
 fn assert_no_short_side_on_a_polygon(name: &str, out: &tmm_sheets::sheets::SheetOutput) {
-    use std::collections::BTreeMap;
-    let mut parts: BTreeMap<&str, Vec<&tmm_sheets::report::Segment>> = BTreeMap::new();
-    for s in out.segments.iter().filter(|s| s.id.starts_with("forces.group") || s.id.starts_with("forces.crank")) {
-        parts.entry(s.id.rsplit_once('.').unwrap().0).or_default().push(s);
-    }
+    let parts = polygon_sides(out);
     assert!(parts.len() >= 3, "{name}: polygons {:?}", parts.keys());
     for (part, sides) in &parts {
         let mu_p = sides.iter().map(|s| s.scale).fold(0.0, f64::max);
         for s in sides.iter().filter(|s| s.scale == mu_p) {
             let drawn = s.length_mm >= 0.05;
             assert!(!drawn || s.length_mm >= SIDE_MIN, "{name} {part}: {} {:.3} mm", s.name, s.length_mm);
+        }
+    }
+}
+
+/// Each polygon's measured sides (its own and its enlargements'), by the polygon's part id.
+fn polygon_sides(
+    out: &tmm_sheets::sheets::SheetOutput,
+) -> std::collections::BTreeMap<&str, Vec<&tmm_sheets::report::Segment>> {
+    let mut parts: std::collections::BTreeMap<&str, Vec<&tmm_sheets::report::Segment>> = Default::default();
+    for s in out.segments.iter().filter(|s| s.id.starts_with("forces.group") || s.id.starts_with("forces.crank")) {
+        parts.entry(s.id.rsplit_once('.').unwrap().0).or_default().push(s);
+    }
+    parts
+}
+
+/// Sheet 1 of every fixture in every language that builds, with its name and language.
+fn every_fixture_sheet1(
+    mut check: impl FnMut(&str, tmm_sheets::drawing::labels::Language, &tmm_sheets::sheets::SheetOutput),
+) {
+    for name in common::fixture_names() {
+        for lang in tmm_sheets::drawing::labels::Language::ALL {
+            let mut p = fixture(&name);
+            p.info.language = lang;
+            let Ok(built) = pipeline::build(&p, &[1]) else { continue };
+            check(&name, lang, &built[0].output);
         }
     }
 }
@@ -400,15 +421,11 @@ fn group_drawings_keep_their_scale_in_every_language() {
 /// scale text (the μ after "X (") and the next title's letter on the same baseline.
 #[test]
 fn enlargement_titles_side_by_side_stand_apart() {
-    use tmm_sheets::drawing::labels::Language;
     let mut rows = 0;
-    for name in common::fixture_names() {
-        for lang in Language::ALL {
-            let mut p = fixture(&name);
-            p.info.language = lang;
-            let Ok(built) = pipeline::build(&p, &[1]) else { continue };
-            let scene = &built[0].output.scene;
-            let Some(forces) = scene.groups.iter().find(|g| g.id == "forces") else { continue };
+    every_fixture_sheet1(|name, lang, out| {
+        {
+            let scene = &out.scene;
+            let Some(forces) = scene.groups.iter().find(|g| g.id == "forces") else { return };
             let texts: Vec<_> = forces.texts().collect();
             // A title: its letter with the tail " (", then its scale starting with "μ".
             let letters: Vec<_> = texts.iter().filter(|t| t.tail == " (").collect();
@@ -432,6 +449,33 @@ fn enlargement_titles_side_by_side_stand_apart() {
                 }
             }
         }
-    }
+    });
     assert!(rows >= 1, "no titles side by side among the fixtures");
+}
+
+/// A side still shorter than [`SIDE_MIN`] in its enlargement (a force a hundredth of its
+/// run's largest: the worked example's Rᵗ₁₂, 0.4 mm in L) carries its value with its name
+/// there, "Rᵗ₁₂ = 5,467 N": nothing is left to be read off a side a ruler cannot measure.
+/// Every fixture in the three languages; the value as the sheet writes it.
+#[test]
+fn a_side_short_even_in_its_enlargement_carries_its_value() {
+    let mut checked = 0;
+    every_fixture_sheet1(|name, lang, out| {
+        let unit = tmm_sheets::drawing::labels::Common::get(lang).unit_n();
+        for sides in polygon_sides(out).values() {
+            let mu_p = sides.iter().map(|s| s.scale).fold(0.0, f64::max);
+            let enlarged_short = sides.iter().filter(|s| s.scale < mu_p && (0.05..SIDE_MIN).contains(&s.length_mm));
+            for s in enlarged_short {
+                checked += 1;
+                let tail = format!(" = {} {unit}", tmm_sheets::drawing::fmt::value(s.value, lang));
+                assert!(
+                    out.scene.texts().any(|t| t.tail == tail),
+                    "{name} {lang:?}: {} {:.2} mm in its enlargement without its value {tail:?}",
+                    s.id,
+                    s.length_mm
+                );
+            }
+        }
+    });
+    assert!(checked >= 3, "only {checked} short enlarged sides");
 }

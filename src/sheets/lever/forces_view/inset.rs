@@ -10,7 +10,7 @@
 //! larger keeps its labels on the polygon.
 
 use super::ForcesInput;
-use super::legend::{force_label, scale_item};
+use super::legend::{force_label, scale_item, value_item};
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, THIN, VECTOR, points_bbox};
@@ -378,7 +378,18 @@ pub(super) fn draw(
             }
             vector(g, a, b, VECTOR);
             let t = &poly.terms[k];
-            labels.add_side((a, b), (b - a).turn_90(), force_label(inp, t.kind, t.on), 3.5);
+            let label = force_label(inp, t.kind, t.on);
+            // A side still too short to measure in its enlargement (a force a hundredth of
+            // the run's largest: the worked example's Rt12, 0.4 mm in L) carries its value:
+            // nothing is left to be read off a side a ruler cannot measure. In 2.5 mm
+            // lettering: at 3.5 mm "P_i3 = 52.43 N" found room only over the next
+            // enlargement's drawing (the worked example's T beside L).
+            let (label, h) = if (b - a).norm() < SIDE_MIN {
+                (value_item(inp, label, t.force.norm(), inp.words.common.unit_n(), false), 2.5)
+            } else {
+                (label, 3.5)
+            };
+            labels.add_side((a, b), (b - a).turn_90(), label, h);
         }
     }
 }
