@@ -68,6 +68,11 @@ pub(super) struct Push {
     pub(super) keep_lines: bool,
 }
 
+/// Forces on paper (point, force) as [`Push::forces`] holds them: point and unit direction.
+pub(super) fn unit_directions(forces: impl IntoIterator<Item = (Point, Vec2)>) -> Vec<(Point, Vec2)> {
+    forces.into_iter().map(|(at, d)| (at, d / d.norm().max(f64::MIN_POSITIVE))).collect()
+}
+
 /// A pushing arrow's shaft passes no other point nearer than this, mm.
 const PUSH_POINT_CLEAR: f64 = 5.0;
 

@@ -2,7 +2,7 @@
 //! and inertia moments) beside its force polygon, the vector equation, the legend and the
 //! scales under them.
 
-use super::arrows::{Arrows, Push, arrow_scale, twins_reach};
+use super::arrows::{Arrows, Push, arrow_scale, twins_reach, unit_directions};
 use super::cells::Sizes;
 use super::inset::{self, Enlarge, Inset, Place};
 use super::legend::{
@@ -370,11 +370,7 @@ fn draw_group_geometry(
     let push = Push {
         lines: link_lines.clone(),
         points: points.iter().map(|&q| p(inp.state.points[q].p)).collect(),
-        forces: poly
-            .terms
-            .iter()
-            .map(|t| (p(t.at), view.dir(t.force) / t.force.norm().max(f64::MIN_POSITIVE)))
-            .collect(),
+        forces: unit_directions(poly.terms.iter().map(|t| (p(t.at), view.dir(t.force)))),
         within: r,
         keep_lines: false,
     };

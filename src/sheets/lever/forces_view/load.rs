@@ -74,16 +74,15 @@ pub(super) fn draw_load(
     let y = Axis { lo, hi, mu, name: format!("P, {}", inp.words.common.unit_n()), ticks };
     let mut plot = Plot::in_area(Rect::new(area.x0, area.y1 - (hi - lo) / mu, area.x1, area.y1), x, y);
     let (foot, mark) = (plot.at(value.s, 0.0), plot.at(value.s, along));
-    let curves: Vec<Vec<Point>> = (load.branches.iter().enumerate())
-        .map(|(b, br)| br.curve.points.iter().map(|&(s, y)| plot.at(s, signed(b, y))).collect())
+    let data: Vec<Vec<(f64, f64)>> = (load.branches.iter().enumerate())
+        .map(|(b, br)| br.curve.points.iter().map(|&(s, y)| (s, signed(b, y))).collect())
         .collect();
-    plot.x_above = Some(values_side(&plot, &curves));
+    plot.x_above = Some(values_side(&plot, &data));
     leave_out_crossed_values(&mut plot, (foot, mark));
     plot.draw_axes(g);
     let mut names = Vec::new();
     for (b, br) in load.branches.iter().enumerate() {
-        let data: Vec<(f64, f64)> = br.curve.points.iter().map(|&(s, y)| (s, signed(b, y))).collect();
-        plot.line(g, &data, if b == 0 { MAIN } else { DASHED });
+        plot.line(g, &data[b], if b == 0 { MAIN } else { DASHED });
         let name = match br.name {
             Stroke::Working => inp.words.sheet.stroke_working(),
             Stroke::Idle => inp.words.sheet.stroke_idle(),
@@ -127,8 +126,10 @@ pub(super) fn draw_load(
 
 /// The side of the S/H axis (above: `true`) its values stand on: the plot's own where no
 /// curve runs through them, else the other where none does there (a small idle force's line
-/// ran through "0", "0.5" and "1" above the axis, an audit of 120 random crank-sliders).
-fn values_side(plot: &Plot, curves: &[Vec<Point>]) -> bool {
+/// ran through "0", "0.5" and "1" above the axis, an audit of 120 random crank-sliders);
+/// `data` are the curves in the plot's units.
+fn values_side(plot: &Plot, data: &[Vec<(f64, f64)>]) -> bool {
+    let curves: Vec<Vec<Point>> = data.iter().map(|c| c.iter().map(|&(x, y)| plot.at(x, y)).collect()).collect();
     let crossed = |above: bool| {
         let p = Plot { x_above: Some(above), ..plot.clone() };
         p.x.ticks.iter().filter(|(_, label)| !label.is_empty()).any(|(v, label)| {

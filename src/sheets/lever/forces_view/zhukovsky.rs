@@ -1,7 +1,7 @@
 //! The Zhukovsky lever: the velocity plan turned by 90° with every force at its point's
 //! image, the balancing force P′ₘ from it and its difference from the kinetostatics.
 
-use super::arrows::{Arrows, Push, arrow_scale, twin_rows};
+use super::arrows::{Arrows, Push, arrow_scale, twin_rows, unit_directions};
 use super::legend::{
     couple_label, force_label, scale_item, text_rows, value_item, with_semicolon, with_short_note, wrap_items,
 };
@@ -57,7 +57,7 @@ fn lever_push(plan: &Plan, view: &View, forces: &[(Point, Vec2)], mu_f: f64) -> 
     Push {
         lines: plan.segs.iter().map(|s| (view.p(s.from), view.p(s.to))).collect(),
         points: plan.images.iter().map(|i| view.p(i.at)).collect(),
-        forces: forces.iter().map(|&(at, d)| (at, d / d.norm().max(f64::MIN_POSITIVE))).collect(),
+        forces: unit_directions(forces.iter().copied()),
         within,
         keep_lines: true,
     }
