@@ -11,9 +11,22 @@ fn main() {
     divan::main();
 }
 
-/// 360 positions with velocities and accelerations, reusing one state buffer.
+/// 360 positions with velocities and accelerations, the whole turn at once (the angles
+/// overlapped), reusing the states' buffers.
 #[divan::bench]
 fn solve_360_positions(bencher: divan::Bencher) {
+    let p = pipeline::load(DEFAULT_PROJECT).unwrap().lever.unwrap();
+    let thetas: Vec<f64> = (0..360).map(|k| TAU * k as f64 / 360.0).collect();
+    let mut states = Vec::new();
+    bencher.bench_local(|| {
+        p.mechanism.solve_all(divan::black_box(&thetas), &mut states).unwrap();
+        divan::black_box(states[359].points[5].a.x)
+    });
+}
+
+/// The same 360 positions one angle at a time, reusing one state buffer.
+#[divan::bench]
+fn solve_360_positions_one_by_one(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap().lever.unwrap();
     let mut s = State::default();
     bencher.bench_local(|| {

@@ -119,3 +119,41 @@ fn the_six_bar_matches_its_textbook_closed_form() {
         assert!(diff <= 1e-14 * scale, "{kind}: differs by {diff:e}, {:e} of its scale {scale:e}", diff / scale);
     }
 }
+
+/// The whole turn solved at once (`solve_all`, the angles overlapped) is the turn solved
+/// one angle at a time, bit for bit; on a coupler too short for part of the turn, the
+/// first angle that fails is the one `solve_into` fails first, with the same step and
+/// reason, and every angle before it is solved.
+#[test]
+fn the_turn_solved_at_once_is_the_turn_solved_angle_by_angle() {
+    let short = std::fs::read_to_string("tests/bad-input/118-rrr-too-short.yaml").unwrap();
+    for text in [DEFAULT_PROJECT, short.as_str()] {
+        let m = pipeline::load_for(text, &[1]).unwrap().lever.unwrap().mechanism;
+        for sense in [1.0, -1.0] {
+            let thetas: Vec<f64> = (0..720).map(|k| sense * TAU * k as f64 / 720.0 + 0.1).collect();
+            let mut all = Vec::new();
+            let got = m.solve_all(&thetas, &mut all);
+            let mut first_failure = None;
+            for (k, &th) in thetas.iter().enumerate() {
+                let mut s = State::default();
+                match m.solve_into(th, &mut s) {
+                    Ok(()) if first_failure.is_none() => {
+                        assert_eq!(
+                            (&all[k].points, &all[k].links, &all[k].slides),
+                            (&s.points, &s.links, &s.slides),
+                            "angle {k}"
+                        );
+                    }
+                    Ok(()) => {}
+                    Err(f) => {
+                        first_failure.get_or_insert((k, f));
+                    }
+                }
+            }
+            assert_eq!(got.err(), first_failure);
+        }
+    }
+    // The short coupler fails somewhere, so the failure branch above was exercised.
+    let m = pipeline::load_for(&short, &[1]).unwrap().lever.unwrap().mechanism;
+    assert!(m.solve_all(&[0.0, 3.0], &mut Vec::new()).is_err());
+}

@@ -40,7 +40,7 @@ pub struct DyadSolution {
 
 /// Crank `pivot → pin` of length `length` at absolute angle `theta` turning with the
 /// constant signed angular velocity `omega` (counter-clockwise positive, ε = 0).
-#[inline]
+#[inline(always)]
 pub fn crank(pivot: &Kin, length: f64, theta: f64, omega: f64) -> (Kin, LinkKin) {
     let r = math::from_angle(theta) * length;
     let pin = Kin { p: pivot.p + r, v: pivot.v + r.turn_90() * omega, a: pivot.a - r * (omega * omega) };
@@ -56,18 +56,21 @@ fn solve2(e1: Vec2, e2: Vec2, rhs: Vec2, inv_det: f64) -> (f64, f64) {
 /// RRR dyad: point B joined to known P by a link of length `l_pb` and to known Q by
 /// a link of length `l_qb`. `branch` is +1 when B lies to the left of the directed
 /// line P→Q, −1 to the right. Links are returned as (P–B, Q–B) with angles of P→B and Q→B.
-#[inline]
+#[inline(always)]
 pub fn rrr(p: &Kin, q: &Kin, l_pb: f64, l_qb: f64, branch: f64) -> Result<DyadSolution, DyadFailure> {
     let pq = q.p - p.p;
-    let d = pq.hypot2().sqrt(); // lengths are metres: no overflow risk, and libm hypot is slow
+    // In units of d = |PQ| (d² and 1/d², no square root of d on the way to B: the
+    // solver's time is the chain of square roots and divisions from the crank to the last
+    // dyad), B is `along` ahead of P on PQ and `high` off it.
+    let d2 = pq.hypot2();
     let (lo, hi) = ((l_pb - l_qb).abs(), l_pb + l_qb);
-    if d.is_nan() || d <= 0.0 || d > hi || d < lo {
-        return Err(DyadFailure::NoIntersection { distance: d, reach_min: lo, reach_max: hi });
+    if d2.is_nan() || d2 <= 0.0 || d2 > hi * hi || d2 < lo * lo {
+        return Err(DyadFailure::NoIntersection { distance: d2.sqrt(), reach_min: lo, reach_max: hi });
     }
-    let e = pq / d;
-    let along = (l_pb * l_pb - l_qb * l_qb + d * d) / (2.0 * d);
-    let h = (l_pb * l_pb - along * along).max(0.0).sqrt();
-    let b = p.p + e * along + e.turn_90() * (branch * h);
+    let inv_d2 = 1.0 / d2;
+    let along = 0.5 + (l_pb * l_pb - l_qb * l_qb) * (0.5 * inv_d2);
+    let high = (l_pb * l_pb * inv_d2 - along * along).max(0.0).sqrt();
+    let b = p.p + pq * along + pq.turn_90() * (branch * high);
     let (r1, r2) = (b - p.p, b - q.p);
     let cross = r1.cross(r2); // l_pb·l_qb·sin(transmission angle)
     if cross.abs() < DEAD_POINT_SIN * l_pb * l_qb {
@@ -91,7 +94,7 @@ pub fn rrr(p: &Kin, q: &Kin, l_pb: f64, l_qb: f64, branch: f64) -> Result<DyadSo
 /// RRP dyad: slider point D on a fixed guide line (through `through`, unit direction
 /// `dir`) joined to the known point P by a rod of length `l`. `branch` is +1 when D lies
 /// ahead of P's foot on the guide (along `dir`), −1 behind. Links: (rod P→D, slider).
-#[inline]
+#[inline(always)]
 pub fn rrp(p: &Kin, l: f64, through: Vec2, dir: Vec2, branch: f64) -> Result<DyadSolution, DyadFailure> {
     let w = p.p - through;
     let h = w.cross(dir); // signed distance of P from the guide
@@ -130,7 +133,7 @@ pub struct KulisaSolution {
 
 /// `min_distance` (m) is how close to the pivot the block may come before the kulisa's
 /// direction is undefined.
-#[inline]
+#[inline(always)]
 pub fn rpr(a: &Kin, c: &Kin, min_distance: f64) -> Result<KulisaSolution, DyadFailure> {
     let ca = a.p - c.p;
     let d = ca.hypot2().sqrt();

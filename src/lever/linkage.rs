@@ -243,6 +243,40 @@ impl Mechanism {
         Ok(())
     }
 
+    /// Solves every angle of `thetas` into `states` (one for each, their buffers reused):
+    /// the angles' results are [`Mechanism::solve_into`]'s, bit for bit. Step by step across
+    /// the angles, not angle by angle: a dyad's square roots and divisions wait on the step
+    /// before at one angle, but not at the next angle, so the processor overlaps the angles
+    /// (one angle at a time, the whole turn waits on every chain in turn: about twice the
+    /// time). An angle that fails a step is solved no further; the first angle that fails
+    /// is returned with its index.
+    pub fn solve_all(&self, thetas: &[f64], states: &mut Vec<State>) -> Result<(), (usize, StepFailure)> {
+        states.truncate(thetas.len());
+        states.resize_with(thetas.len(), State::default);
+        for (s, &theta) in states.iter_mut().zip(thetas) {
+            s.theta = theta;
+            s.points.resize(self.point_names.len(), Kin::default());
+            s.links.resize(self.links.len(), LinkKin::default());
+            s.slides.resize(self.steps.len(), (0.0, 0.0, 0.0));
+            for &(id, p) in &self.frame {
+                s.points[id] = Kin::fixed(p);
+            }
+        }
+        // The angles failed so far, in the order they failed: rare, so a list.
+        let mut failed: Vec<(usize, StepFailure)> = Vec::new();
+        for (i, step) in self.steps.iter().enumerate() {
+            for (k, s) in states.iter_mut().enumerate() {
+                if !failed.is_empty() && failed.iter().any(|f| f.0 == k) {
+                    continue;
+                }
+                if let Err(why) = self.run_step(i, step, s.theta, s) {
+                    failed.push((k, StepFailure { step: i, why }));
+                }
+            }
+        }
+        failed.into_iter().min_by_key(|f| f.0).map_or(Ok(()), Err)
+    }
+
     #[inline(always)]
     fn run_step(&self, i: usize, step: &Step, theta: f64, s: &mut State) -> Result<(), DyadFailure> {
         match *step {

@@ -119,14 +119,13 @@ pub fn analyse_motion(m: &Mechanism, sense: Sense, start: Start) -> Result<Motio
     // Scan in u from absolute θ = 0 in the sense of rotation: θ = sense·u.
     let theta_of = |u: f64| sense.sign() * u;
     let fail = |f: StepFailure, u: f64| assembly_error(m, f, u, sense, start);
-    let mut states = Vec::with_capacity(SCAN_SAMPLES);
-    for k in 0..SCAN_SAMPLES {
-        let u = TAU * k as f64 / SCAN_SAMPLES as f64;
-        match m.solve(theta_of(u)) {
-            Ok(s) => states.push((u, s)),
-            Err(f) => return Err(fail(f, u)),
-        }
+    let us: Vec<f64> = (0..SCAN_SAMPLES).map(|k| TAU * k as f64 / SCAN_SAMPLES as f64).collect();
+    let thetas: Vec<f64> = us.iter().map(|&u| theta_of(u)).collect();
+    let mut solved = Vec::with_capacity(SCAN_SAMPLES);
+    if let Err((k, f)) = m.solve_all(&thetas, &mut solved) {
+        return Err(fail(f, us[k]));
     }
+    let states: Vec<(f64, State)> = us.into_iter().zip(solved).collect();
     if let Some((f, u)) = narrow_lock_up(m, &states, &theta_of) {
         return Err(fail(f, u));
     }
