@@ -2,7 +2,7 @@
 
 use super::obstacles::{Obstacles, Piece, segments};
 use super::path::{Path, on_circle};
-use super::scene::{Anchor, Group, Pen, THIN, Text};
+use super::scene::{Anchor, Group, Item, Pen, THIN, Text};
 use super::text::LabelText;
 use crate::num::math::{self, Norm};
 use crate::num::tol;
@@ -106,7 +106,11 @@ pub fn turn_arrow_reach(c: Point, r: f64) -> Rect {
 }
 
 /// A [`turn_arrow`] turned (start every 10° from `pref_deg`) to where it crosses the fewest
-/// segments of `drawn`, nearest `pref_deg` among equals; it joins `drawn`. Returns its start.
+/// segments of `drawn`, with the most room round its head among equals (up to
+/// [`HEAD_ROOM`]), then nearest `pref_deg`; it joins `drawn`. Returns its start.
+/// The room round a [`clear_turn_arrow`]'s head beyond which more does not count, mm.
+const HEAD_ROOM: f64 = 2.5;
+
 #[allow(clippy::too_many_arguments)]
 pub fn clear_turn_arrow(
     g: &mut Group,
@@ -128,21 +132,31 @@ pub fn clear_turn_arrow(
         let d = (a - pref_deg).rem_euclid(360.0);
         d.min(360.0 - d)
     };
-    // The least crossings, then the least turn, then the first start: tried nearest the
-    // preferred start first, the first that crosses nothing wins without drawing the rest.
-    let mut starts: Vec<(f64, f64)> = (0..36).map(|k| pref_deg + 10.0 * k as f64).map(|a| (turn(a), a)).collect();
-    starts.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let mut best: Option<(usize, f64)> = None;
-    for (_, a) in starts {
-        let n = crossings(&probe(a));
-        if best.is_none_or(|(least, _)| n < least) {
-            best = Some((n, a));
-        }
-        if n == 0 {
-            break;
-        }
-    }
-    let start = best.map_or(pref_deg, |x| x.1);
+    // Every start, 10° apart from the preferred one: the least crossings, then the most
+    // room round the head (up to HEAD_ROOM: the first clear start from the preferred one
+    // set an inertia moment's head on a weight's head, a teacher's review), then the least
+    // turn.
+    let head_room = |p: &Group| -> f64 {
+        let Some(Item::Path { path, .. }) = p.items.first() else { return 0.0 };
+        let tip = path.end();
+        let near = drawn.near(Rect::from_center_size(tip, (2.0 * HEAD_ROOM, 2.0 * HEAD_ROOM)));
+        near.map(|(piece, _)| match *piece {
+            Piece::Segment(a, b) => {
+                kurbo::ParamCurveNearest::nearest(&kurbo::Line::new(a, b), tip, 0.0).distance_sq.sqrt()
+            }
+            Piece::Disc(c, rad) => ((tip - c).norm() - rad).max(0.0),
+            Piece::TextBox(r) => crate::drawing::obstacles::rect_segment_distance(r, (tip, tip)),
+        })
+        .fold(HEAD_ROOM, f64::min)
+    };
+    let start = (0..36)
+        .map(|k| pref_deg + 10.0 * f64::from(k))
+        .map(|a| {
+            let p = probe(a);
+            ((crossings(&p), -head_room(&p), turn(a)), a)
+        })
+        .min_by(|x, y| x.0.0.cmp(&y.0.0).then(x.0.1.total_cmp(&y.0.1)).then(x.0.2.total_cmp(&y.0.2)))
+        .map_or(pref_deg, |x| x.1);
     let arrow = probe(start);
     for (a, b) in arrow.items.iter().flat_map(segments) {
         drawn.add(Piece::Segment(a, b), usize::MAX);

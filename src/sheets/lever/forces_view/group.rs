@@ -11,7 +11,7 @@ use super::legend::{
 };
 use super::polygon::{bbox_of, chain, draw_polygon};
 use super::{ARROW_MAX, ARROW_MIN, ForcesInput, LINE};
-use crate::drawing::obstacles::Obstacles;
+use crate::drawing::obstacles::{Obstacles, Piece};
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{Group, MAIN, THIN};
 use crate::drawing::symbols::{clear_turn_arrow, slider, turn_arrow_reach};
@@ -342,31 +342,6 @@ fn draw_group_geometry(
             g.circle(at, 1.0, THIN);
         }
     }
-    let moments: Vec<_> = inp
-        .fa
-        .forces
-        .inertia
-        .iter()
-        .filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0)
-        .map(|il| {
-            let centre = m.mass_centres.iter().find(|c| c.0 == il.link).map_or(m.links[il.link].points[0], |c| c.1);
-            (il, p(inp.state.points[centre].p))
-        })
-        .collect();
-    // What the moments' arrows may cross: the lines round their centres.
-    let reach = moments.iter().map(|&(_, at)| turn_arrow_reach(at, MOMENT_R)).reduce(|a, b| a.union(b));
-    let mut drawn = reach.map_or_else(Obstacles::default, |r| Obstacles::of_items_within(&g.items, r));
-    for (il, at) in moments {
-        let start = clear_turn_arrow(g, &mut drawn, at, MOMENT_R, 200.0, MOMENT_SWEEP, il.moment > 0.0, THIN);
-        let sign = if il.moment > 0.0 { -1.0 } else { 1.0 };
-        let mid = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP / 2.0).to_radians()) * MOMENT_R;
-        labels.add(
-            mid,
-            mid - at,
-            LabelText::new("M", inp.words.sheet.force(ForceKind::Inertia, &m.links[il.link].number.to_string())),
-            3.5,
-        );
-    }
     let push = Push {
         lines: link_lines.clone(),
         points: points.iter().map(|&q| p(inp.state.points[q].p)).collect(),
@@ -379,6 +354,45 @@ fn draw_group_geometry(
     for t in &poly.terms {
         arrows.arrow(g, labels, p(t.at), t.force, force_label(inp, t.kind, t.on));
     }
+    let moments: Vec<_> = inp
+        .fa
+        .forces
+        .inertia
+        .iter()
+        .filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0)
+        .map(|il| {
+            let centre = m.mass_centres.iter().find(|c| c.0 == il.link).map_or(m.links[il.link].points[0], |c| c.1);
+            (il, p(inp.state.points[centre].p))
+        })
+        .collect();
+    // Drawn after the force arrows, which keep their lines of action, so that an arc
+    // turns its head away from them too (it met G's head at S4 on the worked example and
+    // the jaw crusher, a teacher's review). What the arcs may cross: the lines and arrows
+    // round their centres.
+    let reach = moments.iter().map(|&(_, at)| turn_arrow_reach(at, MOMENT_R)).reduce(|a, b| a.union(b));
+    let mut drawn = reach.map_or_else(Obstacles::default, |r| Obstacles::of_items_within(&g.items, r));
+    // An arrow at an arc's centre shorter than the arc's radius would not be crossed, yet
+    // the arc's head could stand on its head: each counts as a wedge reaching past the
+    // circle.
+    for &(at, e, far) in &arrows.drawn {
+        if moments.iter().any(|&(_, c)| (c - at).norm() < MOMENT_R) {
+            for turn in [-ARC_WEDGE, 0.0, ARC_WEDGE] {
+                let ray = crate::num::math::rotate(e, turn.to_radians()) * far.max(MOMENT_R + ARC_CLEAR);
+                drawn.add(Piece::Segment(at, at + ray), usize::MAX);
+            }
+        }
+    }
+    for (il, at) in moments {
+        let start = clear_turn_arrow(g, &mut drawn, at, MOMENT_R, 200.0, MOMENT_SWEEP, il.moment > 0.0, THIN);
+        let sign = if il.moment > 0.0 { -1.0 } else { 1.0 };
+        let mid = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP / 2.0).to_radians()) * MOMENT_R;
+        labels.add(
+            mid,
+            mid - at,
+            LabelText::new("M", inp.words.sheet.force(ForceKind::Inertia, &m.links[il.link].number.to_string())),
+            3.5,
+        );
+    }
     // The letters last: they keep clear of the arrows.
     for &q in &points {
         let at = p(inp.state.points[q].p);
@@ -390,6 +404,12 @@ fn draw_group_geometry(
 /// Radius and sweep of an inertia moment's arc, mm and degrees.
 const MOMENT_R: f64 = 6.0;
 const MOMENT_SWEEP: f64 = 120.0;
+/// How far past an inertia moment's arc an arrow from its centre is taken to reach, mm:
+/// the arc's head (about 2 mm) clear of the arrow's.
+const ARC_CLEAR: f64 = 2.5;
+/// The half angle of the wedge an arrow from an arc's centre keeps the arc's head out of,
+/// degrees: 20° at the arc's 6 mm is 2 mm.
+const ARC_WEDGE: f64 = 20.0;
 
 #[cfg(test)]
 mod tests {
