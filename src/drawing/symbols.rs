@@ -106,11 +106,8 @@ pub fn turn_arrow_reach(c: Point, r: f64) -> Rect {
 }
 
 /// A [`turn_arrow`] turned (start every 10° from `pref_deg`) to where it crosses the fewest
-/// segments of `drawn`, with the most room round its head among equals (up to
-/// [`HEAD_ROOM`]), then nearest `pref_deg`; it joins `drawn`. Returns its start.
-/// The room round a [`clear_turn_arrow`]'s head beyond which more does not count, mm.
-const HEAD_ROOM: f64 = 2.5;
-
+/// segments of `drawn`, with the most room round its head among equals (up to `room` mm;
+/// 0 for none asked), then nearest `pref_deg`; it joins `drawn`. Returns its start.
 #[allow(clippy::too_many_arguments)]
 pub fn clear_turn_arrow(
     g: &mut Group,
@@ -120,7 +117,7 @@ pub fn clear_turn_arrow(
     pref_deg: f64,
     sweep_deg: f64,
     ccw: bool,
-    pen: Pen,
+    (pen, room): (Pen, f64),
 ) -> f64 {
     let probe = |start: f64| {
         let mut p = Group::new("probe", Rect::ZERO);
@@ -133,13 +130,16 @@ pub fn clear_turn_arrow(
         d.min(360.0 - d)
     };
     // Every start, 10° apart from the preferred one: the least crossings, then the most
-    // room round the head (up to HEAD_ROOM: the first clear start from the preferred one
-    // set an inertia moment's head on a weight's head, a teacher's review), then the least
+    // room round the head (up to `room`: the first clear start from the preferred one set
+    // an inertia moment's head on a weight's head, a teacher's review), then the least
     // turn.
     let head_room = |p: &Group| -> f64 {
+        if room <= 0.0 {
+            return 0.0;
+        }
         let Some(Item::Path { path, .. }) = p.items.first() else { return 0.0 };
         let tip = path.end();
-        let near = drawn.near(Rect::from_center_size(tip, (2.0 * HEAD_ROOM, 2.0 * HEAD_ROOM)));
+        let near = drawn.near(Rect::from_center_size(tip, (2.0 * room, 2.0 * room)));
         near.map(|(piece, _)| match *piece {
             Piece::Segment(a, b) => {
                 kurbo::ParamCurveNearest::nearest(&kurbo::Line::new(a, b), tip, 0.0).distance_sq.sqrt()
@@ -147,7 +147,7 @@ pub fn clear_turn_arrow(
             Piece::Disc(c, rad) => ((tip - c).norm() - rad).max(0.0),
             Piece::TextBox(r) => crate::drawing::obstacles::rect_segment_distance(r, (tip, tip)),
         })
-        .fold(HEAD_ROOM, f64::min)
+        .fold(room, f64::min)
     };
     let start = (0..36)
         .map(|k| pref_deg + 10.0 * f64::from(k))

@@ -229,14 +229,7 @@ impl Mechanism {
 
     /// Like [`Mechanism::solve`], reusing the buffers of `s` (no allocation after the first call).
     pub fn solve_into(&self, theta: f64, s: &mut State) -> Result<(), StepFailure> {
-        s.theta = theta;
-        // Every entry is overwritten by its step, so buffers are only resized, not cleared.
-        s.points.resize(self.point_names.len(), Kin::default());
-        s.links.resize(self.links.len(), LinkKin::default());
-        s.slides.resize(self.steps.len(), (0.0, 0.0, 0.0));
-        for &(id, p) in &self.frame {
-            s.points[id] = Kin::fixed(p);
-        }
+        self.prepare(theta, s);
         for (i, step) in self.steps.iter().enumerate() {
             self.run_step(i, step, theta, s).map_err(|why| StepFailure { step: i, why })?;
         }
@@ -247,20 +240,14 @@ impl Mechanism {
     /// the angles' results are [`Mechanism::solve_into`]'s, bit for bit. Step by step across
     /// the angles, not angle by angle: a dyad's square roots and divisions wait on the step
     /// before at one angle, but not at the next angle, so the processor overlaps the angles
-    /// (one angle at a time, the whole turn waits on every chain in turn: about twice the
-    /// time). An angle that fails a step is solved no further; the first angle that fails
-    /// is returned with its index.
+    /// (the worked example's 360 positions in 0.85 of the time one at a time takes). An
+    /// angle that fails a step is solved no further; the first angle that fails is returned
+    /// with its index.
     pub fn solve_all(&self, thetas: &[f64], states: &mut Vec<State>) -> Result<(), (usize, StepFailure)> {
         states.truncate(thetas.len());
         states.resize_with(thetas.len(), State::default);
         for (s, &theta) in states.iter_mut().zip(thetas) {
-            s.theta = theta;
-            s.points.resize(self.point_names.len(), Kin::default());
-            s.links.resize(self.links.len(), LinkKin::default());
-            s.slides.resize(self.steps.len(), (0.0, 0.0, 0.0));
-            for &(id, p) in &self.frame {
-                s.points[id] = Kin::fixed(p);
-            }
+            self.prepare(theta, s);
         }
         // The angles failed so far, in the order they failed: rare, so a list.
         let mut failed: Vec<(usize, StepFailure)> = Vec::new();
@@ -275,6 +262,19 @@ impl Mechanism {
             }
         }
         failed.into_iter().min_by_key(|f| f.0).map_or(Ok(()), Err)
+    }
+
+    /// `s` ready for the steps at crank angle `theta`: its buffers sized (every entry is
+    /// overwritten by its step, so they are only resized, not cleared) and the frame's
+    /// points set.
+    fn prepare(&self, theta: f64, s: &mut State) {
+        s.theta = theta;
+        s.points.resize(self.point_names.len(), Kin::default());
+        s.links.resize(self.links.len(), LinkKin::default());
+        s.slides.resize(self.steps.len(), (0.0, 0.0, 0.0));
+        for &(id, p) in &self.frame {
+            s.points[id] = Kin::fixed(p);
+        }
     }
 
     #[inline(always)]

@@ -466,7 +466,7 @@ fn sense_arrow(
     ccw: bool,
     name: LabelText,
 ) {
-    let start = clear_turn_arrow(g, drawn, centre, r, along + 40.0, SENSE_SWEEP, ccw, THIN);
+    let start = clear_turn_arrow(g, drawn, centre, r, along + 40.0, SENSE_SWEEP, ccw, (THIN, 0.0));
     let mid = (start + if ccw { -SENSE_SWEEP / 2.0 } else { SENSE_SWEEP / 2.0 }).to_radians();
     let at = centre + math::from_angle(mid) * r;
     labels.add_ranked(at, at - centre, name, 3.5, 1);

@@ -383,7 +383,8 @@ fn draw_group_geometry(
         }
     }
     for (il, at) in moments {
-        let start = clear_turn_arrow(g, &mut drawn, at, MOMENT_R, 200.0, MOMENT_SWEEP, il.moment > 0.0, THIN);
+        let start =
+            clear_turn_arrow(g, &mut drawn, at, MOMENT_R, 200.0, MOMENT_SWEEP, il.moment > 0.0, (THIN, HEAD_ROOM));
         let sign = if il.moment > 0.0 { -1.0 } else { 1.0 };
         let mid = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP / 2.0).to_radians()) * MOMENT_R;
         labels.add(
@@ -407,6 +408,9 @@ const MOMENT_SWEEP: f64 = 120.0;
 /// How far past an inertia moment's arc an arrow from its centre is taken to reach, mm:
 /// the arc's head (about 2 mm) clear of the arrow's.
 const ARC_CLEAR: f64 = 2.5;
+/// The room round an inertia moment's head beyond which more does not count in turning
+/// its arc, mm.
+const HEAD_ROOM: f64 = 2.5;
 /// The half angle of the wedge an arrow from an arc's centre keeps the arc's head out of,
 /// degrees: 20° at the arc's 6 mm is 2 mm.
 const ARC_WEDGE: f64 = 20.0;
