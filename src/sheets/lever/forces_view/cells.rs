@@ -70,6 +70,9 @@ pub(super) struct Sizes {
     /// The enlargements' longer side at most, mm (`inset::INSET_BOX`, smaller where the
     /// cells are cramped).
     pub(super) inset_box: f64,
+    /// Whether the enlargements in the room a polygon's cell leaves may set their titles in
+    /// 2.5 mm ([`Enlarge::InRoomNarrow`]): the last resort.
+    pub(super) narrow_titles: bool,
 }
 
 /// How many polygons may grow one by one: a mechanism has at most a few groups.
@@ -136,7 +139,9 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     for (i, poly) in inp.fa.forces.polygons.iter().enumerate() {
         let enlarge = match (s.apart >> i & 1 == 1, s.grow >> i & 1 == 1) {
             (true, _) => Enlarge::Apart,
+            (false, true) if s.narrow_titles => Enlarge::GrowNarrow,
             (false, true) => Enlarge::Grow,
+            (false, false) if s.narrow_titles => Enlarge::InRoomNarrow,
             (false, false) => Enlarge::InRoom,
         };
         let (mu_l, mu_p) = group_scales(poly, inp, s, s.poly_grown.get(i).copied().unwrap_or(1.0));

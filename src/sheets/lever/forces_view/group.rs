@@ -201,16 +201,20 @@ fn with_insets(
     }
     let places = [Place::Below, Place::Beside];
     let least = |is: &Vec<Inset>| is.iter().map(|i| mu_p / i.mu).fold(f64::INFINITY, f64::min);
+    // Slots that hold their titles in 3.5 mm lettering, as every other enlargement's (a
+    // narrower one set "T (μP = 1,25 N/mm)" in 2.5 mm beside "L (μP = 6 N/mm)", a teacher's
+    // review): where they do not, the sheet tries grown cells and cells apart first.
+    let titled = !matches!(enlarge, Enlarge::InRoomNarrow | Enlarge::GrowNarrow);
     let free = places
         .iter()
-        .filter_map(|&p| runs.placed(p, room, poly_size).map(|is| (is, p)))
+        .filter_map(|&p| runs.placed(p, room, poly_size, titled).map(|is| (is, p)))
         .reduce(|a, b| if least(&b.0) > least(&a.0) { b } else { a });
     let grown = match enlarge {
-        Enlarge::InRoom => None,
-        Enlarge::Grow => {
+        Enlarge::InRoom | Enlarge::InRoomNarrow => None,
+        Enlarge::Grow | Enlarge::GrowNarrow => {
             let grown = places.iter().filter_map(|&p| {
-                let room = runs.grown(p, room, poly_size);
-                runs.placed(p, room, poly_size).map(|is| (is, p, room))
+                let room = runs.grown(p, room, poly_size, titled);
+                runs.placed(p, room, poly_size, titled).map(|is| (is, p, room))
             });
             grown.min_by(|a, b| (a.2.0 * a.2.1).total_cmp(&(b.2.0 * b.2.1)))
         }

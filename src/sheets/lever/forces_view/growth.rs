@@ -80,9 +80,20 @@ pub(super) fn finer(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): 
         {
             return apart;
         }
-        if let Some(arranged) = first.or(fine) {
-            return arranged;
+        // What is left keeps short sides on a polygon: rather than that, the whole search
+        // again with the enlargements' titles in 2.5 mm where a slot is too narrow for 3.5
+        // (task 15 variant 7's II(2,3) kept a side of 0.1 mm).
+        let chosen = first.or(fine).unwrap_or((cells, at, ok, sizes));
+        if short_sides(inp, &chosen.0) && !sizes.narrow_titles {
+            let s = Sizes { narrow_titles: true, ..sizes };
+            let cells = self::cells::cells(inp, s);
+            let (at, ok) = pack(&cells, bodies);
+            let narrow = finer(inp, bodies, (cells, at, ok, s));
+            if !short_sides(inp, &narrow.0) {
+                return narrow;
+            }
         }
+        return chosen;
     }
     (cells, at, ok, sizes)
 }

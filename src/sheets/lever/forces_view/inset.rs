@@ -62,6 +62,9 @@ pub(super) struct Inset {
     pub(super) world: Rect,
     /// Where it is drawn, relative to the polygon's room's top left, mm.
     pub(super) slot: Rect,
+    /// Whether a side is still under [`SIDE_MIN`] at `mu` (it carries its value, and the
+    /// drawing keeps [`VALUE_ROOM`] under its title for it).
+    pub(super) short: bool,
 }
 
 /// Where the polygon and its enlargements go in the polygon's room of a cell.
@@ -88,6 +91,10 @@ pub(super) enum Enlarge {
     Grow,
     /// In cells of their own ([`Place::Apart`]).
     Apart,
+    /// As `InRoom` and `Grow`, the slots' titles in 2.5 mm where they are too narrow for
+    /// 3.5: the last resort before short sides left on the polygon.
+    InRoomNarrow,
+    GrowNarrow,
 }
 
 /// Whether term `k`'s side is drawn on the polygon and shorter than [`SIDE_MIN`].
@@ -99,7 +106,8 @@ fn short(poly: &Polygon, k: usize, mu_p: f64) -> bool {
 /// The runs of short sides of `poly` at `mu_p` (`chain` its vertices from its start), each
 /// with its box (N) and its longest side.
 pub(super) struct Runs<'a> {
-    runs: Vec<(Vec<usize>, Rect, f64)>,
+    /// Each run's terms, its vertices' box, its longest and its shortest side, N.
+    runs: Vec<(Vec<usize>, Rect, f64, f64)>,
     mu_p: f64,
     /// The enlarged run's longer side at most, mm.
     inset_box: f64,
@@ -121,8 +129,9 @@ impl<'a> Runs<'a> {
             .map(|terms| {
                 let pts: Vec<Point> = run_points(chain, &terms, n).iter().map(|v| v.to_point()).collect();
                 let world = points_bbox(&pts);
-                let longest = terms.iter().map(|&k| poly.terms[k].force.norm()).fold(0.0, f64::max);
-                (terms, world, longest)
+                let sides = || terms.iter().map(|&k| poly.terms[k].force.norm()).filter(|&f| f > 0.0);
+                let (longest, shortest) = (sides().fold(0.0, f64::max), sides().fold(f64::INFINITY, f64::min));
+                (terms, world, longest, shortest)
             })
             .collect();
         Runs { runs, mu_p, inset_box, title_w }
@@ -134,8 +143,8 @@ impl<'a> Runs<'a> {
 
     /// The room `(w, h)` that holds the polygon (`poly` its size with its label room) and
     /// the enlargements placed `place`, from the room `(w, h)` the cell leaves it.
-    pub(super) fn grown(&self, place: Place, (w, h): (f64, f64), poly: (f64, f64)) -> (f64, f64) {
-        let (slot_w, slot_h) = self.slot();
+    pub(super) fn grown(&self, place: Place, (w, h): (f64, f64), poly: (f64, f64), titled: bool) -> (f64, f64) {
+        let (slot_w, slot_h) = self.slot(titled);
         let n = self.runs.len() as f64;
         match place {
             Place::None | Place::Apart => (w, h),
@@ -146,13 +155,17 @@ impl<'a> Runs<'a> {
 
     /// An enlargement's slot at its full size, mm: its drawing's box with room for its
     /// labels and title.
-    fn slot(&self) -> (f64, f64) {
-        (self.inset_box + 2.0 * PAD, self.inset_box + 2.0 * PAD + TITLE)
+    fn slot(&self, titled: bool) -> (f64, f64) {
+        // As wide as a title of a four-character μP ("1,25") too, where the titles are
+        // kept at 3.5 mm (`titled`).
+        let title = if titled { (self.title_w)(1.25) + 2.0 * TITLE_SIDE } else { 0.0 };
+        ((self.inset_box + 2.0 * PAD).max(title), self.inset_box + 2.0 * PAD + TITLE)
     }
 
     /// Each run enlarged in a slot of `room` left by the polygon (`poly` its size) placed
-    /// `place`: `None` unless every run gets a slot that enlarges it [`ENLARGED_MIN`] times.
-    pub(super) fn placed(&self, place: Place, room: (f64, f64), poly: (f64, f64)) -> Option<Vec<Inset>> {
+    /// `place`: `None` unless every run gets a slot that enlarges it [`ENLARGED_MIN`] times
+    /// and, where `titled`, holds its title in 3.5 mm lettering.
+    pub(super) fn placed(&self, place: Place, room: (f64, f64), poly: (f64, f64), titled: bool) -> Option<Vec<Inset>> {
         let count = self.runs.len() as f64;
         let (w, h) = room;
         let slot = |i: usize| {
@@ -163,14 +176,15 @@ impl<'a> Runs<'a> {
             }
         };
         (place != Place::None && place != Place::Apart).then_some(())?;
-        self.in_slots(slot)
+        self.in_slots(&slot, titled)
     }
 
     /// Each run enlarged in a cell of its own ([`Place::Apart`]), its slot from the cell's
     /// top left.
     pub(super) fn apart(&self) -> Option<Vec<Inset>> {
-        let (w, h) = self.slot();
-        let full = self.in_slots(|_| Rect::new(0.0, 0.0, w, h))?;
+        let (w, h) = self.slot(false);
+        // Each cell is made as wide as its title below.
+        let full = self.in_slots(&|_| Rect::new(0.0, 0.0, w, h), false)?;
         // Each cell only as large as its drawing at that μ_P: a run of two sides of a few
         // hundred newtons left most of its full slot empty, and the smaller cells pack where
         // the full ones found no room (task 1 variant 1's II(2,3) kept Rᵗ₁₂ and G₂ 1.6 mm long
@@ -183,13 +197,13 @@ impl<'a> Runs<'a> {
     }
 
     /// Each run enlarged in its slot `slot(i)`: `None` unless every run gets one that
-    /// enlarges it [`ENLARGED_MIN`] times.
-    fn in_slots(&self, slot: impl Fn(usize) -> Rect) -> Option<Vec<Inset>> {
+    /// enlarges it [`ENLARGED_MIN`] times and, where `titled`, holds its title.
+    fn in_slots(&self, slot: &impl Fn(usize) -> Rect, titled: bool) -> Option<Vec<Inset>> {
         (!self.runs.is_empty()).then_some(())?;
         self.runs
             .iter()
             .enumerate()
-            .map(|(i, (terms, world, longest))| {
+            .map(|(i, (terms, world, longest, shortest))| {
                 let slot = slot(i);
                 let (w, h) = (slot.width() - 2.0 * PAD, slot.height() - 2.0 * PAD - TITLE);
                 if slot.width() < SLOT_MIN_W || w <= 0.0 || h <= 0.0 {
@@ -197,11 +211,16 @@ impl<'a> Runs<'a> {
                 }
                 let need = (world.width() / w).max(world.height() / h).max(longest / self.inset_box);
                 let mu = scale::plan_round_up(need);
-                (mu > 0.0 && mu * ENLARGED_MIN <= self.mu_p).then(|| Inset {
+                // Its title in 3.5 mm lettering, as every other enlargement's: a narrower
+                // slot set it a size smaller beside its neighbour's (the v-compressor's T
+                // beside L, a teacher's review).
+                let title_fits = !titled || slot.width() >= (self.title_w)(mu) + 2.0 * TITLE_SIDE;
+                (mu > 0.0 && mu * ENLARGED_MIN <= self.mu_p && title_fits).then(|| Inset {
                     terms: terms.clone(),
                     mu,
                     world: *world,
                     slot,
+                    short: shortest / mu < SIDE_MIN,
                 })
             })
             .collect()
@@ -212,8 +231,17 @@ impl<'a> Runs<'a> {
 /// stubs and its title (`title_w` wide, [`TITLE_SIDE`] inside each side, so that two
 /// cells side by side keep their titles apart), from its cell's top left.
 fn tight_slot(inset: &Inset, title_w: f64) -> Rect {
-    let (w, h) = (inset.world.width() / inset.mu, inset.world.height() / inset.mu);
+    let (w, h) = (inset.world.width() / inset.mu, inset.world.height() / inset.mu + value_room(inset));
     Rect::new(0.0, 0.0, (w + 2.0 * PAD).max(SLOT_MIN_W).max(title_w + 2.0 * TITLE_SIDE), h + 2.0 * PAD + TITLE)
+}
+
+/// Room between an enlargement's title and its drawing for a short side's value, mm: in a
+/// tight cell the value ("Rt03 = 1,050 N") found no room but on a stub under the title
+/// (task 15 variant 8).
+const VALUE_ROOM: f64 = 4.0;
+
+fn value_room(inset: &Inset) -> f64 {
+    if inset.short { VALUE_ROOM } else { 0.0 }
 }
 
 /// An enlargement's title at `mu` with its letter `letter`: "K (", then "μP = … N/mm)".
@@ -330,7 +358,14 @@ pub(super) fn draw(
         let slot = inset.slot + r.origin().to_vec2();
         // Under its title, not in the middle of a tall slot.
         let drawn_h = inset.world.height() / inset.mu + 2.0 * PAD;
-        let area = Rect::new(slot.x0, slot.y0 + TITLE, slot.x1, slot.y1.min(slot.y0 + TITLE + drawn_h));
+        // Room for a short side's value under the title, where the slot has it to spare.
+        let value_room = value_room(inset).min((slot.height() - TITLE - drawn_h).max(0.0));
+        let area = Rect::new(
+            slot.x0,
+            slot.y0 + TITLE + value_room,
+            slot.x1,
+            slot.y1.min(slot.y0 + TITLE + value_room + drawn_h),
+        );
         let view = View::centred(inset.world, area, inset.mu);
         let p = |v: Vec2| view.p(v);
         // The long sides that meet the run, as stubs: where it joins the polygon.
@@ -358,7 +393,7 @@ pub(super) fn draw(
         let top = stubs.iter().flat_map(|&(a, b)| [a.y, b.y]).fold(p(Vec2::new(0.0, inset.world.y1)).y, f64::min);
         let at = Point::new(
             left.min(slot.x1 - TITLE_SIDE - title_w).max(slot.x0 + TITLE_SIDE),
-            (top - TITLE_GAP).max(slot.y0 + 4.0),
+            (top - TITLE_GAP - value_room).max(slot.y0 + 4.0),
         );
         title.draw(g, at, h, Anchor::Start);
         // Set where the title's advance ends: its box's slant would leave a gap after "(".

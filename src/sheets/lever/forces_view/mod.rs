@@ -346,6 +346,7 @@ const COMFORTABLE_START: Sizes = Sizes {
     poly_grown: [1.0; GROWN_POLYGONS],
     compact: false,
     inset_box: inset::INSET_BOX,
+    narrow_titles: false,
 };
 const DRAWN: Sizes = Sizes {
     group_box: 170.0,
@@ -360,6 +361,7 @@ const DRAWN: Sizes = Sizes {
     poly_grown: [1.0; GROWN_POLYGONS],
     compact: false,
     inset_box: inset::INSET_BOX,
+    narrow_titles: false,
 };
 
 /// Cells, where they are, whether they all fit, and the sizes they were made at.
