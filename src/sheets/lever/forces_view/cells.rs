@@ -70,8 +70,9 @@ pub(super) struct Sizes {
     /// The enlargements' longer side at most, mm (`inset::INSET_BOX`, smaller where the
     /// cells are cramped).
     pub(super) inset_box: f64,
-    /// Whether the enlargements in the room a polygon's cell leaves may set their titles in
-    /// 2.5 mm ([`Enlarge::InRoomNarrow`]): the last resort.
+    /// Whether the enlargements beside their polygons may take slots too narrow for their
+    /// titles in 3.5 mm and set them in 2.5 mm: the last resort before short sides left on
+    /// a polygon.
     pub(super) narrow_titles: bool,
 }
 
@@ -124,7 +125,7 @@ pub struct CellMemo {
 
 /// A polygon's index, its μ_l's and μ_P's bits, where its enlargements may go, their box's
 /// bits and whether its polygon stands under its drawing.
-type PolygonKey = (usize, u64, u64, Enlarge, u64, bool);
+type PolygonKey = (usize, u64, u64, (Enlarge, bool), u64, bool);
 /// A group cell's layout, width and height.
 type LaidOut = (Rc<GroupLayout>, f64, f64);
 
@@ -139,18 +140,18 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     for (i, poly) in inp.fa.forces.polygons.iter().enumerate() {
         let enlarge = match (s.apart >> i & 1 == 1, s.grow >> i & 1 == 1) {
             (true, _) => Enlarge::Apart,
-            (false, true) if s.narrow_titles => Enlarge::GrowNarrow,
             (false, true) => Enlarge::Grow,
-            (false, false) if s.narrow_titles => Enlarge::InRoomNarrow,
             (false, false) => Enlarge::InRoom,
         };
+        let titled = !s.narrow_titles;
         let (mu_l, mu_p) = group_scales(poly, inp, s, s.poly_grown.get(i).copied().unwrap_or(1.0));
         let laid_out = |stacked: bool| {
             memo.polygons
                 .borrow_mut()
-                .entry((i, mu_l.to_bits(), mu_p.to_bits(), enlarge, s.inset_box.to_bits(), stacked))
+                .entry((i, mu_l.to_bits(), mu_p.to_bits(), (enlarge, titled), s.inset_box.to_bits(), stacked))
                 .or_insert_with(|| {
-                    let (layout, w, h) = group_layout(inp, poly, (mu_l, mu_p), (enlarge, s.inset_box), stacked);
+                    let (layout, w, h) =
+                        group_layout(inp, poly, (mu_l, mu_p), ((enlarge, titled), s.inset_box), stacked);
                     (Rc::new(layout), w, h)
                 })
                 .clone()

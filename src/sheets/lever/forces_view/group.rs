@@ -114,7 +114,7 @@ pub(super) fn group_layout(
     inp: &ForcesInput,
     poly: &Polygon,
     (mu_l, mu_p): (f64, f64),
-    (enlarge, inset_box): (Enlarge, f64),
+    (enlarge, inset_box): ((Enlarge, bool), f64),
     stacked: bool,
 ) -> (GroupLayout, f64, f64) {
     let world = world_box(inp, poly);
@@ -191,7 +191,7 @@ fn with_insets(
     (chain, mu_p): (&[Vec2], f64),
     arrangement: Arrangement,
     poly_size: (f64, f64),
-    (enlarge, inset_box, title_w): (Enlarge, f64, &dyn Fn(f64) -> f64),
+    ((enlarge, titled), inset_box, title_w): ((Enlarge, bool), f64, &dyn Fn(f64) -> f64),
 ) -> (Vec<Inset>, Place, f64, f64) {
     let room = arrangement.room(poly_size);
     let (w, body_h) = arrangement.cell(room);
@@ -203,15 +203,15 @@ fn with_insets(
     let least = |is: &Vec<Inset>| is.iter().map(|i| mu_p / i.mu).fold(f64::INFINITY, f64::min);
     // Slots that hold their titles in 3.5 mm lettering, as every other enlargement's (a
     // narrower one set "T (μP = 1,25 N/mm)" in 2.5 mm beside "L (μP = 6 N/mm)", a teacher's
-    // review): where they do not, the sheet tries grown cells and cells apart first.
-    let titled = !matches!(enlarge, Enlarge::InRoomNarrow | Enlarge::GrowNarrow);
+    // review): where they do not, the sheet tries grown cells and cells apart first
+    // (`titled` false only as the last resort, `Sizes::narrow_titles`).
     let free = places
         .iter()
         .filter_map(|&p| runs.placed(p, room, poly_size, titled).map(|is| (is, p)))
         .reduce(|a, b| if least(&b.0) > least(&a.0) { b } else { a });
     let grown = match enlarge {
-        Enlarge::InRoom | Enlarge::InRoomNarrow => None,
-        Enlarge::Grow | Enlarge::GrowNarrow => {
+        Enlarge::InRoom => None,
+        Enlarge::Grow => {
             let grown = places.iter().filter_map(|&p| {
                 let room = runs.grown(p, room, poly_size, titled);
                 runs.placed(p, room, poly_size, titled).map(|is| (is, p, room))

@@ -91,10 +91,6 @@ pub(super) enum Enlarge {
     Grow,
     /// In cells of their own ([`Place::Apart`]).
     Apart,
-    /// As `InRoom` and `Grow`, the slots' titles in 2.5 mm where they are too narrow for
-    /// 3.5: the last resort before short sides left on the polygon.
-    InRoomNarrow,
-    GrowNarrow,
 }
 
 /// Whether term `k`'s side is drawn on the polygon and shorter than [`SIDE_MIN`].
