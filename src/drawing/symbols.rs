@@ -149,14 +149,22 @@ pub fn clear_turn_arrow(
         })
         .fold(room, f64::min)
     };
-    let start = (0..36)
-        .map(|k| pref_deg + 10.0 * f64::from(k))
-        .map(|a| {
-            let p = probe(a);
-            ((crossings(&p), -head_room(&p), turn(a)), a)
-        })
-        .min_by(|x, y| x.0.0.cmp(&y.0.0).then(x.0.1.total_cmp(&y.0.1)).then(x.0.2.total_cmp(&y.0.2)))
-        .map_or(pref_deg, |x| x.1);
+    // Tried nearest the preferred start first: the first that crosses nothing with all the
+    // room asked wins without drawing the rest.
+    let mut starts: Vec<(f64, f64)> = (0..36).map(|k| pref_deg + 10.0 * f64::from(k)).map(|a| (turn(a), a)).collect();
+    starts.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let mut best: Option<((usize, f64), f64)> = None;
+    for (_, a) in starts {
+        let p = probe(a);
+        let key = (crossings(&p), -head_room(&p));
+        if best.is_none_or(|(b, _)| key.0 < b.0 || (key.0 == b.0 && key.1 < b.1)) {
+            best = Some((key, a));
+        }
+        if key.0 == 0 && -key.1 >= room {
+            break;
+        }
+    }
+    let start = best.map_or(pref_deg, |x| x.1);
     let arrow = probe(start);
     for (a, b) in arrow.items.iter().flat_map(segments) {
         drawn.add(Piece::Segment(a, b), usize::MAX);
