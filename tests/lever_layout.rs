@@ -424,6 +424,33 @@ fn the_largest_plan_of_a_kind_grows_where_the_smallest_plan_need_not_shrink() {
     assert!(v.min(a) >= 70.0 && smallest >= 45.0, "largest {v:.1} and {a:.1} mm, smallest {smallest:.1} mm");
 }
 
+/// Where a kind's largest plan is under 80 mm with tables 1 and 2 under the plans' column,
+/// table 1 goes down into the corner beside the title block if the taller column draws it
+/// larger and every floor of the force drawings holds: task 12 variant 2's velocity plans
+/// were 76 mm long; with table 1 in the corner they are 99 mm, the lever and the force
+/// polygons as they were.
+#[test]
+fn table_1_moves_into_the_corner_where_the_plans_grow_to_80_mm() {
+    use tmm_sheets::drawing::frame::title_block_rect;
+    let out = catalogue_sheet1("12", 2);
+    let largest = |kind: &str| {
+        let plans = out.results["scales"][kind].as_array().unwrap();
+        plans.iter().flat_map(|p| [&p["size_mm"][0], &p["size_mm"][1]]).map(|v| v.as_f64().unwrap()).fold(0.0, f64::max)
+    };
+    let (v, a) = (largest("velocity_plans"), largest("acceleration_plans"));
+    assert!(v.min(a) >= 80.0, "largest plans {v:.1} and {a:.1} mm");
+    let tables = out.scene.groups.iter().find(|g| g.id == "tables").expect("table 1's group");
+    let title = title_block_rect();
+    assert!(
+        tables.region.x1 <= title.x0 && tables.region.y1 > title.y0,
+        "table 1 at {:?}, the title block at {title:?}",
+        tables.region
+    );
+    let lever = out.results["forces"]["scales"]["lever_mm"].as_f64().unwrap();
+    let side = out.results["forces"]["scales"]["smallest_polygon_side_mm"].as_f64().unwrap();
+    assert!(lever >= 120.0 && side >= 20.0, "lever {lever:.1} mm, shortest polygon side {side:.1} mm");
+}
+
 /// A slider's stroke is written along its dimension line, as GOST 2.307 writes a dimension,
 /// where there is room: task 6 variant 12's vertical stroke reads upward just left of its
 /// line (it stood 30 mm off on a leader across the slider's positions), the worked example's

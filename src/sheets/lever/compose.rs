@@ -5,6 +5,7 @@
 //! makes it; the velocity plans fill the rest of the top band; the acceleration plans at
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
+mod corner;
 mod header;
 mod widen;
 
@@ -34,6 +35,7 @@ use crate::report::lever::ForceTables;
 use crate::report::{AnswerKeys, Segment};
 use crate::sheets::scaffold::{self, Composition};
 use crate::sheets::{Context, SheetKind};
+use corner::with_larger_plans;
 use kurbo::Rect;
 
 /// The scales chosen for the sheet.
@@ -102,50 +104,54 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
         }
         let corner = variant(Variant { corner: true, ..Variant::RULE })?;
         let kept = Floors::of(&rule).kept(&corner) && (corner.layout.is_clean() || !rule.layout.is_clean());
-        return Ok(if kept && empty(&corner) < empty(&rule) { corner } else { rule });
+        return Ok(if kept && empty(&corner) < empty(&rule) {
+            corner
+        } else {
+            with_larger_plans(&variant, (Variant::RULE, rule))
+        });
     }
-    let large = Variant { text_h: LARGE_TEXT, ..Variant::RULE };
-    let (rule, large) = rayon::join(|| variant(Variant::RULE), || variant(large));
+    let large_v = Variant { text_h: LARGE_TEXT, ..Variant::RULE };
+    let (rule, large) = rayon::join(|| variant(Variant::RULE), || variant(large_v));
     let rule = rule?;
     let rule_floors = Floors::of(&rule);
     let (mut out, other) = match large.ok() {
-        Some(l) if better(&l, &rule, 0.005) => (l, Some(rule)),
-        l => (rule, l),
+        Some(l) if better(&l, &rule, 0.005) => ((large_v, l), Some((Variant::RULE, rule))),
+        l => ((Variant::RULE, rule), l.map(|l| (large_v, l))),
     };
     // The fuller variants keep tables 3–5 together where the sheet kept so far has them so.
-    let floors = rule_floors.with_tables_of(&out);
+    let floors = rule_floors.with_tables_of(&out.1);
     // Composing more costs only the sheets left too empty, and stops once one is not.
-    let mut candidates: Vec<Composed> = other.into_iter().collect();
+    let mut candidates: Vec<(Variant, Composed)> = other.into_iter().collect();
     let admissible = |c: &Composed, out: &Composed| floors.kept(c) && (c.layout.is_clean() || !out.layout.is_clean());
     // The variants that could win, with how empty each is, to widen below.
     let mut kept: Vec<(f64, Variant)> = Vec::new();
     for [a, b] in FULLER {
-        if empty(&out) <= EMPTY_MOST {
+        if empty(&out.1) <= EMPTY_MOST {
             break;
         }
         let (ca, cb) = rayon::join(|| variant(a), || variant(b));
         for (v, c) in [(a, ca), (b, cb)] {
             let Ok(c) = c else { continue };
-            if admissible(&c, &out) {
+            if admissible(&c, &out.1) {
                 kept.push((empty(&c), v));
             }
-            candidates.push(c);
+            candidates.push((v, c));
         }
         for c in candidates.drain(..) {
-            if admissible(&c, &out) && empty(&c) < empty(&out) {
+            if admissible(&c.1, &out.1) && empty(&c.1) < empty(&out.1) {
                 out = c;
             }
         }
     }
     // Still too empty: the least empty again with the force column widened (`widen`).
-    if empty(&out) > EMPTY_MOST {
+    if empty(&out.1) > EMPTY_MOST {
         for c in widen::least_empty_widened(&variant, kept) {
-            if admissible(&c, &out) && empty(&c) < empty(&out) {
+            if admissible(&c.1, &out.1) && empty(&c.1) < empty(&out.1) {
                 out = c;
             }
         }
     }
-    Ok(out)
+    Ok(with_larger_plans(&variant, out))
 }
 
 /// How one composition of sheet 1 letters its tables 3–5, whether its force drawings grow

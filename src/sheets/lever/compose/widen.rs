@@ -12,14 +12,19 @@ use rayon::prelude::*;
 const WIDENED: usize = 3;
 
 /// The [`WIDENED`] least empty of the variants `kept` (each with how empty it is) composed
-/// by `variant` again with their force column widened, on rayon's pool.
+/// by `variant` again with their force column widened, on rayon's pool, each with its variant.
 pub(super) fn least_empty_widened(
     variant: &(impl Fn(Variant) -> Result<Composed, TooLong> + Sync),
     mut kept: Vec<(f64, Variant)>,
-) -> Vec<Composed> {
+) -> Vec<(Variant, Composed)> {
     kept.sort_by(|a, b| a.0.total_cmp(&b.0));
     kept.truncate(WIDENED);
-    kept.into_par_iter().filter_map(|(_, v)| variant(Variant { widen: true, ..v }).ok()).collect()
+    kept.into_par_iter()
+        .filter_map(|(_, v)| {
+            let v = Variant { widen: true, ..v };
+            variant(v).ok().map(|c| (v, c))
+        })
+        .collect()
 }
 
 /// How many widths are drawn, [`STEP`] mm apart down from the widest that keeps the plans:
