@@ -191,7 +191,10 @@ fn beside_link(links: &[(Point, Point)], at: Point, d: Vec2, (exit, len): (f64, 
         // How far along the arrow the link reaches from `at`, mm.
         let over = ((a - at).dot(d)).max((b - at).dot(d)).min(exit + len);
         let merged = (MERGED / sin.abs().max(tol::PARALLEL_SIN)).min(over) - exit;
-        let along = sin.abs() < ALONG || merged > MERGED_MOST;
+        // Along the link's line but leaving its end, the arrow runs on past the joint, seen:
+        // set beside, its line of action missed the joint (the frame's R01 at O, a
+        // teacher's review).
+        let along = (sin.abs() < ALONG && over > MERGED) || merged > MERGED_MOST;
         // The arrow leaves the link toward where its part across the link points.
         let across = d - u * (d.dot(u) / (l * l));
         let side = if across.norm() < tol::PARALLEL_SIN || across.dot(n) >= 0.0 { n } else { -n };
@@ -298,7 +301,8 @@ mod tests {
     /// An arrow 11° off the link through its point (3.7 mm of its shaft in the link's
     /// line) is set beside the link on the side it leaves it toward, whichever way it
     /// points along the link; 25° off, or leaving a block's outline 4 mm out at 11°, it is
-    /// seen and stays; along the link's line past its end it is set beside as before.
+    /// seen and stays; along the link's line on past its end it is seen too, and stays on
+    /// its line of action through the joint.
     #[test]
     fn an_arrow_nearly_along_its_link_is_set_beside_it_on_the_side_it_leaves_toward() {
         let link = [(Point::new(-20.0, 0.0), Point::new(20.0, 0.0))];
@@ -313,7 +317,8 @@ mod tests {
         assert_eq!(beside_link(&link, Point::ZERO, dir(25.0), (0.0, 15.0)), None);
         assert_eq!(beside_link(&link, Point::ZERO, dir(11.0), (4.0, 15.0)), None);
         let end = [(Point::new(-20.0, 0.0), Point::ZERO)];
-        assert!(beside_link(&end, Point::ZERO, dir(3.0), (0.0, 15.0)).is_some());
+        assert!(beside_link(&end, Point::ZERO, dir(177.0), (0.0, 15.0)).is_some(), "into the link from its end");
+        assert_eq!(beside_link(&end, Point::ZERO, dir(3.0), (0.0, 15.0)), None, "on past the link's end");
         assert_eq!(beside_link(&end, Point::ZERO, dir(12.0), (0.0, 15.0)), None, "leaving the link's end");
     }
 
