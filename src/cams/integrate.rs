@@ -12,6 +12,12 @@
 //! (the dwell adds nothing): the rise's error is carried, and for one law on both phases the
 //! return's cancels it, so the drawn displacement closes at zero. What is left at the end of
 //! the turn is the drawing's closure error ([`closure`]).
+//!
+//! The course's eight divisions leave a steep law's displacement off by several percent of
+//! the lift (a 3-4-5 polynomial return after a cosine rise ended 4.5 % below the axis, a
+//! negative lift no follower has, a teacher's review); the error falls as the square of the
+//! chords, so where it is over [`CLOSE_ENOUGH`] each division is integrated in up to
+//! [`MOST_CHORDS`] chords ([`turn_within`]), the positions staying every `chords`-th point.
 
 use super::laws::Program;
 use super::radius::Phase;
@@ -19,6 +25,13 @@ use crate::num::tol;
 
 /// The course's divisions of each phase (the guide's eight).
 pub const DIVISIONS: usize = 8;
+
+/// The most chords a division is integrated in ([`turn_within`]).
+pub const MOST_CHORDS: usize = 4;
+
+/// The largest error of the drawn displacement [`turn_within`] accepts, a share of the lift:
+/// a millimetre where the lift is drawn 100 mm high.
+pub const CLOSE_ENOUGH: f64 = 0.01;
 
 /// One phase integrated: the values at the n + 1 division points.
 #[derive(Debug, Clone, PartialEq)]
@@ -31,12 +44,17 @@ pub struct Integrated {
     /// The integrated ds/dφ and s at the division points.
     pub ds: Vec<f64>,
     pub s: Vec<f64>,
+    /// Chords a division: the positions are every `chords`-th point, the first and the last
+    /// included.
+    pub chords: usize,
 }
 
 /// The largest errors of the integrated curves against the exact law at the division points.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct IntegrationError {
     pub divisions: usize,
+    /// Chords a division.
+    pub chords: usize,
     /// max |ds/dφ − exact|, in the lift's unit per radian.
     pub ds: f64,
     /// max |s − exact|, in the lift's unit.
@@ -53,10 +71,31 @@ pub fn chords(program: &Program, phase: Phase, n: usize) -> Integrated {
 /// Both phases as one drawing integrates them: the rise from rest at s = 0, the return from
 /// the rise's drawn end.
 pub fn turn(program: &Program, n: usize) -> [Integrated; 2] {
-    let rise = chords(program, Phase::Rise, n);
+    turn_in_chords(program, n, 1)
+}
+
+/// [`turn`] with `n` divisions a phase, each integrated in `k` chords (k ≥ 1).
+pub fn turn_in_chords(program: &Program, n: usize, k: usize) -> [Integrated; 2] {
+    let k = k.max(1);
+    let rise = chords(program, Phase::Rise, n * k);
     let end = (rise.s[rise.s.len() - 1], rise.ds[rise.ds.len() - 1]);
-    let ret = chords_from(program, Phase::Return, n, end);
-    [rise, ret]
+    let ret = chords_from(program, Phase::Return, n * k, end);
+    [rise, ret].map(|i| Integrated { chords: k, ..i })
+}
+
+/// The turn with `n` divisions a phase in the fewest chords a division, up to
+/// [`MOST_CHORDS`], whose drawn displacement is nowhere more than [`CLOSE_ENOUGH`] of the
+/// lift off the exact law (the rise's error carried into the return counted).
+pub fn turn_within(program: &Program, n: usize) -> [Integrated; 2] {
+    let off = |t: &[Integrated; 2]| t.iter().map(|i| i.error(program).s).fold(0.0, f64::max);
+    let mut t = turn(program, n);
+    for k in 2..=MOST_CHORDS {
+        if off(&t) <= CLOSE_ENOUGH * program.lift {
+            break;
+        }
+        t = turn_in_chords(program, n, k);
+    }
+    t
 }
 
 /// The drawing's closure: the drawn (s, ds/dφ) at the end of the turn, which the exact law
@@ -79,10 +118,15 @@ pub fn chords_from(program: &Program, phase: Phase, n: usize, start: (f64, f64))
         ds[k + 1] = ds[k] + mid_dds[k] * h;
         s[k + 1] = s[k] + (ds[k] + ds[k + 1]) / 2.0 * h;
     }
-    Integrated { phase, phi, mid_dds, ds, s }
+    Integrated { phase, phi, mid_dds, ds, s, chords: 1 }
 }
 
 impl Integrated {
+    /// The indices of the positions' points (every [`Integrated::chords`]-th).
+    pub fn positions(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.phi.len()).step_by(self.chords.max(1))
+    }
+
     /// The errors against the exact law. Each division point's exact value is the law's limit
     /// from inside the phase (the far-dwell side of the rise's end is the same value).
     pub fn error(&self, program: &Program) -> IntegrationError {
@@ -95,6 +139,6 @@ impl Integrated {
             ds = ds.max((self.ds[k] - exact.ds).abs());
             s = s.max((self.s[k] - exact.s).abs());
         }
-        IntegrationError { divisions: n, ds, s }
+        IntegrationError { divisions: n / self.chords.max(1), chords: self.chords, ds, s }
     }
 }

@@ -30,6 +30,7 @@ crate::label_set! {
         unit_deg,
         phases(rise, dwell, ret, work),
         integration_note(n, q, dq, es, ev),
+        integration_note_chords(n, k, q, dq, es, ev),
         nomogram_title,
         nomogram_note(a),
         angles_two(rise, ret),

@@ -33,7 +33,7 @@ use kurbo::{Point, Rect, Vec2};
 use labels::CamWords;
 use nomogram::Placement;
 use regions::{COLUMN_WIDTHS, ColumnWidth, Content, Regions, SHEET, TABLE_GAP, ViewSize, view_area};
-use view_heading::{heading_w, scale_note, view_group};
+use view_heading::{TITLE_H, heading_w, scale_note, view_group};
 
 /// This sheet's place in the course.
 pub const KIND: SheetKind = COURSE[2];
@@ -147,7 +147,7 @@ const NOTES_MAX_H: f64 = 80.0;
 /// taller than [`NOTES_MAX_H`].
 fn plan_column(
     p: &CamProject,
-    errors: (f64, f64),
+    errors: ((f64, f64), usize),
     deviation: f64,
     words: &CamWords,
     width: ColumnWidth,
@@ -180,7 +180,18 @@ fn notes_h(notes: &[String], w: f64) -> f64 {
 
 /// The height of the column's title set `w` wide, with its margins, mm.
 fn head_h(title: &str, w: f64) -> f64 {
-    5.0 + wrap(title, 3.5, w).len() as f64 * LINE_PITCH * 3.5 + 2.0
+    6.0 + title_lines(title, Rect::new(SHEET.x0, SHEET.y0, SHEET.x0 + w + 4.0, SHEET.y1)).1.len() as f64
+        * LINE_PITCH
+        * TITLE_H
+        + 2.0
+}
+
+/// Where the column's title starts in the diagrams' region `r` (right of box 26) and its
+/// lines there, as wide as the region leaves them (set as wide as the region, the English
+/// title took a line more than [`head_h`] counted and ran into the nomogram under it).
+fn title_lines(title: &str, r: Rect) -> (Point, Vec<String>) {
+    let at = crate::drawing::frame::clear_of_designation_box(Point::new(r.x0 + 2.0, r.y0 + 6.0), TITLE_H);
+    (at, wrap(title, TITLE_H, r.width() - 4.0 - (at.x - r.x0 - 2.0)))
 }
 
 /// Builds sheet 3 with the diagrams' column at each of the widths `regions.rs` tries, the
@@ -257,7 +268,7 @@ impl Prepared {
     fn new(ctx: &Context, p: &CamProject) -> Self {
         let lang = ctx.info.language;
         let d = &p.design;
-        let integrated = integrate::turn(&d.spec.program, DIVISIONS);
+        let integrated = integrate::turn_within(&d.spec.program, DIVISIONS);
         let errors = diagrams::error_percent(d, &integrated);
         let phis = nomogram::positions(d, DIVISIONS);
         let notes = tables::notes(d, &phis, errors, lang, ctx.first_table);
@@ -310,7 +321,7 @@ fn build_at(
     let d = &p.design;
     let Prepared { integrated, errors, phis, notes, fitted, small, large, .. } = prepared;
     let (integrated, errors, phis) = (integrated.clone(), *errors, phis.as_slice());
-    let mut column = plan_column(p, errors, fitted.deviation, &words, width)?;
+    let mut column = plan_column(p, (errors, integrated[0].chords), fitted.deviation, &words, width)?;
     // Besides the steps, the diagrams exactly as tall as leaves the law's tables room under
     // them in either lettering (a step short of that leaves a band empty above the tables).
     let under = |law: &[regions::Size]| column.room - regions::diagrams_above(law, column.plan.width, column.text_h);
@@ -432,10 +443,8 @@ fn diagrams_group(
 ) -> (Group, Scales) {
     let width = lay.diagrams.width() - 4.0;
     let mut dg = Group::new("diagrams", lay.diagrams);
-    let at =
-        crate::drawing::frame::clear_of_designation_box(Point::new(lay.diagrams.x0 + 2.0, lay.diagrams.y0 + 5.0), 3.5);
-    let mut y =
-        paragraph(&mut dg, at, &wrap(&column.title, 3.5, width - (at.x - lay.diagrams.x0 - 2.0)), 3.5, Anchor::Start);
+    let (at, lines) = title_lines(&column.title, lay.diagrams);
+    let mut y = paragraph(&mut dg, at, &lines, TITLE_H, Anchor::Start);
     // The diagrams spread over what the region leaves under the notes.
     let below = lay.diagrams.y1 - (y + 2.0 + column.plan.height + 4.0 + notes_h(&column.notes, width) + 1.0);
     let area =

@@ -10,8 +10,14 @@ use crate::num::units::mm;
 use crate::project::CamProject;
 
 /// The notes under the diagrams: the phases, the integration, the nomogram's and the
-/// profile's accuracy, the roller, the user's assumptions.
-pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, words: &CamWords) -> Vec<String> {
+/// profile's accuracy, the roller, the user's assumptions; `errors` are the integration's
+/// (percent of the lift and of the analog's peak) with its chords a division.
+pub fn sheet_notes(
+    p: &CamProject,
+    (errors, chords): ((f64, f64), usize),
+    deviation: f64,
+    words: &CamWords,
+) -> Vec<String> {
     let (l, lang) = (words.sheet, words.lang);
     let d = &p.design;
     let pr = &d.spec.program;
@@ -26,7 +32,15 @@ pub fn sheet_notes(p: &CamProject, errors: (f64, f64), deviation: f64, words: &C
             "{kind}. {}",
             l.phases(&deg(pr.rise), &deg(pr.far_dwell), &deg(pr.ret), &deg(pr.rise + pr.far_dwell + pr.ret))
         ),
-        l.integration_note(&DIVISIONS.to_string(), q, dq, &fmt::value(errors.0, lang), &fmt::value(errors.1, lang)),
+        {
+            let (es, ev) = (fmt::value(errors.0, lang), fmt::value(errors.1, lang));
+            let n = DIVISIONS.to_string();
+            if chords > 1 {
+                l.integration_note_chords(&n, &chords.to_string(), q, dq, &es, &ev)
+            } else {
+                l.integration_note(&n, q, dq, &es, &ev)
+            }
+        },
         l.nomogram_note(&allowed_angles(d, words)),
     ];
     if d.roller == 0.0 {

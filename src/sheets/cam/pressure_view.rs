@@ -60,6 +60,11 @@ fn alpha_top(d: &Design) -> f64 {
 /// round scales that fill the room), and its scales; `None` where the region is too small.
 pub fn draw(region: Rect, d: &Design, phis: &[f64], title: &str, words: &CamWords) -> Option<(Group, PressureScales)> {
     let (w, h) = plot_size(region)?;
+    // A region narrower than the title in the sheet's section lettering leaves it out, as
+    // one too small for its plot does.
+    if super::view_heading::heading_w(title) > region.width() {
+        return None;
+    }
     let p = &d.spec.program;
     let work = (p.rise + p.far_dwell + p.ret).to_degrees();
     let lang = words.lang;

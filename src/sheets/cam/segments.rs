@@ -38,8 +38,10 @@ pub fn diagrams(
             let y = |diagram: &str, value: f64, unit, mu| {
                 Segment::new(format!("diagram.{diagram}.y{n}"), format!("y{n}"), value, unit, mu)
             };
-            out.push(y("s", lift(d, integ.s[k]), unit_s, mu_s));
-            out.push(y("v", analog(d, integ.ds[k]), unit_v, mu_v));
+            // The position's point of the integrated curves (a division may have several chords).
+            let at = k * integ.chords;
+            out.push(y("s", lift(d, integ.s[at]), unit_s, mu_s));
+            out.push(y("v", analog(d, integ.ds[at]), unit_v, mu_v));
             let exact = analog(d, law_at(d, positions, k).dds);
             out.push(y("a", exact, unit_v, mu_a).answering(&format!("{table}.{dds_key}.{n}"), answers));
         }

@@ -7,10 +7,14 @@ use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::text::LabelText;
 use kurbo::{Point, Rect};
 
-/// A view's title, set at the region's top left.
+/// A view's title, set at the region's top left in [`TITLE_H`] lettering.
 fn view_title(region: Rect, title: &str) -> Text {
-    Text::new(Point::new(region.x0 + 2.0, region.y0 + 5.0), title, 3.5, Anchor::Start)
+    Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, TITLE_H, Anchor::Start)
 }
+
+/// The lettering of the sheet's section titles, mm: sheet 1's and sheet 2's (in 3.5 mm the
+/// four views' titles were smaller than their tables' titles, a teacher's review).
+pub(super) const TITLE_H: f64 = 5.0;
 
 /// The width a view's region needs for its title (and the scale under it, which is
 /// shorter): the title's box from the region's left edge, and as much again on the right.
@@ -38,5 +42,5 @@ pub(super) fn scale_note(g: &mut Group, mu: f64, ratio: Option<String>, words: &
         tail.push_str(&format!(" ({})", fmt::localise(&r, lang)));
     }
     let r = g.region;
-    LabelText::new("μ", "l").with_tail(tail).draw(g, Point::new(r.x0 + 2.0, r.y0 + 10.5), 2.5, Anchor::Start);
+    LabelText::new("μ", "l").with_tail(tail).draw(g, Point::new(r.x0 + 2.0, r.y0 + 11.5), 2.5, Anchor::Start);
 }

@@ -294,7 +294,9 @@ fn planetary_group(pl: &PlanetaryProject, right: Rect, share: f64, words: &GearW
     let mut g = Group::new("planetary", region);
     let title =
         l.planetary_title(&fmt::value(s.ratio, lang), &fmt::value(s.ratio_required, lang), &s.planets.to_string());
-    g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 3.5, Anchor::Start));
+    // In the mesh's title's lettering: the two are the sheet's sections (in 3.5 mm it read
+    // as a caption under the mesh's, a teacher's review).
+    g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
     let scheme = match s.scheme {
         crate::gears::planetary::Scheme::SunPlanetRing => l.scheme_sun_planet_ring(),
         crate::gears::planetary::Scheme::DoublePlanet => l.scheme_double_planet(),

@@ -158,7 +158,7 @@ impl Stack<'_> {
         s_plot.line(g, &self.exact(&|phi| p.at(phi).s), THIN);
         let s_drawn = integrated_curve(self.integrated, |i| &i.s);
         s_plot.line(g, &s_drawn, MAIN);
-        ordinates(g, &s_plot, &s_drawn);
+        ordinates(g, &s_plot, &at_positions(self.integrated, |i| &i.s));
         number_divisions(&s_plot, self.integrated, labels);
         phase_dimensions(g, &s_plot, p, labels, w);
         let lines = if self.rocker {
@@ -198,7 +198,7 @@ impl Stack<'_> {
         v_plot.line(g, &self.exact(&|phi| p.at(phi).ds), THIN);
         let v_drawn = integrated_curve(self.integrated, |i| &i.ds);
         v_plot.line(g, &v_drawn, MAIN);
-        ordinates(g, &v_plot, &v_drawn);
+        ordinates(g, &v_plot, &at_positions(self.integrated, |i| &i.ds));
         let means: Vec<f64> =
             self.integrated.iter().flat_map(|i| i.ds.windows(2).map(|w| (w[0] + w[1]) / 2.0)).collect();
         let lines = [mu(name, sc.mu_ds, self.unit(), lang)];
@@ -265,7 +265,7 @@ fn within(ticks: Vec<(f64, String)>, (lo, hi): (f64, f64)) -> Vec<(f64, String)>
 /// The division points along the x axis; their numbers are placed as labels, clear of the
 /// curves (the integrated displacement may end a little below the axis).
 fn division_ticks(integrated: &[Integrated; 2]) -> Vec<(f64, String)> {
-    integrated.iter().flat_map(|i| i.phi.iter().map(|&phi| (phi.to_degrees(), String::new()))).collect()
+    integrated.iter().flat_map(|i| i.positions().map(|k| (i.phi[k].to_degrees(), String::new()))).collect()
 }
 
 /// Divisions closer than this on paper are not numbered one by one, mm: a 2.5 mm number
@@ -276,10 +276,10 @@ const NUMBERED_STEP_MM: f64 = 3.0;
 /// phase whose divisions are closer than [`NUMBERED_STEP_MM`] (a 4° return beside a 300°
 /// rise) has only its first and last position numbered — its dimension below names it.
 fn number_divisions(plot: &Plot, integrated: &[Integrated; 2], labels: &mut Labels) {
-    let phis: Vec<f64> = integrated.iter().flat_map(|i| i.phi.iter().copied()).collect();
+    let phis: Vec<f64> = integrated.iter().flat_map(|i| i.positions().map(|k| i.phi[k])).collect();
     let numbered = integrated.iter().flat_map(|i| {
-        let n = i.phi.len();
-        let step = (i.phi[n.min(2) - 1] - i.phi[0]).to_degrees() / plot.x.mu;
+        let n = i.positions().count();
+        let step = (i.phi[(n - 1).min(1) * i.chords] - i.phi[0]).to_degrees() / plot.x.mu;
         (0..n).map(move |k| step >= NUMBERED_STEP_MM || k == 0 || k + 1 == n)
     });
     for ((&phi, name), numbered) in phis.iter().zip(super::nomogram::position_labels(&phis)).zip(numbered) {
@@ -389,6 +389,18 @@ const POLE_NAME: f64 = 26.0;
 /// the return's.
 fn integrated_curve(integrated: &[Integrated; 2], f: impl Fn(&Integrated) -> &Vec<f64>) -> Vec<(f64, f64)> {
     integrated.iter().flat_map(|i| i.phi.iter().zip(f(i)).map(|(&p, &v)| (p.to_degrees(), v))).collect()
+}
+
+/// [`integrated_curve`] at the positions only (a division integrated in several chords has
+/// its ends' ordinates drawn, as the course measures them).
+fn at_positions(integrated: &[Integrated; 2], f: impl Fn(&Integrated) -> &Vec<f64>) -> Vec<(f64, f64)> {
+    integrated
+        .iter()
+        .flat_map(|i| {
+            let values = f(i);
+            i.positions().map(move |k| (i.phi[k].to_degrees(), values[k]))
+        })
+        .collect()
 }
 
 /// Between a diagram's scale text and its axis's values, and the text's height, mm.
