@@ -8,7 +8,6 @@ use super::super::{Refusal, Warning, at, invalid, warning};
 use super::spec::{LawTable, PerPhase, Scalar};
 use crate::cams::integrate;
 use crate::cams::laws::{Custom, Law, LawError, Program, Standard};
-use crate::cams::radius::Phase;
 use crate::num::digits::{fixed, written};
 use serde_saphyr::{Location, Spanned};
 
@@ -65,16 +64,22 @@ pub(super) fn law_table(
     Ok(out)
 }
 
-/// A corner between the course's divisions of the phase is cut off by the chord
-/// integration (it samples s″ at the divisions' middles): says so with the error it makes.
+/// A corner between the chords the sheet integrates the phase in is cut off by the chord
+/// integration (it samples s″ at the chords' middles): says so with the error it makes. The
+/// chords are the course's divisions, each in as many chords as the sheet takes for this
+/// law on both phases ([`integrate::turn_within`]).
 fn corner_between_divisions(law: &Custom) -> Option<String> {
     let divisions = integrate::DIVISIONS;
-    let n = divisions as f64;
-    let (x, _) = law.corners().find(|(x, _)| ((x * n).round() - x * n).abs() > 1e-9)?;
     let program = Program::new(1.0, 0.0, 1.0, (law.clone(), law.clone()), 1.0).ok()?;
-    let error = integrate::chords(&program, Phase::Rise, integrate::DIVISIONS).error(&program).s;
+    let turn = integrate::turn_within(&program, divisions);
+    let chords = divisions * turn[0].chords;
+    let n = chords as f64;
+    let (x, _) = law.corners().find(|(x, _)| ((x * n).round() - x * n).abs() > 1e-9)?;
+    let error = turn[0].error(&program).s;
+    let each =
+        if turn[0].chords > 1 { format!(", each integrated in {} chords", turn[0].chords) } else { String::new() };
     Some(format!(
-        "a corner at x = {} lies between the course's {divisions} divisions of the phase (multiples of 1/{divisions}): the graphical integration cuts it off and misses the displacement by up to {} % of the lift; corners at the divisions are drawn exactly",
+        "a corner at x = {} lies between the integration's {chords} chords of the phase (the course's {divisions} divisions{each}; multiples of 1/{chords}): the graphical integration cuts it off and misses the displacement by up to {} % of the lift; corners at the chords' ends are drawn exactly",
         written(x),
         fixed(error * 100.0, 1)
     ))
