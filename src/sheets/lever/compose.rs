@@ -7,6 +7,7 @@
 
 mod corner;
 mod header;
+mod variant;
 mod widen;
 
 pub(super) use header::region_header;
@@ -25,7 +26,7 @@ use crate::drawing::frame;
 use crate::drawing::layout::Layout;
 use crate::drawing::scale;
 use crate::drawing::scene::{Group, Scene};
-use crate::drawing::table::{CELL_TEXT, LARGE_TEXT, Table};
+use crate::drawing::table::Table;
 use crate::drawing::text::TooLong;
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{acceleration_plan, velocity_plan};
@@ -37,6 +38,7 @@ use crate::sheets::scaffold::{self, Composition};
 use crate::sheets::{Context, SheetKind};
 use corner::with_larger_plans;
 use kurbo::Rect;
+use variant::{FULLER, Variant};
 
 /// The scales chosen for the sheet.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -88,8 +90,8 @@ const FORCES_MIN_W: f64 = 470.0;
 pub(super) const HEADER: f64 = 17.0;
 
 /// Lays out sheet 1; refuses a project text too long for its place on the sheet. With a
-/// force analysis its tables 3–5 are lettered by the rule ([`CELL_TEXT`]) and, on rayon's
-/// pool beside it, in [`LARGE_TEXT`]; the larger lettering is kept where it is better (as
+/// force analysis its tables 3–5 are lettered by the rule ([`CELL_TEXT`](crate::drawing::table::CELL_TEXT)) and, on rayon's
+/// pool beside it, in [`LARGE_TEXT`](crate::drawing::table::LARGE_TEXT); the larger lettering is kept where it is better (as
 /// clean, the rule's floors kept, less empty). Where the sheet kept is still more than half
 /// empty (`EMPTY_MOST`), fuller variants are composed (`FULLER`) and the least empty that
 /// keeps the rule's floors wins.
@@ -110,7 +112,7 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
             with_larger_plans(&variant, (Variant::RULE, rule))
         });
     }
-    let large_v = Variant { text_h: LARGE_TEXT, ..Variant::RULE };
+    let large_v = Variant::RULE.in_other_lettering();
     let (rule, large) = rayon::join(|| variant(Variant::RULE), || variant(large_v));
     let rule = rule?;
     let rule_floors = Floors::of(&rule);
@@ -153,55 +155,6 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     }
     Ok(with_larger_plans(&variant, out))
 }
-
-/// How one composition of sheet 1 letters its tables 3–5, whether its force drawings grow
-/// into the room their cells leave, fill the region beside the mechanism first, and whether
-/// table 1 goes down into the corner beside the title block.
-#[derive(Clone, Copy)]
-struct Variant {
-    text_h: f64,
-    grow_drawings: bool,
-    side_first: bool,
-    tables_beside: bool,
-    corner: bool,
-    compact_groups: bool,
-    /// Whether a force column narrower than the widest is widened as far as every plan
-    /// keeps its scale (see `widen`).
-    widen: bool,
-}
-
-impl Variant {
-    const RULE: Variant = Variant {
-        text_h: CELL_TEXT,
-        grow_drawings: false,
-        side_first: false,
-        tables_beside: false,
-        corner: false,
-        compact_groups: false,
-        widen: false,
-    };
-}
-
-/// The variants tried, two at a time on rayon's pool, on a sheet still more than
-/// [`EMPTY_MOST`] empty, until one is not: each a step further from the rule's layout.
-const FULLER: [[Variant; 2]; 7] = {
-    let grown = Variant { grow_drawings: true, ..Variant::RULE };
-    let side = Variant { side_first: true, ..grown };
-    let corner = Variant { corner: true, ..side };
-    let side_beside = Variant { tables_beside: true, ..side };
-    let beside = Variant { tables_beside: true, ..grown };
-    let compact = Variant { compact_groups: true, ..beside };
-    let side_compact = Variant { compact_groups: true, ..side_beside };
-    [
-        [grown, Variant { text_h: LARGE_TEXT, ..grown }],
-        [side, Variant { text_h: LARGE_TEXT, ..side }],
-        [corner, Variant { text_h: LARGE_TEXT, ..corner }],
-        [side_beside, Variant { text_h: LARGE_TEXT, ..side_beside }],
-        [beside, Variant { text_h: LARGE_TEXT, ..beside }],
-        [compact, Variant { text_h: LARGE_TEXT, ..compact }],
-        [side_compact, Variant { text_h: LARGE_TEXT, ..side_compact }],
-    ]
-};
 
 /// Lays out sheet 1 as the variant `v` asks.
 fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> Result<Composed, TooLong> {

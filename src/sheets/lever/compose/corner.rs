@@ -10,7 +10,6 @@
 use super::super::choice::{EMPTY_MOST, Floors, empty};
 use super::super::plan_regions::{LARGEST_PLAN, PlanDrawn};
 use super::{Composed, Variant};
-use crate::drawing::table::{CELL_TEXT, LARGE_TEXT};
 use crate::drawing::text::TooLong;
 use crate::num::tol;
 use rayon::prelude::*;
@@ -39,9 +38,8 @@ pub(super) fn with_larger_plans(
     // The other lettering of tables 3–5 too: in the narrower force column the taller plans'
     // column may choose, the larger lettering may keep the drawings their size (5 more
     // catalogue sheets reach 80 mm).
-    let other_text = if v.text_h == CELL_TEXT { LARGE_TEXT } else { CELL_TEXT };
-    let tried: Vec<Variant> =
-        [v.text_h, other_text].into_iter().map(|text_h| Variant { corner: true, text_h, ..v }).collect();
+    let corner = Variant { corner: true, ..v };
+    let tried = [corner, corner.in_other_lettering()];
     let floors = Floors::of(&out);
     let admissible = |c: &Composed| {
         let clean = c.layout.is_clean() || !out.layout.is_clean();
@@ -49,10 +47,13 @@ pub(super) fn with_larger_plans(
         let mechanism = c.scales.mu_l <= out.scales.mu_l;
         largest_plans_mm(c) > before + tol::PAPER && clean && full && mechanism && floors.kept(c)
     };
+    // Each candidate's largest plans found once, not at every comparison.
     let best = tried
         .into_par_iter()
         .filter_map(|v| variant(v).ok())
         .filter(admissible)
-        .max_by(|a, b| largest_plans_mm(a).total_cmp(&largest_plans_mm(b)).then(empty(b).total_cmp(&empty(a))));
+        .map(|c| (largest_plans_mm(&c), c))
+        .max_by(|a, b| a.0.total_cmp(&b.0).then(empty(&b.1).total_cmp(&empty(&a.1))))
+        .map(|(_, c)| c);
     best.unwrap_or(out)
 }
