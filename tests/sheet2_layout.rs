@@ -144,3 +144,22 @@ fn the_rack_generation_pictures_draw_the_pitch_at_least_15_mm_and_20_with_the_wh
     }
     assert!(seen >= 4, "only {seen} generation pictures");
 }
+
+/// A wheel 2 so large that its centre O2 is off the drawing (KHK's pair at 10:1, the
+/// undercut pinion's pair) still shows its sense of rotation: ω2's arc arrow about O2 inside
+/// the wheel's body, named, as ω1 is at O1 — not only the wheel whose centre is on the sheet.
+#[test]
+fn a_wheel_whose_centre_is_off_the_drawing_still_shows_its_sense_of_rotation() {
+    for name in ["handbook-khk", "undercut"] {
+        let text = std::fs::read_to_string(root().join(format!("fixtures/gears/{name}.yaml"))).unwrap();
+        for lang in Language::ALL {
+            let mut p = pipeline::load(&text).unwrap();
+            p.info.language = lang;
+            let scene = sheet2(&p).output.scene;
+            let named = |main: &str, sub: &str| scene.texts().any(|t| t.text == main && t.sub == sub);
+            assert!(!named("O", "2"), "{name}: O2 is on the drawing, the case is not tested");
+            assert!(named("O", "1") && named("ω", "1"), "{name} {lang:?}: no O1 or ω1");
+            assert!(named("ω", "2"), "{name} {lang:?}: wheel 2's sense of rotation is not shown");
+        }
+    }
+}

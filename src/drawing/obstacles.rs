@@ -393,8 +393,15 @@ pub fn rect_segment_distance(r: Rect, (a, b): (Point, Point)) -> f64 {
 
 /// Whether the segment `a`–`b` has a point inside or on the rectangle `r` (Liang–Barsky).
 pub fn segment_meets_rect(a: Point, b: Point, r: Rect) -> bool {
+    segment_span_in_rect(a, b, r).is_some()
+}
+
+/// The part of the segment `a`–`b` inside or on the rectangle `r`, as the parameters
+/// `(t0, t1)` of `a + t·(b − a)` (Liang–Barsky), or `None` when they do not meet.
+#[inline]
+pub fn segment_span_in_rect(a: Point, b: Point, r: Rect) -> Option<(f64, f64)> {
     if r.width() < 0.0 || r.height() < 0.0 {
-        return false;
+        return None;
     }
     // A segment wholly beyond one side (by far more than rounding: the clipping below
     // answers the same) is answered without it.
@@ -404,14 +411,14 @@ pub fn segment_meets_rect(a: Point, b: Point, r: Rect) -> bool {
         || a.y.max(b.y) < r.y0 - APART
         || a.y.min(b.y) > r.y1 + APART
     {
-        return false;
+        return None;
     }
     let d = b - a;
     let (mut t0, mut t1) = (0.0f64, 1.0f64);
     for (p, q) in [(-d.x, a.x - r.x0), (d.x, r.x1 - a.x), (-d.y, a.y - r.y0), (d.y, r.y1 - a.y)] {
         if p == 0.0 {
             if q < 0.0 {
-                return false;
+                return None;
             }
         } else {
             let t = q / p;
@@ -421,11 +428,11 @@ pub fn segment_meets_rect(a: Point, b: Point, r: Rect) -> bool {
                 t1 = t1.min(t);
             }
             if t0 > t1 {
-                return false;
+                return None;
             }
         }
     }
-    true
+    Some((t0, t1))
 }
 
 #[cfg(test)]

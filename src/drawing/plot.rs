@@ -5,7 +5,7 @@
 
 use super::labels::Language;
 use super::scene::{Anchor, Group, Pen, THIN, Text};
-use super::symbols::vector;
+use super::symbols::{ARROW_HALF, vector};
 use super::{fmt, scale};
 use kurbo::{Point, Rect};
 
@@ -80,10 +80,12 @@ impl Plot {
         Text::new(Point::new(p.x - TICK - 0.8, p.y + TEXT / 2.0), label.to_string(), TEXT, Anchor::End)
     }
 
-    /// The y axis's name, left of its arrow.
+    /// The y axis's name, left of its arrow, a millimetre clear of the arrowhead's side (the
+    /// slanted letters' tops lean towards it).
     fn y_name(&self) -> Text {
         let (x0, a) = (self.at(self.x.lo, 0.0).x, self.area());
-        Text::new(Point::new(x0 - 1.0, a.y0 - OVERRUN + TEXT), self.y.name.clone(), TEXT, Anchor::End)
+        let x = x0 - ARROW_HALF - 1.0;
+        Text::new(Point::new(x, a.y0 - OVERRUN + TEXT), self.y.name.clone(), TEXT, Anchor::End)
     }
 
     /// The axes with arrows, tick marks, tick values and names (labels placed afterwards

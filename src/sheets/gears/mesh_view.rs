@@ -109,7 +109,7 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     super::mesh_dimensions::draw(g, labels, v, area, p, centres[0][0], inp.lang);
     super::mesh_dimensions::base_pitch(g, labels, v, area, p, inp.lang);
     point_labels(labels, v, area, &points);
-    senses_of_rotation(g, labels, v, area, &points);
+    senses_of_rotation(g, labels, v, area, &points, v.len(p.wheels[1].root));
     labels.add_ranked(pp - Vec2::new(tau, 0.0), Vec2::new(0.0, -1.0), LabelText::new("τ", ""), 3.5, 1);
     labels.add_ranked(pp + Vec2::new(tau, 0.0), Vec2::new(0.0, -1.0), LabelText::new("τ", ""), 3.5, 1);
     let alpha_at = pp + Vec2::new(-ALPHA_ARC_MM - 2.0, -ALPHA_ARC_MM * 0.18);
@@ -292,8 +292,10 @@ fn point_labels(labels: &mut Labels, v: View, area: Rect, m: &MeshPoints) {
 }
 
 /// The senses of rotation at the centres on the sheet: wheel 1 drives counter-clockwise,
-/// wheel 2 turns clockwise.
-fn senses_of_rotation(g: &mut Group, labels: &mut Labels, v: View, area: Rect, m: &MeshPoints) {
+/// wheel 2 turns clockwise. A large wheel 2 whose centre is off the drawing gets its arrow
+/// on an arc about that centre inside its own body (`root2`: its root radius, mm), near the
+/// drawing's top on the line of centres.
+fn senses_of_rotation(g: &mut Group, labels: &mut Labels, v: View, area: Rect, m: &MeshPoints, root2: f64) {
     for (q, ccw, n) in [(Vec2::ZERO, true, "1"), (m.o2, false, "2")] {
         let c = v.p(q);
         if area.contains(c) {
@@ -302,8 +304,38 @@ fn senses_of_rotation(g: &mut Group, labels: &mut Labels, v: View, area: Rect, m
             crate::drawing::symbols::turn_arrow(g, c, 9.0, start, 110.0, ccw, THIN);
             let at = c + from_angle((start + 55.0f64).to_radians() * if ccw { -1.0 } else { 1.0 }) * 9.0;
             labels.add_ranked(at, Vec2::new(-1.0, 0.0), LabelText::new("ω", n), 3.5, 1);
+        } else if n == "2"
+            && let Some((r, mid)) = rim_arrow_radius(c, v.p(Vec2::ZERO), area, root2)
+        {
+            let sweep = (OFF_SHEET_ARROW_MM / r).to_degrees();
+            crate::drawing::symbols::turn_arrow(g, c, r, mid - sweep / 2.0, sweep, ccw, THIN);
+            let at = c + from_angle(mid.to_radians()) * r;
+            labels.add_ranked(at, Vec2::new(-1.0, 0.0), LabelText::new("ω", n), 3.5, 1);
         }
     }
+}
+
+/// The length of wheel 2's sense arrow about its centre off the drawing, and how far inside
+/// the drawing's top its middle stands and inside the wheel's root circle, mm.
+const OFF_SHEET_ARROW_MM: f64 = 22.0;
+const OFF_SHEET_INSIDE_TOP: f64 = 14.0;
+const OFF_SHEET_INSIDE_ROOT: f64 = 10.0;
+
+/// For wheel 2's centre `c2` off the drawing `area` (wheel 1's centre `c1` on it): the radius
+/// of its sense arrow about `c2` and the paper angle (degrees) of the arrow's middle, on the
+/// line of centres [`OFF_SHEET_INSIDE_TOP`] inside the area's top, if that is
+/// [`OFF_SHEET_INSIDE_ROOT`] inside the wheel's root circle `root2` (mm) and the whole arc is
+/// on the drawing; `None` otherwise.
+fn rim_arrow_radius(c2: Point, c1: Point, area: Rect, root2: f64) -> Option<(f64, f64)> {
+    let u = (c1 - c2).unit();
+    if !u.is_finite() || u.y <= 0.0 {
+        return None;
+    }
+    let r = (area.y0 + OFF_SHEET_INSIDE_TOP - c2.y) / u.y;
+    let reach = crate::drawing::symbols::ARROW_HALF + OFF_SHEET_ARROW_MM / 2.0;
+    let mid = c2 + u * r;
+    let on = area.inset(-reach).contains(mid) && r > OFF_SHEET_ARROW_MM && r <= root2 - OFF_SHEET_INSIDE_ROOT;
+    on.then(|| (r, u.arg().to_degrees()))
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
-use crate::drawing::obstacles::Obstacles;
+use crate::drawing::obstacles::{Obstacles, segment_meets_rect, segment_span_in_rect};
 use crate::drawing::plot::{Plot, round_ticks};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, THIN, Text};
@@ -20,7 +20,7 @@ pub(super) fn lift_ticks(lift: f64, mu_s: f64, rocker: bool, lang: Language) -> 
 }
 
 /// Tick marks without their values: on a graph with a pole the rays cross the values' place
-/// ([`axis_values`] writes them where they are clear, once the rays are drawn).
+/// ([`axis_values`] writes them, and breaks the rays where they cross a value).
 pub(super) fn unlabelled(ticks: Vec<(f64, String)>) -> Vec<(f64, String)> {
     ticks.into_iter().map(|(v, _)| (v, String::new())).collect()
 }
@@ -35,16 +35,20 @@ pub(super) fn ordinates(g: &mut Group, plot: &Plot, drawn: &[(f64, f64)]) {
     }
 }
 
-/// The y axis' values of a graph with a pole: each beside its tick, right of the axis (the
-/// pole's rays fill the left) where the curves leave room, with the tick carried across the
-/// axis to it, else left of it where no ray crosses the place, else left out (the graph's
-/// scale is written above the pole). The values of one side of the x axis stand on one side
-/// of the y axis where all of them can (0.4 and 0.8 left of it with 1.2 and 1.6 right read
-/// as two scales). `start` marks the graph's first item: only its own lines are asked.
-pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], start: usize) {
+/// The y axis' values of a graph with a pole, and the pole's `rays` (from the pole to the
+/// axis): each value beside its tick, right of the axis (the rays fill the left) where the
+/// curves leave room, with the tick carried across the axis to it, else left of it, where
+/// the rays crossing its place are broken for it (GOST 2.307: the lines of a drawing are
+/// interrupted where a number is written), else left out where a curve or a text holds
+/// both places (the graph's scale is written above the pole). The values of one side of
+/// the x axis stand on one side of the y axis where all of them can (0.4 and 0.8 left of
+/// it with 1.2 and 1.6 right read as two scales).
+/// `start` marks the graph's first item: only its own lines are asked.
+pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], start: usize, rays: &[(Point, Point)]) {
     let drawn = Obstacles::of_items(&g.items[start..]);
     let x0 = plot.at(plot.x.lo, 0.0).x;
     let clear = |r: Rect| drawn.is_clear(r.inflate(0.3, 0.3));
+    let off_rays = |r: Rect| !rays.iter().any(|&(a, b)| segment_meets_rect(a, b, r.inflate(0.3, 0.3)));
     let places: Vec<Place> = ticks
         .iter()
         .map(|(v, value)| {
@@ -52,47 +56,94 @@ pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], s
             let y = y_tick + VALUE_H / 2.0;
             let w = LabelText::new(value.as_str(), "").width(VALUE_H);
             let xr = x0 + VALUE_TICK + 0.8;
-            let right = clear(Rect::new(x0 + 0.6, y - VALUE_H, xr + w, y));
-            let left = clear(Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y));
-            Place { above: *v > 0.0, y_tick, right, left }
+            let right = Rect::new(x0 + 0.6, y - VALUE_H, xr + w, y);
+            let left = left_box(x0, y, w);
+            let left = match (clear(left), off_rays(left)) {
+                (true, true) => Side::Clear,
+                (true, false) => Side::OnRays,
+                _ => Side::Held,
+            };
+            Place { above: *v > 0.0, y_tick, right: clear(right) && off_rays(right), left }
         })
         .collect();
-    // Per side of the x axis: right of the y axis if all its values fit there, else left if
-    // they all fit there, else each its own (`None`).
-    let half = |above: bool| {
-        let mut side = places.iter().filter(|p| p.above == above);
-        if side.clone().all(|p| p.right) {
-            Some(true)
-        } else if side.all(|p| p.left) {
-            Some(false)
-        } else {
-            None
-        }
-    };
-    let sides = [half(false), half(true)];
+    let sides = [side_of_half(&places, false), side_of_half(&places, true)];
+    let mut gaps = Vec::new();
     for ((_, value), p) in ticks.iter().zip(&places) {
         let y = p.y_tick + VALUE_H / 2.0;
         let right = match sides[usize::from(p.above)] {
             Some(right) => right,
-            None if p.right || p.left => p.right,
+            None if p.right || p.left != Side::Held => p.right,
             None => continue,
         };
         if right {
             g.line(Point::new(x0, p.y_tick), Point::new(x0 + VALUE_TICK, p.y_tick), THIN);
             g.text(Text::new(Point::new(x0 + VALUE_TICK + 0.8, y), value.clone(), VALUE_H, Anchor::Start));
         } else {
-            g.text(Text::new(Point::new(x0 - VALUE_TICK - 0.8, y), value.clone(), VALUE_H, Anchor::End));
+            let text = Text::new(Point::new(x0 - VALUE_TICK - 0.8, y), value.clone(), VALUE_H, Anchor::End);
+            // The lettering's own box: its slant and the comma's tail reach past `left_box`.
+            gaps.push(text.bbox().inflate(RAY_GAP, RAY_GAP));
+            g.text(text);
+        }
+    }
+    for &(a, b) in rays {
+        for (from, to) in broken_around(a, b, &gaps) {
+            g.line(from, to, THIN);
         }
     }
 }
 
-/// Where a tick's value may stand: its tick's height and whether the x axis' upper side
-/// holds it, and whether its place right and left of the y axis is clear.
+/// Per side of the x axis (`above`): right of the y axis if all its values fit there, else
+/// left if they all fit there (the rays broken for them), else each its own (`None`).
+fn side_of_half(places: &[Place], above: bool) -> Option<bool> {
+    let half = || places.iter().filter(move |p| p.above == above);
+    if half().all(|p| p.right) {
+        Some(true)
+    } else if half().all(|p| p.left != Side::Held) {
+        Some(false)
+    } else {
+        None
+    }
+}
+
+/// A value's box left of the y axis at `x0`, its baseline `y`, its width `w`.
+fn left_box(x0: f64, y: f64, w: f64) -> Rect {
+    Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y)
+}
+
+/// The segment `a`–`b` without its parts in the boxes `gaps`, as the pieces left.
+fn broken_around(a: Point, b: Point, gaps: &[Rect]) -> Vec<(Point, Point)> {
+    let mut cut: Vec<(f64, f64)> = gaps.iter().filter_map(|&r| segment_span_in_rect(a, b, r)).collect();
+    cut.sort_by(|p, q| p.0.total_cmp(&q.0));
+    let mut pieces = Vec::new();
+    let mut t = 0.0;
+    for (t0, t1) in cut {
+        if t0 > t {
+            pieces.push((a.lerp(b, t), a.lerp(b, t0)));
+        }
+        t = t.max(t1);
+    }
+    if t < 1.0 {
+        pieces.push((a.lerp(b, t), b));
+    }
+    pieces
+}
+
+/// A value's place left of the y axis: clear, crossed by the pole's rays only, or held by
+/// a curve or a text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Side {
+    Clear,
+    OnRays,
+    Held,
+}
+
+/// Where a tick's value may stand: its tick's height, whether the x axis' upper side holds
+/// it, whether its place right of the y axis is clear, and its place left of it.
 struct Place {
     above: bool,
     y_tick: f64,
     right: bool,
-    left: bool,
+    left: Side,
 }
 
 /// An analog's ticks each side of its axis (`peak` its largest value): at a round step
@@ -118,3 +169,53 @@ const VALUE_TICK: f64 = 1.5;
 
 /// The axis values' lettering height, mm (the plots' own).
 const VALUE_H: f64 = 2.5;
+/// A ray's gap for a value is this much wider than the value's box each side, mm.
+const RAY_GAP: f64 = 0.5;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::drawing::plot::Axis;
+    use crate::drawing::scene::{Item, MAIN};
+
+    /// A graph whose curve rises steeply along its y axis (no value fits right of it) and
+    /// whose pole's rays cross every value's place left of it: every value is written left,
+    /// none is left out, and no ray touches a value's lettering (each is broken for it, and
+    /// still reaches the axis).
+    #[test]
+    fn values_crossed_by_the_rays_are_written_with_the_rays_broken_for_them() {
+        let axis = |lo: f64, hi: f64, mu: f64| Axis { lo, hi, mu, name: String::new(), ticks: Vec::new() };
+        let plot = Plot {
+            origin: Point::new(100.0, 100.0),
+            x: axis(0.0, 100.0, 1.0),
+            y: axis(-50.0, 50.0, 1.0),
+            x_above: None,
+        };
+        let ticks: Vec<(f64, String)> = [-40.0, -20.0, 20.0, 40.0].iter().map(|&v| (v, format!("{v}"))).collect();
+        let mut g = Group::new("test", Rect::new(0.0, 0.0, 200.0, 200.0));
+        let start = g.mark();
+        plot.line(&mut g, &[(0.0, -50.0), (2.0, 0.0), (0.0, 50.0)], MAIN);
+        let pole = Point::new(80.0, 100.0);
+        let rays: Vec<(Point, Point)> = (-10..=10).map(|k| (pole, plot.at(0.0, 5.0 * k as f64 + 1.0))).collect();
+        axis_values(&mut g, &plot, &ticks, start, &rays);
+        let texts: Vec<_> =
+            g.items.iter().filter_map(|i| if let Item::Text(t) = i { Some(t.clone()) } else { None }).collect();
+        assert_eq!(texts.len(), ticks.len(), "every value written");
+        assert!(texts.iter().all(|t| t.at.x < 100.0), "left of the axis, the curve holding the right");
+        let strokes: Vec<(Point, Point)> = g.items[1..]
+            .iter()
+            .filter_map(|i| match i {
+                Item::Path { path, .. } => Some((path.start, path.end())),
+                _ => None,
+            })
+            .collect();
+        for t in &texts {
+            let b = t.bbox();
+            assert!(strokes.iter().all(|&(a, c)| !segment_meets_rect(a, c, b)), "a ray through {:?}", t.text);
+        }
+        for &(_, end) in &rays {
+            assert!(strokes.iter().any(|&(_, c)| c == end), "a ray ends short of the axis at {end:?}");
+        }
+        assert!(strokes.len() > rays.len(), "some rays are broken");
+    }
+}

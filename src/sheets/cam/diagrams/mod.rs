@@ -206,8 +206,8 @@ impl Stack<'_> {
         let (at, lines) =
             clear_of_rays(&lines, (self.left, top, v_plot.origin.y), top_ray(&v_plot, sc.h1, &means, sc.mu_ds));
         scale_text(g, at, &lines);
-        pole(g, &v_plot, Pole { h: sc.h1, index: "1" }, &means, sc.mu_ds, self.words);
-        axis_values(g, &v_plot, &within(analog_ticks(vmax, sc.mu_ds, self.rocker, lang), (lo, hi)), start);
+        let rays = pole(g, &v_plot, Pole { h: sc.h1, index: "1" }, &means, sc.mu_ds, self.words);
+        axis_values(g, &v_plot, &within(analog_ticks(vmax, sc.mu_ds, self.rocker, lang), (lo, hi)), start, &rays);
         v_plot.origin.y - lo / sc.mu_ds + GAP
     }
 
@@ -251,8 +251,8 @@ impl Stack<'_> {
         let (at, lines) =
             clear_of_rays(&lines, (self.left, top, a_plot.origin.y), top_ray(&a_plot, sc.h2, &mids, sc.mu_dds));
         scale_text(g, at, &lines);
-        pole(g, &a_plot, Pole { h: sc.h2, index: "2" }, &mids, sc.mu_dds, self.words);
-        axis_values(g, &a_plot, &analog_ticks(amax, sc.mu_dds, self.rocker, lang), start);
+        let rays = pole(g, &a_plot, Pole { h: sc.h2, index: "2" }, &mids, sc.mu_dds, self.words);
+        axis_values(g, &a_plot, &analog_ticks(amax, sc.mu_dds, self.rocker, lang), start, &rays);
         a_plot.origin.y + amax / sc.mu_dds + GAP
     }
 }
@@ -465,8 +465,10 @@ struct Pole<'a> {
 }
 
 /// The pole at H left of the origin on the x axis, and its rays to the ordinates `ys` (at
-/// `mu` a mm) carried to the y axis: each chord of the integral is drawn parallel to its ray.
-fn pole(g: &mut Group, plot: &Plot, pole: Pole, ys: &[f64], mu: f64, words: &CamWords) {
+/// `mu` a mm) carried to the y axis, returned to be drawn once the axis' values are set
+/// ([`axis_values`] breaks them for a value): each chord of the integral is drawn parallel
+/// to its ray.
+fn pole(g: &mut Group, plot: &Plot, pole: Pole, ys: &[f64], mu: f64, words: &CamWords) -> Vec<(Point, Point)> {
     let h = pole.h;
     let p = Point::new(plot.origin.x - h, plot.origin.y);
     g.dot(p, 0.6);
@@ -477,9 +479,7 @@ fn pole(g: &mut Group, plot: &Plot, pole: Pole, ys: &[f64], mu: f64, words: &Cam
         words.common.unit_mm()
     ));
     text.draw(g, Point::new(p.x - 2.5, p.y + 1.0), 2.5, Anchor::End);
-    for &y in ys {
-        g.line(p, Point::new(plot.origin.x, plot.origin.y - y / mu), THIN);
-    }
+    ys.iter().map(|&y| (p, Point::new(plot.origin.x, plot.origin.y - y / mu))).collect()
 }
 
 /// The integration's error on this sheet, in percent of the lift (s) and of the largest
