@@ -7,7 +7,7 @@
 
 use crate::num::math;
 use crate::num::tol;
-use kurbo::{Arc, BezPath, CubicBez, ParamCurveExtrema, Point, Rect};
+use kurbo::{Arc, BezPath, CubicBez, ParamCurve, ParamCurveExtrema, PathSeg, Point, Rect};
 
 /// One piece of a path, starting where the previous one ends.
 #[derive(Debug, Clone, PartialEq)]
@@ -42,6 +42,36 @@ impl Path {
         p.segs.extend(pts[1..].iter().map(|&q| Seg::Line(q)));
         p.closed = closed;
         p
+    }
+
+    /// Whether no piece is an arc: its lines and cubics can be cut ([`Path::outside_rects`]).
+    pub fn has_no_arc(&self) -> bool {
+        self.segs.iter().all(|s| !matches!(s, Seg::Arc(_)))
+    }
+
+    /// The path without its parts inside the boxes `gaps`, as the runs left in order, each
+    /// of lines and cubics (a closed path's closing line included); `None` where no box
+    /// takes anything off it, or it has an arc.
+    pub fn outside_rects(&self, gaps: &[Rect]) -> Option<Vec<Path>> {
+        if !self.has_no_arc() {
+            return None;
+        }
+        // A closed path's segments end with its closing line.
+        let mut cut = false;
+        let mut runs: Vec<Path> = Vec::new();
+        for seg in self.to_bez().segments() {
+            for kept in seg_outside_rects(seg, gaps, &mut cut) {
+                match runs.last_mut() {
+                    Some(run) if (run.end() - kept.start()).hypot2() < 1e-18 => run.segs.push(seg_of(kept)),
+                    _ => {
+                        let mut run = Path::new(kept.start());
+                        run.segs.push(seg_of(kept));
+                        runs.push(run);
+                    }
+                }
+            }
+        }
+        cut.then_some(runs)
     }
 
     /// Cubic pieces joined end to end; the first starts at `pieces[0].p0`.
@@ -91,10 +121,78 @@ impl Path {
     }
 }
 
+/// The parts of `seg` outside every box of `gaps`; `cut` is set when a part is left out.
+fn seg_outside_rects(seg: PathSeg, gaps: &[Rect], cut: &mut bool) -> Vec<PathSeg> {
+    let near: Vec<Rect> = gaps.iter().copied().filter(|g| g.overlaps(seg.bounding_box())).collect();
+    if near.is_empty() {
+        return vec![seg];
+    }
+    let mut ts = vec![0.0, 1.0];
+    for g in &near {
+        let corners = [(g.x0, g.y0), (g.x1, g.y0), (g.x1, g.y1), (g.x0, g.y1), (g.x0, g.y0)].map(Point::from);
+        for side in corners.windows(2) {
+            ts.extend(
+                seg.intersect_line(kurbo::Line::new(side[0], side[1])).iter().map(|i| i.segment_t.clamp(0.0, 1.0)),
+            );
+        }
+    }
+    ts.sort_by(f64::total_cmp);
+    ts.dedup();
+    let mut kept = Vec::new();
+    for w in ts.windows(2) {
+        let mid = seg.eval((w[0] + w[1]) / 2.0);
+        if near.iter().any(|g| g.contains(mid)) {
+            *cut = true;
+        } else if w[1] > w[0] {
+            kept.push(seg.subsegment(w[0]..w[1]));
+        }
+    }
+    kept
+}
+
+/// A line or cubic piece as the path's own (it starts where the run before it ends).
+fn seg_of(s: PathSeg) -> Seg {
+    match s {
+        PathSeg::Line(l) => Seg::Line(l.p1),
+        PathSeg::Quad(q) => {
+            let c = q.raise();
+            Seg::Cubic(c.p1, c.p2, c.p3)
+        }
+        PathSeg::Cubic(c) => Seg::Cubic(c.p1, c.p2, c.p3),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::num::math::Norm;
+
+    /// A closed triangle and a cubic cut by a box: what lies in the box is gone, the rest is
+    /// kept in runs that join where the path did (the corner the box misses stays one run).
+    #[test]
+    fn a_path_cut_by_boxes_keeps_exactly_what_lies_outside_them() {
+        let tri = Path::polyline(&[Point::new(0.0, 0.0), Point::new(10.0, 0.0), Point::new(10.0, 10.0)], true);
+        let gap = Rect::new(4.0, -1.0, 6.0, 1.0);
+        let runs = tri.outside_rects(&[gap]).expect("cut");
+        assert_eq!(runs.len(), 2);
+        assert_eq!(runs[0].start, Point::new(0.0, 0.0));
+        assert_eq!(runs[0].end(), Point::new(4.0, 0.0));
+        assert_eq!(runs[1].start, Point::new(6.0, 0.0));
+        assert_eq!(runs[1].end(), Point::new(0.0, 0.0), "through both far corners and back to the start");
+        assert_eq!(runs[1].segs.len(), 3);
+        assert!(tri.outside_rects(&[Rect::new(20.0, 20.0, 30.0, 30.0)]).is_none(), "a box off it cuts nothing");
+        let c = Path::cubics(&[CubicBez::new((0.0, 0.0), (0.0, 10.0), (10.0, 10.0), (10.0, 0.0))]);
+        let runs = c.outside_rects(&[Rect::new(3.0, 5.0, 7.0, 9.0)]).expect("cut");
+        assert_eq!(runs.len(), 2);
+        for run in &runs {
+            for s in run.to_bez().segments() {
+                let mid = s.eval(0.5);
+                assert!(!Rect::new(3.0, 5.0, 7.0, 9.0).inflate(-1e-9, -1e-9).contains(mid), "{mid:?} kept in the box");
+            }
+        }
+        assert_eq!(runs[0].start, Point::new(0.0, 0.0));
+        assert_eq!(runs[1].end(), Point::new(10.0, 0.0));
+    }
 
     #[test]
     fn an_arc_ends_where_its_sweep_takes_it_and_is_bounded_by_its_circle() {

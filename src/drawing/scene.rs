@@ -272,11 +272,22 @@ pub struct Group {
     /// The lines that belong to its writing, not its constructions (a label's leader, a
     /// legend's sample line), by item index: the overlay leaves them out with the texts.
     pub writing: Vec<usize>,
+    /// Thin lines a label may interrupt where no spot near its point is free (the position
+    /// plan's other positions of the links, the trajectories: GOST 2.316 interrupts lines
+    /// at an inscription), by item index, ascending.
+    pub breakable: Vec<usize>,
 }
 
 impl Group {
     pub fn new(id: impl Into<String>, region: Rect) -> Group {
-        Group { id: id.into(), region, items: Vec::new(), parts: Vec::new(), writing: Vec::new() }
+        Group {
+            id: id.into(),
+            region,
+            items: Vec::new(),
+            parts: Vec::new(),
+            writing: Vec::new(),
+            breakable: Vec::new(),
+        }
     }
 
     /// Where the next item will go: the start of a part (see [`Group::part_from`]).
@@ -300,6 +311,34 @@ impl Group {
 
     pub fn line(&mut self, a: Point, b: Point, pen: Pen) {
         self.items.push(Item::Path { path: Path::polyline(&[a, b], false), pen });
+    }
+
+    /// Marks the items drawn since `start` (a [`Group::mark`]) that are paths of lines and
+    /// cubics as breakable (see [`Group::breakable`]).
+    pub fn breakable_from(&mut self, start: usize) {
+        for k in start..self.items.len() {
+            if matches!(&self.items[k], Item::Path { path, .. } if path.has_no_arc()) {
+                self.breakable.push(k);
+            }
+        }
+    }
+
+    /// Replaces item `k` by `pieces` (none: removes it), keeping every index the group holds
+    /// (its parts, its writing, its breakable lines) on the items they named.
+    pub fn split_item(&mut self, k: usize, pieces: Vec<Item>) {
+        let n = pieces.len();
+        self.items.splice(k..=k, pieces);
+        let moved = |i: usize| if i > k { i + n - 1 } else { i };
+        for part in &mut self.parts {
+            // A part ending at k + 1 holds the pieces; one starting after k moves with them.
+            part.items =
+                moved(part.items.start)..if part.items.end > k { part.items.end + n - 1 } else { part.items.end };
+        }
+        let remap = |v: &mut Vec<usize>| {
+            *v = v.iter().flat_map(|&i| if i == k { (k..k + n).collect() } else { vec![moved(i)] }).collect();
+        };
+        remap(&mut self.writing);
+        remap(&mut self.breakable);
     }
 
     /// A line that belongs to the writing (see [`Group::writing`]).

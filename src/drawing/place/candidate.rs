@@ -44,6 +44,9 @@ pub(super) struct Candidate {
     pub(super) anchor: Point,
     pub(super) leader: Option<(Point, Point)>,
     pub(super) cost: f64,
+    /// It stands on breakable thin lines, to be interrupted for it (see
+    /// [`crate::drawing::scene::Group::breakable`]).
+    pub(super) breaks: bool,
 }
 
 /// A leader shorter than this leaves its label beside its point, seen or lost in a line,
@@ -73,7 +76,13 @@ pub(super) fn least_bad(cands: &[Candidate], layers: [&Obstacles; 2], req: &Requ
         let (w, up, down) = req.size();
         let x0 = req.anchor.x.min(bounds.x1 - w).max(bounds.x0);
         let y1 = req.anchor.y.max(bounds.y0 + up + down).min(bounds.y1);
-        Candidate { r: Rect::new(x0, y1 - up - down, x0 + w, y1), anchor: req.anchor, leader: None, cost: 0.0 }
+        Candidate {
+            r: Rect::new(x0, y1 - up - down, x0 + w, y1),
+            anchor: req.anchor,
+            leader: None,
+            cost: 0.0,
+            breaks: false,
+        }
     };
     cands
         .iter()

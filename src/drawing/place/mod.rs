@@ -13,8 +13,9 @@
 //! may be beside the neighbouring side, and read as its name. The geometry sits in an R-tree ([`super::obstacles`]).
 
 use super::obstacles::{Obstacles, Piece};
-use super::scene::{Anchor, Group, THIN};
+use super::scene::{Anchor, Group, Item, THIN};
 use super::text::{LabelText, SLANT, SUB};
+use crate::num::math::Norm;
 use candidate::{Candidate, TOUCH, Verdict, least_bad};
 use kurbo::{Point, Rect, Vec2};
 use spots::Spots;
@@ -189,9 +190,18 @@ impl Labels {
         let reach = self.requests.iter().flat_map(|r| std::iter::once(r.anchor).chain(r.others.iter().map(|o| o.0)));
         let reach = reach.fold(bounds, |b, p| b.union_pt(p)).inflate(REACH, REACH);
         let mut drawn = Obstacles::of_items_within(&g.items, reach);
+        // The drawing without its breakable lines, where it has any.
+        let mut hard = (!g.breakable.is_empty()).then(|| {
+            let kept = g.items.iter().enumerate().filter(|(k, _)| g.breakable.binary_search(k).is_err());
+            Obstacles::of_items_within(kept.map(|(_, item)| item), reach)
+        });
         for &(c, r) in &self.keep_out {
             drawn.add(Piece::Disc(c, r), usize::MAX);
+            if let Some(h) = hard.as_mut() {
+                h.add(Piece::Disc(c, r), usize::MAX);
+            }
         }
+        let layers = Layers { drawn: &drawn, hard: hard.as_ref() };
         // What the drawing alone says of each candidate is asked once (see `Verdict`): the
         // order and every round below ask it again and again, and it does not change as
         // labels are placed.
@@ -201,21 +211,22 @@ impl Labels {
         let mut order: Vec<usize> = (0..self.requests.len()).collect();
         // Counting stops at a few: beyond that a label is not constrained.
         let free: Vec<usize> =
-            (0..self.requests.len()).map(|i| free_near_first(&mut spots[i], &self.requests[i], &drawn)).collect();
+            (0..self.requests.len()).map(|i| free_near_first(&mut spots[i], &self.requests[i], layers.drawn)).collect();
         order.sort_by_key(|&i| (self.requests[i].rank, free[i]));
         // Leaders seen preferred; where that leaves a label without a clean spot, the
         // rounds again taking each label's first free spot, and the one with fewer left
         // kept: a leader lost in a line is better than a label on a line (a stress cam's
         // r_min, moved to a seen leader, left e = … no spot but across its leader).
         let failures = |placed: &[(Candidate, bool)]| placed.iter().filter(|p| !p.1).count();
-        let mut best = self.rounds(&drawn, &mut spots, order.clone(), bounds, true);
+        let mut best = self.rounds(layers, &mut spots, order.clone(), bounds, true);
         if failures(&best) > 0 {
-            let plain = self.rounds(&drawn, &mut spots, order, bounds, false);
+            let plain = self.rounds(layers, &mut spots, order, bounds, false);
             if failures(&plain) < failures(&best) {
                 best = plain;
             }
         }
         let mut placed = Vec::with_capacity(best.len());
+        let mut gaps = Vec::new();
         for (req, (cand, clear)) in self.requests.iter().zip(best) {
             let (w, up, _) = req.size();
             let base = Point::new(cand.r.x0 + (w - SLANT * req.h) / 2.0, cand.r.y0 + up);
@@ -226,8 +237,12 @@ impl Labels {
             if let Some((a, b)) = req.drawn_leader(&cand) {
                 g.writing_line(a, b, THIN);
             }
+            if cand.breaks {
+                gaps.push(cand.r.inflate(CLEAR, CLEAR));
+            }
             placed.push(clear);
         }
+        interrupt_for(g, &gaps);
         placed
     }
 
@@ -236,13 +251,13 @@ impl Labels {
     /// kept.
     fn rounds(
         &self,
-        drawn: &Obstacles,
+        layers: Layers,
         spots: &mut [Spots],
         mut order: Vec<usize>,
         bounds: Rect,
         prefer_seen: bool,
     ) -> Vec<(Candidate, bool)> {
-        let mut best = self.attempt(drawn, spots, &order, bounds, prefer_seen);
+        let mut best = self.attempt(layers, spots, &order, bounds, prefer_seen);
         for _ in 0..REPAIR_ROUNDS {
             let failed: Vec<usize> = order.iter().copied().filter(|&i| !best[i].1).collect();
             if failed.is_empty() {
@@ -250,7 +265,7 @@ impl Labels {
             }
             order.retain(|i| !failed.contains(i));
             order.splice(0..0, failed);
-            let next = self.attempt(drawn, spots, &order, bounds, prefer_seen);
+            let next = self.attempt(layers, spots, &order, bounds, prefer_seen);
             if next.iter().filter(|p| !p.1).count() < best.iter().filter(|p| !p.1).count() {
                 best = next;
             }
@@ -265,14 +280,15 @@ impl Labels {
     /// ([`seen_spot`]).
     fn attempt(
         &self,
-        drawn: &Obstacles,
+        layers: Layers,
         spots: &mut [Spots],
         order: &[usize],
         bounds: Rect,
         prefer_seen: bool,
     ) -> Vec<(Candidate, bool)> {
+        let drawn = layers.drawn;
         let mut placed = Obstacles::empty_over(drawn.extent().map_or(bounds, |e| e.union(bounds)));
-        let none = Candidate { r: Rect::ZERO, anchor: Point::ZERO, leader: None, cost: 0.0 };
+        let none = Candidate { r: Rect::ZERO, anchor: Point::ZERO, leader: None, cost: 0.0, breaks: false };
         let mut out = vec![(none, false); self.requests.len()];
         for &i in order {
             let s = &mut spots[i];
@@ -291,6 +307,13 @@ impl Labels {
                 .or_else(|| prefer_seen.then(|| seen_spot(s, &box_free, drawn)).flatten())
                 .or_else(|| first(s, &free))
                 .or_else(|| first(s, &box_free));
+            // Far off on a long leader, or nowhere: beside its point on thin lines broken
+            // for it, where the drawing has such lines.
+            let far = best.as_ref().is_none_or(|c| c.leader.is_some_and(|(a, b)| (b - a).norm() >= LONG_LEADER));
+            let best = match layers.hard {
+                Some(hard) if far => on_breakable(s, &self.requests[i], (drawn, hard), &placed).or(best),
+                _ => best,
+            };
             let (cand, clear) = match best {
                 Some(c) => (c, true),
                 None => (least_bad(&s.all(), [drawn, &placed], &self.requests[i], bounds), false),
@@ -305,6 +328,59 @@ impl Labels {
             out[i] = (cand, clear);
         }
         out
+    }
+}
+
+/// The drawing as the labels see it: everything, and without its breakable lines (none
+/// when it has none).
+#[derive(Clone, Copy)]
+struct Layers<'a> {
+    drawn: &'a Obstacles,
+    hard: Option<&'a Obstacles>,
+}
+
+/// A label whose first free spot is on a leader this long or longer, mm, stands beside its
+/// point on breakable lines if it can ([`on_breakable`]): a pivot's "O" hung 20–35 mm off
+/// the fan of its crank's twelve positions.
+const LONG_LEADER: f64 = 8.0;
+/// The most breakable lines (a link's position, a trajectory's dash) a label may interrupt.
+const MOST_BROKEN: usize = 6;
+/// How many of a label's cheapest spots are looked at for one beside its point.
+const NEAR_SPOTS: usize = 6 * DIRECTIONS;
+
+/// A label's cheapest spot near its own anchor (beside it, or on a leader shorter than
+/// [`LONG_LEADER`] that crosses no text) that only breakable lines of the drawing cross, at
+/// most [`MOST_BROKEN`] of them, clear of everything else (`hard`) and of the labels
+/// `placed`; it is marked to interrupt them.
+fn on_breakable(
+    s: &mut Spots,
+    req: &Request,
+    (drawn, hard): (&Obstacles, &Obstacles),
+    placed: &Obstacles,
+) -> Option<Candidate> {
+    (0..NEAR_SPOTS).map_while(|k| s.get(k).map(|(c, _)| c.clone())).find_map(|mut c| {
+        let r = c.r.inflate(CLEAR, CLEAR);
+        let short = c.leader.is_none_or(|(a, b)| (b - a).norm() < LONG_LEADER && !hard.segment_crosses_text(a, b));
+        let fits = short
+            && c.anchor == req.anchor
+            && hard.is_clear(r)
+            && c.box_is_free(placed)
+            && drawn.items_meeting(r) <= MOST_BROKEN;
+        c.breaks = true;
+        fits.then_some(c)
+    })
+}
+
+/// Interrupts the breakable lines of `g` where they cross the boxes `gaps`.
+fn interrupt_for(g: &mut Group, gaps: &[Rect]) {
+    if gaps.is_empty() {
+        return;
+    }
+    for k in g.breakable.clone().into_iter().rev() {
+        let Item::Path { path, pen } = &g.items[k] else { continue };
+        let Some(runs) = path.outside_rects(gaps) else { continue };
+        let pen = *pen;
+        g.split_item(k, runs.into_iter().map(|path| Item::Path { path, pen }).collect());
     }
 }
 

@@ -153,7 +153,7 @@ impl Around {
         }
         let gap = if req.names_line { TOUCH } else { LEADER_GAP };
         let leader = (dist >= LEADER_FROM).then(|| leader(self.anchor, r, gap));
-        Some(Candidate { r, anchor: self.anchor, leader, cost: spot_cost(self.extra, di, k) })
+        Some(Candidate { r, anchor: self.anchor, leader, cost: spot_cost(self.extra, di, k), breaks: false })
     }
 }
 

@@ -204,3 +204,53 @@ fn labels_keep_off_lines_crossing_at_their_anchor_and_off_each_other() {
     assert!(placed.iter().all(|&clear| clear), "{placed:?}");
     assert_clean(g);
 }
+
+/// A pivot in a fan of thin lines (its crank's other positions), walled in by a thick line
+/// so that every free spot is far off: with the fan breakable, its letter stands beside the
+/// pivot on no leader, the lines it stands on are interrupted for it (none meets its box;
+/// their pieces outside it are all still drawn) and the measure finds nothing; with the same
+/// lines not breakable, it hangs off on a long leader as before.
+#[test]
+fn a_label_in_a_fan_of_breakable_lines_stands_beside_its_point_and_breaks_them() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let o = Point::new(50.0, 50.0);
+    let fan = |g: &mut Group| {
+        let start = g.mark();
+        for k in 0..24 {
+            g.line(o, o + math::from_angle(f64::from(k) * std::f64::consts::TAU / 24.0) * 30.0, THIN);
+        }
+        start
+    };
+    let place = |breakable: bool| {
+        let mut g = Group::new("g", region);
+        let start = fan(&mut g);
+        if breakable {
+            g.breakable_from(start);
+        }
+        let mut labels = Labels::new();
+        labels.add(o, Vec2::new(1.0, -1.0), LabelText::new("O", ""), 5.0);
+        assert_eq!(labels.place(&mut g, region), vec![true]);
+        g
+    };
+    let g = place(true);
+    let text = g.texts().next().unwrap().bbox();
+    let strokes: Vec<(Point, Point)> = g
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            Item::Path { path, .. } => Some((path.start, path.end())),
+            _ => None,
+        })
+        .collect();
+    assert!(strokes.len() > 24, "some lines are broken");
+    assert!(strokes.iter().all(|&(a, b)| !crate::drawing::obstacles::segment_meets_rect(a, b, text)));
+    assert!(rect_segment_distance(text, (o, o)) < LEADER_FROM, "{text:?} is not beside {o:?}");
+    assert!(strokes.iter().all(|&(a, _)| a == o || (a - o).norm() < 15.0), "a piece starts far out");
+    // The pieces cover each line's whole length but the part in the label's box.
+    let drawn: f64 = strokes.iter().map(|&(a, b)| (b - a).norm()).sum();
+    assert!(drawn > 24.0 * 30.0 - 24.0 * 12.0 && drawn < 24.0 * 30.0, "{drawn}");
+    assert_clean(g);
+    let g = place(false);
+    let text = g.texts().next().unwrap().bbox();
+    assert!(rect_segment_distance(text, (o, o)) >= 25.0, "{text:?}: clear only beyond the fan");
+}

@@ -112,7 +112,9 @@ impl MechanismView<'_> {
             let bb = path.bbox();
             // A path that is a point or a line (a slider's centre) is not drawn: its guide shows it.
             if bb.width().max(bb.height()) > 1.0 && bb.width().min(bb.height()) > 0.3 {
+                let start = g.mark();
                 g.dashed_curve(path, TRAJECTORY);
+                g.breakable_from(start);
             }
         }
         self.guides(g);
@@ -259,14 +261,19 @@ impl MechanismView<'_> {
                     slider(g, p(pts[0]), u, BLOCK.0, BLOCK.1, pen);
                 }
                 _ => {
+                    // The other positions' links are thin lines a label may interrupt.
+                    let start = g.mark();
                     if let Some((c, a3, given)) = self.kulisa_of(li) {
                         let len = kulisa_len(self.k, c, a3, given);
                         let d = (st.points[a3].p - st.points[c].p).unit();
                         g.line(p(c), self.view.p(st.points[c].p + d * len), pen);
-                        continue;
+                    } else {
+                        let ring: Vec<Point> = pts.iter().map(|&id| p(id)).collect();
+                        g.path(ring.clone(), ring.len() > 2, pen);
                     }
-                    let ring: Vec<Point> = pts.iter().map(|&id| p(id)).collect();
-                    g.path(ring.clone(), ring.len() > 2, pen);
+                    if pen == THIN {
+                        g.breakable_from(start);
+                    }
                 }
             }
         }

@@ -3,7 +3,7 @@
 
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
-use crate::drawing::obstacles::{Obstacles, segment_meets_rect, segment_span_in_rect};
+use crate::drawing::obstacles::{Obstacles, segment_meets_rect, segment_outside_rects};
 use crate::drawing::plot::{Plot, round_ticks};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, THIN, Text};
@@ -86,7 +86,7 @@ pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], s
         }
     }
     for &(a, b) in rays {
-        for (from, to) in broken_around(a, b, &gaps) {
+        for (from, to) in segment_outside_rects(a, b, &gaps) {
             g.line(from, to, THIN);
         }
     }
@@ -108,24 +108,6 @@ fn side_of_half(places: &[Place], above: bool) -> Option<bool> {
 /// A value's box left of the y axis at `x0`, its baseline `y`, its width `w`.
 fn left_box(x0: f64, y: f64, w: f64) -> Rect {
     Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y)
-}
-
-/// The segment `a`–`b` without its parts in the boxes `gaps`, as the pieces left.
-fn broken_around(a: Point, b: Point, gaps: &[Rect]) -> Vec<(Point, Point)> {
-    let mut cut: Vec<(f64, f64)> = gaps.iter().filter_map(|&r| segment_span_in_rect(a, b, r)).collect();
-    cut.sort_by(|p, q| p.0.total_cmp(&q.0));
-    let mut pieces = Vec::new();
-    let mut t = 0.0;
-    for (t0, t1) in cut {
-        if t0 > t {
-            pieces.push((a.lerp(b, t), a.lerp(b, t0)));
-        }
-        t = t.max(t1);
-    }
-    if t < 1.0 {
-        pieces.push((a.lerp(b, t), b));
-    }
-    pieces
 }
 
 /// A value's place left of the y axis: clear, crossed by the pole's rays only, or held by
