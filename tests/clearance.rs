@@ -139,7 +139,9 @@ fn hidden_leaders(scene: &tmm_sheets::drawing::scene::Scene) -> (usize, Vec<Stri
 #[test]
 fn no_leader_runs_hidden_along_a_line_on_any_fixture() {
     let (leaders, hidden) = on_every_fixture(hidden_leaders);
-    assert!(leaders > 100, "only {leaders} leaders");
+    // 98 since labels crowded by the thin lines of many positions stand beside their points
+    // on those lines, interrupted for them, rather than off on leaders (over 100 before).
+    assert!(leaders > 80, "only {leaders} leaders");
     assert!(hidden.is_empty(), "{} of {leaders} leaders run along a line:\n{}", hidden.len(), hidden.join("\n"));
 }
 

@@ -1,5 +1,6 @@
-//! The position plan's labels near their points (issue 22's review: the crank's pivot "O"
-//! 20–35 mm below its pivot on most fixtures).
+//! Labels near their points where the thin lines of many positions crowd them (issue 22's
+//! review: the crank's pivot "O" 20–35 mm below its pivot on most fixtures, a cam's "8≡9"
+//! on a 45 mm leader): they stand on those lines, interrupted for them.
 
 mod common;
 
@@ -27,6 +28,36 @@ fn the_position_plans_labels_stand_near_their_points() {
                 let Item::Path { path, .. } = &g.items[k] else { continue };
                 let long = (path.end() - path.start).norm();
                 assert!(long <= 18.0, "{name} {lang:?}: a {long:.1} mm leader from {:?}", path.start);
+            }
+        }
+    }
+}
+
+/// The cam's profile names its follower's positions and pivots near their points, on the
+/// positions' thin lines interrupted for them where they crowd (knife-rocker's "8≡9" hung on
+/// a 45.6 mm leader parallel to the rocker's lines, the worked example's A₁₃ on 36 mm): every
+/// leader of the profile's drawing is at most 30 mm (a profile's name, set where the
+/// profile runs clear, is the longest) on every cam fixture and the worked example, in every
+/// language.
+#[test]
+fn the_cam_profiles_labels_stand_near_their_points() {
+    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(common::root().join("fixtures/cams"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "yaml"))
+        .collect();
+    files.sort();
+    files.push(common::root().join("fixtures/worked-example.yaml"));
+    for f in files {
+        for lang in Language::ALL {
+            let mut p = pipeline::load(&std::fs::read_to_string(&f).unwrap()).unwrap();
+            p.info.language = lang;
+            let out = pipeline::build(&p, &[3]).unwrap().remove(0).output;
+            let g = out.scene.groups.iter().find(|g| g.id == "profile").expect("a profile drawing");
+            for &k in &g.writing {
+                let Item::Path { path, .. } = &g.items[k] else { continue };
+                let long = (path.end() - path.start).norm();
+                assert!(long <= 30.0, "{f:?} {lang:?}: a {long:.1} mm leader from {:?}", path.start);
             }
         }
     }

@@ -157,10 +157,13 @@ fn draw_follower(g: &mut Group, labels: &mut Labels, view: View, (lo, hi): (Vec2
                 .map(|k| view.p(r.state(phis[0] + (phis[phis.len() / 2 - 1] - phis[0]) * k as f64 / 60.0).b))
                 .collect();
             g.path(arc, false, THIN);
+            // The rocker's positions toward its pivot: thin lines a label may interrupt.
+            let lines = g.mark();
             for &phi in phis {
                 let b = r.state(phi).b;
                 g.line(view.p(toward(b, a, (lo, hi))), view.p(b), THIN);
             }
+            g.breakable_from(lines);
         }
     }
 }
@@ -174,7 +177,9 @@ fn draw_positions(g: &mut Group, labels: &mut Labels, view: View, d: &Design, ph
         .zip(&analogs)
         .zip(merged_labels(analogs.len(), |j, k| (analogs[j] - analogs[k]).norm() < SAME_POINT_MM))
     {
+        let line = g.mark();
         g.line(view.p(r.state(phi).b), at, THIN);
+        g.breakable_from(line);
         g.dot(at, 0.45);
         if let Some(name) = name {
             labels.add_text_ranked(at, Vec2::ZERO, &name, 2.5, 2);

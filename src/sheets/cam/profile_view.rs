@@ -221,7 +221,10 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
                 let a = pr.carried(pivot, phi);
                 let (start, end) = (pr.carried(b0, phi), pr.pitch(phi).p);
                 g.dot(at(a), 0.5);
+                // The follower's positions: thin lines a label may interrupt.
+                let line = g.mark();
                 g.line(at(a), at(end), THIN);
+                g.breakable_from(line);
                 swing_arc(g, a, start, end, at, mu);
                 // Each pivot position named by its position, outward from O.
                 if let Some(name) = name {
@@ -240,7 +243,9 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
             let o = at(Vec2::ZERO);
             for &phi in phis {
                 let (f, end) = (at(pr.carried(foot, phi)), at(pr.pitch(phi).p));
+                let line = g.mark();
                 g.line(outside_circle(o, CENTRE_CLEAR_MM, f, end), end, THIN);
+                g.breakable_from(line);
             }
         }
     }
