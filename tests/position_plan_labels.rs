@@ -22,13 +22,7 @@ fn the_position_plans_labels_stand_near_their_points() {
         for lang in Language::ALL {
             let mut p = fixture(&name);
             p.info.language = lang;
-            let out = pipeline::build(&p, &[1]).unwrap().remove(0).output;
-            let g = out.scene.groups.iter().find(|g| g.id == "mechanism").expect("a mechanism drawing");
-            for &k in &g.writing {
-                let Item::Path { path, .. } = &g.items[k] else { continue };
-                let long = (path.end() - path.start).norm();
-                assert!(long <= 18.0, "{name} {lang:?}: a {long:.1} mm leader from {:?}", path.start);
-            }
+            assert_leaders_within(&p, (1, "mechanism"), 18.0, &format!("{name} {lang:?}"));
         }
     }
 }
@@ -52,13 +46,19 @@ fn the_cam_profiles_labels_stand_near_their_points() {
         for lang in Language::ALL {
             let mut p = pipeline::load(&std::fs::read_to_string(&f).unwrap()).unwrap();
             p.info.language = lang;
-            let out = pipeline::build(&p, &[3]).unwrap().remove(0).output;
-            let g = out.scene.groups.iter().find(|g| g.id == "profile").expect("a profile drawing");
-            for &k in &g.writing {
-                let Item::Path { path, .. } = &g.items[k] else { continue };
-                let long = (path.end() - path.start).norm();
-                assert!(long <= 30.0, "{f:?} {lang:?}: a {long:.1} mm leader from {:?}", path.start);
-            }
+            assert_leaders_within(&p, (3, "profile"), 30.0, &format!("{f:?} {lang:?}"));
         }
+    }
+}
+
+/// Every leader (every line of the writing) of the drawing `group` of sheet `sheet` of `p`
+/// is at most `most` mm long.
+fn assert_leaders_within(p: &tmm_sheets::project::Project, (sheet, group): (u32, &str), most: f64, what: &str) {
+    let out = pipeline::build(p, &[sheet]).unwrap().remove(0).output;
+    let g = out.scene.groups.iter().find(|g| g.id == group).expect("the drawing");
+    for &k in &g.writing {
+        let Item::Path { path, .. } = &g.items[k] else { continue };
+        let long = (path.end() - path.start).norm();
+        assert!(long <= most, "{what}: a {long:.1} mm leader from {:?}", path.start);
     }
 }
