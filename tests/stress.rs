@@ -307,6 +307,18 @@ fn cams_the_sweep_found_open_a_narrow_offset_and_r_min() {
     assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
 }
 
+/// A find of a 1000-case sweep (a random seed, stop 62), right after the cam's follower
+/// positions became lines a label may interrupt: a 20 mm rocker swinging 5.4° with a cam
+/// about 2 mm across. Its position numbers took spots beside their points on the broken
+/// rocker lines, and r_min, placed after them, found no clean spot left ("r_min = 0.9109
+/// mm" across a rocker line). Where breaking leaves a label without a clean spot, the
+/// placement without it is kept if it leaves fewer.
+#[test]
+fn cams_the_sweep_found_a_tiny_rockers_r_min_crowded_out_by_numbers_on_broken_lines() {
+    let text = cam("{rocker: {length: 0.0200, swing_deg: 5.4}}", (160.33, 0.0, 188.05), "cosine", 31.6);
+    assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
+}
+
 /// A find of a 5000-case sweep (seed 20261129): a 20 mm rocker swinging 5.1° (a_w =
 /// 20.49 mm, r_min = 0.86 mm) had its nomogram in a strip 51 mm tall at 10:1, the pivot A
 /// 200 mm right of a B′ curve 25 mm across. The zone's name found no clean spot and its

@@ -220,9 +220,19 @@ impl Labels {
         let failures = |placed: &[(Candidate, bool)]| placed.iter().filter(|p| !p.1).count();
         let mut best = self.rounds(layers, &mut spots, order.clone(), bounds, true);
         if failures(&best) > 0 {
-            let plain = self.rounds(layers, &mut spots, order, bounds, false);
+            let plain = self.rounds(layers, &mut spots, order.clone(), bounds, false);
             if failures(&plain) < failures(&best) {
                 best = plain;
+            }
+        }
+        // Labels standing on breakable lines take room that others may have needed (a tiny
+        // cam's position numbers beside their points left its r_min no clean spot): where
+        // that leaves a label without one, the placement without breaking is kept if it
+        // leaves fewer.
+        if failures(&best) > 0 && layers.hard.is_some() {
+            let whole = self.rounds(Layers { hard: None, ..layers }, &mut spots, order, bounds, true);
+            if failures(&whole) < failures(&best) {
+                best = whole;
             }
         }
         let mut placed = Vec::with_capacity(best.len());
