@@ -403,25 +403,6 @@ pub fn rect_segment_distance(r: Rect, (a, b): (Point, Point)) -> f64 {
     to_segment.into_iter().fold(to_rect(a).min(to_rect(b)), f64::min)
 }
 
-/// The segment `a`–`b` without its parts in the boxes `gaps`, as the pieces left, in order
-/// from `a`.
-pub fn segment_outside_rects(a: Point, b: Point, gaps: &[Rect]) -> Vec<(Point, Point)> {
-    let mut cut: Vec<(f64, f64)> = gaps.iter().filter_map(|&r| segment_span_in_rect(a, b, r)).collect();
-    cut.sort_by(|p, q| p.0.total_cmp(&q.0));
-    let mut pieces = Vec::new();
-    let mut t = 0.0;
-    for (t0, t1) in cut {
-        if t0 > t {
-            pieces.push((a.lerp(b, t), a.lerp(b, t0)));
-        }
-        t = t.max(t1);
-    }
-    if t < 1.0 {
-        pieces.push((a.lerp(b, t), b));
-    }
-    pieces
-}
-
 /// Whether the segment `a`–`b` has a point inside or on the rectangle `r` (Liang–Barsky).
 pub fn segment_meets_rect(a: Point, b: Point, r: Rect) -> bool {
     segment_span_in_rect(a, b, r).is_some()

@@ -3,7 +3,8 @@
 
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
-use crate::drawing::obstacles::{Obstacles, segment_meets_rect, segment_outside_rects};
+use crate::drawing::obstacles::{Obstacles, segment_meets_rect};
+use crate::drawing::path::Path;
 use crate::drawing::plot::{Plot, round_ticks};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, THIN, Text};
@@ -57,12 +58,8 @@ pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], s
             let w = LabelText::new(value.as_str(), "").width(VALUE_H);
             let xr = x0 + VALUE_TICK + 0.8;
             let right = Rect::new(x0 + 0.6, y - VALUE_H, xr + w, y);
-            let left = left_box(x0, y, w);
-            let left = match (clear(left), off_rays(left)) {
-                (true, true) => Side::Clear,
-                (true, false) => Side::OnRays,
-                _ => Side::Held,
-            };
+            // Left of the axis the rays may cross it: they are broken for it.
+            let left = clear(left_box(x0, y, w));
             Place { above: *v > 0.0, y_tick, right: clear(right) && off_rays(right), left }
         })
         .collect();
@@ -72,7 +69,7 @@ pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], s
         let y = p.y_tick + VALUE_H / 2.0;
         let right = match sides[usize::from(p.above)] {
             Some(right) => right,
-            None if p.right || p.left != Side::Held => p.right,
+            None if p.right || p.left => p.right,
             None => continue,
         };
         if right {
@@ -86,8 +83,10 @@ pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], s
         }
     }
     for &(a, b) in rays {
-        for (from, to) in segment_outside_rects(a, b, &gaps) {
-            g.line(from, to, THIN);
+        let ray = Path::polyline(&[a, b], false);
+        match ray.outside_rects(&gaps) {
+            Some(pieces) => pieces.into_iter().for_each(|piece| g.curve(piece, THIN)),
+            None => g.curve(ray, THIN),
         }
     }
 }
@@ -98,7 +97,7 @@ fn side_of_half(places: &[Place], above: bool) -> Option<bool> {
     let half = || places.iter().filter(move |p| p.above == above);
     if half().all(|p| p.right) {
         Some(true)
-    } else if half().all(|p| p.left != Side::Held) {
+    } else if half().all(|p| p.left) {
         Some(false)
     } else {
         None
@@ -110,22 +109,14 @@ fn left_box(x0: f64, y: f64, w: f64) -> Rect {
     Rect::new(x0 - 2.3 - w, y - VALUE_H, x0 - 2.3, y)
 }
 
-/// A value's place left of the y axis: clear, crossed by the pole's rays only, or held by
-/// a curve or a text.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Side {
-    Clear,
-    OnRays,
-    Held,
-}
-
 /// Where a tick's value may stand: its tick's height, whether the x axis' upper side holds
-/// it, whether its place right of the y axis is clear, and its place left of it.
+/// it, whether its place right of the y axis is clear, and whether its place left of it is
+/// (the pole's rays aside).
 struct Place {
     above: bool,
     y_tick: f64,
     right: bool,
-    left: Side,
+    left: bool,
 }
 
 /// An analog's ticks each side of its axis (`peak` its largest value): at a round step
