@@ -12,14 +12,14 @@ use crate::drawing::labels::Language;
 use crate::drawing::obstacles::{Obstacles, Piece};
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
-use crate::drawing::scene::{Anchor, Group, THIN};
+use crate::drawing::scene::{Anchor, Group, THIN, Text};
 use crate::drawing::symbols::{self, ARROW_LEN};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::gears::pair::Pair;
-use crate::num::math::{from_angle, tan};
+use crate::num::math::{self, Norm, from_angle, tan};
 use crate::num::units::mm;
-use kurbo::{Rect, Vec2};
+use kurbo::{Point, Rect, Vec2};
 
 /// The dimension arcs of s and e this far inside wheel 1's root circle, and p's further in, mm:
 /// 20 mm apart, so that a value the placer sets under its arc is still nearer its own arc.
@@ -29,7 +29,7 @@ pub(super) const P_INSIDE_ROOT: f64 = 32.0;
 const TEXT_H: f64 = 3.5;
 
 /// Draws s, e and p on wheel 1: s on its tooth centred at world angle `tooth`, e on the space
-/// after it (toward the line of centres), p over both, each value over its arc.
+/// after it (toward the line of centres), p over both, each value along its arc.
 pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, tooth: f64, lang: Language) {
     let w1 = &p.wheels[0];
     let step = std::f64::consts::TAU / f64::from(w1.z);
@@ -45,34 +45,70 @@ pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, t
         arc.dimension(g, r_s, (left, next), value("e", p.pitch - w1.tooth_thickness)),
         arc.dimension(g, r_p, (right, next), value("p", p.pitch)),
     ];
-    // Each value level at its arc's middle: over it (p's under it), moved along the radius
-    // until it meets nothing drawn (nor a value set before it), else on the other side, never
-    // nearer the other arc than its own; where neither is clear, the label placer sets it off
-    // on a leader.
-    let mut drawn = Obstacles::of_items(&g.items);
-    for Value { r, mid, text } in values.into_iter().flatten() {
-        // Toward the wheel's body (p's side, away from both arcs) the value may stand far
-        // enough for a horizontal text to clear a steep arc; toward the other arc, half the
-        // band at most.
+    // s's value set first may take the only spot e's has (and the other way round): the
+    // order that leaves fewer values to the placer's leaders, s's first on a tie.
+    let drawn = Obstacles::of_items(&g.items);
+    let orders: [&[usize]; 2] = [&[0, 1, 2], &[1, 0, 2]];
+    let tried = orders.map(|order| {
+        let order: Vec<usize> = order.iter().copied().filter(|&k| values[k].is_some()).collect();
+        let set =
+            set_values(&arc, &order.iter().filter_map(|&k| values[k].as_ref()).collect::<Vec<_>>(), drawn.clone(), r_s);
+        (order, set)
+    });
+    let left = |set: &[Option<Text>]| set.iter().filter(|t| t.is_none()).count();
+    let (order, set) = tried.into_iter().min_by_key(|(_, set)| left(set)).expect("two orders");
+    for (k, t) in order.into_iter().zip(set) {
+        let Some(Value { r, mid, text, .. }) = &values[k] else { continue };
+        match t {
+            Some(t) => g.text(t),
+            None => {
+                labels.add_ranked(arc.at(*mid, *r), arc.at(*mid, r + 1.0) - arc.at(*mid, *r), text.clone(), TEXT_H, 1)
+            }
+        }
+    }
+}
+
+/// Each of `values` in turn beside its arc, clear of `drawn` and of the values set before it
+/// (None: no spot, left to the label placer's leaders): along the arc, as GOST 2.307 writes
+/// a dimension's value over its line, else level.
+fn set_values(arc: &Arc, values: &[&Value], mut drawn: Obstacles, r_s: f64) -> Vec<Option<Text>> {
+    let mut out = Vec::new();
+    for &&Value { r, mid, half, ref text } in values {
+        // p's value toward the wheel's empty body: over its arc, it stood in the band between
+        // the arcs with s's, one above the other. Away from the other arc a value may stand
+        // far enough to clear what crosses its band; toward it, half the band at most.
         let away = r < r_s;
+        let own = if away { -1.0 } else { 1.0 };
         let steps = |far: bool| (0..=if far { 30 } else { 12 }).map(|k| 1.0 + 0.5 * f64::from(k));
+        let allowed = |off: f64| off.signum() == own || off.abs() <= 7.0;
+        let clear = |t: &Text| clear_inside(t, &drawn, arc.area);
+        // Along the arc: on its own side within a few millimetres, then on the other (the
+        // other wheel's circles cross the band over s's arc), then either, farther; moved
+        // along the arc by up to a quarter of its length where its middle is crowded.
+        let near = |sign: f64| steps(false).take_while(|&d| d <= 4.0).map(move |d| sign * d);
+        let farther = steps(true).filter(|&d| d > 4.0).flat_map(|d| [own * d, -own * d]);
+        let offs = near(own).chain(near(-own)).chain(farther).filter(|&off| allowed(off));
+        let shifts: Vec<f64> =
+            (0..=(r * half / 2.0).floor() as i32).flat_map(|k| [k, -k]).skip(1).map(f64::from).collect();
+        let along = offs.flat_map(|off| shifts.iter().map(move |&shift| (off, shift)));
+        let along = along.map(|(off, shift)| arc.along(mid + shift / r, r, off, text));
+        // Level at the arc's middle, moved along the radius: a short arc's value between
+        // extension lines too close for it along the arc.
         let over = steps(!away).map(|d| text.text(arc.at(mid, r + d), TEXT_H, Anchor::Middle));
         let under = steps(away).map(|d| {
             let top = arc.at(mid, r - d);
             text.text(kurbo::Point::new(top.x, top.y + TEXT_H), TEXT_H, Anchor::Middle)
         });
-        // p's value inside its arc first, toward the wheel's empty body: over it, it stood in
-        // the band between the arcs with s's, one above the other.
-        let clear = |t: &crate::drawing::scene::Text| drawn.is_clear(t.bbox().inflate(0.5, 0.5));
-        let set = if away { under.chain(over).find(clear) } else { over.chain(under).find(clear) };
-        match set {
-            Some(t) => {
-                drawn.add(Piece::TextBox(t.bbox()), usize::MAX);
-                g.text(t);
+        let set =
+            if away { along.chain(under).chain(over).find(clear) } else { along.chain(over).chain(under).find(clear) };
+        if let Some(t) = &set {
+            for b in t.bbox_pieces() {
+                drawn.add(Piece::TextBox(b), usize::MAX);
             }
-            None => labels.add_ranked(arc.at(mid, r), arc.at(mid, r + 1.0) - arc.at(mid, r), text, TEXT_H, 1),
         }
+        out.push(set);
     }
+    out
 }
 
 /// The dimension line of a_w this far right of the teeth's drawn box, and the room its value
@@ -132,11 +168,22 @@ pub fn heights(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair
     // The values beside their lines toward the teeth (the angles are past 90°), where the
     // wheel's body is empty: the circles' names stand at the other side, at the area's edge.
     let side = Vec2::new(-along.y, along.x);
-    for (r0, r1, v_) in
-        [(w1.pitch, w1.tip, value("a", w1.tip - w1.pitch)), (w1.root, w1.pitch, value("f", w1.pitch - w1.root))]
-    {
-        let mid = symbols::dimension(g, on(deg, r0), on(deg, r1), Vec2::ZERO);
-        labels.add_ranked(mid, side, v_, TEXT_H, 1);
+    let dims = [(w1.pitch, w1.tip, value("a", w1.tip - w1.pitch)), (w1.root, w1.pitch, value("f", w1.pitch - w1.root))];
+    let mids: Vec<kurbo::Point> =
+        dims.iter().map(|&(r0, r1, _)| symbols::dimension(g, on(deg, r0), on(deg, r1), Vec2::ZERO)).collect();
+    // Each value along its line where it fits between the circles crossing it, else level
+    // beside it (the placer's): h_f hung 21 mm off on a leader.
+    let mut drawn = Obstacles::of_items(&g.items);
+    for ((r0, r1, v_), mid) in dims.into_iter().zip(mids) {
+        match along_line((&drawn, area), (on(deg, r0), on(deg, r1)), &v_, Some(side)) {
+            Some(t) => {
+                for b in t.bbox_pieces() {
+                    drawn.add(Piece::TextBox(b), usize::MAX);
+                }
+                g.text(t);
+            }
+            None => labels.add_ranked(mid, side, v_, TEXT_H, 1),
+        }
     }
 }
 
@@ -174,13 +221,30 @@ pub fn base_pitch(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &P
         let t = radial * rb;
         (v.p(t), v.p(t + along * l), v.p(t + along * (l + pb)))
     });
-    let Some((_, a, b)) = points.into_iter().find(|(t, a, b)| [t, a, b].iter().all(|q| area.contains(**q))) else {
+    let inside = points.filter(|(t, a, b)| [t, a, b].iter().all(|q| area.contains(**q)));
+    let candidates: Vec<(kurbo::Point, kurbo::Point)> = inside.map(|(_, a, b)| (a, b)).collect();
+    let Some(&first) = candidates.first() else {
         return;
     };
-    let mid = symbols::dimension(g, a, b, Vec2::ZERO);
-    let along = b - a;
     let value = LabelText::new("p", "b").with_tail(format!(" = {}", fmt::value(mm(pb), lang)));
-    labels.add_ranked(mid, Vec2::new(along.y, -along.x), value, TEXT_H, 1);
+    // Its value along its line, as the arcs' values: beside its middle, else moved along it
+    // up to its ends, on either side, the nearest clear. The first place of the dimension
+    // with room for it; where none has, the first place, and the placer sets the value off
+    // on a leader (it hung 20–37 mm off across the teeth).
+    let drawn = Obstacles::of_items(&g.items);
+    let beside = |(a, b): (kurbo::Point, kurbo::Point)| along_line((&drawn, area), (a, b), &value, None);
+    let (a, b, set) = candidates
+        .iter()
+        .find_map(|&(a, b)| beside((a, b)).map(|t| (a, b, Some(t))))
+        .unwrap_or((first.0, first.1, None));
+    let mid = symbols::dimension(g, a, b, Vec2::ZERO);
+    match set {
+        Some(t) => g.text(t),
+        None => {
+            let u = (b - a).unit();
+            labels.add_ranked(mid, Vec2::new(u.y, -u.x), value, TEXT_H, 1)
+        }
+    }
 }
 
 /// Arc dimensions about wheel 1's centre from features on the circle of paper radius
@@ -195,6 +259,8 @@ struct Arc {
 struct Value {
     r: f64,
     mid: f64,
+    /// Half the arc's span, world radians.
+    half: f64,
     text: LabelText,
 }
 
@@ -203,6 +269,13 @@ impl Arc {
     fn at(&self, a: f64, radius: f64) -> kurbo::Point {
         let u = from_angle(a);
         self.v.p(Vec2::ZERO) + Vec2::new(u.x, -u.y) * radius
+    }
+
+    /// `value` set along the arc of paper radius `r` at world angle `mid`, read from the
+    /// left, its box `off` mm outside the arc (inside where negative).
+    fn along(&self, mid: f64, r: f64, off: f64, value: &LabelText) -> Text {
+        let at = self.at(mid, r);
+        value_along(at, self.at(mid, r + 1.0) - at, off, value)
     }
 
     /// The dimension between world angles `(a0, a1)` (a0 < a1) on a dimension arc of paper
@@ -227,6 +300,53 @@ impl Arc {
         let sign = if inside { 1.0 } else { -1.0 };
         symbols::arrowhead(g, at(a0, r), tangent(a0, sign));
         symbols::arrowhead(g, at(a1, r), tangent(a1, -sign));
-        Some(Value { r, mid: (a0 + a1) / 2.0, text: value })
+        Some(Value { r, mid: (a0 + a1) / 2.0, half: (a1 - a0) / 2.0, text: value })
     }
+}
+
+/// `value` set along a dimension line through `at` whose unit normal is `normal`, read from
+/// the left, centred on `at`, its box `off` mm from the line on `normal`'s side (on the other
+/// where negative).
+fn value_along(at: kurbo::Point, normal: Vec2, off: f64, value: &LabelText) -> Text {
+    // The baseline's direction, left to right on paper, and the letters' up.
+    let d = if normal.y <= 0.0 { Vec2::new(-normal.y, normal.x) } else { Vec2::new(normal.y, -normal.x) };
+    let up = Vec2::new(d.y, -d.x);
+    // The baseline this far from the line along `normal`: the box's near side `off` from it.
+    let (depth, top) = (0.3 * TEXT_H, 1.05 * TEXT_H);
+    let shift = match (off > 0.0, up.dot(normal) > 0.0) {
+        (true, true) => off + depth,
+        (true, false) => off + top,
+        (false, true) => off - top,
+        (false, false) => off - depth,
+    };
+    let mut t = value.text(at + normal * shift, TEXT_H, Anchor::Middle);
+    t.rotate = math::atan2(-d.y, d.x).to_degrees();
+    t
+}
+
+/// `value` along the dimension line a–b, clear of `drawn` and inside `area`: beside its middle, else moved
+/// along it up to its ends, the nearest clear within 8 mm, on `pref`'s side first at each
+/// distance (either first where None).
+fn along_line(
+    (drawn, area): (&Obstacles, Rect),
+    (a, b): (kurbo::Point, kurbo::Point),
+    value: &LabelText,
+    pref: Option<Vec2>,
+) -> Option<Text> {
+    let (along, mid) = (b - a, a.midpoint(b));
+    let (length, u) = (along.norm(), along.unit());
+    let normal = Vec2::new(u.y, -u.x);
+    let first = if pref.is_some_and(|p| p.dot(normal) < 0.0) { -1.0 } else { 1.0 };
+    let offs = (0..=14).map(|k| 1.0 + 0.5 * f64::from(k)).flat_map(|d| [first * d, -first * d]);
+    let shifts: Vec<f64> = (0..=(length / 2.0).floor() as i32).flat_map(|k| [k, -k]).skip(1).map(f64::from).collect();
+    let tried = offs.flat_map(|off| shifts.iter().map(move |&shift| (off, shift)));
+    tried.map(|(off, shift)| value_along(mid + u * shift, normal, off, value)).find(|t| clear_inside(t, drawn, area))
+}
+
+/// Whether `t` meets nothing of `drawn` (0.5 mm clear) and lies inside `area`.
+fn clear_inside(t: &Text, drawn: &Obstacles, area: Rect) -> bool {
+    let b = t.bbox();
+    area.contains(b.origin())
+        && area.contains(Point::new(b.x1, b.y1))
+        && t.bbox_pieces().all(|b| drawn.is_clear(b.inflate(0.5, 0.5)))
 }
