@@ -6,6 +6,7 @@
 //! **Architecture invariant:** the kit writes no bytes (that is the backends' job) and
 //! knows no domain: it draws whatever geometry a sheet hands it.
 
+pub mod along;
 pub mod fmt;
 pub mod frame;
 pub mod grid;

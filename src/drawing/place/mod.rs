@@ -128,7 +128,16 @@ impl Labels {
     /// One label of several plain lines stacked and centred, the first nearest `pref`'s
     /// side (names of one point too many for one line: "p=b=s3=" over "c=s4=s5").
     pub fn add_text_lines(&mut self, anchor: Point, pref: Vec2, lines: &[String], h: f64) {
+        self.add_text_lines_ranked(anchor, pref, lines, h, 0);
+    }
+
+    /// As [`Labels::add_text_lines`], placed after every label of a lower rank.
+    pub fn add_text_lines_ranked(&mut self, anchor: Point, pref: Vec2, lines: &[String], h: f64, rank: u8) {
+        let n = self.requests.len();
         self.add_label_lines(anchor, pref, lines.iter().map(|l| LabelText::new(l, "")).collect(), h);
+        if let Some(r) = self.requests.get_mut(n) {
+            r.rank = rank;
+        }
     }
 
     /// As [`Labels::add_text_lines`], each line a label with its subscript ("a=n" over "BA").

@@ -9,7 +9,9 @@ use super::labels::CamWords;
 use crate::cams::follower::Follower;
 use crate::cams::radius::{Phase, Region};
 use crate::cams::{Design, Sense};
+use crate::drawing::along::along_line;
 use crate::drawing::fmt;
+use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along, vector};
@@ -124,8 +126,15 @@ pub fn draw(
     }
     let limiting = draw_limiting_lines(g, labels, view, at.extent, d, words);
     draw_zone_boundary(g, labels, (view, memo), at.extent, d, &limiting);
-    labels.add_text_ranked(view.p(zone_anchor(d, at.extent, at.mu)), Vec2::ZERO, words.sheet.zone(), 2.5, 3);
-    draw_centre(g, labels, (view, at.extent), d, words);
+    // In two lines, at its last space: in one, 25–35 mm long, it found no room inside the
+    // wedge under O and hung 36 mm off on a leader (translating-offset-auto).
+    let zone = words.sheet.zone();
+    let lines: Vec<String> = match zone.rsplit_once(' ') {
+        Some((a, b)) => vec![a.to_string(), b.to_string()],
+        None => vec![zone.to_string()],
+    };
+    labels.add_text_lines_ranked(view.p(zone_anchor(d, at.extent, at.mu)), Vec2::ZERO, &lines, 2.5, 3);
+    draw_centre(g, labels, (view, at.extent, at.area), d, words);
 }
 
 /// Where the zone's name points: into the zone from O, 0.4 r_min deep, but inside the
@@ -275,7 +284,13 @@ fn draw_zone_boundary(
 
 /// O and r_min as a radius (thin, its arrow at B₀ as on the profile), and the rocker's
 /// centre distance or the translating follower's offset.
-fn draw_centre(g: &mut Group, labels: &mut Labels, (view, extent): (View, (Vec2, Vec2)), d: &Design, words: &CamWords) {
+fn draw_centre(
+    g: &mut Group,
+    labels: &mut Labels,
+    (view, extent, area): (View, (Vec2, Vec2), Rect),
+    d: &Design,
+    words: &CamWords,
+) {
     let (l, c, lang) = (words.sheet, words.common, words.lang);
     let o = d.centre.o;
     g.dot(view.p(o), 0.8);
@@ -286,7 +301,6 @@ fn draw_centre(g: &mut Group, labels: &mut Labels, (view, extent): (View, (Vec2,
         fmt::trimmed(mm(d.centre.r_min), lang),
         c.unit_mm()
     ));
-    labels.add(view.p(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5);
     if let Some(a) = d.spec.follower.pivot() {
         let end = toward(o, a, extent);
         g.line(view.p(o), view.p(end), DASHED);
@@ -303,6 +317,14 @@ fn draw_centre(g: &mut Group, labels: &mut Labels, (view, extent): (View, (Vec2,
         let mid = dimension(g, view.p(Vec2::new(0.0, o.y)), view.p(o), Vec2::new(0.0, depth));
         let t = format!("e = {} {}", fmt::trimmed(mm(o.x.abs()), lang), c.unit_mm());
         labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);
+    }
+    // Along its radius where it finds room there (GOST 2.307), else level beside it: between
+    // the limiting lines a level value hung 22–35 mm off on a leader. Set after every line
+    // of the picture is drawn.
+    let drawn = Obstacles::of_items(&g.items);
+    match along_line((&drawn, area), (view.p(o), view.p(Vec2::ZERO)), (&r_text, 3.5), Some(Vec2::new(1.0, 0.0))) {
+        Some(t) => g.text(t),
+        None => labels.add(view.p(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5),
     }
 }
 

@@ -7,6 +7,7 @@
 //! along a radius upper left, where only its circles pass; the base pitch p_b on the line of
 //! action from P.
 
+use crate::drawing::along::{along_line, clear_inside, value_along};
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
 use crate::drawing::obstacles::{Obstacles, Piece};
@@ -17,9 +18,9 @@ use crate::drawing::symbols::{self, ARROW_LEN};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::gears::pair::Pair;
-use crate::num::math::{self, Norm, from_angle, tan};
+use crate::num::math::{Norm, from_angle, tan};
 use crate::num::units::mm;
-use kurbo::{Point, Rect, Vec2};
+use kurbo::{Rect, Vec2};
 
 /// The dimension arcs of s and e this far inside wheel 1's root circle, and p's further in, mm:
 /// 20 mm apart, so that a value the placer sets under its arc is still nearer its own arc.
@@ -175,7 +176,7 @@ pub fn heights(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair
     // beside it (the placer's): h_f hung 21 mm off on a leader.
     let mut drawn = Obstacles::of_items(&g.items);
     for ((r0, r1, v_), mid) in dims.into_iter().zip(mids) {
-        match along_line((&drawn, area), (on(deg, r0), on(deg, r1)), &v_, Some(side)) {
+        match along_line((&drawn, area), (on(deg, r0), on(deg, r1)), (&v_, TEXT_H), Some(side)) {
             Some(t) => {
                 for b in t.bbox_pieces() {
                     drawn.add(Piece::TextBox(b), usize::MAX);
@@ -232,7 +233,7 @@ pub fn base_pitch(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &P
     // with room for it; where none has, the first place, and the placer sets the value off
     // on a leader (it hung 20–37 mm off across the teeth).
     let drawn = Obstacles::of_items(&g.items);
-    let beside = |(a, b): (kurbo::Point, kurbo::Point)| along_line((&drawn, area), (a, b), &value, None);
+    let beside = |(a, b): (kurbo::Point, kurbo::Point)| along_line((&drawn, area), (a, b), (&value, TEXT_H), None);
     let (a, b, set) = candidates
         .iter()
         .find_map(|&(a, b)| beside((a, b)).map(|t| (a, b, Some(t))))
@@ -275,7 +276,7 @@ impl Arc {
     /// left, its box `off` mm outside the arc (inside where negative).
     fn along(&self, mid: f64, r: f64, off: f64, value: &LabelText) -> Text {
         let at = self.at(mid, r);
-        value_along(at, self.at(mid, r + 1.0) - at, off, value)
+        value_along(at, self.at(mid, r + 1.0) - at, off, value, TEXT_H)
     }
 
     /// The dimension between world angles `(a0, a1)` (a0 < a1) on a dimension arc of paper
@@ -302,51 +303,4 @@ impl Arc {
         symbols::arrowhead(g, at(a1, r), tangent(a1, -sign));
         Some(Value { r, mid: (a0 + a1) / 2.0, half: (a1 - a0) / 2.0, text: value })
     }
-}
-
-/// `value` set along a dimension line through `at` whose unit normal is `normal`, read from
-/// the left, centred on `at`, its box `off` mm from the line on `normal`'s side (on the other
-/// where negative).
-fn value_along(at: kurbo::Point, normal: Vec2, off: f64, value: &LabelText) -> Text {
-    // The baseline's direction, left to right on paper, and the letters' up.
-    let d = if normal.y <= 0.0 { Vec2::new(-normal.y, normal.x) } else { Vec2::new(normal.y, -normal.x) };
-    let up = Vec2::new(d.y, -d.x);
-    // The baseline this far from the line along `normal`: the box's near side `off` from it.
-    let (depth, top) = (0.3 * TEXT_H, 1.05 * TEXT_H);
-    let shift = match (off > 0.0, up.dot(normal) > 0.0) {
-        (true, true) => off + depth,
-        (true, false) => off + top,
-        (false, true) => off - top,
-        (false, false) => off - depth,
-    };
-    let mut t = value.text(at + normal * shift, TEXT_H, Anchor::Middle);
-    t.rotate = math::atan2(-d.y, d.x).to_degrees();
-    t
-}
-
-/// `value` along the dimension line a–b, clear of `drawn` and inside `area`: beside its middle, else moved
-/// along it up to its ends, the nearest clear within 8 mm, on `pref`'s side first at each
-/// distance (either first where None).
-fn along_line(
-    (drawn, area): (&Obstacles, Rect),
-    (a, b): (kurbo::Point, kurbo::Point),
-    value: &LabelText,
-    pref: Option<Vec2>,
-) -> Option<Text> {
-    let (along, mid) = (b - a, a.midpoint(b));
-    let (length, u) = (along.norm(), along.unit());
-    let normal = Vec2::new(u.y, -u.x);
-    let first = if pref.is_some_and(|p| p.dot(normal) < 0.0) { -1.0 } else { 1.0 };
-    let offs = (0..=14).map(|k| 1.0 + 0.5 * f64::from(k)).flat_map(|d| [first * d, -first * d]);
-    let shifts: Vec<f64> = (0..=(length / 2.0).floor() as i32).flat_map(|k| [k, -k]).skip(1).map(f64::from).collect();
-    let tried = offs.flat_map(|off| shifts.iter().map(move |&shift| (off, shift)));
-    tried.map(|(off, shift)| value_along(mid + u * shift, normal, off, value)).find(|t| clear_inside(t, drawn, area))
-}
-
-/// Whether `t` meets nothing of `drawn` (0.5 mm clear) and lies inside `area`.
-fn clear_inside(t: &Text, drawn: &Obstacles, area: Rect) -> bool {
-    let b = t.bbox();
-    area.contains(b.origin())
-        && area.contains(Point::new(b.x1, b.y1))
-        && t.bbox_pieces().all(|b| drawn.is_clear(b.inflate(0.5, 0.5)))
 }

@@ -1,0 +1,62 @@
+//! A dimension's value written along its line, as GOST 2.307 writes it: the text turned
+//! parallel to the line, read from the left, beside it on either side, moved along it where
+//! its middle is crowded — for dimensions that are not level (the mesh's arcs and radii, a
+//! cam's r_min), where a level value finds no room between the lines crossing them.
+
+use super::obstacles::Obstacles;
+use super::scene::{Anchor, Text};
+use super::text::LabelText;
+use crate::num::math::{self, Norm};
+use kurbo::{Point, Rect, Vec2};
+
+/// sin 60°: a line running down to the right steeper than this has its value read upward.
+const STEEP_DOWN: f64 = 0.866_025_403_784_438_6;
+
+/// `value` set along a dimension line through `at` whose unit normal is `normal`, centred
+/// on `at`, its box `off` mm from the line on `normal`'s side (on the other where negative).
+pub fn value_along(at: Point, normal: Vec2, off: f64, value: &LabelText, h: f64) -> Text {
+    // The baseline's direction and the letters' up: read from the drawing's bottom or its
+    // right (GOST 2.307's aligned values) — left to right, or upward where the line runs
+    // within 30° of the vertical down to the right (read downward, they face the left).
+    let right = if normal.y <= 0.0 { Vec2::new(-normal.y, normal.x) } else { Vec2::new(normal.y, -normal.x) };
+    let d = if right.y > STEEP_DOWN { -right } else { right };
+    let up = Vec2::new(d.y, -d.x);
+    // The baseline this far from the line along `normal`: the box's near side `off` from it.
+    let (depth, top) = (0.3 * h, 1.05 * h);
+    let shift = match (off > 0.0, up.dot(normal) > 0.0) {
+        (true, true) => off + depth,
+        (true, false) => off + top,
+        (false, true) => off - top,
+        (false, false) => off - depth,
+    };
+    let mut t = value.text(at + normal * shift, h, Anchor::Middle);
+    t.rotate = math::atan2(-d.y, d.x).to_degrees();
+    t
+}
+
+/// `value` along the dimension line a–b, clear of `drawn` and inside `area`: beside its middle, else moved
+/// along it up to its ends, the nearest clear within 8 mm, on `pref`'s side first at each
+/// distance (either first where None).
+pub fn along_line(
+    (drawn, area): (&Obstacles, Rect),
+    (a, b): (Point, Point),
+    (value, h): (&LabelText, f64),
+    pref: Option<Vec2>,
+) -> Option<Text> {
+    let (along, mid) = (b - a, a.midpoint(b));
+    let (length, u) = (along.norm(), along.unit());
+    let normal = Vec2::new(u.y, -u.x);
+    let first = if pref.is_some_and(|p| p.dot(normal) < 0.0) { -1.0 } else { 1.0 };
+    let offs = (0..=14).map(|k| 1.0 + 0.5 * f64::from(k)).flat_map(|d| [first * d, -first * d]);
+    let shifts: Vec<f64> = (0..=(length / 2.0).floor() as i32).flat_map(|k| [k, -k]).skip(1).map(f64::from).collect();
+    let tried = offs.flat_map(|off| shifts.iter().map(move |&shift| (off, shift)));
+    tried.map(|(off, shift)| value_along(mid + u * shift, normal, off, value, h)).find(|t| clear_inside(t, drawn, area))
+}
+
+/// Whether `t` meets nothing of `drawn` (0.5 mm clear) and lies inside `area`.
+pub fn clear_inside(t: &Text, drawn: &Obstacles, area: Rect) -> bool {
+    let b = t.bbox();
+    area.contains(b.origin())
+        && area.contains(Point::new(b.x1, b.y1))
+        && t.bbox_pieces().all(|b| drawn.is_clear(b.inflate(0.5, 0.5)))
+}
