@@ -18,9 +18,11 @@ use super::text::{LabelText, SLANT, SUB};
 use crate::num::math::Norm;
 use candidate::{Candidate, TOUCH, Verdict, least_bad};
 use kurbo::{Point, Rect, Vec2};
+use request::Request;
 use spots::Spots;
 
 mod candidate;
+mod request;
 mod spots;
 
 /// Distances tried between an anchor and its label's box, mm.
@@ -41,50 +43,6 @@ const NUMBERS_RANK: u8 = 2;
 const DIRECTIONS: usize = 24;
 /// Baseline to baseline in a stacked label, in lettering heights.
 const LINE_PITCH: f64 = 1.4;
-
-/// One label to place.
-#[derive(Debug, Clone)]
-struct Request {
-    anchor: Point,
-    pref: Vec2,
-    /// Further anchors on the same line with their preferred directions, tried after the
-    /// first one's near spots (a profile's name where its first point is crowded).
-    others: Vec<(Point, Vec2)>,
-    label: LabelText,
-    /// Further lines set under the first, centred on it (one label in a stack).
-    more: Vec<LabelText>,
-    h: f64,
-    /// Lower goes first: a class of labels (a mechanism's joint letters) may claim the
-    /// best spots before another (its position numbers).
-    rank: u8,
-    /// A label naming a line (a curve's name): always on a leader that touches the line.
-    names_line: bool,
-    /// The segment the label names (a polygon's side): a spot nearer another named segment
-    /// than this one reads as that one's name, and is taken only when no other is free.
-    side: Option<(Point, Point)>,
-}
-
-impl Request {
-    /// A one-line label of rank 0 at one anchor.
-    fn new(anchor: Point, pref: Vec2, label: LabelText, h: f64) -> Request {
-        Request { anchor, pref, others: Vec::new(), label, more: Vec::new(), h, rank: 0, names_line: false, side: None }
-    }
-
-    /// The label's box: width, height above the first baseline, depth below it (the further
-    /// lines included).
-    fn size(&self) -> (f64, f64, f64) {
-        let (w, up, down) = label_size(&self.label, self.h);
-        self.more.iter().fold((w, up, down), |(w, up, _), line| {
-            let (lw, _, ld) = label_size(line, self.h);
-            (w.max(lw), up, ld + self.more.len() as f64 * LINE_PITCH * self.h)
-        })
-    }
-
-    /// A candidate's leader as drawn: a line's name's reaches the line it names.
-    fn drawn_leader(&self, c: &Candidate) -> Option<(Point, Point)> {
-        c.leader.map(|(a, b)| (if self.names_line { c.anchor } else { a }, b))
-    }
-}
 
 /// Labels waiting for the geometry of their group to be complete.
 #[derive(Debug, Default)]

@@ -1,0 +1,50 @@
+//! One label waiting to be placed: its anchors, its lines, its rank and what it names.
+
+use super::candidate::Candidate;
+use super::{LINE_PITCH, label_size};
+use crate::drawing::text::LabelText;
+use kurbo::{Point, Vec2};
+
+/// One label to place.
+#[derive(Debug, Clone)]
+pub(super) struct Request {
+    pub(super) anchor: Point,
+    pub(super) pref: Vec2,
+    /// Further anchors on the same line with their preferred directions, tried after the
+    /// first one's near spots (a profile's name where its first point is crowded).
+    pub(super) others: Vec<(Point, Vec2)>,
+    pub(super) label: LabelText,
+    /// Further lines set under the first, centred on it (one label in a stack).
+    pub(super) more: Vec<LabelText>,
+    pub(super) h: f64,
+    /// Lower goes first: a class of labels (a mechanism's joint letters) may claim the
+    /// best spots before another (its position numbers).
+    pub(super) rank: u8,
+    /// A label naming a line (a curve's name): always on a leader that touches the line.
+    pub(super) names_line: bool,
+    /// The segment the label names (a polygon's side): a spot nearer another named segment
+    /// than this one reads as that one's name, and is taken only when no other is free.
+    pub(super) side: Option<(Point, Point)>,
+}
+
+impl Request {
+    /// A one-line label of rank 0 at one anchor.
+    pub(super) fn new(anchor: Point, pref: Vec2, label: LabelText, h: f64) -> Request {
+        Request { anchor, pref, others: Vec::new(), label, more: Vec::new(), h, rank: 0, names_line: false, side: None }
+    }
+
+    /// The label's box: width, height above the first baseline, depth below it (the further
+    /// lines included).
+    pub(super) fn size(&self) -> (f64, f64, f64) {
+        let (w, up, down) = label_size(&self.label, self.h);
+        self.more.iter().fold((w, up, down), |(w, up, _), line| {
+            let (lw, _, ld) = label_size(line, self.h);
+            (w.max(lw), up, ld + self.more.len() as f64 * LINE_PITCH * self.h)
+        })
+    }
+
+    /// A candidate's leader as drawn: a line's name's reaches the line it names.
+    pub(super) fn drawn_leader(&self, c: &Candidate) -> Option<(Point, Point)> {
+        c.leader.map(|(a, b)| (if self.names_line { c.anchor } else { a }, b))
+    }
+}
