@@ -236,6 +236,18 @@ impl Obstacles {
         self.extent
     }
 
+    /// Adds `items`' pieces, each tagged with its index counted from `first` (the items
+    /// drawn since the index was built, as [`Obstacles::of_items`] of them all would tag them).
+    pub fn add_items(&mut self, items: &[Item], first: usize) {
+        let mut pieces = Vec::new();
+        for (k, item) in items.iter().enumerate() {
+            pieces_of(item, first + k, &mut pieces);
+        }
+        for (piece, owner) in pieces {
+            self.add(piece, owner);
+        }
+    }
+
     /// Adds a piece (a placed label, its leader) tagged `owner`.
     pub fn add(&mut self, piece: Piece, owner: usize) {
         let id = u32::try_from(self.pieces.len()).expect("fewer than 2³² pieces on a sheet");

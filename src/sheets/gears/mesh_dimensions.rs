@@ -29,9 +29,50 @@ pub(super) const P_INSIDE_ROOT: f64 = 32.0;
 /// The values' lettering, mm.
 const TEXT_H: f64 = 3.5;
 
+/// The mesh drawing's obstacle index, kept up to date with its group's items: built once
+/// for all the dimensions (each rebuild flattened every circle of the mesh again).
+pub struct Drawn {
+    obstacles: Obstacles,
+    /// The group's items already in the index.
+    upto: usize,
+}
+
+impl Drawn {
+    /// The index of everything `g` holds.
+    pub fn of(g: &Group) -> Drawn {
+        Drawn { obstacles: Obstacles::of_items(&g.items), upto: g.items.len() }
+    }
+
+    /// The index with the items drawn into `g` since it was last brought up to date.
+    fn sync(&mut self, g: &Group) -> &Obstacles {
+        self.obstacles.add_items(&g.items[self.upto..], self.upto);
+        self.upto = g.items.len();
+        &self.obstacles
+    }
+
+    /// Draws the value `t` set beside its line, indexed by its pieces (a rotated text's
+    /// pieces hug its letters where one box would block its whole slant).
+    fn set(&mut self, g: &mut Group, t: Text) {
+        self.sync(g);
+        for b in t.bbox_pieces() {
+            self.obstacles.add(Piece::TextBox(b), usize::MAX);
+        }
+        g.text(t);
+        self.upto = g.items.len();
+    }
+}
+
 /// Draws s, e and p on wheel 1: s on its tooth centred at world angle `tooth`, e on the space
 /// after it (toward the line of centres), p over both, each value along its arc.
-pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, tooth: f64, lang: Language) {
+pub fn draw(
+    g: &mut Group,
+    (labels, drawn): (&mut Labels, &mut Drawn),
+    v: View,
+    area: Rect,
+    p: &Pair,
+    tooth: f64,
+    lang: Language,
+) {
     let w1 = &p.wheels[0];
     let step = std::f64::consts::TAU / f64::from(w1.z);
     let psi = w1.tooth_thickness / (2.0 * w1.pitch);
@@ -48,12 +89,11 @@ pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, t
     ];
     // s's value set first may take the only spot e's has (and the other way round): the
     // order that leaves fewer values to the placer's leaders, s's first on a tie.
-    let drawn = Obstacles::of_items(&g.items);
+    let indexed = drawn.sync(g);
     let orders: [&[usize]; 2] = [&[0, 1, 2], &[1, 0, 2]];
     let tried = orders.map(|order| {
         let order: Vec<usize> = order.iter().copied().filter(|&k| values[k].is_some()).collect();
-        let set =
-            set_values(&arc, &order.iter().filter_map(|&k| values[k].as_ref()).collect::<Vec<_>>(), drawn.clone(), r_s);
+        let set = set_values(&arc, &order.iter().filter_map(|&k| values[k].as_ref()).collect::<Vec<_>>(), indexed, r_s);
         (order, set)
     });
     let left = |set: &[Option<Text>]| set.iter().filter(|t| t.is_none()).count();
@@ -61,7 +101,7 @@ pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, t
     for (k, t) in order.into_iter().zip(set) {
         let Some(Value { r, mid, text, .. }) = &values[k] else { continue };
         match t {
-            Some(t) => g.text(t),
+            Some(t) => drawn.set(g, t),
             None => {
                 labels.add_ranked(arc.at(*mid, *r), arc.at(*mid, r + 1.0) - arc.at(*mid, *r), text.clone(), TEXT_H, 1)
             }
@@ -72,8 +112,10 @@ pub fn draw(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, t
 /// Each of `values` in turn beside its arc, clear of `drawn` and of the values set before it
 /// (None: no spot, left to the label placer's leaders): along the arc, as GOST 2.307 writes
 /// a dimension's value over its line, else level.
-fn set_values(arc: &Arc, values: &[&Value], mut drawn: Obstacles, r_s: f64) -> Vec<Option<Text>> {
+fn set_values(arc: &Arc, values: &[&Value], drawn: &Obstacles, r_s: f64) -> Vec<Option<Text>> {
     let mut out = Vec::new();
+    // The pieces of the values set so far (a handful: no index).
+    let mut placed: Vec<Rect> = Vec::new();
     for &&Value { r, mid, half, ref text } in values {
         // p's value toward the wheel's empty body: over its arc, it stood in the band between
         // the arcs with s's, one above the other. Away from the other arc a value may stand
@@ -82,7 +124,9 @@ fn set_values(arc: &Arc, values: &[&Value], mut drawn: Obstacles, r_s: f64) -> V
         let own = if away { -1.0 } else { 1.0 };
         let steps = |far: bool| (0..=if far { 30 } else { 12 }).map(|k| 1.0 + 0.5 * f64::from(k));
         let allowed = |off: f64| off.signum() == own || off.abs() <= 7.0;
-        let clear = |t: &Text| clear_inside(t, &drawn, arc.area);
+        let apart =
+            |t: &Text| t.bbox_pieces().all(|b| placed.iter().all(|p| p.intersect(b.inflate(0.5, 0.5)).area() <= 0.0));
+        let clear = |t: &Text| clear_inside(t, drawn, arc.area) && apart(t);
         // Along the arc: on its own side within a few millimetres, then on the other (the
         // other wheel's circles cross the band over s's arc), then either, farther; moved
         // along the arc by up to a quarter of its length where its middle is crowded.
@@ -103,9 +147,7 @@ fn set_values(arc: &Arc, values: &[&Value], mut drawn: Obstacles, r_s: f64) -> V
         let set =
             if away { along.chain(under).chain(over).find(clear) } else { along.chain(over).chain(under).find(clear) };
         if let Some(t) = &set {
-            for b in t.bbox_pieces() {
-                drawn.add(Piece::TextBox(b), usize::MAX);
-            }
+            placed.extend(t.bbox_pieces());
         }
         out.push(set);
     }
@@ -156,7 +198,15 @@ const HEIGHTS_AT_DEG: [f64; 6] = [130.0, 140.0, 120.0, 150.0, 160.0, 170.0];
 /// circles themselves, at the first of [`HEIGHTS_AT_DEG`] where the radius from a little
 /// inside the root circle to a little past the tip is on the drawing and clear of the
 /// teeth's box `teeth`; not drawn where none is.
-pub fn heights(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, teeth: Rect, lang: Language) {
+pub fn heights(
+    g: &mut Group,
+    (labels, drawn): (&mut Labels, &mut Drawn),
+    v: View,
+    area: Rect,
+    p: &Pair,
+    teeth: Rect,
+    lang: Language,
+) {
     let w1 = &p.wheels[0];
     let on = |deg: f64, r: f64| v.p(from_angle(deg.to_radians()) * r);
     let clear = |deg: f64| {
@@ -174,15 +224,9 @@ pub fn heights(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair
         dims.iter().map(|&(r0, r1, _)| symbols::dimension(g, on(deg, r0), on(deg, r1), Vec2::ZERO)).collect();
     // Each value along its line where it fits between the circles crossing it, else level
     // beside it (the placer's): h_f hung 21 mm off on a leader.
-    let mut drawn = Obstacles::of_items(&g.items);
     for ((r0, r1, v_), mid) in dims.into_iter().zip(mids) {
-        match along_line((&drawn, area), (on(deg, r0), on(deg, r1)), (&v_, TEXT_H), Some(side)) {
-            Some(t) => {
-                for b in t.bbox_pieces() {
-                    drawn.add(Piece::TextBox(b), usize::MAX);
-                }
-                g.text(t);
-            }
+        match along_line((drawn.sync(g), area), (on(deg, r0), on(deg, r1)), (&v_, TEXT_H), Some(side)) {
+            Some(t) => drawn.set(g, t),
             None => labels.add_ranked(mid, side, v_, TEXT_H, 1),
         }
     }
@@ -198,7 +242,14 @@ pub fn heights(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair
 /// (between the form or base circle and the tip), on the line of action first, else as
 /// near the middle of that span as the teeth allow; not drawn where the flank is shorter
 /// than p_b or the points leave the drawing.
-pub fn base_pitch(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, lang: Language) {
+pub fn base_pitch(
+    g: &mut Group,
+    (labels, drawn): (&mut Labels, &mut Drawn),
+    v: View,
+    area: Rect,
+    p: &Pair,
+    lang: Language,
+) {
     let w1 = &p.wheels[0];
     let (rb, pb) = (w1.base, p.base_pitch);
     let aw = p.working_pressure_angle;
@@ -232,8 +283,8 @@ pub fn base_pitch(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &P
     // up to its ends, on either side, the nearest clear. The first place of the dimension
     // with room for it; where none has, the first place, and the placer sets the value off
     // on a leader (it hung 20–37 mm off across the teeth).
-    let drawn = Obstacles::of_items(&g.items);
-    let beside = |(a, b): (kurbo::Point, kurbo::Point)| along_line((&drawn, area), (a, b), (&value, TEXT_H), None);
+    let drawn = drawn.sync(g);
+    let beside = |(a, b): (kurbo::Point, kurbo::Point)| along_line((drawn, area), (a, b), (&value, TEXT_H), None);
     let (a, b, set) = candidates
         .iter()
         .find_map(|&(a, b)| beside((a, b)).map(|t| (a, b, Some(t))))
