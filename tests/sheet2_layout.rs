@@ -257,3 +257,26 @@ fn each_arc_dimension_value_stands_beside_its_own_arc_on_every_fixture() {
         }
     }
 }
+
+/// On every gear fixture and the worked example, in every language, every leader of the mesh
+/// is at most 20 mm: a value with no room between its arrows goes on its line's extension
+/// (GOST 2.307) before a leader. p_b hung 36.7 mm off across the teeth on handbook-khk and
+/// 28.4 mm on shifted-double-planet, the worked example's h_f 21.2 mm.
+#[test]
+fn the_meshs_values_stand_at_their_dimension_lines() {
+    use tmm_sheets::drawing::scene::Item;
+    use tmm_sheets::num::math::Norm;
+    for (name, project) in projects() {
+        for lang in Language::ALL {
+            let mut p = project.clone();
+            p.info.language = lang;
+            let b = sheet2(&p);
+            let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").expect("the mesh");
+            for &k in &mesh.writing {
+                let Item::Path { path, .. } = &mesh.items[k] else { continue };
+                let long = (path.end() - path.start).norm();
+                assert!(long <= 20.0, "{name} {lang:?}: a {long:.1} mm leader from {:?}", path.start);
+            }
+        }
+    }
+}

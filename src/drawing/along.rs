@@ -3,7 +3,7 @@
 //! its middle is crowded — for dimensions that are not level (the mesh's arcs and radii, a
 //! cam's r_min), where a level value finds no room between the lines crossing them.
 
-use super::obstacles::Obstacles;
+use super::obstacles::{Obstacles, segment_meets_rect};
 use super::scene::{Anchor, Text};
 use super::text::LabelText;
 use crate::num::math::{self, Norm};
@@ -59,4 +59,39 @@ pub fn clear_inside(t: &Text, drawn: &Obstacles, area: Rect) -> bool {
     area.contains(b.origin())
         && area.contains(Point::new(b.x1, b.y1))
         && t.bbox_pieces().all(|b| drawn.is_clear(b.inflate(0.5, 0.5)))
+}
+
+/// `value` on the extension of the dimension line a–b past one of its arrows (GOST 2.307,
+/// where the value has no room between them): beside the extension 1–4 mm (its own line
+/// 0.5 mm clear of the text's pieces, as every other line), b's end first,
+/// clear of `drawn` and inside `area`, the extension crossing no line (it would read as part
+/// of another dimension), with the extension's far end; the line is to be drawn from that
+/// end of a–b to it.
+pub fn along_extension(
+    (drawn, area): (&Obstacles, Rect),
+    (a, b): (Point, Point),
+    (value, h): (&LabelText, f64),
+) -> Option<(Text, Point, Point)> {
+    let u = (b - a).unit();
+    let width = value.width(h);
+    let ends = [(b, u), (a, -u)];
+    let tried = ends.into_iter().flat_map(|(end, out)| {
+        (0..=6).flat_map(move |k| {
+            let gap = 2.0 + f64::from(k);
+            let far = end + out * (gap + width + 1.0);
+            let normal = Vec2::new(out.y, -out.x);
+            (0..=6).map(|j| 1.0 + 0.5 * f64::from(j)).flat_map(move |off| {
+                [off, -off].map(|off| (end, far, value_along(end + out * (gap + width / 2.0), normal, off, value, h)))
+            })
+        })
+    });
+    let clear = |(end, far, t): &(Point, Point, Text)| {
+        let from = *end + (*far - *end).unit() * 0.5;
+        area.contains(*far)
+            && !drawn.segment_crosses_text(*end, *far)
+            && !drawn.segment_crosses_stroke(from, *far)
+            && clear_inside(t, drawn, area)
+            && t.bbox_pieces().all(|b| !segment_meets_rect(*end, *far, b.inflate(0.5, 0.5)))
+    };
+    tried.into_iter().find(clear).map(|(end, far, t)| (t, end, far))
 }

@@ -7,7 +7,7 @@
 //! along a radius upper left, where only its circles pass; the base pitch p_b on the line of
 //! action from P.
 
-use crate::drawing::along::{along_line, clear_inside, value_along};
+use crate::drawing::along::{along_extension, along_line, clear_inside, value_along};
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
 use crate::drawing::obstacles::{Obstacles, Piece};
@@ -224,9 +224,21 @@ pub fn heights(
         dims.iter().map(|&(r0, r1, _)| symbols::dimension(g, on(deg, r0), on(deg, r1), Vec2::ZERO)).collect();
     // Each value along its line where it fits between the circles crossing it, else level
     // beside it (the placer's): h_f hung 21 mm off on a leader.
+    // Else on the line's extension past an arrow, into the wheel's empty body (GOST 2.307).
     for ((r0, r1, v_), mid) in dims.into_iter().zip(mids) {
-        match along_line((drawn.sync(g), area), (on(deg, r0), on(deg, r1)), (&v_, TEXT_H), Some(side)) {
-            Some(t) => drawn.set(g, t),
+        let (a, b) = (on(deg, r0), on(deg, r1));
+        let set =
+            along_line((drawn.sync(g), area), (a, b), (&v_, TEXT_H), Some(side)).map(|t| (t, None)).or_else(|| {
+                // The inner end first.
+                along_extension((drawn.sync(g), area), (b, a), (&v_, TEXT_H)).map(|(t, e, f)| (t, Some((e, f))))
+            });
+        match set {
+            Some((t, extension)) => {
+                if let Some((e, f)) = extension {
+                    g.line(e, f, THIN);
+                }
+                drawn.set(g, t)
+            }
             None => labels.add_ranked(mid, side, v_, TEXT_H, 1),
         }
     }
@@ -245,9 +257,9 @@ pub fn heights(
 pub fn base_pitch(
     g: &mut Group,
     (labels, drawn): (&mut Labels, &mut Drawn),
-    v: View,
-    area: Rect,
+    (v, area): (View, Rect),
     p: &Pair,
+    middle: f64,
     lang: Language,
 ) {
     let w1 = &p.wheels[0];
@@ -263,35 +275,50 @@ pub fn base_pitch(
     let n1p = rb * tan(aw);
     let flank_p = theta_n1 + n1p / rb;
     let step = pb / rb;
-    // On the line of action (its points at N1P + k·p_b), else centred in the flank's span.
+    // On the line of action (its points at N1P + k·p_b), else centred in the flank's span,
+    // else anywhere along it (eight steps).
     let on_line = [-1.0, 0.0].map(|k| n1p + k * pb);
-    let rolls = on_line.into_iter().chain([(low + high - pb) / 2.0, low, high - pb]);
-    let tried = rolls.filter(|&l| l >= low && l + pb <= high).flat_map(|l| [(0.0, l), (-1.0, l)]);
-    let points = tried.map(|(k, l)| {
+    let spread = (0..=8).map(|k| low + (high - pb - low) * f64::from(k) / 8.0);
+    let rolls = on_line.into_iter().chain([(low + high - pb) / 2.0, low, high - pb]).chain(spread);
+    let tried: Vec<(f64, f64)> =
+        rolls.filter(|&l| l >= low && l + pb <= high).flat_map(|l| [(0.0, l), (-1.0, l)]).collect();
+    let world = |(k, l): (f64, f64)| {
         let theta = flank_p + k * step - l / rb;
         let (radial, along) = (from_angle(theta), from_angle(theta + std::f64::consts::FRAC_PI_2));
         let t = radial * rb;
-        (v.p(t), v.p(t + along * l), v.p(t + along * (l + pb)))
-    });
-    let inside = points.filter(|(t, a, b)| [t, a, b].iter().all(|q| area.contains(**q)));
-    let candidates: Vec<(kurbo::Point, kurbo::Point)> = inside.map(|(_, a, b)| (a, b)).collect();
+        [t, t + along * l, t + along * (l + pb)]
+    };
+    // The other flanks of the three teeth, their mirror images about the middle tooth's axis.
+    let axis = from_angle(middle);
+    let mirror = |q: Vec2| axis * (2.0 * q.dot(axis)) - q;
+    let direct = tried.iter().map(|&kl| world(kl));
+    let points = direct.clone().chain(direct.map(|qs| qs.map(mirror))).map(|qs| qs.map(|q| v.p(q)));
+    let inside = points.filter(|qs| qs.iter().all(|q| area.contains(*q)));
+    let candidates: Vec<(kurbo::Point, kurbo::Point)> = inside.map(|[_, a, b]| (a, b)).collect();
     let Some(&first) = candidates.first() else {
         return;
     };
     let value = LabelText::new("p", "b").with_tail(format!(" = {}", fmt::value(mm(pb), lang)));
     // Its value along its line, as the arcs' values: beside its middle, else moved along it
     // up to its ends, on either side, the nearest clear. The first place of the dimension
-    // with room for it; where none has, the first place, and the placer sets the value off
-    // on a leader (it hung 20–37 mm off across the teeth).
-    let drawn = drawn.sync(g);
-    let beside = |(a, b): (kurbo::Point, kurbo::Point)| along_line((drawn, area), (a, b), (&value, TEXT_H), None);
-    let (a, b, set) = candidates
-        .iter()
-        .find_map(|&(a, b)| beside((a, b)).map(|t| (a, b, Some(t))))
-        .unwrap_or((first.0, first.1, None));
+    // with room for it; else the first with room on its line's extension past an arrow
+    // (GOST 2.307); where none has, the first place, and the placer sets the value off on a
+    // leader (it hung 20–37 mm off across the teeth).
+    let indexed = drawn.sync(g);
+    let beside = |(a, b): (kurbo::Point, kurbo::Point)| along_line((indexed, area), (a, b), (&value, TEXT_H), None);
+    let past = |(a, b): (kurbo::Point, kurbo::Point)| along_extension((indexed, area), (a, b), (&value, TEXT_H));
+    let between = candidates.iter().find_map(|&(a, b)| beside((a, b)).map(|t| (a, b, Some((t, None)))));
+    let outside =
+        || candidates.iter().find_map(|&(a, b)| past((a, b)).map(|(t, e, f)| (a, b, Some((t, Some((e, f)))))));
+    let (a, b, set) = between.or_else(outside).unwrap_or((first.0, first.1, None));
     let mid = symbols::dimension(g, a, b, Vec2::ZERO);
     match set {
-        Some(t) => g.text(t),
+        Some((t, extension)) => {
+            if let Some((e, f)) = extension {
+                g.line(e, f, THIN);
+            }
+            drawn.set(g, t)
+        }
         None => {
             let u = (b - a).unit();
             labels.add_ranked(mid, Vec2::new(u.y, -u.x), value, TEXT_H, 1)

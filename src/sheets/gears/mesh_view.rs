@@ -109,7 +109,7 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     let mut drawn = super::mesh_dimensions::Drawn::of(g);
     super::mesh_dimensions::heights(g, (labels, &mut drawn), v, area, p, teeth, inp.lang);
     super::mesh_dimensions::draw(g, (labels, &mut drawn), v, area, p, centres[0][0], inp.lang);
-    super::mesh_dimensions::base_pitch(g, (labels, &mut drawn), v, area, p, inp.lang);
+    super::mesh_dimensions::base_pitch(g, (labels, &mut drawn), (v, area), p, centres[0][1], inp.lang);
     point_labels(labels, v, area, &points);
     senses_of_rotation(g, labels, v, area, &points, v.len(p.wheels[1].root));
     labels.add_ranked(pp - Vec2::new(tau, 0.0), Vec2::new(0.0, -1.0), LabelText::new("τ", ""), 3.5, 1);
