@@ -306,3 +306,38 @@ fn group_polygons_list_g_and_p_i_so_that_no_side_runs_back_over_the_last() {
     // Link 3 (its forces' `on` is 2) is in II(2,3) only.
     assert_eq!(checked, 1, "the worked example's II(2,3) checked");
 }
+
+/// Table 5's values are signed ("+": the balancing force drives the crank, along the pin's
+/// velocity), while the initial link's drawing writes the force's magnitude with its arrow's
+/// true sense: wherever a printed balancing value is negative, the table's title says what
+/// the sign means, in the sheet's language; where none is, the title is the plain one. Both
+/// occur on the fixtures (crank-slider-axial brakes at its φ1, in the expansion stroke).
+#[test]
+fn the_balancing_table_says_what_a_negative_sign_means() {
+    use tmm_sheets::drawing::labels::Language;
+    let mut seen = [false; 2];
+    for name in fixture_names() {
+        let mut p = common::fixture(&name);
+        if p.lever.as_ref().is_none_or(|l| l.forces.is_none()) {
+            continue;
+        }
+        for (lang, words) in
+            [(Language::Uz, "harakatlantiruvchi"), (Language::Ru, "движущая"), (Language::En, "driving")]
+        {
+            p.info.language = lang;
+            let b = common::build_lever(&p);
+            let table = &b.notes[4];
+            let negative = table
+                .table
+                .rows
+                .iter()
+                .filter(|r| !["S_H", "delta"].iter().any(|k| r.key.starts_with(k)))
+                .flat_map(|r| r.printed(false))
+                .any(|v| v.starts_with('-'));
+            let said = table.title.contains(words);
+            assert_eq!(said, negative, "{name} {lang:?}: “{}”, a negative value: {negative}", table.title);
+            seen[usize::from(negative)] = true;
+        }
+    }
+    assert_eq!(seen, [true, true], "both a driving and a braking balancing force among the fixtures");
+}

@@ -41,6 +41,7 @@ crate::label_set! {
         inertia_table(n),
         reaction_table(n),
         balance_table(n),
+        balance_table_signed(n),
     }
 }
 
