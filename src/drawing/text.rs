@@ -133,8 +133,11 @@ fn units(text: &str) -> Vec<String> {
         // A unit in brackets stays with the word before it: "(Н)" alone on a title's last
         // line reads as a stray mark.
         let unit = word.starts_with('(') && word.ends_with(')') && word.chars().count() <= 8;
+        // A dash does not begin a line (Russian and Uzbek typography): it stays with the
+        // word before it.
+        let dash = matches!(word, "—" | "–");
         match out.last_mut() {
-            Some(last) if glue || unit => {
+            Some(last) if glue || unit || dash => {
                 last.push(' ');
                 last.push_str(word);
             }
@@ -337,6 +340,17 @@ mod tests {
         }
         assert_eq!(units("Таблица 5. Уравновешивающая сила")[1], "5.");
         assert_eq!(units("y = 0,06 m, 12 N·m"), ["y =", "0,06 m,", "12 N·m"]);
+    }
+
+    /// Table 5's signed title broke before its dash: "— harakatlantiruvchi)" began a line.
+    #[test]
+    fn a_dash_never_begins_a_line() {
+        let text = "5-jadval. Muvozanatlovchi kuch («+» — harakatlantiruvchi)";
+        for width in (50..=120).step_by(2) {
+            let lines = wrap(text, 3.5, width as f64);
+            assert!(lines.iter().all(|l| !l.starts_with('—')), "{lines:?} at {width} mm");
+            assert_eq!(lines.join(" "), text);
+        }
     }
 
     /// Russian table 4's title ended in "(Н)" alone on its third line.
