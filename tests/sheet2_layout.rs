@@ -173,89 +173,83 @@ fn each_arc_dimension_value_stands_beside_its_own_arc_on_every_fixture() {
     use tmm_sheets::drawing::path::Seg;
     use tmm_sheets::drawing::scene::Item;
     use tmm_sheets::num::math::{Norm, atan2};
-    for (name, project) in projects() {
-        for lang in Language::ALL {
-            let mut p = project.clone();
-            p.info.language = lang;
-            let b = sheet2(&p);
-            let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").expect("the mesh");
-            let arcs: Vec<kurbo::Arc> = mesh
-                .items
-                .iter()
-                .filter_map(|i| match i {
-                    Item::Path { path, .. } => match path.segs.as_slice() {
-                        [Seg::Arc(a)] => Some(*a),
-                        _ => None,
-                    },
+    each_mesh(|name, lang, mesh| {
+        let arcs: Vec<kurbo::Arc> = mesh
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                Item::Path { path, .. } => match path.segs.as_slice() {
+                    [Seg::Arc(a)] => Some(*a),
                     _ => None,
+                },
+                _ => None,
+            })
+            .collect();
+        // s's and e's arcs share a radius about O1; p's is 20 mm further in.
+        let same = |a: &kurbo::Arc, b: &kurbo::Arc, dr: f64| {
+            (a.center - b.center).norm() < 1e-6 && (a.radii.x - b.radii.x - dr).abs() < 1e-6
+        };
+        let Some(p_arc) = arcs.iter().find(|p| arcs.iter().filter(|s| same(s, p, 20.0)).count() == 2) else {
+            return; // no room for the dimensions on this drawing
+        };
+        let mut s_e: Vec<&kurbo::Arc> = arcs.iter().filter(|s| same(s, p_arc, 20.0)).collect();
+        // e's arc is nearer the line of centres (paper angles grow clockwise).
+        s_e.sort_by(|a, b| (a.start_angle + a.sweep_angle / 2.0).total_cmp(&(b.start_angle + b.sweep_angle / 2.0)));
+        let o1 = p_arc.center;
+        let mut extents = Vec::new();
+        for t in mesh
+            .texts()
+            .filter(|t| ["s", "e", "p"].contains(&t.text.as_str()) && t.sub.is_empty() && t.tail.starts_with(" = "))
+        {
+            let own = match t.text.as_str() {
+                "e" => s_e[0],
+                "s" => s_e[1],
+                _ => p_arc,
+            };
+            let c = t.core_box().center() - o1;
+            let angle = atan2(c.y, c.x);
+            let (a0, a1) = (own.start_angle, own.start_angle + own.sweep_angle);
+            let (lo, hi) = (a0.min(a1), a0.max(a1));
+            assert!(
+                lo <= angle && angle <= hi,
+                "{name} {lang:?}: “{}” at {angle:.3} rad, its arc {lo:.3}…{hi:.3}",
+                t.plain()
+            );
+            // A level value over a steep arc may stand up to 16 mm above it, as the
+            // sheet's search allows.
+            let off = (c.norm() - own.radii.x).abs();
+            assert!(off < 18.0, "{name} {lang:?}: “{}” {off:.1} mm off its arc", t.plain());
+            // The letters' angular extent about O1: their boxes level, turned as set.
+            let level = tmm_sheets::drawing::scene::Text { rotate: 0.0, ..t.clone() };
+            let turn = |q: kurbo::Point| t.at + tmm_sheets::num::math::rotate(q - t.at, -t.rotate.to_radians());
+            let angles: Vec<f64> = level
+                .core_boxes()
+                .flat_map(|b| {
+                    [
+                        b.origin(),
+                        kurbo::Point::new(b.x1, b.y0),
+                        kurbo::Point::new(b.x0, b.y1),
+                        kurbo::Point::new(b.x1, b.y1),
+                    ]
                 })
+                .map(turn)
+                .map(|q| atan2(q.y - o1.y, q.x - o1.x))
                 .collect();
-            // s's and e's arcs share a radius about O1; p's is 20 mm further in.
-            let same = |a: &kurbo::Arc, b: &kurbo::Arc, dr: f64| {
-                (a.center - b.center).norm() < 1e-6 && (a.radii.x - b.radii.x - dr).abs() < 1e-6
-            };
-            let Some(p_arc) = arcs.iter().find(|p| arcs.iter().filter(|s| same(s, p, 20.0)).count() == 2) else {
-                continue; // no room for the dimensions on this drawing
-            };
-            let mut s_e: Vec<&kurbo::Arc> = arcs.iter().filter(|s| same(s, p_arc, 20.0)).collect();
-            // e's arc is nearer the line of centres (paper angles grow clockwise).
-            s_e.sort_by(|a, b| (a.start_angle + a.sweep_angle / 2.0).total_cmp(&(b.start_angle + b.sweep_angle / 2.0)));
-            let o1 = p_arc.center;
-            let mut extents = Vec::new();
-            for t in mesh
-                .texts()
-                .filter(|t| ["s", "e", "p"].contains(&t.text.as_str()) && t.sub.is_empty() && t.tail.starts_with(" = "))
-            {
-                let own = match t.text.as_str() {
-                    "e" => s_e[0],
-                    "s" => s_e[1],
-                    _ => p_arc,
-                };
-                let c = t.core_box().center() - o1;
-                let angle = atan2(c.y, c.x);
-                let (a0, a1) = (own.start_angle, own.start_angle + own.sweep_angle);
-                let (lo, hi) = (a0.min(a1), a0.max(a1));
-                assert!(
-                    lo <= angle && angle <= hi,
-                    "{name} {lang:?}: “{}” at {angle:.3} rad, its arc {lo:.3}…{hi:.3}",
-                    t.plain()
-                );
-                // A level value over a steep arc may stand up to 16 mm above it, as the
-                // sheet's search allows.
-                let off = (c.norm() - own.radii.x).abs();
-                assert!(off < 18.0, "{name} {lang:?}: “{}” {off:.1} mm off its arc", t.plain());
-                // The letters' angular extent about O1: their boxes level, turned as set.
-                let level = tmm_sheets::drawing::scene::Text { rotate: 0.0, ..t.clone() };
-                let turn = |q: kurbo::Point| t.at + tmm_sheets::num::math::rotate(q - t.at, -t.rotate.to_radians());
-                let angles: Vec<f64> = level
-                    .core_boxes()
-                    .flat_map(|b| {
-                        [
-                            b.origin(),
-                            kurbo::Point::new(b.x1, b.y0),
-                            kurbo::Point::new(b.x0, b.y1),
-                            kurbo::Point::new(b.x1, b.y1),
-                        ]
-                    })
-                    .map(turn)
-                    .map(|q| atan2(q.y - o1.y, q.x - o1.x))
-                    .collect();
-                let extent = (
-                    angles.iter().copied().fold(f64::INFINITY, f64::min),
-                    angles.iter().copied().fold(f64::NEG_INFINITY, f64::max),
-                );
-                if t.text != "p" {
-                    extents.push((t.plain(), extent, c.norm() > own.radii.x));
-                }
-            }
-            // s's and e's values side by side, not one above the other on one side of
-            // their arcs.
-            if let [(a, (a0, a1), out_a), (b, (b0, b1), out_b)] = &extents[..2.min(extents.len())] {
-                let apart = a1 <= b0 || b1 <= a0 || out_a != out_b;
-                assert!(apart, "{name} {lang:?}: “{a}” and “{b}” stand one above the other");
+            let extent = (
+                angles.iter().copied().fold(f64::INFINITY, f64::min),
+                angles.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            );
+            if t.text != "p" {
+                extents.push((t.plain(), extent, c.norm() > own.radii.x));
             }
         }
-    }
+        // s's and e's values side by side, not one above the other on one side of
+        // their arcs.
+        if let [(a, (a0, a1), out_a), (b, (b0, b1), out_b)] = &extents[..2.min(extents.len())] {
+            let apart = a1 <= b0 || b1 <= a0 || out_a != out_b;
+            assert!(apart, "{name} {lang:?}: “{a}” and “{b}” stand one above the other");
+        }
+    });
 }
 
 /// On every gear fixture and the worked example, in every language, every leader of the mesh
@@ -266,17 +260,24 @@ fn each_arc_dimension_value_stands_beside_its_own_arc_on_every_fixture() {
 fn the_meshs_values_stand_at_their_dimension_lines() {
     use tmm_sheets::drawing::scene::Item;
     use tmm_sheets::num::math::Norm;
+    each_mesh(|name, lang, mesh| {
+        for &k in &mesh.writing {
+            let Item::Path { path, .. } = &mesh.items[k] else { continue };
+            let long = (path.end() - path.start).norm();
+            assert!(long <= 20.0, "{name} {lang:?}: a {long:.1} mm leader from {:?}", path.start);
+        }
+    });
+}
+
+/// `check` of the mesh drawing of every gear fixture and the worked example, in every
+/// language.
+fn each_mesh(mut check: impl FnMut(&str, Language, &tmm_sheets::drawing::scene::Group)) {
     for (name, project) in projects() {
         for lang in Language::ALL {
             let mut p = project.clone();
             p.info.language = lang;
             let b = sheet2(&p);
-            let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").expect("the mesh");
-            for &k in &mesh.writing {
-                let Item::Path { path, .. } = &mesh.items[k] else { continue };
-                let long = (path.end() - path.start).norm();
-                assert!(long <= 20.0, "{name} {lang:?}: a {long:.1} mm leader from {:?}", path.start);
-            }
+            check(&name, lang, b.output.scene.groups.iter().find(|g| g.id == "mesh").expect("the mesh"));
         }
     }
 }
