@@ -9,6 +9,20 @@ use super::text::LabelText;
 use crate::num::math::{self, Norm};
 use kurbo::{Point, Rect, Vec2};
 
+/// A value set beside its dimension line, with the line's extension to draw under it where
+/// it stands past an arrow.
+pub struct Set {
+    pub text: Text,
+    pub extension: Option<(Point, Point)>,
+}
+
+impl Set {
+    /// A value between its arrows: no extension.
+    pub fn beside(text: Text) -> Set {
+        Set { text, extension: None }
+    }
+}
+
 /// sin 60°: a line running down to the right steeper than this has its value read upward.
 const STEEP_DOWN: f64 = 0.866_025_403_784_438_6;
 
@@ -65,17 +79,16 @@ pub fn clear_inside(t: &Text, drawn: &Obstacles, area: Rect) -> bool {
 /// where the value has no room between them): beside the extension 1–4 mm (its own line
 /// 0.5 mm clear of the text's pieces, as every other line), b's end first,
 /// clear of `drawn` and inside `area`, the extension crossing no line (it would read as part
-/// of another dimension), with the extension's far end; the line is to be drawn from that
-/// end of a–b to it.
+/// of another dimension), with the extension from that end of a–b to its far end.
 pub fn along_extension(
     (drawn, area): (&Obstacles, Rect),
     (a, b): (Point, Point),
     (value, h): (&LabelText, f64),
-) -> Option<(Text, Point, Point)> {
+) -> Option<Set> {
     let u = (b - a).unit();
     let width = value.width(h);
     let ends = [(b, u), (a, -u)];
-    let tried = ends.into_iter().flat_map(|(end, out)| {
+    let mut tried = ends.into_iter().flat_map(|(end, out)| {
         (0..=6).flat_map(move |k| {
             let gap = 2.0 + f64::from(k);
             let far = end + out * (gap + width + 1.0);
@@ -93,5 +106,5 @@ pub fn along_extension(
             && clear_inside(t, drawn, area)
             && t.bbox_pieces().all(|b| !segment_meets_rect(*end, *far, b.inflate(0.5, 0.5)))
     };
-    tried.into_iter().find(clear).map(|(end, far, t)| (t, end, far))
+    tried.find(clear).map(|(end, far, text)| Set { text, extension: Some((end, far)) })
 }

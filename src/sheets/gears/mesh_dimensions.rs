@@ -7,7 +7,7 @@
 //! along a radius upper left, where only its circles pass; the base pitch p_b on the line of
 //! action from P.
 
-use crate::drawing::along::{along_extension, along_line, clear_inside, value_along};
+use crate::drawing::along::{Set, along_extension, along_line, clear_inside, value_along};
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
 use crate::drawing::obstacles::{Obstacles, Piece};
@@ -50,14 +50,18 @@ impl Drawn {
         &self.obstacles
     }
 
-    /// Draws the value `t` set beside its line, indexed by its pieces (a rotated text's
-    /// pieces hug its letters where one box would block its whole slant).
-    fn set(&mut self, g: &mut Group, t: Text) {
+    /// Draws a value set beside its line (and the line's extension under it, if any),
+    /// indexed by its pieces (a rotated text's pieces hug its letters where one box would
+    /// block its whole slant).
+    fn set(&mut self, g: &mut Group, Set { text, extension }: Set) {
+        if let Some((e, f)) = extension {
+            g.line(e, f, THIN);
+        }
         self.sync(g);
-        for b in t.bbox_pieces() {
+        for b in text.bbox_pieces() {
             self.obstacles.add(Piece::TextBox(b), usize::MAX);
         }
-        g.text(t);
+        g.text(text);
         self.upto = g.items.len();
     }
 }
@@ -101,7 +105,7 @@ pub fn draw(
     for (k, t) in order.into_iter().zip(set) {
         let Some(Value { r, mid, text, .. }) = &values[k] else { continue };
         match t {
-            Some(t) => drawn.set(g, t),
+            Some(t) => drawn.set(g, Set::beside(t)),
             None => {
                 labels.add_ranked(arc.at(*mid, *r), arc.at(*mid, r + 1.0) - arc.at(*mid, *r), text.clone(), TEXT_H, 1)
             }
@@ -227,18 +231,13 @@ pub fn heights(
     // Else on the line's extension past an arrow, into the wheel's empty body (GOST 2.307).
     for ((r0, r1, v_), mid) in dims.into_iter().zip(mids) {
         let (a, b) = (on(deg, r0), on(deg, r1));
-        let set =
-            along_line((drawn.sync(g), area), (a, b), (&v_, TEXT_H), Some(side)).map(|t| (t, None)).or_else(|| {
-                // The inner end first.
-                along_extension((drawn.sync(g), area), (b, a), (&v_, TEXT_H)).map(|(t, e, f)| (t, Some((e, f))))
-            });
+        let indexed = drawn.sync(g);
+        // The extension from the inner end first.
+        let set = along_line((indexed, area), (a, b), (&v_, TEXT_H), Some(side))
+            .map(Set::beside)
+            .or_else(|| along_extension((indexed, area), (b, a), (&v_, TEXT_H)));
         match set {
-            Some((t, extension)) => {
-                if let Some((e, f)) = extension {
-                    g.line(e, f, THIN);
-                }
-                drawn.set(g, t)
-            }
+            Some(set) => drawn.set(g, set),
             None => labels.add_ranked(mid, side, v_, TEXT_H, 1),
         }
     }
@@ -307,18 +306,12 @@ pub fn base_pitch(
     let indexed = drawn.sync(g);
     let beside = |(a, b): (kurbo::Point, kurbo::Point)| along_line((indexed, area), (a, b), (&value, TEXT_H), None);
     let past = |(a, b): (kurbo::Point, kurbo::Point)| along_extension((indexed, area), (a, b), (&value, TEXT_H));
-    let between = candidates.iter().find_map(|&(a, b)| beside((a, b)).map(|t| (a, b, Some((t, None)))));
-    let outside =
-        || candidates.iter().find_map(|&(a, b)| past((a, b)).map(|(t, e, f)| (a, b, Some((t, Some((e, f)))))));
+    let between = candidates.iter().find_map(|&(a, b)| beside((a, b)).map(|t| (a, b, Some(Set::beside(t)))));
+    let outside = || candidates.iter().find_map(|&(a, b)| past((a, b)).map(|set| (a, b, Some(set))));
     let (a, b, set) = between.or_else(outside).unwrap_or((first.0, first.1, None));
     let mid = symbols::dimension(g, a, b, Vec2::ZERO);
     match set {
-        Some((t, extension)) => {
-            if let Some((e, f)) = extension {
-                g.line(e, f, THIN);
-            }
-            drawn.set(g, t)
-        }
+        Some(set) => drawn.set(g, set),
         None => {
             let u = (b - a).unit();
             labels.add_ranked(mid, Vec2::new(u.y, -u.x), value, TEXT_H, 1)

@@ -62,30 +62,27 @@ pub fn build(ctx: &Context, p: &LeverProject) -> Result<LeverBuild, SheetError> 
         }
         None => None,
     };
-    // A negative balancing value's sign is explained in its table's title.
-    let signed = |fa: &analysis::ForceAnalysis| {
-        let f = &fa.forces;
-        [f.p_m, f.m_m, f.p_m_lever, f.p_m_power].iter().any(|&v| v < 0.0)
-    };
-    let notes =
-        note_tables(ctx.info.language, &tables, forces.as_ref().map(|(fa, t)| (t, signed(fa))), ctx.first_table);
+    let notes = note_tables(ctx.info.language, &tables, forces.as_ref().map(|f| &f.1), ctx.first_table);
     let input = compose::Input { ctx, kind: KIND, project: p, notes: &notes, forces: forces.as_ref() };
     let composed = compose::compose(&input, &kinematics)?;
     Ok(LeverBuild { kinematics, forces, tables, notes, composed })
 }
 
 /// The note's tables with their titles in the sheet's language, numbered from `first`:
-/// the velocities and the accelerations, and three more with a force analysis (`f`: its
-/// tables, and whether a balancing value is negative: its table's title then says what the
-/// sign means).
-fn note_tables(lang: Language, k: &KinematicTables, f: Option<(&ForceTables, bool)>, first: u32) -> Vec<NoteTable> {
+/// the velocities and the accelerations, and three more with a force analysis.
+fn note_tables(lang: Language, k: &KinematicTables, f: Option<&ForceTables>, first: u32) -> Vec<NoteTable> {
     let l = LeverLabels::get(lang);
     let note =
         |table: &crate::report::NumTable, title: String| scaffold::note(lang, table.clone(), &title, vec![], false);
     let n = |k: u32| (first + k).to_string();
     let mut out =
         vec![note(&k.velocities, l.velocity_table(&n(0))), note(&k.accelerations, l.acceleration_table(&n(1)))];
-    if let Some((t, signed)) = f {
+    if let Some(t) = f {
+        // A balancing value printed negative: the title says what the sign means (as
+        // printed — a value that rounds to zero is written without its sign).
+        let balancing = ["P_m", "M_m", "P_m_lever", "P_m_power"];
+        let rows = t.balance.rows.iter().filter(|r| balancing.contains(&r.key.as_str()));
+        let signed = rows.flat_map(|r| r.printed(false)).any(|v| v.starts_with('-'));
         let balance = if signed { l.balance_table_signed(&n(4)) } else { l.balance_table(&n(4)) };
         out.extend([
             note(&t.inertia, l.inertia_table(&n(2))),
