@@ -14,6 +14,11 @@ use tmm_sheets::pipeline::{self, Built};
 /// variant 17's smallest is 20.3 mm).
 const SMALLEST_PLAN_MM: f64 = 20.0;
 
+/// No label of sheet 2 hangs further than this from what it names (`longest_leader_mm`): the
+/// dense meshes' p_b reaches 36.5 mm (task 11 variant 27); a wheel's root circle named across
+/// the others hung 103 mm off (task 4 variant 37) before the circles were named at either end.
+const LONGEST_LEADER_SHEET_2_MM: f64 = 40.0;
+
 /// What one variant's build showed: (faults, texts crossed by a line). A fault is anything a
 /// teacher would refuse: an unexplained refusal, an item outside its region, Δ or ε or α out of
 /// limits.
@@ -51,6 +56,12 @@ fn check(task: &Task, variant: u32) -> (Vec<String>, usize) {
             && smallest < SMALLEST_PLAN_MM
         {
             faults.push(format!("{at}: a plan of {smallest:.1} mm"));
+        }
+        if let Some(leader) = layout["longest_leader_mm"].as_f64()
+            && b.output.number == 2
+            && leader > LONGEST_LEADER_SHEET_2_MM
+        {
+            faults.push(format!("{at}: sheet 2: a leader of {leader} mm"));
         }
         if let Some(d) = b.output.diagnostics.iter().find(|d| d.contains("the lift is drawn")) {
             faults.push(format!("{at}: {d}"));

@@ -40,6 +40,10 @@ pub struct Layout {
     /// count).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub empty_share: Option<f64>,
+    /// The longest leader joining a label to its point, mm, to 0.1 mm (a sheet without
+    /// leaders has none): a label far off on a long leader is read, but a teacher marks it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub longest_leader_mm: Option<f64>,
     /// The first problems in words, for the user and the tests.
     pub problems: Vec<String>,
 }
@@ -174,7 +178,19 @@ fn measure_flat(scene: &Scene, flat: &Flattened) -> Layout {
             }
         }
     }
+    out.longest_leader_mm = longest_leader(scene).map(|mm| (mm * 10.0).round() / 10.0);
     out
+}
+
+/// The longest of the scene's leaders, end to end, mm.
+pub fn longest_leader(scene: &Scene) -> Option<f64> {
+    let leaders = scene.groups.iter().flat_map(|g| g.leaders.iter().map(|&k| &g.items[k]));
+    leaders
+        .filter_map(|item| match item {
+            Item::Path { path, .. } => Some((path.end() - path.start).norm()),
+            _ => None,
+        })
+        .reduce(f64::max)
 }
 
 /// The side of the cells [`empty_share`] counts, mm.

@@ -235,6 +235,9 @@ pub struct Group {
     /// The lines that belong to its writing, not its constructions (a label's leader, a
     /// legend's sample line), by item index: the overlay leaves them out with the texts.
     pub writing: Vec<usize>,
+    /// Of the writing, the leaders that join a label to its point, by item index: the layout
+    /// measures how far a label stands from what it names.
+    pub leaders: Vec<usize>,
     /// Thin lines a label may interrupt where no spot near its point is free (the position
     /// plan's other positions of the links, the trajectories: GOST 2.316 interrupts lines
     /// at an inscription), by item index, ascending.
@@ -249,6 +252,7 @@ impl Group {
             items: Vec::new(),
             parts: Vec::new(),
             writing: Vec::new(),
+            leaders: Vec::new(),
             breakable: Vec::new(),
         }
     }
@@ -301,6 +305,7 @@ impl Group {
             *v = v.iter().flat_map(|&i| if i == k { (k..k + n).collect() } else { vec![moved(i)] }).collect();
         };
         remap(&mut self.writing);
+        remap(&mut self.leaders);
         remap(&mut self.breakable);
     }
 
@@ -308,6 +313,12 @@ impl Group {
     pub fn writing_line(&mut self, a: Point, b: Point, pen: Pen) {
         self.writing.push(self.items.len());
         self.line(a, b, pen);
+    }
+
+    /// A label's leader: a line of the writing (see [`Group::leaders`]).
+    pub fn leader_line(&mut self, a: Point, b: Point, pen: Pen) {
+        self.leaders.push(self.items.len());
+        self.writing_line(a, b, pen);
     }
 
     /// A polyline through `pts` (nothing for fewer than two points).

@@ -12,6 +12,7 @@ pub(super) struct Verdict {
     box_free: Option<bool>,
     leader_clear: Option<bool>,
     leader_seen: Option<bool>,
+    crossings: Option<usize>,
 }
 
 impl Verdict {
@@ -26,6 +27,11 @@ impl Verdict {
         *self.leader_seen.get_or_insert_with(|| {
             c.leader.is_none_or(|(a, b)| (b - a).norm() < SEEN_SHORT || !drawn.segment_runs_along_stroke(a, b))
         })
+    }
+
+    /// How many stroke segments of `drawn` its leader, if any, crosses, remembered.
+    pub(super) fn crossings(&mut self, c: &Candidate, drawn: &Obstacles) -> usize {
+        *self.crossings.get_or_insert_with(|| c.leader.map_or(0, |(a, b)| drawn.hits_segment(a, b)))
     }
 
     /// [`Candidate::is_free`] against `drawn`, remembered.

@@ -22,6 +22,7 @@ use request::Request;
 use spots::Spots;
 
 mod candidate;
+mod crossings;
 mod request;
 mod spots;
 
@@ -112,6 +113,11 @@ impl Labels {
     /// middle, else nearer its tip or its tail, rather than off on a long leader.
     pub fn add_at_any(&mut self, spots: &[(Point, Vec2)], label: LabelText, h: f64) {
         self.push_at_any(spots, Request::new(Point::ZERO, Vec2::ZERO, label, h));
+    }
+
+    /// As [`Labels::add_at_any`], placed after every label of a lower rank.
+    pub fn add_ranked_at_any(&mut self, spots: &[(Point, Vec2)], label: LabelText, h: f64, rank: u8) {
+        self.push_at_any(spots, Request { rank, ..Request::new(Point::ZERO, Vec2::ZERO, label, h) });
     }
 
     /// `req` at the first of `spots`, the rest its further anchors.
@@ -212,7 +218,7 @@ impl Labels {
                 line.draw(g, base + Vec2::new(0.0, (k + 1) as f64 * LINE_PITCH * req.h), req.h, Anchor::Middle);
             }
             if let Some((a, b)) = req.drawn_leader(&cand) {
-                g.writing_line(a, b, THIN);
+                g.leader_line(a, b, THIN);
             }
             if cand.breaks {
                 gaps.push(cand.r.inflate(CLEAR, CLEAR));
@@ -284,6 +290,14 @@ impl Labels {
                 .or_else(|| prefer_seen.then(|| seen_spot(s, &box_free, drawn)).flatten())
                 .or_else(|| first(s, &free))
                 .or_else(|| first(s, &box_free));
+            // On a long leader: a nearer spot across a line or two, if it weighs less.
+            let best = match best {
+                Some(c) if crossings::is_long(&c) => {
+                    let reads = |c: &Candidate, v: &mut Verdict| box_free(c, v) && self.reads_as_own(i, c);
+                    crossings::nearer_across(s, &reads, (drawn, &placed), c.cost).or(Some(c))
+                }
+                best => best,
+            };
             // Far off on a long leader, or nowhere: beside its point on thin lines broken
             // for it, where the drawing has such lines.
             let far = best.as_ref().is_none_or(|c| c.leader.is_some_and(|(a, b)| (b - a).norm() >= LONG_LEADER));
@@ -362,6 +376,14 @@ fn interrupt_for(g: &mut Group, gaps: &[Rect]) {
 }
 
 impl Labels {
+    /// Whether spot `c` of label `i` reads as its own: any spot of a label that names no
+    /// side, a side's name's spot where it reads as that side's (see [`unambiguous`]).
+    fn reads_as_own(&self, i: usize, c: &Candidate) -> bool {
+        let Some(own) = self.requests[i].side else { return true };
+        let others = self.requests.iter().enumerate().filter(|&(j, _)| j != i).filter_map(|(_, r)| r.side);
+        unambiguous(c, own, others)
+    }
+
     /// For a side's name, its first free spot that reads as naming that side (see
     /// [`unambiguous`]), looked for up to [`AMBIGUITY_LOOKAHEAD`] spots past its first free
     /// one; none for other labels, or when there is none.

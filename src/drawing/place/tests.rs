@@ -254,3 +254,31 @@ fn a_label_in_a_fan_of_breakable_lines_stands_beside_its_point_and_breaks_them()
     let text = g.texts().next().unwrap().bbox();
     assert!(rect_segment_distance(text, (o, o)) >= 25.0, "{text:?}: clear only beyond the fan");
 }
+
+/// A label whose only clean leader runs 70 mm down a channel between two lines (a force
+/// polygon's small side named at the far end of its neighbours) stands instead just outside
+/// the channel, its short leader across one of them.
+#[test]
+fn a_label_takes_a_short_leader_across_a_line_over_a_long_clean_one() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let mut g = Group::new("g", region);
+    // A channel 9 mm wide, closed at its top, open at its bottom (y = 85); the label is
+    // wider than the channel, and every box beside the anchor outside it is more than a
+    // leader's least length off.
+    g.path(
+        vec![Point::new(45.5, 85.0), Point::new(45.5, 2.0), Point::new(54.5, 2.0), Point::new(54.5, 85.0)],
+        false,
+        THIN,
+    );
+    let anchor = Point::new(50.0, 6.0);
+    let mut labels = Labels::new();
+    labels.add(anchor, Vec2::new(0.0, 1.0), LabelText::new("R", "12").with_tail(" = 1234"), 3.5);
+    assert_eq!(labels.place(&mut g, region), vec![true]);
+    let leader = g.leaders.first().map(|&k| match &g.items[k] {
+        Item::Path { path, .. } => (path.end() - path.start).norm(),
+        _ => f64::NAN,
+    });
+    let leader = leader.expect("a leader out of the channel");
+    assert!(leader < crossings::LONG, "a leader of {leader} mm");
+    assert_clean(g);
+}

@@ -238,7 +238,11 @@ fn draw_wheel(g: &mut Group, labels: &mut Labels, v: View, pic: Rect, pair: &Pai
     for (r, pen, name) in set {
         if let Some((a0, sweep)) = visible_arc(oc, v.len(r), -FRAC_PI_2, pic) {
             g.curve(Path::arc(oc, v.len(r), a0, sweep), pen);
-            labels.add_ranked(on_circle(oc, v.len(r), a0 + sweep * 0.04), Vec2::new(-1.0, 0.0), name, 3.5, 2);
+            // Named near the arc's left end, else near its right end: the circles crowd
+            // together at one end of the inset where the other may have room.
+            let at = |t: f64| on_circle(oc, v.len(r), a0 + sweep * t);
+            let ends = [(at(0.04), Vec2::new(-1.0, 0.0)), (at(0.96), Vec2::new(1.0, 0.0))];
+            labels.add_ranked_at_any(&ends, name, 3.5, 2);
         }
     }
     let top = v.p(Vec2::new(0.0, e.world.y1));
@@ -296,9 +300,14 @@ fn dimensions(g: &mut Group, labels: &mut Labels, v: View, c: &Cutter, pair: &Pa
         let mid = symbols::dimension(g, d, r, Vec2::new(-2.0, 0.0));
         labels.add_ranked(mid, Vec2::new(-1.0, if c.datum > 0.0 { 1.0 } else { -1.0 }), shift_text(c, words), 3.5, 1);
     }
-    // The round at the tip of the tooth right of the middle one, at its middle.
-    let centre = Vec2::new(c.pitch + c.centre.x, c.centre.y) + lift;
-    let on = centre + Vec2::new(cos(-FRAC_PI_2 / 2.0 - c.alpha / 2.0), sin(-FRAC_PI_2 / 2.0 - c.alpha / 2.0)) * c.rho;
+    // The round at the tip of the tooth left of the middle one, at its middle (away from
+    // P, N and α, which crowd the right), else the mirrored round right of the middle.
+    let mid_round = |side: f64| {
+        let centre = Vec2::new(side * (c.pitch + c.centre.x), c.centre.y) + lift;
+        let a = -FRAC_PI_2 / 2.0 - c.alpha / 2.0;
+        let on = centre + Vec2::new(side * cos(a), sin(a)) * c.rho;
+        (v.p(on), Vec2::new(side, 1.0))
+    };
     let rho = LabelText::new("ρ", "").with_tail(format!(" = {}", value(c.rho)));
-    labels.add_ranked(v.p(on), Vec2::new(1.0, 1.0), rho, 3.5, 1);
+    labels.add_ranked_at_any(&[mid_round(-1.0), mid_round(1.0)], rho, 3.5, 1);
 }

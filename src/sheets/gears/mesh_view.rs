@@ -304,8 +304,15 @@ fn senses_of_rotation(g: &mut Group, labels: &mut Labels, v: View, area: Rect, m
             g.dot(c, 0.8);
             let start = if ccw { 200.0 } else { 20.0 };
             crate::drawing::symbols::turn_arrow(g, c, 9.0, start, 110.0, ccw, THIN);
-            let at = c + from_angle((start + 55.0f64).to_radians() * if ccw { -1.0 } else { 1.0 }) * 9.0;
-            labels.add_ranked(at, Vec2::new(-1.0, 0.0), LabelText::new("ω", n), 3.5, 1);
+            // Named beside the arrow's middle, else beside its tail or its head, outward:
+            // a centre near the drawing's edge leaves room on one side only.
+            let on = |deg: f64| from_angle((start + deg).to_radians() * if ccw { -1.0 } else { 1.0 });
+            let spots = [
+                (c + on(55.0) * 9.0, Vec2::new(-1.0, 0.0)),
+                (c + on(0.0) * 9.0, on(0.0)),
+                (c + on(110.0) * 9.0, on(110.0)),
+            ];
+            labels.add_ranked_at_any(&spots, LabelText::new("ω", n), 3.5, 1);
         } else if n == "2"
             && let Some((r, mid)) = rim_arrow_radius(c, v.p(Vec2::ZERO), area, root2)
         {

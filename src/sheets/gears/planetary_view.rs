@@ -84,7 +84,7 @@ fn front_view(g: &mut Group, front: Rect, st: &Drawn, labels: &mut Labels) {
     }
     g.circle(o, 1.5, MAIN);
     let top = o - Vec2::new(0.0, v.len(r.carrier));
-    labels.add_text_ranked(o + Vec2::new(v.len(r.sun) * 0.7, -v.len(r.sun) * 0.7), Vec2::new(1.0, -1.0), "1", 3.5, 0);
+    labels.add_ranked_at_any(&sun_spots(o, v.len(r.sun), s.planets), LabelText::new("1", ""), 3.5, 0);
     labels.add_text_ranked(
         top + Vec2::new(v.len(r.planet) * 0.7, -v.len(r.planet) * 0.7),
         Vec2::new(1.0, -1.0),
@@ -107,6 +107,17 @@ fn front_view(g: &mut Group, front: Rect, st: &Drawn, labels: &mut Labels) {
     let out = from_angle(between);
     labels.add_text_ranked(o + out * v.len(r.ring), out, "3", 3.5, 0);
     labels.add_text_ranked(o + Vec2::new(0.0, -v.len(r.carrier) * 0.5), Vec2::new(1.0, 0.0), "H", 3.5, 0);
+}
+
+/// Where the sun's number may stand: inside the sun, in the middle of the wedge between
+/// the carrier's upright arm and the next arm or the horizontal centre line to its right;
+/// else outside on its circle, up and right (a small sun's wedge has no room, and a large
+/// sun's gaps between the planets are narrow: numbered outside, it hung on 20–36 mm leaders).
+fn sun_spots(o: Point, r_sun: f64, planets: u32) -> [(Point, Vec2); 2] {
+    let next_arm = -FRAC_PI_2 + TAU / f64::from(planets.max(1));
+    let wedge = (-FRAC_PI_2 + next_arm.min(0.0)) / 2.0;
+    let inside = (o + from_angle(wedge) * (0.3 * r_sun), from_angle(wedge));
+    [inside, (o + Vec2::new(r_sun * 0.7, -r_sun * 0.7), Vec2::new(1.0, -1.0))]
 }
 
 /// The angle on paper (y down, radians) at which the ring is numbered: of the directions

@@ -1,0 +1,49 @@
+//! A label whose first clean spot hangs on a long leader (one running 100 mm down a channel
+//! between two lines of a force polygon, crossing none): a spot much nearer whose leader
+//! crosses a line or two reads better, and is taken where its distance and its crossings
+//! weigh less than the long leader's distance.
+
+use super::{Candidate, Spots, Verdict};
+use crate::drawing::obstacles::Obstacles;
+use crate::num::math::Norm;
+
+/// A leader this long or longer, mm, is weighed against nearer spots across lines.
+pub(super) const LONG: f64 = 20.0;
+/// What each line a leader crosses costs, in distance steps (the steps of
+/// [`super::DISTANCES`], each about a quarter further than the last): three steps, so a
+/// leader crossing one line must be about half as long as a clean one to be taken.
+const PER_CROSSING: f64 = 3.0;
+
+/// Whether `c` hangs on a leader at least [`LONG`].
+pub(super) fn is_long(c: &Candidate) -> bool {
+    c.leader.is_some_and(|(a, b)| (b - a).norm() >= LONG)
+}
+
+/// Of a label's spots cheaper than `bound` that `fits` (a free box; the leader may cross
+/// lines) and whose leader is seen (runs along no line of `drawn`), the one whose cost plus
+/// [`PER_CROSSING`] for each line of `drawn` and leader of `placed` it crosses is least, if
+/// that is under `bound`.
+pub(super) fn nearer_across(
+    s: &mut Spots,
+    fits: &dyn Fn(&Candidate, &mut Verdict) -> bool,
+    (drawn, placed): (&Obstacles, &Obstacles),
+    bound: f64,
+) -> Option<Candidate> {
+    let mut best: Option<(f64, Candidate)> = None;
+    for k in 0.. {
+        let Some((c, v)) = s.get(k) else { break };
+        // Spots come cheapest first, and crossings only add.
+        if c.cost >= best.as_ref().map_or(bound, |b| b.0) {
+            break;
+        }
+        if !fits(c, v) || !v.leader_seen(c, drawn) {
+            continue;
+        }
+        let crossed = v.crossings(c, drawn) + c.leader.map_or(0, |(a, b)| placed.hits_segment(a, b));
+        let score = c.cost + PER_CROSSING * crossed as f64;
+        if score < best.as_ref().map_or(bound, |b| b.0) {
+            best = Some((score, c.clone()));
+        }
+    }
+    best.map(|b| b.1)
+}
