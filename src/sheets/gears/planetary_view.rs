@@ -111,13 +111,18 @@ fn front_view(g: &mut Group, front: Rect, st: &Drawn, labels: &mut Labels) {
 
 /// Where the sun's number may stand: inside the sun, in the middle of the wedge between
 /// the carrier's upright arm and the next arm or the horizontal centre line to its right;
-/// else outside on its circle, up and right (a small sun's wedge has no room, and a large
-/// sun's gaps between the planets are narrow: numbered outside, it hung on 20–36 mm leaders).
-fn sun_spots(o: Point, r_sun: f64, planets: u32) -> [(Point, Vec2); 2] {
-    let next_arm = -FRAC_PI_2 + TAU / f64::from(planets.max(1));
+/// else outside on its circle, up and right; else in the middle of any gap between two
+/// arms (a small sun's wedge has no room, and its gaps between the planets are narrow:
+/// numbered up and right only, it hung on 28 mm leaders on 16 of the catalogue's sheets).
+fn sun_spots(o: Point, r_sun: f64, planets: u32) -> Vec<(Point, Vec2)> {
+    let n = f64::from(planets.max(1));
+    let next_arm = -FRAC_PI_2 + TAU / n;
     let wedge = (-FRAC_PI_2 + next_arm.min(0.0)) / 2.0;
     let inside = (o + from_angle(wedge) * (0.3 * r_sun), from_angle(wedge));
-    [inside, (o + Vec2::new(r_sun * 0.7, -r_sun * 0.7), Vec2::new(1.0, -1.0))]
+    let gaps = (0..planets.max(1)).map(|i| from_angle(-FRAC_PI_2 - TAU * (f64::from(i) + 0.5) / n));
+    let mut out = vec![inside, (o + Vec2::new(r_sun * 0.7, -r_sun * 0.7), Vec2::new(1.0, -1.0))];
+    out.extend(gaps.map(|d| (o + d * r_sun, d)));
+    out
 }
 
 /// The angle on paper (y down, radians) at which the ring is numbered: of the directions
