@@ -183,7 +183,7 @@ fn measure_flat(scene: &Scene, flat: &Flattened) -> Layout {
 }
 
 /// The longest of the scene's leaders, end to end, mm.
-pub fn longest_leader(scene: &Scene) -> Option<f64> {
+fn longest_leader(scene: &Scene) -> Option<f64> {
     let leaders = scene.groups.iter().flat_map(|g| g.leaders.iter().map(|&k| &g.items[k]));
     leaders
         .filter_map(|item| match item {

@@ -64,6 +64,11 @@ const SEEN_SHORT: f64 = 8.0;
 pub(super) const TOUCH: f64 = 0.4;
 
 impl Candidate {
+    /// Whether it hangs on a leader `mm` long or longer.
+    pub(super) fn leader_at_least(&self, mm: f64) -> bool {
+        self.leader.is_some_and(|(a, b)| (b - a).norm() >= mm)
+    }
+
     pub(super) fn is_free(&self, o: &Obstacles) -> bool {
         self.box_is_free(o) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke(a, b))
     }

@@ -5,7 +5,6 @@
 
 use super::{Candidate, Spots, Verdict};
 use crate::drawing::obstacles::Obstacles;
-use crate::num::math::Norm;
 
 /// A leader this long or longer, mm, is weighed against nearer spots across lines.
 pub(super) const LONG: f64 = 20.0;
@@ -13,11 +12,6 @@ pub(super) const LONG: f64 = 20.0;
 /// [`super::DISTANCES`], each about a quarter further than the last): three steps, so a
 /// leader crossing one line must be about half as long as a clean one to be taken.
 const PER_CROSSING: f64 = 3.0;
-
-/// Whether `c` hangs on a leader at least [`LONG`].
-pub(super) fn is_long(c: &Candidate) -> bool {
-    c.leader.is_some_and(|(a, b)| (b - a).norm() >= LONG)
-}
 
 /// Of a label's spots cheaper than `bound` that `fits` (a free box; the leader may cross
 /// lines) and whose leader is seen (runs along no line of `drawn`), the one whose cost plus

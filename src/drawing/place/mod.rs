@@ -292,7 +292,7 @@ impl Labels {
                 .or_else(|| first(s, &box_free));
             // On a long leader: a nearer spot across a line or two, if it weighs less.
             let best = match best {
-                Some(c) if crossings::is_long(&c) => {
+                Some(c) if c.leader_at_least(crossings::LONG) => {
                     let reads = |c: &Candidate, v: &mut Verdict| box_free(c, v) && self.reads_as_own(i, c);
                     crossings::nearer_across(s, &reads, (drawn, &placed), c.cost).or(Some(c))
                 }
@@ -300,7 +300,7 @@ impl Labels {
             };
             // Far off on a long leader, or nowhere: beside its point on thin lines broken
             // for it, where the drawing has such lines.
-            let far = best.as_ref().is_none_or(|c| c.leader.is_some_and(|(a, b)| (b - a).norm() >= LONG_LEADER));
+            let far = best.as_ref().is_none_or(|c| c.leader_at_least(LONG_LEADER));
             let best = match layers.hard {
                 Some(hard) if far => on_breakable(s, &self.requests[i], (drawn, hard), &placed).or(best),
                 _ => best,
@@ -379,9 +379,12 @@ impl Labels {
     /// Whether spot `c` of label `i` reads as its own: any spot of a label that names no
     /// side, a side's name's spot where it reads as that side's (see [`unambiguous`]).
     fn reads_as_own(&self, i: usize, c: &Candidate) -> bool {
-        let Some(own) = self.requests[i].side else { return true };
-        let others = self.requests.iter().enumerate().filter(|&(j, _)| j != i).filter_map(|(_, r)| r.side);
-        unambiguous(c, own, others)
+        self.requests[i].side.is_none_or(|own| unambiguous(c, own, self.other_sides(i)))
+    }
+
+    /// The sides named by the labels other than `i`.
+    fn other_sides(&self, i: usize) -> impl Iterator<Item = (Point, Point)> + '_ {
+        self.requests.iter().enumerate().filter(move |&(j, _)| j != i).filter_map(|(_, r)| r.side)
     }
 
     /// For a side's name, its first free spot that reads as naming that side (see
@@ -394,9 +397,8 @@ impl Labels {
         free: &dyn Fn(&Candidate, &mut Verdict) -> bool,
     ) -> Option<Candidate> {
         let own = self.requests[i].side?;
-        let others = || self.requests.iter().enumerate().filter(move |&(j, _)| j != i).filter_map(|(_, r)| r.side);
-        others().next()?;
-        first_preferred(s, free, |c, _| unambiguous(c, own, others()), AMBIGUITY_LOOKAHEAD)
+        self.other_sides(i).next()?;
+        first_preferred(s, free, |c, _| unambiguous(c, own, self.other_sides(i)), AMBIGUITY_LOOKAHEAD)
     }
 }
 
