@@ -106,7 +106,7 @@ pub fn draw(
     draw_rollers(g, labels, view, d, phis);
     follower_at_start(g, d, &|v| view.p(v), mu);
     draw_rotation(g, labels, view, d);
-    name_profiles(labels, view, d, words.sheet);
+    name_profiles(labels, view, d, phis, words.sheet);
     draw_r_min(g, labels, view, d, words);
     ProfileDrawn { mu, pieces: pieces.count, deviation: pieces.deviation }
 }
@@ -153,15 +153,12 @@ fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, d: &Design) {
 }
 
 /// The profiles' names.
-fn name_profiles(labels: &mut Labels, view: View, d: &Design, l: &CamLabels) {
+fn name_profiles(labels: &mut Labels, view: View, d: &Design, phis: &[f64], l: &CamLabels) {
     let (pr, prog) = (&d.profile, &d.spec.program);
-    let far = pr.pitch(prog.rise + prog.far_dwell / 2.0).p;
-    // Outward, past the rollers: inside, its leader would cross the working profile.
-    let outward = view.p(far) - view.origin;
     // A knife's working profile is its pitch profile: one curve, both names.
     let knife = d.roller == 0.0;
     let name = if knife { l.knife_profile() } else { l.pitch_profile() };
-    labels.add_line_name(view.p(far), outward, LabelText::new(name, ""), 2.5, 3);
+    labels.add_line_name_at_any(&pitch_name_spots(view, d, phis), LabelText::new(name, ""), 2.5, 3);
     if !knife {
         // On the curve itself (its leader reaches it), the text inside the cam, which is
         // free of the construction: at mid-rise, else mid-return or in a dwell.
@@ -179,6 +176,46 @@ fn name_profiles(labels: &mut Labels, view: View, d: &Design, l: &CamLabels) {
         labels.add_line_name_at_any(&spots, LabelText::new(l.working_profile(), ""), 2.5, 3);
     }
 }
+
+/// Where the pitch profile's name may stand, best first, each with its outward direction
+/// (inside, a leader would cross the working profile): the middle of the far dwell where no
+/// roller covers it; else where the pitch profile leaves the last roller of the return and
+/// meets the first of the rise, on the base circle it follows through the near dwell (from
+/// a roller's centre its leader crossed the rollers and ran 20–59 mm out on 150 of the
+/// catalogue's sheets); the middle of the far dwell, under the rollers, last.
+fn pitch_name_spots(view: View, d: &Design, phis: &[f64]) -> Vec<(Point, Vec2)> {
+    let (pr, prog) = (&d.profile, &d.spec.program);
+    let spot = |phi: f64| {
+        let p = view.p(pr.pitch(phi).p);
+        (p, p - view.origin)
+    };
+    // Clear of every roller's circle by a line's clearance and a little.
+    let reach = view.len(d.roller) + ROLLER_CLEAR_MM;
+    let clear = |phi: f64| {
+        let p = view.p(pr.pitch(phi).p);
+        phis.iter().all(|&k| (view.p(pr.pitch(k).p) - p).norm() >= reach)
+    };
+    let far = prog.rise + prog.far_dwell / 2.0;
+    let near = prog.rise + prog.far_dwell + prog.ret;
+    let steps = ((TAU - near) / NEAR_DWELL_STEP).floor() as usize;
+    let after = (1..steps).map(|k| near + k as f64 * NEAR_DWELL_STEP).find(|&phi| clear(phi));
+    let before = (1..steps).map(|k| TAU - k as f64 * NEAR_DWELL_STEP).find(|&phi| clear(phi));
+    let far_clear = d.roller == 0.0 || clear(far);
+    let mut spots = Vec::with_capacity(3);
+    if far_clear {
+        spots.push(spot(far));
+    }
+    spots.extend(after.into_iter().chain(before).map(spot));
+    if !far_clear {
+        spots.push(spot(far));
+    }
+    spots
+}
+
+/// How far outside a roller's circle the pitch profile's name may be set on it, mm.
+const ROLLER_CLEAR_MM: f64 = 1.5;
+/// The step along the near dwell looking for the pitch profile clear of the rollers, rad.
+const NEAR_DWELL_STEP: f64 = 0.5 * std::f64::consts::PI / 180.0;
 
 /// r_min: a radius into the middle of the near dwell, where the profile is the base circle,
 /// with the base circle's name on a leader of its own a little further round (clear of the
