@@ -524,3 +524,23 @@ fn no_force_drawing_stands_above_the_force_analysis_title() {
     assert!(above.is_empty(), "force drawings above their title:\n{}", above.join("\n"));
     assert!(beside >= 2, "the title beside the mechanism on {beside} fixtures");
 }
+
+/// Task 1 variant 8: a crank 12 mm on paper (0.12 m at 0.01 m/mm), large enough for its numbers by its size, but
+/// between the fans of two rods' twelve positions, up and down to the two sliders, with O, A,
+/// D and ω₁ round it: its numbers 8 and 10 hung 78 mm off. Crowded, it is drawn again
+/// enlarged in a free spot of the region, with its numbers round it, in every language.
+#[test]
+fn a_crowded_crank_is_drawn_again_enlarged_with_its_numbers() {
+    for lang in tmm_sheets::drawing::labels::Language::ALL {
+        let out = common::catalogue_sheet1("1", 8, lang);
+        let (scales, layout) = (&out.results["scales"], &out.results["layout"]);
+        let mu_l = scales["mu_l"].as_f64().unwrap();
+        assert!(0.12 / mu_l >= 9.0, "{lang:?}: a crank under 9 mm gets its detail for its size");
+        assert!(scales["detail_mu_l"].as_f64().is_some(), "{lang:?}: the crowded crank's detail");
+        let longest = layout["longest_leader_mm"].as_f64().unwrap();
+        assert!(longest <= 20.0, "{lang:?}: a leader of {longest} mm");
+        for fault in ["texts_crossed", "text_overlaps", "outside_region"] {
+            assert_eq!(layout[fault].as_u64(), Some(0), "{lang:?} {fault}: {}", layout["problems"]);
+        }
+    }
+}

@@ -18,6 +18,7 @@ use super::text::{LabelText, SLANT, SUB};
 use crate::num::math::Norm;
 use candidate::{Candidate, TOUCH, Verdict, least_bad};
 use kurbo::{Point, Rect, Vec2};
+pub use request::Placed;
 use request::Request;
 use spots::Spots;
 
@@ -40,7 +41,7 @@ const CLEAR: f64 = 0.5;
 /// More room kept beside a placed position number for the next label, mm (about a space),
 /// and the rank from which labels are position numbers.
 const LABEL_GAP: f64 = 0.7;
-const NUMBERS_RANK: u8 = 2;
+pub const NUMBERS_RANK: u8 = 2;
 const DIRECTIONS: usize = 24;
 /// Baseline to baseline in a stacked label, in lettering heights.
 const LINE_PITCH: f64 = 1.4;
@@ -49,8 +50,8 @@ const LINE_PITCH: f64 = 1.4;
 #[derive(Debug, Default)]
 pub struct Labels {
     requests: Vec<Request>,
-    /// Discs no label may enter.
-    keep_out: Vec<(Point, f64)>,
+    /// Discs and boxes no label may enter.
+    keep_out: Vec<Piece>,
 }
 
 /// The size of a label's box at lettering height `h` (slant and subscript included): width,
@@ -140,7 +141,12 @@ impl Labels {
 
     /// A disc (paper mm) every label keeps out of, though nothing drawn bounds it there.
     pub fn keep_out(&mut self, centre: Point, r: f64) {
-        self.keep_out.push((centre, r));
+        self.keep_out.push(Piece::Disc(centre, r));
+    }
+
+    /// A box (paper mm) every label and leader keeps out of: room round a title.
+    pub fn keep_clear(&mut self, r: Rect) {
+        self.keep_out.push(Piece::TextBox(r));
     }
 
     /// A plain text label.
@@ -157,6 +163,11 @@ impl Labels {
     /// returns whether each found a clean spot (the layout measurement reports those that
     /// did not).
     pub fn place(self, g: &mut Group, bounds: Rect) -> Vec<bool> {
+        self.place_measured(g, bounds).into_iter().map(|p| p.clean).collect()
+    }
+
+    /// As [`Labels::place`], with how far off each label stands.
+    pub fn place_measured(self, g: &mut Group, bounds: Rect) -> Vec<Placed> {
         // Every box tried is inside the bounds and every leader runs from near its anchor
         // to its box: what lies beyond both cannot touch them (a cell's labels need not
         // see the cells drawn before it).
@@ -168,10 +179,10 @@ impl Labels {
             let kept = g.items.iter().enumerate().filter(|(k, _)| g.breakable.binary_search(k).is_err());
             Obstacles::of_items_within(kept.map(|(_, item)| item), reach)
         });
-        for &(c, r) in &self.keep_out {
-            drawn.add(Piece::Disc(c, r), usize::MAX);
+        for &piece in &self.keep_out {
+            drawn.add(piece, usize::MAX);
             if let Some(h) = hard.as_mut() {
-                h.add(Piece::Disc(c, r), usize::MAX);
+                h.add(piece, usize::MAX);
             }
         }
         let layers = Layers { drawn: &drawn, hard: hard.as_ref() };
@@ -217,13 +228,14 @@ impl Labels {
             for (k, line) in req.more.iter().enumerate() {
                 line.draw(g, base + Vec2::new(0.0, (k + 1) as f64 * LINE_PITCH * req.h), req.h, Anchor::Middle);
             }
-            if let Some((a, b)) = req.drawn_leader(&cand) {
+            let leader = req.drawn_leader(&cand);
+            if let Some((a, b)) = leader {
                 g.leader_line(a, b, THIN);
             }
             if cand.breaks {
                 gaps.push(cand.r.inflate(CLEAR, CLEAR));
             }
-            placed.push(clear);
+            placed.push(Placed { clean: clear, leader: leader.map_or(0.0, |(a, b)| (b - a).norm()), rank: req.rank });
         }
         interrupt_for(g, &gaps);
         placed

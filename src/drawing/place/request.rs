@@ -5,6 +5,15 @@ use super::{LINE_PITCH, label_size};
 use crate::drawing::text::LabelText;
 use kurbo::{Point, Vec2};
 
+/// Where a label went: whether its spot is clean, its leader's length (0: none), mm, and
+/// its rank.
+#[derive(Debug, Clone, Copy)]
+pub struct Placed {
+    pub clean: bool,
+    pub leader: f64,
+    pub rank: u8,
+}
+
 /// One label to place.
 #[derive(Debug, Clone)]
 pub(super) struct Request {

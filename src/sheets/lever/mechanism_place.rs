@@ -6,9 +6,10 @@ use super::compose::{Column, HEADER, Input, TOP, force_region_below, region_head
 use super::forces_view::{ForcesInput, fit_comfortably};
 use super::labels::LeverWords;
 use super::mechanism_view::{
-    DETAIL_GAP, DetailAt, DetailPlace, MechanismView, TRAJECTORY, detail_place, mu_l_text, world_extent,
+    DETAIL_GAP, DetailAt, DetailPlace, MechanismView, TRAJECTORY, crowded_detail_place, detail_place, mu_l_text,
+    world_extent,
 };
-use crate::drawing::place::Labels;
+use crate::drawing::place::{Labels, NUMBERS_RANK};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::text::LabelText;
@@ -91,7 +92,6 @@ pub(super) fn mechanism_group(
 ) -> MechanismDrawn {
     let MechanismPlace { world, region, mu_l, draw_h, detail, .. } = place;
     let m = &inp.project.mechanism;
-    let mut group = Group::new("mechanism", region);
     // The drawing centred in what a detail beside or below it leaves of the region.
     let at = detail.map(|d| d.at);
     let band_h = if at == Some(DetailAt::Below) { world.height() / mu_l } else { draw_h };
@@ -109,15 +109,33 @@ pub(super) fn mechanism_group(
         }
         DetailAt::Inside => (d, None),
     });
-    mechanism_header(&mut group, region, mu_l, k, words);
-    trajectory_legend(&mut group, region, words);
-    let mut labels = Labels::new();
-    let detail_mu_l =
-        MechanismView { m, k, view: View::new(origin, mu_l), kulisa: &inp.project.kulisa_lengths, words, detail }
-            .draw(&mut group, &mut labels);
-    labels.place(&mut group, region.inflate(-0.5, -0.5));
-    MechanismDrawn { group, region, mu_l, detail_mu_l }
+    let draw = |detail: Option<(DetailPlace, Option<Rect>)>| {
+        let mut group = Group::new("mechanism", region);
+        mechanism_header(&mut group, region, mu_l, k, words);
+        trajectory_legend(&mut group, region, words);
+        let mut labels = Labels::new();
+        let kulisa = &inp.project.kulisa_lengths;
+        let detail_mu_l =
+            MechanismView { m, k, view: View::new(origin, mu_l), kulisa, words, detail }.draw(&mut group, &mut labels);
+        let placed = labels.place_measured(&mut group, region.inflate(-0.5, -0.5));
+        let farthest = placed.iter().filter(|p| p.rank >= NUMBERS_RANK).map(|p| p.leader).fold(0.0, f64::max);
+        (MechanismDrawn { group, region, mu_l, detail_mu_l }, farthest)
+    };
+    let (drawn, farthest) = draw(detail);
+    // A crank large enough on paper may still be crowded: the rods' lines, its letters and
+    // ω₁ round it pushed its numbers off on long leaders (task 1's tall two-slider
+    // mechanisms: 58–78 mm). Its detail then, in a free spot of the region, if it does better.
+    if detail.is_some() || farthest < NUMBERS_FAR_MM {
+        return drawn;
+    }
+    let left = k.assigned.state.points[m.crank().pivot].p.x < world.center().x;
+    let Some(crowded) = crowded_detail_place(m, mu_l, left, words) else { return drawn };
+    let (redrawn, nearer) = draw(Some((crowded, None)));
+    if redrawn.detail_mu_l.is_some() && nearer < farthest { redrawn } else { drawn }
 }
+
+/// A position number this far off its point on a leader, mm, calls for the crank's detail.
+const NUMBERS_FAR_MM: f64 = 20.0;
 
 /// The mechanism's title, μ_l, the structure formula and the degrees of freedom.
 fn mechanism_header(g: &mut Group, region: Rect, mu_l: f64, k: &Kinematics, words: &LeverWords) {

@@ -37,6 +37,8 @@ const TITLE_BASELINE: f64 = 6.5;
 const LETTER_H: f64 = 5.0;
 const SCALE_H: f64 = 3.5;
 const LETTER_GAP: f64 = 2.0;
+/// Room kept round the detail's title, mm: about a letter.
+const TITLE_CLEAR: f64 = 2.5;
 /// Between the mechanism's drawing and the detail, mm.
 pub(in crate::sheets::lever) const DETAIL_GAP: f64 = 8.0;
 /// The marking circle round the crank in the mechanism, past its circle, mm.
@@ -86,6 +88,28 @@ pub(in crate::sheets::lever) fn detail_place(
     let mu = scale::length_scale_below(crank / DETAIL_R_MM);
     Some(at_scale(m, mu, left, words))
 }
+
+/// The detail of a crank large enough on paper but crowded (its numbers pushed far off by
+/// the rods' lines, the letters and ω₁ round it): at the coarsest GOST scale that enlarges
+/// it and draws it at least `DETAIL_R_MM` long; none where that would draw it longer than
+/// `CROWDED_R_MOST_MM`.
+pub(in crate::sheets::lever) fn crowded_detail_place(
+    m: &Mechanism,
+    mu_l: f64,
+    left: bool,
+    words: &LeverWords,
+) -> Option<DetailPlace> {
+    let crank = m.crank().length;
+    let mu = scale::length_scale_below((crank / DETAIL_R_MM).min(mu_l));
+    let enlarges = crank > 0.0 && crank / mu_l < CROWDED_R_BELOW_MM && crank / mu <= CROWDED_R_MOST_MM;
+    enlarges.then(|| at_scale(m, mu, left, words))
+}
+
+/// A crowded crank gets a detail where it is drawn shorter than this, mm (a longer one is
+/// crowded by more than its size), and the detail draws it at most this long (a larger
+/// one takes room the region has not to spare).
+const CROWDED_R_BELOW_MM: f64 = 20.0;
+const CROWDED_R_MOST_MM: f64 = 40.0;
 
 /// The detail at `mu`: its box holds the crank's circle with the room round it, and its
 /// title above.
@@ -163,6 +187,9 @@ impl MechanismView<'_> {
         let title_y = rect.y0 + TITLE_BASELINE;
         letter.draw(g, Point::new(start, title_y), LETTER_H, Anchor::Start);
         scale.draw(g, Point::new(start + letter_w, title_y), SCALE_H, Anchor::Start);
+        // A label 0.5 mm after the title read as part of it ("(μ_l = 0,0025 m/mm)ε₂").
+        let title_box = Rect::new(start, title_y - LETTER_H, start + letter_w + scale.width(SCALE_H), title_y);
+        labels.keep_clear(title_box.inflate(TITLE_CLEAR, TITLE_CLEAR));
         // The detail's view: the crank's pivot at its circle's centre.
         let view = View::new(Point::new(centre.x - pivot.x / d.mu, centre.y + pivot.y / d.mu), d.mu);
         let o = view.p(pivot);
