@@ -47,3 +47,19 @@ fn the_worked_examples_stroke_is_dimensioned_as_computed_from_its_lengths() {
         assert!(texts.iter().filter(|t| t.as_str() == n).count() >= 2, "position {n} numbered once only");
     }
 }
+
+/// Task 6 variant 2: the stroke's dimension line runs between the guide and the rods' lines,
+/// and its middle has no room for the value on either side. The value is written along the
+/// line further toward an end, where it has room (it hung 76.4 mm off on a leader), in every
+/// language: upright text along a vertical line, no leader over 20 mm on the sheet.
+#[test]
+fn a_strokes_value_slides_along_its_line_to_where_it_has_room() {
+    for lang in tmm_sheets::drawing::labels::Language::ALL {
+        let out = common::catalogue_sheet1("6", 2, lang);
+        let mech = out.scene.groups.iter().find(|g| g.id == "mechanism").unwrap();
+        let h = mech.texts().find(|t| t.text == "H").unwrap_or_else(|| panic!("{lang:?}: no H"));
+        assert_eq!(h.rotate.abs(), 90.0, "{lang:?}: H written along its vertical line");
+        let longest = out.results["layout"]["longest_leader_mm"].as_f64().unwrap();
+        assert!(longest <= 20.0, "{lang:?}: a leader of {longest} mm");
+    }
+}

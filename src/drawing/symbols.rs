@@ -242,20 +242,51 @@ pub fn value_along(
     ];
     let across = corners.map(|c| (c - mid).dot(up));
     let (lo, hi) = (across.iter().copied().fold(f64::MAX, f64::min), across.iter().copied().fold(f64::MIN, f64::max));
-    // Over the line, then under it, its box VALUE_GAP from the line.
-    for shift in [VALUE_GAP - lo, -VALUE_GAP - hi] {
-        let text = Text { rotate, ..value.text(mid + up * shift, h, Anchor::Middle) };
-        let bb = text.bbox();
-        if bounds.contains(bb.origin())
-            && bounds.contains(Point::new(bb.x1, bb.y1))
-            && [drawn, &added].iter().all(|o| o.is_clear(bb.inflate(VALUE_CLEAR, VALUE_CLEAR)))
-        {
-            g.text(text);
-            return true;
+    // Over the line, then under it, its box VALUE_GAP from the line; at its middle, then
+    // slid toward either end while it stays between the arrows, with more room round it
+    // (from the middle, with the guide on one side and the rods' lines on the other, a
+    // stroke's value hung on a 76 mm leader; slid into a gap just its width, it took the
+    // room the slider's numbers needed).
+    let half = corners.iter().map(|&c| (c - mid).dot(t).abs()).fold(0.0, f64::max);
+    let room = (len / 2.0 - half - ARROW_LEN - VALUE_CLEAR).max(0.0);
+    for slide in ALONG_SLIDES {
+        let clear = if slide == 0.0 { VALUE_CLEAR } else { SLID_CLEAR };
+        for shift in [VALUE_GAP - lo, -VALUE_GAP - hi] {
+            let text = Text { rotate, ..value.text(mid + t * (slide * room) + up * shift, h, Anchor::Middle) };
+            let bb = text.bbox();
+            if bounds.contains(bb.origin())
+                && bounds.contains(Point::new(bb.x1, bb.y1))
+                && drawn.is_clear(bb.inflate(clear, clear))
+                && added.is_clear(bb.inflate(VALUE_CLEAR, VALUE_CLEAR))
+            {
+                g.text(text);
+                return true;
+            }
         }
     }
     false
 }
+
+/// Where along its dimension line a value is tried, in shares of the room each side of
+/// the middle: the middle first.
+const ALONG_SLIDES: [f64; 13] = [
+    0.0,
+    -1.0 / 6.0,
+    1.0 / 6.0,
+    -2.0 / 6.0,
+    2.0 / 6.0,
+    -0.5,
+    0.5,
+    -4.0 / 6.0,
+    4.0 / 6.0,
+    -5.0 / 6.0,
+    5.0 / 6.0,
+    -1.0,
+    1.0,
+];
+/// Room kept between a value slid off its line's middle and anything drawn but its
+/// dimension, mm.
+const SLID_CLEAR: f64 = 2.0;
 
 /// From a dimension line to its value's box, mm (GOST 2.307: about 1 mm to the letters;
 /// more than [`VALUE_CLEAR`], so that the line itself leaves the box clear).
