@@ -6,8 +6,7 @@ use super::compose::{Column, HEADER, Input, TOP, force_region_below, region_head
 use super::forces_view::{ForcesInput, fit_comfortably};
 use super::labels::LeverWords;
 use super::mechanism_view::{
-    DETAIL_GAP, DetailAt, DetailPlace, MechanismView, TRAJECTORY, crowded_detail_place, detail_place, mu_l_text,
-    world_extent,
+    DETAIL_GAP, DetailAt, DetailPlace, MechanismView, TRAJECTORY, detail_place, mu_l_text, world_extent,
 };
 use crate::drawing::place::{Labels, NUMBERS_RANK};
 use crate::drawing::scale;
@@ -65,7 +64,7 @@ pub(super) fn mechanism_place(
     let words = LeverWords::new(inp.ctx.info.language);
     let m = &inp.project.mechanism;
     let left = k.assigned.state.points[m.crank().pivot].p.x < world.center().x;
-    let detail = |mu_l: f64| detail_place(m, mu_l, left, &words);
+    let detail = |mu_l: f64| detail_place(m, mu_l, left, &words, false);
     // Where the tables go beside the mechanism, a region wider than its drawing leaves
     // paper empty that they could use; narrower than its header, it would cross the
     // region beside it.
@@ -129,7 +128,7 @@ pub(super) fn mechanism_group(
         return drawn;
     }
     let left = k.assigned.state.points[m.crank().pivot].p.x < world.center().x;
-    let Some(crowded) = crowded_detail_place(m, mu_l, left, words) else { return drawn };
+    let Some(crowded) = detail_place(m, mu_l, left, words, true) else { return drawn };
     let (redrawn, nearer) = draw(Some((crowded, None)));
     if redrawn.detail_mu_l.is_some() && nearer < farthest { redrawn } else { drawn }
 }

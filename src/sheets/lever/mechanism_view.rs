@@ -18,7 +18,7 @@ use crate::num::tol;
 use kurbo::{CubicBez, Point, Rect, Vec2};
 
 mod crank_detail;
-pub(super) use crank_detail::{DETAIL_GAP, DetailAt, DetailPlace, crowded_detail_place, detail_place};
+pub(super) use crank_detail::{DETAIL_GAP, DetailAt, DetailPlace, detail_place};
 
 /// Paper sizes of the symbols, mm.
 const SLIDER: (f64, f64) = (10.0, 5.0);

@@ -73,36 +73,25 @@ pub(in crate::sheets::lever) enum DetailAt {
 }
 
 /// The detail the crank of `m` needs at the mechanism's `mu_l`: none when its radius on
-/// paper is `DETAIL_BELOW_MM` or more.
+/// paper is `DETAIL_BELOW_MM` or more — or, where it is `crowded` (its numbers pushed far
+/// off by the rods' lines, the letters and ω₁ round it), `CROWDED_R_BELOW_MM` or more.
 pub(in crate::sheets::lever) fn detail_place(
     m: &Mechanism,
     mu_l: f64,
     left: bool,
     words: &LeverWords,
+    crowded: bool,
 ) -> Option<DetailPlace> {
     let crank = m.crank().length;
-    if crank.is_nan() || crank <= 0.0 || crank / mu_l >= DETAIL_BELOW_MM {
+    let below = if crowded { CROWDED_R_BELOW_MM } else { DETAIL_BELOW_MM };
+    if crank.is_nan() || crank <= 0.0 || crank / mu_l >= below {
         return None;
     }
-    // The coarsest GOST scale that draws the crank longer than DETAIL_R_MM.
-    let mu = scale::length_scale_below(crank / DETAIL_R_MM);
-    Some(at_scale(m, mu, left, words))
-}
-
-/// The detail of a crank large enough on paper but crowded (its numbers pushed far off by
-/// the rods' lines, the letters and ω₁ round it): at the coarsest GOST scale that enlarges
-/// it and draws it at least `DETAIL_R_MM` long; none where that would draw it longer than
-/// `CROWDED_R_MOST_MM`.
-pub(in crate::sheets::lever) fn crowded_detail_place(
-    m: &Mechanism,
-    mu_l: f64,
-    left: bool,
-    words: &LeverWords,
-) -> Option<DetailPlace> {
-    let crank = m.crank().length;
-    let mu = scale::length_scale_below((crank / DETAIL_R_MM).min(mu_l));
-    let enlarges = crank > 0.0 && crank / mu_l < CROWDED_R_BELOW_MM && crank / mu <= CROWDED_R_MOST_MM;
-    enlarges.then(|| at_scale(m, mu, left, words))
+    // The coarsest GOST scale that draws the crank longer than DETAIL_R_MM (and, for a
+    // crowded one, enlarges it), a crowded one at most CROWDED_R_MOST_MM long.
+    let least = crank / DETAIL_R_MM;
+    let mu = scale::length_scale_below(if crowded { least.min(mu_l) } else { least });
+    (!crowded || crank / mu <= CROWDED_R_MOST_MM).then(|| at_scale(m, mu, left, words))
 }
 
 /// A crowded crank gets a detail where it is drawn shorter than this, mm (a longer one is
