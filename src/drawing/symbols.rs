@@ -249,7 +249,7 @@ pub fn value_along(
     // room the slider's numbers needed).
     let half = corners.iter().map(|&c| (c - mid).dot(t).abs()).fold(0.0, f64::max);
     let room = (len / 2.0 - half - ARROW_LEN - VALUE_CLEAR).max(0.0);
-    for slide in ALONG_SLIDES {
+    for slide in along_slides() {
         let clear = if slide == 0.0 { VALUE_CLEAR } else { SLID_CLEAR };
         for shift in [VALUE_GAP - lo, -VALUE_GAP - hi] {
             let text = Text { rotate, ..value.text(mid + t * (slide * room) + up * shift, h, Anchor::Middle) };
@@ -267,23 +267,12 @@ pub fn value_along(
     false
 }
 
-/// Where along its dimension line a value is tried, in shares of the room each side of
-/// the middle: the middle first.
-const ALONG_SLIDES: [f64; 13] = [
-    0.0,
-    -1.0 / 6.0,
-    1.0 / 6.0,
-    -2.0 / 6.0,
-    2.0 / 6.0,
-    -0.5,
-    0.5,
-    -4.0 / 6.0,
-    4.0 / 6.0,
-    -5.0 / 6.0,
-    5.0 / 6.0,
-    -1.0,
-    1.0,
-];
+/// Where along its dimension line a value is tried: the middle, then in steps of a sixth
+/// of the room each side of it, alternately toward either end.
+const ALONG_STEPS: usize = 6;
+fn along_slides() -> impl Iterator<Item = f64> {
+    (0..=2 * ALONG_STEPS).map(|k| k.div_ceil(2) as f64 / ALONG_STEPS as f64 * if k % 2 == 1 { -1.0 } else { 1.0 })
+}
 /// Room kept between a value slid off its line's middle and anything drawn but its
 /// dimension, mm.
 const SLID_CLEAR: f64 = 2.0;

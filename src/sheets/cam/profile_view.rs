@@ -191,9 +191,10 @@ fn pitch_name_spots(view: View, d: &Design, phis: &[f64]) -> Vec<(Point, Vec2)> 
     };
     // Clear of every roller's circle by a line's clearance and a little.
     let reach = view.len(d.roller) + ROLLER_CLEAR_MM;
+    let centres: Vec<Point> = phis.iter().map(|&k| view.p(pr.pitch(k).p)).collect();
     let clear = |phi: f64| {
         let p = view.p(pr.pitch(phi).p);
-        phis.iter().all(|&k| (view.p(pr.pitch(k).p) - p).norm() >= reach)
+        centres.iter().all(|&c| (c - p).norm() >= reach)
     };
     let far = prog.rise + prog.far_dwell / 2.0;
     let near = prog.rise + prog.far_dwell + prog.ret;

@@ -14,6 +14,7 @@ use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::analysis::Kinematics;
+use crate::lever::linkage::Mechanism;
 use kurbo::{Point, Rect};
 
 /// The mechanism's region at most, mm; it shrinks to the drawing at the chosen μ_l.
@@ -63,7 +64,7 @@ pub(super) fn mechanism_place(
     let world = world_extent(&inp.project.mechanism, k, &inp.project.kulisa_lengths);
     let words = LeverWords::new(inp.ctx.info.language);
     let m = &inp.project.mechanism;
-    let left = k.assigned.state.points[m.crank().pivot].p.x < world.center().x;
+    let left = crank_on_left(m, k, world);
     let detail = |mu_l: f64| detail_place(m, mu_l, left, &words, false);
     // Where the tables go beside the mechanism, a region wider than its drawing leaves
     // paper empty that they could use; narrower than its header, it would cross the
@@ -127,10 +128,15 @@ pub(super) fn mechanism_group(
     if detail.is_some() || farthest < NUMBERS_FAR_MM {
         return drawn;
     }
-    let left = k.assigned.state.points[m.crank().pivot].p.x < world.center().x;
+    let left = crank_on_left(m, k, world);
     let Some(crowded) = detail_place(m, mu_l, left, words, true) else { return drawn };
     let (redrawn, nearer) = draw(Some((crowded, None)));
     if redrawn.detail_mu_l.is_some() && nearer < farthest { redrawn } else { drawn }
+}
+
+/// Whether the crank's pivot is left of the mechanism's middle (its detail goes that side).
+fn crank_on_left(m: &Mechanism, k: &Kinematics, world: Rect) -> bool {
+    k.assigned.state.points[m.crank().pivot].p.x < world.center().x
 }
 
 /// A position number this far off its point on a leader, mm, calls for the crank's detail.
