@@ -120,17 +120,26 @@ fn the_six_bar_matches_its_textbook_closed_form() {
     }
 }
 
-/// The whole turn solved at once (`solve_all`, the angles overlapped) is the turn solved
-/// one angle at a time, bit for bit; on a coupler too short for part of the turn, the
-/// first angle that fails is the one `solve_into` fails first, with the same step and
-/// reason, and every angle before it is solved.
+/// The whole turn solved at once (`solve_all`, the angles in SIMD lanes) is the turn solved
+/// one angle at a time, bit for bit, on every mechanism of the fixtures (each kind of step)
+/// and with a last angle that fills no batch of lanes; on a coupler too short for part of
+/// the turn, the first angle that fails is the one `solve_into` fails first, with the same
+/// step and reason, and every angle before it is solved.
 #[test]
 fn the_turn_solved_at_once_is_the_turn_solved_angle_by_angle() {
     let short = std::fs::read_to_string("tests/bad-input/118-rrr-too-short.yaml").unwrap();
-    for text in [DEFAULT_PROJECT, short.as_str()] {
+    let mut texts = vec![DEFAULT_PROJECT.to_string(), short.clone()];
+    for entry in std::fs::read_dir("fixtures").unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "yaml") {
+            texts.push(std::fs::read_to_string(path).unwrap());
+        }
+    }
+    assert!(texts.len() > 8, "the fixtures' mechanisms");
+    for text in &texts {
         let m = pipeline::load_for(text, &[1]).unwrap().lever.unwrap().mechanism;
         for sense in [1.0, -1.0] {
-            let thetas: Vec<f64> = (0..720).map(|k| sense * TAU * k as f64 / 720.0 + 0.1).collect();
+            let thetas: Vec<f64> = (0..721).map(|k| sense * TAU * k as f64 / 720.0 + 0.1).collect();
             let mut all = Vec::new();
             let got = m.solve_all(&thetas, &mut all);
             let mut first_failure = None;

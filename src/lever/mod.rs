@@ -7,10 +7,12 @@
 //! returns NaN: a configuration it cannot solve is an error.
 
 pub mod analysis;
+mod batch;
 pub mod dyads;
 pub mod indicators;
 pub mod kin;
 pub mod kinetostatics;
+pub mod lanes;
 pub mod linkage;
 pub mod load;
 pub mod motion;
