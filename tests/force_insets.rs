@@ -488,3 +488,30 @@ fn a_side_short_even_in_its_enlargement_carries_its_value() {
     });
     assert!(checked >= 3, "only {checked} short enlarged sides");
 }
+
+/// Task 8 variant 26 in English: II(2,3)'s run of short sides (Rᵗ₁₂ 106 N, G₂ 12 N, P_i2 203 N,
+/// P_i3 134 N, G₃ 13 N at the polygon's 1000 N/mm) was enlarged in the room squeezed under
+/// its polygon at 75 N/mm: every side still under 2.7 mm, each named with its value, and G₃
+/// hung on a 78.7 mm leader across the polygon and the enlargement's title. An enlargement
+/// now makes at least one of its sides measurable wherever a slot of its full size would:
+/// the run is drawn where the sheet has room for that (L at 20 N/mm, P_i2 10 mm), and its
+/// names stand beside it.
+#[test]
+fn an_enlargement_draws_some_side_long_enough_to_measure() {
+    let out = common::catalogue_sheet1("8", 26, tmm_sheets::drawing::labels::Language::En);
+    let mut enlargements = 0;
+    for (part, sides) in polygon_sides(&out) {
+        let mu_p = sides.iter().map(|s| s.scale).fold(0.0, f64::max);
+        let mut scales: Vec<f64> = sides.iter().map(|s| s.scale).filter(|&m| m < mu_p).collect();
+        scales.sort_by(f64::total_cmp);
+        scales.dedup();
+        for mu in scales {
+            enlargements += 1;
+            let longest = sides.iter().filter(|s| s.scale == mu).map(|s| s.length_mm).fold(0.0, f64::max);
+            assert!(longest >= SIDE_MIN, "{part}: its enlargement at {mu} N/mm draws its longest side {longest:.2} mm");
+        }
+    }
+    assert!(enlargements >= 2, "{enlargements} enlargements");
+    let leader = out.results["layout"]["longest_leader_mm"].as_f64().unwrap();
+    assert!(leader <= 20.0, "a label {leader} mm off");
+}

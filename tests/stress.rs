@@ -433,6 +433,17 @@ fn a_six_bar_with_a_crank_under_3_mm_and_an_8_m_rod_has_its_numbers_clear() {
     assert_eq!(verdict(&text), Ok(Outcome::Built));
 }
 
+/// Found by the six-bar sweep (a random seed, about 1 in 12,000 cases): position 1's
+/// acceleration plan is about 40 × 8 mm at the sheet's one μ_a, and n_BA's spots near its
+/// point are all taken by "d=s5", "b=n_DB", s2 and s4, placed before it in every round; it
+/// hung on a leader through "d=s5" ("a line crosses “d=s5”"). It now takes a spot that
+/// only "d=s5" blocked, and "d=s5" moves to a clean one of its own.
+#[test]
+fn a_flat_acceleration_plans_boxed_in_label_takes_a_spot_another_label_gives_up() {
+    let text = common::six_bar(HEADER, 2.948469, 0.764900, (3.765320, 1.612518), 0.0, 4.084237, "backward");
+    assert_eq!(verdict(&text), Ok(Outcome::Built));
+}
+
 /// The force analysis at the dead centres and toggles themselves and a nanoradian either side:
 /// every fixture with a force analysis, its assigned position put at position 0 (an extreme of
 /// the output link: a slider's dead centre, a rocker's toggle) and at the other extreme, each

@@ -24,6 +24,7 @@ use spots::Spots;
 
 mod candidate;
 mod crossings;
+mod make_room;
 mod request;
 mod spots;
 
@@ -38,8 +39,9 @@ const LEADER_GAP: f64 = 0.8;
 /// line's ink ("φ1 = 45,0°" under a load diagram's mark, 148 texts within 0.4 mm of a line
 /// on the fixtures' sheets); at 0.5 every catalogue sheet still lays out clean.
 const CLEAR: f64 = 0.5;
-/// More room kept beside a placed position number for the next label, mm (about a space),
-/// and the rank from which labels are position numbers.
+/// More room kept beside a placed position number for the next label, mm (about a space:
+/// two numbers 0.5 mm apart read as one, "0≡17 16"), and the rank from which labels are
+/// position numbers.
 const LABEL_GAP: f64 = 0.7;
 pub const NUMBERS_RANK: u8 = 2;
 const DIRECTIONS: usize = 24;
@@ -219,6 +221,9 @@ impl Labels {
                 best = whole;
             }
         }
+        if failures(&best) > 0 {
+            self.make_room(layers, &mut spots, &mut best);
+        }
         let mut placed = Vec::with_capacity(best.len());
         let mut gaps = Vec::new();
         for (req, (cand, clear)) in self.requests.iter().zip(best) {
@@ -321,12 +326,8 @@ impl Labels {
                 Some(c) => (c, true),
                 None => (least_bad(&s.all(), [drawn, &placed], &self.requests[i], bounds), false),
             };
-            // Position numbers (rank 2) are set apart from the next label by more than the
-            // clearance: two numbers 0.5 mm apart read as one ("0≡17 16").
-            let gap = if self.requests[i].rank >= NUMBERS_RANK { LABEL_GAP } else { 0.0 };
-            placed.add(Piece::TextBox(cand.r.inflate(gap, 0.0)), usize::MAX);
-            if let Some((a, b)) = self.requests[i].drawn_leader(&cand) {
-                placed.add(Piece::Segment(a, b), usize::MAX);
+            for piece in self.pieces(i, &cand) {
+                placed.add(piece, usize::MAX);
             }
             out[i] = (cand, clear);
         }

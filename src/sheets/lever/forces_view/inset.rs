@@ -207,11 +207,17 @@ impl<'a> Runs<'a> {
                 }
                 let need = (world.width() / w).max(world.height() / h).max(longest / self.inset_box);
                 let mu = scale::plan_round_up(need);
+                // A slot that enlarges the run and still leaves every side too short to
+                // measure, where a full one would not, moves the knot instead of undoing it
+                // (task 8 variant 26's II(2,3): L squeezed under its polygon at 75 N/mm, its
+                // longest side 2.7 mm, G₃ named on a 79 mm leader).
+                let full = scale::plan_round_up(world.width().max(world.height()).max(*longest) / self.inset_box);
+                let measurable = longest / mu >= SIDE_MIN || mu <= full;
                 // Its title in 3.5 mm lettering, as every other enlargement's: a narrower
                 // slot set it a size smaller beside its neighbour's (the v-compressor's T
                 // beside L, a teacher's review).
                 let title_fits = !titled || slot.width() >= (self.title_w)(mu) + 2.0 * TITLE_SIDE;
-                (mu > 0.0 && mu * ENLARGED_MIN <= self.mu_p && title_fits).then(|| Inset {
+                (mu > 0.0 && mu * ENLARGED_MIN <= self.mu_p && title_fits && measurable).then(|| Inset {
                     terms: terms.clone(),
                     mu,
                     world: *world,

@@ -1,0 +1,93 @@
+//! The last repair of a placement: a label the rounds left without a clean spot takes a
+//! spot near its anchor that only other labels block, and those labels move to clean spots
+//! of their own. Putting the failed label first (the rounds) cannot do this
+//! where the labels placed after it then fail in turn: a flat acceleration plan's n_BA,
+//! boxed in by "d=s5", "b=n_DB", s2 and s4, hung on a leader through "d=s5" in every round.
+
+use super::candidate::Candidate;
+use super::spots::Spots;
+use super::{LABEL_GAP, Labels, Layers, NEAR_SPOTS, NUMBERS_RANK};
+use crate::drawing::obstacles::{Obstacles, Piece};
+
+/// The most placed labels one failed label may move.
+const MOST_MOVED: usize = 2;
+/// How many of its spots a moved label looks through for a clean one: three times as many
+/// as a failed label (the flat plan's "d=s5" found none among as many, one on an 8 mm
+/// leader among these).
+const MOVED_SPOTS: usize = 3 * NEAR_SPOTS;
+
+impl Labels {
+    /// What label `i` standing at `c` keeps the labels placed after it out of: its box
+    /// (a position number's widened by [`LABEL_GAP`]: two numbers 0.5 mm apart read as
+    /// one) and its leader.
+    pub(super) fn pieces(&self, i: usize, c: &Candidate) -> impl Iterator<Item = Piece> {
+        let gap = if self.requests[i].rank >= NUMBERS_RANK { LABEL_GAP } else { 0.0 };
+        let leader = self.requests[i].drawn_leader(c).map(|(a, b)| Piece::Segment(a, b));
+        std::iter::once(Piece::TextBox(c.r.inflate(gap, 0.0))).chain(leader)
+    }
+
+    /// The labels of `placed` that `keep` accepts, as obstacles.
+    fn obstacles_of(&self, placed: &[(Candidate, bool)], keep: impl Fn(usize) -> bool) -> Obstacles {
+        let pieces = placed
+            .iter()
+            .enumerate()
+            .filter(|&(j, _)| keep(j))
+            .flat_map(|(j, (c, _))| self.pieces(j, c).map(move |p| (p, j)))
+            .collect();
+        Obstacles::of_pieces(pieces)
+    }
+
+    /// Gives each label of `placed` without a clean spot one near its anchor where the
+    /// labels blocking it (at most [`MOST_MOVED`], each clean) can move to clean spots of
+    /// their own ([`MOVED_SPOTS`]); a label with no such spot stays where it is.
+    pub(super) fn make_room(&self, layers: Layers, spots: &mut [Spots], placed: &mut [(Candidate, bool)]) {
+        for i in 0..placed.len() {
+            if placed[i].1 {
+                continue;
+            }
+            for k in 0..NEAR_SPOTS {
+                let Some((c, v)) = spots[i].get(k) else { break };
+                if !v.is_free(c, layers.drawn) || !self.reads_as_own(i, c) {
+                    continue;
+                }
+                let c = c.clone();
+                if let Some(moved) = self.moved_for(i, c, layers, spots, placed) {
+                    placed.clone_from_slice(&moved);
+                    break;
+                }
+            }
+        }
+    }
+
+    /// `placed` with label `i` at `c` (free against the drawing) and the clean labels
+    /// blocking it moved to clean spots of their own; none where more than
+    /// [`MOST_MOVED`] block it, a failed one does, or one finds no spot.
+    fn moved_for(
+        &self,
+        i: usize,
+        c: Candidate,
+        layers: Layers,
+        spots: &mut [Spots],
+        placed: &[(Candidate, bool)],
+    ) -> Option<Vec<(Candidate, bool)>> {
+        let blocks = |j: usize| j != i && !c.is_free(&self.obstacles_of(placed, |k| k == j));
+        let blockers: Vec<usize> = (0..placed.len()).filter(|&j| blocks(j)).collect();
+        if blockers.len() > MOST_MOVED || blockers.iter().any(|&j| !placed[j].1) {
+            return None;
+        }
+        let mut trial = placed.to_vec();
+        trial[i] = (c, true);
+        for (n, &j) in blockers.iter().enumerate() {
+            // Against every label but this blocker and those not yet moved.
+            let others = self.obstacles_of(&trial, |k| k != j && !blockers[n..].contains(&k));
+            let s = &mut spots[j];
+            let spot = (0..MOVED_SPOTS).find_map(|k| {
+                let (cand, v) = s.get(k)?;
+                let fits = v.is_free(cand, layers.drawn) && cand.is_free(&others) && self.reads_as_own(j, cand);
+                fits.then(|| cand.clone())
+            })?;
+            trial[j] = (spot, true);
+        }
+        Some(trial)
+    }
+}
