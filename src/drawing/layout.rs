@@ -389,4 +389,29 @@ pub(crate) mod tests {
             assert_eq!(measure(&scene(vec![line, text.clone()])).texts_crossed, crossed, "{pen:?}");
         }
     }
+
+    /// A leader ran through the space of an enlargement's title "μP = 75 N/mm)" between the
+    /// subscript and "=" (task 8 variant 26 in English), and neither the placer nor this
+    /// measure saw it: a run's box now starts where the run before it ends. A line through
+    /// that space crosses the text; one just past its end does not.
+    #[test]
+    fn a_line_through_the_space_between_a_subscript_and_its_tail_crosses_the_text() {
+        let mut g = Group::new("g", Rect::new(0.0, 0.0, 100.0, 100.0));
+        crate::drawing::text::LabelText::new("μ", "P").with_tail(" = 75 N/mm)").draw(
+            &mut g,
+            Point::new(51.734, 78.792),
+            3.5,
+            Anchor::Start,
+        );
+        let Item::Text(t) = &g.items[0] else { panic!("{:?}", g.items) };
+        let (sub_end, tail) = (t.core_boxes().nth(1).unwrap().x1, t.core_box().x1);
+        let vertical = |x: f64| Item::Path {
+            path: crate::drawing::path::Path::polyline(&[(x, 82.7).into(), (x, 4.0).into()], false),
+            pen: THIN,
+        };
+        for (x, crossed) in [(sub_end + 0.6, 1), (tail + 0.5, 0)] {
+            let items = vec![g.items[0].clone(), vertical(x)];
+            assert_eq!(measure(&scene(items)).texts_crossed, crossed, "a line at x = {x}");
+        }
+    }
 }
