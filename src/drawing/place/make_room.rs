@@ -41,6 +41,12 @@ impl Labels {
     /// labels blocking it (at most [`MOST_MOVED`], each clean) can move to clean spots of
     /// their own ([`MOVED_SPOTS`]); a label with no such spot stays where it is.
     pub(super) fn make_room(&self, layers: Layers, spots: &mut [Spots], placed: &mut [(Candidate, bool)]) {
+        // Each placed label as obstacles of its own, asked of every spot tried and made
+        // again only when a move changes where labels stand.
+        let each = |placed: &[(Candidate, bool)]| -> Vec<Obstacles> {
+            (0..placed.len()).map(|j| self.obstacles_of(placed, |k| k == j)).collect()
+        };
+        let mut alone = each(placed);
         for i in 0..placed.len() {
             if placed[i].1 {
                 continue;
@@ -51,16 +57,17 @@ impl Labels {
                     continue;
                 }
                 let c = c.clone();
-                if let Some(moved) = self.moved_for(i, c, layers, spots, placed) {
+                if let Some(moved) = self.moved_for(i, c, layers, spots, (placed, &alone)) {
                     placed.clone_from_slice(&moved);
+                    alone = each(placed);
                     break;
                 }
             }
         }
     }
 
-    /// `placed` with label `i` at `c` (free against the drawing) and the clean labels
-    /// blocking it moved to clean spots of their own; none where more than
+    /// `placed` (`alone`: each of its labels as obstacles) with label `i` at `c` (free
+    /// against the drawing) and the clean labels blocking it moved to clean spots of their own; none where more than
     /// [`MOST_MOVED`] block it, a failed one does, or one finds no spot.
     fn moved_for(
         &self,
@@ -68,9 +75,9 @@ impl Labels {
         c: Candidate,
         layers: Layers,
         spots: &mut [Spots],
-        placed: &[(Candidate, bool)],
+        (placed, alone): (&[(Candidate, bool)], &[Obstacles]),
     ) -> Option<Vec<(Candidate, bool)>> {
-        let blocks = |j: usize| j != i && !c.is_free(&self.obstacles_of(placed, |k| k == j));
+        let blocks = |j: usize| j != i && !c.is_free(&alone[j]);
         let blockers: Vec<usize> = (0..placed.len()).filter(|&j| blocks(j)).collect();
         if blockers.len() > MOST_MOVED || blockers.iter().any(|&j| !placed[j].1) {
             return None;
