@@ -1,5 +1,6 @@
 //! Sheet 1's force column gives the plans its room where that draws the smaller kind's
-//! largest plan a tenth larger and the force drawings keep their floors.
+//! largest plan a tenth larger and the force drawings keep their floors (or, for plans under
+//! 80 mm, the lower floors of `choice::Floors::for_larger_plans`).
 
 mod common;
 
@@ -25,5 +26,37 @@ fn the_plans_take_the_force_columns_room_where_their_largest_grows() {
         let lever = results["forces"]["scales"]["lever_mm"].as_f64().unwrap();
         assert!(v.min(a) >= 78.0, "variant {variant}: largest plans {v:.1} and {a:.1} mm");
         assert!(lever >= 80.0, "variant {variant}: lever {lever:.1} mm");
+    }
+}
+
+/// The trade's floors where the plans are under 80 mm: the lever, a velocity plan turned,
+/// may shrink to 80 mm and a group drawing by a quarter. Task 10 variant 16 (thirteen
+/// velocity plans 63.4 mm in four columns beside a force column with room to spare) and
+/// task 8 variant 36 (acceleration plans 65.4 mm, lever 101 mm) kept the widest force
+/// column for a drawing or a lever a step smaller; now both kinds reach 80 mm, the lever
+/// keeps 80 and every polygon side stays measurable.
+#[test]
+fn the_forces_give_way_to_plans_under_80_mm_down_to_their_own_floors() {
+    for (task, variant) in [("10", 16), ("8", 36)] {
+        let results = common::catalogue_sheet1(task, variant, Language::Uz).results;
+        let largest = |kind: &str| {
+            let plans = results["scales"][kind].as_array().unwrap();
+            plans
+                .iter()
+                .flat_map(|p| [&p["size_mm"][0], &p["size_mm"][1]])
+                .map(|v| v.as_f64().unwrap())
+                .fold(0.0, f64::max)
+        };
+        let (v, a) = (largest("velocity_plans"), largest("acceleration_plans"));
+        let forces = &results["forces"]["scales"];
+        let lever = forces["lever_mm"].as_f64().unwrap();
+        let side = forces["smallest_polygon_side_mm"].as_f64().unwrap();
+        assert!(v.min(a) >= 80.0, "task {task} variant {variant}: largest plans {v:.1} and {a:.1} mm");
+        assert!(lever >= 80.0, "task {task} variant {variant}: lever {lever:.1} mm");
+        assert!(side >= 5.0, "task {task} variant {variant}: polygon side {side:.1} mm");
+        let layout = &results["layout"];
+        for key in ["texts_crossed", "text_overlaps", "outside_region"] {
+            assert_eq!(layout[key], 0, "task {task} variant {variant}: {key}");
+        }
     }
 }

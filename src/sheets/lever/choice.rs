@@ -4,6 +4,13 @@
 use super::compose::Composed;
 use super::forces_view::SIDE_MIN as POLYGON_SIDE_MIN;
 use super::forces_view::{DRAWING_READABLE, LEVER_READABLE};
+use super::plan_regions::LARGEST_PLAN;
+
+/// The least share of its size a group drawing keeps where the force column narrows (or
+/// table 1 moves into the corner) for plans under 80 mm: task 10 variant 16's crank drawing
+/// went from 45.6 to 34.9 mm for velocity plans of 84.5 mm instead of 63.4 and a lever of
+/// 127 mm instead of 95.
+const SHRUNK_FOR_PLANS: f64 = 0.75;
 
 /// The share of empty 20 mm cells above which a sheet is too empty (issue 22's bound).
 pub(super) const EMPTY_MOST: f64 = 0.5;
@@ -44,6 +51,13 @@ impl Floors {
             drawing: drawing_mm(c).min(DRAWING_READABLE),
             together: together(c),
         }
+    }
+
+    /// These floors as a composition that draws plans under [`LARGEST_PLAN`] larger must
+    /// keep them: the lever, a velocity plan turned, may shrink to what a plan is drawn
+    /// ([`LARGEST_PLAN`]), and a group drawing to [`SHRUNK_FOR_PLANS`] of its size.
+    pub(super) fn for_larger_plans(self) -> Floors {
+        Floors { lever: self.lever.min(LARGEST_PLAN), drawing: self.drawing * SHRUNK_FOR_PLANS, ..self }
     }
 
     /// These floors with tables 3–5 kept together where `c` has them so.

@@ -186,7 +186,8 @@ fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> 
     }
     narrower.sort_by(|a, b| b.0.0.total_cmp(&a.0.0));
     // A narrower column wins where the smallest plan grows by a tenth, or the smaller kind's
-    // largest (to LARGEST_PLAN) does and the forces keep the widest's floors (below).
+    // largest (to LARGEST_PLAN) does and the forces keep the widest's floors, or the lower
+    // floors larger plans may take them to with the mechanism's scale kept (below).
     let (growing, rest): (Vec<_>, Vec<_>) = narrower.into_iter().partition(|((grown, _), _)| *grown > 1.1 * smallest);
     let (larger, rest): (Vec<_>, Vec<_>) = rest.into_iter().partition(|((_, larger), _)| *larger > 1.1 * largest);
     let narrow = |next| {
@@ -205,9 +206,13 @@ fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> 
     let widest = draw(inp, k, plans, widest)?;
     if widest.layout.is_clean() {
         let floors = Floors::of(&widest);
+        // Or, keeping the mechanism's scale, the forces shrunk as far as larger plans may
+        // shrink them.
+        let for_plans = Floors::of(&widest).for_larger_plans();
+        let kept = |c: &Composed| floors.kept(c) || (for_plans.kept(c) && c.scales.mu_l <= widest.scales.mu_l);
         for (_, next) in larger {
             let drawn = narrow(next)?;
-            if drawn.layout.is_clean() && floors.kept(&drawn) {
+            if drawn.layout.is_clean() && kept(&drawn) {
                 return Ok(drawn);
             }
         }

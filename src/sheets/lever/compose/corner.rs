@@ -24,8 +24,9 @@ pub(super) fn largest_plans_mm(c: &Composed) -> f64 {
 
 /// The sheet `out`, composed as `v`, or, where a kind's largest plan on it is under
 /// [`LARGEST_PLAN`], the same variant with table 1 in the corner if that draws the plan
-/// larger, keeps every floor of `out` (its smallest plan, polygon side, lever, group drawing
-/// and tables 3–5 together) and its mechanism's scale, is as clean and at most half empty
+/// larger, keeps the floors of `out` that larger plans must keep (its smallest plan, polygon
+/// side, tables 3–5 together; the lever to 80 mm, its group drawings three quarters of their
+/// size: `Floors::for_larger_plans`) and its mechanism's scale, is as clean and at most half empty
 /// (or no emptier than `out`); in either lettering of tables 3–5, composed on rayon's pool.
 pub(super) fn with_larger_plans(
     variant: &(impl Fn(Variant) -> Result<Composed, TooLong> + Sync),
@@ -40,7 +41,7 @@ pub(super) fn with_larger_plans(
     // catalogue sheets reach 80 mm).
     let corner = Variant { corner: true, ..v };
     let tried = [corner, corner.in_other_lettering()];
-    let floors = Floors::of(&out);
+    let floors = Floors::of(&out).for_larger_plans();
     let admissible = |c: &Composed| {
         let clean = c.layout.is_clean() || !out.layout.is_clean();
         let full = empty(c) <= EMPTY_MOST.max(empty(&out));
