@@ -200,3 +200,56 @@ fn csv_headers_name_every_column_and_no_value_is_minus_zero() {
         }
     }
 }
+
+/// The sheet prints every table's values as the note's Markdown does, cell for cell: a
+/// whole centre distance "90" in both, the given module and clearance "5" and "0,25" as
+/// given (the drawn table printed 90,00, 5,000 and 0,2500 where the Markdown had 90 and 5).
+#[test]
+fn the_drawn_tables_print_the_values_the_note_prints() {
+    for (name, p) in all_fixtures() {
+        for lang in [Language::Uz, Language::En] {
+            let b = built(&p, lang);
+            for s in &b {
+                let prefix = format!("sheet{}", s.output.number);
+                for t in &s.output.tables {
+                    let md = report::markdown(t, &prefix);
+                    let wanted: Vec<String> = md
+                        .lines()
+                        .filter(|l| l.starts_with("| <a id="))
+                        .flat_map(|l| {
+                            let cells: Vec<String> =
+                                l.trim_end_matches('|').split(" | ").skip(2).map(|c| c.trim().to_string()).collect();
+                            // A condition met is "1" in the note and a word on the sheet.
+                            let words = if t.table.id == "conditions" { 2 } else { cells.len() };
+                            cells.into_iter().take(words).collect::<Vec<_>>()
+                        })
+                        .collect();
+                    let drawn = drawn_texts(&s.svg, &format!("{prefix}.table.{}", t.table.id));
+                    let mut rest = drawn.iter();
+                    for w in &wanted {
+                        assert!(
+                            rest.any(|d| d == w),
+                            "{name} {lang:?} {prefix}.{}: {w} not drawn in its place (drawn: {drawn:?})",
+                            t.table.id
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The texts of the SVG group `id` (every group of a table split into parts), in order.
+fn drawn_texts(svg: &str, id: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for (start, _) in svg.match_indices(&format!("<g id=\"{id}\"")) {
+        let body = &svg[start..];
+        let end = body.find("</g>").unwrap_or(body.len());
+        for piece in body[..end].split("</text>") {
+            if let Some(open) = piece.rfind('>') {
+                out.push(piece[open + 1..].to_string());
+            }
+        }
+    }
+    out
+}

@@ -33,6 +33,16 @@ pub fn trimmed(x: f64, lang: Language) -> String {
     }
 }
 
+/// A dimension's value, mm: with the fewest decimals (up to three) that write it exactly
+/// — h_a = 5, h_f = 6,25, a_w = 90, as the course's drawings dimension them — else with
+/// four significant digits (p = 15,71).
+pub fn dimension(x: f64, lang: Language) -> String {
+    match digits::exact_decimals(&[x]) {
+        Some(d) => localise(&digits::at_decimals(x, d), lang),
+        None => value(x, lang),
+    }
+}
+
 /// A tiny number in the form 1,6·10⁻¹³ (zero as 0), as the sheets show a residual.
 pub fn scientific(x: f64, lang: Language) -> String {
     if x == 0.0 {
@@ -76,6 +86,15 @@ pub fn localise(s: &str, lang: Language) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_dimension_is_written_exactly_where_few_decimals_do() {
+        assert_eq!(dimension(5.0, Language::Uz), "5");
+        assert_eq!(dimension(6.25, Language::Uz), "6,25");
+        assert_eq!(dimension(90.0 + 1e-12, Language::En), "90", "round-off of an exact value");
+        assert_eq!(dimension(15.707963267948966, Language::Ru), "15,71");
+        assert_eq!(dimension(-1.8, Language::En), "−1.8");
+    }
 
     #[test]
     fn decimal_comma_and_significant_digits() {

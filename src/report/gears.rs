@@ -40,10 +40,11 @@ pub fn pair(p: &Pair, eps_drawn: f64) -> NumTable {
     NumTable::single(
         "pair",
         vec![
-            named("m", "", Unit::Mm, one(mm(s.module))),
-            named("α", "", Unit::Deg, one(s.pressure_angle.to_degrees())),
-            named("h", "a*", Unit::None, one(s.addendum)).keyed("h_a_star"),
-            named("c*", "", Unit::None, one(s.clearance)).keyed("c_star"),
+            // The given values as given: m = 2.5, c* = 0.25, not 2.500 and 0.2500.
+            named("m", "", Unit::Mm, one(mm(s.module))).exactly(),
+            named("α", "", Unit::Deg, one(s.pressure_angle.to_degrees())).exactly(),
+            named("h", "a*", Unit::None, one(s.addendum)).keyed("h_a_star").exactly(),
+            named("c*", "", Unit::None, one(s.clearance)).keyed("c_star").exactly(),
             named("u", "12", Unit::None, one(p.ratio)),
             named("α", "w", Unit::Deg, one(p.working_pressure_angle.to_degrees())),
             named("a", "", Unit::Mm, one(mm(p.reference_centre_distance))),
@@ -63,7 +64,7 @@ pub fn pair(p: &Pair, eps_drawn: f64) -> NumTable {
 /// The planetary stage: tooth numbers, planets, ratios, pitch radii and the carrier's radius.
 pub fn stage(s: &Stage, module: f64) -> NumTable {
     let names: &[&str] = if s.z.len() == 4 { &["1", "2", "2′", "3"] } else { &["1", "2", "3"] };
-    let mut rows = vec![named("m", "", Unit::Mm, vec![mm(module)])];
+    let mut rows = vec![named("m", "", Unit::Mm, vec![mm(module)]).exactly()];
     rows.extend(names.iter().zip(&s.z).map(|(n, &z)| named("z", n, Unit::None, vec![f64::from(z)]).counted()));
     rows.push(named("K", "", Unit::None, vec![f64::from(s.planets)]).counted());
     rows.push(named("u", "1H", Unit::None, vec![s.ratio]));

@@ -44,6 +44,12 @@ pub struct Answer {
 }
 
 impl NoteTable {
+    /// Row `r`'s values as the note and the sheet print them alike (see [`Row::printed`]):
+    /// whole numbers without decimals in a count's row or a table that asks for them so.
+    pub fn printed_values(&self, r: &Row) -> Vec<String> {
+        r.printed(r.count || self.whole_numbers)
+    }
+
     /// A row's quantity as `symbol_sub`, or the symbol alone.
     fn quantity(&self, r: usize) -> String {
         let (symbol, sub) = &self.printed[r];
@@ -125,7 +131,7 @@ pub fn markdown(n: &NoteTable, prefix: &str) -> String {
         let sub = if sub.is_empty() { String::new() } else { format!("<sub>{}</sub>", md_escape(sub)) };
         let anchor = format!("<a id=\"{prefix}.{}.{}\"></a>", t.id, r.key);
         let _ = write!(s, "| {anchor}{}{sub} | {} |", md_escape(symbol), md_escape(unit));
-        for v in r.printed(n.whole_numbers) {
+        for v in n.printed_values(r) {
             let v = v.replace('-', "−");
             let _ = write!(s, " {} |", if n.decimal_comma { v.replace('.', ",") } else { v });
         }

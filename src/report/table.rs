@@ -185,18 +185,22 @@ impl Row {
         self
     }
 
-    /// The values as a reader gets them (a point and a hyphen-minus): a whole count (when
-    /// `whole` counts are printed so) without decimals, an exact row with its fewest exact
-    /// decimals, anything else with the decimals that give the row's largest value four
-    /// significant digits, the same in every cell of the row.
+    /// The values as a reader gets them (a point and a hyphen-minus): a row of whole
+    /// numbers (where `whole` asks for them so; in a count's row each whole value) without decimals, an exact row with its
+    /// fewest exact decimals, anything else with the decimals that give the row's largest
+    /// value four significant digits — the same decimals in every cell of the row (GOST
+    /// 2.105), so a whole 45 beside 47.5 prints 45.00.
     pub fn printed(&self, whole: bool) -> Vec<String> {
         use crate::num::digits;
+        // A count's row (a condition's value, limit and 1 for met) is one quantity a cell.
+        let whole_value = |v: f64| v.fract() == 0.0 && v.abs() < 1e9;
+        let whole = whole && (self.count || self.values.iter().all(|&v| whole_value(v)));
         let decimals = if self.exact { digits::exact_decimals(&self.values) } else { None };
         let row = decimals.unwrap_or_else(|| digits::row_decimals(&self.values));
         self.values
             .iter()
             .map(|&v| match decimals {
-                _ if whole && v.fract() == 0.0 && v.abs() < 1e9 => format!("{v:.0}"),
+                _ if whole && whole_value(v) => format!("{v:.0}"),
                 Some(d) => digits::fixed(v, d),
                 None => digits::at_decimals(v, row),
             })

@@ -162,7 +162,8 @@ pub fn note(
 }
 
 /// The rows of a drawn table: each quantity as a label (with ", unit" after it when
-/// `unit_tails` and the row has a unit), its values as [`crate::report::Row::printed`] writes them.
+/// `unit_tails` and the row has a unit), its values as the note prints them
+/// ([`NoteTable::printed_values`]).
 pub fn drawn_rows(n: &NoteTable, lang: Language, unit_tails: bool) -> Vec<(LabelText, Vec<String>)> {
     n.table
         .rows
@@ -180,7 +181,7 @@ pub fn drawn_rows(n: &NoteTable, lang: Language, unit_tails: bool) -> Vec<(Label
             if unit_tails && !unit.is_empty() {
                 label.tail.push_str(&format!(", {unit}"));
             }
-            (label, r.printed(r.count).iter().map(|v| fmt::localise(v, lang)).collect())
+            (label, n.printed_values(r).iter().map(|v| fmt::localise(v, lang)).collect())
         })
         .collect()
 }

@@ -274,9 +274,9 @@ fn draw_lines(g: &mut Group, labels: &mut Labels, v: View, lines: &[(f64, Pen, S
     labels.add_ranked(at, Vec2::new(1.0, 0.4), LabelText::new("α", ""), 3.5, 1);
 }
 
-/// The shift's value, "x·m = 1,800".
+/// The shift's value, "x·m = 1,8".
 fn shift_text(c: &Cutter, words: &GearWords) -> LabelText {
-    LabelText::new("x·m", "").with_tail(format!(" = {}", fmt::value(mm(c.datum), words.lang)))
+    LabelText::new("x·m", "").with_tail(format!(" = {}", fmt::dimension(mm(c.datum), words.lang)))
 }
 
 /// The pitch p over the rack between two right flanks on the datum line, the shift x·m
@@ -287,7 +287,7 @@ fn dimensions(g: &mut Group, labels: &mut Labels, v: View, c: &Cutter, pair: &Pa
     let (a, b) = (v.p(c.flank_on_datum(0.0) + lift), v.p(c.flank_on_datum(c.pitch) + lift));
     let over = v.p(Vec2::new(0.0, w.pitch + c.root + BODY * m)).y - 5.0;
     let mid = symbols::dimension(g, a, b, Vec2::new(0.0, over - a.y));
-    let value = |x: f64| fmt::value(mm(x), lang);
+    let value = |x: f64| fmt::dimension(mm(x), lang);
     labels.add_ranked(
         mid,
         Vec2::new(0.0, -1.0),

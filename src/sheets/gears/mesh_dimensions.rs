@@ -80,7 +80,7 @@ pub fn draw(
     let w1 = &p.wheels[0];
     let step = std::f64::consts::TAU / f64::from(w1.z);
     let psi = w1.tooth_thickness / (2.0 * w1.pitch);
-    let value = |name: &str, x: f64| LabelText::new(name, "").with_tail(format!(" = {}", fmt::value(mm(x), lang)));
+    let value = |name: &str, x: f64| LabelText::new(name, "").with_tail(format!(" = {}", fmt::dimension(mm(x), lang)));
     let r_s = v.len(w1.root) - S_INSIDE_ROOT;
     let r_p = v.len(w1.root) - P_INSIDE_ROOT;
     let arc = Arc { v, area, r_feature: v.len(w1.pitch) };
@@ -187,7 +187,7 @@ pub fn centre_distance(g: &mut Group, labels: &mut Labels, v: View, area: Rect, 
         symbols::arrowhead(g, kurbo::Point::new(x, o1.y), Vec2::new(0.0, 1.0));
         top.y
     };
-    let value = LabelText::new("a", "w").with_tail(format!(" = {}", fmt::value(mm(p.centre_distance), lang)));
+    let value = LabelText::new("a", "w").with_tail(format!(" = {}", fmt::dimension(mm(p.centre_distance), lang)));
     let at = kurbo::Point::new(x, o1.y + (far - o1.y) * 0.25);
     labels.add_ranked(at, Vec2::new(1.0, 0.0), value, TEXT_H, 1);
 }
@@ -218,7 +218,7 @@ pub fn heights(
         area.contains(a) && area.contains(b) && teeth.intersect(Rect::from_points(a, b)).area() <= 0.0
     };
     let Some(deg) = HEIGHTS_AT_DEG.into_iter().find(|&d| clear(d)) else { return };
-    let value = |name: &str, x: f64| LabelText::new("h", name).with_tail(format!(" = {}", fmt::value(mm(x), lang)));
+    let value = |name: &str, x: f64| LabelText::new("h", name).with_tail(format!(" = {}", fmt::dimension(mm(x), lang)));
     let along = on(deg, 1.0) - on(deg, 0.0);
     // The values beside their lines toward the teeth (the angles are past 90°), where the
     // wheel's body is empty: the circles' names stand at the other side, at the area's edge.
@@ -297,7 +297,7 @@ pub fn base_pitch(
     let Some(&first) = candidates.first() else {
         return;
     };
-    let value = LabelText::new("p", "b").with_tail(format!(" = {}", fmt::value(mm(pb), lang)));
+    let value = LabelText::new("p", "b").with_tail(format!(" = {}", fmt::dimension(mm(pb), lang)));
     // Its value along its line, as the arcs' values: beside its middle, else moved along it
     // up to its ends, on either side, the nearest clear. The first place of the dimension
     // with room for it; else the first with room on its line's extension past an arrow
