@@ -102,23 +102,25 @@ pub fn results(d: &Design, errors: (f64, f64)) -> NumTable {
     let word = |symbol: &'static str, w: SubWord, unit: Unit, x: f64| Row::new(symbol, Sub::Word(w), unit, one(x));
     let mut rows: Vec<Row> = vec![name("r", "min", Unit::Mm, mm(d.centre.r_min))];
     if let Some(e) = d.offset() {
-        rows.push(plain("e", Unit::Mm, one(mm(e))));
+        // The given values as given (e = 10, r_rol = 14, not 10,00 and 14,00); a computed
+        // one exact to three decimals too, else with four significant digits.
+        rows.push(plain("e", Unit::Mm, one(mm(e))).exactly());
     }
     if let Follower::Rocker { length } = d.spec.follower {
-        rows.push(plain("l", Unit::Mm, one(mm(length))));
-        rows.push(name("β", "max", Unit::Deg, d.spec.program.lift.to_degrees()));
+        rows.push(plain("l", Unit::Mm, one(mm(length))).exactly());
+        rows.push(name("β", "max", Unit::Deg, d.spec.program.lift.to_degrees()).exactly());
     }
     if let (Some(a), Some(psi)) = (d.centre_distance(), d.rocker_start()) {
         rows.push(name("a", "w", Unit::Mm, mm(a)));
         rows.push(name("ψ", "0", Unit::Deg, psi.to_degrees()));
     }
     if d.roller > 0.0 {
-        rows.push(word("r", SubWord::Roller, Unit::Mm, mm(d.roller)));
+        rows.push(word("r", SubWord::Roller, Unit::Mm, mm(d.roller)).exactly());
     }
     rows.push(name("ρ", "min", Unit::Mm, mm(d.rho_min)));
-    rows.push(word("α", SubWord::AllowedRise, Unit::Deg, d.spec.allowed.rise.to_degrees()));
+    rows.push(word("α", SubWord::AllowedRise, Unit::Deg, d.spec.allowed.rise.to_degrees()).exactly());
     rows.push(word("α", SubWord::MaxRise, Unit::Deg, d.max_pressure[0].0.to_degrees()));
-    rows.push(word("α", SubWord::AllowedReturn, Unit::Deg, d.spec.allowed.ret.to_degrees()));
+    rows.push(word("α", SubWord::AllowedReturn, Unit::Deg, d.spec.allowed.ret.to_degrees()).exactly());
     rows.push(word("α", SubWord::MaxReturn, Unit::Deg, d.max_pressure[1].0.to_degrees()));
     let (s, v) = match d.spec.follower {
         Follower::Translating => ("δs", "δ(ds/dφ)"),
