@@ -196,6 +196,13 @@ impl Obstacles {
         Obstacles::of_pieces(pieces)
     }
 
+    /// The same index without the pieces whose tags `drop` names (a drawing without its
+    /// breakable lines): what [`Obstacles::of_items_within`] of the items kept gives, but
+    /// for the tags, which count here only as telling items apart.
+    pub fn without(&self, drop: impl Fn(usize) -> bool) -> Obstacles {
+        Obstacles::of_pieces(self.pieces.iter().filter(|(_, k)| !drop(*k)).copied().collect())
+    }
+
     /// Pieces with their tags, loaded at once.
     pub fn of_pieces(pieces: Vec<(Piece, usize)>) -> Obstacles {
         Obstacles::of_pieces_in(pieces, grid::CELL)
