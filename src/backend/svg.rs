@@ -95,19 +95,26 @@ pub fn escape(s: &str) -> String {
     out
 }
 
-fn stroke_attrs(pen: &Pen, ink: &str) -> Result<String, BackendError> {
-    let dash = match shapes::dash_array(pen.line) {
-        None => String::new(),
-        Some(a) => {
-            format!(" stroke-dasharray=\"{}\"", a.iter().map(|&x| num(x)).collect::<Result<Vec<_>, _>>()?.join(" "))
+/// A line's stroke attributes, written at the end of `out`.
+fn stroke_attrs(out: &mut String, pen: &Pen, ink: &str) -> Result<(), BackendError> {
+    let _ = write!(out, "stroke=\"{ink}\" stroke-width=\"");
+    push_num(out, pen.width)?;
+    out.push('"');
+    if let Some(a) = shapes::dash_array(pen.line) {
+        out.push_str(" stroke-dasharray=\"");
+        for (k, &x) in a.iter().enumerate() {
+            if k > 0 {
+                out.push(' ');
+            }
+            push_num(out, x)?;
         }
-    };
-    Ok(format!("stroke=\"{ink}\" stroke-width=\"{}\"{dash}", num(pen.width)?))
+        out.push('"');
+    }
+    Ok(())
 }
 
-/// Path data: `M`, `L`, `C` and `A` commands, `Z` when closed.
-fn path_d(p: &Path) -> Result<String, BackendError> {
-    let mut d = String::with_capacity(16 * (1 + p.segs.len()));
+/// Path data: `M`, `L`, `C` and `A` commands, `Z` when closed, written at the end of `d`.
+fn path_d(d: &mut String, p: &Path) -> Result<(), BackendError> {
     // A command's letter, then its numbers apart by spaces.
     let command = |d: &mut String, letter: char, xs: &[f64]| -> Result<(), BackendError> {
         d.push(letter);
@@ -119,18 +126,18 @@ fn path_d(p: &Path) -> Result<String, BackendError> {
         }
         Ok(())
     };
-    command(&mut d, 'M', &[p.start.x, p.start.y])?;
+    command(d, 'M', &[p.start.x, p.start.y])?;
     for s in &p.segs {
         match s {
-            Seg::Line(q) => command(&mut d, 'L', &[q.x, q.y])?,
-            Seg::Cubic(a, b, c) => command(&mut d, 'C', &[a.x, a.y, b.x, b.y, c.x, c.y])?,
+            Seg::Line(q) => command(d, 'L', &[q.x, q.y])?,
+            Seg::Cubic(a, b, c) => command(d, 'C', &[a.x, a.y, b.x, b.y, c.x, c.y])?,
             Seg::Arc(a) => d.push_str(&arc_commands(a)?),
         }
     }
     if p.closed {
         d.push('Z');
     }
-    Ok(d)
+    Ok(())
 }
 
 /// An arc as `A` commands. An arc whose ends are written as one point (a whole circle) is
@@ -226,19 +233,39 @@ fn line_class(pen: &Pen) -> &'static str {
     }
 }
 
-fn item_element(item: &Item, ink: &str) -> Result<String, BackendError> {
+/// An item's element, written at the end of `out` (a sheet has thousands: no string of
+/// its own for each, nor for its numbers, path data or stroke).
+fn item_element(out: &mut String, item: &Item, ink: &str) -> Result<(), BackendError> {
     let class = class_of(item);
-    Ok(match item {
+    match item {
         Item::Path { path, pen } => {
-            format!("<path class=\"{class}\" d=\"{}\" {}/>", path_d(path)?, stroke_attrs(pen, ink)?)
+            let _ = write!(out, "<path class=\"{class}\" d=\"");
+            path_d(out, path)?;
+            out.push_str("\" ");
+            stroke_attrs(out, pen, ink)?;
+            out.push_str("/>");
         }
         Item::Circle { c, r, pen, filled } => {
-            let paint = if *filled { format!("fill=\"{ink}\"") } else { stroke_attrs(pen, ink)? };
-            format!("<circle class=\"{class}\" cx=\"{}\" cy=\"{}\" r=\"{}\" {paint}/>", num(c.x)?, num(c.y)?, num(*r)?)
+            let _ = write!(out, "<circle class=\"{class}\" cx=\"");
+            for (k, x) in [c.x, c.y, *r].into_iter().enumerate() {
+                push_num(out, x)?;
+                out.push_str(["\" cy=\"", "\" r=\"", "\" "][k]);
+            }
+            if *filled {
+                let _ = write!(out, "fill=\"{ink}\"");
+            } else {
+                stroke_attrs(out, pen, ink)?;
+            }
+            out.push_str("/>");
         }
-        Item::Fill { path } => format!("<path class=\"{class}\" d=\"{}\" fill=\"{ink}\"/>", path_d(path)?),
-        Item::Text(t) => text_element(t, ink)?,
-    })
+        Item::Fill { path } => {
+            let _ = write!(out, "<path class=\"{class}\" d=\"");
+            path_d(out, path)?;
+            let _ = write!(out, "\" fill=\"{ink}\"/>");
+        }
+        Item::Text(t) => out.push_str(&text_element(t, ink)?),
+    }
+    Ok(())
 }
 
 /// A group's or a part's SVG id: the sheet's name, a dot, its own id ("sheet1.plan.v.3").
@@ -260,47 +287,51 @@ pub fn write(scene: &Scene) -> Result<String, BackendError> {
     let mut s = String::with_capacity(1 << 20);
     let ink = colour(scene.ink);
     let (w, h) = (num(scene.width)?, num(scene.height)?);
-    let mut line = |text: String| {
+    let line = |s: &mut String, text: String| {
         s.push_str(&text);
         s.push('\n');
     };
-    line(format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\">"
-    ));
-    line(format!("<title>{}</title>", escape(&scene.title)));
+    line(
+        &mut s,
+        format!("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\">"),
+    );
+    line(&mut s, format!("<title>{}</title>", escape(&scene.title)));
     if scene.ink == Ink::Black {
-        line(format!("<rect width=\"{w}\" height=\"{h}\" fill=\"#fff\"/>"));
+        line(&mut s, format!("<rect width=\"{w}\" height=\"{h}\" fill=\"#fff\"/>"));
     }
     // Text set as the layout measured it, in any renderer: no kerning (the PDF and PNG place
     // glyphs by their advances) and every space kept (librsvg and resvg strip a tail run's
     // leading space without `xml:space`: "μP= 7,5 N/mm", "K( μP …").
-    line(format!(
-        "<g style=\"font-kerning:none\" xml:space=\"preserve\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\" font-family=\"{}\" font-stretch=\"{}\">",
-        font::FAMILY,
-        font::STRETCH
-    ));
+    line(
+        &mut s,
+        format!(
+            "<g style=\"font-kerning:none\" xml:space=\"preserve\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\" font-family=\"{}\" font-stretch=\"{}\">",
+            font::FAMILY,
+            font::STRETCH
+        ),
+    );
     for g in &scene.groups {
-        line(format!("<g id=\"{}\">", escape(&element_id(scene, &g.id))));
+        line(&mut s, format!("<g id=\"{}\">", escape(&element_id(scene, &g.id))));
         let mut parts = g.parts.iter().peekable();
         for (i, item) in g.items.iter().enumerate() {
             if let Some(p) = parts.peek().filter(|p| p.items.start == i) {
-                line(format!("<g id=\"{}\">", escape(&element_id(scene, &p.id))));
+                line(&mut s, format!("<g id=\"{}\">", escape(&element_id(scene, &p.id))));
             }
-            let element = item_element(item, &ink).map_err(|e| match e {
+            item_element(&mut s, item, &ink).map_err(|e| match e {
                 BackendError::NonFinite { value, .. } => {
                     BackendError::NonFinite { group: g.id.clone(), value, item: format!("{item:?}") }
                 }
                 other => other,
             })?;
-            line(element);
+            s.push('\n');
             if parts.peek().is_some_and(|p| p.items.end == i + 1) {
                 parts.next();
-                line("</g>".into());
+                line(&mut s, "</g>".into());
             }
         }
-        line("</g>".into());
+        line(&mut s, "</g>".into());
     }
-    line("</g>\n</svg>".into());
+    line(&mut s, "</g>\n</svg>".into());
     Ok(s)
 }
 

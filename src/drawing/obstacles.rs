@@ -4,10 +4,14 @@
 //! (an arrowhead, a dot) is its outline, which also catches a box that swallows it whole.
 
 use super::grid::{self, Grid};
-use super::path::{Path, Seg};
 use super::scene::Item;
 use crate::num::math::Norm;
-use kurbo::{Point, Rect, Shape};
+use flatten::{meets, pieces_of, reach, stroke_pieces};
+use kurbo::{Point, Rect};
+use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
+
+mod flatten;
+pub use flatten::segments;
 
 /// Flattening tolerance of curves, mm: far below a line's width.
 pub const FLATTEN: f64 = 0.02;
@@ -48,109 +52,14 @@ impl grid::Listed for Stroke {
 #[derive(Default, Clone)]
 pub struct Obstacles {
     pieces: Vec<(Piece, usize)>,
+    /// The segment that last met a box and the one a segment last crossed, asked first.
+    hints: Hints,
     /// The segments, and apart from them the text boxes and discs: a leader's questions
     /// are about one kind, and a sheet holds many more segments than texts.
     strokes: Grid<Stroke>,
     boxes: Grid,
     /// The pieces' bounds together.
     extent: Option<Rect>,
-}
-
-/// The segments an item draws (none for a text).
-pub fn segments(item: &Item) -> Vec<(Point, Point)> {
-    let bez = match item {
-        Item::Path { path, .. } => path.to_bez(),
-        Item::Fill { path } => {
-            let mut p = path.clone();
-            p.closed = true;
-            p.to_bez()
-        }
-        Item::Circle { c, r, .. } => kurbo::Circle::new(*c, *r).to_path(FLATTEN / 10.0),
-        Item::Text(_) => return Vec::new(),
-    };
-    let mut out = Vec::new();
-    let (mut start, mut last) = (Point::ZERO, Point::ZERO);
-    kurbo::flatten(bez.iter(), FLATTEN, |el| match el {
-        kurbo::PathEl::MoveTo(p) => (start, last) = (p, p),
-        kurbo::PathEl::LineTo(p) => {
-            out.push((last, p));
-            last = p;
-        }
-        kurbo::PathEl::ClosePath => {
-            if last != start {
-                out.push((last, start));
-            }
-            last = start;
-        }
-        _ => {}
-    });
-    out
-}
-
-/// Half a thin line's width, mm: its ink is within the labels' clearance of its centre line.
-const THIN_HALF: f64 = 0.125;
-
-/// An item's pieces, tagged `k`, appended to `out`: a text's letters' boxes; a line's
-/// segments, and a thick line's edges too (its ink reaches past its centre line further
-/// than a label's clearance).
-fn pieces_of(item: &Item, k: usize, out: &mut Vec<(Piece, usize)>) {
-    match item {
-        Item::Text(t) => out.extend(t.core_boxes().map(|b| (Piece::TextBox(b), k))),
-        _ => stroke_pieces(item, &segments(item), k, out),
-    }
-}
-
-/// A drawn item's pieces from its [`segments`] `segs`, as [`pieces_of`].
-fn stroke_pieces(item: &Item, segs: &[(Point, Point)], k: usize, out: &mut Vec<(Piece, usize)>) {
-    let edge = pen_width(item).map_or(0.0, |w| w / 2.0 - THIN_HALF);
-    if edge > 0.0 {
-        for &(a, b) in segs.iter().filter(|(a, b)| (*b - *a).norm() > 0.0) {
-            let n = (b - a).unit().turn_90() * edge;
-            out.push((Piece::Segment(a + n, b + n), k));
-            out.push((Piece::Segment(a - n, b - n), k));
-        }
-    }
-    out.extend(segs.iter().map(|&(a, b)| (Piece::Segment(a, b), k)));
-}
-
-/// A box every piece of a drawn item lies in, found without flattening it (its points and
-/// control points, an arc's whole circle, half its pen beyond, and a margin for the
-/// flattening's tolerance); none for a text (its letters' boxes are its pieces).
-fn reach(item: &Item) -> Option<Rect> {
-    let path_box = |path: &Path| {
-        path.segs.iter().fold(Rect::from_points(path.start, path.start), |r, seg| match seg {
-            Seg::Line(p) => r.union_pt(*p),
-            Seg::Cubic(p1, p2, p3) => r.union_pt(*p1).union_pt(*p2).union_pt(*p3),
-            Seg::Arc(a) => {
-                let rad = a.radii.x.max(a.radii.y);
-                r.union(Rect::from_center_size(a.center, (2.0 * rad, 2.0 * rad)))
-            }
-        })
-    };
-    let (r, pen) = match item {
-        Item::Path { path, pen } => (path_box(path), pen.width),
-        Item::Fill { path } => (path_box(path), 0.0),
-        Item::Circle { c, r, pen, .. } => (Rect::from_center_size(*c, (2.0 * r, 2.0 * r)), pen.width),
-        Item::Text(_) => return None,
-    };
-    let out = pen / 2.0 + REACH_SLACK;
-    Some(r.inflate(out, out))
-}
-
-/// Far beyond a curve's flattening tolerance, mm.
-const REACH_SLACK: f64 = 0.1;
-
-/// Whether the closed boxes `a` and `b` share a point.
-fn meets(a: Rect, b: Rect) -> bool {
-    a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1
-}
-
-/// The width of an item's stroke, if it has one.
-fn pen_width(item: &Item) -> Option<f64> {
-    match item {
-        Item::Path { pen, .. } | Item::Circle { pen, filled: false, .. } => Some(pen.width),
-        _ => None,
-    }
 }
 
 impl Obstacles {
@@ -196,6 +105,13 @@ impl Obstacles {
         Obstacles::of_pieces(pieces)
     }
 
+    /// The same index without the pieces whose tags `drop` names (a drawing without its
+    /// breakable lines): what [`Obstacles::of_items_within`] of the items kept gives, but
+    /// for the tags, which count here only as telling items apart.
+    pub fn without(&self, drop: impl Fn(usize) -> bool) -> Obstacles {
+        Obstacles::of_pieces(self.pieces.iter().filter(|(_, k)| !drop(*k)).copied().collect())
+    }
+
     /// Pieces with their tags, loaded at once.
     pub fn of_pieces(pieces: Vec<(Piece, usize)>) -> Obstacles {
         Obstacles::of_pieces_in(pieces, grid::CELL)
@@ -215,6 +131,7 @@ impl Obstacles {
         }
         Obstacles {
             pieces,
+            hints: Hints::default(),
             strokes: Grid::with_cells(over, cell, &strokes),
             boxes: Grid::with_cells(over, BOX_CELL, &boxes),
             extent,
@@ -225,6 +142,7 @@ impl Obstacles {
     pub fn empty_over(extent: Rect) -> Obstacles {
         Obstacles {
             pieces: Vec::new(),
+            hints: Hints::default(),
             strokes: Grid::over(extent),
             boxes: Grid::over_cells(extent, BOX_CELL),
             extent: None,
@@ -320,13 +238,24 @@ impl Obstacles {
             Piece::TextBox(t) => t.intersect(r).area() > 0.0,
             Piece::Disc(c, rad) => disc_meets_rect(c, rad, r),
         };
-        !(self.strokes.any_in_box(r, |s| segment_meets_rect(s.a, s.b, r))
-            || self.boxes.any_in_box(r, |id| meets(&self.pieces[id as usize].0)))
+        if self.hinted(&self.hints.met, |p, q| segment_meets_rect(p, q, r)) {
+            return false;
+        }
+        let met = |s: Stroke| segment_meets_rect(s.a, s.b, r) && self.hints.remember(&self.hints.met, s.id);
+        !(self.strokes.any_in_box(r, met) || self.boxes.any_in_box(r, |id| meets(&self.pieces[id as usize].0)))
     }
 
     /// Whether the segment `a`–`b` crosses any stroke segment.
     pub fn segment_crosses_stroke(&self, a: Point, b: Point) -> bool {
-        self.strokes.any_on_segment(a, b, |s| segments_cross(a, b, s.a, s.b))
+        self.hinted(&self.hints.crossed, |p, q| segments_cross(a, b, p, q))
+            || self.strokes.any_on_segment(a, b, |s| {
+                segments_cross(a, b, s.a, s.b) && self.hints.remember(&self.hints.crossed, s.id)
+            })
+    }
+
+    /// Whether the segment `hint` names, if it names one, passes `test`.
+    fn hinted(&self, hint: &AtomicU32, test: impl Fn(Point, Point) -> bool) -> bool {
+        matches!(self.pieces.get(hint.load(Relaxed) as usize), Some(&(Piece::Segment(p, q), _)) if test(p, q))
     }
 
     /// Whether a stroke runs along the segment `a`–`b` over a stretch: nearly parallel to it
@@ -358,6 +287,36 @@ impl Obstacles {
         let meets =
             |id: u32| matches!(self.pieces[id as usize].0, Piece::TextBox(t) if segment_meets_rect(a, b, clear(t)));
         self.boxes.any_on_segment(a, b, meets)
+    }
+}
+
+/// The segments that last answered a question, asked first next time: a label's spots come
+/// round its anchor, and the line that blocked one spot mostly blocks the next (most spots
+/// tried are blocked, and a blocked box's cells were read up to the line that blocks it).
+/// Only the order in which segments are tested changes: every answer is the same.
+#[derive(Debug)]
+struct Hints {
+    met: AtomicU32,
+    crossed: AtomicU32,
+}
+
+impl Default for Hints {
+    fn default() -> Hints {
+        Hints { met: AtomicU32::new(u32::MAX), crossed: AtomicU32::new(u32::MAX) }
+    }
+}
+
+impl Clone for Hints {
+    fn clone(&self) -> Hints {
+        Hints::default()
+    }
+}
+
+impl Hints {
+    /// Remembers piece `id` in `hint`; true, to end the search that found it.
+    fn remember(&self, hint: &AtomicU32, id: u32) -> bool {
+        hint.store(id, Relaxed);
+        true
     }
 }
 

@@ -124,7 +124,18 @@ pub fn clear_turn_arrow(
         turn_arrow(&mut p, c, r, start, sweep_deg, ccw, pen);
         p
     };
-    let crossings = |p: &Group| p.items.iter().flat_map(segments).map(|(a, b)| drawn.hits_segment(a, b)).sum::<usize>();
+    // Its crossings, counted up to one past `most`: a start crossing more than the best so
+    // far cannot win, and is left as soon as that is known.
+    let crossings = |p: &Group, most: usize| {
+        let mut n = 0;
+        for (a, b) in p.items.iter().flat_map(segments) {
+            n += drawn.hits_segment(a, b);
+            if n > most {
+                break;
+            }
+        }
+        n
+    };
     let turn = |a: f64| {
         let d = (a - pref_deg).rem_euclid(360.0);
         d.min(360.0 - d)
@@ -156,7 +167,14 @@ pub fn clear_turn_arrow(
     let mut best: Option<((usize, f64), f64)> = None;
     for (_, a) in starts {
         let p = probe(a);
-        let key = (crossings(&p), -head_room(&p));
+        let most = best.map_or(usize::MAX, |(b, _)| b.0);
+        let crossed = crossings(&p, most);
+        if crossed > most {
+            // Beaten by the best on crossings alone (and crossing lines, it cannot end the
+            // search): its room is not measured.
+            continue;
+        }
+        let key = (crossed, -head_room(&p));
         if best.is_none_or(|(b, _)| key.0 < b.0 || (key.0 == b.0 && key.1 < b.1)) {
             best = Some((key, a));
         }

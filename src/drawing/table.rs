@@ -75,26 +75,32 @@ impl Table {
         self.label_width() + self.cell_width() * self.header.len() as f64
     }
 
-    /// The title's lines: wrapped to the grid's width when it is wider (at least 60 mm at
-    /// 2.5 mm lettering, more at larger).
-    fn title_lines(&self) -> Vec<String> {
-        wrap(&self.title, self.title_text(), self.grid_width().max(60.0 * self.k()))
+    /// The title's lines: wrapped to the grid's width `grid_w` when it is wider (at least
+    /// 60 mm at 2.5 mm lettering, more at larger).
+    fn title_lines(&self, grid_w: f64) -> Vec<String> {
+        wrap(&self.title, self.title_text(), grid_w.max(60.0 * self.k()))
     }
 
-    /// Height of the title above the grid, mm.
-    fn title_height(&self) -> f64 {
+    /// Height of the title of `lines` above the grid, mm.
+    fn title_height(&self, lines: &[String]) -> f64 {
         let h = self.title_text();
-        7.0 + (h - TITLE_TEXT) + (self.title_lines().len().max(1) - 1) as f64 * h * LINE_PITCH
+        7.0 + (h - TITLE_TEXT) + (lines.len().max(1) - 1) as f64 * h * LINE_PITCH
     }
 
     /// Width and height including the title.
     pub fn size(&self) -> (f64, f64) {
-        let title = self
-            .title_lines()
-            .iter()
-            .map(|l| Text::new(Point::ZERO, l.as_str(), self.title_text(), Anchor::Start).bbox().width())
-            .fold(0.0, f64::max);
-        (self.grid_width().max(title), self.row_h() * (self.rows.len() + 1) as f64 + self.title_height())
+        // The grid's width measures every cell: measured once here, not again for the
+        // title's lines and their height (a sheet sizes its tables for every layout it tries).
+        let grid_w = self.grid_width();
+        self.size_with(grid_w, &self.title_lines(grid_w))
+    }
+
+    /// [`Table::size`] of the grid's width `grid_w` and the title's `lines`.
+    fn size_with(&self, grid_w: f64, lines: &[String]) -> (f64, f64) {
+        let title =
+            lines.iter().map(|l| Text::new(Point::ZERO, l.as_str(), self.title_text(), Anchor::Start).bbox().width());
+        let title = title.fold(0.0, f64::max);
+        (grid_w.max(title), self.row_h() * (self.rows.len() + 1) as f64 + self.title_height(lines))
     }
 
     /// Draws the table with its top-left corner (title included) at `at`.
@@ -107,17 +113,12 @@ impl Table {
 
     /// The title, the rules and the cells; returns the box taken.
     fn draw_grid(&self, g: &mut Group, at: Point) -> Rect {
-        let (outer_w, h) = self.size();
         let w = self.grid_width();
+        let lines = self.title_lines(w);
+        let (outer_w, h) = self.size_with(w, &lines);
         let title_h = self.title_text();
-        paragraph(
-            g,
-            Point::new(at.x, at.y + 4.0 + (title_h - TITLE_TEXT)),
-            &self.title_lines(),
-            title_h,
-            Anchor::Start,
-        );
-        let top = at.y + self.title_height();
+        paragraph(g, Point::new(at.x, at.y + 4.0 + (title_h - TITLE_TEXT)), &lines, title_h, Anchor::Start);
+        let top = at.y + self.title_height(&lines);
         let n_rows = self.rows.len() + 1;
         let (row_h, text_h) = (self.row_h(), self.text_h);
         let bottom = top + row_h * n_rows as f64;

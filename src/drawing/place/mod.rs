@@ -176,11 +176,9 @@ impl Labels {
         let reach = self.requests.iter().flat_map(|r| std::iter::once(r.anchor).chain(r.others.iter().map(|o| o.0)));
         let reach = reach.fold(bounds, |b, p| b.union_pt(p)).inflate(REACH, REACH);
         let mut drawn = Obstacles::of_items_within(&g.items, reach);
-        // The drawing without its breakable lines, where it has any.
-        let mut hard = (!g.breakable.is_empty()).then(|| {
-            let kept = g.items.iter().enumerate().filter(|(k, _)| g.breakable.binary_search(k).is_err());
-            Obstacles::of_items_within(kept.map(|(_, item)| item), reach)
-        });
+        // The drawing without its breakable lines, where it has any: the same pieces but
+        // theirs, taken from `drawn` rather than flattened again.
+        let mut hard = (!g.breakable.is_empty()).then(|| drawn.without(|k| g.breakable.binary_search(&k).is_ok()));
         for &piece in &self.keep_out {
             drawn.add(piece, usize::MAX);
             if let Some(h) = hard.as_mut() {

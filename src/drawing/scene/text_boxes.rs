@@ -15,9 +15,9 @@ impl Text {
     /// a line running 1 mm beside a slanted text does not meet its boxes' corners.
     pub fn core_boxes(&self) -> impl Iterator<Item = Rect> + '_ {
         let mut end: Option<f64> = None;
-        self.placed_runs().flat_map(move |(r, at)| {
+        self.placed_runs().flat_map(move |(r, at, w)| {
             let x0 = end.map_or(at.x, |e| e.min(at.x));
-            let x1 = at.x + self.width_of(r);
+            let x1 = at.x + w;
             end = Some(x1);
             self.turned_pieces(Rect::new(x0, at.y - r.h, x1, at.y), r.h / 2.0)
         })
@@ -26,8 +26,8 @@ impl Text {
     /// As [`Text::bbox`], a rotated text's runs boxed in pieces half as long as its letters
     /// are high (a value set along a slanted dimension line, tested for room beside it).
     pub fn bbox_pieces(&self) -> impl Iterator<Item = Rect> + '_ {
-        self.placed_runs().flat_map(|(r, at)| {
-            let w = self.width_of(r) + r.h * crate::drawing::text::SLANT;
+        self.placed_runs().flat_map(|(r, at, w)| {
+            let w = w + r.h * crate::drawing::text::SLANT;
             self.turned_pieces(Rect::new(at.x, at.y - r.h * 1.05, at.x + w, at.y + r.h * 0.3), r.h / 2.0)
         })
     }
@@ -57,8 +57,8 @@ impl Text {
     /// stays inside the letter's side bearing). The labeller boxes a label the same way, so
     /// a label it sets against a region's edge is measured inside it.
     pub fn bbox(&self) -> Rect {
-        let boxes = self.placed_runs().map(|(r, at)| {
-            let w = self.width_of(r) + r.h * crate::drawing::text::SLANT;
+        let boxes = self.placed_runs().map(|(r, at, w)| {
+            let w = w + r.h * crate::drawing::text::SLANT;
             self.turned(Rect::new(at.x, at.y - r.h * 1.05, at.x + w, at.y + r.h * 0.3))
         });
         boxes.reduce(|a, b| a.union(b)).unwrap_or_else(|| Rect::from_points(self.at, self.at))
