@@ -14,15 +14,7 @@ use tmm_sheets::drawing::labels::Language;
 fn the_plans_take_the_force_columns_room_where_their_largest_grows() {
     for variant in [2, 19] {
         let results = common::catalogue_sheet1("8", variant, Language::Uz).results;
-        let largest = |kind: &str| {
-            let plans = results["scales"][kind].as_array().unwrap();
-            plans
-                .iter()
-                .flat_map(|p| [&p["size_mm"][0], &p["size_mm"][1]])
-                .map(|v| v.as_f64().unwrap())
-                .fold(0.0, f64::max)
-        };
-        let (v, a) = (largest("velocity_plans"), largest("acceleration_plans"));
+        let (v, a) = (largest(&results, "velocity_plans"), largest(&results, "acceleration_plans"));
         let lever = results["forces"]["scales"]["lever_mm"].as_f64().unwrap();
         assert!(v.min(a) >= 78.0, "variant {variant}: largest plans {v:.1} and {a:.1} mm");
         assert!(lever >= 80.0, "variant {variant}: lever {lever:.1} mm");
@@ -39,15 +31,7 @@ fn the_plans_take_the_force_columns_room_where_their_largest_grows() {
 fn the_forces_give_way_to_plans_under_80_mm_down_to_their_own_floors() {
     for (task, variant) in [("10", 16), ("8", 36)] {
         let results = common::catalogue_sheet1(task, variant, Language::Uz).results;
-        let largest = |kind: &str| {
-            let plans = results["scales"][kind].as_array().unwrap();
-            plans
-                .iter()
-                .flat_map(|p| [&p["size_mm"][0], &p["size_mm"][1]])
-                .map(|v| v.as_f64().unwrap())
-                .fold(0.0, f64::max)
-        };
-        let (v, a) = (largest("velocity_plans"), largest("acceleration_plans"));
+        let (v, a) = (largest(&results, "velocity_plans"), largest(&results, "acceleration_plans"));
         let forces = &results["forces"]["scales"];
         let lever = forces["lever_mm"].as_f64().unwrap();
         let side = forces["smallest_polygon_side_mm"].as_f64().unwrap();
@@ -59,4 +43,11 @@ fn the_forces_give_way_to_plans_under_80_mm_down_to_their_own_floors() {
             assert_eq!(layout[key], 0, "task {task} variant {variant}: {key}");
         }
     }
+}
+
+/// The largest side of the largest plan of a `kind` ("velocity_plans") sheet 1's results
+/// list, mm.
+fn largest(results: &serde_json::Value, kind: &str) -> f64 {
+    let plans = results["scales"][kind].as_array().unwrap();
+    plans.iter().flat_map(|p| [&p["size_mm"][0], &p["size_mm"][1]]).map(|v| v.as_f64().unwrap()).fold(0.0, f64::max)
 }
