@@ -31,6 +31,7 @@ pub(super) fn better(l: &Composed, rule: &Composed, margin: f64) -> bool {
 /// labelled polygon side, lever and group drawing where those are under what reads plainly
 /// (`POLYGON_SIDE_MIN`, [`LEVER_READABLE`], [`DRAWING_READABLE`]), and tables 3–5 together
 /// where they were.
+#[derive(Clone, Copy)]
 pub(super) struct Floors {
     plan: f64,
     side: f64,

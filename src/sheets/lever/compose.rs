@@ -208,7 +208,7 @@ fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> 
         let floors = Floors::of(&widest);
         // Or, keeping the mechanism's scale, the forces shrunk as far as larger plans may
         // shrink them.
-        let for_plans = Floors::of(&widest).for_larger_plans();
+        let for_plans = floors.for_larger_plans();
         let kept = |c: &Composed| floors.kept(c) || (for_plans.kept(c) && c.scales.mu_l <= widest.scales.mu_l);
         for (_, next) in larger {
             let drawn = narrow(next)?;
