@@ -253,3 +253,36 @@ fn drawn_texts(svg: &str, id: &str) -> Vec<String> {
     }
     out
 }
+
+/// The values the project gives are printed as given, on the sheet and in the note alike:
+/// the worked example's m = 5, α = 20, c* = 0,25 (sheet 2) and l = 105, β_max = 25,
+/// r_rol = 14, the allowed pressure angles 45 (sheet 3), not 5,000, 0,2500, 105,0, 14,00,
+/// 45,00; a computed value keeps its four significant digits (α_max = 45,00, p = 15,71).
+#[test]
+fn given_values_are_printed_as_given() {
+    let p = fixture("worked-example");
+    let b = built(&p, Language::Ru);
+    let cell = |id: &str| {
+        let (sheet, table) = (id.split('.').next().unwrap(), id.split('.').nth(1).unwrap());
+        let s = b.iter().find(|s| format!("sheet{}", s.output.number) == sheet).unwrap();
+        let t = s.output.tables.iter().find(|t| t.table.id == table).unwrap();
+        let md = report::markdown(t, sheet);
+        let line = md.lines().find(|l| l.contains(&format!("<a id=\"{id}\"></a>"))).unwrap().to_string();
+        line.trim_end_matches(" |").rsplit(" | ").next().unwrap().to_string()
+    };
+    for (id, printed) in [
+        ("sheet2.pair.m", "5"),
+        ("sheet2.pair.alpha", "20"),
+        ("sheet2.pair.h_a_star", "1"),
+        ("sheet2.pair.c_star", "0,25"),
+        ("sheet2.pair.a_w", "90"),
+        ("sheet2.pair.p", "15,71"),
+        ("sheet3.results.l", "105"),
+        ("sheet3.results.beta_max", "25"),
+        ("sheet3.results.r_roller", "14"),
+        ("sheet3.results.alpha_allowed_rise", "45"),
+        ("sheet3.results.alpha_max_rise", "45,00"),
+    ] {
+        assert_eq!(cell(id), printed, "{id}");
+    }
+}
