@@ -256,7 +256,7 @@ fn drawn_texts(svg: &str, id: &str) -> Vec<String> {
 
 /// The values the project gives are printed as given, on the sheet and in the note alike:
 /// the worked example's m = 5, α = 20, c* = 0,25 (sheet 2) and l = 105, β_max = 25,
-/// r_rol = 14, the allowed pressure angles 45 (sheet 3), not 5,000, 0,2500, 105,0, 14,00,
+/// r_rol = 15, the allowed pressure angles 45 (sheet 3), not 5,000, 0,2500, 105,0, 15,00,
 /// 45,00; a computed value keeps its four significant digits (α_max = 45,00, p = 15,71).
 #[test]
 fn given_values_are_printed_as_given() {
@@ -279,7 +279,7 @@ fn given_values_are_printed_as_given() {
         ("sheet2.pair.p", "15,71"),
         ("sheet3.results.l", "105"),
         ("sheet3.results.beta_max", "25"),
-        ("sheet3.results.r_roller", "14"),
+        ("sheet3.results.r_roller", "15"),
         ("sheet3.results.alpha_allowed_rise", "45"),
         ("sheet3.results.alpha_max_rise", "45,00"),
     ] {

@@ -30,7 +30,7 @@ use tmm_sheets::cams::follower::Follower;
 use tmm_sheets::cams::integrate::chords;
 use tmm_sheets::cams::laws::{Program, Standard as Law};
 use tmm_sheets::cams::radius::{Allowed, Phase, Placement};
-use tmm_sheets::cams::{CamSpec, Design, Roller, Sense, design};
+use tmm_sheets::cams::{CamSpec, CamWarning, Design, Roller, Sense, design};
 
 // ------------------------------------------------------------------------------------------
 // The laws, coded here: S(x) and S′(x) on the phase, x ∈ [0, 1].
@@ -938,4 +938,25 @@ fn chord_integration_of_the_cosine_law_converges_as_one_over_n_squared() {
             assert!((ratio - 4.0).abs() < 0.8, "{phase:?} n = {n}: ratio {ratio}");
         }
     }
+}
+
+/// The automatic roller is inside the course's 0.25–0.4·r_min (rounded up to a whole mm, it
+/// was 14 mm = 0.2485·r_min on the guide's rocker rounded down), or smaller with the
+/// warning that says why: the profile's curvature.
+#[test]
+fn the_automatic_roller_is_inside_the_course_range_or_warned() {
+    let cases = translating_cases().into_iter().chain(rocker_cases()).chain(extreme_cases());
+    for (label, cam) in cases {
+        let d = design(&cam.spec(Placement::Free, Roller::Auto)).unwrap();
+        let share = d.roller / d.centre.r_min;
+        let mm = d.roller * 1000.0;
+        assert!((mm - mm.round()).abs() < 1e-9 || mm < 2.0, "{label}: {mm} mm is not a whole millimetre");
+        if !d.warnings.iter().any(|w| matches!(w, CamWarning::RollerBelowCourse { .. })) {
+            assert!((0.25..=0.4).contains(&share), "{label}: roller {mm} mm = {share}·r_min");
+        } else {
+            assert!(share < 0.25, "{label}: warned, yet {share}·r_min");
+        }
+    }
+    let d = design(&guide_rocker(L::Sine).spec(Placement::Free, Roller::Auto)).unwrap();
+    assert_eq!((d.roller * 1000.0).round(), 15.0, "0.25·56.34 mm = 14.08 mm, up to 15 mm");
 }

@@ -148,7 +148,7 @@ pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
     let roller = match spec.roller {
         Roller::Knife => 0.0,
         Roller::Auto => {
-            let course = round_down_mm(AUTO_SHARE * centre.r_min);
+            let course = round_up_mm(AUTO_SHARE * centre.r_min);
             let limit = CURVATURE_SHARE * rho_min;
             if course <= limit {
                 course
@@ -179,6 +179,15 @@ pub fn design(spec: &CamSpec) -> Result<Design, CamError> {
         Phase::BOTH.map(|ph| radius::sup(ph.span(&spec.program), |phi| profile.pressure_angle_on_profile(phi)));
     let max_pressure = max_pressure.map(|(phi, a)| (a, phi));
     Ok(Design { spec: spec.clone(), region, centre, profile, rho_min, rho_min_phi, roller, max_pressure, warnings })
+}
+
+/// The course's share of r_min rounded up to a whole millimetre (0.1 mm below 2 mm): rounded
+/// down it would leave the course's 0.25–0.4·r_min (14 mm = 0.2485·r_min on the worked
+/// example); rounded up it stays inside, a step being at most 0.6 of a share of 2 mm or more.
+fn round_up_mm(r: f64) -> f64 {
+    let r_mm = mm(r);
+    let step = if r_mm >= 2.0 { 1.0 } else { 0.1 };
+    metres((r_mm / step - tol::WHOLE_STEP).ceil() * step)
 }
 
 /// A radius rounded down to a whole millimetre when it is at least 2 mm, to 0.1 mm below.

@@ -7,6 +7,7 @@
 //! knows no domain: it draws whatever geometry a sheet hands it.
 
 pub mod along;
+pub mod columns;
 pub mod fmt;
 pub mod frame;
 pub mod grid;

@@ -19,7 +19,8 @@ pub fn wheels(p: &Pair) -> NumTable {
         columns: vec![Column::labelled("1"), Column::labelled("2")],
         rows: vec![
             named("z", "", Unit::None, col(&|i| f64::from(w[i].z))).counted(),
-            named("x", "", Unit::None, col(&|i| w[i].shift)),
+            // Given shifts as given (0,6 and 0,36); chosen ones at four significant digits.
+            named("x", "", Unit::None, col(&|i| w[i].shift)).exactly(),
             // The course's least shift, (17 − z)/17 for α = 20°, h_a* = 1.
             named("x", "min", Unit::None, col(&|i| w[i].x_min_course)),
             named("r", "", Unit::Mm, col(&|i| mm(w[i].pitch))),

@@ -141,12 +141,13 @@ pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {
         id: "inertia",
         columns,
         rows: vec![
-            per("m", Sub::None, Unit::Kg, &|i| i.mass),
+            // Given: printed as given (21 and 500 kg, not 21,0 and 500,0).
+            per("m", Sub::None, Unit::Kg, &|i| i.mass).exactly(),
             per("G", Sub::None, Unit::N, &|i| i.weight),
             per("a", Sub::name("S"), Unit::MPerS2, &|i| i.a_s.norm()),
             per("P", Sub::Force(ForceKind::Inertia, String::new()), Unit::N, &|i| i.force.norm()),
             per("ε", Sub::None, Unit::PerS2, &|i| i.eps.abs()),
-            per("J", Sub::name("S"), Unit::KgM2, &|i| i.j),
+            per("J", Sub::name("S"), Unit::KgM2, &|i| i.j).exactly(),
             per("M", Sub::Force(ForceKind::Inertia, String::new()), Unit::NM, &|i| i.moment.abs()),
         ],
     };

@@ -20,7 +20,7 @@ use crate::drawing::view::View;
 use crate::gears::pair::Pair;
 use crate::num::math::{Norm, from_angle, tan};
 use crate::num::units::mm;
-use kurbo::{Rect, Vec2};
+use kurbo::{Point, Rect, Vec2};
 
 /// The dimension arcs of s and e this far inside wheel 1's root circle, and p's further in, mm:
 /// 20 mm apart, so that a value the placer sets under its arc is still nearer its own arc.
@@ -165,15 +165,15 @@ const A_W_ROOM: f64 = 30.0;
 
 /// The centre distance a_w from O1 to O2 (`teeth`: the teeth's drawn box): extension lines
 /// from both centres to the right, the dimension line clear of the teeth (it crosses only the
-/// wheels' circles), its value beside it a quarter of the way up from O1, in wheel 1's body
-/// where the drawing is empty. With O2 off the drawing's `area` (a large wheel 2), the line
-/// runs from O1's extension line to the area's top with one arrow. Not drawn when O1 is off
-/// the area or no room is left right of the teeth: the table gives a_w.
-pub fn centre_distance(g: &mut Group, labels: &mut Labels, v: View, area: Rect, p: &Pair, teeth: Rect, lang: Language) {
+/// wheels' circles). With O2 off the drawing's `area` (a large wheel 2), the line runs from
+/// O1's extension line to the area's top with one arrow. Not drawn when O1 is off the area
+/// or no room is left right of the teeth: the table gives a_w. Returns the dimension line
+/// for [`centre_distance_value`].
+pub fn centre_distance(g: &mut Group, v: View, area: Rect, p: &Pair, teeth: Rect) -> Option<(Point, Point)> {
     let (o1, o2) = (v.p(Vec2::ZERO), v.p(Vec2::new(0.0, p.centre_distance)));
     let x = teeth.x1 + A_W_CLEAR;
     if !area.contains(o1) || x + A_W_ROOM > area.x1 {
-        return;
+        return None;
     }
     let far = if area.contains(o2) {
         symbols::dimension(g, o2, o1, Vec2::new(x - o1.x, 0.0));
@@ -181,15 +181,31 @@ pub fn centre_distance(g: &mut Group, labels: &mut Labels, v: View, area: Rect, 
     } else {
         // O2 off the drawing: the dimension line broken off at the drawing's edge with its
         // one arrow at O1's extension line (GOST 2.307), its value the whole a_w.
-        g.line(kurbo::Point::new(o1.x + 1.0, o1.y), kurbo::Point::new(x + 2.0, o1.y), THIN);
-        let top = kurbo::Point::new(x, area.y0.max(o2.y) + 2.0);
-        g.line(kurbo::Point::new(x, o1.y), top, THIN);
-        symbols::arrowhead(g, kurbo::Point::new(x, o1.y), Vec2::new(0.0, 1.0));
+        g.line(Point::new(o1.x + 1.0, o1.y), Point::new(x + 2.0, o1.y), THIN);
+        let top = Point::new(x, area.y0.max(o2.y) + 2.0);
+        g.line(Point::new(x, o1.y), top, THIN);
+        symbols::arrowhead(g, Point::new(x, o1.y), Vec2::new(0.0, 1.0));
         top.y
     };
+    Some((Point::new(x, o1.y), Point::new(x, far)))
+}
+
+/// a_w's value along its dimension line `line` (GOST 2.307: turned, read upward), where it
+/// is clear of the drawing; else level beside it a quarter of the way up from O1, in wheel
+/// 1's body where the drawing is empty, placed with the labels.
+pub fn centre_distance_value(
+    g: &mut Group,
+    (labels, drawn): (&mut Labels, &mut Drawn),
+    area: Rect,
+    p: &Pair,
+    (o1, far): (Point, Point),
+    lang: Language,
+) {
     let value = LabelText::new("a", "w").with_tail(format!(" = {}", fmt::dimension(mm(p.centre_distance), lang)));
-    let at = kurbo::Point::new(x, o1.y + (far - o1.y) * 0.25);
-    labels.add_ranked(at, Vec2::new(1.0, 0.0), value, TEXT_H, 1);
+    match along_line((drawn.sync(g), area), (o1, far), (&value, TEXT_H), Some(Vec2::new(-1.0, 0.0))) {
+        Some(text) => drawn.set(g, Set::beside(text)),
+        None => labels.add_ranked(o1 + (far - o1) * 0.25, Vec2::new(1.0, 0.0), value, TEXT_H, 1),
+    }
 }
 
 /// The world angles (degrees from wheel 1's centre, y up) tried for the heights' radial

@@ -104,9 +104,12 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     let points = MeshPoints::of(p);
     let tau = draw_lines(g, v, area, pp, p, &points);
     let contact_ratio_drawn = draw_arc_of_action(g, v, inp, &fl1, centres[0][1], &points);
-    super::mesh_dimensions::centre_distance(g, labels, v, area, p, teeth, inp.lang);
+    let a_w = super::mesh_dimensions::centre_distance(g, v, area, p, teeth);
     // One index of the drawing for the dimensions' values, each added to it as it is set.
     let mut drawn = super::mesh_dimensions::Drawn::of(g);
+    if let Some(line) = a_w {
+        super::mesh_dimensions::centre_distance_value(g, (labels, &mut drawn), area, p, line, inp.lang);
+    }
     super::mesh_dimensions::heights(g, (labels, &mut drawn), v, area, p, teeth, inp.lang);
     super::mesh_dimensions::draw(g, (labels, &mut drawn), v, area, p, centres[0][0], inp.lang);
     super::mesh_dimensions::base_pitch(g, (labels, &mut drawn), (v, area), p, centres[0][1], inp.lang);
@@ -302,7 +305,10 @@ fn senses_of_rotation(g: &mut Group, labels: &mut Labels, v: View, area: Rect, m
         let c = v.p(q);
         if area.contains(c) {
             g.dot(c, 0.8);
-            let start = if ccw { 200.0 } else { 20.0 };
+            // Under the centre, else (a centre near the drawing's foot: its arc ran into the
+            // notes under it) over it.
+            let low = c.y + 10.0 > area.y1;
+            let start = if ccw { 200.0 } else { 20.0 } + if low { 180.0 } else { 0.0 };
             crate::drawing::symbols::turn_arrow(g, c, 9.0, start, 110.0, ccw, THIN);
             // Named beside the arrow's middle, else beside its tail or its head, outward:
             // a centre near the drawing's edge leaves room on one side only.

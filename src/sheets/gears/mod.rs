@@ -23,6 +23,7 @@ pub use teeth_view::INVOLUTE_PIECES;
 use super::notes::Room;
 use super::scaffold::Composition;
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};
+use crate::drawing::columns::{self, Para};
 use crate::drawing::fmt;
 use crate::drawing::frame;
 use crate::drawing::labels::Language;
@@ -31,7 +32,7 @@ use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::table::{self, CELL_TEXT};
-use crate::drawing::text::{TooLong, paragraph, wrap};
+use crate::drawing::text::{TooLong, wrap};
 use crate::gears::pair::PairWarning;
 use crate::gears::sliding::Sliding;
 use crate::gears::tooth::Outline;
@@ -196,11 +197,24 @@ fn mesh_group(
     );
     let at = crate::drawing::frame::clear_of_designation_box(Point::new(region.x0 + 2.0, region.y0 + 6.0), 5.0);
     mesh.text(Text::new(at, title, 5.0, Anchor::Start));
-    // The notes' height: four lines of results and the notes, each wrapped.
-    let notes_w = region.width() - 4.0;
-    let wrapped = |n: &str| wrap(n, CELL_TEXT, notes_w);
-    let lines: usize = 4 + notes.iter().map(|n| wrapped(n).len()).sum::<usize>();
-    let notes_h = lines as f64 * CELL_TEXT * crate::drawing::text::LINE_PITCH + lines as f64 * 0.5 + 6.0;
+    // The notes' height: four lines of results (their numbers come from the drawing, not
+    // drawn yet: set here with the exact contact ratio's, as wide) and the notes, in columns.
+    // Left of the title block where the region reaches down beside it (set across the
+    // region, the notes' last column ran into it).
+    let title_block = frame::title_block_rect();
+    let notes_w = if region.y1 > title_block.y0 && region.x1 > title_block.x0 {
+        (title_block.x0 - 4.0 - (region.x0 + 2.0)).min(region.width() - 4.0)
+    } else {
+        region.width() - 4.0
+    };
+    let exact = fmt::value(p.pair.contact_ratio, lang);
+    let head_like = [
+        l.scale("1:1"),
+        l.contact_ratio_exact(&exact),
+        l.contact_ratio_drawn(&exact, &fmt::percent_difference(0.0, lang)),
+        l.involute_note(&fmt::bound_above(0.5, lang)),
+    ];
+    let notes_h = columns::set(&note_paras(&head_like, &notes), CELL_TEXT, notes_w).height + 6.0;
     let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
     let room = Room { field: "gears.assumptions", place: "notes under the mesh", size: (notes_w, NOTES_MAX_H) };
     room.check(&assumptions, notes_h)?;
@@ -221,7 +235,6 @@ fn mesh_group(
         mesh.part_from("mesh.sliding", start);
     }
     let start = mesh.mark();
-    let mut y = area.y1 + 5.0;
     let eps = &fmt::value;
     let diff = (drawn.contact_ratio_drawn - p.pair.contact_ratio) / p.pair.contact_ratio * 100.0;
     let head = [
@@ -230,11 +243,15 @@ fn mesh_group(
         l.contact_ratio_drawn(&eps(drawn.contact_ratio_drawn, lang), &fmt::percent_difference(diff, lang)),
         l.involute_note(&fmt::bound_above(drawn.involute_deviation * 1e6, lang)),
     ];
-    for n in head.iter().chain(&notes) {
-        y = paragraph(&mut mesh, Point::new(region.x0 + 2.0, y), &wrapped(n), CELL_TEXT, Anchor::Start) + 0.5;
-    }
+    let set = columns::set(&note_paras(&head, &notes), CELL_TEXT, notes_w);
+    columns::draw(&mut mesh, Point::new(region.x0 + 2.0, area.y1 + 5.0), &set, CELL_TEXT);
     mesh.part_from("mesh.notes", start);
     Ok((mesh, drawn, sliding))
+}
+
+/// The results under the mesh and its notes, as paragraphs.
+fn note_paras(head: &[String], notes: &[String]) -> Vec<Para> {
+    head.iter().chain(notes).map(|n| Para::new(n.clone(), 0.5)).collect()
 }
 
 /// The notes under the mesh: shifts chosen, warnings, the user's assumptions.

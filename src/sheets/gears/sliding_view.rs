@@ -114,9 +114,23 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
     let curve = |i: usize, a: f64, b: f64| -> Vec<(f64, f64)> {
         (0..=200).map(|k| a + (b - a) * k as f64 / 200.0).map(|x| (x, s.lambda(i, x).max(lowest))).collect()
     };
+    // Both flanks work only on the active line B1B2: there the curves are main lines, beyond
+    // it thin (each runs on to the plot's floor, or to its N).
     let edge = s.line * 1e-6;
-    plot.line(g, &curve(0, from1, s.line - edge), MAIN);
-    plot.line(g, &curve(1, edge, to2), MAIN);
+    let active = (s.active[0].max(edge), s.active[1].min(s.line - edge));
+    for (i, (a, b)) in [(0, (from1, s.line - edge)), (1, (edge, to2))] {
+        let (lo, hi) = (a.max(active.0), b.min(active.1));
+        if lo >= hi {
+            plot.line(g, &curve(i, a, b), THIN);
+            continue;
+        }
+        plot.line(g, &curve(i, lo, hi), MAIN);
+        for (x0, x1) in [(a, lo), (hi, b)] {
+            if x1 - x0 > edge {
+                plot.line(g, &curve(i, x0, x1), THIN);
+            }
+        }
+    }
     let mut labels = Labels::new();
     // The active line's ends, each with the sliding there; N1, P, N2 on the axis.
     for (&xb, v) in s.active.iter().zip(at_b) {

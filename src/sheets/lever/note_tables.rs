@@ -3,11 +3,12 @@
 
 use super::compose::Input;
 use super::labels::LeverWords;
+use crate::drawing::columns::{self, Para};
 use crate::drawing::frame;
 use crate::drawing::labels::Language;
-use crate::drawing::scene::{Anchor, Group, Text};
+use crate::drawing::scene::Group;
 use crate::drawing::table::{CELL_TEXT, Table};
-use crate::drawing::text::{LabelText, TooLong, paragraph, wrap};
+use crate::drawing::text::{LabelText, TooLong};
 use crate::report::NoteTable;
 use crate::sheets::notes::Room;
 use crate::sheets::scaffold;
@@ -50,14 +51,14 @@ pub(super) fn note_tables(
     // under it (as wide as it: table 2 stands beside it): the band left of the title block
     // would be empty paper, and the plans above get its height.
     let corner_w = w1 + 2.0;
-    let corner_notes = notes_height(&assumptions, corner_w);
+    let corner_notes = notes_height(words, &assumptions, corner_w);
     let in_corner = corner && side_by_side && across.0 + corner_w + 4.0 <= title.x0 && corner_notes <= NOTES_MAX_H;
     if in_corner {
         let top = (title.y0 - 3.0 - h2).min(frame::inner().y1 - 3.0 - corner_notes - 4.0 - h1);
         let region = Rect::new(across.0, top, across.1, frame::inner().y1 - 3.0);
         return Ok(NoteTables { t1, t2, side_by_side, corner: Some(corner_w), assumptions, region });
     }
-    let notes_lines = notes_height(&assumptions, right_w);
+    let notes_lines = notes_height(words, &assumptions, right_w);
     let room =
         Room { field: "mechanism.assumptions", place: "notes above the title block", size: (right_w, NOTES_MAX_H) };
     room.check(&assumptions, notes_lines)?;
@@ -119,25 +120,22 @@ fn label_column(rows: &[(LabelText, Vec<String>)]) -> f64 {
     rows.iter().map(|(l, _)| l.width(CELL_TEXT) + 3.0 + CELL_TEXT * crate::drawing::text::SLANT).fold(14.0, f64::max)
 }
 
-/// Height the notes need in a column of width `w`.
-fn notes_height(assumptions: &[String], w: f64) -> f64 {
-    let lines: usize = assumptions.iter().map(|a| wrap(a, 2.5, w - 2.0).len()).sum();
-    10.0 + if assumptions.is_empty() { 0.0 } else { 4.5 + lines as f64 * 4.0 + assumptions.len() as f64 }
+/// The notes (the exactness note, then the assumptions under their heading) as paragraphs.
+fn note_paras(words: &LeverWords, assumptions: &[String]) -> Vec<Para> {
+    let mut paras = vec![Para::new(words.sheet.exact_note(), 2.0)];
+    if !assumptions.is_empty() {
+        paras.push(Para::heading(format!("{}:", words.common.assumed()), 0.5));
+        paras.extend(assumptions.iter().map(|a| Para::new(a.clone(), 1.0)));
+    }
+    paras
+}
+
+/// Height the notes need set `w` wide: their first baseline 3.5 mm under the top.
+fn notes_height(words: &LeverWords, assumptions: &[String], w: f64) -> f64 {
+    3.5 + columns::set(&note_paras(words, assumptions), 2.5, w - 2.0).height + 0.5
 }
 
 fn notes(g: &mut Group, words: &LeverWords, assumptions: &[String], r: Rect) {
-    let (l, c) = (words.sheet, words.common);
-    let mut y = r.y0 + 3.5;
-    let w = r.width() - 2.0;
-    g.text(Text::new(Point::new(r.x0, y), l.exact_note(), 2.5, Anchor::Start));
-    y += 6.0;
-    if assumptions.is_empty() {
-        return;
-    }
-    g.text(Text::new(Point::new(r.x0, y), format!("{}:", c.assumed()), 2.5, Anchor::Start));
-    y += 4.5;
-    for a in assumptions {
-        let lines = wrap(a, 2.5, w);
-        y = paragraph(g, Point::new(r.x0, y), &lines, 2.5, Anchor::Start) + 1.0;
-    }
+    let set = columns::set(&note_paras(words, assumptions), 2.5, r.width() - 2.0);
+    columns::draw(g, Point::new(r.x0, r.y0 + 3.5), &set, 2.5);
 }

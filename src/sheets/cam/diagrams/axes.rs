@@ -59,7 +59,10 @@ pub(super) fn axis_values(g: &mut Group, plot: &Plot, ticks: &[(f64, String)], s
             let xr = x0 + VALUE_TICK + 0.8;
             let right = Rect::new(x0 + 0.6, y - VALUE_H, xr + w, y);
             // Left of the axis the rays may cross it: they are broken for it.
-            let left = clear(left_box(x0, y, w));
+            // Its letters' own box (the slant and a subscript's drop of the scale's text above
+            // reach past a box of the value's width).
+            let left_text = Text::new(Point::new(x0 - VALUE_TICK - 0.8, y), value.clone(), VALUE_H, Anchor::End);
+            let left = clear(left_box(x0, y, w)) && drawn.is_clear(left_text.bbox().inflate(0.5, 0.5));
             Place { above: *v > 0.0, y_tick, right: clear(right) && off_rays(right), left }
         })
         .collect();

@@ -3,9 +3,10 @@
 
 use super::{ARROW_MAX, ARROW_MIN};
 use crate::drawing::obstacles::segments_cross;
+use crate::drawing::path::Seg;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
-use crate::drawing::scene::{Group, THIN, VECTOR};
+use crate::drawing::scene::{Group, Item, THIN, VECTOR};
 use crate::drawing::symbols::vector;
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
@@ -76,6 +77,9 @@ pub(super) fn unit_directions(forces: impl IntoIterator<Item = (Point, Vec2)>) -
 /// A pushing arrow's shaft passes no other point nearer than this, mm.
 const PUSH_POINT_CLEAR: f64 = 5.0;
 
+/// The least a twin leaving a block is set beside the first, mm: closer, their heads touch.
+const BLOCK_BESIDE_MIN: f64 = 1.8;
+
 /// How far an arrow along a link or another arrow is set beside it, mm.
 const BESIDE: f64 = 2.5;
 /// How far past an earlier twin's tip an arrow slid along its line starts, mm.
@@ -120,12 +124,24 @@ impl Arrows {
         });
         let push = self.push.as_ref().filter(|_| exit == 0.0);
         let into_link = beside_link(&self.links, at, d, (exit, len));
-        let (start, tip) = match way(&self.drawn, push, at, d, (len, into_link.is_some())) {
-            Way::Push => {
+        // At a block a twin pushes into the outline from the other side, else leaves it
+        // beside the first (slid past the first one's tip, P_i5 and P_c5 read as one arrow
+        // with two heads, a teacher's review).
+        let block_twin = if exit > 0.0 { self.block_twin(g, at, d, (exit, len)) } else { None };
+        let (start, tip) = match (block_twin, way(&self.drawn, push, at, d, (len, into_link.is_some()))) {
+            (Some(BlockTwin::Push), _) => {
+                self.drawn.push((at, -d, exit + len));
+                (at - d * (exit + len), at - d * exit)
+            }
+            (Some(BlockTwin::Beside(offset)), _) => {
+                self.drawn.push((at, d, exit + len));
+                (at + d * exit + offset, at + d * (exit + len) + offset)
+            }
+            (None, Way::Push) => {
                 self.drawn.push((at, -d, len));
                 (at - d * len, at)
             }
-            Way::Pull(slide) => {
+            (None, Way::Pull(slide)) => {
                 let mut start = at + d * exit;
                 // At a block the forces leave its outline apart already; one slid past a
                 // twin starts away from the point (and a twin drawn pushing ends at it).
@@ -152,6 +168,39 @@ impl Arrows {
 }
 
 impl Arrows {
+    /// How a twin (`d` the way of the one earlier arrow from the block at `at`, `len` long,
+    /// leaving the outline `exit` from the point) stands: pushing into the outline from the
+    /// block's other side, else leaving it beside the first — [`BESIDE`] across `d`, or less
+    /// so that it starts on the block's outline, at least [`BLOCK_BESIDE_MIN`] — on the side
+    /// whose shaft keeps farther from the drawing's lines; each only where its shaft keeps
+    /// 1 mm clear of every line and arrow drawn. `None` (it slides past the first) else, or
+    /// for a third twin.
+    fn block_twin(&self, g: &Group, at: Point, d: Vec2, (exit, len): (f64, f64)) -> Option<BlockTwin> {
+        let n = d.turn_90();
+        let across = |&(_, u, hl, hw): &(Point, Vec2, f64, f64)| n.dot(u).abs() * hl + n.dot(u.turn_90()).abs() * hw;
+        let block = self.blocks.iter().find(|b| (b.0 - at).norm() < 0.5)?;
+        if twins_from(&self.drawn, at, d) != 1 || twins_from(&self.drawn, at, -d) != 0 {
+            return None;
+        }
+        let lines: Vec<(Point, Point)> = drawn_segments(g).collect();
+        // From 1.2 mm off the outline (where the shaft meets it: the outline is 1 mm clear
+        // there) to its far end.
+        let clearance = |a: Point, b: Point| {
+            let from_line = |&(p, q): &(Point, Point)| {
+                let ends = [a, a.midpoint(b), b].map(|x| point_segment_distance(x, (p, q)));
+                if segments_cross(a, b, p, q) { 0.0 } else { ends.into_iter().fold(f64::INFINITY, f64::min) }
+            };
+            lines.iter().map(from_line).fold(f64::INFINITY, f64::min)
+        };
+        if clearance(at - d * (exit + 1.2), at - d * (exit + len)) >= 1.0 {
+            return Some(BlockTwin::Push);
+        }
+        let off = BESIDE.min(0.75 * across(block));
+        let beside = |s: Vec2| clearance(at + d * (exit + 1.2) + s * off, at + d * (exit + len) + s * off);
+        let side = if beside(-n) > beside(n) { -n } else { n };
+        (off >= BLOCK_BESIDE_MIN && beside(side) >= 1.0).then_some(BlockTwin::Beside(side * off))
+    }
+
     /// The side (unit, across `d`) an arrow `len` long from `at` along `d` is set to where
     /// an earlier arrow from the same point lies the opposite way: drawn from the point both,
     /// they read as one arrow with a head at each end (the v-compressor's P_i4 up and G4 down,
@@ -205,6 +254,40 @@ fn beside_link(links: &[(Point, Point)], at: Point, d: Vec2, (exit, len): (f64, 
 /// An arrow's length on paper for a force of `f` at `mu_f`, mm.
 fn length(f: f64, mu_f: f64) -> f64 {
     (f / mu_f).clamp(ARROW_MIN, ARROW_MAX)
+}
+
+/// The straight segments drawn in `g` so far: links, guides, outlines, arrows.
+fn drawn_segments(g: &Group) -> impl Iterator<Item = (Point, Point)> + '_ {
+    g.items.iter().flat_map(|item| {
+        let pts: Vec<Point> = match item {
+            Item::Path { path, .. } => std::iter::once(Some(path.start))
+                .chain(path.segs.iter().map(|s| match s {
+                    Seg::Line(p) => Some(*p),
+                    _ => None,
+                }))
+                .collect::<Option<Vec<Point>>>()
+                .unwrap_or_default(),
+            _ => Vec::new(),
+        };
+        let closing = match item {
+            Item::Path { path, .. } if path.closed && pts.len() > 2 => Some((pts[pts.len() - 1], pts[0])),
+            _ => None,
+        };
+        pts.windows(2).map(|w| (w[0], w[1])).chain(closing).collect::<Vec<_>>()
+    })
+}
+
+/// How a twin at a block stands ([`Arrows::block_twin`]).
+enum BlockTwin {
+    /// Into the outline from the block's other side.
+    Push,
+    /// Leaving the outline beside the first, this far across.
+    Beside(Vec2),
+}
+
+/// How many of the arrows `drawn` earlier leave `at` along `d`.
+fn twins_from(drawn: &[(Point, Vec2, f64)], at: Point, d: Vec2) -> usize {
+    drawn.iter().filter(|(p, e, _)| (*p - at).norm() < 1.0 && e.dot(d) > 1.0 - ALONG).count()
 }
 
 /// How far from `at` along `d` an arrow starts past the far ends of the arrows `drawn`
@@ -292,199 +375,5 @@ pub(super) fn twins_reach(forces: impl IntoIterator<Item = (Point, Vec2)>, mu_f:
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::drawing::path::Seg;
-    use crate::drawing::scene::Item;
-    use kurbo::Rect;
-
-    /// An arrow 11° off the link through its point (3.7 mm of its shaft in the link's
-    /// line) is set beside the link on the side it leaves it toward, whichever way it
-    /// points along the link; 25° off, or leaving a block's outline 4 mm out at 11°, it is
-    /// seen and stays; along the link's line on past its end it is seen too, and stays on
-    /// its line of action through the joint.
-    #[test]
-    fn an_arrow_nearly_along_its_link_is_set_beside_it_on_the_side_it_leaves_toward() {
-        let link = [(Point::new(-20.0, 0.0), Point::new(20.0, 0.0))];
-        let dir =
-            |deg: f64| Vec2::new(crate::num::math::cos(deg.to_radians()), crate::num::math::sin(deg.to_radians()));
-        for deg in [11.0, -11.0, 169.0, -169.0] {
-            let d = dir(deg);
-            let side = beside_link(&link, Point::ZERO, d, (0.0, 15.0)).expect("set beside");
-            assert!(side.dot(d).abs() < 1e-12, "{deg}°: across the arrow");
-            assert!(side.y * d.y > 0.0, "{deg}°: toward the side the arrow leaves to, {side:?}");
-        }
-        assert_eq!(beside_link(&link, Point::ZERO, dir(25.0), (0.0, 15.0)), None);
-        assert_eq!(beside_link(&link, Point::ZERO, dir(11.0), (4.0, 15.0)), None);
-        let end = [(Point::new(-20.0, 0.0), Point::ZERO)];
-        assert!(beside_link(&end, Point::ZERO, dir(177.0), (0.0, 15.0)).is_some(), "into the link from its end");
-        assert_eq!(beside_link(&end, Point::ZERO, dir(3.0), (0.0, 15.0)), None, "on past the link's end");
-        assert_eq!(beside_link(&end, Point::ZERO, dir(12.0), (0.0, 15.0)), None, "leaving the link's end");
-    }
-
-    /// Three forces at one point, two along one line and one a few degrees off it (as a
-    /// weight, an inertia force and a gas force at a piston): each arrow and its leader stay
-    /// on its own line of action through the point, where its moment about any point is
-    /// the force's, and no arrow lies on another.
-    #[test]
-    fn twin_forces_slide_along_their_lines_and_keep_their_arms() {
-        let at = Point::new(50.0, 50.0);
-        let forces = [Vec2::new(0.0, -300.0), Vec2::new(0.0, -120.0), Vec2::new(20.0, -200.0)];
-        let view = View::new(Point::new(20.0, 80.0), 0.01);
-        let spans = spans_drawn(view, at, &forces, None);
-        // The second (same direction as the first) starts past the first's tip.
-        assert!(spans[1].1 > spans[0].2, "{spans:?}");
-    }
-
-    /// Each arrow's unit direction on paper and the least and greatest distance along it
-    /// from the point of its shaft's ends, every end checked to lie on the force's line
-    /// through the point; and whether the room [`twin_rows`] gives them is the farthest
-    /// drawn.
-    fn spans_drawn(view: View, at: Point, forces: &[Vec2], push: Option<Push>) -> Vec<(Vec2, f64, f64)> {
-        let kept = push.clone();
-        let mut arrows =
-            Arrows { view, links: Vec::new(), push, blocks: Vec::new(), drawn: Vec::new(), mu_f: 20.0, h: 2.5 };
-        let mut g = Group::new("test", Rect::new(0.0, 0.0, 100.0, 100.0));
-        let mut labels = Labels::new();
-        let mut spans = Vec::new();
-        for &f in forces {
-            let from = g.items.len();
-            arrows.arrow(&mut g, &mut labels, at, f, LabelText::new("F", ""));
-            let d = view.dir(f) / f.norm();
-            // The shaft's ends (the leader along the line from the point is thin).
-            let mut along: Vec<f64> = Vec::new();
-            for item in &g.items[from..] {
-                let Item::Path { path, pen } = item else { continue };
-                let ends = std::iter::once(path.start).chain(path.segs.iter().filter_map(|s| match s {
-                    Seg::Line(p) => Some(*p),
-                    _ => None,
-                }));
-                for p in ends {
-                    assert!((p - at).cross(d).abs() < 1e-9, "{f:?}: {p:?} is off the line through the point");
-                    if *pen == VECTOR {
-                        along.push((p - at).dot(d));
-                    }
-                }
-            }
-            spans.push((
-                d,
-                along.iter().copied().fold(f64::INFINITY, f64::min),
-                along.iter().copied().fold(0.0, f64::max),
-            ));
-        }
-        // The room a drawing sizes for them is where each arrow's far end is drawn.
-        let rows = twin_rows(forces.iter().map(|&f| (at, view.dir(f))), kept.as_ref(), 20.0);
-        assert_eq!(rows.len(), arrows.drawn.len());
-        for (row, drawn) in rows.iter().zip(&arrows.drawn) {
-            assert!((row.1 - drawn.1).norm() < 1e-9 && (row.2 - drawn.2).abs() < 1e-9, "{row:?} {drawn:?}");
-        }
-        spans
-    }
-
-    /// On the lever the smaller of two twins is drawn pushing, its tip at the point and its
-    /// shaft on the other side, where nothing lies there; a third along the first slides past
-    /// the first's tip. The second slides too where a line of the lever leaves the point on
-    /// the other side, where a force drawn later points that way, or where its shaft would
-    /// reach beyond the arrows slid.
-    #[test]
-    fn twins_push_from_the_free_side_and_slide_where_it_is_taken() {
-        let at = Point::new(50.0, 50.0);
-        let view = View::new(Point::new(20.0, 80.0), 0.01);
-        let forces = [Vec2::new(0.0, -300.0), Vec2::new(0.0, -120.0), Vec2::new(20.0, -200.0)];
-        let on_paper: Vec<(Point, Vec2)> = forces.iter().map(|&f| (at, view.dir(f) / f.norm())).collect();
-        let push = |lines: Vec<(Point, Point)>, later: Option<Vec2>, within: Rect| Push {
-            lines,
-            points: vec![at],
-            forces: on_paper.iter().copied().chain(later.map(|e| (at, e))).collect(),
-            within,
-            keep_lines: true,
-        };
-        let page = Rect::new(0.0, 0.0, 100.0, 100.0);
-        let spans = spans_drawn(view, at, &forces, Some(push(Vec::new(), None, page)));
-        assert!(spans[1].2.abs() < 1e-9 && spans[1].1 < -5.0, "the second pushes: {spans:?}");
-        assert!(spans[2].1 > spans[0].2, "the third slides past the first: {spans:?}");
-        // On paper y runs down: the forces point down the page and the pushing side is
-        // above the point. A line from the point there, 6° off the second's line:
-        let above = vec![(at, at + Vec2::new(3.0, -30.0))];
-        let spans = spans_drawn(view, at, &forces, Some(push(above, None, page)));
-        assert!(spans[1].1 > spans[0].2, "a line: the second slides: {spans:?}");
-        // A force up the page at the point, drawn after them:
-        let spans = spans_drawn(view, at, &forces, Some(push(Vec::new(), Some(Vec2::new(0.0, -1.0)), page)));
-        assert!(spans[1].1 > spans[0].2, "a later force: the second slides: {spans:?}");
-        // The arrows slid reach no higher than the point:
-        let below = Rect::new(0.0, at.y, 100.0, 100.0);
-        let spans = spans_drawn(view, at, &forces, Some(push(Vec::new(), None, below)));
-        assert!(spans[1].1 > spans[0].2, "beyond the slid arrows' box: the second slides: {spans:?}");
-    }
-
-    /// The ends of the vector-pen shafts drawn since item `from`.
-    fn shafts(g: &Group, from: usize) -> Vec<(Point, Point)> {
-        (g.items[from..].iter())
-            .filter_map(|item| match item {
-                Item::Path { path, pen } if *pen == VECTOR => match path.segs.last() {
-                    Some(Seg::Line(p)) => Some((path.start, *p)),
-                    _ => None,
-                },
-                _ => None,
-            })
-            .collect()
-    }
-
-    /// On a group's drawing a force at a link's end pointing into the link is drawn pushing,
-    /// its tip at the joint and its shaft on the link's line past the end; at a point inside
-    /// the link, where the link goes on past the point, it is set beside the link as before.
-    #[test]
-    fn an_arrow_into_its_link_at_the_links_end_pushes_from_outside() {
-        let (a, b) = (Point::new(30.0, 50.0), Point::new(70.0, 50.0));
-        let view = View::new(Point::new(0.0, 100.0), 1.0);
-        let push = Push {
-            lines: vec![(a, b)],
-            points: vec![a, b],
-            forces: vec![(a, Vec2::new(1.0, 0.0))],
-            within: Rect::new(0.0, 0.0, 100.0, 100.0),
-            keep_lines: false,
-        };
-        let mut arrows = Arrows {
-            view,
-            links: vec![(a, b)],
-            push: Some(push),
-            blocks: Vec::new(),
-            drawn: Vec::new(),
-            mu_f: 1.0,
-            h: 3.5,
-        };
-        let mut g = Group::new("test", Rect::new(0.0, 0.0, 100.0, 100.0));
-        let mut labels = Labels::new();
-        arrows.arrow(&mut g, &mut labels, a, Vec2::new(12.0, 0.0), LabelText::new("R", "n"));
-        let [(start, tip)] = shafts(&g, 0)[..] else { panic!("one shaft") };
-        assert!((start.y - a.y).abs() < 1e-9 && (tip.y - a.y).abs() < 1e-9, "on the link's line");
-        assert!(start.x < a.x - 5.0 && tip.x <= a.x, "pushing from outside: {start:?} {tip:?}");
-        // Inside the link (its middle), the link goes on past the point: beside it.
-        let from = g.items.len();
-        arrows.arrow(&mut g, &mut labels, a.midpoint(b), Vec2::new(12.0, 0.0), LabelText::new("P", ""));
-        let [(start, tip)] = shafts(&g, from)[..] else { panic!("one shaft") };
-        assert!(((start.y - a.y).abs() - BESIDE).abs() < 1e-9 && tip.x > start.x, "beside: {start:?} {tip:?}");
-    }
-
-    /// A second force at a point pointing opposite to the first is set beside it, off the
-    /// first's line (a thin line joins it to its point): drawn from the point both, they read
-    /// as one arrow with a head at each end.
-    #[test]
-    fn an_arrow_opposite_to_an_earlier_one_at_its_point_is_set_beside_it() {
-        let at = Point::new(50.0, 50.0);
-        let view = View::new(Point::new(0.0, 100.0), 1.0);
-        let mut arrows =
-            Arrows { view, links: Vec::new(), push: None, blocks: Vec::new(), drawn: Vec::new(), mu_f: 1.0, h: 3.5 };
-        let mut g = Group::new("test", Rect::new(0.0, 0.0, 100.0, 100.0));
-        let mut labels = Labels::new();
-        arrows.arrow(&mut g, &mut labels, at, Vec2::new(0.0, -10.0), LabelText::new("G", ""));
-        let from = g.items.len();
-        arrows.arrow(&mut g, &mut labels, at, Vec2::new(0.0, 10.0), LabelText::new("P", ""));
-        let [(start, tip)] = shafts(&g, from)[..] else { panic!("one shaft") };
-        assert!(((start.x - at.x).abs() - BESIDE).abs() < 1e-9 && start.x == tip.x, "beside: {start:?} {tip:?}");
-        assert!(
-            g.items[from..].iter().any(|i| matches!(i, Item::Path { pen, .. } if *pen == THIN)),
-            "joined to its point"
-        );
-    }
-}
+#[path = "arrows_tests.rs"]
+mod tests;

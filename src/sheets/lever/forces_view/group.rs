@@ -6,8 +6,8 @@ use super::arrows::{Arrows, Push, arrow_scale, twins_reach, unit_directions};
 use super::cells::Sizes;
 use super::inset::{self, Enlarge, Inset, Place};
 use super::legend::{
-    cell_title, equation_lines, force_label, scale_item, text_rows, value_item, with_semicolon, with_short_note,
-    wrap_items,
+    cell_title, equation_lines, equation_rows, force_label, scale_item, text_rows, value_item, with_semicolon,
+    with_short_note, wrap_items,
 };
 use super::polygon::{bbox_of, chain, draw_polygon};
 use super::{ARROW_MAX, ARROW_MIN, ForcesInput, LINE};
@@ -285,7 +285,7 @@ pub(super) fn draw_group_cell(
         ],
         vec![scale_item(inp, "P", layout.mu_p, inp.words.common.unit_n_per_mm())],
     ];
-    let y = text_rows(g, r.x0 + 2.0, bottom + LINE, &layout.equation);
+    let y = equation_rows(g, r.x0 + 2.0, bottom + LINE, &layout.equation);
     let y = text_rows(g, r.x0 + 2.0, y, &layout.legend);
     text_rows(g, r.x0 + 2.0, y, &scales);
 }

@@ -114,6 +114,22 @@ pub(super) fn text_rows(g: &mut Group, x0: f64, mut y: f64, rows: &[Vec<LabelTex
     y
 }
 
+/// A vector equation's rows from `y` down, its terms ("+ Rᵗ₂₄") a word space apart as one
+/// line of text sets them (a term's box ends past its sloped subscript: spaced by boxes,
+/// "Rⁿ₂₄   + Rᵗ₂₄" read as two groups); returns the next line's baseline.
+pub(super) fn equation_rows(g: &mut Group, x0: f64, mut y: f64, rows: &[Vec<LabelText>]) -> f64 {
+    let space = LabelText::new("x x", "").width(3.5) - 2.0 * LabelText::new("x", "").width(3.5);
+    for line in rows {
+        let mut x = x0;
+        for item in line {
+            item.draw(g, Point::new(x, y), 3.5, Anchor::Start);
+            x += item.width(3.5) + space;
+        }
+        y += LINE;
+    }
+    y
+}
+
 pub(super) fn scale_item(inp: &ForcesInput, sub: &str, mu: f64, unit: &str) -> LabelText {
     LabelText::new("μ", sub).with_tail(format!(" = {} {unit}", fmt::localise(&scale::format(mu), inp.words.lang)))
 }
