@@ -22,7 +22,6 @@ use super::scaffold::Composition;
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::cams::follower::Follower;
 use crate::cams::integrate::{self, Integrated};
-use crate::drawing::columns::{self, Para};
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group};
@@ -173,14 +172,10 @@ fn shorter_plan(p: &CamProject, column: &Column, shorter: f64) -> diagrams::Plan
     diagrams::plan(&p.design, (column.width.left - 4.0, column.width.phi), column.room - shorter)
 }
 
-/// The notes set `w` wide as `diagrams_group` draws them: in columns, 1 mm after each note.
-fn notes_set(notes: &[String], w: f64) -> columns::Set {
-    columns::set(&notes.iter().map(|n| Para::new(n.clone(), 1.0)).collect::<Vec<_>>(), CELL_TEXT, w)
-}
-
-/// The notes' height set `w` wide.
+/// The notes' height set `w` wide as `diagrams_group` sets them: each note's lines at their
+/// pitch, 1 mm after each.
 fn notes_h(notes: &[String], w: f64) -> f64 {
-    notes_set(notes, w).height
+    notes.iter().map(|n| wrap(n, CELL_TEXT, w).len() as f64 * LINE_PITCH * CELL_TEXT + 1.0).sum()
 }
 
 /// The height of the column's title set `w` wide, with its margins, mm.
@@ -446,9 +441,7 @@ fn diagrams_group(
     integrated: &[Integrated; 2],
     words: &CamWords,
 ) -> (Group, Scales) {
-    // The notes set as wide as `plan_column` measured them (at the region's own width they
-    // may flow into other columns, and run taller than the room kept for them).
-    let width = column.plan.width;
+    let width = lay.diagrams.width() - 4.0;
     let mut dg = Group::new("diagrams", lay.diagrams);
     let (at, lines) = title_lines(&column.title, lay.diagrams);
     let mut y = paragraph(&mut dg, at, &lines, TITLE_H, Anchor::Start);
@@ -457,8 +450,11 @@ fn diagrams_group(
     let area =
         Rect::new(lay.diagrams.x0 + 2.0, y + 2.0, lay.diagrams.x1, y + 2.0 + column.plan.height + below.max(0.0));
     let drawn = diagrams::draw(&mut dg, area, &column.plan, &p.design, integrated, words);
-    let notes = notes_set(&column.notes, width);
-    y = columns::draw(&mut dg, Point::new(lay.diagrams.x0 + 2.0, drawn.bottom + 4.0), &notes, CELL_TEXT);
+    y = drawn.bottom + 4.0;
+    for n in &column.notes {
+        let at = Point::new(lay.diagrams.x0 + 2.0, y);
+        y = paragraph(&mut dg, at, &wrap(n, CELL_TEXT, width), CELL_TEXT, Anchor::Start) + 1.0;
+    }
     dg.region = Rect::new(lay.diagrams.x0, lay.diagrams.y0, lay.diagrams.x1, (y + 1.0).max(lay.diagrams.y0 + 10.0));
     (dg, drawn.scales)
 }

@@ -479,7 +479,16 @@ fn pole(g: &mut Group, plot: &Plot, pole: Pole, ys: &[f64], mu: f64, words: &Cam
         words.common.unit_mm()
     ));
     text.draw(g, Point::new(p.x - 2.5, p.y + 1.0), 2.5, Anchor::End);
-    ys.iter().map(|&y| (p, Point::new(plot.origin.x, plot.origin.y - y / mu))).collect()
+    // One ray for equal ordinates (a symmetric law's chords): a line drawn twice over is
+    // darker in one renderer than in another.
+    let mut rays: Vec<(Point, Point)> = Vec::with_capacity(ys.len());
+    for &y in ys {
+        let ray = (p, Point::new(plot.origin.x, plot.origin.y - y / mu));
+        if !rays.iter().any(|r| (r.1 - ray.1).hypot2() < 1e-18) {
+            rays.push(ray);
+        }
+    }
+    rays
 }
 
 /// The integration's error on this sheet, in percent of the lift (s) and of the largest
