@@ -286,3 +286,30 @@ fn given_values_are_printed_as_given() {
         assert_eq!(cell(id), printed, "{id}");
     }
 }
+
+/// A quantity a link does not have is printed "—", as the course's tables do, not a 0 that
+/// reads as computed: the worked example's slider 5 has no ε, J_S or M_i; links 2–4 have
+/// all three (given J_S = 0,5 / 1,1 / 36 kg·m²). The CSV and the answers keep the value 0.
+#[test]
+fn a_quantity_a_link_does_not_have_is_printed_as_a_dash() {
+    let p = fixture("worked-example");
+    let b = built(&p, Language::Ru);
+    let s = b.iter().find(|s| s.output.number == 1).unwrap();
+    let t = s.output.tables.iter().find(|t| t.table.id == "inertia").unwrap();
+    let md = report::markdown(t, "sheet1");
+    let cells = |row: &str| -> Vec<String> {
+        let line = md.lines().find(|l| l.contains(&format!("<a id=\"sheet1.inertia.{row}\"></a>"))).unwrap();
+        // The quantity's and its unit's cells, then one a link.
+        line.trim_end_matches(" |").split(" | ").skip(2).map(str::to_string).collect()
+    };
+    for row in ["epsilon", "J_S", "M_i"] {
+        let c = cells(row);
+        assert_eq!(c.len(), 4, "{row}: {c:?}");
+        assert_eq!(c[3], "—", "{row}: the slider's");
+        assert!(c[..3].iter().all(|v| v.replace(',', ".").parse::<f64>().is_ok()), "{row}: {c:?}");
+    }
+    assert_ne!(cells("P_i")[3], "—", "the slider's inertia force is a value");
+    let csv = report::csv(t, "sheet1");
+    let eps = csv.lines().find(|l| l.starts_with("sheet1.inertia.epsilon,")).unwrap();
+    assert!(eps.ends_with(",0.000000000"), "{eps}");
+}

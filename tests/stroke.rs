@@ -1,6 +1,7 @@
-//! The slider's stroke H on sheet 1, against the worked example's stroke computed here from
-//! the project file's numbers alone: O at the origin, OA = 0.12 m, C at (0.33, 0.06),
-//! AB = 0.46, BC = 0.39, BD = 1.5 with D on the line y = 0.06 ahead of B.
+//! The slider's stroke H and the rocker's swing angle ψ on sheet 1, against references
+//! computed here from the project files' numbers alone. The worked example: O at the origin,
+//! OA = 0.12 m, C at (0.33, 0.06), AB = 0.46, BC = 0.39, BD = 1.5 with D on the line y = 0.06
+//! ahead of B.
 // Tests compute their references with the platform's math; only src/ must not (clippy.toml).
 #![allow(clippy::disallowed_methods)]
 
@@ -61,5 +62,32 @@ fn a_strokes_value_slides_along_its_line_to_where_it_has_room() {
         assert_eq!(h.rotate.abs(), 90.0, "{lang:?}: H written along its vertical line");
         let longest = out.results["layout"]["longest_leader_mm"].as_f64().unwrap();
         assert!(longest <= 20.0, "{lang:?}: a leader of {longest} mm");
+    }
+}
+
+/// The rocker's swing angle ψ on sheet 1, against references from the fixtures' lengths
+/// alone: the four-bar's rocker (O1B = 0.15 m, O1 0.2 m from O) is at its extremes where
+/// crank and coupler are in line, OB = 0.18 ± 0.05 m, so ψ is the difference of the angles
+/// at O1 the law of cosines gives for the two; the kulisa's (OA = 0.4 m, OO1 = 0.8 m) where
+/// it touches the crank circle, ψ = 2·asin(0.4 / 0.8) = 60°. A slider's mechanism has none.
+#[test]
+fn a_rockers_swing_angle_is_dimensioned_as_computed_from_its_lengths() {
+    let (r, l, c, d) = (0.05f64, 0.18f64, 0.15f64, 0.2f64);
+    let at_o1 = |ob: f64| ((d * d + c * c - ob * ob) / (2.0 * d * c)).acos();
+    let four_bar = (at_o1(l + r) - at_o1(l - r)).abs().to_degrees();
+    let kulisa = 2.0 * (0.4f64 / 0.8).asin().to_degrees();
+    for (name, psi) in [("four-bar", Some(four_bar)), ("kulisa", Some(kulisa)), ("crank-slider-axial", None)] {
+        let b = &pipeline::build(&fixture(name), &[1]).unwrap()[0];
+        let mech = b.output.scene.groups.iter().find(|g| g.id == "mechanism").unwrap();
+        let drawn: Vec<String> = mech.texts().map(|t| t.plain()).filter(|t| t.starts_with("ψ = ")).collect();
+        match psi {
+            None => assert!(drawn.is_empty(), "{name}: {drawn:?}"),
+            Some(psi) => {
+                assert_eq!(drawn.len(), 1, "{name}: {drawn:?}");
+                let deg: f64 = drawn[0]["ψ = ".len()..].trim_end_matches('°').replace(',', ".").parse().unwrap();
+                // Four significant digits on the sheet.
+                assert!((deg - psi).abs() < 0.006, "{name}: ψ = {deg}°, computed {psi:.4}°");
+            }
+        }
     }
 }

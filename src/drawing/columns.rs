@@ -60,9 +60,26 @@ struct Line {
     breakable: bool,
 }
 
-/// Sets `paras` at lettering height `h` in as many columns as `width` mm hold.
+/// Notes of at most this many lines in one column stay in one: a block that short reads at
+/// a glance, and in two columns it scatters into one- and two-line scraps (the kulisa's
+/// sheet 1: its exactness note alone on the left, the assumption 200 mm to its right).
+pub const SHORT_LINES: usize = 4;
+
+/// Sets `paras` at lettering height `h` in as many columns as `width` mm hold, or in one
+/// where they are [`SHORT_LINES`] lines or fewer in it.
 pub fn set(paras: &[Para], h: f64, width: f64) -> Set {
     let (n, col_w) = columns(width);
+    let single = lines_of(paras, h, width.min(COLUMN_MAX));
+    if n > 1 && single.len() <= SHORT_LINES {
+        return placed(&single, &[0], width.min(COLUMN_MAX));
+    }
+    let lines = lines_of(paras, h, col_w);
+    let starts = balanced_starts(&lines, n);
+    placed(&lines, &starts, col_w)
+}
+
+/// `paras` wrapped at height `h` in a column `col_w` wide, line by line.
+fn lines_of(paras: &[Para], h: f64, col_w: f64) -> Vec<Line> {
     let pitch = LINE_PITCH * h;
     let mut lines = Vec::new();
     for p in paras {
@@ -75,7 +92,11 @@ pub fn set(paras: &[Para], h: f64, width: f64) -> Set {
             lines.push(Line { text, advance: pitch + if end { p.after } else { 0.0 }, breakable });
         }
     }
-    let starts = balanced_starts(&lines, n);
+    lines
+}
+
+/// `lines` placed in columns `col_w` wide, each column starting at its index in `starts`.
+fn placed(lines: &[Line], starts: &[usize], col_w: f64) -> Set {
     let mut set = Set::default();
     for (c, range) in starts.iter().zip(starts.iter().skip(1).chain([&lines.len()])).enumerate() {
         let (from, to) = (*range.0, *range.1);
@@ -194,6 +215,24 @@ mod tests {
         let text: Vec<&str> = s.lines.iter().flat_map(|(_, t)| t.split(' ')).collect();
         assert_eq!(text[..5], ["Drawn", "from", "the", "exact", "values."]);
         assert_eq!(text.last(), Some(&"word299"));
+    }
+
+    #[test]
+    fn notes_of_four_lines_or_fewer_stay_in_one_column() {
+        let paras =
+            [Para::new("Drawn from the exact values.", 2.0), Para::heading("Assumed:", 0.5), Para::new(words(12), 1.0)];
+        let s = set(&paras, 2.5, 390.0);
+        assert_eq!(s.lines.len(), 3);
+        assert!(s.lines.iter().all(|(p, _)| p.x == 0.0), "{:?}", s.lines);
+        // One line more: five lines in one column are set in two.
+        let five = [
+            paras[0].clone(),
+            paras[1].clone(),
+            Para::new(words(12), 1.0),
+            Para::new(words(12), 1.0),
+            Para::new(words(3), 1.0),
+        ];
+        assert!(set(&five, 2.5, 390.0).lines.iter().any(|(p, _)| p.x > 0.0));
     }
 
     #[test]

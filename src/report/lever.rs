@@ -137,6 +137,10 @@ pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {
     let per = |sym: &'static str, sub: Sub, unit: Unit, of: &dyn Fn(&InertiaLoad) -> f64| {
         Row::new(sym, sub, unit, f.inertia.iter().map(of).collect())
     };
+    // A slider does not turn: it has no ε, J_S or M_i; a link given no moment of inertia
+    // has no J_S or M_i.
+    let translating: Vec<bool> = f.inertia.iter().map(|i| m.links[i.link].kind == LinkKind::Slider).collect();
+    let no_moment: Vec<bool> = f.inertia.iter().zip(&translating).map(|(i, &t)| t || i.j == 0.0).collect();
     let inertia = NumTable {
         id: "inertia",
         columns,
@@ -146,9 +150,10 @@ pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {
             per("G", Sub::None, Unit::N, &|i| i.weight),
             per("a", Sub::name("S"), Unit::MPerS2, &|i| i.a_s.norm()),
             per("P", Sub::Force(ForceKind::Inertia, String::new()), Unit::N, &|i| i.force.norm()),
-            per("ε", Sub::None, Unit::PerS2, &|i| i.eps.abs()),
-            per("J", Sub::name("S"), Unit::KgM2, &|i| i.j).exactly(),
-            per("M", Sub::Force(ForceKind::Inertia, String::new()), Unit::NM, &|i| i.moment.abs()),
+            per("ε", Sub::None, Unit::PerS2, &|i| i.eps.abs()).absent_where(translating.clone()),
+            per("J", Sub::name("S"), Unit::KgM2, &|i| i.j).exactly().absent_where(no_moment.clone()),
+            per("M", Sub::Force(ForceKind::Inertia, String::new()), Unit::NM, &|i| i.moment.abs())
+                .absent_where(no_moment),
         ],
     };
     let reactions = NumTable {

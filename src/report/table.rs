@@ -154,6 +154,11 @@ pub struct Row {
     /// decimals that write each exactly, the same in every cell, rather than with four
     /// significant digits.
     pub exact: bool,
+    /// The cells whose quantity the column's member does not have (a slider's ε, J_S and
+    /// M_i; a link's J_S and M_i where no moment of inertia is given): their value is 0 in
+    /// the CSV and the answers, and a table prints "—" there, as the course's tables do, not
+    /// a 0 that reads as computed. Empty: every cell is a value.
+    pub absent: Vec<bool>,
 }
 
 impl Row {
@@ -163,7 +168,15 @@ impl Row {
             s if s.is_empty() => ascii_key(symbol),
             s => format!("{}_{s}", ascii_key(symbol)),
         };
-        Row { key, quantity: Quantity::Symbol(symbol, sub), unit, values, count: false, exact: false }
+        Row {
+            key,
+            quantity: Quantity::Symbol(symbol, sub),
+            unit,
+            values,
+            count: false,
+            exact: false,
+            absent: Vec::new(),
+        }
     }
 
     /// The same row under an explicit key (for symbols a rule would name badly: "P′" →
@@ -177,6 +190,17 @@ impl Row {
     pub fn counted(mut self) -> Row {
         self.count = true;
         self
+    }
+
+    /// The same row with the cells `absent` marks printed "—" (see [`Row::absent`]).
+    pub fn absent_where(mut self, absent: Vec<bool>) -> Row {
+        self.absent = absent;
+        self
+    }
+
+    /// Whether the cell in column `c` has no value (see [`Row::absent`]).
+    pub fn is_absent(&self, c: usize) -> bool {
+        self.absent.get(c).copied().unwrap_or(false)
     }
 
     /// The same row marked as exact at few decimals (see [`Row::exact`]).
@@ -194,12 +218,17 @@ impl Row {
         use crate::num::digits;
         // A count's row (a condition's value, limit and 1 for met) is one quantity a cell.
         let whole_value = |v: f64| v.fract() == 0.0 && v.abs() < 1e9;
-        let whole = whole && (self.count || self.values.iter().all(|&v| whole_value(v)));
-        let decimals = if self.exact { digits::exact_decimals(&self.values) } else { None };
-        let row = decimals.unwrap_or_else(|| digits::row_decimals(&self.values));
+        // The row's decimals from the cells that hold a value.
+        let present: Vec<f64> =
+            (0..self.values.len()).filter(|&c| !self.is_absent(c)).map(|c| self.values[c]).collect();
+        let whole = whole && (self.count || present.iter().all(|&v| whole_value(v)));
+        let decimals = if self.exact { digits::exact_decimals(&present) } else { None };
+        let row = decimals.unwrap_or_else(|| digits::row_decimals(&present));
         self.values
             .iter()
-            .map(|&v| match decimals {
+            .enumerate()
+            .map(|(c, &v)| match decimals {
+                _ if self.is_absent(c) => "—".to_string(),
                 _ if whole && whole_value(v) => format!("{v:.0}"),
                 Some(d) => digits::fixed(v, d),
                 None => digits::at_decimals(v, row),
@@ -216,6 +245,7 @@ impl Row {
             values,
             count: true,
             exact: false,
+            absent: Vec::new(),
         }
     }
 }

@@ -198,7 +198,8 @@ fn mesh_group(
     let at = crate::drawing::frame::clear_of_designation_box(Point::new(region.x0 + 2.0, region.y0 + 6.0), 5.0);
     mesh.text(Text::new(at, title, 5.0, Anchor::Start));
     // The notes' height: four lines of results (their numbers come from the drawing, not
-    // drawn yet: set here with the exact contact ratio's, as wide) and the notes, in columns.
+    // drawn yet: set here with numbers at least as wide as the drawing's will be, so that
+    // the lines wrap no less than the real ones) and the notes, in columns.
     // Left of the title block where the region reaches down beside it (set across the
     // region, the notes' last column ran into it).
     let title_block = frame::title_block_rect();
@@ -209,10 +210,10 @@ fn mesh_group(
     };
     let exact = fmt::value(p.pair.contact_ratio, lang);
     let head_like = [
-        l.scale("1:1"),
+        l.scale(&fmt::localise("2.5:1", lang)),
         l.contact_ratio_exact(&exact),
-        l.contact_ratio_drawn(&exact, &fmt::percent_difference(0.0, lang)),
-        l.involute_note(&fmt::bound_above(0.5, lang)),
+        l.contact_ratio_drawn(&exact, &fmt::percent_difference(-9.99, lang)),
+        l.involute_note(&fmt::bound_above(99.9, lang)),
     ];
     let notes_h = columns::set(&note_paras(&head_like, &notes), CELL_TEXT, notes_w).height + 6.0;
     let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(lang).to_string()).collect();

@@ -18,6 +18,7 @@ use crate::num::tol;
 use kurbo::{CubicBez, Point, Rect, Vec2};
 
 mod crank_detail;
+mod swing;
 pub(super) use crank_detail::{DETAIL_GAP, DetailAt, DetailPlace, detail_place};
 
 /// Paper sizes of the symbols, mm.
@@ -130,6 +131,7 @@ impl MechanismView<'_> {
             }
         }
         self.strokes(g, labels);
+        swing::swing(self, g, labels);
         // The other links' arrows before a free spot for the crank's detail is sought, so
         // that it keeps clear of them; ω₁ in the mechanism only if no detail has it.
         let not_crank = |kind: LinkKind| kind != LinkKind::Crank;

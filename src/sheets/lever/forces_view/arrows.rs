@@ -2,8 +2,7 @@
 //! apart from the links and from each other.
 
 use super::{ARROW_MAX, ARROW_MIN};
-use crate::drawing::obstacles::segments_cross;
-use crate::drawing::path::Seg;
+use crate::drawing::obstacles::{self, segments_cross};
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Group, Item, THIN, VECTOR};
@@ -182,16 +181,10 @@ impl Arrows {
         if twins_from(&self.drawn, at, d) != 1 || twins_from(&self.drawn, at, -d) != 0 {
             return None;
         }
-        let lines: Vec<(Point, Point)> = drawn_segments(g).collect();
+        let lines = drawn_segments(g);
         // From 1.2 mm off the outline (where the shaft meets it: the outline is 1 mm clear
         // there) to its far end.
-        let clearance = |a: Point, b: Point| {
-            let from_line = |&(p, q): &(Point, Point)| {
-                let ends = [a, a.midpoint(b), b].map(|x| point_segment_distance(x, (p, q)));
-                if segments_cross(a, b, p, q) { 0.0 } else { ends.into_iter().fold(f64::INFINITY, f64::min) }
-            };
-            lines.iter().map(from_line).fold(f64::INFINITY, f64::min)
-        };
+        let clearance = |a: Point, b: Point| shaft_clearance(&lines, (a, b));
         if clearance(at - d * (exit + 1.2), at - d * (exit + len)) >= 1.0 {
             return Some(BlockTwin::Push);
         }
@@ -212,14 +205,7 @@ impl Arrows {
         let opposite =
             !keep_lines && self.drawn.iter().any(|(p, e, _)| (*p - at).norm() < 1.0 && e.dot(d) < ALONG - 1.0);
         let n = d.turn_90();
-        let clearance = |s: Vec2| {
-            let (a, b) = (at + s * BESIDE, at + s * BESIDE + d * len);
-            let from_link = |&(p, q): &(Point, Point)| {
-                let ends = [a, a.midpoint(b), b].map(|x| point_segment_distance(x, (p, q)));
-                if segments_cross(a, b, p, q) { 0.0 } else { ends.into_iter().fold(f64::INFINITY, f64::min) }
-            };
-            self.links.iter().map(from_link).fold(f64::INFINITY, f64::min)
-        };
+        let clearance = |s: Vec2| shaft_clearance(&self.links, (at + s * BESIDE, at + s * BESIDE + d * len));
         opposite.then(|| if clearance(-n) > clearance(n) { -n } else { n })
     }
 }
@@ -256,25 +242,19 @@ fn length(f: f64, mu_f: f64) -> f64 {
     (f / mu_f).clamp(ARROW_MIN, ARROW_MAX)
 }
 
-/// The straight segments drawn in `g` so far: links, guides, outlines, arrows.
-fn drawn_segments(g: &Group) -> impl Iterator<Item = (Point, Point)> + '_ {
-    g.items.iter().flat_map(|item| {
-        let pts: Vec<Point> = match item {
-            Item::Path { path, .. } => std::iter::once(Some(path.start))
-                .chain(path.segs.iter().map(|s| match s {
-                    Seg::Line(p) => Some(*p),
-                    _ => None,
-                }))
-                .collect::<Option<Vec<Point>>>()
-                .unwrap_or_default(),
-            _ => Vec::new(),
-        };
-        let closing = match item {
-            Item::Path { path, .. } if path.closed && pts.len() > 2 => Some((pts[pts.len() - 1], pts[0])),
-            _ => None,
-        };
-        pts.windows(2).map(|w| (w[0], w[1])).chain(closing).collect::<Vec<_>>()
-    })
+/// The segments of the lines drawn in `g` so far: links, guides, outlines, arrows' shafts.
+fn drawn_segments(g: &Group) -> Vec<(Point, Point)> {
+    g.items.iter().filter(|item| matches!(item, Item::Path { .. })).flat_map(obstacles::segments).collect()
+}
+
+/// How near a shaft from `a` to `b` comes to `lines`, mm: its ends' and middle's least
+/// distance to them, 0 where it crosses one.
+fn shaft_clearance(lines: &[(Point, Point)], (a, b): (Point, Point)) -> f64 {
+    let from_line = |&(p, q): &(Point, Point)| {
+        let ends = [a, a.midpoint(b), b].map(|x| point_segment_distance(x, (p, q)));
+        if segments_cross(a, b, p, q) { 0.0 } else { ends.into_iter().fold(f64::INFINITY, f64::min) }
+    };
+    lines.iter().map(from_line).fold(f64::INFINITY, f64::min)
 }
 
 /// How a twin at a block stands ([`Arrows::block_twin`]).

@@ -1,6 +1,7 @@
 //! Tests of `arrows.rs`: twins, arrows along links, the room they take.
 
 use super::*;
+use crate::drawing::path::Seg;
 use kurbo::Rect;
 
 /// An arrow 11° off the link through its point (3.7 mm of its shaft in the link's

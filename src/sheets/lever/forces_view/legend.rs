@@ -102,28 +102,31 @@ pub(super) fn cell_title(g: &mut Group, r: Rect, text: &str) {
 }
 
 /// Rows of items from `y` down, one row per line; returns the next line's baseline.
-pub(super) fn text_rows(g: &mut Group, x0: f64, mut y: f64, rows: &[Vec<LabelText>]) -> f64 {
-    for line in rows {
-        let mut x = x0;
-        for item in line {
-            let bb = item.draw(g, Point::new(x, y), 3.5, Anchor::Start);
-            x = bb.x1 + 2.5;
-        }
-        y += LINE;
-    }
-    y
+pub(super) fn text_rows(g: &mut Group, x0: f64, y: f64, rows: &[Vec<LabelText>]) -> f64 {
+    rows_spaced(g, (x0, y), rows, |bb, _| bb.x1 + 2.5)
 }
 
 /// A vector equation's rows from `y` down, its terms ("+ Rᵗ₂₄") a word space apart as one
 /// line of text sets them (a term's box ends past its sloped subscript: spaced by boxes,
 /// "Rⁿ₂₄   + Rᵗ₂₄" read as two groups); returns the next line's baseline.
-pub(super) fn equation_rows(g: &mut Group, x0: f64, mut y: f64, rows: &[Vec<LabelText>]) -> f64 {
-    let space = LabelText::new("x x", "").width(3.5) - 2.0 * LabelText::new("x", "").width(3.5);
+pub(super) fn equation_rows(g: &mut Group, x0: f64, y: f64, rows: &[Vec<LabelText>]) -> f64 {
+    let space = crate::font::metrics().width(" ", crate::font::size_for_cap(3.5));
+    rows_spaced(g, (x0, y), rows, |_, (x, item)| x + item.width(3.5) + space)
+}
+
+/// Rows of items in 3.5 mm lettering from `(x0, y)` down, each item started where `next`
+/// (given the last one's drawn box, its start and itself) says; returns the next baseline.
+fn rows_spaced(
+    g: &mut Group,
+    (x0, mut y): (f64, f64),
+    rows: &[Vec<LabelText>],
+    next: impl Fn(Rect, (f64, &LabelText)) -> f64,
+) -> f64 {
     for line in rows {
         let mut x = x0;
         for item in line {
-            item.draw(g, Point::new(x, y), 3.5, Anchor::Start);
-            x += item.width(3.5) + space;
+            let bb = item.draw(g, Point::new(x, y), 3.5, Anchor::Start);
+            x = next(bb, (x, item));
         }
         y += LINE;
     }

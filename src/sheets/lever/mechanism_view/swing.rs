@@ -1,0 +1,85 @@
+//! The rocker's swing angle ψ, dimensioned at its pivot between its two extreme positions
+//! (positions 0 and the other extreme), as the course's drawings of a crank-rocker or a
+//! kulisa give it beside the slider's stroke H.
+
+use super::{MechanismView, SENSE_R};
+use crate::drawing::fmt;
+use crate::drawing::obstacles::Obstacles;
+use crate::drawing::path::{Path, on_circle};
+use crate::drawing::place::Labels;
+use crate::drawing::scene::{Group, THIN};
+use crate::drawing::symbols::{ARROW_LEN, arrowhead};
+use crate::drawing::text::LabelText;
+use crate::lever::linkage::Output;
+use crate::num::math::{self, Norm};
+use kurbo::{Point, Vec2};
+
+/// The shares of the rocker's drawn length tried as the arc's radius: the arc crosses every
+/// drawn position of the rocker at any of them, and the one crossing fewest other lines is
+/// taken (the nearest the pivot of those at least [`ARC_READ`] long).
+const RADII: [f64; 4] = [0.35, 0.5, 0.65, 0.8];
+
+/// The least arc between the arrowheads' tips, mm: two heads and a gap.
+const ARC_MIN: f64 = 2.0 * ARROW_LEN + 2.0;
+/// An arc shorter than this is taken only where every longer one crosses more lines, mm: a
+/// small swing's arc near the pivot sits where the rocker's positions crowd (the jaw
+/// crusher's ψ = 7.8° was 11 mm long among them at a third of the rocker's length).
+const ARC_READ: f64 = 20.0;
+
+/// The swing angle's arc with its arrowheads and its value, if the output is a rocker with
+/// two extreme positions drawn and the arc has room for its arrows; returns ψ, degrees.
+pub(super) fn swing(v: &MechanismView, g: &mut Group, labels: &mut Labels) -> Option<f64> {
+    let Output::Rocker { link } = v.m.output else { return None };
+    let pivot = v.m.frame.iter().find(|(id, _)| v.m.links[link].points.contains(id))?;
+    let first = v.k.positions.first().filter(|p| p.extreme)?;
+    let other = v.k.positions.iter().skip(1).find(|p| p.extreme)?;
+    let c = v.view.p(pivot.1);
+    let dirs = [first, other].map(|p| v.view.dir(p.state.links[link].dir));
+    let (from, to) = (dirs[0] / dirs[0].norm(), dirs[1] / dirs[1].norm());
+    let a0 = math::atan2(from.y, from.x);
+    let sweep = math::atan2(from.cross(to), from.dot(to));
+    // The rocker's drawn length: its farthest point from the pivot over the positions.
+    let reach =
+        v.k.positions
+            .iter()
+            .flat_map(|p| v.m.links[link].points.iter().map(move |&id| (p.state.points[id].p - pivot.1).norm()))
+            .fold(0.0, f64::max);
+    let length = v.view.len(reach);
+    let inside = g.region.inflate(-2.0, -2.0);
+    let drawn = Obstacles::of_items(&g.items);
+    let crossings = |r: f64| {
+        let pts: Vec<Point> = (0..=24).map(|k| on_circle(c, r, a0 + sweep * f64::from(k) / 24.0)).collect();
+        let fits = pts.iter().all(|&p| inside.contains(p));
+        fits.then(|| pts.windows(2).map(|w| drawn.hits_segment(w[0], w[1])).sum::<usize>())
+    };
+    let r = RADII
+        .iter()
+        .map(|s| s * length)
+        .filter(|&r| r >= SENSE_R.1 + 3.0 && r * sweep.abs() >= ARC_MIN)
+        .filter_map(|r| crossings(r).map(|n| (n, r * sweep.abs() < ARC_READ, r)))
+        .min_by(|a, b| (a.0, a.1).cmp(&(b.0, b.1)).then(a.2.total_cmp(&b.2)))?
+        .2;
+    // The heads at the extreme positions' lines, pointing out along the arc; on a short arc
+    // outside them, pointing in, on the arc run on 5 mm past each (GOST 2.307, as a short
+    // linear dimension's).
+    let tangent = |a: f64| Vec2::new(-math::sin(a), math::cos(a)) * sweep.signum();
+    let (ends, out) = ([a0, a0 + sweep], if r * sweep.abs() < ARC_READ { -1.0 } else { 1.0 });
+    if out > 0.0 {
+        g.curve(Path::arc(c, r, a0, sweep), THIN);
+    } else {
+        let past = 5.0 / r * sweep.signum();
+        g.curve(Path::arc(c, r, a0 - past, sweep + 2.0 * past), THIN);
+    }
+    arrowhead(g, on_circle(c, r, ends[0]), -tangent(ends[0]) * out);
+    arrowhead(g, on_circle(c, r, ends[1]), tangent(ends[1]) * out);
+    let psi = sweep.abs().to_degrees();
+    let mid = a0 + sweep / 2.0;
+    let value = format!(" = {}°", fmt::value(psi, v.words.lang));
+    labels.add(
+        on_circle(c, r, mid),
+        Vec2::new(math::cos(mid), math::sin(mid)),
+        LabelText::new("ψ", "").with_tail(value),
+        3.5,
+    );
+    Some(psi)
+}
