@@ -108,6 +108,7 @@ pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
     let counts: Vec<(u32, u32)> =
         COURSE.iter().filter_map(|k| (k.make)(p)).map(|s| (s.kind().number, s.table_count())).collect();
     let first_table = |n: u32| 1 + counts.iter().filter(|(k, _)| *k < n).map(|(_, c)| c).sum::<u32>();
+    let sheet_names: Vec<String> = COURSE.iter().filter_map(|k| (k.make)(p)).map(|s| s.name(p.info.language)).collect();
     let refused = |r: Refusal| match Error::from(r) {
         Error::Refused(mut r) => {
             r.buildable = buildable(p);
@@ -122,7 +123,13 @@ pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
         .par_iter()
         .map(|sheet| {
             let n = sheet.kind().number;
-            let ctx = Context { info: &p.info, sheet_no: sheet_no(n), sheet_count, first_table: first_table(n) };
+            let ctx = Context {
+                info: &p.info,
+                sheet_no: sheet_no(n),
+                sheet_count,
+                first_table: first_table(n),
+                sheet_names: &sheet_names,
+            };
             let output = sheet.build(&ctx).map_err(|e| refused(e.refusal(sheet.kind(), &p.places)))?;
             let svg = svg::write(&output.scene)?;
             Ok(Built { output, svg })

@@ -769,3 +769,37 @@ fn box_26_holds_the_designation_turned_and_nothing_else() {
         }
     }
 }
+
+/// The three title blocks of one project letter their sheets' names at one height (the
+/// worked example's sheet 1 name, two lines long, was 2.5 mm beside sheets 2 and 3 at 3.5
+/// mm) in every language, and the project's title at one height too.
+#[test]
+fn a_projects_title_blocks_letter_the_sheet_names_alike() {
+    for lang in Language::ALL {
+        let mut p = fixture("worked-example");
+        p.info.language = lang;
+        let built = pipeline::build(&p, &[]).unwrap();
+        assert_eq!(built.len(), 3);
+        let heights = |pick: &dyn Fn(&str) -> bool| -> Vec<Vec<u64>> {
+            built
+                .iter()
+                .map(|b| {
+                    let tb = b.output.scene.groups.iter().find(|g| g.id == "title-block").unwrap();
+                    let field = frame::name_field_rect();
+                    let mut h: Vec<u64> = tb
+                        .texts()
+                        .filter(|t| inside(field, t.core_box()) && pick(&t.text))
+                        .map(|t| (t.h * 1000.0).round() as u64)
+                        .collect();
+                    h.dedup();
+                    h
+                })
+                .collect()
+        };
+        let title = p.info.title().to_string();
+        let names = heights(&|t| !title.contains(t));
+        assert!(names.iter().all(|h| h == &names[0]), "{lang:?}: the name field's other lines at {names:?}");
+        let titles = heights(&|t| title.contains(t));
+        assert!(titles.iter().all(|h| h == &titles[0] && h.len() == 1), "{lang:?}: the title at {titles:?}");
+    }
+}

@@ -254,6 +254,10 @@ pub struct TitleBlock<'a> {
     pub sheet_no: u32,
     /// The number of sheets of the whole project.
     pub sheet_count: u32,
+    /// The names of all the project's sheets: each title block letters its own at the height
+    /// at which the longest fits, so the three blocks match (sheet 1's long name was 2.5 mm
+    /// beside sheet 2's 3.5 mm). Empty: this sheet's name alone decides.
+    pub project_sheet_names: &'a [String],
 }
 
 fn rect_path(g: &mut Group, r: Rect) {
@@ -355,9 +359,14 @@ fn name_field(g: &mut Group, r: Rect, tb: &TitleBlock, l: &Common) -> Result<(),
     let ours = |text: &str, ht: f64, h: f64| {
         fit(text, w, ht, h).unwrap_or_else(|| Fitted { lines: wrap(text, 2.5, w), h: 2.5, stretch: 1.0 })
     };
-    let name = ours(tb.sheet_name, SHEET_NAME_H, 3.5);
+    // The height every sheet's name fits at, and the tallest block they take at it, so that
+    // the project's title gets the same room on every sheet.
+    let names = tb.project_sheet_names.iter().map(String::as_str).chain([tb.sheet_name]);
+    let name_h = names.clone().map(|n| ours(n, SHEET_NAME_H, 3.5).h).fold(3.5, f64::min);
+    let name = ours(tb.sheet_name, SHEET_NAME_H, name_h);
+    let names_height = names.map(|n| ours(n, SHEET_NAME_H, name_h).height()).fold(0.0, f64::max);
     let course = ours(l.tb_course(), 2.5 * 1.3, 2.5);
-    let title_room = r.height() - 2.0 * CELL_PAD.1 - name.height() - course.height() - 2.0 * GAP;
+    let title_room = r.height() - 2.0 * CELL_PAD.1 - names_height - course.height() - 2.0 * GAP;
     let title = fit(tb.project_title, w, title_room, 5.0).ok_or_else(|| {
         TooLong::new("project.title", tb.project_title, "title block's name field", (r.width(), r.height()))
     })?;
@@ -434,6 +443,7 @@ mod tests {
             scale: "",
             sheet_no: 1,
             sheet_count: 3,
+            project_sheet_names: &[],
         };
         let r = title_block_rect();
         let cell = Rect::new(135.0, 20.0, 140.0, 35.0) + r.origin().to_vec2();

@@ -69,6 +69,9 @@ pub struct Context<'a> {
     /// The number of the sheet's first table in the explanatory note: the tables are
     /// numbered once across the project's sheets (see [`Sheet::table_count`]).
     pub first_table: u32,
+    /// The names of the project's sheets (this one's among them), so that every title block
+    /// letters its sheet's name at one height: the largest at which each of them fits.
+    pub sheet_names: &'a [String],
 }
 
 impl Context<'_> {
@@ -95,6 +98,7 @@ impl Context<'_> {
                 scale,
                 sheet_no: self.sheet_no,
                 sheet_count: self.sheet_count,
+                project_sheet_names: self.sheet_names,
             },
         )?;
         Ok(tb)
@@ -146,6 +150,8 @@ pub trait Sheet: Sync {
     fn kind(&self) -> SheetKind;
     /// How many numbered tables the sheet gives the note.
     fn table_count(&self) -> u32;
+    /// The sheet's name in its title block, in `lang`.
+    fn name(&self, lang: crate::drawing::labels::Language) -> String;
     /// The sheet's drawings, tables and results, without the frame and the title block.
     fn compose(&self, ctx: &Context) -> Result<scaffold::Composition, SheetError>;
     /// The finished sheet: the composition with the frame, the title block and the layout

@@ -49,7 +49,8 @@ pub fn lever(name: &str) -> LeverProject {
 
 /// Sheet 1 of a project, with everything computed for it.
 pub fn build_lever(p: &Project) -> LeverBuild {
-    let ctx = Context { info: &p.info, sheet_no: 1, sheet_count: COURSE.len() as u32, first_table: 1 };
+    let ctx =
+        Context { info: &p.info, sheet_no: 1, sheet_count: COURSE.len() as u32, first_table: 1, sheet_names: &[] };
     lever::build(&ctx, p.lever.as_ref().expect("a mechanism section")).unwrap_or_else(|e| panic!("{e}"))
 }
 

@@ -479,6 +479,10 @@ impl Sheet for CamSheet<'_> {
         tables::TABLE_COUNT
     }
 
+    fn name(&self, lang: crate::drawing::labels::Language) -> String {
+        labels::CamLabels::get(lang).sheet_name().to_string()
+    }
+
     fn compose(&self, ctx: &Context) -> Result<Composition, SheetError> {
         let b = build(ctx, self.project)?;
         let results = results::section(self.project, &b);

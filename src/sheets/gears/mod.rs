@@ -389,6 +389,11 @@ impl Sheet for GearsSheet<'_> {
         tables::table_count(self.project)
     }
 
+    fn name(&self, lang: crate::drawing::labels::Language) -> String {
+        let l = labels::GearLabels::get(lang);
+        if self.project.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() }.to_string()
+    }
+
     fn compose(&self, ctx: &Context) -> Result<Composition, SheetError> {
         let b = build(ctx, self.project)?;
         let results = results::section(self.project, &b);

@@ -137,6 +137,11 @@ impl Sheet for LeverSheet<'_> {
         table_count(self.project)
     }
 
+    fn name(&self, lang: crate::drawing::labels::Language) -> String {
+        let l = labels::LeverLabels::get(lang);
+        if self.project.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() }.to_string()
+    }
+
     fn compose(&self, ctx: &Context) -> Result<Composition, SheetError> {
         let b = build(ctx, self.project)?;
         let results = b.results(self.project);
