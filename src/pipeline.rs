@@ -105,10 +105,11 @@ pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
     let sheet_count = if own.is_empty() { COURSE.len() as u32 } else { own.len() as u32 };
     let sheet_no = |n: u32| own.iter().position(|&k| k == n).map_or(n, |i| i as u32 + 1);
     // The note's tables are numbered once across the sheets the project has.
-    let counts: Vec<(u32, u32)> =
-        COURSE.iter().filter_map(|k| (k.make)(p)).map(|s| (s.kind().number, s.table_count())).collect();
+    // And every title block letters its sheet's name at the height all the names fit at.
+    let own_sheets: Vec<_> = COURSE.iter().filter_map(|k| (k.make)(p)).collect();
+    let counts: Vec<(u32, u32)> = own_sheets.iter().map(|s| (s.kind().number, s.table_count())).collect();
     let first_table = |n: u32| 1 + counts.iter().filter(|(k, _)| *k < n).map(|(_, c)| c).sum::<u32>();
-    let sheet_names: Vec<String> = COURSE.iter().filter_map(|k| (k.make)(p)).map(|s| s.name(p.info.language)).collect();
+    let sheet_names: Vec<String> = own_sheets.iter().map(|s| s.name(p.info.language)).collect();
     let refused = |r: Refusal| match Error::from(r) {
         Error::Refused(mut r) => {
             r.buildable = buildable(p);

@@ -69,9 +69,9 @@ pub const SHORT_LINES: usize = 4;
 /// where they are [`SHORT_LINES`] lines or fewer in it.
 pub fn set(paras: &[Para], h: f64, width: f64) -> Set {
     let (n, col_w) = columns(width);
-    let single = lines_of(paras, h, width.min(COLUMN_MAX));
-    if n > 1 && single.len() <= SHORT_LINES {
-        return placed(&single, &[0], width.min(COLUMN_MAX));
+    let lines = lines_of(paras, h, width.min(COLUMN_MAX));
+    if n == 1 || lines.len() <= SHORT_LINES {
+        return placed(&lines, &[0], width.min(COLUMN_MAX));
     }
     let lines = lines_of(paras, h, col_w);
     let starts = balanced_starts(&lines, n);

@@ -305,10 +305,29 @@ const VALUE_CLEAR: f64 = 0.5;
 /// smaller turn): an arc of radius `r`. Returns the point just outside the arc's middle, where
 /// its value is written.
 pub fn angle_mark(g: &mut Group, apex: Point, from: Vec2, to: Vec2, r: f64) -> Point {
-    let a0 = math::atan2(from.y, from.x);
-    let sweep = math::atan2(from.cross(to), from.dot(to));
+    let (a0, sweep) = turn(from, to);
     g.curve(Path::arc(apex, r, a0, sweep), THIN);
     on_circle(apex, r + 2.0, a0 + sweep / 2.0)
+}
+
+/// The smaller turn from the unit direction `from` to `to`: its start angle and its signed
+/// sweep, radians.
+pub fn turn(from: Vec2, to: Vec2) -> (f64, f64) {
+    (math::atan2(from.y, from.x), math::atan2(from.cross(to), from.dot(to)))
+}
+
+/// An angular dimension at `apex` from the unit direction `from` to `to` (the smaller turn):
+/// an arc of radius `r` with its arrowheads on the two lines, pointing out along the arc where
+/// it is at least `inside_min` mm long, else outside the lines pointing in, the arc run on
+/// 5 mm past each (GOST 2.307, as a short linear dimension's).
+pub fn angular_dimension(g: &mut Group, apex: Point, (from, to): (Vec2, Vec2), r: f64, inside_min: f64) {
+    let (a0, sweep) = turn(from, to);
+    let tangent = |a: f64| Vec2::new(-math::sin(a), math::cos(a)) * sweep.signum();
+    let out = if r * sweep.abs() < inside_min { -1.0 } else { 1.0 };
+    let past = if out > 0.0 { 0.0 } else { 5.0 / r * sweep.signum() };
+    g.curve(Path::arc(apex, r, a0 - past, sweep + 2.0 * past), THIN);
+    arrowhead(g, on_circle(apex, r, a0), -tangent(a0) * out);
+    arrowhead(g, on_circle(apex, r, a0 + sweep), tangent(a0 + sweep) * out);
 }
 
 /// Short 45° strokes every `step` mm of arc length along the polyline `pts`, on the side

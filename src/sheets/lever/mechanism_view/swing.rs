@@ -5,10 +5,10 @@
 use super::{MechanismView, SENSE_R};
 use crate::drawing::fmt;
 use crate::drawing::obstacles::Obstacles;
-use crate::drawing::path::{Path, on_circle};
+use crate::drawing::path::on_circle;
 use crate::drawing::place::Labels;
-use crate::drawing::scene::{Group, THIN};
-use crate::drawing::symbols::{ARROW_LEN, arrowhead};
+use crate::drawing::scene::Group;
+use crate::drawing::symbols::{ARROW_LEN, angular_dimension, turn};
 use crate::drawing::text::LabelText;
 use crate::lever::linkage::Output;
 use crate::num::math::{self, Norm};
@@ -27,8 +27,8 @@ const ARC_MIN: f64 = 2.0 * ARROW_LEN + 2.0;
 const ARC_READ: f64 = 20.0;
 
 /// The swing angle's arc with its arrowheads and its value, if the output is a rocker with
-/// two extreme positions drawn and the arc has room for its arrows; returns ψ, degrees.
-pub(super) fn swing(v: &MechanismView, g: &mut Group, labels: &mut Labels) -> Option<f64> {
+/// two extreme positions drawn and the arc has room for its arrows.
+pub(super) fn swing(v: &MechanismView, g: &mut Group, labels: &mut Labels) -> Option<()> {
     let Output::Rocker { link } = v.m.output else { return None };
     let pivot = v.m.frame.iter().find(|(id, _)| v.m.links[link].points.contains(id))?;
     let first = v.k.positions.first().filter(|p| p.extreme)?;
@@ -36,8 +36,7 @@ pub(super) fn swing(v: &MechanismView, g: &mut Group, labels: &mut Labels) -> Op
     let c = v.view.p(pivot.1);
     let dirs = [first, other].map(|p| v.view.dir(p.state.links[link].dir));
     let (from, to) = (dirs[0] / dirs[0].norm(), dirs[1] / dirs[1].norm());
-    let a0 = math::atan2(from.y, from.x);
-    let sweep = math::atan2(from.cross(to), from.dot(to));
+    let (a0, sweep) = turn(from, to);
     // The rocker's drawn length: its farthest point from the pivot over the positions.
     let reach =
         v.k.positions
@@ -59,19 +58,7 @@ pub(super) fn swing(v: &MechanismView, g: &mut Group, labels: &mut Labels) -> Op
         .filter_map(|r| crossings(r).map(|n| (n, r * sweep.abs() < ARC_READ, r)))
         .min_by(|a, b| (a.0, a.1).cmp(&(b.0, b.1)).then(a.2.total_cmp(&b.2)))?
         .2;
-    // The heads at the extreme positions' lines, pointing out along the arc; on a short arc
-    // outside them, pointing in, on the arc run on 5 mm past each (GOST 2.307, as a short
-    // linear dimension's).
-    let tangent = |a: f64| Vec2::new(-math::sin(a), math::cos(a)) * sweep.signum();
-    let (ends, out) = ([a0, a0 + sweep], if r * sweep.abs() < ARC_READ { -1.0 } else { 1.0 });
-    if out > 0.0 {
-        g.curve(Path::arc(c, r, a0, sweep), THIN);
-    } else {
-        let past = 5.0 / r * sweep.signum();
-        g.curve(Path::arc(c, r, a0 - past, sweep + 2.0 * past), THIN);
-    }
-    arrowhead(g, on_circle(c, r, ends[0]), -tangent(ends[0]) * out);
-    arrowhead(g, on_circle(c, r, ends[1]), tangent(ends[1]) * out);
+    angular_dimension(g, c, (from, to), r, ARC_READ);
     let psi = sweep.abs().to_degrees();
     let mid = a0 + sweep / 2.0;
     let value = format!(" = {}°", fmt::value(psi, v.words.lang));
@@ -81,5 +68,5 @@ pub(super) fn swing(v: &MechanismView, g: &mut Group, labels: &mut Labels) -> Op
         LabelText::new("ψ", "").with_tail(value),
         3.5,
     );
-    Some(psi)
+    Some(())
 }
