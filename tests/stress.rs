@@ -246,6 +246,71 @@ fn pairs_the_sweep_found_off_the_page_fit_their_region() {
     assert_eq!(verdict(&text), Ok(Outcome::Built));
 }
 
+/// A 5-tooth pinion the sweep found (stop 71) with p's value, set along the line of centres
+/// in its small body, across the sense arrow ω₁ drawn after it: the arrows are now drawn
+/// before the dimensions' values, which keep clear of them.
+#[test]
+fn a_five_tooth_pinions_pitch_value_stands_clear_of_its_sense_arrow() {
+    let text = format!("{HEADER}gears:\n  pair: {{module: 7.15, z: [5, 84], shift: [0.349, 0.708]}}\n");
+    assert_eq!(verdict(&text), Ok(Outcome::Built));
+}
+
+/// A slider the sweep found (stop 71) on a guide 8° off the vertical: G3 down, P_i3 its twin
+/// pushed into the block from above, and the load P_c3 slid past P_i3's tail up into the
+/// group's title. A twin no longer pushes into the side a force still to come leaves by.
+#[test]
+fn a_slider_pushed_into_from_above_keeps_its_load_arrow_under_the_group_title() {
+    let text = format!(
+        "{HEADER}{}",
+        r#"mechanism:
+  frame:
+    - {name: O, at: [0.0, 0.0]}
+  crank: {pivot: O, pin: A, length: 0.206268, rpm: 339.0, sense: cw}
+  groups:
+    - rrp: {links: [2, 3], joint: A, point: B, length: 0.559253, guide: {through: [0.0, 0.000000], angle_deg: 81.754}, branch: forward}
+  points:
+    - {name: S2, link: 2, from: A, toward: B, ratio: 0.32, mass_centre: true}
+    - {name: S3, link: 3, from: B, mass_centre: true}
+analysis:
+  positions: 12
+  assigned_deg: 288.228
+forces:
+  links:
+    - {link: 2, mass: 37.20, inertia: rod}
+    - {link: 3, mass: 22.32}
+  loads:
+    - resistance: {point: B, working: forward, force: 44731.5, idle_force: 18332.2}
+"#
+    );
+    assert_eq!(verdict(&text), Ok(Outcome::Built));
+}
+
+/// A known fault the random sweep found at stop 71, not yet mended (run with `--ignored`): a
+/// six-bar with a 30 µm crank in a 1 mm frame, its crank drawn without its detail, a line
+/// across "O" and "10".
+#[test]
+#[ignore = "known fault, stop 71: a 30 µm crank in a 1 mm frame drawn without its detail"]
+fn a_six_bar_with_a_30_micrometre_crank_keeps_its_letters_clear() {
+    let text = format!(
+        "{HEADER}{}",
+        r#"mechanism:
+  frame:
+    - {name: O, at: [0, 0]}
+    - {name: C, at: [0.001000, 0]}
+  crank: {pivot: O, pin: A, length: 0.000030, rpm: 90, sense: cw}
+  groups:
+    - rrr: {links: [2, 3], joints: [A, C], point: B, lengths: [0.001402, 0.000478], branch: left}
+    - rrp: {links: [4, 5], joint: B, point: D, length: 0.000502, guide: {through: [0, 0.000000], angle_deg: 0}, branch: backward}
+  points:
+    - {name: S2, link: 2, from: A, toward: B, ratio: 0.5, mass_centre: true}
+    - {name: S3, link: 3, from: C, toward: B, ratio: 0.5, mass_centre: true}
+    - {name: S4, link: 4, from: B, toward: D, ratio: 0.5, mass_centre: true}
+    - {name: S5, link: 5, from: D, mass_centre: true}
+"#
+    );
+    assert_eq!(verdict(&text), Ok(Outcome::Built));
+}
+
 /// Cams the sweep found with texts crossed, each now clean: a 3.5° return after a 283° rise
 /// (its ds/dφ ~80 times the rise's: the diagram a sliver, its scale text on the pole's name);
 /// a nomogram in a narrow region beside the profile (r_min's label across the wedge); a 3.7°

@@ -11,9 +11,10 @@ use common::fixture;
 use tmm_sheets::num::work::{Step, taken};
 use tmm_sheets::pipeline;
 
-const STEPS: [Step; 8] = [
+const STEPS: [Step; 9] = [
     Step::LinkageAnalysis,
     Step::ForceAnalysis,
+    Step::MechanismDrawing,
     Step::GearPair,
     Step::CamDesign,
     Step::Svg,
@@ -23,14 +24,14 @@ const STEPS: [Step; 8] = [
 ];
 
 /// How many times each step was taken while `f` ran.
-fn steps_taken(f: impl FnOnce()) -> [u64; 8] {
+fn steps_taken(f: impl FnOnce()) -> [u64; 9] {
     let before = STEPS.map(taken);
     f();
     let after = STEPS.map(taken);
     std::array::from_fn(|i| after[i] - before[i])
 }
 
-fn count(steps: &[u64; 8], step: Step) -> u64 {
+fn count(steps: &[u64; 9], step: Step) -> u64 {
     steps[STEPS.iter().position(|&s| s == step).expect("a counted step")]
 }
 
@@ -65,6 +66,15 @@ fn a_build_takes_only_the_steps_its_request_needs() {
     });
     assert_eq!(count(&only_1, Step::LinkageAnalysis), 1, "{only_1:?}");
     assert!(count(&only_1, Step::ForceAnalysis) >= 1, "{only_1:?}");
+
+    // The kulisa's sheet 1 composes 19 variants, 51 sheets in all, at one place of its
+    // mechanism: drawn there once (twice where two compositions on rayon's pool miss it
+    // together), not once a composition.
+    let kulisa = fixture("kulisa");
+    let compositions = steps_taken(|| {
+        pipeline::build(&kulisa, &[1]).expect("the kulisa's sheet 1 builds");
+    });
+    assert!((1..=2).contains(&count(&compositions, Step::MechanismDrawing)), "{compositions:?}");
 
     // No build designs the pair or the cam again: the load's designs are drawn.
     for steps in [&only_1, &only_2, &only_3] {

@@ -15,6 +15,8 @@ pub enum Step {
     LinkageAnalysis,
     /// The kinetostatic analysis at the assigned position (sheet 1's force drawings).
     ForceAnalysis,
+    /// Sheet 1's mechanism drawn at a place (its positions, trajectories and labels).
+    MechanismDrawing,
     /// An involute pair's geometry (sheet 2).
     GearPair,
     /// The cam's design: centre, profile, pressure angles (sheet 3).
@@ -26,7 +28,7 @@ pub enum Step {
     Dxf,
 }
 
-const STEPS: usize = 8;
+const STEPS: usize = 9;
 static COUNTS: [AtomicU64; STEPS] = [const { AtomicU64::new(0) }; STEPS];
 
 /// Counts one `step` taken.

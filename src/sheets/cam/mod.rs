@@ -22,6 +22,7 @@ use super::scaffold::Composition;
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};
 use crate::cams::follower::Follower;
 use crate::cams::integrate::{self, Integrated};
+use crate::drawing::columns::{self, Para};
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group};
@@ -172,10 +173,16 @@ fn shorter_plan(p: &CamProject, column: &Column, shorter: f64) -> diagrams::Plan
     diagrams::plan(&p.design, (column.width.left - 4.0, column.width.phi), column.room - shorter)
 }
 
-/// The notes' height set `w` wide as `diagrams_group` sets them: each note's lines at their
-/// pitch, 1 mm after each.
+/// The notes set `w` wide in GOST 2.316's columns (at most 185 mm each), 1 mm after each
+/// note.
+fn notes_set(notes: &[String], w: f64) -> columns::Set {
+    let paras: Vec<Para> = notes.iter().map(|n| Para::new(n.as_str(), 1.0)).collect();
+    columns::set(&paras, CELL_TEXT, w)
+}
+
+/// The notes' height set `w` wide as `diagrams_group` sets them.
 fn notes_h(notes: &[String], w: f64) -> f64 {
-    notes.iter().map(|n| wrap(n, CELL_TEXT, w).len() as f64 * LINE_PITCH * CELL_TEXT + 1.0).sum()
+    notes_set(notes, w).height
 }
 
 /// The height of the column's title set `w` wide, with its margins, mm.
@@ -451,10 +458,9 @@ fn diagrams_group(
         Rect::new(lay.diagrams.x0 + 2.0, y + 2.0, lay.diagrams.x1, y + 2.0 + column.plan.height + below.max(0.0));
     let drawn = diagrams::draw(&mut dg, area, &column.plan, &p.design, integrated, words);
     y = drawn.bottom + 4.0;
-    for n in &column.notes {
-        let at = Point::new(lay.diagrams.x0 + 2.0, y);
-        y = paragraph(&mut dg, at, &wrap(n, CELL_TEXT, width), CELL_TEXT, Anchor::Start) + 1.0;
-    }
+    let notes = notes_set(&column.notes, width);
+    columns::draw(&mut dg, Point::new(lay.diagrams.x0 + 2.0, y), &notes, CELL_TEXT);
+    y += notes.height;
     dg.region = Rect::new(lay.diagrams.x0, lay.diagrams.y0, lay.diagrams.x1, (y + 1.0).max(lay.diagrams.y0 + 10.0));
     (dg, drawn.scales)
 }

@@ -105,6 +105,10 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     let tau = draw_lines(g, v, area, pp, p, &points);
     let contact_ratio_drawn = draw_arc_of_action(g, v, inp, &fl1, centres[0][1], &points);
     let a_w = super::mesh_dimensions::centre_distance(g, v, area, p, teeth);
+    // The sense arrows before the dimensions' values, which keep clear of them (a 5-tooth
+    // pinion's p, set along the line of centres, stood across ω₁'s arrow); their names
+    // with the other labels, below.
+    let senses = senses_of_rotation(g, v, area, &points, v.len(p.wheels[1].root));
     // One index of the drawing for the dimensions' values, each added to it as it is set.
     let mut drawn = super::mesh_dimensions::Drawn::of(g);
     if let Some(line) = a_w {
@@ -114,7 +118,9 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     super::mesh_dimensions::draw(g, (labels, &mut drawn), v, area, p, centres[0][0], inp.lang);
     super::mesh_dimensions::base_pitch(g, (labels, &mut drawn), (v, area), p, centres[0][1], inp.lang);
     point_labels(labels, v, area, &points);
-    senses_of_rotation(g, labels, v, area, &points, v.len(p.wheels[1].root));
+    for (spots, name) in senses {
+        labels.add_ranked_at_any(&spots, name, 3.5, 1);
+    }
     labels.add_ranked(pp - Vec2::new(tau, 0.0), Vec2::new(0.0, -1.0), LabelText::new("τ", ""), 3.5, 1);
     labels.add_ranked(pp + Vec2::new(tau, 0.0), Vec2::new(0.0, -1.0), LabelText::new("τ", ""), 3.5, 1);
     let alpha_at = pp + Vec2::new(-ALPHA_ARC_MM - 2.0, -ALPHA_ARC_MM * 0.18);
@@ -300,7 +306,9 @@ fn point_labels(labels: &mut Labels, v: View, area: Rect, m: &MeshPoints) {
 /// wheel 2 turns clockwise. A large wheel 2 whose centre is off the drawing gets its arrow
 /// on an arc about that centre inside its own body (`root2`: its root radius, mm), near the
 /// drawing's top on the line of centres.
-fn senses_of_rotation(g: &mut Group, labels: &mut Labels, v: View, area: Rect, m: &MeshPoints, root2: f64) {
+/// Returns each arrow's name with the spots it may take (the first preferred).
+fn senses_of_rotation(g: &mut Group, v: View, area: Rect, m: &MeshPoints, root2: f64) -> Vec<(Vec<Spot>, LabelText)> {
+    let mut names = Vec::new();
     for (q, ccw, n) in [(Vec2::ZERO, true, "1"), (m.o2, false, "2")] {
         let c = v.p(q);
         if area.contains(c) {
@@ -318,17 +326,21 @@ fn senses_of_rotation(g: &mut Group, labels: &mut Labels, v: View, area: Rect, m
                 (c + on(0.0) * 9.0, on(0.0)),
                 (c + on(110.0) * 9.0, on(110.0)),
             ];
-            labels.add_ranked_at_any(&spots, LabelText::new("ω", n), 3.5, 1);
+            names.push((spots.to_vec(), LabelText::new("ω", n)));
         } else if n == "2"
             && let Some((r, mid)) = rim_arrow_radius(c, v.p(Vec2::ZERO), area, root2)
         {
             let sweep = (OFF_SHEET_ARROW_MM / r).to_degrees();
             crate::drawing::symbols::turn_arrow(g, c, r, mid - sweep / 2.0, sweep, ccw, THIN);
             let at = c + from_angle(mid.to_radians()) * r;
-            labels.add_ranked(at, Vec2::new(-1.0, 0.0), LabelText::new("ω", n), 3.5, 1);
+            names.push((vec![(at, Vec2::new(-1.0, 0.0))], LabelText::new("ω", n)));
         }
     }
+    names
 }
+
+/// A label's anchor and the direction it is set off in.
+type Spot = (Point, Vec2);
 
 /// The length of wheel 2's sense arrow about its centre off the drawing, and how far inside
 /// the drawing's top its middle stands and inside the wheel's root circle, mm.

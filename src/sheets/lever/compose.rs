@@ -13,9 +13,10 @@ mod widen;
 pub(super) use header::region_header;
 
 use super::choice::{EMPTY_MOST, Floors, better, empty};
+use super::drawn_once::DrawnOnce;
 use super::forces_view::{CellMemo, ForceScales, ForcesInput, draw_forces};
 use super::labels::LeverWords;
-use super::mechanism_place::{MechanismPlace, mechanism_group, mechanism_place};
+use super::mechanism_place::{MechanismDrawn, MechanismPlace, mechanism_group, mechanism_place};
 use super::note_tables::{NoteTables, note_tables, sheet_table, tables_group, with_units};
 pub use super::plan_regions::PlanDrawn;
 use super::plan_regions::{LARGEST_PLAN, PlansRegion, Twins, plans_group, split_plans};
@@ -240,12 +241,19 @@ fn title_block_refusal(inp: &Input, a: &Arrangement) -> Result<(), TooLong> {
 /// Widths of the force column tried, mm.
 const FORCES_WIDTHS: [f64; 3] = [FORCES_MIN_W, 430.0, 390.0];
 
-/// The velocity and acceleration plans (the same at every layout), those that coincide on
-/// paper drawn once.
+/// What every composition of the sheet shares: the velocity and acceleration plans (the
+/// same at every layout), those that coincide on paper drawn once, and the drawings made
+/// so far of the mechanism and of each region of plans, by place.
 struct PlansOf<'a> {
     velocity: Twins<'a>,
     acceleration: Twins<'a>,
+    mechanisms: DrawnOnce<MechanismPlace, MechanismDrawn>,
+    plans_drawn: DrawnOnce<(String, Rect, Sizing), PlansDrawn>,
 }
+
+/// A region of plans drawn: its group, each plan as drawn, their common scale and the
+/// segments drawn ([`plans_group`]).
+type PlansDrawn = (Group, Vec<PlanDrawn>, Option<f64>, Vec<Segment>);
 
 impl<'a> PlansOf<'a> {
     fn new(inp: &Input, k: &'a Kinematics) -> PlansOf<'a> {
@@ -254,7 +262,7 @@ impl<'a> PlansOf<'a> {
         let apositions: Vec<&Position> = k.acceleration.iter().map(|&i| &k.positions[i]).collect();
         let velocity = Twins::of(vpositions.iter().map(|p| velocity_plan(m, &p.state)).collect(), &vpositions);
         let acceleration = Twins::of(apositions.iter().map(|p| acceleration_plan(m, &p.state)).collect(), &apositions);
-        PlansOf { velocity, acceleration }
+        PlansOf { velocity, acceleration, mechanisms: DrawnOnce::default(), plans_drawn: DrawnOnce::default() }
     }
 }
 
@@ -348,14 +356,19 @@ fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<
     let smallest_plan_mm = a.smallest_plan_mm(plans);
     let Arrangement { words, force_input, mech, force_region, notes, velocity, acceleration, vsizing, asizing } = a;
     let l = words.sheet;
-    let mech = mechanism_group(inp, k, &words, mech);
+    let mech = plans.mechanisms.get(mech.clone(), || mechanism_group(inp, k, &words, mech));
     let answer = AnswerKeys::of(&format!("sheet{}", inp.kind.number), inp.notes);
     let mut drawn_segments = segments::link_segments(&inp.project.mechanism, &k.positions, mech.mu_l);
     // Velocity plans: every position, one common μ_v.
-    let (vel, vdrawn, mu_v, vel_segments) = plans_group(&velocity, &plans.velocity, vsizing, &words, &answer);
+    let plans_drawn = |r: &PlansRegion, twins, sizing: Sizing| {
+        plans
+            .plans_drawn
+            .get((r.id.to_string(), r.region, sizing.clone()), || plans_group(r, twins, sizing, &words, &answer))
+    };
+    let (vel, vdrawn, mu_v, vel_segments) = plans_drawn(&velocity, &plans.velocity, vsizing);
     drawn_segments.extend(vel_segments);
     // Acceleration plans: the chosen positions, one common μ_a.
-    let (acc, adrawn, mu_a, acc_segments) = plans_group(&acceleration, &plans.acceleration, asizing, &words, &answer);
+    let (acc, adrawn, mu_a, acc_segments) = plans_drawn(&acceleration, &plans.acceleration, asizing);
     drawn_segments.extend(acc_segments);
 
     let tables = tables_group(&notes, &words);

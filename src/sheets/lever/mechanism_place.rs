@@ -31,6 +31,7 @@ const MECH_HEIGHTS_FORCES: [f64; 7] = [300.0, 260.0, 230.0, 200.0, 175.0, 150.0,
 /// Space around the mechanism drawing for its letters, pivots and guides.
 const MECH_PAD: f64 = 14.0;
 /// The mechanism's region and scale, before it is drawn.
+#[derive(Clone, PartialEq)]
 pub(super) struct MechanismPlace {
     world: Rect,
     pub(super) region: Rect,
@@ -44,6 +45,7 @@ pub(super) struct MechanismPlace {
 }
 
 /// The mechanism drawn in its region.
+#[derive(Clone)]
 pub(super) struct MechanismDrawn {
     pub(super) group: Group,
     pub(super) region: Rect,
@@ -90,6 +92,7 @@ pub(super) fn mechanism_group(
     words: &LeverWords,
     place: MechanismPlace,
 ) -> MechanismDrawn {
+    crate::num::work::count(crate::num::work::Step::MechanismDrawing);
     let MechanismPlace { world, region, mu_l, draw_h, detail, .. } = place;
     let m = &inp.project.mechanism;
     // The drawing centred in what a detail beside or below it leaves of the region.

@@ -4,6 +4,7 @@
 
 mod choice;
 pub mod compose;
+mod drawn_once;
 pub mod forces_view;
 pub mod labels;
 mod mechanism_place;

@@ -185,7 +185,15 @@ impl Arrows {
         // From 1.2 mm off the outline (where the shaft meets it: the outline is 1 mm clear
         // there) to its far end.
         let clearance = |a: Point, b: Point| shaft_clearance(&lines, (a, b));
-        if clearance(at - d * (exit + 1.2), at - d * (exit + len)) >= 1.0 {
+        // Not into the side a force still to be drawn leaves by: it would slide past the
+        // pushed twin's tail, beyond the room the drawing keeps for its arrows (a slider 8°
+        // off the vertical: G3 down, P_i3 pushed in from above, the load P_c3 slid past
+        // P_i3's tail into the group's title; the sweep, stop 71).
+        let later_that_way = self
+            .push
+            .as_ref()
+            .is_some_and(|p| p.forces.iter().any(|&(q, e)| (q - at).norm() < 1.0 && e.dot(-d) > 1.0 - ALONG));
+        if !later_that_way && clearance(at - d * (exit + 1.2), at - d * (exit + len)) >= 1.0 {
             return Some(BlockTwin::Push);
         }
         let off = BESIDE.min(0.75 * across(block));

@@ -47,7 +47,7 @@ const MARK_PAST: f64 = 1.5;
 const FREE_STEP: f64 = 2.0;
 
 /// Where a detail goes and at what scale, chosen with the mechanism's region.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(in crate::sheets::lever) struct DetailPlace {
     /// The detail's μ_l, m/mm.
     pub mu: f64,
