@@ -94,11 +94,31 @@ pub fn length_scale(x: f64) -> f64 {
 
 /// The largest μ_l (m/mm) of a GOST 2.302 scale strictly below `x`: the coarsest scale that
 /// makes a length of x·1 mm on paper longer than 1 mm (a tooth height over 50 mm: `x` = h/50).
+/// Below 100:1 it goes on with the (100·n):1 the standard allows where needed, n in the
+/// round series (200:1, 400:1, 500:1, 1000:1 …): a 30 µm crank's detail at 100:1 would be
+/// drawn no larger than the mechanism it enlarges.
 pub fn length_scale_below(x: f64) -> f64 {
     let enlarge = ENLARGEMENTS.iter().rev().map(|k| 0.001 / k);
     let reduce = REDUCTIONS.iter().map(|k| 0.001 * k);
     let all: Vec<f64> = enlarge.chain(reduce).collect();
-    all.iter().rev().copied().find(|&mu| mu < x).unwrap_or(all[0])
+    all.iter().rev().copied().find(|&mu| mu < x).unwrap_or_else(|| hundredfold_below(x))
+}
+
+/// The largest μ_l of a (100·n):1 scale, n ≥ 2 in the round series, strictly below `x`
+/// (`x` at most 100:1's 0.00001 m/mm); 100:1 for no extent.
+fn hundredfold_below(x: f64) -> f64 {
+    const HUNDRED_TO_ONE: f64 = 0.001 / 100.0;
+    if !(x.is_finite() && x > 0.0) {
+        return HUNDRED_TO_ONE;
+    }
+    // n the smallest of 2, 4, 5, 10, 20, 40, 50 … (whole numbers, as the standard asks)
+    // with 0.00001/n < x.
+    (0..300)
+        .flat_map(|e| [1.0, 2.0, 4.0, 5.0].map(|m| series_value(m, e)))
+        .filter(|&n| n >= 2.0)
+        .map(|n| HUNDRED_TO_ONE / n)
+        .find(|&mu| mu < x)
+        .unwrap_or(HUNDRED_TO_ONE)
 }
 
 /// Formats a scale factor with as many significant digits as it has.
@@ -152,6 +172,21 @@ mod tests {
         for x in [1e-5, 3e-4, 0.0013, 0.0033, 0.07, 0.9] {
             let r = ratio(length_scale(x));
             assert!(!r.contains('.') || r == "1:2.5" || r == "2.5:1", "{x}: {r}");
+        }
+    }
+
+    #[test]
+    fn finer_than_a_hundredfold_goes_on_in_hundreds() {
+        // 100:1 is 0.00001 m/mm; below it (100·n):1 with n round: 200:1, 400:1, 500:1, 1000:1.
+        assert_eq!(length_scale_below(0.000011), 0.00001);
+        assert_eq!(ratio(length_scale_below(0.00001)), "200:1");
+        assert_eq!(ratio(length_scale_below(0.000002)), "1000:1");
+        assert_eq!(ratio(length_scale_below(0.0000021)), "500:1");
+        assert_eq!(ratio(length_scale_below(0.000003)), "400:1");
+        assert_eq!(ratio(length_scale_below(0.0000045)), "400:1");
+        for x in [9.9e-6, 4e-6, 1.3e-6, 2e-7, 3.3e-9] {
+            let mu = length_scale_below(x);
+            assert!(mu < x && mu > x / 2.6, "{x}: {mu}");
         }
     }
 

@@ -314,13 +314,19 @@ fn senses_of_rotation(g: &mut Group, v: View, area: Rect, m: &MeshPoints, root2:
         if area.contains(c) {
             g.dot(c, 0.8);
             // Under the centre, else (a centre near the drawing's foot: its arc ran into the
-            // notes under it) over it.
+            // notes under it) over it, wholly: from 35° to 145° above the horizontal (paper
+            // angles fall as the sheet turns counter-clockwise).
             let low = c.y + 10.0 > area.y1;
-            let start = if ccw { 200.0 } else { 20.0 } + if low { 180.0 } else { 0.0 };
+            let start = match (low, ccw) {
+                (false, true) => 200.0,
+                (false, false) => 20.0,
+                (true, true) => -35.0,
+                (true, false) => -145.0,
+            };
             crate::drawing::symbols::turn_arrow(g, c, 9.0, start, 110.0, ccw, THIN);
             // Named beside the arrow's middle, else beside its tail or its head, outward:
             // a centre near the drawing's edge leaves room on one side only.
-            let on = |deg: f64| from_angle((start + deg).to_radians() * if ccw { -1.0 } else { 1.0 });
+            let on = |deg: f64| from_angle((start + if ccw { -deg } else { deg }).to_radians());
             let spots = [
                 (c + on(55.0) * 9.0, Vec2::new(-1.0, 0.0)),
                 (c + on(0.0) * 9.0, on(0.0)),

@@ -6,7 +6,7 @@ use super::compose::{Column, HEADER, Input, TOP, force_region_below, region_head
 use super::forces_view::{ForcesInput, fit_comfortably};
 use super::labels::LeverWords;
 use super::mechanism_view::{
-    DETAIL_GAP, DetailAt, DetailPlace, MechanismView, TRAJECTORY, detail_place, mu_l_text, world_extent,
+    DETAIL_GAP, DetailAt, DetailPlace, MechanismView, SLIDER_SAME_MM, TRAJECTORY, detail_place, mu_l_text, world_extent,
 };
 use crate::drawing::place::{Labels, NUMBERS_RANK};
 use crate::drawing::scale;
@@ -14,7 +14,7 @@ use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::analysis::Kinematics;
-use crate::lever::linkage::Mechanism;
+use crate::lever::linkage::{Mechanism, Step};
 use kurbo::{Point, Rect};
 
 /// The mechanism's region at most, mm; it shrinks to the drawing at the chosen μ_l.
@@ -112,17 +112,29 @@ pub(super) fn mechanism_group(
         }
         DetailAt::Inside => (d, None),
     });
-    let draw = |detail: Option<(DetailPlace, Option<Rect>)>| {
+    let draw_as = |detail: Option<(DetailPlace, Option<Rect>)>, slider_same_mm: f64| {
         let mut group = Group::new("mechanism", region);
         mechanism_header(&mut group, region, mu_l, k, words);
         trajectory_legend(&mut group, region, words);
         let mut labels = Labels::new();
         let kulisa = &inp.project.kulisa_lengths;
+        let view = View::new(origin, mu_l);
         let detail_mu_l =
-            MechanismView { m, k, view: View::new(origin, mu_l), kulisa, words, detail }.draw(&mut group, &mut labels);
+            MechanismView { m, k, view, kulisa, words, detail, slider_same_mm }.draw(&mut group, &mut labels);
         let placed = labels.place_measured(&mut group, region.inflate(-0.5, -0.5));
         let farthest = placed.iter().filter(|p| p.rank >= NUMBERS_RANK).map(|p| p.leader).fold(0.0, f64::max);
-        (MechanismDrawn { group, region, mu_l, detail_mu_l }, farthest)
+        let unplaced = placed.iter().filter(|p| !p.clean).count();
+        (MechanismDrawn { group, region, mu_l, detail_mu_l }, farthest, unplaced)
+    };
+    // A slider's numbers that leave a label no clean spot share one where they stand within
+    // SLIDER_SAME_MM, if that leaves fewer without.
+    let draw = |detail| {
+        let (drawn, farthest, unplaced) = draw_as(detail, 0.0);
+        if unplaced == 0 || !m.steps.iter().any(|s| matches!(s, Step::Rrp { .. })) {
+            return (drawn, farthest);
+        }
+        let (merged, nearest, left) = draw_as(detail, SLIDER_SAME_MM);
+        if left < unplaced { (merged, nearest) } else { (drawn, farthest) }
     };
     let (drawn, farthest) = draw(detail);
     // A crank large enough on paper may still be crowded: the rods' lines, its letters and

@@ -18,8 +18,10 @@ use crate::num::tol;
 use kurbo::{CubicBez, Point, Rect, Vec2};
 
 mod crank_detail;
+mod slider_numbers;
 mod swing;
 pub(super) use crank_detail::{DETAIL_GAP, DetailAt, DetailPlace, detail_place};
+pub(super) use slider_numbers::SLIDER_SAME_MM;
 
 /// Paper sizes of the symbols, mm.
 const SLIDER: (f64, f64) = (10.0, 5.0);
@@ -45,8 +47,6 @@ struct Stroke {
 
 /// Two strokes whose ends are this close on paper are one (mm).
 const STROKE_SAME_MM: f64 = 0.5;
-/// The length of a slider's stroke each of its position numbers needs (2.5 mm lettering), mm.
-const SLIDER_NUMBER_MM: f64 = 5.0;
 /// Positions whose every point is nearer than this on paper are one drawn position, mm:
 /// GOST 2.303's least distance between parallel lines (closer, two positions print as one
 /// thick line with two numbers).
@@ -97,6 +97,8 @@ pub struct MechanismView<'a> {
     /// and its box beside the drawing (none: a free spot in the drawing's region, if any).
     /// The mechanism then leaves the crank's numbers, letters and ω₁ to it.
     pub detail: Option<(DetailPlace, Option<Rect>)>,
+    /// A slider's positions this near on paper share one number, mm (0: each its own).
+    pub slider_same_mm: f64,
 }
 
 impl MechanismView<'_> {
@@ -228,6 +230,9 @@ impl MechanismView<'_> {
                 Obstacles::of_items(g.items.iter().filter(|i| matches!(i, Item::Path { pen, .. } if *pen == MAIN)));
             let inside = g.region.inflate(-5.0, -5.0);
             let lines = |off: Vec2| [(ea + off, eb + off), (ea, ea + off), (eb, eb + off)];
+            // As drawn: the extension lines run 2 mm past the dimension line (`dimension`).
+            let past = |off: Vec2| off + off / off.norm().max(tol::PAPER) * 2.0;
+            let drawn_lines = |off: Vec2| [(ea + off, eb + off), (ea, ea + past(off)), (eb, eb + past(off))];
             let cost = |off: Vec2| -> usize {
                 lines(off).iter().map(|&(a, b)| 10 * contours.hits_segment(a, b) + all.hits_segment(a, b)).sum()
             };
@@ -235,7 +240,11 @@ impl MechanismView<'_> {
             let candidates =
                 [hatch_side * hatch_off, hatch_side * (hatch_off + 4.0), -hatch_side * 6.0, -hatch_side * 10.0];
             let fits = |off: &Vec2| lines(*off).iter().all(|&(a, b)| inside.contains(a) && inside.contains(b));
-            let Some(off) = candidates.into_iter().filter(fits).min_by_key(|&off| cost(off)) else { continue };
+            // A line across a text (the trajectories' legend under a long stroke) only where
+            // every offset that fits crosses one: the cost counts lines alone.
+            let crosses_text = |off: &Vec2| drawn_lines(*off).iter().any(|&(a, b)| all.segment_crosses_text(a, b));
+            let fitting = candidates.into_iter().filter(fits);
+            let Some(off) = fitting.min_by_key(|&off| (crosses_text(&off), cost(off))) else { continue };
             let since = g.items.len();
             let mid = dimension(g, ea, eb, off);
             let (lang, c) = (self.words.lang, self.words.common);
@@ -378,22 +387,7 @@ impl MechanismView<'_> {
                 labels.add_text_ranked(a, a - o, &self.joined_label(group), h, 2);
             }
         }
-        // Each slider's positions numbered too, on the side of the guide away from its
-        // hatching (where the rod comes from), as the guide numbers D0 … D11 — when its
-        // stroke leaves each number room; crowded, they would only hide the guide.
-        for st in &self.m.steps {
-            let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
-            let (lo, hi) = self.travel(d, through, dir);
-            if self.view.len(hi - lo) < SLIDER_NUMBER_MM * self.k.positions.len() as f64 {
-                continue;
-            }
-            let n_world = dir.turn_90();
-            let up = self.view.dir(n_world * -self.hatch_side(joint, through, n_world));
-            for group in &groups {
-                let pos = &self.k.positions[group[0]];
-                labels.add_text_ranked(self.view.p(pos.state.points[d].p), up, &self.joined_label(group), 2.5, 2);
-            }
-        }
+        self.slider_numbers(labels, &groups);
     }
 
     /// Letters of the assigned position's points, away from the mechanism's centre.

@@ -15,6 +15,7 @@ use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::linkage::{Mechanism, PointId};
 use crate::num::math::Norm;
+use crate::num::tol;
 use crate::sheets::lever::labels::{LeverWords, free_detail_letters};
 use kurbo::{Point, Rect, Vec2};
 
@@ -91,7 +92,9 @@ pub(in crate::sheets::lever) fn detail_place(
     // crowded one, enlarges it), a crowded one at most CROWDED_R_MOST_MM long.
     let least = crank / DETAIL_R_MM;
     let mu = scale::length_scale_below(if crowded { least.min(mu_l) } else { least });
-    (!crowded || crank / mu <= CROWDED_R_MOST_MM).then(|| at_scale(m, mu, left, words))
+    // A detail no larger than the mechanism's drawing would only repeat it.
+    let enlarges = mu < mu_l * (1.0 - tol::ROUND_VALUE);
+    (enlarges && (!crowded || crank / mu <= CROWDED_R_MOST_MM)).then(|| at_scale(m, mu, left, words))
 }
 
 /// A crowded crank gets a detail where it is drawn shorter than this, mm (a longer one is

@@ -1,0 +1,70 @@
+//! Each slider's positions numbered on its guide, as the guide numbers D0 … D11.
+
+use super::MechanismView;
+use crate::drawing::place::Labels;
+use crate::lever::linkage::Step;
+use crate::num::math::Norm;
+use kurbo::Point;
+
+/// The length of a slider's stroke each of its position numbers needs (2.5 mm lettering), mm.
+const SLIDER_NUMBER_MM: f64 = 5.0;
+/// Where a slider's numbers leave a label no clean spot, its positions nearer than this on
+/// paper are one point to the reader and share a number ("0 ≡ 1 ≡ 9"), as the cam's do:
+/// round a dead centre the slider barely moves, and eight numbers within 5 mm left one no
+/// spot off the guide's lines. Only then: "1 ≡ 7" reads as positions that coincide.
+pub(in crate::sheets::lever) const SLIDER_SAME_MM: f64 = 1.5;
+
+impl MechanismView<'_> {
+    /// Each slider's positions numbered on the side of the guide away from its hatching
+    /// (where the rod comes from) — when its stroke leaves each number room; crowded, they
+    /// would only hide the guide. `groups` are the runs of positions drawn as one.
+    pub(super) fn slider_numbers(&self, labels: &mut Labels, groups: &[Vec<usize>]) {
+        for st in &self.m.steps {
+            let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
+            let (lo, hi) = self.travel(d, through, dir);
+            if self.view.len(hi - lo) < SLIDER_NUMBER_MM * self.k.positions.len() as f64 {
+                continue;
+            }
+            let n_world = dir.turn_90();
+            let up = self.view.dir(n_world * -self.hatch_side(joint, through, n_world));
+            let at = |group: &Vec<usize>| self.view.p(self.k.positions[group[0]].state.points[d].p);
+            let numbers = groups.iter().map(|g| (at(g), self.joined_label(g)));
+            for (point, label) in merged(numbers, self.slider_same_mm) {
+                labels.add_text_ranked(point, up, &label, 2.5, 2);
+            }
+        }
+    }
+}
+
+/// The numbers at their points, each merged into the first earlier one nearer than `same`
+/// mm ("10 ≡ 11") and dropped from its own point.
+fn merged(numbers: impl Iterator<Item = (Point, String)>, same: f64) -> Vec<(Point, String)> {
+    let mut out: Vec<(Point, String)> = Vec::new();
+    for (p, label) in numbers {
+        match out.iter_mut().find(|(q, _)| (*q - p).norm() < same) {
+            Some((_, first)) => {
+                first.push_str(" ≡ ");
+                first.push_str(&label);
+            }
+            None => out.push((p, label)),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_within_a_point_share_the_first_ones_label() {
+        let at = |x: f64| Point::new(x, 0.0);
+        let numbers = [(at(0.0), "0"), (at(1.0), "1"), (at(9.0), "2"), (at(1.4), "3"), (at(1.6), "4")];
+        let got = merged(numbers.iter().map(|(p, l)| (*p, l.to_string())), SLIDER_SAME_MM);
+        let labels: Vec<&str> = got.iter().map(|(_, l)| l.as_str()).collect();
+        // 1 and 3 are within 1.5 mm of 0; 4 is 1.6 mm from 0 and starts its own.
+        assert_eq!(labels, ["0 ≡ 1 ≡ 3", "2", "4"]);
+        assert_eq!(got[2].0, at(1.6));
+        assert_eq!(merged(numbers.iter().map(|(p, l)| (*p, l.to_string())), 0.0).len(), 5);
+    }
+}
