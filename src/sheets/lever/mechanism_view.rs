@@ -229,10 +229,13 @@ impl MechanismView<'_> {
             let contours =
                 Obstacles::of_items(g.items.iter().filter(|i| matches!(i, Item::Path { pen, .. } if *pen == MAIN)));
             let inside = g.region.inflate(-5.0, -5.0);
-            let lines = |off: Vec2| [(ea + off, eb + off), (ea, ea + off), (eb, eb + off)];
-            // As drawn: the extension lines run 2 mm past the dimension line (`dimension`).
-            let past = |off: Vec2| off + off / off.norm().max(tol::PAPER) * 2.0;
-            let drawn_lines = |off: Vec2| [(ea + off, eb + off), (ea, ea + past(off)), (eb, eb + past(off))];
+            // The dimension line and its extension lines, run `past` mm beyond it (as drawn,
+            // 2 mm: `dimension`; the cost and the fit count them to the dimension line).
+            let lines_past = |off: Vec2, past: f64| {
+                let ext = off + off / off.norm().max(tol::PAPER) * past;
+                [(ea + off, eb + off), (ea, ea + ext), (eb, eb + ext)]
+            };
+            let lines = |off: Vec2| lines_past(off, 0.0);
             let cost = |off: Vec2| -> usize {
                 lines(off).iter().map(|&(a, b)| 10 * contours.hits_segment(a, b) + all.hits_segment(a, b)).sum()
             };
@@ -242,7 +245,7 @@ impl MechanismView<'_> {
             let fits = |off: &Vec2| lines(*off).iter().all(|&(a, b)| inside.contains(a) && inside.contains(b));
             // A line across a text (the trajectories' legend under a long stroke) only where
             // every offset that fits crosses one: the cost counts lines alone.
-            let crosses_text = |off: &Vec2| drawn_lines(*off).iter().any(|&(a, b)| all.segment_crosses_text(a, b));
+            let crosses_text = |off: &Vec2| lines_past(*off, 2.0).iter().any(|&(a, b)| all.segment_crosses_text(a, b));
             let fitting = candidates.into_iter().filter(fits);
             let Some(off) = fitting.min_by_key(|&off| (crosses_text(&off), cost(off))) else { continue };
             let since = g.items.len();
