@@ -536,9 +536,23 @@ fn a_crowded_crank_is_drawn_again_enlarged_with_its_numbers() {
         let (scales, layout) = (&out.results["scales"], &out.results["layout"]);
         let mu_l = scales["mu_l"].as_f64().unwrap();
         assert!(0.12 / mu_l >= 9.0, "{lang:?}: a crank under 9 mm gets its detail for its size");
-        assert!(scales["detail_mu_l"].as_f64().is_some(), "{lang:?}: the crowded crank's detail");
+        let detail = scales["detail_mu_l"].as_f64().expect("the crowded crank's detail");
+        assert!(detail < 0.99 * mu_l, "{lang:?}: the detail at {detail} m/mm, the mechanism at {mu_l}");
         let longest = layout["longest_leader_mm"].as_f64().unwrap();
         assert!(longest <= 20.0, "{lang:?}: a leader of {longest} mm");
+        for fault in ["texts_crossed", "text_overlaps", "outside_region"] {
+            assert_eq!(layout[fault].as_u64(), Some(0), "{lang:?} {fault}: {}", layout["problems"]);
+        }
+    }
+    // Task 1 variant 34: a crowded crank whose detail found no free spot at 1:5 with its full
+    // margin was drawn at 1:10, the mechanism's own scale — a copy, not an enlargement. Now
+    // at 1:5 with the tight margin.
+    for lang in tmm_sheets::drawing::labels::Language::ALL {
+        let out = common::catalogue_sheet1("1", 34, lang);
+        let (scales, layout) = (&out.results["scales"], &out.results["layout"]);
+        let (mu_l, detail) = (scales["mu_l"].as_f64().unwrap(), scales["detail_mu_l"].as_f64());
+        let detail = detail.expect("the crowded crank's detail");
+        assert!(detail < 0.99 * mu_l, "{lang:?}: the detail at {detail} m/mm, the mechanism at {mu_l}");
         for fault in ["texts_crossed", "text_overlaps", "outside_region"] {
             assert_eq!(layout[fault].as_u64(), Some(0), "{lang:?} {fault}: {}", layout["problems"]);
         }

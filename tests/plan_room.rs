@@ -45,6 +45,25 @@ fn the_forces_give_way_to_plans_under_80_mm_down_to_their_own_floors() {
     }
 }
 
+/// A narrower force column whose smallest plan grows by a tenth used to win whatever lever it
+/// left: task 8 variant 27's was 43.8 mm, task 15 variant 6's 45.5, task 6 variant 7's 47.5
+/// (arrows and labels knotted about its poles). It now wins with a lever of at least 60 mm
+/// (`choice::LEVER_SHORTEST`); else the widest column, clean with such a lever, does.
+#[test]
+fn a_narrower_force_column_leaves_the_lever_measurable() {
+    for (task, variant) in [("8", 27), ("15", 6), ("6", 7)] {
+        for lang in [Language::Uz, Language::Ru] {
+            let results = common::catalogue_sheet1(task, variant, lang).results;
+            let lever = results["forces"]["scales"]["lever_mm"].as_f64().unwrap();
+            assert!(lever >= 60.0, "task {task} variant {variant} {lang:?}: lever {lever:.1} mm");
+            let layout = &results["layout"];
+            for key in ["texts_crossed", "text_overlaps", "outside_region"] {
+                assert_eq!(layout[key], 0, "task {task} variant {variant} {lang:?}: {key}");
+            }
+        }
+    }
+}
+
 /// The largest side of the largest plan of a `kind` ("velocity_plans") sheet 1's results
 /// list, mm.
 fn largest(results: &serde_json::Value, kind: &str) -> f64 {

@@ -18,8 +18,9 @@ const REDUCTIONS: [f64; 21] = [
 /// GOST 2.302 enlargements k:1.
 const ENLARGEMENTS: [f64; 9] = [2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0];
 
-/// Tolerance that keeps an exact value instead of bumping it to the next one.
-const EXACT: f64 = 1.0 - tol::ROUND_VALUE;
+/// Tolerance that keeps an exact value instead of bumping it to the next one (a scale that
+/// matches another to within round-off is the same scale: `mu < other * EXACT` is finer).
+pub const EXACT: f64 = 1.0 - tol::ROUND_VALUE;
 
 /// The smallest round value ≥ `x`. A scale factor μ (units per mm) chosen this way makes a
 /// drawing as large as possible without leaving its region. A drawing of no extent (x ≤ 0,

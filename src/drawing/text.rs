@@ -5,6 +5,30 @@ use super::scene::{Anchor, Group, Text};
 use crate::font;
 use kurbo::{Point, Rect};
 
+/// Labels of points that are one point to the reader merged: each label that is `same` as an
+/// earlier kept one is appended to it after `joiner` ("0≡17", "10 ≡ 11") and gets none of its
+/// own (`None` at its index).
+pub fn merged_labels(
+    labels: impl IntoIterator<Item = String>,
+    same: impl Fn(usize, usize) -> bool,
+    joiner: &str,
+) -> Vec<Option<String>> {
+    let mut out: Vec<Option<String>> = Vec::new();
+    for (k, label) in labels.into_iter().enumerate() {
+        match (0..k).find(|&j| out[j].is_some() && same(j, k)) {
+            Some(j) => {
+                if let Some(first) = out[j].as_mut() {
+                    first.push_str(joiner);
+                    first.push_str(&label);
+                }
+                out.push(None);
+            }
+            None => out.push(Some(label)),
+        }
+    }
+    out
+}
+
 /// A symbol and an optional subscript, e.g. ("v", "BA").
 #[derive(Debug, Clone, PartialEq)]
 pub struct LabelText {

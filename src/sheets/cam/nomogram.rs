@@ -15,7 +15,7 @@ use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along, vector};
-use crate::drawing::text::LabelText;
+use crate::drawing::text::{self, LabelText};
 use crate::drawing::view::View;
 use crate::num::math::Norm;
 use crate::num::tol;
@@ -74,19 +74,7 @@ const ZONE_NAME_INSET_MM: f64 = 4.0;
 /// The numbers 0…n−1 as labels, a number that is `same` as an earlier labelled one merged
 /// into its label ("0≡17") and given none of its own.
 fn merged_labels(n: usize, same: impl Fn(usize, usize) -> bool) -> Vec<Option<String>> {
-    let mut out: Vec<Option<String>> = Vec::with_capacity(n);
-    for k in 0..n {
-        match (0..k).find(|&j| out[j].is_some() && same(j, k)) {
-            Some(j) => {
-                if let Some(label) = out[j].as_mut() {
-                    label.push_str(&format!("≡{k}"));
-                }
-                out.push(None);
-            }
-            None => out.push(Some(k.to_string())),
-        }
-    }
-    out
+    text::merged_labels((0..n).map(|k| k.to_string()), same, "≡")
 }
 
 /// Where a view of the follower (or cam) frame goes: its box in the world (metres), centred

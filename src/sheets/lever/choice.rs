@@ -12,6 +12,28 @@ use super::plan_regions::LARGEST_PLAN;
 /// 127 mm instead of 95.
 const SHRUNK_FOR_PLANS: f64 = 0.75;
 
+/// How much smaller than the rule's a variant may draw the mechanism (its μ_l this many
+/// times coarser): one or two GOST steps (1:4 → 1:5, 1:5 → 1:10), not more (task 8 variant
+/// 29 in Russian took the larger lettering, 0.006 less empty, with its V-compressor at 1:10
+/// instead of 1:4 and its crank in a detail) — unless a lever under [`LEVER_READABLE`] grows
+/// by [`LEVER_WORTH_IT`] (task 8 variant 19: 1:4 → 1:10 for a lever of 110 mm, not 66;
+/// variant 45 in Russian: 85 mm, not 42).
+const MECHANISM_SHRUNK_MOST: f64 = 2.0;
+
+/// How many times longer a lever under [`LEVER_READABLE`] must grow to be worth drawing the
+/// mechanism more than [`MECHANISM_SHRUNK_MOST`] times smaller.
+const LEVER_WORTH_IT: f64 = 1.5;
+
+/// The shortest Zhukovsky lever a narrower force column may leave where its plans grow by a
+/// tenth, mm: shorter, its arrows and labels knot (task 8 variant 45: 42 mm, with fourteen
+/// arrows about p, a, b, c); the widest column is taken where its lever is at least this.
+pub(super) const LEVER_SHORTEST: f64 = 60.0;
+
+/// Whether `c`'s lever (if it has one) is at least [`LEVER_SHORTEST`].
+pub(super) fn lever_measurable(c: &Composed) -> bool {
+    c.force_scales.as_ref().is_none_or(|f| f.lever_mm >= LEVER_SHORTEST - crate::num::tol::PAPER)
+}
+
 /// The share of empty 20 mm cells above which a sheet is too empty (issue 22's bound).
 pub(super) const EMPTY_MOST: f64 = 0.5;
 
@@ -27,12 +49,15 @@ pub(super) fn better(l: &Composed, rule: &Composed, margin: f64) -> bool {
     (l.layout.is_clean() || !rule.layout.is_clean()) && floors.kept(l) && empty(l) < empty(rule) - margin
 }
 
-/// What a variant must keep of the rule's composition: its smallest plan, its shortest
-/// labelled polygon side, lever and group drawing where those are under what reads plainly
-/// (`POLYGON_SIDE_MIN`, [`LEVER_READABLE`], [`DRAWING_READABLE`]), and tables 3–5 together
-/// where they were.
+/// What a variant must keep of the rule's composition: the mechanism's scale, its smallest
+/// plan, its shortest labelled polygon side, lever and group drawing where those are under
+/// what reads plainly (`POLYGON_SIDE_MIN`, [`LEVER_READABLE`], [`DRAWING_READABLE`]), and
+/// tables 3–5 together where they were.
 #[derive(Clone, Copy)]
 pub(super) struct Floors {
+    /// The mechanism's μ_l, m/mm: a variant may draw it at most [`MECHANISM_SHRUNK_MOST`]
+    /// times smaller, or more where its lever grows by [`LEVER_WORTH_IT`].
+    mu_l: f64,
     plan: f64,
     side: f64,
     lever: f64,
@@ -44,6 +69,7 @@ pub(super) struct Floors {
 impl Floors {
     pub(super) fn of(c: &Composed) -> Floors {
         Floors {
+            mu_l: c.scales.mu_l,
             plan: plan_mm(c),
             side: side_mm(c).min(POLYGON_SIDE_MIN),
             lever: lever_mm(c).min(LEVER_READABLE),
@@ -68,7 +94,10 @@ impl Floors {
 
     pub(super) fn kept(&self, c: &Composed) -> bool {
         let at_least = |size: f64, floor: f64| size >= floor - crate::num::tol::PAPER;
-        at_least(plan_mm(c), self.plan)
+        let mechanism_kept = c.scales.mu_l <= self.mu_l * MECHANISM_SHRUNK_MOST * (1.0 + crate::num::tol::ROUND_VALUE);
+        let lever_grown = !at_least(self.lever, LEVER_READABLE) && at_least(lever_mm(c), LEVER_WORTH_IT * self.lever);
+        (mechanism_kept || lever_grown)
+            && at_least(plan_mm(c), self.plan)
             && at_least(side_mm(c), self.side)
             && at_least(lever_mm(c), self.lever)
             && at_least(drawing_mm(c), self.drawing)

@@ -12,7 +12,7 @@ mod widen;
 
 pub(super) use header::region_header;
 
-use super::choice::{EMPTY_MOST, Floors, better, empty};
+use super::choice::{EMPTY_MOST, Floors, better, empty, lever_measurable};
 use super::drawn_once::DrawnOnce;
 use super::forces_view::{CellMemo, ForceScales, ForcesInput, draw_forces};
 use super::labels::LeverWords;
@@ -198,13 +198,26 @@ fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> 
             draw(inp, k, plans, next.1)
         }
     };
-    for (_, next) in growing {
+    // The first clean one whose lever stays measurable wins; were none, the first clean one
+    // wins unless the widest is clean with a measurable lever and the smaller kind's largest
+    // plan as large (both capped at LARGEST_PLAN: task 10 variant 24's widest has 77.6 mm).
+    let mut short_lever = None;
+    for ((_, larger), next) in growing {
         let drawn = narrow(next)?;
         if drawn.layout.is_clean() {
-            return Ok(drawn);
+            if lever_measurable(&drawn) {
+                return Ok(drawn);
+            }
+            short_lever.get_or_insert((larger, drawn));
         }
     }
     let widest = draw(inp, k, plans, widest)?;
+    if let Some((larger, drawn)) = short_lever {
+        let plans_kept = largest >= larger - crate::num::tol::PAPER;
+        if !(widest.layout.is_clean() && lever_measurable(&widest) && plans_kept) {
+            return Ok(drawn);
+        }
+    }
     if widest.layout.is_clean() {
         let floors = Floors::of(&widest);
         // Or, keeping the mechanism's scale, the forces shrunk as far as larger plans may

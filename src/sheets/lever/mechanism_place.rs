@@ -131,22 +131,25 @@ pub(super) fn mechanism_group(
     let draw = |detail| {
         let (drawn, farthest, unplaced) = draw_as(detail, 0.0);
         if unplaced == 0 || !m.steps.iter().any(|s| matches!(s, Step::Rrp { .. })) {
-            return (drawn, farthest);
+            return (drawn, farthest, unplaced);
         }
         let (merged, nearest, left) = draw_as(detail, SLIDER_SAME_MM);
-        if left < unplaced { (merged, nearest) } else { (drawn, farthest) }
+        if left < unplaced { (merged, nearest, left) } else { (drawn, farthest, unplaced) }
     };
-    let (drawn, farthest) = draw(detail);
+    let (drawn, farthest, unplaced) = draw(detail);
     // A crank large enough on paper may still be crowded: the rods' lines, its letters and
     // ω₁ round it pushed its numbers off on long leaders (task 1's tall two-slider
-    // mechanisms: 58–78 mm). Its detail then, in a free spot of the region, if it does better.
-    if detail.is_some() || farthest < NUMBERS_FAR_MM {
+    // mechanisms: 58–78 mm) or left one on a line (a six-bar's 9.3 mm crank among its
+    // rods' twelve positions). Its detail then, in a free spot of the region, if it leaves
+    // fewer labels without a clean spot, or as few nearer.
+    if detail.is_some() || (farthest < NUMBERS_FAR_MM && unplaced == 0) {
         return drawn;
     }
     let left = crank_on_left(m, k, world);
     let Some(crowded) = detail_place(m, mu_l, left, words, true) else { return drawn };
-    let (redrawn, nearer) = draw(Some((crowded, None)));
-    if redrawn.detail_mu_l.is_some() && nearer < farthest { redrawn } else { drawn }
+    let (redrawn, nearer, left_over) = draw(Some((crowded, None)));
+    let better = (left_over, nearer) < (unplaced, farthest);
+    if redrawn.detail_mu_l.is_some() && better { redrawn } else { drawn }
 }
 
 /// Whether the crank's pivot is left of the mechanism's middle (its detail goes that side).

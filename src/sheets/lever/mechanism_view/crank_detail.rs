@@ -15,7 +15,6 @@ use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::linkage::{Mechanism, PointId};
 use crate::num::math::Norm;
-use crate::num::tol;
 use crate::sheets::lever::labels::{LeverWords, free_detail_letters};
 use kurbo::{Point, Rect, Vec2};
 
@@ -28,8 +27,11 @@ const DETAIL_R_MM: f64 = 15.0;
 /// In a free spot of a crowded region the detail's crank may be this short, mm: its numbers
 /// in 2.5 mm lettering have under 5 mm each, but no rod's line among them.
 const DETAIL_R_LEAST_MM: f64 = 10.0;
-/// Room round the detail's circle for the numbers, the letters and ω₁, mm.
+/// Room round the detail's circle for the numbers, the letters and ω₁, mm; in a free spot
+/// of a region that has none so large, at least the tight margin (a number in 2.5 mm
+/// lettering beside its pin, a letter in 5 mm).
 const MARGIN: f64 = 11.0;
+const TIGHT_MARGIN: f64 = 8.0;
 /// The detail's title above its circle's room, mm, and its baseline from the box's top.
 const TITLE_H: f64 = 8.0;
 const TITLE_BASELINE: f64 = 6.5;
@@ -93,7 +95,7 @@ pub(in crate::sheets::lever) fn detail_place(
     let least = crank / DETAIL_R_MM;
     let mu = scale::length_scale_below(if crowded { least.min(mu_l) } else { least });
     // A detail no larger than the mechanism's drawing would only repeat it.
-    let enlarges = mu < mu_l * (1.0 - tol::ROUND_VALUE);
+    let enlarges = mu < mu_l * scale::EXACT;
     (enlarges && (!crowded || crank / mu <= CROWDED_R_MOST_MM)).then(|| at_scale(m, mu, left, words))
 }
 
@@ -106,10 +108,15 @@ const CROWDED_R_MOST_MM: f64 = 40.0;
 /// The detail at `mu`: its box holds the crank's circle with the room round it, and its
 /// title above.
 fn at_scale(m: &Mechanism, mu: f64, left: bool, words: &LeverWords) -> DetailPlace {
-    let circle = 2.0 * (m.crank().length / mu + MARGIN);
+    DetailPlace { mu, size: sized(m, mu, words, MARGIN), left, at: DetailAt::Inside }
+}
+
+/// The detail's box at `mu` with `margin` round its crank's circle: width and height, mm.
+fn sized(m: &Mechanism, mu: f64, words: &LeverWords, margin: f64) -> (f64, f64) {
+    let circle = 2.0 * (m.crank().length / mu + margin);
     let (letter, scale) = title(m, mu, words);
     let title_w = letter.width(LETTER_H) + LETTER_GAP + scale.width(SCALE_H);
-    DetailPlace { mu, size: (circle.max(title_w + 2.0), circle + TITLE_H), left, at: DetailAt::Inside }
+    (circle.max(title_w + 2.0), circle + TITLE_H)
 }
 
 /// The detail's title: its letter, and its scale "(μ_l = 0.002 m/mm)".
@@ -126,15 +133,24 @@ fn letter(m: &Mechanism) -> String {
 }
 
 impl MechanismView<'_> {
-    /// The detail in a free box of the drawing's region nearest the crank, at its scale or,
-    /// where none is free, at the next coarser one that still draws the crank
-    /// `DETAIL_R_LEAST_MM` long.
+    /// The detail in a free box of the drawing's region nearest the crank, at its scale with
+    /// its margin, or with the tight margin, or at the next coarser scale that still draws
+    /// the crank `DETAIL_R_LEAST_MM` long and larger than the mechanism does.
     pub(super) fn free_spot(&self, g: &Group, d: &DetailPlace) -> Option<(DetailPlace, Rect)> {
         let coarser = scale::length_scale(d.mu * 1.01);
-        let smaller = (self.m.crank().length / coarser >= DETAIL_R_LEAST_MM)
+        // Still finer than the mechanism's: a detail at its scale only repeats it (task 1
+        // variant 34's crowded crank was "enlarged" at 1:10 beside its 1:10 drawing).
+        let enlarges = coarser < self.view.mu * scale::EXACT;
+        let smaller = (enlarges && self.m.crank().length / coarser >= DETAIL_R_LEAST_MM)
             .then(|| at_scale(self.m, coarser, d.left, self.words));
+        // Where the box with its full margin is not free, the box with the margin the
+        // numbers and letters need at least, before a coarser scale.
+        let tight = DetailPlace { size: sized(self.m, d.mu, self.words, TIGHT_MARGIN), ..*d };
         let drawn = Obstacles::of_items_within(&g.items, g.region);
-        std::iter::once(*d).chain(smaller).find_map(|d| self.free_box(g.region, &drawn, d.size).map(|r| (d, r)))
+        [Some(*d), Some(tight), smaller]
+            .into_iter()
+            .flatten()
+            .find_map(|d| self.free_box(g.region, &drawn, d.size).map(|r| (d, r)))
     }
 
     /// A box of `(w, h)` in `region` clear of everything `drawn` there (the header and

@@ -2,6 +2,7 @@
 
 use super::MechanismView;
 use crate::drawing::place::Labels;
+use crate::drawing::text::merged_labels;
 use crate::lever::linkage::Step;
 use crate::num::math::Norm;
 use kurbo::Point;
@@ -39,17 +40,9 @@ impl MechanismView<'_> {
 /// The numbers at their points, each merged into the first earlier one nearer than `same`
 /// mm ("10 ≡ 11") and dropped from its own point.
 fn merged(numbers: impl Iterator<Item = (Point, String)>, same: f64) -> Vec<(Point, String)> {
-    let mut out: Vec<(Point, String)> = Vec::new();
-    for (p, label) in numbers {
-        match out.iter_mut().find(|(q, _)| (*q - p).norm() < same) {
-            Some((_, first)) => {
-                first.push_str(" ≡ ");
-                first.push_str(&label);
-            }
-            None => out.push((p, label)),
-        }
-    }
-    out
+    let (points, labels): (Vec<Point>, Vec<String>) = numbers.unzip();
+    let near = |j: usize, k: usize| (points[j] - points[k]).norm() < same;
+    points.iter().zip(merged_labels(labels, near, " ≡ ")).filter_map(|(&p, label)| Some((p, label?))).collect()
 }
 
 #[cfg(test)]
