@@ -194,6 +194,7 @@ fn an_undercut_pinion_builds_with_a_warning_and_a_note_on_the_sheet() {
     );
     let b = sheet2(&p);
     assert_eq!(b.output.results["pair"]["undercut"][0], true);
+    assert_eq!(b.output.results["pair"]["undercut_course"][0], true, "z = 10 at x = 0: below (17 − 10)/17");
     assert!(b.output.scene.texts().any(|t| t.text.contains("xₘᵢₙ")), "the sheet says so");
 }
 
@@ -218,7 +219,38 @@ fn the_pair_table_is_headed_as_the_wheels_tables_continuation() {
         assert!(g.texts().any(|t| t.text == expected), "{lang:?}: no heading {expected:?}");
         let old_style = [", davomi)", ", продолжение)", ", continued)"];
         assert!(!g.texts().any(|t| old_style.iter().any(|o| t.text.ends_with(o))), "{lang:?}: the title repeated");
+        // The note's Markdown heads the two parts as the sheet does, the title once.
+        let files = pipeline::sheet_files(&b, &[]).unwrap();
+        let md = files.iter().find(|(name, _)| name == "sheet2-tables.md").expect("the tables' Markdown");
+        let md = String::from_utf8(md.1.clone()).unwrap();
+        let headings: Vec<&str> = md.lines().filter_map(|l| l.strip_prefix("### ")).collect();
+        assert_eq!(headings.iter().filter(|h| **h == wheels.title).count(), 1, "{lang:?}: {headings:?}");
+        assert!(headings.contains(&expected.as_str()), "{lang:?}: {headings:?}");
     }
+}
+
+/// `shift: auto` picks the course's least shift, (17 − z)/17 rounded up to 0.001: at z = 12
+/// 5/17 = 0.2941 → 0.295, below the exact limit 1 − 12·sin²20°/2 = 0.29813. The sheet's
+/// note states the course's rule (not "without undercut"), and `results.json` names both
+/// verdicts, so the note and the file agree.
+#[test]
+fn an_automatic_shift_is_noted_by_the_course_rule_and_the_results_name_both_rules() {
+    let (_, text) = gear_fixtures().into_iter().find(|(n, _)| n == "shifted-double-planet").unwrap();
+    let mut p = pipeline::load(&text).unwrap();
+    p.info.language = Language::En;
+    let b = sheet2(&p);
+    let pair = &b.output.results["pair"];
+    assert_eq!(pair["z"][0], 12, "the fixture's pinion");
+    assert_eq!(pair["shift"][0], 0.295);
+    let course = 5.0 / 17.0;
+    let exact = 1.0 - 12.0 * 20f64.to_radians().sin().powi(2) / 2.0;
+    assert!((pair["x_min_course"][0].as_f64().unwrap() - course).abs() < 1e-15);
+    assert!((pair["x_min"][0].as_f64().unwrap() - exact).abs() < 1e-15);
+    assert_eq!(pair["undercut_course"][0], false, "0.295 ≥ 5/17");
+    assert_eq!(pair["undercut"][0], true, "0.295 < 0.29813: a hair, drawn, unnoted");
+    let note = "Wheel 1 shifted by x = 0.295 ≥ xₘᵢₙ = 0.2941 (the course's least shift)";
+    assert!(b.output.scene.texts().any(|t| t.text == note), "no note {note:?}");
+    assert!(!b.output.scene.texts().any(|t| t.text.contains("without undercut")));
 }
 
 /// The addendum coefficient is printed h, subscript a, then its star at full size (hₐ*,

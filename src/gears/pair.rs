@@ -127,6 +127,14 @@ pub struct Wheel {
     pub form_radius: f64,
 }
 
+impl Wheel {
+    /// Below the course's least shift (what the sheet notes and tabulates); a shift this
+    /// close below it is at it (1e-12: 5/17 computed two ways).
+    pub fn undercut_by_course(&self) -> bool {
+        self.shift < self.x_min_course - AT_THE_LIMIT
+    }
+}
+
 /// The pair, exact.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Pair {
@@ -260,7 +268,7 @@ impl Pair {
         let mut out = Vec::new();
         for (i, w) in self.wheels.iter().enumerate() {
             // By the course's rule; the exact limit is information (the note gives both).
-            if w.shift < w.x_min_course - AT_THE_LIMIT {
+            if w.undercut_by_course() {
                 out.push(PairWarning::Undercut { wheel: i + 1, x: w.shift, x_min: w.x_min_course, exact: w.x_min });
             }
             if w.tip_thickness < 0.25 * self.spec.module {

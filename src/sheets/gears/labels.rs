@@ -23,7 +23,7 @@ crate::label_set! {
         datum_rolling_line,
         arc_of_action,
         undercut_note(w, x, xmin),
-        auto_shift_note(w, x),
+        auto_shift_note(w, x, xmin),
         thin_tip_note(w, sa),
         low_ratio_note(e),
         interference_note(w),

@@ -99,15 +99,11 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
                     let words = GearWords::new(lang);
                     let sized = tables::notes(p, p.pair.contact_ratio, &words, ctx.first_table);
                     let height = right_of(RIGHT_X0).height();
-                    let largest = tables::largest_sizes(&sized, tolerance, &words, ctx.first_table);
+                    let largest = tables::largest_sizes(&sized, tolerance, &words);
                     let one_column = largest.iter().map(|s| s.0).fold(0.0, f64::max);
                     match table::flow_width(&largest, height, tables::GAP) {
                         w if w <= one_column + 1e-9 => w,
-                        _ => table::flow_width(
-                            &tables::large_sizes(&sized, tolerance, &words, ctx.first_table),
-                            height,
-                            tables::GAP,
-                        ),
+                        _ => table::flow_width(&tables::large_sizes(&sized, tolerance, &words), height, tables::GAP),
                     }
                 })
                 .fold(0.0, f64::max);
@@ -129,7 +125,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let mut planetary_reading = None;
     if let Some(pl) = &p.planetary {
         // The views as large as the tables below them still fit in 3.5 mm lettering.
-        let large = tables::large_sizes(&notes, tolerance, &words, ctx.first_table);
+        let large = tables::large_sizes(&notes, tolerance, &words);
         let fits = |share: f64| {
             let below = Rect::new(right.x0, planetary_frame(pl, right, share).2.y1 + 4.0, right.x1, right.y1);
             tables::fit(&large, below)
@@ -142,13 +138,7 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         groups.push(drawn.group);
         y_tables = drawn.bottom + 4.0;
     }
-    groups.push(tables::group(
-        &notes,
-        Rect::new(right.x0, y_tables, right.x1, right.y1),
-        tolerance,
-        &words,
-        ctx.first_table,
-    ));
+    groups.push(tables::group(&notes, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, &words));
 
     // The rack generation of each wheel in the largest room the rest leaves on the sheet,
     // wheel 1 first (the pinion, the shift chosen against its undercut).
@@ -262,7 +252,10 @@ fn mesh_notes(p: &GearsProject, words: &GearWords) -> Vec<String> {
     let mut out = vec![l.active_note().to_string()];
     for (i, w) in p.pair.wheels.iter().enumerate() {
         if p.auto_shift[i] {
-            out.push(l.auto_shift_note(&(i + 1).to_string(), &v(w.shift)));
+            // The shift as chosen (to 0.001, as the wheels' table gives it), the limit as the
+            // table gives it.
+            let x = fmt::trimmed(w.shift, lang);
+            out.push(l.auto_shift_note(&(i + 1).to_string(), &x, &v(w.x_min_course)));
         }
     }
     for w in &p.warnings {

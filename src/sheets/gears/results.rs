@@ -36,8 +36,12 @@ struct PairOut {
     base_pitch: f64,
     tooth_thickness: [f64; 2],
     tip_thickness: [f64; 2],
+    /// By the exact rule (the drawn outline): x < h_a* − z·sin²α/2.
     undercut: [bool; 2],
     x_min: [f64; 2],
+    /// By the course's rule, as the sheet's table and notes give it: x < (17 − z)/17.
+    undercut_course: [bool; 2],
+    x_min_course: [f64; 2],
     interference: [bool; 2],
 }
 
@@ -138,6 +142,8 @@ fn pair_out(p: &GearsProject, pr: &Pair, eps_drawn: f64) -> PairOut {
         tip_thickness: each(&|i| w[i].tip_thickness),
         undercut: [w[0].undercut, w[1].undercut],
         x_min: each(&|i| w[i].x_min),
+        undercut_course: [w[0].undercut_by_course(), w[1].undercut_by_course()],
+        x_min_course: each(&|i| w[i].x_min_course),
         interference: pr.interference,
     }
 }

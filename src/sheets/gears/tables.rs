@@ -13,14 +13,15 @@ use crate::sheets::scaffold;
 use kurbo::Rect;
 
 /// The note's tables in the sheet's language, numbered from `first` (the wheels and the
-/// pair are one table, in two parts); `eps_drawn` is the contact ratio measured on the
-/// drawing.
+/// pair are one table, in two parts: the pair's part is headed as GOST 2.105 heads a
+/// table's continued part, "Продолжение таблицы 6", in the note as on the sheet);
+/// `eps_drawn` is the contact ratio measured on the drawing.
 pub fn notes(p: &GearsProject, eps_drawn: f64, words: &GearWords, first: u32) -> Vec<NoteTable> {
     let (l, c, lang) = (words.sheet, words.common, words.lang);
     let n = |k: u32| (first + k).to_string();
-    let pair = l.pair_table(&n(0));
+    let (wheels, pair) = (l.pair_table(&n(0)), l.pair_table_continued(&n(0)));
     let mut out = vec![
-        scaffold::note(lang, report::gears::wheels(&p.pair), &pair, vec![l.wheel("1"), l.wheel("2")], true),
+        scaffold::note(lang, report::gears::wheels(&p.pair), &wheels, vec![l.wheel("1"), l.wheel("2")], true),
         scaffold::note(lang, report::gears::pair(&p.pair, eps_drawn), &pair, vec![c.value().into()], true),
     ];
     if let Some(pl) = &p.planetary {
@@ -42,9 +43,9 @@ pub fn table_count(p: &GearsProject) -> u32 {
 /// fit in, in columns spread over its width, else in rows (a wide table under the others); else in
 /// 2.5 mm columns. The room the planetary views leave below them is the tables': a right
 /// half left empty is what a teacher marks down.
-pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &GearWords, first: u32) -> Group {
+pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &GearWords) -> Group {
     for h in [LARGEST_TEXT, LARGE_TEXT] {
-        let drawn = lettered(notes, tolerance, words, first, h);
+        let drawn = lettered(notes, tolerance, words, h);
         let sizes: Vec<(f64, f64)> = drawn.iter().map(Table::size).collect();
         if fit(&sizes, region) {
             return table::flow_spread("tables", drawn, region, GAP);
@@ -53,19 +54,19 @@ pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &
             return table::flow_rows("tables", drawn, region, GAP);
         }
     }
-    table::flow("tables", lettered(notes, tolerance, words, first, CELL_TEXT), region, GAP)
+    table::flow("tables", lettered(notes, tolerance, words, CELL_TEXT), region, GAP)
 }
 
 /// The tables' sizes in 3.5 mm lettering, for [`fit`] (the planetary views grow while they
 /// fit): measured once, tried against every room.
-pub fn large_sizes(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords, first: u32) -> Vec<(f64, f64)> {
-    lettered(notes, tolerance, words, first, LARGE_TEXT).iter().map(Table::size).collect()
+pub fn large_sizes(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords) -> Vec<(f64, f64)> {
+    lettered(notes, tolerance, words, LARGE_TEXT).iter().map(Table::size).collect()
 }
 
 /// The tables' sizes in 5 mm lettering: a pair without a stage has the right column to
 /// itself, and takes it as wide as these need where they stand in one column.
-pub fn largest_sizes(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords, first: u32) -> Vec<(f64, f64)> {
-    lettered(notes, tolerance, words, first, LARGEST_TEXT).iter().map(Table::size).collect()
+pub fn largest_sizes(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords) -> Vec<(f64, f64)> {
+    lettered(notes, tolerance, words, LARGEST_TEXT).iter().map(Table::size).collect()
 }
 
 /// Whether tables of `sizes` fit `region` as [`group`] flows them.
@@ -73,8 +74,8 @@ pub fn fit(sizes: &[(f64, f64)], region: Rect) -> bool {
     table::flow_fits(sizes, region, GAP)
 }
 
-fn lettered(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords, first: u32, text_h: f64) -> Vec<Table> {
-    notes.iter().map(|n| Table { text_h, ..sheet_table(n, tolerance, words, first) }).collect()
+fn lettered(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords, text_h: f64) -> Vec<Table> {
+    notes.iter().map(|n| Table { text_h, ..sheet_table(n, tolerance, words) }).collect()
 }
 
 /// The tables' larger letterings, mm (GOST 2.304's next sizes), and the gap between them.
@@ -83,10 +84,8 @@ const LARGEST_TEXT: f64 = 5.0;
 pub const GAP: f64 = 4.0;
 
 /// A table as sheet 2 draws it: units after the symbols, the conditions' verdicts in words,
-/// the ratio's condition with its tolerance, the pair's table as the wheels' continuation
-/// (table `first`), headed as GOST 2.105 heads a table's continued part ("Продолжение
-/// таблицы 6") without its title again.
-fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords, first: u32) -> Table {
+/// the ratio's condition with its tolerance.
+fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords) -> Table {
     let (l, c, lang) = (words.sheet, words.common, words.lang);
     let conditions = n.table.id == "conditions";
     let mut rows = scaffold::drawn_rows(n, lang, !conditions);
@@ -101,11 +100,9 @@ fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords, first: 
         }
     }
     let label_w = rows.iter().map(|(x, _)| x.width(CELL_TEXT) + 4.0).fold(14.0, f64::max);
-    // The pair's table continues the wheels': titled as the continuation.
-    let title = if n.table.id == "pair" { l.pair_table_continued(&first.to_string()) } else { n.title.clone() };
     Table {
         id: format!("{}{}", crate::drawing::table::PART, n.table.id),
-        title,
+        title: n.title.clone(),
         header: n.column_titles.clone(),
         rows,
         label_w,
