@@ -31,7 +31,12 @@ pub(super) const LEVER_SHORTEST: f64 = 60.0;
 
 /// Whether `c`'s lever (if it has one) is at least [`LEVER_SHORTEST`].
 pub(super) fn lever_measurable(c: &Composed) -> bool {
-    c.force_scales.as_ref().is_none_or(|f| f.lever_mm >= LEVER_SHORTEST - crate::num::tol::PAPER)
+    c.force_scales.as_ref().is_none_or(|f| at_least(f.lever_mm, LEVER_SHORTEST))
+}
+
+/// Whether a size on paper reaches `floor`, mm, to within drawing precision.
+pub(super) fn at_least(size: f64, floor: f64) -> bool {
+    size >= floor - crate::num::tol::PAPER
 }
 
 /// The share of empty 20 mm cells above which a sheet is too empty (issue 22's bound).
@@ -93,7 +98,6 @@ impl Floors {
     }
 
     pub(super) fn kept(&self, c: &Composed) -> bool {
-        let at_least = |size: f64, floor: f64| size >= floor - crate::num::tol::PAPER;
         let mechanism_kept = c.scales.mu_l <= self.mu_l * MECHANISM_SHRUNK_MOST * (1.0 + crate::num::tol::ROUND_VALUE);
         let lever_grown = !at_least(self.lever, LEVER_READABLE) && at_least(lever_mm(c), LEVER_WORTH_IT * self.lever);
         (mechanism_kept || lever_grown)

@@ -12,7 +12,7 @@ mod widen;
 
 pub(super) use header::region_header;
 
-use super::choice::{EMPTY_MOST, Floors, better, empty, lever_measurable};
+use super::choice::{EMPTY_MOST, Floors, at_least, better, empty, lever_measurable};
 use super::drawn_once::DrawnOnce;
 use super::forces_view::{CellMemo, ForceScales, ForcesInput, draw_forces};
 use super::labels::LeverWords;
@@ -213,7 +213,7 @@ fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> 
     }
     let widest = draw(inp, k, plans, widest)?;
     if let Some((larger, drawn)) = short_lever {
-        let plans_kept = largest >= larger - crate::num::tol::PAPER;
+        let plans_kept = at_least(largest, larger);
         if !(widest.layout.is_clean() && lever_measurable(&widest) && plans_kept) {
             return Ok(drawn);
         }
