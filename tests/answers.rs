@@ -216,11 +216,14 @@ fn the_drawn_tables_print_the_values_the_note_prints() {
                     let wanted: Vec<String> = md
                         .lines()
                         .filter(|l| l.starts_with("| <a id="))
+                        // The ratio's condition is drawn as u_1H's deviation in per cent.
+                        .filter(|l| !l.contains("conditions.ratio\""))
                         .flat_map(|l| {
                             let cells: Vec<String> =
                                 l.trim_end_matches('|').split(" | ").skip(2).map(|c| c.trim().to_string()).collect();
-                            // A condition met is "1" in the note and a word on the sheet.
-                            let words = if t.table.id == "conditions" { 2 } else { cells.len() };
+                            // A condition met is "1" in the note and a word on the sheet, its
+                            // limit drawn with its relation ("> 0,633", "≥ 17").
+                            let words = if t.table.id == "conditions" { 1 } else { cells.len() };
                             cells.into_iter().take(words).collect::<Vec<_>>()
                         })
                         .collect();

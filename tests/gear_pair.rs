@@ -243,7 +243,7 @@ fn working_angle_satisfies_the_involute_equation_to_the_last_bits() {
         ([10, 40], [0.5, 0.0]),
         ([20, 80], [-0.3, 0.3]),
         ([25, 30], [1.0, 0.8]),
-        ([14, 14], [-0.2, -0.2]),
+        ([20, 24], [-0.2, -0.2]),
     ];
     for (z, x) in cases {
         let spec = shifted(4e-3, z, x);
@@ -478,10 +478,15 @@ fn undercut_limits() {
     let at_limit = Pair::new(&shifted(3e-3, [12, 24], [course, 0.0])).unwrap();
     assert!(at_limit.wheels[0].undercut, "5/17 < 0.29813");
     assert!(!at_limit.warnings().iter().any(|w| matches!(w, PairWarning::Undercut { .. })));
-    // The undercut pinion's root is reached by wheel 2's tip below the involute: wheel 2's tip
-    // passes N1, and the active line is cut at N1.
+    // The undercut pinion's root is reached by wheel 2's tip below the involute: the rack's
+    // tip cut the involute away above the base circle, so the involute contact, and the
+    // active line, begin where the involute begins, short of N1.
     assert!(warnings.contains(&PairWarning::Interference { wheel: 2 }), "{warnings:?}");
-    assert!((p.approach - (p.line_of_action - p.wheels[1].base * p.working_pressure_angle.tan())).abs() < 1e-15);
+    let (r_b1, r_from) = (w1.base, p.involute_from[0]);
+    assert!(r_from > r_b1 * (1.0 + 1e-6) && r_from < w1.pitch, "{r_from} against r_b {r_b1}");
+    let from_n1 = (r_from * r_from - r_b1 * r_b1).sqrt();
+    let p_to_n1 = r_b1 * p.working_pressure_angle.tan();
+    assert!((p.approach - (p_to_n1 - from_n1)).abs() < 1e-15, "{} against {}", p.approach, p_to_n1 - from_n1);
 
     let p = Pair::new(&PairSpec::standard(3e-3, [17, 18])).unwrap();
     let (w17, w18) = (&p.wheels[0], &p.wheels[1]);

@@ -25,9 +25,10 @@ fn textbook(r: &serde_json::Value) -> [Option<f64>; 2] {
     let g = aw * alpha.sin();
     let u = f(&p["ratio"]);
     let reach = |i: usize| (radii("tip", i).powi(2) - radii("base", i).powi(2)).sqrt();
-    // Where a tip reaches past the other wheel's N the active line stops at N, where the
-    // sliding is unbounded: no value.
-    let (x_b1, x_b2) = (g - reach(1), reach(0));
+    // Neither contact goes below where a wheel's involute begins (r_b·t from its N along the
+    // line); where that is N itself the sliding is unbounded: no value.
+    let from_n = |i: usize| (f(&p["involute_from"][i]).powi(2) - radii("base", i).powi(2)).max(0.0).sqrt();
+    let (x_b1, x_b2) = ((g - reach(1)).max(from_n(0)), reach(0).min(g - from_n(1)));
     [(x_b1 > 0.0).then(|| 1.0 - (g - x_b1) / (u * x_b1)), (x_b2 < g).then(|| 1.0 - u * x_b2 / (g - x_b2))]
 }
 

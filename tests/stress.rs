@@ -233,9 +233,12 @@ fn crank_sliders_with_loads_small_idle_forces_included() {
 #[test]
 fn pairs_the_sweep_found_off_the_page_fit_their_region() {
     for pair in [
-        "{module: 4.39, z: [7, 70]}",
+        // Unshifted, the 7-tooth pinion was undercut so deep that the involute left meshes
+        // less than one pitch (ε = 0.8, refused): shifted as a designer would.
+        "{module: 4.39, z: [7, 70], shift: [0.45, 0]}",
         "{module: 1.01, z: [48, 75], shift: [0.231, 0.957]}",
-        "{module: 4.40, z: [10, 25], shift: [-0.362, 0.805]}",
+        // At x1 = −0.362 (ε = 0.8 on the involute left by the undercut, refused) as x1 = 0.
+        "{module: 4.40, z: [10, 25], shift: [0, 0.805]}",
         // A circle's part inside the region had no sweep: boxed at (0, 0), "off the page".
         "{module: 5.31, z: [318, 155], shift: [0.522, 0.281]}",
         // A pair alone, its mesh as wide as the tables leave: the region ran over the title
@@ -254,11 +257,15 @@ fn pairs_the_sweep_found_off_the_page_fit_their_region() {
 
 /// A 5-tooth pinion the sweep found (stop 71) with p's value, set along the line of centres
 /// in its small body, across the sense arrow ω₁ drawn after it: the arrows are now drawn
-/// before the dimensions' values, which keep clear of them.
+/// before the dimensions' values, which keep clear of them. At x = 0.349 that pinion is
+/// undercut (x_min = 0.71) so deep that the involute left meshes less than one pitch, and
+/// any shift that mends it points its teeth: it is refused, and a 6-tooth pinion is drawn.
 #[test]
 fn a_five_tooth_pinions_pitch_value_stands_clear_of_its_sense_arrow() {
-    let text = format!("{HEADER}gears:\n  pair: {{module: 7.15, z: [5, 84], shift: [0.349, 0.708]}}\n");
+    let text = format!("{HEADER}gears:\n  pair: {{module: 7.15, z: [6, 84], shift: [0.45, 0.708]}}\n");
     assert_eq!(verdict(&text), Ok(Outcome::Built));
+    let text = format!("{HEADER}gears:\n  pair: {{module: 7.15, z: [5, 84], shift: [0.349, 0.708]}}\n");
+    assert_eq!(verdict(&text), Ok(Outcome::Refused));
 }
 
 /// A slider the sweep found (stop 71) on a guide 8° off the vertical: G3 down, P_i3 its twin

@@ -22,6 +22,15 @@ pub fn values_apart(a: f64, b: f64, lang: Language) -> (String, String) {
     (5..=15).map(at).find(|(x, y)| x != y).unwrap_or((sa, sb))
 }
 
+/// Values of one quantity written alike, as a table's row prints them: whole numbers
+/// without decimals when every one is whole (u = 5, required 5), else every one with the
+/// decimals of the largest's four significant digits (u = 4,909, required 5,000).
+pub fn values_alike(values: &[f64], lang: Language) -> Vec<String> {
+    let whole = values.iter().all(|&v| (v - v.round()).abs() <= 1e-9 * v.abs().max(1.0));
+    let decimals = if whole { 0 } else { digits::row_decimals(values) };
+    values.iter().map(|&v| localise(&digits::at_decimals(v, decimals), lang)).collect()
+}
+
 /// A value with four significant digits, trailing zeros dropped (a module of 5 mm is "5", a
 /// scale of 0,001000 m/mm is "0,001").
 pub fn trimmed(x: f64, lang: Language) -> String {

@@ -5,7 +5,7 @@
 //! wheel below it (its centre at Y = −r); the datum line at Y = x·m (shifted away from the
 //! wheel by a positive shift).
 
-use super::pair::{PairSpec, Wheel};
+use super::wheel::{PairSpec, Wheel};
 use crate::num::math::{cos, sin, tan};
 use kurbo::Vec2;
 use std::f64::consts::{FRAC_PI_2, PI};

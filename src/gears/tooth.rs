@@ -8,7 +8,7 @@
 //! flank passes the foot N of the line of action (x < x_min) the fillet cuts into the
 //! involute: the outline then takes the involute down to their crossing only (undercut).
 
-use super::pair::{PairSpec, Wheel, inv};
+use super::wheel::{PairSpec, Wheel, inv};
 use crate::num::math::{Norm, acos, atan2, cos, from_angle, rotate, sin};
 use crate::num::tol;
 use kurbo::Vec2;
@@ -137,6 +137,12 @@ impl Outline {
     }
 
     /// Half the tooth's angular thickness at the tip.
+    /// The radius where the involute begins: the form circle, or where the undercut root's
+    /// fillet cuts the involute.
+    pub fn lowest_radius(&self) -> f64 {
+        self.base * (1.0 + self.t_low * self.t_low).sqrt()
+    }
+
     pub fn tip_half_angle(&self) -> f64 {
         self.involute_angle(self.tip)
     }

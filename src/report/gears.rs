@@ -1,13 +1,23 @@
 //! Sheet 2's tables for the note: the wheels and the pair (lengths in mm, as the course
 //! writes gears), the planetary stage and its conditions with their numbers.
 
-use super::{Column, NumTable, Row, Sub, SubWord, Unit};
+use super::{Column, NumTable, Row, Sub, SubWord, Unit, share_decimals};
 use crate::gears::pair::Pair;
 use crate::gears::planetary::Stage;
 use crate::num::units::mm;
 
 fn named(symbol: &'static str, sub: &str, unit: Unit, values: Vec<f64>) -> Row {
     Row::new(symbol, if sub.is_empty() { Sub::None } else { Sub::name(sub) }, unit, values)
+}
+
+/// The rows of one kind share their decimals (see [`share_decimals`]): each group of keys
+/// (a and a_w; the stage's radii; u_1H and u_req; ε and ε_drawn), lengths to at least
+/// 0,01 mm. Rows of different quantities keep their own four significant digits.
+fn with_shared_decimals(mut rows: Vec<Row>, groups: &[(&[&str], usize)]) -> Vec<Row> {
+    for &(keys, at_least) in groups {
+        share_decimals(rows.iter_mut().filter(|r| keys.contains(&r.key.as_str())), at_least);
+    }
+    rows
 }
 
 /// Table of the two wheels: one column per wheel.
@@ -40,25 +50,28 @@ pub fn pair(p: &Pair, eps_drawn: f64) -> NumTable {
     let one = |x: f64| vec![x];
     NumTable::single(
         "pair",
-        vec![
-            // The given values as given: m = 2.5, c* = 0.25, not 2.500 and 0.2500.
-            named("m", "", Unit::Mm, one(mm(s.module))).exactly(),
-            named("α", "", Unit::Deg, one(s.pressure_angle.to_degrees())).exactly(),
-            named("h", "a*", Unit::None, one(s.addendum)).keyed("h_a_star").exactly(),
-            named("c*", "", Unit::None, one(s.clearance)).keyed("c_star").exactly(),
-            named("u", "12", Unit::None, one(p.ratio)),
-            named("α", "w", Unit::Deg, one(p.working_pressure_angle.to_degrees())),
-            named("a", "", Unit::Mm, one(mm(p.reference_centre_distance))),
-            named("a", "w", Unit::Mm, one(mm(p.centre_distance))),
-            named("y", "", Unit::None, one(p.y)),
-            named("Δy", "", Unit::None, one(p.delta_y)).keyed("delta_y"),
-            named("h", "", Unit::Mm, one(mm(p.tooth_height))),
-            named("p", "", Unit::Mm, one(mm(p.pitch))),
-            named("p", "b", Unit::Mm, one(mm(p.base_pitch))),
-            named("g", "α", Unit::Mm, one(mm(p.active_length))),
-            named("ε", "", Unit::None, one(p.contact_ratio)),
-            Row::new("ε", Sub::Word(SubWord::Drawn), Unit::None, one(eps_drawn)),
-        ],
+        with_shared_decimals(
+            vec![
+                // The given values as given: m = 2.5, c* = 0.25, not 2.500 and 0.2500.
+                named("m", "", Unit::Mm, one(mm(s.module))).exactly(),
+                named("α", "", Unit::Deg, one(s.pressure_angle.to_degrees())).exactly(),
+                named("h", "a*", Unit::None, one(s.addendum)).keyed("h_a_star").exactly(),
+                named("c*", "", Unit::None, one(s.clearance)).keyed("c_star").exactly(),
+                named("u", "12", Unit::None, one(p.ratio)),
+                named("α", "w", Unit::Deg, one(p.working_pressure_angle.to_degrees())),
+                named("a", "", Unit::Mm, one(mm(p.reference_centre_distance))),
+                named("a", "w", Unit::Mm, one(mm(p.centre_distance))),
+                named("y", "", Unit::None, one(p.y)),
+                named("Δy", "", Unit::None, one(p.delta_y)).keyed("delta_y"),
+                named("h", "", Unit::Mm, one(mm(p.tooth_height))),
+                named("p", "", Unit::Mm, one(mm(p.pitch))),
+                named("p", "b", Unit::Mm, one(mm(p.base_pitch))),
+                named("g", "α", Unit::Mm, one(mm(p.active_length))),
+                named("ε", "", Unit::None, one(p.contact_ratio)),
+                Row::new("ε", Sub::Word(SubWord::Drawn), Unit::None, one(eps_drawn)),
+            ],
+            &[(&["a", "a_w"], 2), (&["epsilon", "epsilon_drawn"], 0)],
+        ),
     )
 }
 
@@ -72,7 +85,8 @@ pub fn stage(s: &Stage, module: f64) -> NumTable {
     rows.push(Row::new("u", Sub::Word(SubWord::Required), Unit::None, vec![s.ratio_required]));
     rows.extend(names.iter().zip(&s.z).map(|(n, &z)| named("r", n, Unit::Mm, vec![mm(module * f64::from(z) / 2.0)])));
     rows.push(named("a", "H", Unit::Mm, vec![mm(module * f64::from(s.z[0] + s.z[1]) / 2.0)]));
-    NumTable::single("planetary", rows)
+    let radii = ["r_1", "r_2", "r_2p", "r_3", "a_H"];
+    NumTable::single("planetary", with_shared_decimals(rows, &[(&radii, 2), (&["u_1H", "u_required"], 0)]))
 }
 
 /// Every condition with its value, limit and whether it is met (1) or not (0).

@@ -9,7 +9,7 @@ pub mod segments;
 mod table;
 
 pub use segments::{AnswerKeys, Segment, segments_csv};
-pub use table::{Column, ForceKind, NumTable, Quantity, Row, Sub, SubWord, Unit, ascii_key};
+pub use table::{Column, ForceKind, NumTable, Quantity, Row, Sub, SubWord, Unit, ascii_key, share_decimals};
 
 use std::fmt::Write;
 

@@ -159,6 +159,9 @@ pub struct Row {
     /// the CSV and the answers, and a table prints "—" there, as the course's tables do, not
     /// a 0 that reads as computed. Empty: every cell is a value.
     pub absent: Vec<bool>,
+    /// The decimals this row shares with others of one quantity in its table (see
+    /// [`share_decimals`]); `None`: the row's own.
+    pub decimals: Option<usize>,
 }
 
 impl Row {
@@ -176,6 +179,7 @@ impl Row {
             count: false,
             exact: false,
             absent: Vec::new(),
+            decimals: None,
         }
     }
 
@@ -217,19 +221,20 @@ impl Row {
     pub fn printed(&self, whole: bool) -> Vec<String> {
         use crate::num::digits;
         // A count's row (a condition's value, limit and 1 for met) is one quantity a cell.
-        let whole_value = |v: f64| v.fract() == 0.0 && v.abs() < 1e9;
+        let whole_value = |v: f64| nearly_whole(v) && v.abs() < 1e9;
         // The row's decimals from the cells that hold a value.
         let present: Vec<f64> =
             (0..self.values.len()).filter(|&c| !self.is_absent(c)).map(|c| self.values[c]).collect();
         let whole = whole && (self.count || present.iter().all(|&v| whole_value(v)));
-        let decimals = if self.exact { digits::exact_decimals(&present) } else { None };
+        let whole = whole && self.decimals.is_none();
+        let decimals = if self.exact { digits::exact_decimals(&present) } else { self.decimals };
         let row = decimals.unwrap_or_else(|| digits::row_decimals(&present));
         self.values
             .iter()
             .enumerate()
             .map(|(c, &v)| match decimals {
                 _ if self.is_absent(c) => "—".to_string(),
-                _ if whole && whole_value(v) => format!("{v:.0}"),
+                _ if whole && whole_value(v) => digits::at_decimals(v, 0),
                 Some(d) => digits::fixed(v, d),
                 None => digits::at_decimals(v, row),
             })
@@ -246,8 +251,35 @@ impl Row {
             count: true,
             exact: false,
             absent: Vec::new(),
+            decimals: None,
         }
     }
+}
+
+/// Gives the rows of one quantity in a table ("every length in mm of the pair's table")
+/// one number of decimals, those of their largest value's four significant digits but at
+/// least `at_least`, so that a column does not read 64,50 above 127,5 and 90 (GOST 2.105:
+/// one quantity, one precision; the course writes a gear's lengths to 0,01 mm, so that a
+/// tip's 1,84 mm is not cut to 1,8 beside a 127,5 mm ring). Rows whose values are all whole
+/// keep printing without decimals; counts and rows exact at few decimals (given values) keep
+/// their own.
+pub fn share_decimals<'a>(rows: impl IntoIterator<Item = &'a mut Row>, at_least: usize) {
+    let mut rows: Vec<&mut Row> = rows.into_iter().filter(|r| !r.count && !r.exact).collect();
+    let values: Vec<f64> =
+        rows.iter().flat_map(|r| (0..r.values.len()).filter(|&c| !r.is_absent(c)).map(|c| r.values[c])).collect();
+    if values.iter().all(|&v| nearly_whole(v)) {
+        return;
+    }
+    let decimals = crate::num::digits::row_decimals(&values).max(at_least);
+    for r in &mut rows {
+        r.decimals = Some(decimals);
+    }
+}
+
+/// Whole to rounding: a planet's radius of 2 mm·36/2 computed in metres and written in mm is
+/// 36.00000000000001.
+fn nearly_whole(v: f64) -> bool {
+    (v - v.round()).abs() <= 1e-9 * v.abs().max(1.0)
 }
 
 /// A column: its identifier and its heading as every language writes it (a position label

@@ -52,6 +52,17 @@ impl ConditionKind {
             ConditionKind::RingPlanetDifference => "ring_planet_difference",
         }
     }
+
+    /// How the condition compares its value with its limit.
+    pub const fn relation(self) -> Relation {
+        match self {
+            ConditionKind::Ratio => Relation::Within,
+            ConditionKind::Coaxiality => Relation::Equal,
+            ConditionKind::Neighbours | ConditionKind::RingPlanetDifference => Relation::Greater,
+            ConditionKind::Assembly => Relation::Integer,
+            ConditionKind::NoUndercut | ConditionKind::RingTeeth => Relation::AtLeast,
+        }
+    }
 }
 
 /// One condition of the stage, as the sheet prints it: the two sides and the verdict.
@@ -75,15 +86,14 @@ pub(super) fn within(ratio: f64, required: f64, tolerance: f64) -> bool {
     (ratio - required).abs() <= tolerance * required
 }
 
-fn condition(name: ConditionKind, value: f64, limit: f64, relation: Relation, ok: bool) -> Condition {
-    Condition { name, value, limit, relation, ok }
+fn condition(name: ConditionKind, value: f64, limit: f64, ok: bool) -> Condition {
+    Condition { name, value, limit, relation: name.relation(), ok }
 }
 
 /// Every condition of a valid `Teeth` and K, computed without validation (the caller has
 /// validated), so that the search can confirm a candidate without allocating.
 pub(super) fn conditions(spec: &StageSpec, t: Teeth, k: u32) -> [Condition; 7] {
     use ConditionKind::*;
-    use Relation::*;
     let ratio = t.ratio();
     let sin_k = sin(PI / f64::from(k));
     let neighbours = t.neighbour_limit(spec.addendum);
@@ -92,17 +102,16 @@ pub(super) fn conditions(spec: &StageSpec, t: Teeth, k: u32) -> [Condition; 7] {
     let smallest = t.smallest_external();
     let difference = t.ring_planet_difference();
     [
-        condition(Ratio, ratio, spec.ratio_required, Within, within(ratio, spec.ratio_required, spec.tolerance)),
-        condition(Coaxiality, t.coaxial_sum() as f64, f64::from(t.ring), Equal, t.coaxial_sum() == u64::from(t.ring)),
-        condition(Neighbours, sin_k, neighbours, Greater, sin_k > neighbours),
-        condition(Assembly, quotient, quotient.round(), Integer, assembly.is_multiple_of(u128::from(k))),
-        condition(NoUndercut, f64::from(smallest), f64::from(spec.z_min), AtLeast, smallest >= spec.z_min),
-        condition(RingTeeth, f64::from(t.ring), f64::from(spec.ring_min), AtLeast, t.ring >= spec.ring_min),
+        condition(Ratio, ratio, spec.ratio_required, within(ratio, spec.ratio_required, spec.tolerance)),
+        condition(Coaxiality, t.coaxial_sum() as f64, f64::from(t.ring), t.coaxial_sum() == u64::from(t.ring)),
+        condition(Neighbours, sin_k, neighbours, sin_k > neighbours),
+        condition(Assembly, quotient, quotient.round(), assembly.is_multiple_of(u128::from(k))),
+        condition(NoUndercut, f64::from(smallest), f64::from(spec.z_min), smallest >= spec.z_min),
+        condition(RingTeeth, f64::from(t.ring), f64::from(spec.ring_min), t.ring >= spec.ring_min),
         condition(
             RingPlanetDifference,
             difference as f64,
             f64::from(RING_PLANET_DIFFERENCE),
-            Greater,
             difference > i64::from(RING_PLANET_DIFFERENCE),
         ),
     ]

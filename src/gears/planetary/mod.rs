@@ -45,6 +45,14 @@ pub const Z_MIN_ALLOWED: u32 = 5;
 /// planet interfere (the course's rule for h_a* = 1 without shift).
 pub const RING_PLANET_DIFFERENCE: u32 = 8;
 
+/// A ratio within this relative error of the required one counts as exact (a set's ratio
+/// is a quotient of integers, the required one a decimal the user typed).
+pub const EXACT_RATIO: f64 = 1e-9;
+
+/// How much larger (its outer size in modules) a reducer giving the required ratio exactly
+/// may be than the smallest reducer within the tolerance, and still be preferred.
+pub const EXACT_SIZE_ALLOWANCE: f64 = 1.25;
+
 /// The largest relative tolerance of the ratio accepted (±50 %): beyond it any set "fits".
 pub const TOLERANCE_MAX: f64 = 0.5;
 

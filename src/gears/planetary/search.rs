@@ -3,7 +3,9 @@
 
 use super::conditions::{check, conditions, validate_search, within};
 use super::scheme::Teeth;
-use super::{PLANETS_SEARCHED, RING_PLANET_DIFFERENCE, Scheme, Stage, StageError, StageSpec};
+use super::{
+    EXACT_RATIO, EXACT_SIZE_ALLOWANCE, PLANETS_SEARCHED, RING_PLANET_DIFFERENCE, Scheme, Stage, StageError, StageSpec,
+};
 use crate::num::math::sin;
 use std::f64::consts::PI;
 
@@ -78,6 +80,14 @@ impl<'a> Search<'a> {
         let error = |f: &Found| (f.ratio - self.spec.ratio_required).abs();
         let key = |f: &Found| (f.teeth.ring, std::cmp::Reverse(f.planets), f.teeth.sun, f.teeth.planet_sun);
         a.teeth.size().cmp(&b.teeth.size()).then(error(a).total_cmp(&error(b))).then(key(a).cmp(&key(b))).is_lt()
+    }
+
+    /// The best set of the spec's scheme, `None` when no set meets every condition.
+    fn best(&self) -> Option<Found> {
+        match self.spec.scheme {
+            Scheme::SunPlanetRing => self.single_row(),
+            Scheme::DoublePlanet => self.double_planet(),
+        }
     }
 
     /// The ratio window [u(1 − tol), u(1 + tol)].
@@ -188,6 +198,22 @@ impl<'a> Search<'a> {
     }
 }
 
+/// The smallest set giving the required ratio exactly (to [`EXACT_RATIO`]) whose size is at
+/// most [`EXACT_SIZE_ALLOWANCE`] times the smallest reducer's: a teacher asks why u = 4.909
+/// was drawn when 24/36/96 gives 5 exactly; a reducer a quarter larger is the price the course
+/// pays for that, a ring of 373 teeth for u = 4.73 is not. `None` when the smallest reducer is
+/// already exact or no exact set is near its size.
+fn exact_nearby(spec: &StageSpec, smallest: Found) -> Option<Found> {
+    if (smallest.ratio - spec.ratio_required).abs() <= EXACT_RATIO * spec.ratio_required {
+        return None;
+    }
+    let allowed = (f64::from(smallest.teeth.size()) * EXACT_SIZE_ALLOWANCE).floor() as u32;
+    let exact = StageSpec { tolerance: EXACT_RATIO, z_max: spec.z_max.min(allowed), ..spec.clone() };
+    // Every tooth number of a set is at most its size, so `z_max` bounds the search; the best
+    // set is the smallest, so it alone need be measured against the allowance.
+    Search::new(&exact).best().filter(|f| f.teeth.size() <= allowed)
+}
+
 /// ⌊x⌋ as a tooth number: 0 below zero or for NaN, saturated above (Rust's casts saturate).
 fn floor_u32(x: f64) -> u32 {
     x.floor() as u32
@@ -200,7 +226,8 @@ fn ceil_u32(x: f64) -> u32 {
 /// The best valid set: ratio within the tolerance and every condition of [`check`] met;
 /// the smallest reducer (the ring z3, or z1 + 2·z2 when a double planet's larger gear reaches
 /// past it) first, then the smallest |ratio error|, then more
-/// planets, then the smallest z1.
+/// planets, then the smallest z1 — unless a set at most [`EXACT_SIZE_ALLOWANCE`] times that
+/// size gives the required ratio exactly: then the smallest such set, in the same order.
 ///
 /// It runs when a sheet is built and inside property tests, so it visits only the
 /// candidates near the ratio (a window of z3 per z1, or of z2 per z1 and z2'), and no ring
@@ -212,10 +239,7 @@ fn ceil_u32(x: f64) -> u32 {
 pub fn synthesise(spec: &StageSpec) -> Result<Stage, StageError> {
     validate_search(spec)?;
     let search = Search::new(spec);
-    let found = match spec.scheme {
-        Scheme::SunPlanetRing => search.single_row(),
-        Scheme::DoublePlanet => search.double_planet(),
-    };
+    let found = search.best().map(|smallest| exact_nearby(spec, smallest).unwrap_or(smallest));
     let Some(found) = found else {
         return Err(StageError::NoSet {
             scheme: spec.scheme,

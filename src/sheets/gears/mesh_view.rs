@@ -294,11 +294,20 @@ fn point_labels(labels: &mut Labels, v: View, area: Rect, m: &MeshPoints) {
         (Vec2::ZERO, "O", "1", Vec2::new(1.0, 0.6)),
         (m.o2, "O", "2", Vec2::new(1.0, -0.6)),
     ];
+    // A B on its N (the active line cut at N) is named once, "N₁ ≡ B₁", not twice on one dot.
+    let coincide = |b: Vec2, n: Vec2| (v.p(b) - v.p(n)).norm() < 0.5;
+    let merged = [coincide(m.b1, m.n1), coincide(m.b2, m.n2)];
     for (at, main, sub, pref) in named {
         let q = v.p(at);
-        if area.contains(q) {
-            labels.add_ranked(q, pref, LabelText::new(main, sub), 3.5, 0);
+        let wheel = usize::from(sub == "2");
+        if !area.contains(q) || (main == "B" && merged[wheel]) {
+            continue;
         }
+        let mut label = LabelText::new(main, sub);
+        if main == "N" && merged[wheel] {
+            label = label.with_tail(format!(" ≡ B{}", ["₁", "₂"][wheel]));
+        }
+        labels.add_ranked(q, pref, label, 3.5, 0);
     }
 }
 

@@ -266,7 +266,10 @@ fn mesh_notes(p: &GearsProject, words: &GearWords) -> Vec<String> {
             }
             PairWarning::ThinTip { wheel, s_a, .. } => l.thin_tip_note(&wheel.to_string(), &v(mm(*s_a))),
             PairWarning::LowContactRatio { eps } => l.low_ratio_note(&v(*eps)),
-            PairWarning::Interference { wheel } => l.interference_note(&wheel.to_string()),
+            PairWarning::Interference { wheel } => {
+                let other = 3 - wheel;
+                l.interference_note(&wheel.to_string(), &other.to_string(), ["₁", "₂"][other - 1])
+            }
         });
     }
     out.extend(p.assumptions.iter().map(|a| a.get(lang).to_string()));
@@ -303,8 +306,9 @@ fn planetary_group(pl: &PlanetaryProject, right: Rect, share: f64, words: &GearW
     let s = &pl.stage;
     let (mu, across, region) = planetary_frame(pl, right, share);
     let mut g = Group::new("planetary", region);
-    let title =
-        l.planetary_title(&fmt::value(s.ratio, lang), &fmt::value(s.ratio_required, lang), &s.planets.to_string());
+    let [u, required] =
+        <[String; 2]>::try_from(fmt::values_alike(&[s.ratio, s.ratio_required], lang)).expect("two values written");
+    let title = l.planetary_title(&u, &required, &s.planets.to_string());
     // In the mesh's title's lettering: the two are the sheet's sections (in 3.5 mm it read
     // as a caption under the mesh's, a teacher's review).
     g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));

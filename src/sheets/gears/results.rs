@@ -42,7 +42,11 @@ struct PairOut {
     /// By the course's rule, as the sheet's table and notes give it: x < (17 − z)/17.
     undercut_course: [bool; 2],
     x_min_course: [f64; 2],
+    /// A tip reaching past where the other wheel's involute begins.
     interference: [bool; 2],
+    /// The radius where each involute begins (the form circle, or where an undercut root's
+    /// fillet cuts it): the involute contact cannot go lower.
+    involute_from: [f64; 2],
 }
 
 #[derive(Serialize)]
@@ -145,6 +149,7 @@ fn pair_out(p: &GearsProject, pr: &Pair, eps_drawn: f64) -> PairOut {
         undercut_course: [w[0].undercut_by_course(), w[1].undercut_by_course()],
         x_min_course: each(&|i| w[i].x_min_course),
         interference: pr.interference,
+        involute_from: pr.involute_from,
     }
 }
 

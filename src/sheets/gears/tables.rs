@@ -6,7 +6,7 @@ use crate::drawing::fmt;
 use crate::drawing::scene::Group;
 use crate::drawing::table::{self, CELL_TEXT, Table};
 use crate::drawing::text::LabelText;
-use crate::gears::planetary::ConditionKind;
+use crate::gears::planetary::{ConditionKind, Relation};
 use crate::project::GearsProject;
 use crate::report::{self, NoteTable, Quantity};
 use crate::sheets::scaffold;
@@ -74,6 +74,20 @@ pub fn fit(sizes: &[(f64, f64)], region: Rect) -> bool {
     table::flow_fits(sizes, region, GAP)
 }
 
+/// A condition's limit as the sheet prints it, with its relation: "= 86", "> 0,630", "≥ 17",
+/// and for the assembly "a whole number" (its limit cell, the nearest whole
+/// number, would read as the value required, "81 / 8" as a fraction).
+fn limit_cell(relation: Relation, limit: &str, words: &GearWords) -> String {
+    match relation {
+        Relation::Equal => format!("= {limit}"),
+        Relation::Greater => format!("> {limit}"),
+        Relation::AtLeast => format!("≥ {limit}"),
+        Relation::Integer => words.sheet.integer().to_string(),
+        // The ratio's row is written as its deviation (see `sheet_table`).
+        Relation::Within => limit.to_string(),
+    }
+}
+
 fn lettered(notes: &[NoteTable], tolerance: Option<f64>, words: &GearWords, text_h: f64) -> Vec<Table> {
     notes.iter().map(|n| Table { text_h, ..sheet_table(n, tolerance, words) }).collect()
 }
@@ -90,13 +104,21 @@ fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords) -> Tabl
     let conditions = n.table.id == "conditions";
     let mut rows = scaffold::drawn_rows(n, lang, !conditions);
     for ((label, cells), r) in rows.iter_mut().zip(&n.table.rows) {
-        if r.quantity == Quantity::Condition(ConditionKind::Ratio) {
-            // The ratio's condition is the stated tolerance.
-            let tol = tolerance.map(|t| format!(" ±{} %", fmt::trimmed(t * 100.0, lang))).unwrap_or_default();
-            *label = LabelText::new(format!("{}{tol}", label.main), "");
-        }
-        if conditions {
+        if let Quantity::Condition(kind) = r.quantity {
+            cells[1] = limit_cell(kind.relation(), &cells[1], words);
             cells[2] = (if r.values[2] > 0.5 { l.yes() } else { l.no() }).to_string();
+        }
+        if let (Quantity::Condition(ConditionKind::Ratio), Some(t)) = (&r.quantity, tolerance) {
+            // The ratio's condition as the course states it: u_1H off u_req by at most ±3 %
+            // (both are in the stage's table above); the note's table keeps the two ratios.
+            let off = 100.0 * (r.values[0] - r.values[1]) / r.values[1];
+            let off = if off.abs() < 0.005 { 0.0 } else { off };
+            // u with its subscript 1H where the words put it.
+            let words = l.cond_ratio_deviation("\u{0}");
+            let (before, after) = words.split_once('\u{0}').unwrap_or((&words, ""));
+            *label = LabelText::new(format!("{before}u"), "1H").with_tail(after.to_string());
+            cells[0] = format!("{} %", fmt::localise(&format!("{off:.2}"), lang));
+            cells[1] = format!("±{} %", fmt::trimmed(t * 100.0, lang));
         }
     }
     let label_w = rows.iter().map(|(x, _)| x.width(CELL_TEXT) + 4.0).fold(14.0, f64::max);
