@@ -509,3 +509,34 @@ fn undercut_limits() {
         assert!(p.wheels[0].form_radius > p.wheels[0].base);
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// The contact of an undercut pinion, against an independent simulation of the cutting (stop
+// 75: the rack cutter rolled over the blank in steps of 1e-4 rad, the minimum distance from
+// each involute point to the cutter refined by golden section, the radius where the involute
+// is first the cut surface found by bisection, and checked by a 30-digit solve of the tip
+// round's trochoid; accurate to about 1e-10). m = 3 mm, α = 20°, h_a* = 1, c* = 0.25, x = 0.
+// Below that radius the flank is the fillet, so the active line starts there, not at N1.
+// ---------------------------------------------------------------------------------------
+#[test]
+fn an_undercut_pinions_contact_begins_where_its_involute_does() {
+    let m = 3e-3;
+    for (z, r_u_over_m) in [(10u32, 4.725_605_740_4), (12, 5.651_353_563_3), (14, 6.582_489_147_6)] {
+        let p = Pair::new(&PairSpec::standard(m, [z, 40])).unwrap();
+        let r_from = p.involute_from[0] / m;
+        assert!((r_from - r_u_over_m).abs() <= 1e-8 * r_u_over_m, "z = {z}: {r_from} against {r_u_over_m}");
+    }
+    // ε on the involute left, and the textbook's, cut at N1, which the sheet printed before.
+    for (z, eps, eps_to_n) in [
+        ([10, 27], 1.092_697_4, 1.264_018_0),
+        ([12, 24], 1.274_549_2, 1.405_302_7),
+        ([14, 14], 1.454_548_0, 1.462_732_9),
+    ] {
+        let p = Pair::new(&PairSpec::standard(m, z)).unwrap();
+        assert!((p.contact_ratio - eps).abs() <= 1e-7, "{z:?}: ε = {} against {eps}", p.contact_ratio);
+        assert!(p.contact_ratio < eps_to_n - 5e-3, "{z:?}: still counted to N1");
+    }
+    // Not undercut beyond a hair (z = 17 by 4e-6·m): ε is the textbook's.
+    let p = Pair::new(&PairSpec::standard(m, [17, 17])).unwrap();
+    assert!((p.contact_ratio - 1.514_800_4).abs() <= 1e-7, "{}", p.contact_ratio);
+}
