@@ -74,6 +74,23 @@ fn the_specific_sliding_at_the_active_lines_ends_is_the_textbooks() {
             });
             assert_eq!(at_n, expected[i].is_none(), "{name}: N{} named with B{} on the axis", i + 1, i + 1);
         }
+        // Laid as the mesh lays N1N2: N1 right of P, N2 left of it, in both.
+        let x_of = |inside: bool, sub: &str| {
+            mesh.items.iter().enumerate().find_map(|(k, item)| match item {
+                tmm_sheets::drawing::scene::Item::Text(t)
+                    if t.text == "N" && t.sub == sub && part.items.contains(&k) == inside =>
+                {
+                    Some(t.at.x)
+                }
+                _ => None,
+            })
+        };
+        let (n1, n2) = (x_of(true, "1").unwrap(), x_of(true, "2").unwrap());
+        let (m1, m2) = (x_of(false, "1"), x_of(false, "2"));
+        assert!(n1 > n2, "{name}: the diagram's N1 at {n1:.1}, N2 at {n2:.1}");
+        if let (Some(m1), Some(m2)) = (m1, m2) {
+            assert!(m1 > m2, "{name}: the mesh's N1 at {m1:.1}, N2 at {m2:.1}");
+        }
         let expected: Vec<f64> = expected.into_iter().flatten().collect();
         // The dashed ordinates at B1 and B2, at μ_λ, are those values (or reach the plot's
         // floor where the sliding runs off it).

@@ -111,8 +111,11 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
     // value to N2, λ2 from N1 to where it reaches it.
     let from1 = s.line / (1.0 + (1.0 - lowest) * s.ratio);
     let to2 = (1.0 - lowest) * s.line / (s.ratio + 1.0 - lowest);
+    // Laid as the mesh draws N1N2: N2 on the left (where the λ axis stands), N1 on the
+    // right; `x` is measured from N1 as the sliding is.
+    let flip = |x: f64| s.line - x;
     let curve = |i: usize, a: f64, b: f64| -> Vec<(f64, f64)> {
-        (0..=200).map(|k| a + (b - a) * k as f64 / 200.0).map(|x| (x, s.lambda(i, x).max(lowest))).collect()
+        (0..=200).map(|k| a + (b - a) * k as f64 / 200.0).map(|x| (flip(x), s.lambda(i, x).max(lowest))).collect()
     };
     // Both flanks work only on the active line B1B2: there the curves are main lines, beyond
     // it thin (each runs on to the plot's floor, or to its N).
@@ -135,7 +138,7 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
     // The active line's ends, each with the sliding there; N1, P, N2 on the axis.
     for (&xb, v) in s.active.iter().zip(at_b) {
         if let Some(v) = v {
-            g.line(plot.at(xb, 0.0), plot.at(xb, v.max(lowest)), DASHED);
+            g.line(plot.at(flip(xb), 0.0), plot.at(flip(xb), v.max(lowest)), DASHED);
         }
     }
     // A B at its N (interference: the sliding there unbounded) is named with it, "N₁ ≡ B₁".
@@ -148,15 +151,15 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
         (Some(s.line), LabelText::new("N", "2").with_tail(at_n(1, "₂"))),
     ];
     for (x, name) in names.into_iter().filter_map(|(x, name)| x.map(|x| (x, name))) {
-        let p = plot.at(x, 0.0);
+        let p = plot.at(flip(x), 0.0);
         g.line(p, p + Vec2::new(0.0, 1.5), THIN);
         labels.add(p + Vec2::new(0.0, 1.5), Vec2::new(0.0, 1.0), name, 2.5);
     }
     for (i, x) in [(0, (s.pitch_point + s.line) / 2.0), (1, s.pitch_point / 2.0)] {
-        let p = plot.at(x, s.lambda(i, x).max(lowest));
+        let p = plot.at(flip(x), s.lambda(i, x).max(lowest));
         labels.add(
             p,
-            Vec2::new(if i == 0 { 1.0 } else { -1.0 }, -1.0),
+            Vec2::new(if i == 0 { -1.0 } else { 1.0 }, -1.0),
             LabelText::new("λ", if i == 0 { "1" } else { "2" }),
             2.5,
         );
