@@ -297,3 +297,33 @@ fn each_mesh(mut check: impl FnMut(&str, Language, &tmm_sheets::drawing::scene::
         check(name, lang, b.output.scene.groups.iter().find(|g| g.id == "mesh").expect("the mesh"))
     });
 }
+
+/// The analytic contact ratio and the one measured on the drawing are one statement under
+/// the mesh ("… ε = 1,202" / "измеренный на чертеже … ε = 1,202, разница < 0,01 %"): on
+/// every gear fixture, in every language, the line after the analytic one stands in its
+/// column (the handbook's pair had them split across two columns, a teacher's review).
+#[test]
+fn the_analytic_and_the_drawn_contact_ratio_stand_in_one_column() {
+    use tmm_sheets::drawing::scene::Item;
+    each_sheet2(|name, lang, b| {
+        let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
+        let part = mesh.parts.iter().find(|p| p.id == "mesh.notes").unwrap();
+        let texts: Vec<_> = mesh.items[part.items.clone()]
+            .iter()
+            .filter_map(|i| match i {
+                Item::Text(t) => Some(t),
+                _ => None,
+            })
+            .collect();
+        let k = texts.iter().position(|t| t.text.contains("ε =")).expect("the analytic ε");
+        let (exact, next) = (texts[k], texts[k + 1]);
+        assert!(
+            (exact.at.x - next.at.x).abs() < 0.01 && next.at.y > exact.at.y,
+            "{name} {lang:?}: {:?} at {:?}, then {:?} at {:?}",
+            exact.text,
+            exact.at,
+            next.text,
+            next.at
+        );
+    });
+}

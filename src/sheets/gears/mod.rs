@@ -240,9 +240,15 @@ fn mesh_group(
     Ok((mesh, drawn, sliding))
 }
 
-/// The results under the mesh and its notes, as paragraphs.
+/// The results under the mesh and its notes, as paragraphs. The head's second line, the
+/// analytic ε, and its third, the drawn one with their difference ("измеренный на чертеже
+/// …"), are one statement: kept in one column.
 fn note_paras(head: &[String], notes: &[String]) -> Vec<Para> {
-    head.iter().chain(notes).map(|n| Para::new(n.clone(), 0.5)).collect()
+    let mut paras: Vec<Para> = head.iter().chain(notes).map(|n| Para::new(n.clone(), 0.5)).collect();
+    if let Some(exact) = paras.get_mut(1) {
+        exact.keep_with_next = true;
+    }
+    paras
 }
 
 /// The notes under the mesh: shifts chosen, warnings, the user's assumptions.
