@@ -26,7 +26,7 @@ pub fn values_apart(a: f64, b: f64, lang: Language) -> (String, String) {
 /// without decimals when every one is whole (u = 5, required 5), else every one with the
 /// decimals of the largest's four significant digits (u = 4,909, required 5,000).
 pub fn values_alike(values: &[f64], lang: Language) -> Vec<String> {
-    let whole = values.iter().all(|&v| (v - v.round()).abs() <= 1e-9 * v.abs().max(1.0));
+    let whole = values.iter().all(|&v| digits::nearly_whole(v));
     let decimals = if whole { 0 } else { digits::row_decimals(values) };
     values.iter().map(|&v| localise(&digits::at_decimals(v, decimals), lang)).collect()
 }

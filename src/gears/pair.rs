@@ -55,6 +55,9 @@ pub struct Pair {
     /// or higher where an undercut root's fillet cuts the involute away; the base circle at
     /// the undercut limit.
     pub involute_from: [f64; 2],
+    /// Each wheel's tooth outline as the rack cuts it: computed once here (the active line
+    /// needs where its involute begins) and drawn by the sheet.
+    pub outlines: [Outline; 2],
 }
 
 /// Why a pair cannot be built.
@@ -119,8 +122,8 @@ impl Pair {
         // undercut root's fillet cuts it), r_b·t from its N along the line. A tip reaching
         // past that point meets the other wheel below its involute: the involute contact,
         // and so the active line, ends there (at N when the involute reaches the base circle).
-        let involute_from = [0, 1].map(|i| Outline::new(spec, &wheels[i]).lowest_radius());
-        let lowest = [0, 1].map(|i| crate::gears::tooth::roll(wheels[i].base, involute_from[i]) * wheels[i].base);
+        let outlines = [0, 1].map(|i| Outline::new(spec, &wheels[i]));
+        let lowest = [0, 1].map(|i| outlines[i].t_low * wheels[i].base);
         let reachable = [line - lowest[1], line - lowest[0]];
         let interference = [reach(&wheels[0]) > reachable[0], reach(&wheels[1]) > reachable[1]];
         let recess = reach(&wheels[0]).min(reachable[0]) - wheels[0].base * tan(alpha_w);
@@ -149,7 +152,8 @@ impl Pair {
             approach,
             recess,
             contact_ratio,
-            involute_from,
+            involute_from: [0, 1].map(|i| outlines[i].lowest_radius()),
+            outlines,
         })
     }
 

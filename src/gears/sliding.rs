@@ -27,7 +27,8 @@ impl Sliding {
     pub fn of(p: &Pair) -> Sliding {
         let pitch_point = p.wheels[0].base * tan(p.working_pressure_angle);
         let line = p.line_of_action;
-        // The active line stops at N1 and N2 where a tip reaches past them (interference).
+        // The active line never runs past N1 or N2 (it stops earlier where an involute begins
+        // above its base circle: `Pair::involute_from`).
         let ends = [(pitch_point - p.approach).max(0.0), (pitch_point + p.recess).min(line)];
         Sliding { line, pitch_point, active: ends, ratio: p.ratio }
     }

@@ -31,6 +31,12 @@ pub fn significant(x: f64) -> String {
     s
 }
 
+/// Whole to rounding: a planet's radius of 2 mm·36/2 computed in metres and written in mm is
+/// 36.00000000000001.
+pub fn nearly_whole(v: f64) -> bool {
+    (v - v.round()).abs() <= 1e-9 * v.abs().max(1.0)
+}
+
 /// The fewest decimals (at most three) that write every one of `values` exactly — the
 /// positions' angles of a phase divided into eight (80; 88,75; 97,5 … print with two, so
 /// 106,25 is not cut to 106,2) — or `None` when some value needs more.

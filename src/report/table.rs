@@ -221,7 +221,7 @@ impl Row {
     pub fn printed(&self, whole: bool) -> Vec<String> {
         use crate::num::digits;
         // A count's row (a condition's value, limit and 1 for met) is one quantity a cell.
-        let whole_value = |v: f64| nearly_whole(v) && v.abs() < 1e9;
+        let whole_value = |v: f64| crate::num::digits::nearly_whole(v) && v.abs() < 1e9;
         // The row's decimals from the cells that hold a value.
         let present: Vec<f64> =
             (0..self.values.len()).filter(|&c| !self.is_absent(c)).map(|c| self.values[c]).collect();
@@ -267,19 +267,13 @@ pub fn share_decimals<'a>(rows: impl IntoIterator<Item = &'a mut Row>, at_least:
     let mut rows: Vec<&mut Row> = rows.into_iter().filter(|r| !r.count && !r.exact).collect();
     let values: Vec<f64> =
         rows.iter().flat_map(|r| (0..r.values.len()).filter(|&c| !r.is_absent(c)).map(|c| r.values[c])).collect();
-    if values.iter().all(|&v| nearly_whole(v)) {
+    if values.iter().all(|&v| crate::num::digits::nearly_whole(v)) {
         return;
     }
     let decimals = crate::num::digits::row_decimals(&values).max(at_least);
     for r in &mut rows {
         r.decimals = Some(decimals);
     }
-}
-
-/// Whole to rounding: a planet's radius of 2 mm·36/2 computed in metres and written in mm is
-/// 36.00000000000001.
-fn nearly_whole(v: f64) -> bool {
-    (v - v.round()).abs() <= 1e-9 * v.abs().max(1.0)
 }
 
 /// A column: its identifier and its heading as every language writes it (a position label

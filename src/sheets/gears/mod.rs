@@ -35,7 +35,6 @@ use crate::drawing::table::{self, CELL_TEXT};
 use crate::drawing::text::{TooLong, wrap};
 use crate::gears::pair::PairWarning;
 use crate::gears::sliding::Sliding;
-use crate::gears::tooth::Outline;
 use crate::num::units::mm;
 use crate::project::gears::PlanetaryProject;
 use crate::project::{GearsProject, Project};
@@ -144,8 +143,8 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     // wheel 1 first (the pinion, the shift chosen against its undercut).
     for wheel in 0..2 {
         let drawn_items = Obstacles::of_items(groups.iter().flat_map(|g| g.items.iter()));
-        let outline = Outline::new(&p.pair.spec, &p.pair.wheels[wheel]);
-        groups.extend(generation_view::draw(&drawn_items, inner.inset(-4.0), (&p.pair, wheel), &outline, &words));
+        let outline = &p.pair.outlines[wheel];
+        groups.extend(generation_view::draw(&drawn_items, inner.inset(-4.0), (&p.pair, wheel), outline, &words));
     }
 
     let name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
@@ -176,7 +175,6 @@ fn mesh_group(
     words: &GearWords,
 ) -> Result<(Group, MeshDrawn, Option<sliding_view::SlidingDrawn>), TooLong> {
     let (l, lang) = (words.sheet, words.lang);
-    let outlines = [Outline::new(&p.pair.spec, &p.pair.wheels[0]), Outline::new(&p.pair.spec, &p.pair.wheels[1])];
     let notes = mesh_notes(p, words);
     let mut mesh = Group::new("mesh", region);
     let mut labels = Labels::new();
@@ -214,7 +212,7 @@ fn mesh_group(
     let drawn = draw_mesh(
         &mut mesh,
         area,
-        &MeshInput { pair: &p.pair, outlines: [&outlines[0], &outlines[1]], lang },
+        &MeshInput { pair: &p.pair, outlines: [&p.pair.outlines[0], &p.pair.outlines[1]], lang },
         &mut labels,
     );
     // Its labels stay inside the drawing's area, clear of the notes below it.

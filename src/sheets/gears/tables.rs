@@ -83,7 +83,8 @@ fn limit_cell(relation: Relation, limit: &str, words: &GearWords) -> String {
         Relation::Greater => format!("> {limit}"),
         Relation::AtLeast => format!("≥ {limit}"),
         Relation::Integer => words.sheet.integer().to_string(),
-        // The ratio's row is written as its deviation (see `sheet_table`).
+        // The ratio's row is written as its deviation where the tolerance is known (see
+        // `sheet_table`).
         Relation::Within => limit.to_string(),
     }
 }
@@ -104,11 +105,9 @@ fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords) -> Tabl
     let conditions = n.table.id == "conditions";
     let mut rows = scaffold::drawn_rows(n, lang, !conditions);
     for ((label, cells), r) in rows.iter_mut().zip(&n.table.rows) {
-        if let Quantity::Condition(kind) = r.quantity {
-            cells[1] = limit_cell(kind.relation(), &cells[1], words);
-            cells[2] = (if r.values[2] > 0.5 { l.yes() } else { l.no() }).to_string();
-        }
-        if let (Quantity::Condition(ConditionKind::Ratio), Some(t)) = (&r.quantity, tolerance) {
+        let Quantity::Condition(kind) = r.quantity else { continue };
+        cells[2] = (if r.values[2] > 0.5 { l.yes() } else { l.no() }).to_string();
+        if let (ConditionKind::Ratio, Some(t)) = (kind, tolerance) {
             // The ratio's condition as the course states it: u_1H off u_req by at most ±3 %
             // (both are in the stage's table above); the note's table keeps the two ratios.
             let off = 100.0 * (r.values[0] - r.values[1]) / r.values[1];
@@ -119,6 +118,8 @@ fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords) -> Tabl
             *label = LabelText::new(format!("{before}u"), "1H").with_tail(after.to_string());
             cells[0] = format!("{} %", fmt::localise(&format!("{off:.2}"), lang));
             cells[1] = format!("±{} %", fmt::trimmed(t * 100.0, lang));
+        } else {
+            cells[1] = limit_cell(kind.relation(), &cells[1], words);
         }
     }
     let label_w = rows.iter().map(|(x, _)| x.width(CELL_TEXT) + 4.0).fold(14.0, f64::max);
