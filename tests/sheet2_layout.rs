@@ -327,3 +327,24 @@ fn the_analytic_and_the_drawn_contact_ratio_stand_in_one_column() {
         );
     });
 }
+
+/// The space e's value, where neither along its arc nor level at its middle is clear (its
+/// arc no longer than its value, between p's extension line and s's value), stands level
+/// under the arc moved along it: task 11 variant 35 hung it 36.6 mm off across the line
+/// of centres.
+#[test]
+fn the_spaces_value_moves_along_under_its_arc_before_it_takes_a_leader() {
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    let cat = Catalogue::embedded().unwrap();
+    let task = cat.tasks.iter().find(|t| t.id() == "11").expect("task 11");
+    for lang in Language::ALL {
+        let Variant::Project { text, .. } = task.project(35, lang, "tmm init").unwrap() else {
+            panic!("task 11 variant 35 is complete in the guide")
+        };
+        let b = sheet2(&pipeline::load(&text).unwrap());
+        let layout = &b.output.results["layout"];
+        let longest = layout["longest_leader_mm"].as_f64().unwrap();
+        assert!(longest <= 22.0, "{lang:?}: a leader of {longest} mm");
+        assert_eq!(layout["texts_crossed"], 0, "{lang:?}: {}", layout["problems"]);
+    }
+}

@@ -218,6 +218,10 @@ const ROLLER_CLEAR_MM: f64 = 1.5;
 /// The step along the near dwell looking for the pitch profile clear of the rollers, rad.
 const NEAR_DWELL_STEP: f64 = 0.5 * std::f64::consts::PI / 180.0;
 
+/// Where along the near dwell the base circle's name may stand, best first (its middle holds
+/// r_min's radius).
+const BASE_NAME_AT: [f64; 6] = [0.7, 0.85, 0.3, 0.15, 0.6, 0.4];
+
 /// r_min: a radius into the middle of the near dwell, where the profile is the base circle,
 /// with the base circle's name on a leader of its own a little further round (clear of the
 /// radius' arrowhead).
@@ -228,9 +232,17 @@ fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words:
     let dir = pr.pitch((near + TAU) / 2.0).p.unit();
     let base = dir * d.centre.r_min;
     vector(g, view.origin, view.p(base), THIN);
-    let aside = pr.pitch(near + (TAU - near) * 0.7).p.unit() * d.centre.r_min;
-    let out = view.p(aside) - view.origin;
-    labels.add_line_name(view.p(aside), out, LabelText::new(l.base_circle(), ""), 2.5, 3);
+    // Several points of the near dwell, the first a little round from the radius: the
+    // first alone hung the name 59 mm down a leader where the profile's region ends close
+    // beside that point (task 13 variant 41).
+    let spots: Vec<(Point, Vec2)> = BASE_NAME_AT
+        .iter()
+        .map(|&f| {
+            let aside = view.p(pr.pitch(near + (TAU - near) * f).p.unit() * d.centre.r_min);
+            (aside, aside - view.origin)
+        })
+        .collect();
+    labels.add_line_name_at_any(&spots, LabelText::new(l.base_circle(), ""), 2.5, 3);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
         fmt::trimmed(mm(d.centre.r_min), words.lang),
