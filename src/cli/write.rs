@@ -48,6 +48,7 @@ pub fn write_outputs(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<()> {
     remove_leftover_temps(dir);
     let previous = read_manifest(dir);
     let temps = files.iter().map(|(name, bytes)| write_temp(dir, name, bytes)).collect::<Result<Vec<_>>>()?;
+    sync_together(dir, &temps, files)?;
     let now: BTreeSet<String> = files.iter().map(|(name, _)| name.clone()).collect();
     if !now.is_subset(&previous) {
         write_manifest(dir, &previous.union(&now).cloned().collect())?;
@@ -146,18 +147,20 @@ fn read_manifest(dir: &Path) -> BTreeSet<String> {
     text.lines().map(str::trim).filter(|n| is_plain(n)).map(str::to_string).collect()
 }
 
-/// Writes `bytes` to a new temporary file in `dir` named after `name`, synced to the disk,
-/// so that renaming it into place later cannot expose a partial file after a crash.
 /// One file written on its own, atomically (a temporary file beside it renamed into place),
 /// outside any build's manifest: a report the user names.
 pub fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
     let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     let name = path.file_name().with_context(|| format!("{} names no file", path.display()))?;
     let temp = write_temp(dir, &name.to_string_lossy(), bytes)?;
+    temp.as_file().sync_all().with_context(|| format!("cannot write {}", path.display()))?;
     temp.persist(path).map_err(|e| e.error).with_context(|| format!("cannot write {}", path.display()))?;
     Ok(())
 }
 
+/// Writes `bytes` to a new temporary file in `dir` named after `name`, not yet synced to
+/// the disk (see [`sync_together`]): renamed into place only once synced, it cannot expose a
+/// partial file after a crash.
 fn write_temp(dir: &Path, name: &str, bytes: &[u8]) -> Result<NamedTempFile> {
     let prefix = format!(".{name}{TEMP_MARK}");
     let mut builder = tempfile::Builder::new();
@@ -168,18 +171,30 @@ fn write_temp(dir: &Path, name: &str, bytes: &[u8]) -> Result<NamedTempFile> {
     builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
     let target = dir.join(name);
     let mut temp = builder.tempfile_in(dir).with_context(|| format!("cannot write {}", target.display()))?;
-    temp.write_all(bytes)
-        .and_then(|()| temp.as_file().sync_all())
-        .with_context(|| format!("cannot write {}", target.display()))?;
+    temp.write_all(bytes).with_context(|| format!("cannot write {}", target.display()))?;
     Ok(temp)
+}
+
+/// Syncs the temporary files of `files` to the disk, all at once: each sync waits on the
+/// disk (0.3 ms a file here, 9 ms for the worked example's 30 files one after another, a
+/// tenth of its build), while syncs in flight together share the file system's commits.
+fn sync_together(dir: &Path, temps: &[NamedTempFile], files: &[(String, Vec<u8>)]) -> Result<()> {
+    std::thread::scope(|s| {
+        let syncs: Vec<_> = temps.iter().map(|t| s.spawn(move || t.as_file().sync_all())).collect();
+        syncs.into_iter().zip(files).try_for_each(|(sync, (name, _))| {
+            let synced = sync.join().unwrap_or_else(|_| Err(io::Error::other("the sync's thread failed")));
+            synced.with_context(|| format!("cannot write {}", dir.join(name).display()))
+        })
+    })
 }
 
 /// Records `names` as the manifest, atomically like every output.
 fn write_manifest(dir: &Path, names: &BTreeSet<String>) -> Result<()> {
     let list: String = names.iter().map(|n| format!("{n}\n")).collect();
     let path = dir.join(MANIFEST);
-    write_temp(dir, MANIFEST, list.as_bytes())?
-        .persist(&path)
+    let temp = write_temp(dir, MANIFEST, list.as_bytes())?;
+    temp.as_file().sync_all().with_context(|| format!("cannot write {}", path.display()))?;
+    temp.persist(&path)
         .map_err(|e| e.error)
         .with_context(|| format!("cannot write {}", path.display()))?;
     Ok(())
