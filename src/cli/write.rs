@@ -194,9 +194,7 @@ fn write_manifest(dir: &Path, names: &BTreeSet<String>) -> Result<()> {
     let path = dir.join(MANIFEST);
     let temp = write_temp(dir, MANIFEST, list.as_bytes())?;
     temp.as_file().sync_all().with_context(|| format!("cannot write {}", path.display()))?;
-    temp.persist(&path)
-        .map_err(|e| e.error)
-        .with_context(|| format!("cannot write {}", path.display()))?;
+    temp.persist(&path).map_err(|e| e.error).with_context(|| format!("cannot write {}", path.display()))?;
     Ok(())
 }
 
