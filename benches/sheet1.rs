@@ -4,7 +4,7 @@
 #![allow(clippy::disallowed_methods)]
 
 use std::f64::consts::TAU;
-use tmm_sheets::lever::{State, analysis, kinetostatics};
+use tmm_sheets::lever::{State, Turn, analysis, kinetostatics};
 use tmm_sheets::pipeline::{self, DEFAULT_PROJECT, Format};
 
 fn main() {
@@ -12,14 +12,31 @@ fn main() {
 }
 
 /// 360 positions with velocities and accelerations, the whole turn at once (the angles
-/// overlapped), reusing the states' buffers.
+/// overlapped) into a `Turn`, reusing its buffers.
 #[divan::bench]
 fn solve_360_positions(bencher: divan::Bencher) {
     let p = pipeline::load(DEFAULT_PROJECT).unwrap().lever.unwrap();
     let thetas: Vec<f64> = (0..360).map(|k| TAU * k as f64 / 360.0).collect();
-    let mut states = Vec::new();
+    let mut turn = Turn::default();
     bencher.bench_local(|| {
-        p.mechanism.solve_all(divan::black_box(&thetas), &mut states).unwrap();
+        p.mechanism.solve_turn(divan::black_box(&thetas), &mut turn).unwrap();
+        divan::black_box(turn.point(359, 5).a.x)
+    });
+}
+
+/// The same turn, then each angle copied into a `State` of its own (for comparison: what
+/// keeping 360 states costs), reusing the turn's and the states' buffers.
+#[divan::bench]
+fn solve_360_states(bencher: divan::Bencher) {
+    let p = pipeline::load(DEFAULT_PROJECT).unwrap().lever.unwrap();
+    let thetas: Vec<f64> = (0..360).map(|k| TAU * k as f64 / 360.0).collect();
+    let mut turn = Turn::default();
+    let mut states = vec![State::default(); 360];
+    bencher.bench_local(|| {
+        p.mechanism.solve_turn(divan::black_box(&thetas), &mut turn).unwrap();
+        for (k, s) in states.iter_mut().enumerate() {
+            turn.state_into(k, s);
+        }
         divan::black_box(states[359].points[5].a.x)
     });
 }

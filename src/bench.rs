@@ -9,7 +9,7 @@ use crate::cams::profile::parts;
 use crate::cams::radius::Phase;
 use crate::gears::pair::{Pair, PairSpec};
 use crate::gears::tooth::Outline;
-use crate::lever::{Mechanism, Step, analysis, trajectory};
+use crate::lever::{Mechanism, Step, Turn, analysis, trajectory};
 use crate::num::bezier;
 use crate::num::math::{Norm, from_angle};
 use crate::num::tol;
@@ -189,10 +189,10 @@ fn newton(m: &Mechanism, theta: f64, iterations: usize, p: &mut [Vec2]) -> Optio
 /// residual over the turn.
 fn solver(m: &Mechanism, mu_l: f64, clock: Clock) -> Table {
     let angles: Vec<f64> = (0..360).map(|k| TAU * k as f64 / 360.0).collect();
-    let mut states = Vec::new();
-    // The whole turn at once, as the motion's scan solves it (see `Mechanism::solve_all`).
+    let mut turn = Turn::default();
+    // The whole turn at once, as the motion's scan solves it (see `Mechanism::solve_turn`).
     let closed = clock.time(|| {
-        let _ = m.solve_all(&angles, &mut states);
+        let _ = m.solve_turn(&angles, &mut turn);
     });
     let exact_worst = angles
         .iter()

@@ -11,7 +11,7 @@
 
 use kurbo::Vec2;
 use std::f64::consts::TAU;
-use tmm_sheets::lever::State;
+use tmm_sheets::lever::{Kin, LinkKin, Solution, State, Turn};
 use tmm_sheets::pipeline::{self, DEFAULT_PROJECT};
 
 /// Position, velocity and acceleration of a point, and angle, ω, ε of a link.
@@ -120,49 +120,84 @@ fn the_six_bar_matches_its_textbook_closed_form() {
     }
 }
 
-/// The whole turn solved at once (`solve_all`, the angles in SIMD lanes) is the turn solved
-/// one angle at a time, bit for bit, on every mechanism of the fixtures (each kind of step)
-/// and with a last angle that fills no batch of lanes; on a coupler too short for part of
-/// the turn, the first angle that fails is the one `solve_into` fails first, with the same
-/// step and reason, and every angle before it is solved.
+/// Every bit of a point's position, velocity and acceleration.
+fn kin_bits(k: Kin) -> [u64; 6] {
+    [k.p.x, k.p.y, k.v.x, k.v.y, k.a.x, k.a.y].map(f64::to_bits)
+}
+
+/// Every bit of a link's direction, angle, ω and ε.
+fn link_bits(l: LinkKin) -> [u64; 5] {
+    [l.dir.x, l.dir.y, l.angle(), l.omega, l.eps].map(f64::to_bits)
+}
+
+/// The whole turn solved at once (`solve_turn`, the angles in SIMD lanes, kept in columns,
+/// read in place through `Turn::at` and copied out by `Turn::state_into`) holds what
+/// `solve_into` finds angle by angle, bit for bit: every
+/// point's p, v, a, every link's direction, angle, ω and ε, every slide, on every fixture's
+/// mechanism (each kind of step, the kulisa's slides among them) and a coupler too short
+/// for part of the turn, both senses, 360 angles and counts that leave the last block of
+/// lanes part full, one `Turn` reused throughout (its buffers resized, its frame reset
+/// for each mechanism); where a part of the turn fails, the first angle that fails is the
+/// one `solve_into` fails first, with the same step and reason.
 #[test]
-fn the_turn_solved_at_once_is_the_turn_solved_angle_by_angle() {
+fn the_turn_in_columns_is_solve_into_bit_for_bit() {
     let short = std::fs::read_to_string("tests/bad-input/118-rrr-too-short.yaml").unwrap();
-    let mut texts = vec![DEFAULT_PROJECT.to_string(), short.clone()];
+    let mut texts = vec![DEFAULT_PROJECT.to_string(), short];
     for entry in std::fs::read_dir("fixtures").unwrap() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "yaml") {
             texts.push(std::fs::read_to_string(path).unwrap());
         }
     }
-    assert!(texts.len() > 8, "the fixtures' mechanisms");
+    let mut turn = Turn::default();
+    let (mut compared, mut kulisa_slides) = (0, 0);
     for text in &texts {
         let m = pipeline::load_for(text, &[1]).unwrap().lever.unwrap().mechanism;
-        for sense in [1.0, -1.0] {
-            let thetas: Vec<f64> = (0..721).map(|k| sense * TAU * k as f64 / 720.0 + 0.1).collect();
-            let mut all = Vec::new();
-            let got = m.solve_all(&thetas, &mut all);
-            let mut first_failure = None;
+        for (n, sense) in [(360, 1.0), (359, -1.0), (361, 1.0), (360, -1.0)] {
+            let thetas: Vec<f64> = (0..n).map(|k| sense * TAU * k as f64 / 360.0 + 0.3).collect();
+            let got = m.solve_turn(&thetas, &mut turn);
+            assert_eq!(turn.len(), n);
+            let (mut first_failure, mut s, mut copied) = (None, State::default(), State::default());
             for (k, &th) in thetas.iter().enumerate() {
-                let mut s = State::default();
-                match m.solve_into(th, &mut s) {
-                    Ok(()) if first_failure.is_none() => {
-                        assert_eq!(
-                            (&all[k].points, &all[k].links, &all[k].slides),
-                            (&s.points, &s.links, &s.slides),
-                            "angle {k}"
-                        );
-                    }
-                    Ok(()) => {}
-                    Err(f) => {
-                        first_failure.get_or_insert((k, f));
-                    }
+                if let Err(f) = m.solve_into(th, &mut s) {
+                    first_failure.get_or_insert((k, f));
+                    continue;
                 }
+                let at = turn.at(k);
+                assert_eq!(at.theta().to_bits(), th.to_bits());
+                for (id, &kin) in s.points.iter().enumerate() {
+                    assert_eq!(kin_bits(at.point(id)), kin_bits(kin), "point {} at angle {k}", m.name(id));
+                }
+                for (id, &link) in s.links.iter().enumerate() {
+                    assert_eq!(link_bits(at.link(id)), link_bits(link), "link {id} at angle {k}");
+                }
+                for (i, &(d, d_dot, d_ddot)) in s.slides.iter().enumerate() {
+                    let want = [d, d_dot, d_ddot].map(f64::to_bits);
+                    let (d, d_dot, d_ddot) = turn.slide(k, i);
+                    assert_eq!([d, d_dot, d_ddot].map(f64::to_bits), want, "slide of step {i} at angle {k}");
+                    kulisa_slides += usize::from(d != 0.0);
+                }
+                turn.state_into(k, &mut copied);
+                assert_eq!(copied.theta.to_bits(), s.theta.to_bits());
+                assert_eq!(
+                    copied.points.iter().map(|&k| kin_bits(k)).collect::<Vec<_>>(),
+                    s.points.iter().map(|&k| kin_bits(k)).collect::<Vec<_>>()
+                );
+                assert_eq!(
+                    copied.links.iter().map(|&l| link_bits(l)).collect::<Vec<_>>(),
+                    s.links.iter().map(|&l| link_bits(l)).collect::<Vec<_>>()
+                );
+                let slide_bits =
+                    |s: &State| s.slides.iter().map(|&(a, b, c)| [a, b, c].map(f64::to_bits)).collect::<Vec<_>>();
+                assert_eq!(slide_bits(&copied), slide_bits(&s));
+                compared += 1;
             }
             assert_eq!(got.err(), first_failure);
         }
     }
-    // The short coupler fails somewhere, so the failure branch above was exercised.
-    let m = pipeline::load_for(&short, &[1]).unwrap().lever.unwrap().mechanism;
-    assert!(m.solve_all(&[0.0, 3.0], &mut Vec::new()).is_err());
+    assert!(compared > 8 * 4 * 300, "{compared} angles compared");
+    assert!(kulisa_slides > 0, "a fixture with a kulisa");
+    // The short coupler fails somewhere, so the failures above were compared.
+    let m = pipeline::load_for(&texts[1], &[1]).unwrap().lever.unwrap().mechanism;
+    assert!(m.solve_turn(&[0.0, 3.0], &mut turn).is_err());
 }

@@ -2,7 +2,7 @@
 //! second extreme position), the assigned position, trajectories and structure.
 
 use super::kinetostatics::{self, ForceError, ForceModel, Forces};
-use super::linkage::{Mechanism, PointId, State};
+use super::linkage::{Mechanism, PointId, Solution, State};
 use super::motion::{self, Motion, MotionError, Start};
 use super::structure::{self, Structure};
 use super::trajectory;
@@ -92,14 +92,16 @@ pub enum AnalysisError {
     ForceNotFinite { phi_deg: f64, what: String },
 }
 
-fn check_finite(m: &Mechanism, s: &State, phi: f64) -> Result<(), AnalysisError> {
-    for (i, k) in s.points.iter().enumerate() {
+fn check_finite(m: &Mechanism, s: &impl Solution, phi: f64) -> Result<(), AnalysisError> {
+    for i in 0..m.point_names.len() {
+        let k = s.point(i);
         let ok = [k.p, k.v, k.a].iter().all(|v| v.x.is_finite() && v.y.is_finite());
         if !ok {
             return Err(AnalysisError::NotFinite { phi_deg: phi.to_degrees(), point: m.name(i).into() });
         }
     }
-    let links_ok = s.links.iter().all(|l| l.dir.is_finite() && l.omega.is_finite() && l.eps.is_finite());
+    let links_ok =
+        (0..m.links.len()).map(|i| s.link(i)).all(|l| l.dir.is_finite() && l.omega.is_finite() && l.eps.is_finite());
     if !links_ok {
         return Err(AnalysisError::NotFinite { phi_deg: phi.to_degrees(), point: "(link)".into() });
     }
@@ -152,12 +154,12 @@ pub fn kinematics(m: &Mechanism, s: &Settings) -> Result<Kinematics, AnalysisErr
 }
 
 fn trajectories(m: &Mechanism, motion: &Motion) -> Result<Vec<Trajectory>, AnalysisError> {
-    let states = motion::sample(m, motion, TRAJECTORY_SAMPLES)?;
-    for (k, st) in states.iter().enumerate() {
-        check_finite(m, st, TAU * k as f64 / TRAJECTORY_SAMPLES as f64)?;
+    let turn = motion::sample(m, motion, TRAJECTORY_SAMPLES)?;
+    for (k, st) in turn.positions().enumerate() {
+        check_finite(m, &st, TAU * k as f64 / TRAJECTORY_SAMPLES as f64)?;
     }
     // The extent of everything that moves, to make the fit's tolerance relative.
-    let all = states.iter().flat_map(|s| s.points.iter().map(|k| k.p));
+    let all = turn.positions().flat_map(|s| (0..m.point_names.len()).map(move |id| s.point(id).p));
     let (lo, hi) = all.fold((Vec2::splat(f64::MAX), Vec2::splat(f64::MIN)), |(lo, hi), p| {
         (Vec2::new(lo.x.min(p.x), lo.y.min(p.y)), Vec2::new(hi.x.max(p.x), hi.y.max(p.y)))
     });
@@ -165,7 +167,7 @@ fn trajectories(m: &Mechanism, motion: &Motion) -> Result<Vec<Trajectory>, Analy
     m.mass_centres
         .iter()
         .map(|&(_, point)| {
-            let mut samples: Vec<Vec2> = states.iter().map(|s| s.points[point].p).collect();
+            let mut samples: Vec<Vec2> = turn.positions().map(|s| s.point(point).p).collect();
             samples.push(samples[0]);
             let fitted = trajectory::fit(m, motion, point, tol)?;
             Ok(Trajectory { point, samples, fitted })

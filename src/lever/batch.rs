@@ -1,5 +1,5 @@
 //! The mechanism's steps ready to run ([`StepPlan`]: each with the constants its closed form
-//! takes from the lengths, found once), and [`Batch`], which runs them on [`LANES`] crank
+//! takes from the lengths, found once), and [`Block`], which runs them on [`LANES`] crank
 //! angles at once, one per SIMD lane: a whole turn's angles are independent, so each of
 //! the dyads' divisions and square roots serves several angles, and no angle waits on
 //! another's chain of them. A lane's results are [`Mechanism::solve_into`]'s bit for bit
@@ -39,6 +39,9 @@ pub enum StepPlan {
         a3: PointId,
         links: [LinkId; 2],
         min_distance: f64,
+        /// Which of the mechanism's kulisas (in the order of the steps): where a
+        /// [`Block`] keeps its slide.
+        slot: usize,
     },
     /// `toward == from`: the point is the joint itself.
     Joint {
@@ -55,6 +58,19 @@ pub enum StepPlan {
 }
 
 impl StepPlan {
+    /// The plans of all of `m`'s steps, in order, the kulisas numbered.
+    pub fn all(m: &Mechanism) -> Vec<StepPlan> {
+        let mut kulisas = 0..;
+        let mut number = |plan| match plan {
+            StepPlan::Rpr { a, c, a3, links, min_distance, .. } => {
+                StepPlan::Rpr { a, c, a3, links, min_distance, slot: kulisas.next().unwrap_or_default() }
+            }
+            plan => plan,
+        };
+        m.steps.iter().map(|step| number(StepPlan::of(step, m))).collect()
+    }
+
+    /// Step `step`'s plan (a kulisa's `slot` 0: see [`StepPlan::all`]).
     #[inline(always)]
     pub fn of(step: &Step, m: &Mechanism) -> Self {
         match *step {
@@ -67,7 +83,10 @@ impl StepPlan {
             Step::Rrp { p, d, length, through, dir, branch, links } => {
                 StepPlan::Rrp { p, d, shape: RrpShape::new(length, through, dir, branch), links }
             }
-            Step::Rpr { a, c, a3, links } => StepPlan::Rpr { a, c, a3, links, min_distance: tol::SAME_POINT * m.size },
+            // numbered by `all`: one step alone does not know its place
+            Step::Rpr { a, c, a3, links } => {
+                StepPlan::Rpr { a, c, a3, links, min_distance: tol::SAME_POINT * m.size, slot: 0 }
+            }
             Step::Attach { point, from, toward, .. } if toward == from => StepPlan::Joint { point, from },
             Step::Attach { point, link, from, toward, distance, angle, ratio } => {
                 StepPlan::Attach { point, link, from, toward, shape: AttachShape::new(distance, angle, ratio) }
@@ -76,10 +95,21 @@ impl StepPlan {
     }
 }
 
-/// The points and links of [`LANES`] angles, indexed like [`State`]'s: what the steps read.
-pub struct Batch {
-    points: Vec<KinOf<Lanes>>,
-    links: Vec<LinkOf<Lanes>>,
+/// A slide along a kulisa ([`State::slides`]) of [`LANES`] angles: the distance and its
+/// first and second time derivatives.
+pub type SlideOf<T> = (T, T, T);
+
+/// The points, links and slides of [`LANES`] angles, indexed like [`State`]'s: where each
+/// step writes its results and reads those of the steps before it. It borrows one block of
+/// a [`Turn`](super::turn::Turn), so the results are stored where the turn keeps them, in
+/// whole SIMD registers, and never copied (see [`super::turn`]).
+pub struct Block<'a> {
+    pub points: &'a mut [KinOf<Lanes>],
+    pub links: &'a mut [LinkOf<Lanes>],
+    /// Kulisa by kulisa (`StepPlan::Rpr`'s slot).
+    pub slides: &'a mut [SlideOf<Lanes>],
+    /// The step of each kulisa.
+    pub kulisas: &'a [usize],
 }
 
 /// Whether `ok` holds in every lane.
@@ -88,97 +118,75 @@ fn every_lane(ok: impl Fn(usize) -> bool) -> bool {
     (0..LANES).all(ok)
 }
 
-impl Batch {
-    /// Buffers for `m`, its frame's points set.
-    pub fn new(m: &Mechanism) -> Self {
-        let mut points = vec![KinOf::default(); m.point_names.len()];
-        for &(id, p) in &m.frame {
-            points[id] = KinOf::fixed(p);
-        }
-        Batch { points, links: vec![LinkOf::default(); m.links.len()] }
-    }
-
-    /// Solves the crank angles `theta`, one per lane, into `states` (prepared for them);
+impl Block<'_> {
+    /// Solves the crank angles `theta`, one per lane, the block's frame points already set;
     /// false as soon as a lane fails a step (which one, and why, is for
     /// [`Mechanism::solve_into`] to say), the steps before it written.
     #[inline(always)]
-    pub fn solve(&mut self, plans: &[StepPlan], omega: f64, theta: Lanes, states: &mut [State; LANES]) -> bool {
-        plans.iter().enumerate().all(|(i, plan)| self.run(i, plan, omega, theta, states))
+    pub fn solve(&mut self, plans: &[StepPlan], omega: f64, theta: Lanes) -> bool {
+        plans.iter().all(|plan| self.run(plan, omega, theta))
     }
 
-    /// Step `i`, its results kept for the steps after it and written into each lane's state
-    /// at once, while they are in registers.
+    /// One step, its results kept for the steps after it.
     #[inline(always)]
-    fn run(&mut self, i: usize, plan: &StepPlan, omega: f64, theta: Lanes, states: &mut [State; LANES]) -> bool {
-        let pts = &self.points;
+    fn run(&mut self, plan: &StepPlan, omega: f64, theta: Lanes) -> bool {
+        let pts = &mut *self.points;
         match *plan {
             StepPlan::Crank { pivot, pin, length, inv_length, link } => {
                 let (k, l) = dyads::crank_of(&pts[pivot], length, inv_length, theta, omega);
-                self.set_point(pin, k, states);
-                self.set_link(link, l, states);
+                pts[pin] = k;
+                self.links[link] = l;
             }
             StepPlan::Rrr { p, q, b, shape, links } => {
                 let (sol, d2, cross) = dyads::rrr_of(&pts[p], &pts[q], &shape);
                 if !every_lane(|k| shape.check(d2.0[k], cross.0[k]).is_ok()) {
                     return false;
                 }
-                self.set_dyad(b, sol, links, states);
+                self.set_dyad(b, sol, links);
             }
             StepPlan::Rrp { p, d, shape, links } => {
                 let (sol, h, along) = dyads::rrp_of(&pts[p], &shape);
                 if !every_lane(|k| shape.check(h.0[k], along.0[k]).is_ok()) {
                     return false;
                 }
-                self.set_dyad(d, sol, links, states);
+                self.set_dyad(d, sol, links);
             }
-            StepPlan::Rpr { a, c, a3, links, min_distance } => {
+            StepPlan::Rpr { a, c, a3, links, min_distance, slot } => {
                 let (sol, d) = dyads::rpr_of(&pts[a], &pts[c]);
                 if !every_lane(|k| dyads::rpr_check(d.0[k], min_distance).is_ok()) {
                     return false;
                 }
-                self.set_point(a3, sol.a3, states);
-                self.set_link(links[0], sol.kulisa, states);
-                self.set_link(links[1], sol.kulisa, states);
-                let (d, d_dot, d_ddot) = sol.slide;
-                each_lane(states, |k, s| s.slides[i] = (d.0[k], d_dot.0[k], d_ddot.0[k]));
+                pts[a3] = sol.a3;
+                self.links[links[0]] = sol.kulisa;
+                self.links[links[1]] = sol.kulisa;
+                self.slides[slot] = sol.slide;
             }
-            StepPlan::Joint { point, from } => self.set_point(point, pts[from], states),
+            StepPlan::Joint { point, from } => pts[point] = pts[from],
             StepPlan::Attach { point, link, from, toward, shape } => {
-                let kin = dyads::attach_of(&pts[from], pts[toward].p, &self.links[link], &shape);
-                self.set_point(point, kin, states);
+                pts[point] = dyads::attach_of(&pts[from], pts[toward].p, &self.links[link], &shape);
             }
         }
         true
     }
 
     #[inline(always)]
-    fn set_point(&mut self, id: PointId, kin: KinOf<Lanes>, states: &mut [State; LANES]) {
-        self.points[id] = kin;
-        each_lane(states, |k, s| s.points[id] = kin.lane(k));
+    fn set_dyad(&mut self, point: PointId, sol: Solved<Lanes>, links: [LinkId; 2]) {
+        self.points[point] = sol.point;
+        self.links[links[0]] = sol.first;
+        self.links[links[1]] = sol.second;
     }
 
-    #[inline(always)]
-    fn set_link(&mut self, id: LinkId, link: LinkOf<Lanes>, states: &mut [State; LANES]) {
-        self.links[id] = link;
-        each_lane(states, |k, s| s.links[id] = link.lane(k));
+    /// Lane `k` set to the one angle's state `s`.
+    pub fn set_lane(&mut self, k: usize, s: &State) {
+        for (lanes, &kin) in self.points.iter_mut().zip(&s.points) {
+            lanes.set_lane(k, kin);
+        }
+        for (lanes, &link) in self.links.iter_mut().zip(&s.links) {
+            lanes.set_lane(k, link);
+        }
+        for (lanes, &i) in self.slides.iter_mut().zip(self.kulisas) {
+            let (d, d_dot, d_ddot) = s.slides[i];
+            (lanes.0.0[k], lanes.1.0[k], lanes.2.0[k]) = (d, d_dot, d_ddot);
+        }
     }
-
-    #[inline(always)]
-    fn set_dyad(&mut self, point: PointId, sol: Solved<Lanes>, links: [LinkId; 2], states: &mut [State; LANES]) {
-        self.set_point(point, sol.point, states);
-        self.set_link(links[0], sol.first, states);
-        self.set_link(links[1], sol.second, states);
-    }
-}
-
-/// `f(k, state k)` for each lane, unrolled: with the lane a constant, a lane's x and y leave
-/// their registers as one 16-byte store (a loop over the lanes made two 8-byte stores and
-/// took as long as the dyads). Written for four lanes: another [`LANES`] does not compile.
-#[inline(always)]
-fn each_lane(states: &mut [State; LANES], mut f: impl FnMut(usize, &mut State)) {
-    let [s0, s1, s2, s3] = states;
-    f(0, s0);
-    f(1, s1);
-    f(2, s2);
-    f(3, s3);
 }

@@ -202,6 +202,12 @@ impl V2<Lanes> {
     pub fn lane(self, k: usize) -> Vec2 {
         Vec2::new(self.x.0[k], self.y.0[k])
     }
+
+    /// Lane `k` set to `v`.
+    #[inline(always)]
+    pub fn set_lane(&mut self, k: usize, v: Vec2) {
+        (self.x.0[k], self.y.0[k]) = (v.x, v.y);
+    }
 }
 
 /// [`Kin`] of [`Real`]s.
@@ -259,6 +265,14 @@ impl KinOf<Lanes> {
     pub fn lane(&self, k: usize) -> Kin {
         Kin { p: self.p.lane(k), v: self.v.lane(k), a: self.a.lane(k) }
     }
+
+    /// Lane `k` set to `kin`.
+    #[inline(always)]
+    pub fn set_lane(&mut self, k: usize, kin: Kin) {
+        self.p.set_lane(k, kin.p);
+        self.v.set_lane(k, kin.v);
+        self.a.set_lane(k, kin.a);
+    }
 }
 
 impl LinkOf<Lanes> {
@@ -266,5 +280,12 @@ impl LinkOf<Lanes> {
     #[inline(always)]
     pub fn lane(&self, k: usize) -> LinkKin {
         LinkKin { dir: self.dir.lane(k), omega: self.omega.0[k], eps: self.eps.0[k] }
+    }
+
+    /// Lane `k` set to `link`.
+    #[inline(always)]
+    pub fn set_lane(&mut self, k: usize, link: LinkKin) {
+        self.dir.set_lane(k, link.dir);
+        (self.omega.0[k], self.eps.0[k]) = (link.omega, link.eps);
     }
 }

@@ -1,10 +1,10 @@
 //! A resolved mechanism: named points, numbered links, and the ordered steps
 //! (crank, Assur dyads, points attached to links) that solve it at any crank angle.
 
-use super::batch::{Batch, StepPlan};
+use super::batch::StepPlan;
 use super::dyads::{self, DyadFailure};
 use super::kin::{Kin, LinkKin};
-use super::lanes::{KinOf, LANES, Lanes, LinkOf};
+use super::lanes::{KinOf, LinkOf};
 use crate::num::Sense;
 use crate::num::math::Norm;
 use kurbo::Vec2;
@@ -156,6 +156,27 @@ pub struct State {
     pub slides: Vec<(f64, f64, f64)>,
 }
 
+/// What the solver found at one crank angle, wherever it is kept: a [`State`], or one angle
+/// of a [`Turn`](super::Turn) ([`Turn::at`](super::Turn::at)), read in place.
+pub trait Solution {
+    /// The absolute crank angle, radians.
+    fn theta(&self) -> f64;
+    fn point(&self, id: PointId) -> Kin;
+    fn link(&self, id: LinkId) -> LinkKin;
+}
+
+impl Solution for State {
+    fn theta(&self) -> f64 {
+        self.theta
+    }
+    fn point(&self, id: PointId) -> Kin {
+        self.points[id]
+    }
+    fn link(&self, id: LinkId) -> LinkKin {
+        self.links[id]
+    }
+}
+
 /// A failed step: which one, and why. [`super::motion`] turns it into a message that names
 /// the Assur group and the crank angles.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -228,7 +249,8 @@ impl Mechanism {
         Ok(s)
     }
 
-    /// Like [`Mechanism::solve`], reusing the buffers of `s` (no allocation after the first call).
+    /// Like [`Mechanism::solve`], reusing the buffers of `s` (no allocation after the first
+    /// call). A whole turn is quicker solved at once, [`Mechanism::solve_turn`].
     pub fn solve_into(&self, theta: f64, s: &mut State) -> Result<(), StepFailure> {
         self.prepare(theta, s);
         for (i, step) in self.steps.iter().enumerate() {
@@ -237,35 +259,11 @@ impl Mechanism {
         Ok(())
     }
 
-    /// Solves every angle of `thetas` into `states` (one for each, their buffers reused):
-    /// the angles' results are [`Mechanism::solve_into`]'s, bit for bit. [`LANES`] angles at
-    /// a time, one per SIMD lane (`batch::Batch`, the steps' constants found once for all):
-    /// the worked example's 360 positions in 0.75 of the time one at a time takes. An angle
-    /// that fails a step is solved no further; the first angle that fails is returned with
-    /// its index.
-    pub fn solve_all(&self, thetas: &[f64], states: &mut Vec<State>) -> Result<(), (usize, StepFailure)> {
-        states.truncate(thetas.len());
-        states.resize_with(thetas.len(), State::default);
-        let plans: Vec<StepPlan> = self.steps.iter().map(|step| StepPlan::of(step, self)).collect();
-        let mut batch = Batch::new(self);
-        let mut first_failure = None;
-        for (n, (thetas, states)) in thetas.chunks(LANES).zip(states.chunks_mut(LANES)).enumerate() {
-            for (s, &theta) in states.iter_mut().zip(thetas) {
-                self.prepare(theta, s);
-            }
-            if let (Ok(lanes), Ok(states)) = (thetas.try_into(), <&mut [State; LANES]>::try_from(&mut *states))
-                && batch.solve(&plans, self.omega1, Lanes(lanes), states)
-            {
-                continue;
-            }
-            // A lane failed, or the last angles fill no batch: each angle alone.
-            for (k, s) in states.iter_mut().enumerate() {
-                if let Err(f) = self.run_steps(&plans, s) {
-                    first_failure.get_or_insert((n * LANES + k, f));
-                }
-            }
-        }
-        first_failure.map_or(Ok(()), Err)
+    /// Solves `plans` (this mechanism's) at crank angle `theta` into `s`, up to the first
+    /// step that fails.
+    pub(super) fn solve_with(&self, plans: &[StepPlan], theta: f64, s: &mut State) -> Result<(), StepFailure> {
+        self.prepare(theta, s);
+        self.run_steps(plans, s)
     }
 
     /// Runs `plans` on the prepared state `s`, up to the first step that fails.
@@ -313,7 +311,7 @@ impl Mechanism {
                 s.links[links[0]] = sol.first.into();
                 s.links[links[1]] = sol.second.into();
             }
-            StepPlan::Rpr { a, c, a3, links, min_distance } => {
+            StepPlan::Rpr { a, c, a3, links, min_distance, .. } => {
                 let (sol, d) = dyads::rpr_of(&kin(a), &kin(c));
                 dyads::rpr_check(d, min_distance)?;
                 s.points[a3] = sol.a3.into();
@@ -344,10 +342,10 @@ impl Mechanism {
         lengths.chain(frame).fold(0.0, f64::max)
     }
 
-    /// How far each Assur group is from failing to assemble at state `s`, as (step, margin):
-    /// 0 at a dead point, positive where it assembles, relative to the group's links.
-    pub fn margins<'a>(&'a self, s: &'a State) -> impl Iterator<Item = (usize, f64)> + 'a {
-        let p = |id: PointId| s.points[id].p;
+    /// How far each Assur group is from failing to assemble at `s`, as (step, margin): 0 at
+    /// a dead point, positive where it assembles, relative to the group's links.
+    pub fn margins<'a, S: Solution + ?Sized>(&'a self, s: &'a S) -> impl Iterator<Item = (usize, f64)> + 'a {
+        let p = |id: PointId| s.point(id).p;
         self.steps.iter().enumerate().filter_map(move |(i, step)| {
             let margin = match *step {
                 Step::Rrr { p: a, q, l_pb, l_qb, .. } => {
@@ -363,10 +361,16 @@ impl Mechanism {
     }
 
     /// Value of the output coordinate and its time derivative.
-    pub fn output_value(&self, s: &State) -> (f64, f64) {
+    pub fn output_value<S: Solution + ?Sized>(&self, s: &S) -> (f64, f64) {
         match self.output {
-            Output::Slider { point, dir } => (s.points[point].p.dot(dir), s.points[point].v.dot(dir)),
-            Output::Rocker { link } => (s.links[link].angle(), s.links[link].omega),
+            Output::Slider { point, dir } => {
+                let k = s.point(point);
+                (k.p.dot(dir), k.v.dot(dir))
+            }
+            Output::Rocker { link } => {
+                let l = s.link(link);
+                (l.angle(), l.omega)
+            }
         }
     }
 }

@@ -19,8 +19,10 @@ pub mod motion;
 pub mod plans;
 pub mod structure;
 pub mod trajectory;
+pub mod turn;
 
 pub use analysis::Settings;
 pub use kin::{Kin, LinkKin};
-pub use linkage::{DyadKind, Group, Link, LinkId, LinkKind, Mechanism, Output, PointId, State, Step};
+pub use linkage::{DyadKind, Group, Link, LinkId, LinkKind, Mechanism, Output, PointId, Solution, State, Step};
 pub use motion::{Motion, MotionError, Start};
+pub use turn::Turn;

@@ -7,7 +7,8 @@
 //! absolute angle, counter-clockwise from the x axis) always.
 
 use super::dyads::DyadFailure;
-use super::linkage::{Mechanism, Output, PointId, State, StepFailure};
+use super::linkage::{Mechanism, Output, PointId, Solution, State, StepFailure};
+use super::turn::{At, Turn};
 use crate::num::Sense;
 use crate::num::digits::fixed;
 use crate::num::math::{self, Norm};
@@ -121,17 +122,17 @@ pub fn analyse_motion(m: &Mechanism, sense: Sense, start: Start) -> Result<Motio
     let fail = |f: StepFailure, u: f64| assembly_error(m, f, u, sense, start);
     let us: Vec<f64> = (0..SCAN_SAMPLES).map(|k| TAU * k as f64 / SCAN_SAMPLES as f64).collect();
     let thetas: Vec<f64> = us.iter().map(|&u| theta_of(u)).collect();
-    let mut solved = Vec::with_capacity(SCAN_SAMPLES);
-    if let Err((k, f)) = m.solve_all(&thetas, &mut solved) {
+    let mut turn = Turn::default();
+    if let Err((k, f)) = m.solve_turn(&thetas, &mut turn) {
         return Err(fail(f, us[k]));
     }
-    let states: Vec<(f64, State)> = us.into_iter().zip(solved).collect();
+    let states: Vec<(f64, At)> = us.into_iter().zip(turn.positions()).collect();
     if let Some((f, u)) = narrow_lock_up(m, &states, &theta_of) {
         return Err(fail(f, u));
     }
     let reference = swing_reference(m, &states);
-    let vel = |s: &State| m.output_value(s).1;
-    let value = |s: &State| output_coordinate(m, s, reference);
+    let vel = |s: &dyn Solution| m.output_value(s).1;
+    let value = |s: &dyn Solution| output_coordinate(m, s, reference);
     let what = || format!("the extreme positions of {}", output_name(m));
     let roots = extremes(&states, &|u| m.solve(theta_of(u)), &vel, &value, &what)?;
     let all: Vec<f64> = roots.iter().map(|&(u, _)| theta_of(u).rem_euclid(TAU)).collect();
@@ -159,7 +160,7 @@ pub fn analyse_motion(m: &Mechanism, sense: Sense, start: Start) -> Result<Motio
 
 /// A lock-up window narrower than the scan step: each group's reach margin is minimised
 /// around every sampled local minimum; a failed solve there is the window.
-fn narrow_lock_up(m: &Mechanism, states: &[(f64, State)], theta_of: &dyn Fn(f64) -> f64) -> Option<(StepFailure, f64)> {
+fn narrow_lock_up(m: &Mechanism, states: &[(f64, At)], theta_of: &dyn Fn(f64) -> f64) -> Option<(StepFailure, f64)> {
     let per_state: Vec<Vec<f64>> = states.iter().map(|(_, s)| m.margins(s).map(|(_, x)| x).collect()).collect();
     let groups = per_state.first().map_or(0, Vec::len);
     let n = states.len();
@@ -197,10 +198,10 @@ pub fn output_name(m: &Mechanism) -> String {
 
 /// For a rocker output: the mean direction of its swing, from which its angle is measured
 /// so that min and max do not depend on where atan2 wraps (±180°).
-fn swing_reference(m: &Mechanism, states: &[(f64, State)]) -> Vec2 {
+fn swing_reference(m: &Mechanism, states: &[(f64, At)]) -> Vec2 {
     match m.output {
         Output::Rocker { link } => {
-            let sum = states.iter().fold(Vec2::ZERO, |acc, (_, s)| acc + s.links[link].dir);
+            let sum = states.iter().fold(Vec2::ZERO, |acc, (_, s)| acc + s.link(link).dir);
             // A sum of unit vectors that cancels out: the link turns fully, any reference does.
             if sum.norm() > tol::SAME_POINT * states.len() as f64 { sum.unit() } else { Vec2::new(1.0, 0.0) }
         }
@@ -209,10 +210,10 @@ fn swing_reference(m: &Mechanism, states: &[(f64, State)]) -> Vec2 {
 }
 
 /// The output coordinate: the slider's displacement, or the rocker's angle from `reference`.
-fn output_coordinate(m: &Mechanism, s: &State, reference: Vec2) -> f64 {
+fn output_coordinate(m: &Mechanism, s: &dyn Solution, reference: Vec2) -> f64 {
     match m.output {
         Output::Rocker { link } => {
-            let d = s.links[link].dir;
+            let d = s.link(link).dir;
             math::atan2(reference.cross(d), reference.dot(d))
         }
         Output::Slider { .. } => m.output_value(s).0,
@@ -221,13 +222,13 @@ fn output_coordinate(m: &Mechanism, s: &State, reference: Vec2) -> f64 {
 
 type Solve<'a> = dyn Fn(f64) -> Result<State, StepFailure> + 'a;
 
-/// Roots of `vel` over a turn of scanned `states` (u, state), each bracketed by a sign change
-/// between neighbours and found by bisection: (u, `value` there).
+/// Roots of `vel` over a turn of scanned `states` (u, its angle's results), each bracketed
+/// by a sign change between neighbours and found by bisection: (u, `value` there).
 fn extremes(
-    states: &[(f64, State)],
+    states: &[(f64, At)],
     solve: &Solve,
-    vel: &dyn Fn(&State) -> f64,
-    value: &dyn Fn(&State) -> f64,
+    vel: &dyn Fn(&dyn Solution) -> f64,
+    value: &dyn Fn(&dyn Solution) -> f64,
     what: &dyn Fn() -> String,
 ) -> Result<Vec<(f64, f64)>, MotionError> {
     let mut roots = Vec::new();
@@ -294,33 +295,41 @@ fn assembly_error(m: &Mechanism, f: StepFailure, u: f64, sense: Sense, start: St
 /// The smallest and largest value of p·`axis` that `point` reaches over a turn (a slider's
 /// stroke ends), exact to the bisection's resolution.
 pub fn extremes_along(m: &Mechanism, motion: &Motion, point: PointId, axis: Vec2) -> Result<(f64, f64), MotionError> {
-    let states: Vec<(f64, State)> = (0..SCAN_SAMPLES)
-        .map(|k| TAU * k as f64 / SCAN_SAMPLES as f64)
-        .map(|phi| sample_at(m, motion, phi).map(|s| (phi, s)))
-        .collect::<Result<_, _>>()?;
+    let turn = sample(m, motion, SCAN_SAMPLES)?;
+    let phis = (0..SCAN_SAMPLES).map(|k| TAU * k as f64 / SCAN_SAMPLES as f64);
+    let states: Vec<(f64, At)> = phis.zip(turn.positions()).collect();
     let solve = |phi: f64| m.solve(motion.theta(phi));
     let what = || format!("the stroke ends of {}", m.name(point));
-    let roots = extremes(&states, &solve, &|s| s.points[point].v.dot(axis), &|s| s.points[point].p.dot(axis), &what)?;
-    let values = roots.iter().map(|r| r.1).chain(states.iter().map(|(_, s)| s.points[point].p.dot(axis)));
+    let (vel, value) = (|s: &dyn Solution| s.point(point).v.dot(axis), |s: &dyn Solution| s.point(point).p.dot(axis));
+    let roots = extremes(&states, &solve, &vel, &value, &what)?;
+    let values = roots.iter().map(|r| r.1).chain(states.iter().map(|(_, s)| value(s)));
     Ok(values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x))))
 }
 
-/// Solves the mechanism at `n` equally spaced course angles starting at position 0.
-pub fn sample(m: &Mechanism, motion: &Motion, n: usize) -> Result<Vec<State>, MotionError> {
-    (0..n).map(|k| sample_at(m, motion, TAU * k as f64 / n as f64)).collect()
+/// Solves the mechanism at `n` equally spaced course angles starting at position 0, the
+/// whole turn at once.
+pub fn sample(m: &Mechanism, motion: &Motion, n: usize) -> Result<Turn, MotionError> {
+    let phis: Vec<f64> = (0..n).map(|k| TAU * k as f64 / n as f64).collect();
+    let thetas: Vec<f64> = phis.iter().map(|&phi| motion.theta(phi)).collect();
+    let mut turn = Turn::default();
+    m.solve_turn(&thetas, &mut turn).map_err(|(k, f)| sample_error(m, motion, phis[k], f))?;
+    Ok(turn)
 }
 
 /// Solves the mechanism at the course angle `phi`.
 pub fn sample_at(m: &Mechanism, motion: &Motion, phi: f64) -> Result<State, MotionError> {
-    m.solve(motion.theta(phi)).map_err(|f| {
-        let theta = motion.theta(phi).rem_euclid(TAU).to_degrees();
-        let phi = phi.to_degrees();
-        let angles = Angles { theta_deg: (theta, theta), phi_deg: Some((phi, phi)), sense: motion.sense };
-        let (group, detail) = (describe_step(m, f.step), f.why.to_string());
-        let index = m.group_of_step(f.step);
-        match f.why {
-            DyadFailure::DeadPoint { .. } => MotionError::DeadPoint { group, index, angles, detail },
-            _ => MotionError::CannotAssemble { group, index, angles, detail },
-        }
-    })
+    m.solve(motion.theta(phi)).map_err(|f| sample_error(m, motion, phi, f))
+}
+
+/// The failure `f` at the course angle `phi`, in the words of the note.
+fn sample_error(m: &Mechanism, motion: &Motion, phi: f64, f: StepFailure) -> MotionError {
+    let theta = motion.theta(phi).rem_euclid(TAU).to_degrees();
+    let phi = phi.to_degrees();
+    let angles = Angles { theta_deg: (theta, theta), phi_deg: Some((phi, phi)), sense: motion.sense };
+    let (group, detail) = (describe_step(m, f.step), f.why.to_string());
+    let index = m.group_of_step(f.step);
+    match f.why {
+        DyadFailure::DeadPoint { .. } => MotionError::DeadPoint { group, index, angles, detail },
+        _ => MotionError::CannotAssemble { group, index, angles, detail },
+    }
 }
