@@ -113,17 +113,10 @@ fn turn_deg(k: usize) -> f64 {
     step * 360.0 / DIRECTIONS as f64
 }
 
-/// A spot's cost: its distance step and its turn, raised by `extra`; each step past
-/// [`FAR_FROM`] counts three times.
+/// A spot's cost: its distance step and its turn, raised by `extra`.
 fn spot_cost(extra: f64, di: usize, k: usize) -> f64 {
-    extra + di as f64 + 2.0 * di.saturating_sub(FAR_FROM) as f64 + turn_deg(k).abs() / 45.0 * 0.8
+    extra + di as f64 * 1.0 + turn_deg(k).abs() / 45.0 * 0.8
 }
-
-/// The distance step (23 mm) past which a label reads as hung far off: there a nearer spot
-/// at another of its anchors is worth three steps of the first's (a cam's working profile
-/// named 58 mm off across the inversion's rays from its first point, 15 mm off from its
-/// second; task 10 variant 11).
-const FAR_FROM: usize = 11;
 
 /// The spots around one anchor of a label.
 struct Around {
