@@ -152,7 +152,11 @@ fn read_manifest(dir: &Path) -> BTreeSet<String> {
 pub fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
     let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     let name = path.file_name().with_context(|| format!("{} names no file", path.display()))?;
-    let temp = write_temp(dir, &name.to_string_lossy(), bytes)?;
+    persist_synced(write_temp(dir, &name.to_string_lossy(), bytes)?, path)
+}
+
+/// Syncs `temp` to the disk and renames it to `path`: one file on its own.
+fn persist_synced(temp: NamedTempFile, path: &Path) -> Result<()> {
     temp.as_file().sync_all().with_context(|| format!("cannot write {}", path.display()))?;
     temp.persist(path).map_err(|e| e.error).with_context(|| format!("cannot write {}", path.display()))?;
     Ok(())
@@ -192,10 +196,7 @@ fn sync_together(dir: &Path, temps: &[NamedTempFile], files: &[(String, Vec<u8>)
 fn write_manifest(dir: &Path, names: &BTreeSet<String>) -> Result<()> {
     let list: String = names.iter().map(|n| format!("{n}\n")).collect();
     let path = dir.join(MANIFEST);
-    let temp = write_temp(dir, MANIFEST, list.as_bytes())?;
-    temp.as_file().sync_all().with_context(|| format!("cannot write {}", path.display()))?;
-    temp.persist(&path).map_err(|e| e.error).with_context(|| format!("cannot write {}", path.display()))?;
-    Ok(())
+    persist_synced(write_temp(dir, MANIFEST, list.as_bytes())?, &path)
 }
 
 /// Removes the previous build's `stale` files. Only regular files go: a symlink or folder now

@@ -144,20 +144,16 @@ fn set_values(arc: &Arc, values: &[&Value], drawn: &Obstacles, r_s: f64) -> Vec<
         // Level at the arc's middle, moved along the radius: a short arc's value between
         // extension lines too close for it along the arc.
         let over = steps(!away).map(|d| text.text(arc.at(mid, r + d), TEXT_H, Anchor::Middle));
-        let under = steps(away).map(|d| {
-            let top = arc.at(mid, r - d);
-            text.text(kurbo::Point::new(top.x, top.y + TEXT_H), TEXT_H, Anchor::Middle)
-        });
+        // Level with its top at `top`.
+        let hanging = |top: Point| text.text(Point::new(top.x, top.y + TEXT_H), TEXT_H, Anchor::Middle);
+        let under = steps(away).map(|d| hanging(arc.at(mid, r - d)));
         // Level, moved along the arc's tangent within its span where its middle is crowded
         // (e's value under its arc, between s's and p's extension lines, where along the
         // arc its length left it a 37 mm leader).
         let tangent = (arc.at(mid + 1.0 / r, r) - arc.at(mid, r)).unit();
         let reach = (r * half).floor() as i32;
         let level_shifted = steps(false).flat_map(|d| {
-            (1..=reach).flat_map(move |k| [k, -k]).map(move |k| {
-                let top = arc.at(mid, r - d) + tangent * f64::from(k);
-                text.text(kurbo::Point::new(top.x, top.y + TEXT_H), TEXT_H, Anchor::Middle)
-            })
+            (1..=reach).flat_map(move |k| [k, -k]).map(move |k| hanging(arc.at(mid, r - d) + tangent * f64::from(k)))
         });
         let set = if away {
             along.chain(under).chain(over).chain(level_shifted).find(clear)
