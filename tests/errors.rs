@@ -417,3 +417,20 @@ fn text_too_long_for_its_place_on_the_sheet_is_refused_with_its_field() {
     ));
     assert!(e.contains("mechanism.assumptions") && e.contains("does not fit the notes"), "{}", &e[..e.len().min(300)]);
 }
+
+/// A given list of acceleration plans without φ1's position builds, warned: the force
+/// analysis there reads its inertia forces off a plan the sheet would not draw. Where φ1
+/// is no regular position, or the list holds it, there is nothing to warn about.
+#[test]
+fn acceleration_plans_without_phi1s_position_are_warned_about() {
+    let text = example().replacen("acceleration_plans: [1, 3, 5, 7]", "acceleration_plans: [2, 4, 6]", 1);
+    let w = pipeline::load(&text).unwrap().warnings;
+    let line = line_of("acceleration_plans: [1, 3, 5, 7]") as u64;
+    assert!(
+        w.iter()
+            .any(|w| w.field == "analysis.acceleration_plans" && w.line == line && w.message.contains("position 1")),
+        "{w:?}"
+    );
+    let off_grid = text.replacen("assigned_deg: 45", "assigned_deg: 50", 1);
+    assert!(pipeline::load(&off_grid).unwrap().warnings.is_empty());
+}

@@ -96,7 +96,7 @@ pub fn resolve(
     b.m.output = build::resolve_output(&b, spec)?;
     b.m.size = b.m.measure_size();
     let default = Spanned::new(AnalysisSpec::default(), Location::UNKNOWN, Location::UNKNOWN);
-    let settings = settings::settings(&analysis.unwrap_or(&default).value, sense)?;
+    let settings = settings::settings(&analysis.unwrap_or(&default).value, sense, forces.is_some(), warnings)?;
     let forces = forces.map(|f| forces::build_forces(f, &b.m, warnings)).transpose()?;
     let assumptions = spec.assumptions.iter().map(|a| a.value.clone()).collect();
     Ok(LeverProject { mechanism: b.m, settings, forces, kulisa_lengths, assumptions })

@@ -2,12 +2,19 @@
 //! positions, position 0, φ1 and the positions that get acceleration plans.
 
 use super::super::mechanism::*;
-use super::super::{Refusal, at, invalid};
+use super::super::{Refusal, Warning, at, invalid, warning};
 use crate::lever::{Settings, Start};
 use crate::num::Sense;
 use crate::num::digits::written;
 
-pub(super) fn settings(a: &AnalysisSpec, sense: Sense) -> Result<Settings, Refusal> {
+/// Warns (into `warnings`) where a force analysis (`forces`) is done at a regular position
+/// that the given `acceleration_plans` leave without a plan.
+pub(super) fn settings(
+    a: &AnalysisSpec,
+    sense: Sense,
+    forces: bool,
+    warnings: &mut Vec<Warning>,
+) -> Result<Settings, Refusal> {
     let n = a.positions.value;
     if n != 8 && n != 12 {
         return Err(invalid(
@@ -55,9 +62,33 @@ pub(super) fn settings(a: &AnalysisSpec, sense: Sense) -> Result<Settings, Refus
                 }
                 v.push(k as usize);
             }
+            match assigned_position(a, n as usize) {
+                Some(k) if forces && !v.contains(&k) => warnings.push(warning(
+                    at(list),
+                    "analysis.acceleration_plans",
+                    format!(
+                        "the force analysis is done at φ1's position {k}, which gets no acceleration plan: \
+                         the inertia forces are read off that plan; add {k} to the list"
+                    ),
+                )),
+                _ => {}
+            }
             v
         }
-        None => (0..4).map(|i| 1 + i * n as usize / 4).collect(),
+        // Four plans about a quarter turn apart, 1, n/4 + 1, …, the one nearest φ1's position
+        // moved onto it where φ1 is a regular position: the force analysis reads its inertia
+        // forces off that plan.
+        None => {
+            let n = n as usize;
+            let mut plans: Vec<usize> = (0..4).map(|i| 1 + i * n / 4).collect();
+            if let Some(k) = assigned_position(a, n).filter(|k| !plans.contains(k)) {
+                let apart = |p: usize| p.abs_diff(k).min(n - p.abs_diff(k));
+                let nearest = (0..4).min_by_key(|&i| apart(plans[i])).expect("four plans");
+                plans[nearest] = k;
+                plans.sort_unstable();
+            }
+            plans
+        }
     };
     Ok(Settings {
         sense,
@@ -66,4 +97,11 @@ pub(super) fn settings(a: &AnalysisSpec, sense: Sense) -> Result<Settings, Refus
         assigned_deg: a.assigned_deg.as_ref().map(|d| d.value.0),
         acceleration_plans,
     })
+}
+
+/// The regular position φ1 falls on, if it falls on one.
+fn assigned_position(a: &AnalysisSpec, n: usize) -> Option<usize> {
+    let d = a.assigned_deg.as_ref()?.value.0;
+    let k = d * n as f64 / 360.0;
+    (((k - k.round()).abs() < 1e-9) && (k.round() as usize) < n).then(|| k.round() as usize)
 }
