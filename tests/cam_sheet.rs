@@ -568,3 +568,49 @@ fn the_law_tables_stand_side_by_side_close_under_the_diagrams() {
     }
     assert!(seen > 0, "no fixture has the law's tables under its diagrams");
 }
+
+/// One quantity, one precision across the rise's and the return's twin tables (GOST
+/// 2.105): a cam angle of the return written 97,5 under the rise's 11,25, a pitch radius
+/// of 101,8 beside a working radius of 86,78 read as different precisions. In every cam
+/// fixture and in every language, each row has its twin's decimals, and the profiles'
+/// radii and angles share theirs.
+#[test]
+fn twin_tables_write_one_quantity_with_one_number_of_decimals() {
+    let decimals = |cell: &str| cell.split_once([',', '.']).map_or(0, |(_, d)| d.len());
+    for (name, text) in cam_projects() {
+        for lang in Language::ALL {
+            let b = sheet3(&load_in(&text, lang));
+            // Each row's key ("law-rise.phi" → "law.phi") and its cells' decimals.
+            let mut rows: Vec<(String, Vec<usize>)> = Vec::new();
+            for t in b.output.tables.iter().filter(|t| t.table.id != "results") {
+                let md = tmm_sheets::report::markdown(t, "sheet3");
+                for line in md.lines().filter(|l| l.starts_with("| <a id=")) {
+                    let id = line.split('"').nth(1).unwrap();
+                    let key = id.replace("-rise", "").replace("-return", "");
+                    let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).skip(2).collect();
+                    rows.push((key, cells.iter().map(|c| decimals(c)).collect()));
+                }
+            }
+            let class = |key: &str| {
+                let field = key.rsplit('.').next().unwrap();
+                if key.contains("profile") && field.starts_with("r_") {
+                    "radius".to_string()
+                } else if key.contains("profile") && field.starts_with("theta_") {
+                    "angle".to_string()
+                } else {
+                    key.to_string()
+                }
+            };
+            let mut seen: Vec<(String, usize, String)> = Vec::new();
+            for (key, cells) in &rows {
+                for &d in cells {
+                    match seen.iter().find(|s| s.0 == class(key)) {
+                        Some(s) => assert_eq!(s.1, d, "{name} {lang:?}: {key} has {d} decimals, {} has {}", s.2, s.1),
+                        None => seen.push((class(key), d, key.clone())),
+                    }
+                }
+            }
+            assert!(rows.iter().filter(|r| r.0 == "sheet3.law.phi").count() == 2, "{name}: {rows:?}");
+        }
+    }
+}

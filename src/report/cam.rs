@@ -1,7 +1,7 @@
 //! Sheet 3's tables for the note: the law at the numbered positions (one table a phase), the
 //! profiles' polar coordinates (mm and degrees, as the drawing is measured) and the results.
 
-use super::{Column, NumTable, Row, Sub, SubWord, Unit};
+use super::{Column, NumTable, Row, Sub, SubWord, Unit, share_decimals, share_exact_decimals};
 use crate::cams::Design;
 use crate::cams::follower::Follower;
 use crate::cams::laws::Derivs;
@@ -65,6 +65,28 @@ pub fn law(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable
             plain(a, uv, col(&|phi, k| analog(d, at(phi, k).dds))),
             plain("α", Unit::Deg, col(&|phi, _| d.profile.pressure_angle_on_profile(phi).to_degrees())),
         ],
+    }
+}
+
+/// The rise's and the return's twin tables (the law's, or the profiles') with one
+/// quantity's rows at one precision across both (GOST 2.105): a row of one and its twin
+/// in the other (the cam angle φ, the lift, …) share their decimals, and so do the pitch
+/// and the working profile's radii (at least 0,01 mm, as the results write r_min) and
+/// their angles.
+pub fn share_twin_decimals(rise: &mut NumTable, ret: &mut NumTable) {
+    let keys: Vec<String> = rise.rows.iter().map(|r| r.key.clone()).collect();
+    let both = |rise: &mut NumTable, ret: &mut NumTable, keep: &dyn Fn(&str) -> bool, at_least: usize| {
+        let rows = rise.rows.iter_mut().chain(ret.rows.iter_mut()).filter(|r| keep(&r.key));
+        let (exact, computed): (Vec<&mut Row>, Vec<&mut Row>) = rows.partition(|r| r.exact);
+        share_exact_decimals(exact);
+        share_decimals(computed, at_least);
+    };
+    let radius = |k: &str| k.starts_with("r_");
+    let angle = |k: &str| k.starts_with("theta_");
+    both(rise, ret, &radius, 2);
+    both(rise, ret, &angle, 2);
+    for key in keys.iter().filter(|k| !radius(k) && !angle(k)) {
+        both(rise, ret, &|k: &str| k == key, 0);
     }
 }
 

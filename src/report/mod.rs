@@ -9,7 +9,9 @@ pub mod segments;
 mod table;
 
 pub use segments::{AnswerKeys, Segment, segments_csv};
-pub use table::{Column, ForceKind, NumTable, Quantity, Row, Sub, SubWord, Unit, ascii_key, share_decimals};
+pub use table::{
+    Column, ForceKind, NumTable, Quantity, Row, Sub, SubWord, Unit, ascii_key, share_decimals, share_exact_decimals,
+};
 
 use std::fmt::Write;
 

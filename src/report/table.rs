@@ -227,7 +227,8 @@ impl Row {
             (0..self.values.len()).filter(|&c| !self.is_absent(c)).map(|c| self.values[c]).collect();
         let whole = whole && (self.count || present.iter().all(|&v| whole_value(v)));
         let whole = whole && self.decimals.is_none();
-        let decimals = if self.exact { digits::exact_decimals(&present) } else { self.decimals };
+        let decimals =
+            if self.exact { self.decimals.or_else(|| digits::exact_decimals(&present)) } else { self.decimals };
         let row = decimals.unwrap_or_else(|| digits::row_decimals(&present));
         self.values
             .iter()
@@ -273,6 +274,25 @@ pub fn share_decimals<'a>(rows: impl IntoIterator<Item = &'a mut Row>, at_least:
     let decimals = crate::num::digits::row_decimals(&values).max(at_least);
     for r in &mut rows {
         r.decimals = Some(decimals);
+    }
+}
+
+/// Gives exact rows of one quantity (see [`Row::exact`]) the most decimals any of them
+/// needs, where each is exact at few: a twin table's 97,5 under the other's 11,25 reads as
+/// another precision.
+pub fn share_exact_decimals<'a>(rows: impl IntoIterator<Item = &'a mut Row>) {
+    let mut rows: Vec<&mut Row> = rows.into_iter().filter(|r| r.exact).collect();
+    let each: Option<Vec<usize>> = rows
+        .iter()
+        .map(|r| {
+            let present: Vec<f64> = (0..r.values.len()).filter(|&c| !r.is_absent(c)).map(|c| r.values[c]).collect();
+            crate::num::digits::exact_decimals(&present)
+        })
+        .collect();
+    if let Some(d) = each.and_then(|e| e.into_iter().max()) {
+        for r in &mut rows {
+            r.decimals = Some(d);
+        }
     }
 }
 

@@ -20,11 +20,18 @@ pub fn notes(d: &Design, phis: &[f64], errors: (f64, f64), lang: Language, first
     let note = |t, title: String, columns| scaffold::note(lang, t, &title, columns, false);
     let k = |i: u32| (first + i).to_string();
     let (up, back) = (l.phase_rise(), l.phase_return());
+    let twins = |mut a: report::NumTable, mut b: report::NumTable| {
+        report::cam::share_twin_decimals(&mut a, &mut b);
+        (a, b)
+    };
+    let (law_up, law_back) = twins(report::cam::law(d, "law-rise", 0, rise), report::cam::law(d, "law-return", n, ret));
+    let (profile_up, profile_back) =
+        twins(report::cam::profile(d, "profile-rise", 0, rise), report::cam::profile(d, "profile-return", n, ret));
     vec![
-        note(report::cam::law(d, "law-rise", 0, rise), l.law_table(&k(0), up), vec![]),
-        note(report::cam::law(d, "law-return", n, ret), l.law_table(&k(1), back), vec![]),
-        note(report::cam::profile(d, "profile-rise", 0, rise), l.profile_table(&k(2), up), vec![]),
-        note(report::cam::profile(d, "profile-return", n, ret), l.profile_table(&k(3), back), vec![]),
+        note(law_up, l.law_table(&k(0), up), vec![]),
+        note(law_back, l.law_table(&k(1), back), vec![]),
+        note(profile_up, l.profile_table(&k(2), up), vec![]),
+        note(profile_back, l.profile_table(&k(3), back), vec![]),
         note(report::cam::results(d, errors), l.results_table(&k(4)), vec![c.value().into()]),
     ]
 }
