@@ -419,8 +419,8 @@ fn text_too_long_for_its_place_on_the_sheet_is_refused_with_its_field() {
 }
 
 /// A given list of acceleration plans without φ1's position builds, warned: the force
-/// analysis there reads its inertia forces off a plan the sheet would not draw. Where φ1
-/// is no regular position, or the list holds it, there is nothing to warn about.
+/// analysis there reads its inertia forces off a plan the sheet would not draw; so does a φ1
+/// between two positions.
 #[test]
 fn acceleration_plans_without_phi1s_position_are_warned_about() {
     let text = example().replacen("acceleration_plans: [1, 3, 5, 7]", "acceleration_plans: [2, 4, 6]", 1);
@@ -431,6 +431,15 @@ fn acceleration_plans_without_phi1s_position_are_warned_about() {
             .any(|w| w.field == "analysis.acceleration_plans" && w.line == line && w.message.contains("position 1")),
         "{w:?}"
     );
+    // φ1 between two positions: no plan can be drawn there, which is warned about instead.
     let off_grid = text.replacen("assigned_deg: 45", "assigned_deg: 50", 1);
-    assert!(pipeline::load(&off_grid).unwrap().warnings.is_empty());
+    let w = pipeline::load(&off_grid).unwrap().warnings;
+    let line = line_of("assigned_deg: 45") as u64;
+    assert!(w.len() == 1 && w[0].field == "analysis.assigned_deg" && w[0].line == line, "{w:?}");
+    assert!(w[0].message.contains("φ1 = 50°") && w[0].message.contains("every 45°"), "{w:?}");
+    // Without a force analysis there is nothing to read off a plan.
+    let lever_only = example().split("\nforces:").next().unwrap().to_string();
+    assert!(lever_only.len() < example().len(), "the example has a force analysis");
+    let kinematics_only = lever_only.replacen("assigned_deg: 45", "assigned_deg: 50", 1);
+    assert!(pipeline::load(&kinematics_only).unwrap().warnings.is_empty());
 }

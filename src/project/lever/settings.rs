@@ -35,6 +35,18 @@ pub(super) fn settings(
             format!("φ1 must lie in 0…360°, got {}°", written(d.value.0)),
         ));
     }
+    if let Some(d) = a.assigned_deg.as_ref().filter(|_| forces && assigned_position(a, n as usize).is_none()) {
+        let step = 360 / n;
+        warnings.push(warning(
+            at(d),
+            "analysis.assigned_deg",
+            format!(
+                "φ1 = {}° is none of the {n} positions (every {step}°): the force analysis there gets no \
+                 acceleration plan to read its inertia forces off; the course takes φ1 at a multiple of {step}°",
+                written(d.value.0)
+            ),
+        ));
+    }
     let acceleration_plans = match &a.acceleration_plans {
         Some(list) => {
             if list.value.is_empty() || list.value.len() > 6 {
