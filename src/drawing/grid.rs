@@ -224,7 +224,13 @@ impl<T: Listed> Grid<T> {
     /// Whether `test` holds for a piece listed in a cell of the box `r` (a piece may be
     /// tested more than once).
     pub fn any_in_box(&self, r: Rect, mut test: impl FnMut(T) -> bool) -> bool {
-        self.box_rows(r, |j, i0, i1| self.in_row(j, i0, i1).any(&mut test))
+        // The loaded slice on its own, then the inserted lists only where there are any: a
+        // chain of both, asked for each of the label placer's boxes, cost more than the
+        // tests it made.
+        self.box_rows(r, |j, i0, i1| {
+            self.loaded_in(j, i0, i1).iter().any(|&item| test(item))
+                || (!self.heads.is_empty() && (i0..=i1).any(|i| self.inserted(j * self.nx + i).any(&mut test)))
+        })
     }
 
     /// Whether `test` holds for a piece listed in a cell of the segment `a`–`b`, asked from

@@ -375,8 +375,27 @@ pub fn rect_segment_distance(r: Rect, (a, b): (Point, Point)) -> f64 {
 }
 
 /// Whether the segment `a`–`b` has a point inside or on the rectangle `r` (Liang–Barsky).
+/// The test of bounds that answers most calls (a box's cells list many segments beside
+/// it) is inlined into the callers; the clipping is not.
+#[inline]
 pub fn segment_meets_rect(a: Point, b: Point, r: Rect) -> bool {
+    !wholly_beyond(a, b, r) && clipped_meets(a, b, r)
+}
+
+#[inline(never)]
+fn clipped_meets(a: Point, b: Point, r: Rect) -> bool {
     segment_span_in_rect(a, b, r).is_some()
+}
+
+/// Whether the segment `a`–`b` lies wholly beyond one side of `r`, by far more than
+/// rounding (the clipping answers the same for it: no common point).
+#[inline(always)]
+fn wholly_beyond(a: Point, b: Point, r: Rect) -> bool {
+    const APART: f64 = 1e-6;
+    a.x.max(b.x) < r.x0 - APART
+        || a.x.min(b.x) > r.x1 + APART
+        || a.y.max(b.y) < r.y0 - APART
+        || a.y.min(b.y) > r.y1 + APART
 }
 
 /// The part of the segment `a`–`b` inside or on the rectangle `r`, as the parameters
@@ -388,12 +407,7 @@ pub fn segment_span_in_rect(a: Point, b: Point, r: Rect) -> Option<(f64, f64)> {
     }
     // A segment wholly beyond one side (by far more than rounding: the clipping below
     // answers the same) is answered without it.
-    const APART: f64 = 1e-6;
-    if a.x.max(b.x) < r.x0 - APART
-        || a.x.min(b.x) > r.x1 + APART
-        || a.y.max(b.y) < r.y0 - APART
-        || a.y.min(b.y) > r.y1 + APART
-    {
+    if wholly_beyond(a, b, r) {
         return None;
     }
     let d = b - a;
