@@ -233,15 +233,37 @@ impl Obstacles {
     /// Whether nothing (no segment, no text box) meets the box `r`: [`Obstacles::hits`]
     /// stopping at the first piece.
     pub fn is_clear(&self, r: Rect) -> bool {
+        self.clear_after(r, None)
+    }
+
+    /// [`Obstacles::is_clear`], first testing the segment that last met a box asked with the
+    /// same `slot` (below [`SLOTS`]; a label's spots in one direction from its anchor, whose
+    /// boxes one line mostly meets at distance after distance, while the spots asked in
+    /// between, in other directions, meet other lines). The answer is the same.
+    pub fn is_clear_in(&self, r: Rect, slot: usize) -> bool {
+        self.clear_after(r, self.hints.slots.get(slot))
+    }
+
+    fn clear_after(&self, r: Rect, slot: Option<&AtomicU32>) -> bool {
         let meets = |p: &Piece| match *p {
             Piece::Segment(a, b) => segment_meets_rect(a, b, r),
             Piece::TextBox(t) => t.intersect(r).area() > 0.0,
             Piece::Disc(c, rad) => disc_meets_rect(c, rad, r),
         };
-        if self.hinted(&self.hints.met, |p, q| segment_meets_rect(p, q, r)) {
+        if slot.is_some_and(|s| self.hinted(s, |p, q| segment_meets_rect(p, q, r))) {
             return false;
         }
-        let met = |s: Stroke| segment_meets_rect(s.a, s.b, r) && self.hints.remember(&self.hints.met, s.id);
+        if self.hinted(&self.hints.met, |p, q| segment_meets_rect(p, q, r)) {
+            if let Some(s) = slot {
+                s.store(self.hints.met.load(Relaxed), Relaxed);
+            }
+            return false;
+        }
+        let met = |s: Stroke| {
+            segment_meets_rect(s.a, s.b, r)
+                && slot.is_none_or(|h| self.hints.remember(h, s.id))
+                && self.hints.remember(&self.hints.met, s.id)
+        };
         !(self.strokes.any_in_box(r, met) || self.boxes.any_in_box(r, |id| meets(&self.pieces[id as usize].0)))
     }
 
@@ -298,11 +320,21 @@ impl Obstacles {
 struct Hints {
     met: AtomicU32,
     crossed: AtomicU32,
+    /// The segment that last met a box asked in each slot ([`Obstacles::is_clear_in`]).
+    slots: [AtomicU32; SLOTS],
 }
+
+/// How many slots of hints [`Obstacles::is_clear_in`] keeps: one for each of a label's
+/// directions.
+pub const SLOTS: usize = 24;
 
 impl Default for Hints {
     fn default() -> Hints {
-        Hints { met: AtomicU32::new(u32::MAX), crossed: AtomicU32::new(u32::MAX) }
+        Hints {
+            met: AtomicU32::new(u32::MAX),
+            crossed: AtomicU32::new(u32::MAX),
+            slots: std::array::from_fn(|_| AtomicU32::new(u32::MAX)),
+        }
     }
 }
 

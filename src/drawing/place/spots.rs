@@ -157,7 +157,11 @@ impl Around {
         }
         let gap = if req.names_line { TOUCH } else { LEADER_GAP };
         let leader = (dist >= LEADER_FROM).then(|| leader(self.anchor, r, gap));
-        Some(Candidate { r, anchor: self.anchor, leader, cost: spot_cost(self.extra, di, k), breaks: false })
+        // A direction's spots share a slot of hints (a direction past the slots would have
+        // none: the answers are the same).
+        const _: () = assert!(DIRECTIONS <= crate::drawing::obstacles::SLOTS && DIRECTIONS <= 256);
+        let dir = k as u8;
+        Some(Candidate { r, anchor: self.anchor, leader, cost: spot_cost(self.extra, di, k), breaks: false, dir })
     }
 }
 
