@@ -269,9 +269,24 @@ impl Obstacles {
 
     /// Whether the segment `a`–`b` crosses any stroke segment.
     pub fn segment_crosses_stroke(&self, a: Point, b: Point) -> bool {
-        self.hinted(&self.hints.crossed, |p, q| segments_cross(a, b, p, q))
+        self.crosses_after(a, b, None)
+    }
+
+    /// [`Obstacles::segment_crosses_stroke`], first testing the segment that last crossed
+    /// one asked with the same `slot` (a label's leaders in one direction run along one
+    /// ray, and the line one crosses the next mostly crosses too). The answer is the same.
+    pub fn segment_crosses_stroke_in(&self, a: Point, b: Point, slot: usize) -> bool {
+        self.crosses_after(a, b, self.hints.crossed_slots.get(slot))
+    }
+
+    fn crosses_after(&self, a: Point, b: Point, slot: Option<&AtomicU32>) -> bool {
+        slot.is_some_and(|s| self.hinted(s, |p, q| segments_cross(a, b, p, q)))
+            || self.hinted(&self.hints.crossed, |p, q| segments_cross(a, b, p, q))
+                && slot.is_none_or(|s| self.hints.remember(s, self.hints.crossed.load(Relaxed)))
             || self.strokes.any_on_segment(a, b, |s| {
-                segments_cross(a, b, s.a, s.b) && self.hints.remember(&self.hints.crossed, s.id)
+                segments_cross(a, b, s.a, s.b)
+                    && slot.is_none_or(|h| self.hints.remember(h, s.id))
+                    && self.hints.remember(&self.hints.crossed, s.id)
             })
     }
 
@@ -322,6 +337,9 @@ struct Hints {
     crossed: AtomicU32,
     /// The segment that last met a box asked in each slot ([`Obstacles::is_clear_in`]).
     slots: [AtomicU32; SLOTS],
+    /// The segment that last crossed one asked in each slot
+    /// ([`Obstacles::segment_crosses_stroke_in`]).
+    crossed_slots: [AtomicU32; SLOTS],
 }
 
 /// How many slots of hints [`Obstacles::is_clear_in`] keeps: one for each of a label's
@@ -334,6 +352,7 @@ impl Default for Hints {
             met: AtomicU32::new(u32::MAX),
             crossed: AtomicU32::new(u32::MAX),
             slots: std::array::from_fn(|_| AtomicU32::new(u32::MAX)),
+            crossed_slots: std::array::from_fn(|_| AtomicU32::new(u32::MAX)),
         }
     }
 }

@@ -37,9 +37,9 @@ impl Verdict {
     /// [`Candidate::is_free`] against `drawn`, remembered.
     pub(super) fn is_free(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
         self.box_is_free(c, drawn)
-            && *self
-                .leader_clear
-                .get_or_insert_with(|| c.leader.is_none_or(|(a, b)| !drawn.segment_crosses_stroke(a, b)))
+            && *self.leader_clear.get_or_insert_with(|| {
+                c.leader.is_none_or(|(a, b)| !drawn.segment_crosses_stroke_in(a, b, usize::from(c.dir)))
+            })
     }
 }
 
@@ -73,7 +73,8 @@ impl Candidate {
     }
 
     pub(super) fn is_free(&self, o: &Obstacles) -> bool {
-        self.box_is_free(o) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke(a, b))
+        self.box_is_free(o)
+            && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke_in(a, b, usize::from(self.dir)))
     }
 
     /// The box is clear and its leader crosses no text (it may cross lines).
