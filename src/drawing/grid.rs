@@ -122,9 +122,27 @@ impl<T: Listed> Grid<T> {
             false
         };
         match shape {
-            Shape::Segment(a, b) => self.segment_rows(a, b, &mut row),
-            Shape::Box(r) => self.box_rows(r, &mut row),
-        };
+            // Most segments (flattened curves) lie in one row or one column of cells: their
+            // box's cells, a hair wider than the walk's spans, are listed without walking
+            // the rows. Listing a piece in a cell more is safe: queries test what they read.
+            Shape::Segment(a, b) => {
+                const WIDER: f64 = 1e-6;
+                let (xa, xb) = (self.gx(a.x), self.gx(b.x));
+                let (i0, i1) = (Self::index(xa.min(xb) - WIDER, self.nx), Self::index(xa.max(xb) + WIDER, self.nx));
+                let (ya, yb) = (self.gy(a.y), self.gy(b.y));
+                let (j0, j1) = (Self::index(ya.min(yb), self.ny), Self::index(ya.max(yb), self.ny));
+                if i0 == i1 || j0 == j1 {
+                    (j0..=j1).for_each(|j| {
+                        row(j, i0, i1);
+                    });
+                } else {
+                    self.segment_rows(a, b, &mut row);
+                }
+            }
+            Shape::Box(r) => {
+                self.box_rows(r, &mut row);
+            }
+        }
     }
 
     /// The pieces loaded at once in the cells `i0..=i1` of row `j`, in cell order.
