@@ -66,6 +66,14 @@ impl<'a> Spots<'a> {
 
     /// Candidate `k` and its verdict, made if need be; none past the last.
     pub(super) fn get(&mut self, k: usize) -> Option<(&Candidate, &mut Verdict)> {
+        // One anchor (most labels): its stream's order, no merging to do.
+        if let [stream] = &mut self.streams[..] {
+            while self.made.len() <= k {
+                let c = stream.head.take()?;
+                stream.advance(self.req, self.bounds);
+                self.made.push((c, Verdict::default()));
+            }
+        }
         while self.made.len() <= k {
             let cheapest = self
                 .streams
