@@ -35,11 +35,12 @@ impl Verdict {
     }
 
     /// [`Candidate::is_free`] against `drawn`, remembered.
+    /// The leader is asked first: with its direction's hint a crossing is mostly found at
+    /// the first segment tested, where the box's test reads its cells.
     pub(super) fn is_free(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
-        self.box_is_free(c, drawn)
-            && *self.leader_clear.get_or_insert_with(|| {
-                c.leader.is_none_or(|(a, b)| !drawn.segment_crosses_stroke_in(a, b, usize::from(c.dir)))
-            })
+        *self.leader_clear.get_or_insert_with(|| {
+            c.leader.is_none_or(|(a, b)| !drawn.segment_crosses_stroke_in(a, b, usize::from(c.dir)))
+        }) && self.box_is_free(c, drawn)
     }
 }
 
