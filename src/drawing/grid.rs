@@ -122,9 +122,27 @@ impl<T: Listed> Grid<T> {
             false
         };
         match shape {
-            Shape::Segment(a, b) => self.segment_rows(a, b, &mut row),
-            Shape::Box(r) => self.box_rows(r, &mut row),
-        };
+            // Most segments (flattened curves) lie in one row or one column of cells: their
+            // box's cells, a hair wider than the walk's spans, are listed without walking
+            // the rows. Listing a piece in a cell more is safe: queries test what they read.
+            Shape::Segment(a, b) => {
+                const WIDER: f64 = 1e-6;
+                let (xa, xb) = (self.gx(a.x), self.gx(b.x));
+                let (i0, i1) = (Self::index(xa.min(xb) - WIDER, self.nx), Self::index(xa.max(xb) + WIDER, self.nx));
+                let (ya, yb) = (self.gy(a.y), self.gy(b.y));
+                let (j0, j1) = (Self::index(ya.min(yb), self.ny), Self::index(ya.max(yb), self.ny));
+                if i0 == i1 || j0 == j1 {
+                    (j0..=j1).for_each(|j| {
+                        row(j, i0, i1);
+                    });
+                } else {
+                    self.segment_rows(a, b, &mut row);
+                }
+            }
+            Shape::Box(r) => {
+                self.box_rows(r, &mut row);
+            }
+        }
     }
 
     /// The pieces loaded at once in the cells `i0..=i1` of row `j`, in cell order.
@@ -224,7 +242,13 @@ impl<T: Listed> Grid<T> {
     /// Whether `test` holds for a piece listed in a cell of the box `r` (a piece may be
     /// tested more than once).
     pub fn any_in_box(&self, r: Rect, mut test: impl FnMut(T) -> bool) -> bool {
-        self.box_rows(r, |j, i0, i1| self.in_row(j, i0, i1).any(&mut test))
+        // The loaded slice on its own, then the inserted lists only where there are any: a
+        // chain of both, asked for each of the label placer's boxes, cost more than the
+        // tests it made.
+        self.box_rows(r, |j, i0, i1| {
+            self.loaded_in(j, i0, i1).iter().any(|&item| test(item))
+                || (!self.heads.is_empty() && (i0..=i1).any(|i| self.inserted(j * self.nx + i).any(&mut test)))
+        })
     }
 
     /// Whether `test` holds for a piece listed in a cell of the segment `a`–`b`, asked from

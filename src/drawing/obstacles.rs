@@ -233,23 +233,60 @@ impl Obstacles {
     /// Whether nothing (no segment, no text box) meets the box `r`: [`Obstacles::hits`]
     /// stopping at the first piece.
     pub fn is_clear(&self, r: Rect) -> bool {
+        self.clear_after(r, None)
+    }
+
+    /// [`Obstacles::is_clear`], first testing the segment that last met a box asked with the
+    /// same `slot` (below [`SLOTS`]; a label's spots in one direction from its anchor, whose
+    /// boxes one line mostly meets at distance after distance, while the spots asked in
+    /// between, in other directions, meet other lines). The answer is the same.
+    pub fn is_clear_in(&self, r: Rect, slot: usize) -> bool {
+        self.clear_after(r, self.hints.slots.get(slot))
+    }
+
+    fn clear_after(&self, r: Rect, slot: Option<&AtomicU32>) -> bool {
         let meets = |p: &Piece| match *p {
             Piece::Segment(a, b) => segment_meets_rect(a, b, r),
             Piece::TextBox(t) => t.intersect(r).area() > 0.0,
             Piece::Disc(c, rad) => disc_meets_rect(c, rad, r),
         };
-        if self.hinted(&self.hints.met, |p, q| segment_meets_rect(p, q, r)) {
+        if slot.is_some_and(|s| self.hinted(s, |p, q| segment_meets_rect(p, q, r))) {
             return false;
         }
-        let met = |s: Stroke| segment_meets_rect(s.a, s.b, r) && self.hints.remember(&self.hints.met, s.id);
+        if self.hinted(&self.hints.met, |p, q| segment_meets_rect(p, q, r)) {
+            if let Some(s) = slot {
+                s.store(self.hints.met.load(Relaxed), Relaxed);
+            }
+            return false;
+        }
+        let met = |s: Stroke| {
+            segment_meets_rect(s.a, s.b, r)
+                && slot.is_none_or(|h| self.hints.remember(h, s.id))
+                && self.hints.remember(&self.hints.met, s.id)
+        };
         !(self.strokes.any_in_box(r, met) || self.boxes.any_in_box(r, |id| meets(&self.pieces[id as usize].0)))
     }
 
     /// Whether the segment `a`–`b` crosses any stroke segment.
     pub fn segment_crosses_stroke(&self, a: Point, b: Point) -> bool {
-        self.hinted(&self.hints.crossed, |p, q| segments_cross(a, b, p, q))
+        self.crosses_after(a, b, None)
+    }
+
+    /// [`Obstacles::segment_crosses_stroke`], first testing the segment that last crossed
+    /// one asked with the same `slot` (a label's leaders in one direction run along one
+    /// ray, and the line one crosses the next mostly crosses too). The answer is the same.
+    pub fn segment_crosses_stroke_in(&self, a: Point, b: Point, slot: usize) -> bool {
+        self.crosses_after(a, b, self.hints.crossed_slots.get(slot))
+    }
+
+    fn crosses_after(&self, a: Point, b: Point, slot: Option<&AtomicU32>) -> bool {
+        slot.is_some_and(|s| self.hinted(s, |p, q| segments_cross(a, b, p, q)))
+            || self.hinted(&self.hints.crossed, |p, q| segments_cross(a, b, p, q))
+                && slot.is_none_or(|s| self.hints.remember(s, self.hints.crossed.load(Relaxed)))
             || self.strokes.any_on_segment(a, b, |s| {
-                segments_cross(a, b, s.a, s.b) && self.hints.remember(&self.hints.crossed, s.id)
+                segments_cross(a, b, s.a, s.b)
+                    && slot.is_none_or(|h| self.hints.remember(h, s.id))
+                    && self.hints.remember(&self.hints.crossed, s.id)
             })
     }
 
@@ -298,11 +335,25 @@ impl Obstacles {
 struct Hints {
     met: AtomicU32,
     crossed: AtomicU32,
+    /// The segment that last met a box asked in each slot ([`Obstacles::is_clear_in`]).
+    slots: [AtomicU32; SLOTS],
+    /// The segment that last crossed one asked in each slot
+    /// ([`Obstacles::segment_crosses_stroke_in`]).
+    crossed_slots: [AtomicU32; SLOTS],
 }
+
+/// How many slots of hints [`Obstacles::is_clear_in`] keeps: one for each of a label's
+/// directions.
+pub const SLOTS: usize = 24;
 
 impl Default for Hints {
     fn default() -> Hints {
-        Hints { met: AtomicU32::new(u32::MAX), crossed: AtomicU32::new(u32::MAX) }
+        Hints {
+            met: AtomicU32::new(u32::MAX),
+            crossed: AtomicU32::new(u32::MAX),
+            slots: std::array::from_fn(|_| AtomicU32::new(u32::MAX)),
+            crossed_slots: std::array::from_fn(|_| AtomicU32::new(u32::MAX)),
+        }
     }
 }
 
@@ -375,8 +426,27 @@ pub fn rect_segment_distance(r: Rect, (a, b): (Point, Point)) -> f64 {
 }
 
 /// Whether the segment `a`–`b` has a point inside or on the rectangle `r` (Liang–Barsky).
+/// The test of bounds that answers most calls (a box's cells list many segments beside
+/// it) is inlined into the callers; the clipping is not.
+#[inline]
 pub fn segment_meets_rect(a: Point, b: Point, r: Rect) -> bool {
+    !wholly_beyond(a, b, r) && clipped_meets(a, b, r)
+}
+
+#[inline(never)]
+fn clipped_meets(a: Point, b: Point, r: Rect) -> bool {
     segment_span_in_rect(a, b, r).is_some()
+}
+
+/// Whether the segment `a`–`b` lies wholly beyond one side of `r`, by far more than
+/// rounding (the clipping answers the same for it: no common point).
+#[inline(always)]
+fn wholly_beyond(a: Point, b: Point, r: Rect) -> bool {
+    const APART: f64 = 1e-6;
+    a.x.max(b.x) < r.x0 - APART
+        || a.x.min(b.x) > r.x1 + APART
+        || a.y.max(b.y) < r.y0 - APART
+        || a.y.min(b.y) > r.y1 + APART
 }
 
 /// The part of the segment `a`–`b` inside or on the rectangle `r`, as the parameters
@@ -388,12 +458,7 @@ pub fn segment_span_in_rect(a: Point, b: Point, r: Rect) -> Option<(f64, f64)> {
     }
     // A segment wholly beyond one side (by far more than rounding: the clipping below
     // answers the same) is answered without it.
-    const APART: f64 = 1e-6;
-    if a.x.max(b.x) < r.x0 - APART
-        || a.x.min(b.x) > r.x1 + APART
-        || a.y.max(b.y) < r.y0 - APART
-        || a.y.min(b.y) > r.y1 + APART
-    {
+    if wholly_beyond(a, b, r) {
         return None;
     }
     let d = b - a;

@@ -35,11 +35,12 @@ impl Verdict {
     }
 
     /// [`Candidate::is_free`] against `drawn`, remembered.
+    /// The leader is asked first: with its direction's hint a crossing is mostly found at
+    /// the first segment tested, where the box's test reads its cells.
     pub(super) fn is_free(&mut self, c: &Candidate, drawn: &Obstacles) -> bool {
-        self.box_is_free(c, drawn)
-            && *self
-                .leader_clear
-                .get_or_insert_with(|| c.leader.is_none_or(|(a, b)| !drawn.segment_crosses_stroke(a, b)))
+        *self.leader_clear.get_or_insert_with(|| {
+            c.leader.is_none_or(|(a, b)| !drawn.segment_crosses_stroke_in(a, b, usize::from(c.dir)))
+        }) && self.box_is_free(c, drawn)
     }
 }
 
@@ -53,6 +54,9 @@ pub(super) struct Candidate {
     /// It stands on breakable thin lines, to be interrupted for it (see
     /// [`crate::drawing::scene::Group::breakable`]).
     pub(super) breaks: bool,
+    /// Its direction from its anchor (an index of the turns tried): the box's test asks
+    /// first the line that last met a box in that direction.
+    pub(super) dir: u8,
 }
 
 /// A leader shorter than this leaves its label beside its point, seen or lost in a line,
@@ -70,12 +74,14 @@ impl Candidate {
     }
 
     pub(super) fn is_free(&self, o: &Obstacles) -> bool {
-        self.box_is_free(o) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke(a, b))
+        self.box_is_free(o)
+            && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke_in(a, b, usize::from(self.dir)))
     }
 
     /// The box is clear and its leader crosses no text (it may cross lines).
     pub(super) fn box_is_free(&self, o: &Obstacles) -> bool {
-        o.is_clear(self.r.inflate(CLEAR, CLEAR)) && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
+        o.is_clear_in(self.r.inflate(CLEAR, CLEAR), usize::from(self.dir))
+            && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
     }
 }
 
@@ -93,6 +99,7 @@ pub(super) fn least_bad(cands: &[Candidate], layers: [&Obstacles; 2], req: &Requ
             leader: None,
             cost: 0.0,
             breaks: false,
+            dir: 0,
         }
     };
     cands

@@ -286,7 +286,7 @@ impl Labels {
     ) -> Vec<(Candidate, bool)> {
         let drawn = layers.drawn;
         let mut placed = Obstacles::empty_over(drawn.extent().map_or(bounds, |e| e.union(bounds)));
-        let none = Candidate { r: Rect::ZERO, anchor: Point::ZERO, leader: None, cost: 0.0, breaks: false };
+        let none = Candidate { r: Rect::ZERO, anchor: Point::ZERO, leader: None, cost: 0.0, breaks: false, dir: 0 };
         let mut out = vec![(none, false); self.requests.len()];
         for &i in order {
             let s = &mut spots[i];

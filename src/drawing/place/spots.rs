@@ -66,6 +66,14 @@ impl<'a> Spots<'a> {
 
     /// Candidate `k` and its verdict, made if need be; none past the last.
     pub(super) fn get(&mut self, k: usize) -> Option<(&Candidate, &mut Verdict)> {
+        // One anchor (most labels): its stream's order, no merging to do.
+        if let [stream] = &mut self.streams[..] {
+            while self.made.len() <= k {
+                let c = stream.head.take()?;
+                stream.advance(self.req, self.bounds);
+                self.made.push((c, Verdict::default()));
+            }
+        }
         while self.made.len() <= k {
             let cheapest = self
                 .streams
@@ -157,7 +165,11 @@ impl Around {
         }
         let gap = if req.names_line { TOUCH } else { LEADER_GAP };
         let leader = (dist >= LEADER_FROM).then(|| leader(self.anchor, r, gap));
-        Some(Candidate { r, anchor: self.anchor, leader, cost: spot_cost(self.extra, di, k), breaks: false })
+        // A direction's spots share a slot of hints (a direction past the slots would have
+        // none: the answers are the same).
+        const _: () = assert!(DIRECTIONS <= crate::drawing::obstacles::SLOTS && DIRECTIONS <= 256);
+        let dir = k as u8;
+        Some(Candidate { r, anchor: self.anchor, leader, cost: spot_cost(self.extra, di, k), breaks: false, dir })
     }
 }
 
