@@ -6,6 +6,7 @@ use super::super::{Refusal, Warning, at, invalid, warning};
 use crate::lever::{Settings, Start};
 use crate::num::Sense;
 use crate::num::digits::written;
+use crate::num::tol;
 
 /// Warns (into `warnings`) where a force analysis (`forces`) is done at a regular position
 /// that the given `acceleration_plans` leave without a plan.
@@ -35,7 +36,8 @@ pub(super) fn settings(
             format!("φ1 must lie in 0…360°, got {}°", written(d.value.0)),
         ));
     }
-    if let Some(d) = a.assigned_deg.as_ref().filter(|_| forces && assigned_position(a, n as usize).is_none()) {
+    let on_grid = assigned_position(a, n as usize);
+    if let Some(d) = a.assigned_deg.as_ref().filter(|_| forces && on_grid.is_none()) {
         let step = 360 / n;
         warnings.push(warning(
             at(d),
@@ -74,7 +76,7 @@ pub(super) fn settings(
                 }
                 v.push(k as usize);
             }
-            match assigned_position(a, n as usize) {
+            match on_grid {
                 Some(k) if forces && !v.contains(&k) => warnings.push(warning(
                     at(list),
                     "analysis.acceleration_plans",
@@ -93,7 +95,7 @@ pub(super) fn settings(
         None => {
             let n = n as usize;
             let mut plans: Vec<usize> = (0..4).map(|i| 1 + i * n / 4).collect();
-            if let Some(k) = assigned_position(a, n).filter(|k| !plans.contains(k)) {
+            if let Some(k) = on_grid.filter(|k| !plans.contains(k)) {
                 let apart = |p: usize| p.abs_diff(k).min(n - p.abs_diff(k));
                 let nearest = (0..4).min_by_key(|&i| apart(plans[i])).expect("four plans");
                 plans[nearest] = k;
@@ -111,9 +113,11 @@ pub(super) fn settings(
     })
 }
 
-/// The regular position φ1 falls on, if it falls on one.
+/// The regular position φ1 falls on, if it falls on one: within the tolerance by which the
+/// analysis takes φ1 for a drawn position ([`tol::SAME_ANGLE`]).
 fn assigned_position(a: &AnalysisSpec, n: usize) -> Option<usize> {
-    let d = a.assigned_deg.as_ref()?.value.0;
-    let k = d * n as f64 / 360.0;
-    (((k - k.round()).abs() < 1e-9) && (k.round() as usize) < n).then(|| k.round() as usize)
+    let phi = a.assigned_deg.as_ref()?.value.0.to_radians();
+    let step = std::f64::consts::TAU / n as f64;
+    let k = (phi / step).round();
+    ((phi - k * step).abs() < tol::SAME_ANGLE && (k as usize) < n).then_some(k as usize)
 }
