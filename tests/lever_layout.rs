@@ -582,3 +582,19 @@ fn a_crowded_crank_is_drawn_again_enlarged_with_its_numbers() {
         }
     }
 }
+
+/// Task 12 variant 25 in Russian: position 3's velocity plan fills its cell, and "d=s5" at
+/// its foot, beside s2 and b, found no room under them but 58 mm up on a leader across the
+/// plan. The letters at a plan's foot may now reach into the gap over the next row.
+#[test]
+fn a_name_at_a_plans_foot_stays_at_its_foot() {
+    for lang in tmm_sheets::drawing::labels::Language::ALL {
+        let out = common::catalogue_sheet1("12", 25, lang);
+        let layout = &out.results["layout"];
+        let longest = layout["longest_leader_mm"].as_f64().unwrap();
+        assert!(longest <= 30.0, "{lang:?}: a leader of {longest} mm");
+        for fault in ["texts_crossed", "text_overlaps", "outside_region"] {
+            assert_eq!(layout[fault].as_u64(), Some(0), "{lang:?} {fault}: {}", layout["problems"]);
+        }
+    }
+}

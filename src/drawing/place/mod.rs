@@ -26,6 +26,7 @@ mod candidate;
 mod crossings;
 mod make_room;
 mod request;
+mod sides;
 mod spots;
 
 /// Distances tried between an anchor and its label's box, mm.
@@ -54,6 +55,9 @@ pub struct Labels {
     requests: Vec<Request>,
     /// Discs and boxes no label may enter.
     keep_out: Vec<Piece>,
+    /// Room below the bounds (down to this y) for the labels anchored within the given
+    /// distance of their bottom (see [`Labels::reach_below`]).
+    below: Option<(f64, f64)>,
 }
 
 /// The size of a label's box at lettering height `h` (slant and subscript included): width,
@@ -151,6 +155,13 @@ impl Labels {
         self.keep_out.push(Piece::TextBox(r));
     }
 
+    /// Lets a label anchored within `near` mm of the bounds' bottom reach further down, to
+    /// `y1` (a plan's cell into the gap over the next row: the letters at a plan's foot,
+    /// where a label further up would hang on a long leader across the plan).
+    pub fn reach_below(&mut self, y1: f64, near: f64) {
+        self.below = Some((y1, near));
+    }
+
     /// A plain text label.
     pub fn add_text(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64) {
         self.add(anchor, pref, LabelText::new(text, ""), h);
@@ -173,8 +184,10 @@ impl Labels {
         // Every box tried is inside the bounds and every leader runs from near its anchor
         // to its box: what lies beyond both cannot touch them (a cell's labels need not
         // see the cells drawn before it).
+        let own: Vec<Rect> = self.requests.iter().map(|r| self.bounds_of(r, bounds)).collect();
+        let outer = own.iter().fold(bounds, |b, o| b.union(*o));
         let reach = self.requests.iter().flat_map(|r| std::iter::once(r.anchor).chain(r.others.iter().map(|o| o.0)));
-        let reach = reach.fold(bounds, |b, p| b.union_pt(p)).inflate(REACH, REACH);
+        let reach = reach.fold(outer, |b, p| b.union_pt(p)).inflate(REACH, REACH);
         let mut drawn = Obstacles::of_items_within(&g.items, reach);
         // The drawing without its breakable lines, where it has any: the same pieces but
         // theirs, taken from `drawn` rather than flattened again.
@@ -189,7 +202,7 @@ impl Labels {
         // What the drawing alone says of each candidate is asked once (see `Verdict`): the
         // order and every round below ask it again and again, and it does not change as
         // labels are placed.
-        let mut spots: Vec<Spots> = self.requests.iter().map(|r| Spots::new(r, bounds)).collect();
+        let mut spots: Vec<Spots> = self.requests.iter().zip(&own).map(|(r, &b)| Spots::new(r, b)).collect();
         // By rank, then most constrained first: the fewest candidates free against the
         // drawing alone.
         let mut order: Vec<usize> = (0..self.requests.len()).collect();
@@ -202,9 +215,9 @@ impl Labels {
         // kept: a leader lost in a line is better than a label on a line (a stress cam's
         // r_min, moved to a seen leader, left e = … no spot but across its leader).
         let failures = |placed: &[(Candidate, bool)]| placed.iter().filter(|p| !p.1).count();
-        let mut best = self.rounds(layers, &mut spots, order.clone(), bounds, true);
+        let mut best = self.rounds(layers, &mut spots, order.clone(), outer, true);
         if failures(&best) > 0 {
-            let plain = self.rounds(layers, &mut spots, order.clone(), bounds, false);
+            let plain = self.rounds(layers, &mut spots, order.clone(), outer, false);
             if failures(&plain) < failures(&best) {
                 best = plain;
             }
@@ -214,7 +227,7 @@ impl Labels {
         // that leaves a label without one, the placement without breaking is kept if it
         // leaves fewer.
         if failures(&best) > 0 && layers.hard.is_some() {
-            let whole = self.rounds(Layers { hard: None, ..layers }, &mut spots, order, bounds, true);
+            let whole = self.rounds(Layers { hard: None, ..layers }, &mut spots, order, outer, true);
             if failures(&whole) < failures(&best) {
                 best = whole;
             }
@@ -242,6 +255,15 @@ impl Labels {
         }
         interrupt_for(g, &gaps);
         placed
+    }
+
+    /// The bounds of label `r`'s spots: `bounds`, reaching below them where
+    /// [`Labels::reach_below`] lets it.
+    fn bounds_of(&self, r: &Request, bounds: Rect) -> Rect {
+        match self.below {
+            Some((y1, near)) if r.anchor.y >= bounds.y1 - near && y1 > bounds.y1 => Rect { y1, ..bounds },
+            _ => bounds,
+        }
     }
 
     /// Greedy rounds from `order`: a label left without a clean spot goes first in the next
@@ -386,33 +408,6 @@ fn interrupt_for(g: &mut Group, gaps: &[Rect]) {
     }
 }
 
-impl Labels {
-    /// Whether spot `c` of label `i` reads as its own: any spot of a label that names no
-    /// side, a side's name's spot where it reads as that side's (see [`unambiguous`]).
-    fn reads_as_own(&self, i: usize, c: &Candidate) -> bool {
-        self.requests[i].side.is_none_or(|own| unambiguous(c, own, self.other_sides(i)))
-    }
-
-    /// The sides named by the labels other than `i`.
-    fn other_sides(&self, i: usize) -> impl Iterator<Item = (Point, Point)> + '_ {
-        self.requests.iter().enumerate().filter(move |&(j, _)| j != i).filter_map(|(_, r)| r.side)
-    }
-
-    /// For a side's name, its first free spot that reads as naming that side (see
-    /// [`unambiguous`]), looked for up to [`AMBIGUITY_LOOKAHEAD`] spots past its first free
-    /// one; none for other labels, or when there is none.
-    fn unambiguous_spot(
-        &self,
-        i: usize,
-        s: &mut Spots,
-        free: &dyn Fn(&Candidate, &mut Verdict) -> bool,
-    ) -> Option<Candidate> {
-        let own = self.requests[i].side?;
-        self.other_sides(i).next()?;
-        first_preferred(s, free, |c, _| unambiguous(c, own, self.other_sides(i)), AMBIGUITY_LOOKAHEAD)
-    }
-}
-
 /// The first of a label's spots that `fits` and that `prefer` accepts, looked for up to
 /// `lookahead` spots past the first that fits; none where there is none.
 fn first_preferred(
@@ -452,23 +447,6 @@ fn seen_spot(s: &mut Spots, fits: &dyn Fn(&Candidate, &mut Verdict) -> bool, dra
 /// How many spots past its first that fits a label looks for one whose leader is seen: two
 /// rings of directions.
 const SEEN_LOOKAHEAD: usize = 2 * DIRECTIONS;
-
-/// How many spots past its first free one a side's name looks for one that is not nearer
-/// another side: two rings of directions.
-const AMBIGUITY_LOOKAHEAD: usize = 2 * DIRECTIONS;
-
-/// A side's name reads as that side's when its box is nearer to it than to any other named
-/// side by [`NEARER_BY`] (a name on a leader is read along the leader).
-fn unambiguous(c: &Candidate, own: (Point, Point), mut others: impl Iterator<Item = (Point, Point)>) -> bool {
-    if c.leader.is_some() {
-        return true;
-    }
-    let d_own = super::obstacles::rect_segment_distance(c.r, own);
-    others.all(|o| super::obstacles::rect_segment_distance(c.r, o) >= d_own + NEARER_BY)
-}
-
-/// How much nearer its own side than any other a side's name stands, mm.
-const NEARER_BY: f64 = 0.5;
 
 /// How many of a label's spots around its first anchor are free against the drawing alone
 /// (further anchors are a fallback, not a reason to place it later).

@@ -3,7 +3,9 @@
 
 use super::compose::{HEADER, region_header};
 use super::labels::LeverWords;
-use super::plans_view::{MIN_PLAN, PlanBoxes, PlanCell, Sizing, draw_plan, label_bounds, plan_side, size_plans};
+use super::plans_view::{
+    GAP, MIN_PLAN, PlanBoxes, PlanCell, Sizing, draw_plan, label_bounds, plan_side, size_plans, title_box,
+};
 use super::segments::{PlanKind, plan_segments};
 use crate::drawing::fmt;
 use crate::drawing::place::Labels;
@@ -211,23 +213,46 @@ pub(super) fn plans_group(
     let scale_line = |mu: f64| r.scale_line(mu, words);
     region_header(&mut g, r.region, r.title, &[scale_line(sizing.common)]);
     let mut segments = Vec::new();
-    for (i, ((plan, &cell), run)) in plans.iter().zip(&sizing.cells).zip(&twins.runs).enumerate() {
-        let mu = sizing.mu[i];
-        let mut labels = Labels::new();
-        let pos = run[0].0;
-        let title = l.position(&joined_label(run));
-        let c = PlanCell {
+    let titles: Vec<String> = twins.runs.iter().map(|run| l.position(&joined_label(run))).collect();
+    let cells: Vec<PlanCell> = plans
+        .iter()
+        .zip(&sizing.cells)
+        .zip(&titles)
+        .enumerate()
+        .map(|(i, ((plan, &cell), title))| PlanCell {
             cell,
-            title: &title,
+            title,
             plan,
-            mu,
+            mu: sizing.mu[i],
             pole: r.pole,
-            scale_line: sizing.own(i).then(|| scale_line(mu)),
+            scale_line: sizing.own(i).then(|| scale_line(sizing.mu[i])),
             extent: None,
-        };
+        })
+        .collect();
+    let title_boxes: Vec<Rect> = cells.iter().map(title_box).collect();
+    for (i, (c, run)) in cells.iter().zip(&twins.runs).enumerate() {
+        let (mu, pos) = (c.mu, run[0].0);
+        let mut labels = Labels::new();
         let start = g.mark();
-        draw_plan(&mut g, &c, &mut labels);
-        labels.place(&mut g, label_bounds(cell));
+        draw_plan(&mut g, c, &mut labels);
+        // The letters at a plan's foot may reach into the gap over the next row, clear of
+        // its titles: a plan filling its cell left "d=s5" at its foot no room but 58 mm up on
+        // a leader across the plan (task 12 variant 25 in Russian). Only those: the pole's
+        // names at a plan's top took the room at its foot on a 47 mm leader hidden in a
+        // vector (task 10 variant 10).
+        let bounds = label_bounds(c.cell);
+        if let Some(y1) = gap_below(c.cell, &sizing.cells) {
+            labels.reach_below(y1, FOOT);
+            let strip = Rect { y0: bounds.y1, y1, ..bounds };
+            // A label just over the next row's title would read as its cell's.
+            for (j, t) in title_boxes.iter().enumerate() {
+                let room = t.inflate(TITLE_ROOM, TITLE_ROOM);
+                if j != i && room.overlaps(strip) {
+                    labels.keep_clear(room);
+                }
+            }
+        }
+        labels.place(&mut g, bounds);
         g.part_from(format!("plan.{}.{}", r.symbol, ascii_key(&pos.label)), start);
         // Each position's own values: a twin's differ from the drawn ones below the paper's
         // precision, and the student may measure either.
@@ -242,3 +267,18 @@ pub(super) fn plans_group(
         .collect();
     (g, drawn, (!plans.is_empty()).then_some(sizing.common), segments)
 }
+
+/// How far below a cell its foot's labels may reach where a row of cells is below it: into
+/// the gap between the rows, 0.5 mm short of the next cell's top (its title is kept clear
+/// of by the caller).
+fn gap_below(cell: Rect, cells: &[Rect]) -> Option<f64> {
+    let row_below = cells.iter().any(|c| c.y0 > cell.y1 && c.x0 < cell.x1 && c.x1 > cell.x0);
+    row_below.then_some(cell.y1 + GAP - 0.5)
+}
+
+/// How far a label reaching below its cell keeps from the next row's titles, mm.
+const TITLE_ROOM: f64 = 2.0;
+
+/// A label anchored this near its cell's foot (mm, from the bottom of its room) may reach
+/// below it ([`gap_below`]): the foot's letters and the row of names under them.
+const FOOT: f64 = 15.0;

@@ -40,7 +40,7 @@ pub const TITLE: f64 = 6.0;
 /// "Положение 0 Положение 1" stood 4 mm apart and read as one caption).
 const TITLE_END: f64 = 2.5;
 /// Gap between cells, mm.
-const GAP: f64 = 2.0;
+pub const GAP: f64 = 2.0;
 /// A plan's longer side is at least this long, mm: measured with a ruler to 0.5 mm, its
 /// vectors read to 2 % (the guide draws pa = 40 mm).
 pub const MIN_PLAN: f64 = 25.0;
@@ -330,25 +330,12 @@ pub struct PlanCell<'a> {
 /// Draws a plan's title, vectors and image points, and asks `labels` for its letters;
 /// returns the paper position of the pole. The caller places the labels.
 pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
-    let cell = c.cell;
-    let top = cell.y0 + TITLE + if c.scale_line.is_some() { SCALE_LINE } else { 0.0 };
-    let inner = Rect::new(cell.x0 + 1.0, top, cell.x1 - 1.0, cell.y1 - 1.0);
     let (plan, mu) = (c.plan, c.mu);
     let bb = c.extent.unwrap_or_else(|| plan_bbox(plan));
-    let area = inner.inflate(-MARGIN, -MARGIN);
-    // The plan's box centred in the cell across, and down as far as PLAN_DROP below the
-    // room under its title: a small plan in a row a large one makes tall stands under its
-    // title, not 40 mm below it.
-    let drop = ((area.height() - bb.height() / mu) / 2.0).clamp(0.0, PLAN_DROP);
-    let area_c = Point::new(area.center().x, area.y0 + drop + bb.height() / mu / 2.0);
-    // The title (and own scale) over the plan's left edge and its letters' room there, not
-    // at the cell's: a cell stretched across a row put it 90 mm left of a small plan.
-    let title = Text::new(Point::ZERO, c.title, 3.5, Anchor::Start);
-    let title_w = title.advance().max(c.scale_line.as_ref().map_or(0.0, |l| l.width(2.5)));
-    let x = (area_c.x - bb.width() / mu / 2.0 - MARGIN).min(cell.x1 - TITLE_END - title_w).max(cell.x0 + 2.0);
-    g.text(Text { at: Point::new(x, cell.y0 + 4.5), ..title });
+    let (area_c, x) = placing(c);
+    g.text(Text { at: Point::new(x, c.cell.y0 + 4.5), ..Text::new(Point::ZERO, c.title, 3.5, Anchor::Start) });
     if let Some(line) = &c.scale_line {
-        line.draw(g, Point::new(x, cell.y0 + TITLE + 3.5), 2.5, Anchor::Start);
+        line.draw(g, Point::new(x, c.cell.y0 + TITLE + 3.5), 2.5, Anchor::Start);
     }
     // Paper position of the pole.
     let pole_p = Point::new(area_c.x - (bb.center().x) / mu, area_c.y + (bb.center().y) / mu);
@@ -409,85 +396,45 @@ fn subscripted(line: &str) -> LabelText {
     LabelText::new(main, sub).with_tail(tail)
 }
 
+/// Where a plan stands in its cell: the paper centre of its box, and the left end of its
+/// title (and own scale line).
+fn placing(c: &PlanCell) -> (Point, f64) {
+    let cell = c.cell;
+    let top = cell.y0 + TITLE + if c.scale_line.is_some() { SCALE_LINE } else { 0.0 };
+    let inner = Rect::new(cell.x0 + 1.0, top, cell.x1 - 1.0, cell.y1 - 1.0);
+    let bb = c.extent.unwrap_or_else(|| plan_bbox(c.plan));
+    let area = inner.inflate(-MARGIN, -MARGIN);
+    // The plan's box centred in the cell across, and down as far as PLAN_DROP below the
+    // room under its title: a small plan in a row a large one makes tall stands under its
+    // title, not 40 mm below it.
+    let drop = ((area.height() - bb.height() / c.mu) / 2.0).clamp(0.0, PLAN_DROP);
+    let area_c = Point::new(area.center().x, area.y0 + drop + bb.height() / c.mu / 2.0);
+    // The title (and own scale) over the plan's left edge and its letters' room there, not
+    // at the cell's: a cell stretched across a row put it 90 mm left of a small plan.
+    let title_w = title_width(c);
+    let x = (area_c.x - bb.width() / c.mu / 2.0 - MARGIN).min(cell.x1 - TITLE_END - title_w).max(cell.x0 + 2.0);
+    (area_c, x)
+}
+
+/// The wider of a cell's title and its own scale line, mm.
+fn title_width(c: &PlanCell) -> f64 {
+    let title = Text::new(Point::ZERO, c.title, 3.5, Anchor::Start);
+    title.advance().max(c.scale_line.as_ref().map_or(0.0, |l| l.width(2.5)))
+}
+
+/// The box of a cell's title as [`draw_plan`] writes it (the room a label of the cell above
+/// keeps clear of).
+pub fn title_box(c: &PlanCell) -> Rect {
+    let x = placing(c).1;
+    let w = Text::new(Point::ZERO, c.title, 3.5, Anchor::Start).advance();
+    Rect::new(x, c.cell.y0 + 4.5 - 1.05 * 3.5, x + w, c.cell.y0 + 4.5 + 0.3 * 3.5)
+}
+
 /// The box inside a cell that its labels may use.
 pub fn label_bounds(cell: Rect) -> Rect {
     Rect::new(cell.x0 + 0.5, cell.y0 + TITLE - 1.0, cell.x1 - 0.5, cell.y1 - 0.5)
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn names_of_one_point_stack_as_one_chain() {
-        let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
-        assert_eq!(lines(&names(&["p", "b"])), ["p=b"]);
-        assert_eq!(lines(&names(&["p", "b", "s3", "c", "s4", "s5", "d"])), ["p=b=s3=", "c=s4=s5=", "d"]);
-        assert_eq!(lines(&names(&["b", "d", "s4", "s5"])), ["b=d=", "s4=s5"]);
-        assert_eq!(lines(&names(&["a"])), ["a"]);
-        assert!(lines(&names(&["p", "b", "s3", "c"])).iter().all(|l| !l.starts_with('=')));
-    }
-
-    #[test]
-    fn a_normal_components_end_is_named_with_its_pair_as_a_subscript() {
-        let parts = |l: &str| {
-            let t = subscripted(l);
-            (t.main, t.sub, t.tail)
-        };
-        let own = |a: &str, b: &str, c: &str| (a.to_string(), b.to_string(), c.to_string());
-        assert_eq!(parts("n_BA"), own("n", "BA", ""));
-        assert_eq!(parts("a=n_BA"), own("a=n", "BA", ""));
-        assert_eq!(parts("n_BA=b="), own("n", "BA", "=b="));
-        assert_eq!(parts("p=b=s3="), own("p=b=s3=", "", ""));
-        assert_eq!(parts("a3=n_O3O1=k"), own("a3=n", "O3O1", "=k"), "names with digits");
-        let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
-        let split: Vec<_> =
-            label_lines(&names(&["a", "n_BA", "n_CD"])).into_iter().map(|t| (t.main, t.sub, t.tail)).collect();
-        assert_eq!(split, [own("a=n", "BA", "="), own("n", "CD", "")], "one subscript a line");
-    }
-
-    #[test]
-    fn packed_cells_fill_the_body_in_order_without_overlap() {
-        let body = Rect::new(0.0, 0.0, 200.0, 100.0);
-        let cells = pack(&[(60.0, 40.0), (80.0, 30.0), (50.0, 45.0), (90.0, 20.0)], body).expect("fits");
-        for (i, a) in cells.iter().enumerate() {
-            assert!(a.x0 >= 0.0 && a.x1 <= 200.0 + 1e-9 && a.y1 <= 100.0 + 1e-9, "{a:?}");
-            for b in &cells[i + 1..] {
-                assert!(a.intersect(*b).area() <= 1e-9, "{a:?} {b:?}");
-            }
-        }
-        assert!(cells[3].y0 > cells[0].y0, "the fourth cell starts a row");
-        assert!(pack(&[(60.0, 140.0)], body).is_none());
-    }
-
-    /// `n` square plans of side `small` (plan units) and one `ratio` times as large, sized in
-    /// a 300 × 250 mm region.
-    fn sized(n: usize, small: f64, ratio: f64) -> (Sizing, Vec<f64>) {
-        let square = |side: f64| Rect::new(0.0, 0.0, side, side);
-        let mut boxes = vec![square(small); n];
-        boxes.push(square(small * ratio));
-        let measured = PlanBoxes { labels: vec![10.0; boxes.len()], boxes: boxes.clone() };
-        let sizing = size_plans(Rect::new(0.0, 0.0, 300.0, 250.0), &measured, 20.0);
-        let sides = boxes.iter().zip(&sizing.mu).map(|(b, mu)| b.width() / mu).collect();
-        (sizing, sides)
-    }
-
-    /// The small plans at 22.5 mm, under the own scale's 25 mm but measurable, keep the
-    /// large plan's scale (they had one of their own before).
-    #[test]
-    fn plans_seven_times_apart_keep_one_scale_and_are_measurable() {
-        let (sizing, sides) = sized(8, 0.09, 7.0);
-        assert_eq!(sizing.own_count(), 0, "{:?}", sizing.mu);
-        assert!(sides[..8].iter().all(|&s| (MEASURABLE_PLAN..MIN_PLAN).contains(&s)), "{sides:?}");
-        assert!((sides[8] / sides[0] - 7.0).abs() < 1e-9, "{sides:?}");
-    }
-
-    #[test]
-    fn only_a_plan_a_hundred_times_the_rest_leaves_the_common_scale() {
-        let (sizing, sides) = sized(8, 0.1, 100.0);
-        assert_eq!(sizing.own_count(), 1, "{:?}", sizing.mu);
-        assert!(sizing.own(8), "the large plan has its own μ: {:?}", sizing.mu);
-        assert!(sides[..8].iter().all(|&s| s >= MIN_PLAN), "{sides:?}");
-        assert!(sides[8] <= MAX_PLAN + 1e-9, "{sides:?}");
-    }
-}
+#[path = "plans_view_tests.rs"]
+mod tests;
