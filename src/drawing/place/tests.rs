@@ -1,6 +1,6 @@
 //! The placer's unit tests: each builds a small drawing and checks where its labels went.
-use super::*;
 use super::sides::NEARER_BY;
+use super::*;
 use crate::drawing::layout;
 use crate::drawing::obstacles::rect_segment_distance;
 use crate::drawing::scene::{Item, Text};
