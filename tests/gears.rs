@@ -552,3 +552,26 @@ fn planetary_group(name: &str) -> tmm_sheets::drawing::scene::Group {
     let at = b.output.scene.groups.iter().position(|g| g.id == "planetary").expect("a planetary group");
     b.output.scene.groups.swap_remove(at)
 }
+
+/// The wheels' table writes every radius with one number of decimals, and both thicknesses
+/// with one: the KHK pair printed r = 18 over r_b = 16,91, two precisions for one kind of
+/// length (GOST 2.105).
+#[test]
+fn the_wheels_radii_are_written_with_one_number_of_decimals() {
+    for (name, text) in gear_fixtures() {
+        let built = sheet2(&pipeline::load(&text).unwrap());
+        let wheels = &built.output.tables[0];
+        let decimals = |keys: &[&str]| -> Vec<usize> {
+            let rows = wheels.table.rows.iter().filter(|r| keys.contains(&r.key.as_str()));
+            let printed = rows.flat_map(|r| wheels.printed_values(r));
+            printed.map(|v| v.split_once([',', '.']).map_or(0, |(_, d)| d.len())).collect()
+        };
+        for keys in [&["r", "r_b", "r_a", "r_f", "r_w"][..], &["s", "s_a"]] {
+            let d = decimals(keys);
+            assert!(
+                d.len() == 2 * keys.len() && d.iter().all(|&k| k == d[0]),
+                "{name}: {keys:?} printed with {d:?} decimals"
+            );
+        }
+    }
+}

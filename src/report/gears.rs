@@ -24,10 +24,10 @@ fn with_shared_decimals(mut rows: Vec<Row>, groups: &[(&[&str], usize)]) -> Vec<
 pub fn wheels(p: &Pair) -> NumTable {
     let col = |f: &dyn Fn(usize) -> f64| vec![f(0), f(1)];
     let w = &p.wheels;
-    NumTable {
-        id: "wheels",
-        columns: vec![Column::labelled("1"), Column::labelled("2")],
-        rows: vec![
+    // The radii share their decimals, and the thicknesses theirs: r = 18 over r_b = 16,91
+    // read as two precisions (the KHK pair).
+    let rows = with_shared_decimals(
+        vec![
             named("z", "", Unit::None, col(&|i| f64::from(w[i].z))).counted(),
             // Given shifts as given (0,6 and 0,36); chosen ones at four significant digits.
             named("x", "", Unit::None, col(&|i| w[i].shift)).exactly(),
@@ -41,7 +41,9 @@ pub fn wheels(p: &Pair) -> NumTable {
             named("s", "", Unit::Mm, col(&|i| mm(w[i].tooth_thickness))),
             named("s", "a", Unit::Mm, col(&|i| mm(w[i].tip_thickness))),
         ],
-    }
+        &[(&["r", "r_b", "r_a", "r_f", "r_w"], 2), (&["s", "s_a"], 2)],
+    );
+    NumTable { id: "wheels", columns: vec![Column::labelled("1"), Column::labelled("2")], rows }
 }
 
 /// Table of what the pair shares; `eps_drawn` is the contact ratio measured on the drawing.
