@@ -93,6 +93,11 @@ impl<T: Listed> Grid<T> {
     /// found once, then counted and laid out cell by cell.
     pub fn with_cells(extent: Rect, side: f64, shapes: &[(Shape, T)]) -> Grid<T> {
         let mut g = Grid::over_cells(extent, side);
+        // Nothing to list (the text boxes' index has no segments): no cells to count, and a
+        // query reads no loaded cell (`loaded_in`), as in a grid made empty.
+        if shapes.is_empty() {
+            return g;
+        }
         // (cell, listing): a grid has at most MAX_CELLS cells.
         let mut listed: Vec<(u32, T)> = Vec::with_capacity(2 * shapes.len());
         for &(shape, item) in shapes {
@@ -183,8 +188,10 @@ impl<T: Listed> Grid<T> {
     /// The column or row of grid coordinate `t` (cells from the origin), clamped to the grid.
     fn index(t: f64, n: usize) -> usize {
         // `as` truncates toward zero and saturates (NaN to 0): `t.floor().max(0.0) as usize`
-        // without the call to `floor`, never out of the grid.
-        (t as usize).min(n - 1)
+        // without the call to `floor`, never out of the grid. Through i64, whose conversion
+        // is one instruction and a fix-up where usize's takes a dozen (the grid's hottest
+        // line): the same cell for every `t`, a negative one's clamped to 0.
+        (t as i64).clamp(0, n as i64 - 1) as usize
     }
 
     fn gx(&self, x: f64) -> f64 {

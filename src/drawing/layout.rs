@@ -3,7 +3,7 @@
 //! `results.json` reports the counts and the tests hold them at zero.
 
 use super::frame::{DESIGNATION_BOX, FRAME, TITLE_BLOCK};
-use super::obstacles::{Obstacles, Piece, segment_meets_rect, segments};
+use super::obstacles::{Obstacles, Piece, segments};
 use super::scene::{Item, Scene};
 use crate::num::math::Norm;
 use crate::num::tol;
@@ -90,7 +90,7 @@ fn texts_meeting_lines(scene: &Scene, flat: &Flattened, clearance: f64) -> Vec<(
             let Item::Text(t) = item else { continue };
             let met = t.core_boxes().any(|b| {
                 let r = b.inflate(clearance, clearance);
-                strokes.near(r).any(|(p, _)| matches!(*p, Piece::Segment(a, b) if segment_meets_rect(a, b, r)))
+                strokes.segment_meets(r)
             });
             if met {
                 out.push((gi, ii));

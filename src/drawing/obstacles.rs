@@ -68,9 +68,9 @@ pub struct Obstacles {
 impl Obstacles {
     /// Every item's segments and text boxes, each tagged with its item's index.
     pub fn of_items<'a>(items: impl IntoIterator<Item = &'a Item>) -> Obstacles {
-        let mut pieces = Vec::new();
+        let (mut pieces, mut segs) = (Vec::new(), Vec::new());
         for (k, item) in items.into_iter().enumerate() {
-            pieces_of(item, k, &mut pieces);
+            pieces_of(item, k, &mut pieces, &mut segs);
         }
         Obstacles::of_pieces(pieces)
     }
@@ -90,11 +90,11 @@ impl Obstacles {
     /// whose answers those pieces cannot change. An item that cannot reach `within` is not
     /// even flattened.
     pub fn of_items_within<'a>(items: impl IntoIterator<Item = &'a Item>, within: Rect) -> Obstacles {
-        let mut pieces = Vec::new();
+        let (mut pieces, mut segs) = (Vec::new(), Vec::new());
         for (k, item) in items.into_iter().enumerate() {
             if reach(item).is_none_or(|r| meets(r, within)) {
                 let from = pieces.len();
-                pieces_of(item, k, &mut pieces);
+                pieces_of(item, k, &mut pieces, &mut segs);
                 let mut kept = from;
                 for i in from..pieces.len() {
                     if meets(bounds(&pieces[i].0), within) {
@@ -125,7 +125,10 @@ impl Obstacles {
         let extent = pieces.iter().map(|(p, _)| bounds(p)).reduce(|a, b| a.union(b));
         let over = extent.unwrap_or(Rect::ZERO);
         let id = |k: usize| u32::try_from(k).expect("fewer than 2³² pieces on a sheet");
-        let (mut strokes, mut boxes) = (Vec::new(), Vec::new());
+        // Sized at once: a drawing's pieces are mostly segments, and growing the list
+        // copied it over and over.
+        let segments = pieces.iter().filter(|(p, _)| matches!(p, Piece::Segment(..))).count();
+        let (mut strokes, mut boxes) = (Vec::with_capacity(segments), Vec::with_capacity(pieces.len() - segments));
         for (k, (p, _)) in pieces.iter().enumerate() {
             match *p {
                 Piece::Segment(a, b) => strokes.push((grid::Shape::Segment(a, b), Stroke { id: id(k), a, b })),
@@ -160,9 +163,9 @@ impl Obstacles {
     /// Adds `items`' pieces, each tagged with its index counted from `first` (the items
     /// drawn since the index was built, as [`Obstacles::of_items`] of them all would tag them).
     pub fn add_items(&mut self, items: &[Item], first: usize) {
-        let mut pieces = Vec::new();
+        let (mut pieces, mut segs) = (Vec::new(), Vec::new());
         for (k, item) in items.iter().enumerate() {
-            pieces_of(item, first + k, &mut pieces);
+            pieces_of(item, first + k, &mut pieces, &mut segs);
         }
         for (piece, owner) in pieces {
             self.add(piece, owner);
@@ -191,6 +194,13 @@ impl Obstacles {
             ids.sort_unstable();
         }
         ids.into_iter().map(|id| &self.pieces[id as usize])
+    }
+
+    /// Whether a segment meets the box `r`: what [`Obstacles::near`] would find, asked cell
+    /// by cell without listing, sorting and deduplicating them (the layout measure's
+    /// question for each text's letters).
+    pub fn segment_meets(&self, r: Rect) -> bool {
+        self.strokes.any_in_box(r, |s| segment_meets_rect(s.a, s.b, r))
     }
 
     /// How many segments cross the box `r`, and the area of text boxes it overlaps.

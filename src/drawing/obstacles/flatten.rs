@@ -9,9 +9,17 @@ use kurbo::{Point, Rect, Shape};
 
 /// The segments an item draws (none for a text).
 pub fn segments(item: &Item) -> Vec<(Point, Point)> {
+    let mut out = Vec::new();
+    segments_into(item, &mut out);
+    out
+}
+
+/// [`segments`] appended to `out`: an index made of many items flattens each into one
+/// buffer rather than a list of its own.
+fn segments_into(item: &Item, out: &mut Vec<(Point, Point)>) {
     let bez = match item {
-        Item::Path { path, .. } if lines_only(path) => return polyline(path, path.closed),
-        Item::Fill { path } if lines_only(path) => return polyline(path, true),
+        Item::Path { path, .. } if lines_only(path) => return polyline(path, path.closed, out),
+        Item::Fill { path } if lines_only(path) => return polyline(path, true, out),
         Item::Path { path, .. } => path.to_bez(),
         Item::Fill { path } => {
             let mut p = path.clone();
@@ -19,9 +27,8 @@ pub fn segments(item: &Item) -> Vec<(Point, Point)> {
             p.to_bez()
         }
         Item::Circle { c, r, .. } => kurbo::Circle::new(*c, *r).to_path(FLATTEN / 10.0),
-        Item::Text(_) => return Vec::new(),
+        Item::Text(_) => return,
     };
-    let mut out = Vec::new();
     let (mut start, mut last) = (Point::ZERO, Point::ZERO);
     kurbo::flatten(bez.iter(), FLATTEN, |el| match el {
         kurbo::PathEl::MoveTo(p) => (start, last) = (p, p),
@@ -37,7 +44,6 @@ pub fn segments(item: &Item) -> Vec<(Point, Point)> {
         }
         _ => {}
     });
-    out
 }
 
 fn lines_only(path: &Path) -> bool {
@@ -47,8 +53,8 @@ fn lines_only(path: &Path) -> bool {
 /// The segments of a path of straight lines, closed or not: what flattening it gives (its
 /// lines as they are, and the closing line where the path does not end at its start),
 /// without building and walking a curve path for it (most of a sheet's paths are lines).
-fn polyline(path: &Path, closed: bool) -> Vec<(Point, Point)> {
-    let mut out = Vec::with_capacity(path.segs.len() + usize::from(closed));
+fn polyline(path: &Path, closed: bool, out: &mut Vec<(Point, Point)>) {
+    out.reserve(path.segs.len() + usize::from(closed));
     let mut last = path.start;
     for s in &path.segs {
         if let Seg::Line(p) = *s {
@@ -59,7 +65,6 @@ fn polyline(path: &Path, closed: bool) -> Vec<(Point, Point)> {
     if closed && last != path.start {
         out.push((last, path.start));
     }
-    out
 }
 
 /// Half a thin line's width, mm: its ink is within the labels' clearance of its centre line.
@@ -67,11 +72,15 @@ const THIN_HALF: f64 = 0.125;
 
 /// An item's pieces, tagged `k`, appended to `out`: a text's letters' boxes; a line's
 /// segments, and a thick line's edges too (its ink reaches past its centre line further
-/// than a label's clearance).
-pub(super) fn pieces_of(item: &Item, k: usize, out: &mut Vec<(Piece, usize)>) {
+/// than a label's clearance). `segs` is a buffer for the line's segments.
+pub(super) fn pieces_of(item: &Item, k: usize, out: &mut Vec<(Piece, usize)>, segs: &mut Vec<(Point, Point)>) {
     match item {
         Item::Text(t) => out.extend(t.core_boxes().map(|b| (Piece::TextBox(b), k))),
-        _ => stroke_pieces(item, &segments(item), k, out),
+        _ => {
+            segs.clear();
+            segments_into(item, segs);
+            stroke_pieces(item, segs, k, out);
+        }
     }
 }
 

@@ -17,7 +17,7 @@ use super::drawn_once::DrawnOnce;
 use super::forces_view::{CellMemo, ForceScales, ForcesInput, draw_forces};
 use super::labels::LeverWords;
 use super::mechanism_place::{MechanismDrawn, MechanismPlace, mechanism_group, mechanism_place};
-use super::note_tables::{NoteTables, note_tables, sheet_table, tables_group, with_units};
+use super::note_tables::{NoteParts, NoteTables, note_tables, sheet_table, tables_group, with_units};
 pub use super::plan_regions::PlanDrawn;
 use super::plan_regions::{LARGEST_PLAN, PlansRegion, Twins, plans_group, split_plans};
 use super::plans_view::Sizing;
@@ -160,7 +160,9 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
 /// Lays out sheet 1 as the variant `v` asks.
 fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> Result<Composed, TooLong> {
     let memo = CellMemo::default();
-    let arrange = |w: f64, memo| arrange(inp, k, plans, (w, v), memo);
+    // Tables 3–5 as this variant letters them, set once for every width tried.
+    let force_tables = force_tables(inp, v);
+    let arrange = |w: f64, memo| arrange(inp, k, plans, (w, v), (memo, &force_tables));
     if inp.forces.is_none() {
         return draw(inp, k, plans, arrange(FORCES_MIN_W, &memo)?);
     }
@@ -262,6 +264,10 @@ struct PlansOf<'a> {
     acceleration: Twins<'a>,
     mechanisms: DrawnOnce<MechanismPlace, MechanismDrawn>,
     plans_drawn: DrawnOnce<(String, Rect, Sizing), PlansDrawn>,
+    /// Tables 1 and 2 and the notes, the same in every layout.
+    notes: NoteParts,
+    /// The plans' column split by column (variants share columns; the kinds are the same).
+    splits: DrawnOnce<Rect, [(Rect, Sizing); 2]>,
 }
 
 /// A region of plans drawn: its group, each plan as drawn, their common scale and the
@@ -275,7 +281,9 @@ impl<'a> PlansOf<'a> {
         let apositions: Vec<&Position> = k.acceleration.iter().map(|&i| &k.positions[i]).collect();
         let velocity = Twins::of(vpositions.iter().map(|p| velocity_plan(m, &p.state)).collect(), &vpositions);
         let acceleration = Twins::of(apositions.iter().map(|p| acceleration_plan(m, &p.state)).collect(), &apositions);
-        PlansOf { velocity, acceleration, mechanisms: DrawnOnce::default(), plans_drawn: DrawnOnce::default() }
+        let notes = NoteParts::new(inp, &LeverWords::new(inp.ctx.info.language));
+        let (mechanisms, plans_drawn, splits) = Default::default();
+        PlansOf { velocity, acceleration, mechanisms, plans_drawn, notes, splits }
     }
 }
 
@@ -315,11 +323,11 @@ fn arrange<'a>(
     k: &'a Kinematics,
     plans: &PlansOf,
     (forces_w, v): (f64, Variant),
-    memo: &'a CellMemo,
+    (memo, force_tables): (&'a CellMemo, &Option<Vec<Table>>),
 ) -> Result<Arrangement<'a>, TooLong> {
     let words = LeverWords::new(inp.ctx.info.language);
     let inner = frame::inner();
-    let force_input = force_input(inp, k, &words, (memo, v));
+    let force_input = force_input(inp, k, &words, (memo, v), force_tables);
     let mech = mechanism_place(inp, k, force_input.as_ref(), Column { width: forces_w, inner });
     // With a force analysis, its drawings fill the left column below the mechanism and the
     // acceleration plans move to the right column.
@@ -328,7 +336,7 @@ fn arrange<'a>(
 
     // Right column: the tables above the title block decide how tall the velocity plans are.
     let right_x0 = left_x1 + 6.0;
-    let notes = note_tables(inp, &words, (right_x0, inner.x1 - 4.0), v.corner)?;
+    let notes = note_tables(&plans.notes, &words, (right_x0, inner.x1 - 4.0), v.corner)?;
     let plans_bottom = notes.region.y0 - 6.0;
     let (l, c) = (words.sheet, words.common);
     let mut velocity = PlansRegion {
@@ -354,8 +362,8 @@ fn arrange<'a>(
     let [vsizing, asizing] = match force_region {
         Some(_) => {
             let column = Rect::new(right_x0, TOP, inner.x1 - 4.0, plans_bottom);
-            let [(vr, vs), (ar, as_)] =
-                split_plans(column, [(&velocity, &plans.velocity), (&acceleration, &plans.acceleration)], &words);
+            let kinds = [(&velocity, &plans.velocity), (&acceleration, &plans.acceleration)];
+            let [(vr, vs), (ar, as_)] = plans.splits.get(column, || split_plans(column, kinds, &words));
             (velocity.region, acceleration.region) = (vr, ar);
             [vs, as_]
         }
@@ -421,37 +429,40 @@ pub(super) struct Column {
     pub(super) inner: Rect,
 }
 
-/// The force drawings' input (tables 3–5 as drawn, lettered as the variant asks), to size
-/// the regions by.
-fn force_input<'a>(
-    inp: &'a Input,
-    k: &'a Kinematics,
-    words: &LeverWords,
-    (memo, v): (&'a CellMemo, Variant),
-) -> Option<ForcesInput<'a>> {
-    let text_h = v.text_h;
-    let (c, lang) = (words.common, words.lang);
-    inp.forces.map(|(fa, _)| {
+/// Tables 3–5 as drawn, lettered as the variant `v` asks (none without a force analysis).
+fn force_tables(inp: &Input, v: Variant) -> Option<Vec<Table>> {
+    let LeverWords { common: c, lang, .. } = LeverWords::new(inp.ctx.info.language);
+    inp.forces.map(|_| {
         let (t3, t4, t5) = (&inp.notes[2], &inp.notes[3], &inp.notes[4]);
         let tables = [
             Table { corner: c.link_col().into(), ..with_units(sheet_table(t3, lang), t3, lang) },
             Table { cell_w: 16.0, ..sheet_table(t4, lang) },
             Table { cell_w: 18.0, header: vec![c.value().to_string()], ..with_units(sheet_table(t5, lang), t5, lang) },
         ];
-        let tables = tables.into_iter().map(|t| Table { text_h, ..t }).collect();
-        ForcesInput {
-            m: &inp.project.mechanism,
-            fa,
-            state: &k.assigned.state,
-            phi_deg: k.assigned.phi.to_degrees(),
-            words: *words,
-            tables,
-            memo,
-            grow_drawings: v.grow_drawings,
-            side_first: v.side_first,
-            tables_beside: v.tables_beside,
-            compact_groups: v.compact_groups,
-        }
+        tables.into_iter().map(|t| Table { text_h: v.text_h, ..t }).collect()
+    })
+}
+
+/// The force drawings' input, with the variant's tables 3–5 ([`force_tables`]), to size the regions by.
+fn force_input<'a>(
+    inp: &'a Input,
+    k: &'a Kinematics,
+    words: &LeverWords,
+    (memo, v): (&'a CellMemo, Variant),
+    tables: &Option<Vec<Table>>,
+) -> Option<ForcesInput<'a>> {
+    inp.forces.zip(tables.as_ref()).map(|((fa, _), tables)| ForcesInput {
+        m: &inp.project.mechanism,
+        fa,
+        state: &k.assigned.state,
+        phi_deg: k.assigned.phi.to_degrees(),
+        words: *words,
+        tables: tables.clone(),
+        memo,
+        grow_drawings: v.grow_drawings,
+        side_first: v.side_first,
+        tables_beside: v.tables_beside,
+        compact_groups: v.compact_groups,
     })
 }
 

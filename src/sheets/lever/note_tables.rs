@@ -27,31 +27,52 @@ pub(super) struct NoteTables {
     pub(super) region: Rect,
 }
 
+/// What [`note_tables`] sets whatever the column: tables 1 and 2 as sheet 1 draws them with
+/// their sizes, the assumptions, and the notes' height under table 1 in the corner. Made
+/// once for the sheet: every layout tried (three column widths in each of the variants)
+/// asks for the same, and lettering the tables' values was a twentieth of building sheet 1.
+pub(super) struct NoteParts {
+    t1: Table,
+    t2: Table,
+    size1: (f64, f64),
+    size2: (f64, f64),
+    assumptions: Vec<String>,
+    corner_notes: f64,
+}
+
+impl NoteParts {
+    pub(super) fn new(inp: &Input, words: &LeverWords) -> NoteParts {
+        let (c, lang) = (words.common, words.lang);
+        let t1 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[0], lang) };
+        let t2 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[1], lang) };
+        let (size1, size2) = (t1.size(), t2.size());
+        let assumptions: Vec<String> = inp.project.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
+        let corner_notes = notes_height(words, &assumptions, size1.0 + 2.0);
+        NoteParts { t1, t2, size1, size2, assumptions, corner_notes }
+    }
+}
+
 /// Tables 1 and 2 side by side when the column (`across`: its left and right x) is wide enough,
 /// else one above the other, and the notes under them; refuses assumptions too long for
 /// the room above the title block. With `corner`, table 1 goes down into the corner left of
 /// the title block where it fits there.
 pub(super) fn note_tables(
-    inp: &Input,
+    parts: &NoteParts,
     words: &LeverWords,
     across: (f64, f64),
     corner: bool,
 ) -> Result<NoteTables, TooLong> {
-    let (c, lang) = (words.common, words.lang);
-    let t1 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[0], lang) };
-    let t2 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[1], lang) };
-    let (w1, h1) = t1.size();
-    let (w2, h2) = t2.size();
+    let ((w1, h1), (w2, h2)) = (parts.size1, parts.size2);
     let right_w = across.1 - across.0;
     let side_by_side = 1.0 + w1 + 8.0 + w2 + 1.0 <= right_w;
     let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
-    let assumptions: Vec<String> = inp.project.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
+    let (t1, t2, assumptions) = (parts.t1.clone(), parts.t2.clone(), parts.assumptions.clone());
     let title = frame::title_block_rect();
     // Table 1 beside the title block, down in its corner, where it fits there with the notes
     // under it (as wide as it: table 2 stands beside it): the band left of the title block
     // would be empty paper, and the plans above get its height.
     let corner_w = w1 + 2.0;
-    let corner_notes = notes_height(words, &assumptions, corner_w);
+    let corner_notes = parts.corner_notes;
     let in_corner = corner && side_by_side && across.0 + corner_w + 4.0 <= title.x0 && corner_notes <= NOTES_MAX_H;
     if in_corner {
         let top = (title.y0 - 3.0 - h2).min(frame::inner().y1 - 3.0 - corner_notes - 4.0 - h1);

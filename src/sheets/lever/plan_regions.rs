@@ -8,6 +8,7 @@ use super::plans_view::{
 };
 use super::segments::{PlanKind, plan_segments};
 use crate::drawing::fmt;
+use crate::drawing::labels::Language;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::Group;
@@ -16,6 +17,8 @@ use crate::lever::analysis::Position;
 use crate::lever::plans::Plan;
 use crate::report::{AnswerKeys, Segment, ascii_key};
 use kurbo::Rect;
+use std::borrow::Cow;
+use std::sync::OnceLock;
 
 /// One drawn plan: its position, scale and size on paper.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -51,7 +54,17 @@ impl PlansRegion<'_> {
 
     /// The plans' scales and cells below the region's header (see [`size_plans`]).
     pub(super) fn sizing(&self, twins: &Twins, words: &LeverWords) -> Sizing {
-        self.sizing_of(&self.measure(twins, words))
+        self.sizing_of(&self.measured(twins, words))
+    }
+
+    /// [`PlansRegion::measure`] of `twins`, kept with them: every layout tried sizes the same
+    /// plans, and a column's split (some fifty regions) measured them again for each.
+    fn measured<'t>(&self, twins: &'t Twins, words: &LeverWords) -> Cow<'t, (PlanBoxes, f64)> {
+        let key = (self.pole.to_string(), self.symbol.to_string(), self.unit.to_string(), words.lang);
+        let kept = twins.measured.get_or_init(|| (key.clone(), self.measure(twins, words)));
+        // Measured for another kind of region or in other words (not on a sheet: each kind's
+        // plans are sized by their own region in the sheet's words): measured anew.
+        if kept.0 == key { Cow::Borrowed(&kept.1) } else { Cow::Owned(self.measure(twins, words)) }
     }
 
     /// What [`PlansRegion::sizing`] asks of the plans whatever the region: their boxes and
@@ -96,7 +109,7 @@ pub const LARGEST_PLAN: f64 = 80.0;
 /// sizing.
 pub(super) fn split_plans(column: Rect, kinds: [(&PlansRegion, &Twins); 2], words: &LeverWords) -> [(Rect, Sizing); 2] {
     // The same at every share.
-    let measured = kinds.map(|(r, twins)| r.measure(twins, words));
+    let measured = kinds.map(|(r, twins)| r.measured(twins, words));
     // A share over 1 splits the column across instead: the velocity plans on the left.
     let split = |share: f64| {
         let regions = if share <= 1.0 {
@@ -165,7 +178,13 @@ pub(super) struct Twins<'a> {
     pub(super) plans: Vec<Plan>,
     /// Each drawn plan's positions: its own first, then the ones it stands for.
     pub(super) runs: Vec<Vec<(&'a Position, Plan)>>,
+    /// Their measure ([`PlansRegion::measured`]) with what it was measured for: a region's
+    /// pole, symbol and unit, and the language.
+    measured: OnceLock<(MeasureKey, (PlanBoxes, f64))>,
 }
+
+/// What a region's measure of its plans depends on besides them.
+type MeasureKey = (String, String, String, Language);
 
 impl<'a> Twins<'a> {
     /// Groups `plans` of `positions` (in order) into runs that coincide on paper.
@@ -178,7 +197,7 @@ impl<'a> Twins<'a> {
                 _ => runs.push(vec![(pos, plan)]),
             }
         }
-        Twins { plans: runs.iter().map(|r| r[0].1.clone()).collect(), runs }
+        Twins { plans: runs.iter().map(|r| r[0].1.clone()).collect(), runs, measured: OnceLock::new() }
     }
 }
 

@@ -157,9 +157,9 @@ fn lines(names: &[String]) -> Vec<String> {
 const SHARED_PER_LABEL: usize = 3;
 
 /// The rows of cells `sizes` at most `width` wide, in order, whose tallest cells (and the
-/// gaps between rows) sum least: shortest path over the break points. `None` when a cell is
-/// wider than `width`.
-fn row_breaks(sizes: &[(f64, f64)], width: f64) -> Option<Vec<Vec<usize>>> {
+/// gaps between rows) sum least (shortest path over the break points): each row's first
+/// cell, then `sizes.len()` (no cells: one empty row). `None` when a cell is wider than `width`.
+fn row_breaks(sizes: &[(f64, f64)], width: f64) -> Option<Vec<usize>> {
     let n = sizes.len();
     if sizes.iter().any(|&(w, _)| w > width) {
         return None;
@@ -182,18 +182,17 @@ fn row_breaks(sizes: &[(f64, f64)], width: f64) -> Option<Vec<Vec<usize>>> {
             }
         }
     }
-    let mut rows = Vec::new();
+    let mut starts = vec![n];
     let mut j = n;
     while j > 0 {
-        let i = best[j].1;
-        rows.push((i..j).collect::<Vec<_>>());
-        j = i;
+        j = best[j].1;
+        starts.push(j);
     }
-    rows.reverse();
-    if rows.is_empty() {
-        rows.push(vec![]);
+    if n == 0 {
+        starts.push(0);
     }
-    Some(rows)
+    starts.reverse();
+    Some(starts)
 }
 
 /// Packs cells of `sizes` in rows inside `body`, in order, breaking the rows where their
@@ -201,20 +200,24 @@ fn row_breaks(sizes: &[(f64, f64)], width: f64) -> Option<Vec<Vec<usize>>> {
 /// rather than each row filled greedily and as tall as its tallest); the rows are then
 /// stretched to fill the body's width and height. `None` when they do not fit.
 fn pack(sizes: &[(f64, f64)], body: Rect) -> Option<Vec<Rect>> {
-    let rows = row_breaks(sizes, body.width())?;
-    let heights: Vec<f64> = rows.iter().map(|r| r.iter().map(|&i| sizes[i].1).fold(0.0, f64::max)).collect();
-    let total_h = heights.iter().sum::<f64>() + GAP * (rows.len() - 1) as f64;
+    let starts = row_breaks(sizes, body.width())?;
+    // Each row's cells as a range (no list of lists: most packings tried fail).
+    let rows = || starts.windows(2).map(|w| w[0]..w[1]);
+    let height = |row: std::ops::Range<usize>| sizes[row].iter().map(|s| s.1).fold(0.0, f64::max);
+    let n_rows = starts.len() - 1;
+    let total_h = rows().map(height).sum::<f64>() + GAP * (n_rows - 1) as f64;
     if total_h > body.height() {
         return None;
     }
-    let extra_h = (body.height() - total_h) / rows.len() as f64;
+    let extra_h = (body.height() - total_h) / n_rows as f64;
     let mut out = vec![Rect::ZERO; sizes.len()];
     let mut y = body.y0;
-    for (row, h) in rows.iter().zip(&heights) {
-        let used: f64 = row.iter().map(|&i| sizes[i].0).sum::<f64>() + GAP * (row.len() - 1) as f64;
+    for row in rows() {
+        let h = height(row.clone());
+        let used: f64 = sizes[row.clone()].iter().map(|s| s.0).sum::<f64>() + GAP * (row.len() - 1) as f64;
         let extra_w = (body.width() - used) / row.len() as f64;
         let mut x = body.x0;
-        for &i in row {
+        for i in row {
             let w = sizes[i].0 + extra_w;
             out[i] = Rect::new(x, y, x + w, y + h + extra_h);
             x += w + GAP;
@@ -226,6 +229,7 @@ fn pack(sizes: &[(f64, f64)], body: Rect) -> Option<Vec<Rect>> {
 
 /// What sizing a kind's plans asks of each, whatever the region: its box and its longest
 /// label's width. Found once: a column's split tries some fifty regions.
+#[derive(Clone)]
 pub struct PlanBoxes {
     boxes: Vec<Rect>,
     labels: Vec<f64>,
@@ -247,11 +251,14 @@ pub fn size_plans(body: Rect, measured: &PlanBoxes, min_w: f64) -> Sizing {
     let PlanBoxes { boxes, labels } = measured;
     let sides: Vec<f64> = boxes.iter().map(|b| b.width().max(b.height()).max(f64::MIN_POSITIVE)).collect();
     let largest = sides.iter().copied().fold(f64::MIN_POSITIVE, f64::max);
-    let fit = |common: f64, outliers: bool| -> Option<Sizing> {
-        let mu: Vec<f64> = sides.iter().map(|&s| if outliers { own_scale(s, common) } else { common }).collect();
-        let sizes: Vec<_> =
-            (0..boxes.len()).map(|i| cell_size(boxes[i], mu[i], mu[i] != common, min_w, labels[i])).collect();
-        pack(&sizes, body).map(|cells| Sizing { cells, common, mu })
+    // Buffers reused from one scale tried to the next (a column's split sizes fifty regions).
+    let (mut mus, mut sizes) = (Vec::with_capacity(boxes.len()), Vec::with_capacity(boxes.len()));
+    let mut fit = |common: f64, outliers: bool| -> Option<Sizing> {
+        mus.clear();
+        mus.extend(sides.iter().map(|&s| if outliers { own_scale(s, common) } else { common }));
+        sizes.clear();
+        sizes.extend((0..boxes.len()).map(|i| cell_size(boxes[i], mus[i], mus[i] != common, min_w, labels[i])));
+        pack(&sizes, body).map(|cells| Sizing { cells, common, mu: mus.clone() })
     };
     // Every plan at one scale: the smallest that packs.
     let mut mu = scale::plan_round_up(largest / body.width().max(body.height()));
