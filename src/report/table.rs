@@ -202,6 +202,11 @@ impl Row {
         self
     }
 
+    /// The values its cells print (the absent ones left out).
+    pub fn present(&self) -> impl Iterator<Item = f64> + '_ {
+        (0..self.values.len()).filter(|&c| !self.is_absent(c)).map(|c| self.values[c])
+    }
+
     /// Whether the cell in column `c` has no value (see [`Row::absent`]).
     pub fn is_absent(&self, c: usize) -> bool {
         self.absent.get(c).copied().unwrap_or(false)
@@ -223,8 +228,7 @@ impl Row {
         // A count's row (a condition's value, limit and 1 for met) is one quantity a cell.
         let whole_value = |v: f64| crate::num::digits::nearly_whole(v) && v.abs() < 1e9;
         // The row's decimals from the cells that hold a value.
-        let present: Vec<f64> =
-            (0..self.values.len()).filter(|&c| !self.is_absent(c)).map(|c| self.values[c]).collect();
+        let present: Vec<f64> = self.present().collect();
         let whole = whole && (self.count || present.iter().all(|&v| whole_value(v)));
         let whole = whole && self.decimals.is_none();
         let decimals =
@@ -266,8 +270,7 @@ impl Row {
 /// their own.
 pub fn share_decimals<'a>(rows: impl IntoIterator<Item = &'a mut Row>, at_least: usize) {
     let mut rows: Vec<&mut Row> = rows.into_iter().filter(|r| !r.count && !r.exact).collect();
-    let values: Vec<f64> =
-        rows.iter().flat_map(|r| (0..r.values.len()).filter(|&c| !r.is_absent(c)).map(|c| r.values[c])).collect();
+    let values: Vec<f64> = rows.iter().flat_map(|r| r.present()).collect();
     if values.iter().all(|&v| crate::num::digits::nearly_whole(v)) {
         return;
     }
@@ -282,13 +285,8 @@ pub fn share_decimals<'a>(rows: impl IntoIterator<Item = &'a mut Row>, at_least:
 /// another precision.
 pub fn share_exact_decimals<'a>(rows: impl IntoIterator<Item = &'a mut Row>) {
     let mut rows: Vec<&mut Row> = rows.into_iter().filter(|r| r.exact).collect();
-    let each: Option<Vec<usize>> = rows
-        .iter()
-        .map(|r| {
-            let present: Vec<f64> = (0..r.values.len()).filter(|&c| !r.is_absent(c)).map(|c| r.values[c]).collect();
-            crate::num::digits::exact_decimals(&present)
-        })
-        .collect();
+    let each: Option<Vec<usize>> =
+        rows.iter().map(|r| crate::num::digits::exact_decimals(&r.present().collect::<Vec<f64>>())).collect();
     if let Some(d) = each.and_then(|e| e.into_iter().max()) {
         for r in &mut rows {
             r.decimals = Some(d);

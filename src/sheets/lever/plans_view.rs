@@ -340,7 +340,7 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
     let (plan, mu) = (c.plan, c.mu);
     let bb = c.extent.unwrap_or_else(|| plan_bbox(plan));
     let (area_c, x) = placing(c);
-    g.text(Text { at: Point::new(x, c.cell.y0 + 4.5), ..Text::new(Point::ZERO, c.title, 3.5, Anchor::Start) });
+    g.text(title_text(c, x));
     if let Some(line) = &c.scale_line {
         line.draw(g, Point::new(x, c.cell.y0 + TITLE + 3.5), 2.5, Anchor::Start);
     }
@@ -432,9 +432,12 @@ fn title_width(c: &PlanCell) -> f64 {
 /// The box of a cell's title as [`draw_plan`] writes it (the room a label of the cell above
 /// keeps clear of).
 pub fn title_box(c: &PlanCell) -> Rect {
-    let x = placing(c).1;
-    let w = Text::new(Point::ZERO, c.title, 3.5, Anchor::Start).advance();
-    Rect::new(x, c.cell.y0 + 4.5 - 1.05 * 3.5, x + w, c.cell.y0 + 4.5 + 0.3 * 3.5)
+    title_text(c, placing(c).1).bbox()
+}
+
+/// A cell's title starting at `x`.
+fn title_text(c: &PlanCell, x: f64) -> Text {
+    Text::new(Point::new(x, c.cell.y0 + 4.5), c.title, 3.5, Anchor::Start)
 }
 
 /// The box inside a cell that its labels may use.
