@@ -150,6 +150,33 @@ fn the_law_table_gives_the_phases_own_acceleration_at_a_jump() {
     assert!((row.values[0] - expected).abs() < 1e-9, "{} vs {expected}", row.values[0]);
 }
 
+/// Where the acceleration jumps inside a phase (the custom-laws fixture's return of two
+/// rectangles, at a quarter of it: position 11), the law's table gives both values, before
+/// and after, as the diagram draws the jump — and nowhere else. The law's acceleration
+/// (3 then −1) normalised by its lift ∫∫a = 0.375, computed here: d²s/dφ² = −h·a/(0.375·φ²)
+/// on the return, in mm.
+#[test]
+fn the_law_table_gives_both_values_where_the_acceleration_jumps_inside_a_phase() {
+    let text = std::fs::read_to_string(root().join("fixtures/cams/custom-laws.yaml")).unwrap();
+    let b = sheet3(&load_in(&text, Language::Ru));
+    let t = b.output.tables.iter().find(|t| t.table.id == "law-return").unwrap();
+    let row = t.table.rows.iter().find(|r| r.key == "d2s_dphi2").unwrap();
+    let per_rad2 = 30.0 / (0.375 * 80f64.to_radians().powi(2));
+    let (before, after) = (-3.0 * per_rad2, 1.0 * per_rad2);
+    assert!((row.values[2] - before).abs() < 1e-9, "{} vs {before}", row.values[2]);
+    let jumped = row.jump_at(2).expect("a jump at position 11");
+    assert!((jumped - after).abs() < 1e-9, "{jumped} vs {after}");
+    let jumps: Vec<usize> = (0..row.values.len()).filter(|&c| row.jump_at(c).is_some()).collect();
+    assert_eq!(jumps, vec![2], "the acceleration jumps at position 11 only");
+    let printed = t.printed_values(row);
+    assert_eq!(printed[2], "-123.1/41.0", "{printed:?}");
+    let md = tmm_sheets::report::markdown(t, "sheet3");
+    assert!(md.contains("| −123,1/41,0 |"), "{md}");
+    // The rise's triangle law is continuous: no cell of its table jumps.
+    let rise = b.output.tables.iter().find(|t| t.table.id == "law-rise").unwrap();
+    assert!(rise.table.rows.iter().all(|r| r.jumps.iter().all(Option::is_none)));
+}
+
 /// The diagrams are big enough to measure: the lift at most 100 mm and at least 25 mm (a
 /// peaky law, like the fixture's two rectangles, spends height on its acceleration), the
 /// acceleration analog 20–75 mm each side of its axis from the law's exact peak (the guide
@@ -588,7 +615,8 @@ fn twin_tables_write_one_quantity_with_one_number_of_decimals() {
                     let id = line.split('"').nth(1).unwrap();
                     let key = id.replace("-rise", "").replace("-return", "");
                     let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).skip(2).collect();
-                    rows.push((key, cells.iter().map(|c| decimals(c)).collect()));
+                    // A jump's cell holds two values ("−123,1/41,0"), each at the row's decimals.
+                    rows.push((key, cells.iter().flat_map(|c| c.split('/')).map(decimals).collect()));
                 }
             }
             let class = |key: &str| {

@@ -1,7 +1,8 @@
 //! Tables drawn on the sheet: a header row, a label column, ruled cells.
 
 use super::scene::{Anchor, Group, MAIN, Pen, THIN, Text};
-use super::text::{LINE_PITCH, LabelText, paragraph, wrap};
+use super::text::{LINE_PITCH, LabelText, SLANT, paragraph, wrap};
+use crate::num::digits::JUMP;
 use kurbo::{Point, Rect};
 
 /// A row's height and the cells' lettering at the usual size, mm; a table of larger
@@ -54,14 +55,26 @@ impl Table {
         if self.text_h > CELL_TEXT { TITLE_TEXT_LARGE } else { TITLE_TEXT }
     }
 
-    /// The width of every value cell: the least width or the widest value or heading.
-    fn cell_width(&self) -> f64 {
+    /// The widths of the value columns: every column as wide as the table's least width or
+    /// its widest single value or heading, and a column holding a jump's two values
+    /// ("1,169/−1,169", see [`JUMP`]) as wide as those need,
+    /// so one jump does not widen the whole table.
+    fn column_widths(&self) -> Vec<f64> {
         let h = self.text_h;
-        let width = |t: &str| Text::new(Point::ZERO, t, h, Anchor::Middle).core_box().width();
-        let values = self.rows.iter().flat_map(|(_, cells)| cells.iter()).chain(&self.header);
-        values
-            .map(|v| width(v) + 2.0 * CELL_PAD * self.k() + h * super::text::SLANT)
-            .fold(self.cell_w * self.k(), f64::max)
+        let width = |t: &str| {
+            Text::new(Point::ZERO, t, h, Anchor::Middle).core_box().width() + 2.0 * CELL_PAD * self.k() + h * SLANT
+        };
+        let pair = |v: &&String| v.contains(JUMP);
+        let cells = || self.rows.iter().flat_map(|(_, cells)| cells.iter());
+        let single = cells().filter(|v| !pair(v)).chain(&self.header).map(|v| width(v));
+        let usual = single.fold(self.cell_w * self.k(), f64::max);
+        let mut widths = vec![usual; self.header.len()];
+        for (_, cells) in &self.rows {
+            for (w, v) in widths.iter_mut().zip(cells).filter(|(_, v)| pair(v)) {
+                *w = w.max(width(v));
+            }
+        }
+        widths
     }
 
     /// The label column's width: as given, or the corner caption's.
@@ -72,7 +85,7 @@ impl Table {
     }
 
     fn grid_width(&self) -> f64 {
-        self.label_width() + self.cell_width() * self.header.len() as f64
+        self.label_width() + self.column_widths().iter().sum::<f64>()
     }
 
     /// The title's lines: wrapped to the grid's width `grid_w` when it is wider (at least
@@ -139,14 +152,14 @@ impl Table {
             let y = top + row_h * r as f64;
             g.line(Point::new(at.x, y), Point::new(at.x + w, y), if r == 1 { MAIN } else { THIN });
         }
-        let (label_w, cell_w) = (self.label_width(), self.cell_width());
-        let mut x = at.x + label_w;
-        for _ in 0..self.header.len() {
+        let (label_w, widths) = (self.label_width(), self.column_widths());
+        // Each column's left edge, from the label column's right.
+        let lefts: Vec<f64> = widths.iter().scan(at.x + label_w, |x, w| Some(std::mem::replace(x, *x + w))).collect();
+        for &x in &lefts {
             g.line(Point::new(x, top), Point::new(x, bottom), THIN);
-            x += cell_w;
         }
         let base = |r: usize| top + row_h * r as f64 + row_h / 2.0 + text_h / 2.0;
-        let col = |c: usize| at.x + label_w + cell_w * (c as f64 + 0.5);
+        let col = |c: usize| lefts[c] + widths[c] / 2.0;
         if !self.corner.is_empty() {
             g.text(Text::new(Point::new(at.x + label_w / 2.0, base(0)), self.corner.clone(), text_h, Anchor::Middle));
         }

@@ -88,6 +88,12 @@ pub const ANGLE_ROUND_OFF: f64 = 1e-12;
 /// at the end itself the law belongs to the next part (the dwell, or a jump's other side).
 pub const INSIDE_PHASE: f64 = 1e-12;
 
+/// Relative: a law's value that differs across a position (taken [`INSIDE_PHASE`] either
+/// side) by more than this part of its row's largest value jumps there. A smooth law moves
+/// by ~10⁻¹¹ of its peak across those 2·10⁻¹² rad; a jump the tables print moves by at
+/// least a digit of four.
+pub const JUMP: f64 = 1e-6;
+
 /// Radians: where the cam's searches over φ stop. A smooth maximum's value is then exact to
 /// ~10⁻²² of its curvature, and the step stays above the spacing of doubles near φ, which a
 /// golden section cannot shrink past.

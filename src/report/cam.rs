@@ -34,36 +34,60 @@ fn positions(first: usize, n: usize) -> Vec<Column> {
     (first..first + n).map(|k| Column::labelled(&k.to_string())).collect()
 }
 
-/// The law at position `k` of a phase's positions `phis`, from inside the phase: at the ends
-/// the program's `at` belongs to the dwell, and where the acceleration jumps the table (and
-/// the drawing's ordinate) gives the phase's own value.
-pub fn law_at(d: &Design, phis: &[f64], k: usize) -> Derivs {
+/// The cam angle at which a phase's table reads its law at position `k` of the phase's
+/// positions `phis`, from inside the phase: at the ends the program's `at` belongs to the
+/// dwell, and where the acceleration jumps the table (and the drawing's ordinate) gives the
+/// phase's own value.
+fn inside(phis: &[f64], k: usize) -> f64 {
     let phi = phis[k];
-    d.spec.program.at(if k + 1 == phis.len() {
+    if k + 1 == phis.len() {
         phi - tol::INSIDE_PHASE
     } else if k == 0 {
         phi + tol::INSIDE_PHASE
     } else {
         phi
-    })
+    }
+}
+
+/// The law at position `k` of a phase's positions `phis`, from inside the phase (see
+/// [`inside`]).
+pub fn law_at(d: &Design, phis: &[f64], k: usize) -> Derivs {
+    d.spec.program.at(inside(phis, k))
+}
+
+/// A row of `f` at the positions `phis`, with the value after each inner position where
+/// `f` jumps there (see [`Row::jumps`]): the cell then holds the value just before.
+fn jumping_row(symbol: &'static str, unit: Unit, phis: &[f64], f: &dyn Fn(f64) -> f64) -> Row {
+    let inner = |k: usize| k > 0 && k + 1 < phis.len();
+    let sides = |k: usize| (f(phis[k] - tol::INSIDE_PHASE), f(phis[k] + tol::INSIDE_PHASE));
+    let at: Vec<f64> = (0..phis.len()).map(|k| f(inside(phis, k))).collect();
+    let largest = at.iter().fold(0.0, |m: f64, v| m.max(v.abs()));
+    let jumps: Vec<Option<(f64, f64)>> = (0..phis.len())
+        .map(|k| inner(k).then(|| sides(k)).filter(|(a, b)| (b - a).abs() > tol::JUMP * largest.max(a.abs())))
+        .collect();
+    let values = at.iter().zip(&jumps).map(|(&v, j)| j.map_or(v, |(before, _)| before)).collect();
+    plain(symbol, unit, values).jumping(jumps.iter().map(|j| j.map(|(_, after)| after)).collect())
 }
 
 /// The law and the pressure angle at positions `first..` (cam angles `phis`), as one table.
+/// Where the analogs (or with them the pressure angle) jump at a position, its cell holds
+/// the values before and after.
 pub fn law(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable {
     let rocker = matches!(d.spec.follower, Follower::Rocker { .. });
-    let at = |_: f64, k: usize| law_at(d, phis, k);
-    let col = |f: &dyn Fn(f64, usize) -> f64| phis.iter().enumerate().map(|(k, &phi)| f(phi, k)).collect::<Vec<_>>();
+    let at = |phi: f64| d.spec.program.at(phi);
     let (s, v, a) = if rocker { ("β", "dβ/dφ", "d²β/dφ²") } else { ("s", "ds/dφ", "d²s/dφ²") };
     let (us, uv) = if rocker { (Unit::Deg, Unit::None) } else { (Unit::Mm, Unit::Mm) };
+    let phi_deg = phis.iter().map(|phi| phi.to_degrees()).collect();
+    let lifts = (0..phis.len()).map(|k| lift(d, law_at(d, phis, k).s)).collect();
     NumTable {
         id,
         columns: positions(first, phis.len()),
         rows: vec![
-            plain("φ", Unit::Deg, col(&|phi, _| phi.to_degrees())).exactly(),
-            plain(s, us, col(&|phi, k| lift(d, at(phi, k).s))),
-            plain(v, uv, col(&|phi, k| analog(d, at(phi, k).ds))),
-            plain(a, uv, col(&|phi, k| analog(d, at(phi, k).dds))),
-            plain("α", Unit::Deg, col(&|phi, _| d.profile.pressure_angle_on_profile(phi).to_degrees())),
+            plain("φ", Unit::Deg, phi_deg).exactly(),
+            plain(s, us, lifts),
+            jumping_row(v, uv, phis, &|phi| analog(d, at(phi).ds)),
+            jumping_row(a, uv, phis, &|phi| analog(d, at(phi).dds)),
+            jumping_row("α", Unit::Deg, phis, &|phi| d.profile.pressure_angle_on_profile(phi).to_degrees()),
         ],
     }
 }

@@ -162,6 +162,11 @@ pub struct Row {
     /// The decimals this row shares with others of one quantity in its table (see
     /// [`share_decimals`]); `None`: the row's own.
     pub decimals: Option<usize>,
+    /// Where the quantity jumps at a column's position (a law's acceleration at the middle
+    /// of a uniformly accelerated phase), its value just after it; the cell's value is the
+    /// one just before. The tables print both, "before/after" ([`JUMP`](crate::num::digits::JUMP)), as the diagram
+    /// draws the jump; the CSV and the answers hold the value before. Empty: no jumps.
+    pub jumps: Vec<Option<f64>>,
 }
 
 impl Row {
@@ -180,6 +185,7 @@ impl Row {
             exact: false,
             absent: Vec::new(),
             decimals: None,
+            jumps: Vec::new(),
         }
     }
 
@@ -202,9 +208,22 @@ impl Row {
         self
     }
 
-    /// The values its cells print (the absent ones left out).
+    /// The same row with the values after its jumps (see [`Row::jumps`]).
+    pub fn jumping(mut self, jumps: Vec<Option<f64>>) -> Row {
+        self.jumps = jumps;
+        self
+    }
+
+    /// The values its cells print (the absent ones left out, a jump's value after it
+    /// included).
     pub fn present(&self) -> impl Iterator<Item = f64> + '_ {
-        (0..self.values.len()).filter(|&c| !self.is_absent(c)).map(|c| self.values[c])
+        let present = (0..self.values.len()).filter(|&c| !self.is_absent(c));
+        present.flat_map(|c| std::iter::once(self.values[c]).chain(self.jump_at(c)))
+    }
+
+    /// The value just after column `c`'s position where the quantity jumps there.
+    pub fn jump_at(&self, c: usize) -> Option<f64> {
+        self.jumps.get(c).copied().flatten()
     }
 
     /// Whether the cell in column `c` has no value (see [`Row::absent`]).
@@ -234,14 +253,16 @@ impl Row {
         let decimals =
             if self.exact { self.decimals.or_else(|| digits::exact_decimals(&present)) } else { self.decimals };
         let row = decimals.unwrap_or_else(|| digits::row_decimals(&present));
-        self.values
-            .iter()
-            .enumerate()
-            .map(|(c, &v)| match decimals {
+        let one = |v: f64| match decimals {
+            _ if whole && whole_value(v) => digits::at_decimals(v, 0),
+            Some(d) => digits::fixed(v, d),
+            None => digits::at_decimals(v, row),
+        };
+        (0..self.values.len())
+            .map(|c| match self.jump_at(c) {
                 _ if self.is_absent(c) => "—".to_string(),
-                _ if whole && whole_value(v) => digits::at_decimals(v, 0),
-                Some(d) => digits::fixed(v, d),
-                None => digits::at_decimals(v, row),
+                Some(after) => format!("{}{}{}", one(self.values[c]), digits::JUMP, one(after)),
+                None => one(self.values[c]),
             })
             .collect()
     }
@@ -257,6 +278,7 @@ impl Row {
             exact: false,
             absent: Vec::new(),
             decimals: None,
+            jumps: Vec::new(),
         }
     }
 }
