@@ -58,6 +58,8 @@ struct Line {
     text: String,
     advance: f64,
     breakable: bool,
+    /// The last line of its paragraph.
+    ends_para: bool,
 }
 
 /// Notes of at most this many lines in one column stay in one: a block that short reads at
@@ -66,16 +68,31 @@ struct Line {
 pub const SHORT_LINES: usize = 4;
 
 /// Sets `paras` at lettering height `h` in as many columns as `width` mm hold, or in one
-/// where they are [`SHORT_LINES`] lines or fewer in it.
+/// where they are [`SHORT_LINES`] lines or fewer in it. Columns end between paragraphs
+/// where that costs at most a line of height and leaves no column of one line; else notes
+/// of at most twice [`SHORT_LINES`] lines stay in one column, and only longer ones have a
+/// column end inside a paragraph: a sentence cut at a column's foot and taken up at the
+/// next one's head reads as two notes (the worked example's assumption, "…из всех
+/// вариантов" at the left's foot, "именно этот…" at the right's head).
 pub fn set(paras: &[Para], h: f64, width: f64) -> Set {
     let (n, col_w) = columns(width);
+    let one_column = || placed(&lines_of(paras, h, width.min(COLUMN_MAX)), &[0], width.min(COLUMN_MAX));
     let lines = lines_of(paras, h, width.min(COLUMN_MAX));
     if n == 1 || lines.len() <= SHORT_LINES {
-        return placed(&lines, &[0], width.min(COLUMN_MAX));
+        return one_column();
     }
     let lines = lines_of(paras, h, col_w);
-    let starts = balanced_starts(&lines, n);
-    placed(&lines, &starts, col_w)
+    let anywhere = placed(&lines, &balanced_starts(&lines, n, &|l| l.breakable), col_w);
+    let pitch = LINE_PITCH * h;
+    let between_starts = balanced_starts(&lines, n, &|l| l.breakable && l.ends_para);
+    let ends = between_starts.iter().skip(1).copied().chain([lines.len()]);
+    let lone = between_starts.iter().zip(ends).any(|(&from, to)| to - from < 2);
+    let between = placed(&lines, &between_starts, col_w);
+    if !lone && between.height <= anywhere.height + pitch + 1e-9 {
+        return between;
+    }
+    let one = one_column();
+    if one.lines.len() <= 2 * SHORT_LINES { one } else { anywhere }
 }
 
 /// `paras` wrapped at height `h` in a column `col_w` wide, line by line.
@@ -89,7 +106,7 @@ fn lines_of(paras: &[Para], h: f64, col_w: f64) -> Vec<Line> {
             let end = i == last;
             // A paragraph's single line is not left alone at a column's foot or head.
             let breakable = if end { !p.keep_with_next } else { i >= 1 && last - i >= 2 };
-            lines.push(Line { text, advance: pitch + if end { p.after } else { 0.0 }, breakable });
+            lines.push(Line { text, advance: pitch + if end { p.after } else { 0.0 }, breakable, ends_para: end });
         }
     }
     lines
@@ -112,8 +129,9 @@ fn placed(lines: &[Line], starts: &[usize], col_w: f64) -> Set {
 }
 
 /// Where each column starts (line indices, the first 0): the lowest greatest column height
-/// with which the lines, broken only where they may be, fill at most `n` columns in order.
-fn balanced_starts(lines: &[Line], n: usize) -> Vec<usize> {
+/// with which the lines, broken only after those `may_end` allows, fill at most `n` columns
+/// in order.
+fn balanced_starts(lines: &[Line], n: usize, may_end: &dyn Fn(&Line) -> bool) -> Vec<usize> {
     let total: f64 = lines.iter().map(|l| l.advance).sum();
     let mut best = vec![0];
     if n < 2 || lines.len() < 2 {
@@ -128,7 +146,7 @@ fn balanced_starts(lines: &[Line], n: usize) -> Vec<usize> {
         candidates.push(prefix);
     }
     for &limit in candidates.iter().filter(|&&c| c * n as f64 >= total - 1e-9) {
-        if let Some(starts) = fill(lines, n, limit) {
+        if let Some(starts) = fill(lines, n, limit, may_end) {
             best = starts;
             break;
         }
@@ -136,9 +154,9 @@ fn balanced_starts(lines: &[Line], n: usize) -> Vec<usize> {
     best
 }
 
-/// Fills columns in order, each up to `limit` mm of advances, breaking after the last
-/// breakable line that fits; None when more than `n` columns are needed.
-fn fill(lines: &[Line], n: usize, limit: f64) -> Option<Vec<usize>> {
+/// Fills columns in order, each up to `limit` mm of advances, breaking after the last line
+/// that fits and `may_end` allows; None when more than `n` columns are needed.
+fn fill(lines: &[Line], n: usize, limit: f64, may_end: &dyn Fn(&Line) -> bool) -> Option<Vec<usize>> {
     let mut starts = vec![0];
     let mut from = 0;
     while from < lines.len() {
@@ -149,7 +167,7 @@ fn fill(lines: &[Line], n: usize, limit: f64) -> Option<Vec<usize>> {
             if used > limit + 1e-9 {
                 break;
             }
-            if l.breakable || k + 1 == lines.len() {
+            if may_end(l) || k + 1 == lines.len() {
                 cut = Some(k + 1);
             }
         }
@@ -233,6 +251,24 @@ mod tests {
             Para::new(words(3), 1.0),
         ];
         assert!(set(&five, 2.5, 390.0).lines.iter().any(|(p, _)| p.x > 0.0));
+    }
+
+    #[test]
+    fn a_short_note_is_not_cut_inside_a_sentence() {
+        // The worked example's notes: a line, a heading and one paragraph of four lines in
+        // two columns broke that paragraph after its second line.
+        let paras = [Para::new(words(5), 2.0), Para::heading("Assumed:", 0.5), Para::new(words(70), 1.0)];
+        let s = set(&paras, 2.5, 390.0);
+        let n = s.lines.len();
+        assert!((5..=8).contains(&n), "{n} lines");
+        let last: Vec<f64> = s.lines.iter().skip(2).map(|(p, _)| p.x).collect();
+        assert!(last.iter().all(|&x| x == last[0]), "the paragraph in one column: {:?}", s.lines);
+        // Two paragraphs of three lines each: a column each, level, none cut.
+        let two = [Para::new(words(40), 1.0), Para::new(words(40), 1.0)];
+        let s = set(&two, 2.5, 390.0);
+        let xs: Vec<f64> = s.lines.iter().map(|(p, _)| p.x).collect();
+        let half = xs.len() / 2;
+        assert!(xs[..half].iter().all(|&x| x == 0.0) && xs[half..].iter().all(|&x| x > 0.0), "{:?}", s.lines);
     }
 
     #[test]
