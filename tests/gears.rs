@@ -456,11 +456,12 @@ fn the_stage_ratio_is_read_off_the_plan_of_angular_velocities() {
 #[test]
 fn the_mesh_dimensions_s_e_and_p_on_wheel_1_in_true_size() {
     // The worked example's pair by hand: m = 5 mm, no shift: p = πm, s = e = p/2 (true size,
-    // not the 5:1 drawing's), four significant digits with the decimal comma.
+    // not the 5:1 drawing's), to 0,01 mm with the decimal comma, as every dimension of the
+    // drawing that is not exact at fewer decimals (not 7,854 beside p = 15,71).
     let p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
     let b = sheet2(&p);
     let pitch = std::f64::consts::PI * 5.0;
-    let half = format!("{:.3}", pitch / 2.0).replace('.', ",");
+    let half = format!("{:.2}", pitch / 2.0).replace('.', ",");
     let whole = format!("{:.2}", pitch).replace('.', ",");
     for (name, value) in [("s", &half), ("e", &half), ("p", &whole)] {
         let written = format!(">{name}<tspan> = {value}</tspan>");

@@ -42,15 +42,17 @@ pub fn trimmed(x: f64, lang: Language) -> String {
     }
 }
 
-/// A dimension's value, mm: with the fewest decimals (up to three) that write it exactly
-/// — h_a = 5, h_f = 6,25, a_w = 90, as the course's drawings dimension them — else with
-/// four significant digits (p = 15,71).
+/// A dimension's value, mm: with the fewest decimals (up to two) that write it exactly —
+/// h_a = 5, h_f = 6,25, a_w = 90, as the course's drawings dimension them — else to 0,01 mm
+/// (p = 15,71, h_a = 4,42), as the course writes a gear's lengths and the wheels' table its
+/// radii: one drawing's dimensions at one precision, not h_a = 4,420 beside h_f = 1,95.
 pub fn dimension(x: f64, lang: Language) -> String {
-    match digits::exact_decimals(&[x]) {
-        Some(d) => localise(&digits::at_decimals(x, d), lang),
-        None => value(x, lang),
-    }
+    let decimals = digits::exact_decimals(&[x]).filter(|&d| d <= DIMENSION_DECIMALS);
+    localise(&digits::at_decimals(x, decimals.unwrap_or(DIMENSION_DECIMALS)), lang)
 }
+
+/// The decimals of a dimension that is not exact at fewer: 0,01 mm.
+const DIMENSION_DECIMALS: usize = 2;
 
 /// A tiny number in the form 1,6·10⁻¹³ (zero as 0), as the sheets show a residual.
 pub fn scientific(x: f64, lang: Language) -> String {
@@ -103,6 +105,11 @@ mod tests {
         assert_eq!(dimension(90.0 + 1e-12, Language::En), "90", "round-off of an exact value");
         assert_eq!(dimension(15.707963267948966, Language::Ru), "15,71");
         assert_eq!(dimension(-1.8, Language::En), "−1.8");
+        // Not exact at two decimals: to 0,01 mm, as every other dimension of the drawing.
+        assert_eq!(dimension(4.419_98, Language::Ru), "4,42", "not 4,420 beside h_f = 1,95");
+        assert_eq!(dimension(1.5625, Language::Ru), "1,56");
+        assert_eq!(dimension(0.625, Language::En), "0.63");
+        assert_eq!(dimension(287.433_6, Language::En), "287.43");
     }
 
     #[test]
