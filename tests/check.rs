@@ -212,3 +212,22 @@ fn a_gears_radius_in_mm_is_its_value_and_its_drawn_length_comes_with_the_mm_colu
     // Read as a paper length, 39.94 mm would be a fifth of the drawn 199.7 mm: it must not be.
     assert!(stdout(&o).contains("199.7"), "{}", stdout(&o));
 }
+
+/// Where the law's acceleration jumps at a position (the custom-laws fixture's return at
+/// position 11: −3 then +1 of 30 mm/(0.375·φ_ret²), computed here), the table prints both
+/// values and either one passes; a value near neither fails.
+#[test]
+fn at_a_jump_either_value_passes() {
+    let project = concat!(env!("CARGO_MANIFEST_DIR"), "/fixtures/cams/custom-laws.yaml");
+    let per_rad2 = 30.0 / (0.375 * 80f64.to_radians().powi(2));
+    let run = |v: f64| {
+        let text = format!("id,value,unit\nsheet3.law-return.d2s_dphi2.11,{v:.2},mm\n");
+        check(&[project, temp("jump.csv", &text).to_str().unwrap()])
+    };
+    for v in [-3.0 * per_rad2, per_rad2] {
+        let o = run(v);
+        assert_eq!(o.status.code(), Some(0), "{v}: {}{}", stdout(&o), stderr(&o));
+    }
+    let o = run(-per_rad2);
+    assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+}

@@ -168,6 +168,8 @@ struct Target {
     length_mm: Option<f64>,
     /// The largest |value| of its row (the same quantity at every position).
     row_max: f64,
+    /// A jump's value after its position, as right as `value` (see [`Answer::after`]).
+    after: Option<f64>,
 }
 
 impl Reference {
@@ -189,6 +191,7 @@ impl Reference {
             scale: drawn.get(a.id.as_str()).copied(),
             length_mm: None,
             row_max: row_max[&row(a)],
+            after: a.after,
         });
         let segments = self.segments.iter().map(|(id, s)| Target {
             id: id.clone(),
@@ -197,6 +200,7 @@ impl Reference {
             scale: Some(s.scale),
             length_mm: Some(s.length_mm),
             row_max: s.value.abs(),
+            after: None,
         });
         answers.chain(segments).collect()
     }
@@ -353,6 +357,13 @@ fn verdict(
         other => other.clone(),
     };
     let (exact, student, unit, paper) = match &given {
+        // At a jump the value after it is as right as the one before: the nearer is judged.
+        Given::Value { value, unit } if t.after.is_some() => {
+            let student = value * convert(unit)?;
+            let after = t.after.unwrap_or(t.value);
+            let exact = if (student - after).abs() < (student - t.value).abs() { after } else { t.value };
+            (exact, student, t.unit.to_string(), t.scale)
+        }
         Given::Value { value, unit } => (t.value, value * convert(unit)?, t.unit.to_string(), t.scale),
         Given::Paper { mm, scale: Some(s), unit } => {
             let mu = s * convert(unit)?;
@@ -410,7 +421,7 @@ mod tests {
     use super::*;
 
     fn reference() -> Reference {
-        let answer = |id: &str, value| Answer { id: id.into(), value, unit: "m/s" };
+        let answer = |id: &str, value| Answer { id: id.into(), value, unit: "m/s", after: None };
         Reference {
             answers: vec![answer("sheet1.velocities.v_B.0", 0.0), answer("sheet1.velocities.v_B.3", 1.0)],
             segments: vec![(

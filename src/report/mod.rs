@@ -43,6 +43,10 @@ pub struct Answer {
     pub id: String,
     pub value: f64,
     pub unit: &'static str,
+    /// Where the quantity jumps at the cell's position, its value just after (`value` is
+    /// the one before): either is right (see [`Row::jumps`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub after: Option<f64>,
 }
 
 impl NoteTable {
@@ -62,7 +66,9 @@ impl NoteTable {
     pub fn answers(&self, prefix: &str) -> Vec<Answer> {
         let t = &self.table;
         let cells = t.rows.iter().flat_map(|r| r.values.iter().enumerate().map(move |(c, &v)| (r, c, v)));
-        cells.map(|(r, c, value)| Answer { id: t.cell_id(prefix, r, c), value, unit: r.unit.si() }).collect()
+        cells
+            .map(|(r, c, value)| Answer { id: t.cell_id(prefix, r, c), value, unit: r.unit.si(), after: r.jump_at(c) })
+            .collect()
     }
 }
 
