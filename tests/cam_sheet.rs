@@ -169,9 +169,9 @@ fn the_law_table_gives_both_values_where_the_acceleration_jumps_inside_a_phase()
     let jumps: Vec<usize> = (0..row.values.len()).filter(|&c| row.jump_at(c).is_some()).collect();
     assert_eq!(jumps, vec![2], "the acceleration jumps at position 11 only");
     let printed = t.printed_values(row);
-    assert_eq!(printed[2], "-123.1/41.0", "{printed:?}");
+    assert_eq!(printed[2], "-123.1→41.0", "{printed:?}");
     let md = tmm_sheets::report::markdown(t, "sheet3");
-    assert!(md.contains("| −123,1/41,0 |"), "{md}");
+    assert!(md.contains("| −123,1→41,0 |"), "{md}");
     // The rise's triangle law is continuous: no cell of its table jumps.
     let rise = b.output.tables.iter().find(|t| t.table.id == "law-rise").unwrap();
     assert!(rise.table.rows.iter().all(|r| r.jumps.iter().all(Option::is_none)));
@@ -615,8 +615,8 @@ fn twin_tables_write_one_quantity_with_one_number_of_decimals() {
                     let id = line.split('"').nth(1).unwrap();
                     let key = id.replace("-rise", "").replace("-return", "");
                     let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).skip(2).collect();
-                    // A jump's cell holds two values ("−123,1/41,0"), each at the row's decimals.
-                    rows.push((key, cells.iter().flat_map(|c| c.split('/')).map(decimals).collect()));
+                    // A jump's cell holds two values ("−123,1→41,0"), each at the row's decimals.
+                    rows.push((key, cells.iter().flat_map(|c| c.split('→')).map(decimals).collect()));
                 }
             }
             let class = |key: &str| {

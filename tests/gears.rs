@@ -371,7 +371,8 @@ fn the_centre_distance_is_dimensioned_broken_off_where_o2_is_off_the_drawing() {
 
 /// Wheel 1's addendum and dedendum are dimensioned along one of its radii, the guide's pair
 /// by hand: h_a = h_a*·m = 5 mm and h_f = (h_a* + c*)·m = 6.25 mm, at 5:1 lines 25 and 31.25 mm
-/// long pointing at O1, their values "h_a = 5" and "h_f = 6,25" (exact, as a hand writes them).
+/// long pointing at O1, their values "h_a1 = 5" and "h_f1 = 6,25" (exact, as a hand writes them;
+/// wheel 1's, as a shifted pair's wheel 2 has others).
 #[test]
 fn the_addendum_and_dedendum_are_dimensioned_on_a_radius_of_wheel_1() {
     use tmm_sheets::drawing::obstacles::segments;
@@ -380,7 +381,7 @@ fn the_addendum_and_dedendum_are_dimensioned_on_a_radius_of_wheel_1() {
     let b = sheet2(&p);
     let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
     let o1 = mesh.texts().find(|t| t.text == "O" && t.sub == "1").expect("O1's name").bbox();
-    for (sub, tail, length) in [("a", " = 5", 25.0), ("f", " = 6,25", 31.25)] {
+    for (sub, tail, length) in [("a1", " = 5", 25.0), ("f1", " = 6,25", 31.25)] {
         assert!(mesh.texts().any(|t| t.text == "h" && t.sub == sub && t.tail == tail), "h_{sub}{tail}");
         let radial = mesh.items.iter().flat_map(segments).find(|(a, b)| {
             let d = *b - *a;
@@ -463,9 +464,14 @@ fn the_mesh_dimensions_s_e_and_p_on_wheel_1_in_true_size() {
     let pitch = std::f64::consts::PI * 5.0;
     let half = format!("{:.2}", pitch / 2.0).replace('.', ",");
     let whole = format!("{:.2}", pitch).replace('.', ",");
-    for (name, value) in [("s", &half), ("e", &half), ("p", &whole)] {
-        let written = format!(">{name}<tspan> = {value}</tspan>");
-        assert!(b.svg.contains(&written), "{written} on the sheet");
+    // s and e are wheel 1's (s₁, e₁: a shifted pair's wheel 2 has others), p the pair's.
+    let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
+    for (name, sub, value) in [("s", "1", &half), ("e", "1", &half), ("p", "", &whole)] {
+        let tail = format!(" = {value}");
+        assert!(
+            mesh.texts().any(|t| t.text == name && t.sub == sub && t.tail == tail),
+            "{name}_{sub}{tail} on the mesh"
+        );
     }
 }
 
@@ -575,4 +581,28 @@ fn the_wheels_radii_are_written_with_one_number_of_decimals() {
             );
         }
     }
+}
+
+/// The tables write a gear's lengths as the mesh dimensions them, to 0,01 mm: the KHK
+/// pair's p = 3π = 9,42 mm (the table wrote 9,425 beside the drawing's 9,42) and wheel 1's
+/// s₁ = 6,02 mm, the same digits in the table and on the drawing.
+#[test]
+fn the_tables_and_the_mesh_write_a_length_alike() {
+    let mut p = pipeline::load(&fixture_text("gears/handbook-khk")).unwrap();
+    p.info.language = tmm_sheets::drawing::labels::Language::Ru;
+    let b = sheet2(&p);
+    let printed = |table: &str, key: &str| {
+        let t = b.output.tables.iter().find(|t| t.table.id == table).unwrap();
+        t.printed_values(t.table.rows.iter().find(|r| r.key == key).unwrap())
+    };
+    assert_eq!(printed("pair", "p"), ["9.42"], "p = 3π");
+    let s1 = printed("wheels", "s")[0].replace('.', ",");
+    let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
+    let on_mesh = |name: &str, sub: &str| {
+        mesh.texts()
+            .find(|t| t.text == name && t.sub == sub && t.tail.starts_with(" = "))
+            .map(|t| t.tail[3..].to_string())
+    };
+    assert_eq!(on_mesh("p", "").as_deref(), Some("9,42"));
+    assert_eq!(on_mesh("s", "1"), Some(s1));
 }

@@ -57,7 +57,7 @@ impl Table {
 
     /// The widths of the value columns: every column as wide as the table's least width or
     /// its widest single value or heading, and a column holding a jump's two values
-    /// ("1,169/−1,169", see [`JUMP`]) as wide as those need,
+    /// ("1,169→−1,169", see [`JUMP`]) as wide as those need,
     /// so one jump does not widen the whole table.
     fn column_widths(&self) -> Vec<f64> {
         let h = self.text_h;

@@ -5,8 +5,9 @@
 use super::{math, tol};
 
 /// Between one cell's two values where its quantity jumps at the cell's position: the value
-/// just before, then just after ("1.169/−1.169"), as a diagram draws the jump.
-pub const JUMP: char = '/';
+/// just before, then just after ("1.169→−1.169": from one to the other; a slash read as a
+/// fraction), as a diagram draws the jump.
+pub const JUMP: char = '→';
 
 /// `x` with four significant digits and at most nine decimals, a point and a hyphen-minus.
 pub fn significant(x: f64) -> String {

@@ -1,7 +1,7 @@
 //! Sheet 2's tables for the note: the wheels and the pair (lengths in mm, as the course
 //! writes gears), the planetary stage and its conditions with their numbers.
 
-use super::{Column, NumTable, Row, Sub, SubWord, Unit, share_decimals};
+use super::{Column, NumTable, Row, Sub, SubWord, Unit, share_decimals_within};
 use crate::gears::pair::Pair;
 use crate::gears::planetary::Stage;
 use crate::num::units::mm;
@@ -10,15 +10,23 @@ fn named(symbol: &'static str, sub: &str, unit: Unit, values: Vec<f64>) -> Row {
     Row::new(symbol, if sub.is_empty() { Sub::None } else { Sub::name(sub) }, unit, values)
 }
 
-/// The rows of one kind share their decimals (see [`share_decimals`]): each group of keys
-/// (a and a_w; the stage's radii; u_1H and u_req; ε and ε_drawn), lengths to at least
-/// 0,01 mm. Rows of different quantities keep their own four significant digits.
-fn with_shared_decimals(mut rows: Vec<Row>, groups: &[(&[&str], usize)]) -> Vec<Row> {
-    for &(keys, at_least) in groups {
-        share_decimals(rows.iter_mut().filter(|r| keys.contains(&r.key.as_str())), at_least);
+/// The rows of one kind share their decimals (see [`share_decimals_within`]): each group of
+/// keys (a wheel's radii; the pair's lengths; u_1H and u_req; ε and ε_drawn) within its
+/// bounds — lengths at 0,01 mm ([`LENGTHS`]). Rows of different quantities keep their own
+/// four significant digits.
+fn with_shared_decimals(mut rows: Vec<Row>, groups: &[(&[&str], (usize, usize))]) -> Vec<Row> {
+    for &(keys, bounds) in groups {
+        share_decimals_within(rows.iter_mut().filter(|r| keys.contains(&r.key.as_str())), bounds);
     }
     rows
 }
+
+/// A gear's lengths in its tables: to 0,01 mm, as the course writes them and the mesh's
+/// dimensions print them.
+const LENGTHS: (usize, usize) = (2, 2);
+
+/// Decimals for four significant digits, however many.
+const ANY: (usize, usize) = (0, usize::MAX);
 
 /// Table of the two wheels: one column per wheel.
 pub fn wheels(p: &Pair) -> NumTable {
@@ -41,7 +49,7 @@ pub fn wheels(p: &Pair) -> NumTable {
             named("s", "", Unit::Mm, col(&|i| mm(w[i].tooth_thickness))),
             named("s", "a", Unit::Mm, col(&|i| mm(w[i].tip_thickness))),
         ],
-        &[(&["r", "r_b", "r_a", "r_f", "r_w"], 2), (&["s", "s_a"], 2)],
+        &[(&["r", "r_b", "r_a", "r_f", "r_w"], LENGTHS), (&["s", "s_a"], LENGTHS)],
     );
     NumTable { id: "wheels", columns: vec![Column::labelled("1"), Column::labelled("2")], rows }
 }
@@ -72,7 +80,8 @@ pub fn pair(p: &Pair, eps_drawn: f64) -> NumTable {
                 named("ε", "", Unit::None, one(p.contact_ratio)),
                 Row::new("ε", Sub::Word(SubWord::Drawn), Unit::None, one(eps_drawn)),
             ],
-            &[(&["a", "a_w"], 2), (&["epsilon", "epsilon_drawn"], 0)],
+            // The centre distances apart: whole where both are (a = a_w = 90, not 90,00).
+            &[(&["a", "a_w"], LENGTHS), (&["h", "p", "p_b", "g_alpha"], LENGTHS), (&["epsilon", "epsilon_drawn"], ANY)],
         ),
     )
 }
@@ -88,7 +97,7 @@ pub fn stage(s: &Stage, module: f64) -> NumTable {
     rows.extend(names.iter().zip(&s.z).map(|(n, &z)| named("r", n, Unit::Mm, vec![mm(module * f64::from(z) / 2.0)])));
     rows.push(named("a", "H", Unit::Mm, vec![mm(module * f64::from(s.z[0] + s.z[1]) / 2.0)]));
     let radii = ["r_1", "r_2", "r_2p", "r_3", "a_H"];
-    NumTable::single("planetary", with_shared_decimals(rows, &[(&radii, 2), (&["u_1H", "u_required"], 0)]))
+    NumTable::single("planetary", with_shared_decimals(rows, &[(&radii, LENGTHS), (&["u_1H", "u_required"], ANY)]))
 }
 
 /// Every condition with its value, limit and whether it is met (1) or not (0).

@@ -10,7 +10,8 @@ mod table;
 
 pub use segments::{AnswerKeys, Segment, segments_csv};
 pub use table::{
-    Column, ForceKind, NumTable, Quantity, Row, Sub, SubWord, Unit, ascii_key, share_decimals, share_exact_decimals,
+    Column, ForceKind, NumTable, Quantity, Row, Sub, SubWord, Unit, ascii_key, share_decimals, share_decimals_within,
+    share_exact_decimals,
 };
 
 use std::fmt::Write;

@@ -164,7 +164,7 @@ pub struct Row {
     pub decimals: Option<usize>,
     /// Where the quantity jumps at a column's position (a law's acceleration at the middle
     /// of a uniformly accelerated phase), its value just after it; the cell's value is the
-    /// one just before. The tables print both, "before/after" ([`JUMP`](crate::num::digits::JUMP)), as the diagram
+    /// one just before. The tables print both, "before→after" ([`JUMP`](crate::num::digits::JUMP)), as the diagram
     /// draws the jump; the CSV and the answers hold the value before. Empty: no jumps.
     pub jumps: Vec<Option<f64>>,
 }
@@ -255,7 +255,7 @@ impl Row {
         let row = decimals.unwrap_or_else(|| digits::row_decimals(&present));
         let one = |v: f64| match decimals {
             _ if whole && whole_value(v) => digits::at_decimals(v, 0),
-            Some(d) => digits::fixed(v, d),
+            Some(d) => digits::at_decimals(v, d),
             None => digits::at_decimals(v, row),
         };
         (0..self.values.len())
@@ -291,12 +291,19 @@ impl Row {
 /// keep printing without decimals; counts and rows exact at few decimals (given values) keep
 /// their own.
 pub fn share_decimals<'a>(rows: impl IntoIterator<Item = &'a mut Row>, at_least: usize) {
+    share_decimals_within(rows, (at_least, usize::MAX));
+}
+
+/// [`share_decimals`] with the decimals kept within `(at_least, at_most)`: a gear's lengths
+/// at 0,01 mm exactly, as the course writes them and the mesh's dimensions print them (the
+/// table's p = 9,425 beside the drawing's p = 9,42 read as two values).
+pub fn share_decimals_within<'a>(rows: impl IntoIterator<Item = &'a mut Row>, (at_least, at_most): (usize, usize)) {
     let mut rows: Vec<&mut Row> = rows.into_iter().filter(|r| !r.count && !r.exact).collect();
     let values: Vec<f64> = rows.iter().flat_map(|r| r.present()).collect();
     if values.iter().all(|&v| crate::num::digits::nearly_whole(v)) {
         return;
     }
-    let decimals = crate::num::digits::row_decimals(&values).max(at_least);
+    let decimals = crate::num::digits::row_decimals(&values).clamp(at_least, at_most.max(at_least));
     for r in &mut rows {
         r.decimals = Some(decimals);
     }
@@ -411,5 +418,19 @@ mod tests {
         assert_eq!(Row::new("r", Sub::Word(SubWord::Pitch), Unit::Mm, vec![]).key, "r_pitch");
         assert_eq!(Column::labelled("4′").key, "4p");
         assert_eq!(ascii_key("d²s/dφ²"), "d2s_dphi2");
+    }
+
+    /// Shared decimals round half up as every other value does (the course's rounding):
+    /// 0,625 and 28,125 at two decimals are 0,63 and 28,13, where the formatter's binary
+    /// rounding gave 0,62 beside 28,13.
+    #[test]
+    fn shared_decimals_round_half_up() {
+        let mut rows = [Row::new("s", Sub::None, Unit::Mm, vec![0.625, 28.125, 3.125])];
+        share_decimals_within(rows.iter_mut(), (2, 2));
+        assert_eq!(rows[0].printed(false), ["0.63", "28.13", "3.13"]);
+        // Held within the bounds: four significant digits would give three decimals.
+        let mut rows = [Row::new("p", Sub::None, Unit::Mm, vec![9.424_778])];
+        share_decimals_within(rows.iter_mut(), (2, 2));
+        assert_eq!(rows[0].printed(false), ["9.42"]);
     }
 }

@@ -80,16 +80,19 @@ pub fn draw(
     let w1 = &p.wheels[0];
     let step = std::f64::consts::TAU / f64::from(w1.z);
     let psi = w1.tooth_thickness / (2.0 * w1.pitch);
-    let value = |name: &str, x: f64| LabelText::new(name, "").with_tail(format!(" = {}", fmt::dimension(mm(x), lang)));
+    // s and e are wheel 1's (a shifted pair's wheel 2 has others), p the pair's.
+    let value = |name: &str, sub: &str, x: f64| {
+        LabelText::new(name, sub).with_tail(format!(" = {}", fmt::dimension(mm(x), lang)))
+    };
     let r_s = v.len(w1.root) - S_INSIDE_ROOT;
     let r_p = v.len(w1.root) - P_INSIDE_ROOT;
     let arc = Arc { v, area, r_feature: v.len(w1.pitch) };
     let (right, left) = (tooth - psi, tooth + psi);
     let next = tooth + step - psi;
     let values = [
-        arc.dimension(g, r_s, (right, left), value("s", w1.tooth_thickness)),
-        arc.dimension(g, r_s, (left, next), value("e", p.pitch - w1.tooth_thickness)),
-        arc.dimension(g, r_p, (right, next), value("p", p.pitch)),
+        arc.dimension(g, r_s, (right, left), value("s", "1", w1.tooth_thickness)),
+        arc.dimension(g, r_s, (left, next), value("e", "1", p.pitch - w1.tooth_thickness)),
+        arc.dimension(g, r_p, (right, next), value("p", "", p.pitch)),
     ];
     // s's value set first may take the only spot e's has (and the other way round): the
     // order that leaves fewer values to the placer's leaders, s's first on a tie.
@@ -249,7 +252,9 @@ pub fn heights(
     // The values beside their lines toward the teeth (the angles are past 90°), where the
     // wheel's body is empty: the circles' names stand at the other side, at the area's edge.
     let side = Vec2::new(-along.y, along.x);
-    let dims = [(w1.pitch, w1.tip, value("a", w1.tip - w1.pitch)), (w1.root, w1.pitch, value("f", w1.pitch - w1.root))];
+    // Wheel 1's heights (a shifted pair's wheel 2 has others).
+    let dims =
+        [(w1.pitch, w1.tip, value("a1", w1.tip - w1.pitch)), (w1.root, w1.pitch, value("f1", w1.pitch - w1.root))];
     let mids: Vec<kurbo::Point> =
         dims.iter().map(|&(r0, r1, _)| symbols::dimension(g, on(deg, r0), on(deg, r1), Vec2::ZERO)).collect();
     // Each value along its line where it fits between the circles crossing it, else level
