@@ -283,6 +283,32 @@ fn the_nomogram_keeps_its_labels_and_title_inside_its_region_on_catalogue_varian
     }
 }
 
+/// Catalogue variants whose working profile's name hung 56–59 mm off in Russian, its
+/// leader across the cam or round it, where the middles of the phases it was named at had
+/// no near spot: a small cam in a fan of rocker lines (task 4 variant 40), a rocker cam
+/// (task 10 variant 11) and a large cam whose near dwell had room inside it a quarter of
+/// the way along (task 11 variant 45). Named further along its line, each stands near.
+#[test]
+fn the_working_profiles_name_stands_near_the_profile_on_catalogue_variants() {
+    let catalogue = Catalogue::embedded().unwrap();
+    for (task, variant) in [("4", 40), ("10", 11), ("11", 45)] {
+        let name = format!("task {task} variant {variant} Ru");
+        let Variant::Project { text, .. } = catalogue.task(task).unwrap().project(variant, Language::Ru, "").unwrap()
+        else {
+            panic!("{name}: incomplete in the catalogue");
+        };
+        let b = sheet3(&pipeline::load(&text).unwrap_or_else(|e| panic!("{name}: {e:#}")));
+        let l = &b.output.results["layout"];
+        let faults = common::layout_faults(l);
+        assert!(faults.is_empty(), "{name}: {faults:?}: {}", l["problems"]);
+        let longest = l["longest_leader_mm"].as_f64().unwrap_or(0.0);
+        assert!(longest <= NEAR_LEADER_MM, "{name}: a leader of {longest} mm");
+    }
+}
+
+/// The longest leader those sheets may hold, mm: the catalogue's limit for sheet 3.
+const NEAR_LEADER_MM: f64 = 50.0;
+
 /// Positions the nomogram draws at one point share one label (the rise's end and the
 /// return's start at the far dwell, the turn's end and start at B₀), and each allowed angle is
 /// written once, at its mark.

@@ -68,6 +68,11 @@ const SEEN_SHORT: f64 = 8.0;
 pub(super) const TOUCH: f64 = 0.4;
 
 impl Candidate {
+    /// Its leader's length, mm (0: none).
+    pub(super) fn leader_length(&self) -> f64 {
+        self.leader.map_or(0.0, |(a, b)| (b - a).norm())
+    }
+
     /// Whether it hangs on a leader `mm` long or longer.
     pub(super) fn leader_at_least(&self, mm: f64) -> bool {
         self.leader.is_some_and(|(a, b)| (b - a).norm() >= mm)

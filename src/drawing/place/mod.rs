@@ -136,13 +136,22 @@ impl Labels {
     /// A line's name (a profile's, a circle's) with `anchor` on the line: set off on a leader
     /// that reaches the line, so that it cannot be taken for a neighbour's name.
     pub fn add_line_name(&mut self, anchor: Point, pref: Vec2, label: LabelText, h: f64, rank: u8) {
-        self.add_line_name_at_any(&[(anchor, pref)], label, h, rank);
+        self.add_line_name_at_any(&[(anchor, pref)], &[], label, h, rank);
     }
 
     /// A line's name as [`Labels::add_line_name`], with further points of the line (and
-    /// their directions) to name it at when the spots near the first are taken.
-    pub fn add_line_name_at_any(&mut self, spots: &[(Point, Vec2)], label: LabelText, h: f64, rank: u8) {
-        self.push_at_any(spots, Request { rank, names_line: true, ..Request::new(Point::ZERO, Vec2::ZERO, label, h) });
+    /// their directions) to name it at when the spots near the first are taken, and more,
+    /// `along`, where those leave it on a long leader.
+    pub fn add_line_name_at_any(
+        &mut self,
+        spots: &[(Point, Vec2)],
+        along: &[(Point, Vec2)],
+        label: LabelText,
+        h: f64,
+        rank: u8,
+    ) {
+        let req = Request::new(Point::ZERO, Vec2::ZERO, label, h);
+        self.push_at_any(spots, Request { rank, names_line: true, along: along.to_vec(), ..req });
     }
 
     /// A disc (paper mm) every label keeps out of, though nothing drawn bounds it there.
@@ -186,7 +195,10 @@ impl Labels {
         // see the cells drawn before it).
         let own: Vec<Rect> = self.requests.iter().map(|r| self.bounds_of(r, bounds)).collect();
         let outer = own.iter().fold(bounds, |b, o| b.union(*o));
-        let reach = self.requests.iter().flat_map(|r| std::iter::once(r.anchor).chain(r.others.iter().map(|o| o.0)));
+        let reach = self
+            .requests
+            .iter()
+            .flat_map(|r| std::iter::once(r.anchor).chain(r.others.iter().chain(&r.along).map(|o| o.0)));
         let reach = reach.fold(outer, |b, p| b.union_pt(p)).inflate(REACH, REACH);
         let mut drawn = Obstacles::of_items_within(&g.items, reach);
         // The drawing without its breakable lines, where it has any: the same pieces but
@@ -321,27 +333,36 @@ impl Labels {
             // free a few steps further.
             let free = |c: &Candidate, v: &mut Verdict| v.is_free(c, drawn) && c.is_free(&placed);
             let box_free = |c: &Candidate, v: &mut Verdict| v.box_is_free(c, drawn) && c.box_is_free(&placed);
-            let best = self
-                .unambiguous_spot(i, s, &free)
-                .or_else(|| prefer_seen.then(|| seen_spot(s, &free, drawn)).flatten())
-                .or_else(|| prefer_seen.then(|| seen_spot(s, &box_free, drawn)).flatten())
-                .or_else(|| first(s, &free))
-                .or_else(|| first(s, &box_free));
-            // On a long leader: a nearer spot across a line or two, if it weighs less.
-            let best = match best {
-                Some(c) if c.leader_at_least(crossings::LONG) => {
-                    let reads = |c: &Candidate, v: &mut Verdict| box_free(c, v) && self.reads_as_own(i, c);
-                    crossings::nearer_across(s, &reads, (drawn, &placed), c.cost).or(Some(c))
+            let choose = |s: &mut Spots| {
+                let best = self
+                    .unambiguous_spot(i, s, &free)
+                    .or_else(|| prefer_seen.then(|| seen_spot(s, &free, drawn)).flatten())
+                    .or_else(|| prefer_seen.then(|| seen_spot(s, &box_free, drawn)).flatten())
+                    .or_else(|| first(s, &free))
+                    .or_else(|| first(s, &box_free));
+                // On a long leader: a nearer spot across a line or two, if it weighs less.
+                match best {
+                    Some(c) if c.leader_at_least(crossings::LONG) => {
+                        let reads = |c: &Candidate, v: &mut Verdict| box_free(c, v) && self.reads_as_own(i, c);
+                        crossings::nearer_across(s, &reads, (drawn, &placed), c.cost).or(Some(c))
+                    }
+                    best => best,
                 }
-                best => best,
             };
+            let best = choose(s);
             // Far off on a long leader, or nowhere: beside its point on thin lines broken
             // for it, where the drawing has such lines.
             let far = best.as_ref().is_none_or(|c| c.leader_at_least(LONG_LEADER));
-            let best = match layers.hard {
+            let mut best = match layers.hard {
                 Some(hard) if far => on_breakable(s, &self.requests[i], (drawn, hard), &placed).or(best),
                 _ => best,
             };
+            // A line's name still far off its first points: at any point of its line, where
+            // that hangs it on a shorter leader.
+            let long = best.as_ref().filter(|c| c.leader_at_least(LONG_LEADER)).map(Candidate::leader_length);
+            if let (Some(long), Some(along)) = (long, s.along()) {
+                best = choose(along).filter(|o| o.leader_length() < long).or(best);
+            }
             let (cand, clear) = match best {
                 Some(c) => (c, true),
                 None => (least_bad(&s.all(), [drawn, &placed], &self.requests[i], bounds), false),

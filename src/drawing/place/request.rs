@@ -22,6 +22,9 @@ pub(super) struct Request {
     /// Further anchors on the same line with their preferred directions, tried after the
     /// first one's near spots (a profile's name where its first point is crowded).
     pub(super) others: Vec<(Point, Vec2)>,
+    /// More points of a line it names, looked at only where those before leave the name
+    /// far off (see [`super::spots::Spots::along`]).
+    pub(super) along: Vec<(Point, Vec2)>,
     pub(super) label: LabelText,
     /// Further lines set under the first, centred on it (one label in a stack).
     pub(super) more: Vec<LabelText>,
@@ -39,7 +42,18 @@ pub(super) struct Request {
 impl Request {
     /// A one-line label of rank 0 at one anchor.
     pub(super) fn new(anchor: Point, pref: Vec2, label: LabelText, h: f64) -> Request {
-        Request { anchor, pref, others: Vec::new(), label, more: Vec::new(), h, rank: 0, names_line: false, side: None }
+        Request {
+            anchor,
+            pref,
+            others: Vec::new(),
+            along: Vec::new(),
+            label,
+            more: Vec::new(),
+            h,
+            rank: 0,
+            names_line: false,
+            side: None,
+        }
     }
 
     /// The label's box: width, height above the first baseline, depth below it (the further

@@ -18,6 +18,9 @@ pub(super) struct Spots<'a> {
     made: Vec<(Candidate, Verdict)>,
     /// One per anchor, the label's own first.
     streams: Vec<Stream>,
+    /// A line's name with several further points: the same spots with each further point
+    /// costing only [`FURTHER_ANCHOR`] (see [`Spots::along`]).
+    along: Option<Box<Spots<'a>>>,
 }
 
 /// The spots around one anchor not yet taken: the next of [`SPOTS_CHEAPEST_FIRST`] to try
@@ -49,19 +52,39 @@ impl Stream {
 
 impl<'a> Spots<'a> {
     pub(super) fn new(req: &'a Request, bounds: Rect) -> Spots<'a> {
-        let anchors = std::iter::once((req.anchor, req.pref)).chain(req.others.iter().copied());
-        // A further anchor's spots cost as much as the first's a few distances out.
+        // A further anchor's spots cost as much as the first's a few distances out, the
+        // next's a few more.
+        let mut spots = Spots::costing(req, bounds, &req.others[..], |n| n as f64 * FURTHER_ANCHOR);
+        let all: Vec<(Point, Vec2)> = req.others.iter().chain(&req.along).copied().collect();
+        if req.names_line && all.len() > 1 {
+            let along = Spots::costing(req, bounds, &all, |n| n.min(1) as f64 * FURTHER_ANCHOR);
+            spots.along = Some(Box::new(along));
+        }
+        spots
+    }
+
+    /// For a line's name with several further points, its spots round every point of the
+    /// line, those further ones ([`Request::along`] too) each as dear as the second: a
+    /// point far down the list names the line as well as the next. Looked at where the
+    /// points first in the list leave the name on a long leader
+    /// ([`super::Labels::place_measured`]).
+    pub(super) fn along(&mut self) -> Option<&mut Spots<'a>> {
+        self.along.as_deref_mut()
+    }
+
+    /// The spots round the label's anchor and `others`, the `n`th anchor's raised by
+    /// `extra(n)`.
+    fn costing(req: &'a Request, bounds: Rect, others: &[(Point, Vec2)], extra: impl Fn(usize) -> f64) -> Spots<'a> {
+        let anchors = std::iter::once((req.anchor, req.pref)).chain(others.iter().copied());
         let streams = anchors
             .enumerate()
-            .map(|(n, (anchor, pref))| {
-                Stream::new(req, bounds, Around::new(req, anchor, pref, n as f64 * FURTHER_ANCHOR))
-            })
+            .map(|(n, (anchor, pref))| Stream::new(req, bounds, Around::new(req, anchor, pref, extra(n))))
             .collect();
         // Room for every spot of one anchor at once: a constrained label is asked for all of
         // them, and growing the list from 64 as they came copied it three times (2 % of
         // building sheet 1).
         let made = Vec::with_capacity(SPOTS_CHEAPEST_FIRST.len());
-        Spots { req, bounds, made, streams }
+        Spots { req, bounds, made, streams, along: None }
     }
 
     /// Candidate `k` and its verdict, made if need be; none past the last.

@@ -283,3 +283,37 @@ fn a_label_takes_a_short_leader_across_a_line_over_a_long_clean_one() {
     assert!(leader < crossings::LONG, "a leader of {leader} mm");
     assert_clean(g);
 }
+
+/// A line's name whose first points are walled in takes a further point of its line
+/// (`along`) where it stands near, rather than hang on a long leader across the walls (a
+/// small cam's working profile named 56 mm off across the cam, task 4 variant 40 in
+/// Russian); without such a point it stays off on the long leader.
+#[test]
+fn a_lines_name_walled_in_at_its_first_points_goes_along_its_line() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let (walled, open, up) =
+        ([Point::new(20.0, 50.0), Point::new(40.0, 50.0)], Point::new(80.0, 50.0), Vec2::new(0.0, -1.0));
+    for with_along in [false, true] {
+        let mut g = Group::new("g", region);
+        g.line(Point::new(5.0, 50.0), Point::new(95.0, 50.0), crate::drawing::scene::MAIN);
+        // Circles round the first points, 2 mm apart out to 16 mm.
+        for (c, k) in walled.iter().flat_map(|&c| (1..=8).map(move |k| (c, k))) {
+            g.circle(c, 2.0 * k as f64, THIN);
+        }
+        let mut labels = Labels::new();
+        let along = if with_along { vec![(open, up)] } else { Vec::new() };
+        labels.add_line_name_at_any(&walled.map(|p| (p, up)), &along, LabelText::new("profile", ""), 2.5, 0);
+        assert_eq!(labels.place(&mut g, region), vec![true]);
+        let (a, b) = g
+            .leaders
+            .first()
+            .map(|&k| match &g.items[k] {
+                Item::Path { path, .. } => (path.start, path.end()),
+                _ => panic!("a leader that is no line"),
+            })
+            .expect("a line's name has a leader");
+        let long = (b - a).norm() >= LONG_LEADER;
+        assert_eq!(long, !with_along, "a leader of {} mm from {a:?}", (b - a).norm());
+        assert_eq!((a - open).norm() < 1e-9, with_along, "the leader starts at {a:?}");
+    }
+}

@@ -158,22 +158,27 @@ fn name_profiles(labels: &mut Labels, view: View, d: &Design, phis: &[f64], l: &
     // A knife's working profile is its pitch profile: one curve, both names.
     let knife = d.roller == 0.0;
     let name = if knife { l.knife_profile() } else { l.pitch_profile() };
-    labels.add_line_name_at_any(&pitch_name_spots(view, d, phis), LabelText::new(name, ""), 2.5, 3);
+    labels.add_line_name_at_any(&pitch_name_spots(view, d, phis), &[], LabelText::new(name, ""), 2.5, 3);
     if !knife {
         // On the curve itself (its leader reaches it), the text inside the cam, which is
-        // free of the construction: at mid-rise, else mid-return or in a dwell.
+        // free of the construction: at mid-rise, else mid-return or in a dwell; where these
+        // leave it on a long leader, at a phase's quarters too, each as good as the next
+        // (the middles alone hung it 56–59 mm off, across the cam or round it: task 11
+        // variant 45's large cam had room inside a quarter of the way along its near dwell).
         let at = |phi: f64| {
             let (w, _) = pr.working(d.roller, phi);
             (view.p(w), view.origin - view.p(w))
         };
-        let near = prog.rise + prog.far_dwell + prog.ret;
-        let spots = [
-            at(prog.rise / 2.0),
-            at(near - prog.ret / 2.0),
-            at(prog.rise + prog.far_dwell / 2.0),
-            at((near + TAU) / 2.0),
-        ];
-        labels.add_line_name_at_any(&spots, LabelText::new(l.working_profile(), ""), 2.5, 3);
+        let far = prog.rise + prog.far_dwell;
+        let near = far + prog.ret;
+        // Each phase's start and length, in the order its points are tried (a dwell of no
+        // length keeps its point, the end of the phase before: each point keeps its rank).
+        let phases = [(0.0, prog.rise), (far, prog.ret), (prog.rise, prog.far_dwell), (near, TAU - near)];
+        let mut spots =
+            PHASE_POINTS.iter().flat_map(|&f| phases.iter().map(move |&(from, span)| from + span * f)).map(at);
+        let middles: Vec<(Point, Vec2)> = spots.by_ref().take(phases.len()).collect();
+        let quarters: Vec<(Point, Vec2)> = spots.collect();
+        labels.add_line_name_at_any(&middles, &quarters, LabelText::new(l.working_profile(), ""), 2.5, 3);
     }
 }
 
@@ -213,6 +218,10 @@ fn pitch_name_spots(view: View, d: &Design, phis: &[f64]) -> Vec<(Point, Vec2)> 
     spots
 }
 
+/// Where in each phase the working profile's name may stand, as a share of the phase, the
+/// middles first.
+const PHASE_POINTS: [f64; 3] = [0.5, 0.25, 0.75];
+
 /// How far outside a roller's circle the pitch profile's name may be set on it, mm.
 const ROLLER_CLEAR_MM: f64 = 1.5;
 /// The step along the near dwell looking for the pitch profile clear of the rollers, rad.
@@ -242,7 +251,7 @@ fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words:
             (aside, aside - view.origin)
         })
         .collect();
-    labels.add_line_name_at_any(&spots, LabelText::new(l.base_circle(), ""), 2.5, 3);
+    labels.add_line_name_at_any(&spots, &[], LabelText::new(l.base_circle(), ""), 2.5, 3);
     let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
         " = {} {}",
         fmt::trimmed(mm(d.centre.r_min), words.lang),
