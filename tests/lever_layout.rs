@@ -598,25 +598,3 @@ fn a_name_at_a_plans_foot_stays_at_its_foot() {
         }
     }
 }
-
-/// Table 5 writes the balancing force three ways; the sheet's notes say where P′ and P″
-/// come from, in the sheet's words and with its subscript (Russian "ур"), and only where
-/// there is a table 5: without a force analysis the note is not printed.
-#[test]
-fn the_notes_say_where_table_5s_balancing_forces_come_from() {
-    use tmm_sheets::drawing::labels::Language;
-    let svg = |forces: bool| {
-        let mut p = fixture("worked-example");
-        p.info.language = Language::Ru;
-        if !forces {
-            p.lever.as_mut().unwrap().forces = None;
-        }
-        pipeline::build(&p, &[1]).unwrap()[0].svg.clone()
-    };
-    let with = svg(true);
-    for words in ["В таблице 5: P′ур — по рычагу Жуковского, P″ур — из баланса мощностей", "Таблица 5."]
-    {
-        assert!(with.contains(words), "{words} on the sheet");
-    }
-    assert!(!svg(false).contains("P″ур"), "no table 5, no note of it");
-}

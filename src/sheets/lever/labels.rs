@@ -20,7 +20,6 @@ crate::label_set! {
         structure,
         trajectories,
         exact_note,
-        balancing_note(n, m),
         forces_title(phi),
         group(g),
         driving_link,

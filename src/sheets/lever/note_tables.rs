@@ -22,7 +22,7 @@ pub(super) struct NoteTables {
     /// Where table 1 stands in the corner left of the title block, the notes under it: the
     /// notes' width. Else the tables and the notes under both end above the title block.
     corner: Option<f64>,
-    text: NotesText,
+    assumptions: Vec<String>,
     /// The region they take: as wide as the column, from their top to the title block.
     pub(super) region: Rect,
 }
@@ -36,16 +36,8 @@ pub(super) struct NoteParts {
     t2: Table,
     size1: (f64, f64),
     size2: (f64, f64),
-    text: NotesText,
-    corner_notes: f64,
-}
-
-/// The notes' words: the sheet's own (the exactness note; with a force analysis, what the
-/// balancing table's P, P′, P″ and Δ are) and the user's assumptions.
-#[derive(Clone)]
-struct NotesText {
-    own: Vec<String>,
     assumptions: Vec<String>,
+    corner_notes: f64,
 }
 
 impl NoteParts {
@@ -55,16 +47,8 @@ impl NoteParts {
         let t2 = Table { corner: c.position_col().into(), ..sheet_table(&inp.notes[1], lang) };
         let (size1, size2) = (t1.size(), t2.size());
         let assumptions: Vec<String> = inp.project.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
-        let mut own = vec![words.sheet.exact_note().to_string()];
-        // Table 5 writes the balancing force three ways (P from the groups, P′ from the
-        // lever, P″ from the balance of powers) and their difference: said once, here.
-        if inp.forces.is_some() {
-            let n = (inp.ctx.first_table + 4).to_string();
-            own.push(words.sheet.balancing_note(&n, words.sheet.sub_balancing()));
-        }
-        let text = NotesText { own, assumptions };
-        let corner_notes = notes_height(words, &text, size1.0 + 2.0);
-        NoteParts { t1, t2, size1, size2, text, corner_notes }
+        let corner_notes = notes_height(words, &assumptions, size1.0 + 2.0);
+        NoteParts { t1, t2, size1, size2, assumptions, corner_notes }
     }
 }
 
@@ -82,7 +66,7 @@ pub(super) fn note_tables(
     let right_w = across.1 - across.0;
     let side_by_side = 1.0 + w1 + 8.0 + w2 + 1.0 <= right_w;
     let tables_h = if side_by_side { h1.max(h2) } else { h1 + 6.0 + h2 };
-    let (t1, t2, text) = (parts.t1.clone(), parts.t2.clone(), parts.text.clone());
+    let (t1, t2, assumptions) = (parts.t1.clone(), parts.t2.clone(), parts.assumptions.clone());
     let title = frame::title_block_rect();
     // Table 1 beside the title block, down in its corner, where it fits there with the notes
     // under it (as wide as it: table 2 stands beside it): the band left of the title block
@@ -93,15 +77,15 @@ pub(super) fn note_tables(
     if in_corner {
         let top = (title.y0 - 3.0 - h2).min(frame::inner().y1 - 3.0 - corner_notes - 4.0 - h1);
         let region = Rect::new(across.0, top, across.1, frame::inner().y1 - 3.0);
-        return Ok(NoteTables { t1, t2, side_by_side, corner: Some(corner_w), text, region });
+        return Ok(NoteTables { t1, t2, side_by_side, corner: Some(corner_w), assumptions, region });
     }
-    let notes_lines = notes_height(words, &text, right_w);
+    let notes_lines = notes_height(words, &assumptions, right_w);
     let room =
         Room { field: "mechanism.assumptions", place: "notes above the title block", size: (right_w, NOTES_MAX_H) };
-    room.check(&text.assumptions, notes_lines)?;
+    room.check(&assumptions, notes_lines)?;
     let top = title.y0 - 3.0 - notes_lines - tables_h - 4.0;
     let region = Rect::new(across.0, top, across.1, title.y0 - 3.0);
-    Ok(NoteTables { t1, t2, side_by_side, corner: None, text, region })
+    Ok(NoteTables { t1, t2, side_by_side, corner: None, assumptions, region })
 }
 
 /// Tables 1 and 2 and the notes, drawn: one group, or, with table 1 in the corner beside
@@ -113,7 +97,7 @@ pub(super) fn tables_group(n: &NoteTables, words: &LeverWords) -> Vec<Group> {
         let split = r.x0 + w + 4.0;
         let mut first = Group::new("tables", Rect::new(r.x0, r.y0, split, r.y1));
         let r1 = n.t1.draw(&mut first, Point::new(r.x0 + 1.0, r.y0));
-        notes(&mut first, words, &n.text, Rect::new(r.x0, r1.y1 + 4.0, r.x0 + w, r.y1));
+        notes(&mut first, words, &n.assumptions, Rect::new(r.x0, r1.y1 + 4.0, r.x0 + w, r.y1));
         let mut second = Group::new("tables-2", Rect::new(split, r.y0, r.x1, frame::title_block_rect().y0 - 3.0));
         n.t2.draw(&mut second, Point::new(r1.x1 + 8.0, r.y0));
         return vec![first, second];
@@ -123,7 +107,7 @@ pub(super) fn tables_group(n: &NoteTables, words: &LeverWords) -> Vec<Group> {
     let at2 = if n.side_by_side { Point::new(r1.x1 + 8.0, r.y0) } else { Point::new(r.x0 + 1.0, r1.y1 + 6.0) };
     let r2 = n.t2.draw(&mut tables, at2);
     let notes_top = r1.y1.max(r2.y1) + 4.0;
-    notes(&mut tables, words, &n.text, Rect::new(r.x0, notes_top, r.x1, r.y1));
+    notes(&mut tables, words, &n.assumptions, Rect::new(r.x0, notes_top, r.x1, r.y1));
     vec![tables]
 }
 
@@ -157,22 +141,22 @@ fn label_column(rows: &[(LabelText, Vec<String>)]) -> f64 {
     rows.iter().map(|(l, _)| l.width(CELL_TEXT) + 3.0 + CELL_TEXT * crate::drawing::text::SLANT).fold(14.0, f64::max)
 }
 
-/// The notes (the sheet's own, then the assumptions under their heading) as paragraphs.
-fn note_paras(words: &LeverWords, text: &NotesText) -> Vec<Para> {
-    let mut paras: Vec<Para> = text.own.iter().map(|t| Para::new(t.clone(), 2.0)).collect();
-    if !text.assumptions.is_empty() {
+/// The notes (the exactness note, then the assumptions under their heading) as paragraphs.
+fn note_paras(words: &LeverWords, assumptions: &[String]) -> Vec<Para> {
+    let mut paras = vec![Para::new(words.sheet.exact_note(), 2.0)];
+    if !assumptions.is_empty() {
         paras.push(Para::heading(format!("{}:", words.common.assumed()), 0.5));
-        paras.extend(text.assumptions.iter().map(|a| Para::new(a.clone(), 1.0)));
+        paras.extend(assumptions.iter().map(|a| Para::new(a.clone(), 1.0)));
     }
     paras
 }
 
 /// Height the notes need set `w` wide: their first baseline 3.5 mm under the top.
-fn notes_height(words: &LeverWords, text: &NotesText, w: f64) -> f64 {
-    3.5 + columns::set(&note_paras(words, text), 2.5, w - 2.0).height + 0.5
+fn notes_height(words: &LeverWords, assumptions: &[String], w: f64) -> f64 {
+    3.5 + columns::set(&note_paras(words, assumptions), 2.5, w - 2.0).height + 0.5
 }
 
-fn notes(g: &mut Group, words: &LeverWords, text: &NotesText, r: Rect) {
-    let set = columns::set(&note_paras(words, text), 2.5, r.width() - 2.0);
+fn notes(g: &mut Group, words: &LeverWords, assumptions: &[String], r: Rect) {
+    let set = columns::set(&note_paras(words, assumptions), 2.5, r.width() - 2.0);
     columns::draw(g, Point::new(r.x0, r.y0 + 3.5), &set, 2.5);
 }
