@@ -357,13 +357,6 @@ fn verdict(
         other => other.clone(),
     };
     let (exact, student, unit, paper) = match &given {
-        // At a jump the value after it is as right as the one before: the nearer is judged.
-        Given::Value { value, unit } if t.after.is_some() => {
-            let student = value * convert(unit)?;
-            let after = t.after.unwrap_or(t.value);
-            let exact = if (student - after).abs() < (student - t.value).abs() { after } else { t.value };
-            (exact, student, t.unit.to_string(), t.scale)
-        }
         Given::Value { value, unit } => (t.value, value * convert(unit)?, t.unit.to_string(), t.scale),
         Given::Paper { mm, scale: Some(s), unit } => {
             let mu = s * convert(unit)?;
@@ -374,6 +367,8 @@ fn verdict(
             None => return Err(CheckError::NoScale { line: m.line, name: m.name.clone() }),
         },
     };
+    // At a jump the value after it is as right as the one before: the nearer is judged.
+    let exact = t.after.filter(|a| (student - a).abs() < (student - exact).abs()).unwrap_or(exact);
     // The exact value as the tables print it: a zero computed as 1e-13 is 0.
     let exact = if exact.abs() <= 1e-9 * t.row_max.max(1.0) { 0.0 } else { exact };
     let course = COURSE.iter().find(|(end, _)| t.id.ends_with(end)).map(|&(_, r)| r);

@@ -80,7 +80,8 @@ pub fn draw(
     let w1 = &p.wheels[0];
     let step = std::f64::consts::TAU / f64::from(w1.z);
     let psi = w1.tooth_thickness / (2.0 * w1.pitch);
-    // s and e are wheel 1's (a shifted pair's wheel 2 has others), p the pair's.
+    // s and e are wheel 1's and p the pair's; unsubscripted, as the course writes them on the
+    // mesh (s₁ widened its value past a random pair's extension line).
     let value = |name: &str, sub: &str, x: f64| {
         LabelText::new(name, sub).with_tail(format!(" = {}", fmt::dimension(mm(x), lang)))
     };
@@ -90,8 +91,8 @@ pub fn draw(
     let (right, left) = (tooth - psi, tooth + psi);
     let next = tooth + step - psi;
     let values = [
-        arc.dimension(g, r_s, (right, left), value("s", "1", w1.tooth_thickness)),
-        arc.dimension(g, r_s, (left, next), value("e", "1", p.pitch - w1.tooth_thickness)),
+        arc.dimension(g, r_s, (right, left), value("s", "", w1.tooth_thickness)),
+        arc.dimension(g, r_s, (left, next), value("e", "", p.pitch - w1.tooth_thickness)),
         arc.dimension(g, r_p, (right, next), value("p", "", p.pitch)),
     ];
     // s's value set first may take the only spot e's has (and the other way round): the

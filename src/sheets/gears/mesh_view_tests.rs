@@ -160,10 +160,9 @@ fn each_mesh_dimension_value_is_nearest_its_own_arc() {
         let root = v.len(pair.wheels[0].root);
         let (r_s, r_p) = (root - S_INSIDE_ROOT, root - P_INSIDE_ROOT);
         let mut found = 0;
-        // s₁, e₁ and p (a_w, h_a1 and h_f1 are written too, p_b along the line of action).
-        let arc_value = |t: &&crate::drawing::scene::Text| {
-            matches!((t.text.as_str(), t.sub.as_str()), ("s", "1") | ("e", "1") | ("p", ""))
-        };
+        // s, e and p (a_w, h_a1 and h_f1 are written too, with subscripts).
+        let arc_value =
+            |t: &&crate::drawing::scene::Text| ["s", "e", "p"].contains(&t.text.as_str()) && t.sub.is_empty();
         for t in g.texts().filter(|t| t.tail.starts_with(" = ")).filter(arc_value) {
             let d = (t.core_box().center() - o1).norm();
             let (own, other) = if t.text == "p" { (r_p, r_s) } else { (r_s, r_p) };
