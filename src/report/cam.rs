@@ -49,8 +49,8 @@ fn inside(phis: &[f64], k: usize) -> f64 {
     }
 }
 
-/// The law at position `k` of a phase's positions `phis`, from inside the phase (see
-/// [`inside`]).
+/// The law at position `k` of a phase's positions `phis`, from inside the phase: at the
+/// ends the phase's own value, not the dwell's.
 pub fn law_at(d: &Design, phis: &[f64], k: usize) -> Derivs {
     d.spec.program.at(inside(phis, k))
 }
