@@ -76,9 +76,10 @@ pub const SHORT_LINES: usize = 4;
 /// вариантов" at the left's foot, "именно этот…" at the right's head).
 pub fn set(paras: &[Para], h: f64, width: f64) -> Set {
     let (n, col_w) = columns(width);
-    let one_column = || placed(&lines_of(paras, h, width.min(COLUMN_MAX)), &[0], width.min(COLUMN_MAX));
-    let lines = lines_of(paras, h, width.min(COLUMN_MAX));
-    if n == 1 || lines.len() <= SHORT_LINES {
+    let one_w = width.min(COLUMN_MAX);
+    let one_lines = lines_of(paras, h, one_w);
+    let one_column = || placed(&one_lines, &[0], one_w);
+    if n == 1 || one_lines.len() <= SHORT_LINES {
         return one_column();
     }
     let lines = lines_of(paras, h, col_w);
@@ -91,8 +92,7 @@ pub fn set(paras: &[Para], h: f64, width: f64) -> Set {
     if !lone && between.height <= anywhere.height + pitch + 1e-9 {
         return between;
     }
-    let one = one_column();
-    if one.lines.len() <= 2 * SHORT_LINES { one } else { anywhere }
+    if one_lines.len() <= 2 * SHORT_LINES { one_column() } else { anywhere }
 }
 
 /// `paras` wrapped at height `h` in a column `col_w` wide, line by line.

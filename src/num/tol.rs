@@ -92,7 +92,7 @@ pub const INSIDE_PHASE: f64 = 1e-12;
 /// side) by more than this part of its row's largest value jumps there. A smooth law moves
 /// by ~10⁻¹¹ of its peak across those 2·10⁻¹² rad; a jump the tables print moves by at
 /// least a digit of four.
-pub const JUMP: f64 = 1e-6;
+pub const JUMP_RELATIVE: f64 = 1e-6;
 
 /// Radians: where the cam's searches over φ stop. A smooth maximum's value is then exact to
 /// ~10⁻²² of its curvature, and the step stays above the spacing of doubles near φ, which a

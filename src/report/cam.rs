@@ -63,7 +63,7 @@ fn jumping_row(symbol: &'static str, unit: Unit, phis: &[f64], f: &dyn Fn(f64) -
     let at: Vec<f64> = (0..phis.len()).map(|k| f(inside(phis, k))).collect();
     let largest = at.iter().fold(0.0, |m: f64, v| m.max(v.abs()));
     let jumps: Vec<Option<(f64, f64)>> = (0..phis.len())
-        .map(|k| inner(k).then(|| sides(k)).filter(|(a, b)| (b - a).abs() > tol::JUMP * largest.max(a.abs())))
+        .map(|k| inner(k).then(|| sides(k)).filter(|(a, b)| (b - a).abs() > tol::JUMP_RELATIVE * largest.max(a.abs())))
         .collect();
     let values = at.iter().zip(&jumps).map(|(&v, j)| j.map_or(v, |(before, _)| before)).collect();
     plain(symbol, unit, values).jumping(jumps.iter().map(|j| j.map(|(_, after)| after)).collect())

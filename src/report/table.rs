@@ -165,7 +165,7 @@ pub struct Row {
     /// Where the quantity jumps at a column's position (a law's acceleration at the middle
     /// of a uniformly accelerated phase), its value just after it; the cell's value is the
     /// one just before. The tables print both, "before→after" ([`JUMP`](crate::num::digits::JUMP)), as the diagram
-    /// draws the jump; the CSV and the answers hold the value before. Empty: no jumps.
+    /// draws the jump; the CSV holds the value before, an answer both ([`Answer::after`](crate::report::Answer::after)). Empty: no jumps.
     pub jumps: Vec<Option<f64>>,
 }
 
@@ -253,11 +253,7 @@ impl Row {
         let decimals =
             if self.exact { self.decimals.or_else(|| digits::exact_decimals(&present)) } else { self.decimals };
         let row = decimals.unwrap_or_else(|| digits::row_decimals(&present));
-        let one = |v: f64| match decimals {
-            _ if whole && whole_value(v) => digits::at_decimals(v, 0),
-            Some(d) => digits::at_decimals(v, d),
-            None => digits::at_decimals(v, row),
-        };
+        let one = |v: f64| digits::at_decimals(v, if whole && whole_value(v) { 0 } else { decimals.unwrap_or(row) });
         (0..self.values.len())
             .map(|c| match self.jump_at(c) {
                 _ if self.is_absent(c) => "—".to_string(),
