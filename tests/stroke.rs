@@ -65,6 +65,25 @@ fn a_strokes_value_slides_along_its_line_to_where_it_has_room() {
     }
 }
 
+/// Task 6 variant 10: the rocker's positions fan across the stroke's dimension line, so that
+/// no spot along it is clear of every line. The value stands along it across a few of the
+/// other positions' thin lines, which are interrupted for it (it hung 76.4 mm off, below the
+/// crank, in Uzbek), in every language, with no text crossed.
+#[test]
+fn a_strokes_value_interrupts_the_other_positions_lines_rather_than_hang_far_off() {
+    for lang in tmm_sheets::drawing::labels::Language::ALL {
+        let out = common::catalogue_sheet1("6", 10, lang);
+        let mech = out.scene.groups.iter().find(|g| g.id == "mechanism").unwrap();
+        let h = mech.texts().find(|t| t.text == "H").unwrap_or_else(|| panic!("{lang:?}: no H"));
+        assert_eq!(h.rotate.abs(), 90.0, "{lang:?}: H written along its vertical line");
+        let layout = &out.results["layout"];
+        let faults = common::layout_faults(layout);
+        assert!(faults.is_empty(), "{lang:?}: {faults:?}");
+        let longest = layout["longest_leader_mm"].as_f64().unwrap();
+        assert!(longest <= 30.0, "{lang:?}: a leader of {longest} mm");
+    }
+}
+
 /// The rocker's swing angle ψ on sheet 1, against references from the fixtures' lengths
 /// alone: the four-bar's rocker (O1B = 0.15 m, O1 0.2 m from O) is at its extremes where
 /// crank and coupler are in line, OB = 0.18 ± 0.05 m, so ψ is the difference of the angles

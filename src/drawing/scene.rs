@@ -302,6 +302,20 @@ impl Group {
         }
     }
 
+    /// Interrupts the breakable lines where they cross the boxes `gaps` (labels and values
+    /// set on them).
+    pub fn interrupt_breakable(&mut self, gaps: &[Rect]) {
+        if gaps.is_empty() {
+            return;
+        }
+        for k in self.breakable.clone().into_iter().rev() {
+            let Item::Path { path, pen } = &self.items[k] else { continue };
+            let Some(runs) = path.outside_rects(gaps) else { continue };
+            let pen = *pen;
+            self.split_item(k, runs.into_iter().map(|path| Item::Path { path, pen }).collect());
+        }
+    }
+
     /// Replaces item `k` by `pieces` (none: removes it), keeping every index the group holds
     /// (its parts, its writing, its breakable lines) on the items they named.
     pub fn split_item(&mut self, k: usize, pieces: Vec<Item>) {

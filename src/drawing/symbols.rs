@@ -267,23 +267,43 @@ pub fn value_along(
     // room the slider's numbers needed).
     let half = corners.iter().map(|&c| (c - mid).dot(t).abs()).fold(0.0, f64::max);
     let room = (len / 2.0 - half - ARROW_LEN - VALUE_CLEAR).max(0.0);
-    for slide in along_slides() {
-        let clear = if slide == 0.0 { VALUE_CLEAR } else { SLID_CLEAR };
-        for shift in [VALUE_GAP - lo, -VALUE_GAP - hi] {
-            let text = Text { rotate, ..value.text(mid + t * (slide * room) + up * shift, h, Anchor::Middle) };
-            let bb = text.bbox();
-            if bounds.contains(bb.origin())
-                && bounds.contains(Point::new(bb.x1, bb.y1))
-                && drawn.is_clear(bb.inflate(clear, clear))
-                && added.is_clear(bb.inflate(VALUE_CLEAR, VALUE_CLEAR))
-            {
-                g.text(text);
-                return true;
-            }
-        }
+    let spots = || {
+        along_slides().flat_map(move |slide| {
+            [VALUE_GAP - lo, -VALUE_GAP - hi].map(|shift| {
+                let text = Text { rotate, ..value.text(mid + t * (slide * room) + up * shift, h, Anchor::Middle) };
+                let clear = if slide == 0.0 { VALUE_CLEAR } else { SLID_CLEAR };
+                (text.bbox(), clear, text)
+            })
+        })
+    };
+    // Inside, `clear` mm from what was drawn before, and from the dimension as near as its
+    // middle's value stands.
+    let free = |bb: Rect, clear: f64, hard: &Obstacles| {
+        bounds.contains(bb.origin())
+            && bounds.contains(Point::new(bb.x1, bb.y1))
+            && hard.is_clear(bb.inflate(clear, clear))
+            && added.is_clear(bb.inflate(VALUE_CLEAR, VALUE_CLEAR))
+    };
+    if let Some((_, _, text)) = spots().find(|&(bb, clear, _)| free(bb, clear, drawn)) {
+        g.text(text);
+        return true;
     }
-    false
+    // Else across a few of the other positions' thin lines, interrupted for it (the
+    // rocker's twelve positions fan across a stroke beside its guide: the value hung on a
+    // 76 mm leader below the crank).
+    let hard = drawn.without(|k| k < since && g.breakable.binary_search(&k).is_ok());
+    let gap = |bb: Rect| bb.inflate(VALUE_CLEAR, VALUE_CLEAR);
+    let breaks_few = |bb: Rect| drawn.items_meeting(gap(bb)) <= MOST_BROKEN;
+    let Some((bb, _, text)) = spots().find(|&(bb, clear, _)| free(bb, clear, &hard) && breaks_few(bb)) else {
+        return false;
+    };
+    g.text(text);
+    g.interrupt_breakable(&[gap(bb)]);
+    true
 }
+
+/// The most of the other positions' lines a stroke's value may interrupt.
+const MOST_BROKEN: usize = 6;
 
 /// Where along its dimension line a value is tried: the middle, then in steps of a sixth
 /// of the room each side of it, alternately toward either end.

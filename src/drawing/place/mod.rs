@@ -13,7 +13,7 @@
 //! may be beside the neighbouring side, and read as its name. The geometry sits in an R-tree ([`super::obstacles`]).
 
 use super::obstacles::{Obstacles, Piece};
-use super::scene::{Anchor, Group, Item, THIN};
+use super::scene::{Anchor, Group, THIN};
 use super::text::{LabelText, SLANT, SUB};
 use crate::num::math::Norm;
 use candidate::{Candidate, TOUCH, Verdict, least_bad};
@@ -265,7 +265,7 @@ impl Labels {
             }
             placed.push(Placed { clean: clear, leader: leader.map_or(0.0, |(a, b)| (b - a).norm()), rank: req.rank });
         }
-        interrupt_for(g, &gaps);
+        g.interrupt_breakable(&gaps);
         placed
     }
 
@@ -414,19 +414,6 @@ fn on_breakable(
         c.breaks = true;
         fits.then_some(c)
     })
-}
-
-/// Interrupts the breakable lines of `g` where they cross the boxes `gaps`.
-fn interrupt_for(g: &mut Group, gaps: &[Rect]) {
-    if gaps.is_empty() {
-        return;
-    }
-    for k in g.breakable.clone().into_iter().rev() {
-        let Item::Path { path, pen } = &g.items[k] else { continue };
-        let Some(runs) = path.outside_rects(gaps) else { continue };
-        let pen = *pen;
-        g.split_item(k, runs.into_iter().map(|path| Item::Path { path, pen }).collect());
-    }
 }
 
 /// The first of a label's spots that `fits` and that `prefer` accepts, looked for up to
