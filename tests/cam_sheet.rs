@@ -668,3 +668,34 @@ fn twin_tables_write_one_quantity_with_one_number_of_decimals() {
         }
     }
 }
+
+/// The rise's and the return's tables (the law's, the profiles') are drawn one under the
+/// other with the same columns: each vertical rule of one stands where the other's does,
+/// measured from the grid's left edge, on every cam fixture — the custom laws' jump widens
+/// one column of one table only, and the return's values are wider than the rise's.
+#[test]
+fn a_phases_table_and_the_next_phases_line_up_column_for_column() {
+    for (name, text) in cam_projects() {
+        let b = sheet3(&pipeline::load(&text).unwrap());
+        let rules = |id: &str| -> Vec<f64> {
+            let items =
+                b.output.scene.groups.iter().find_map(|g| g.part(id)).unwrap_or_else(|| panic!("{name}: no {id}"));
+            let mut xs: Vec<f64> = items
+                .iter()
+                .filter_map(common::path_points)
+                .flat_map(|(pts, _)| pts.windows(2).map(|w| (w[0], w[1])).collect::<Vec<_>>())
+                .filter(|(a, b)| (a.x - b.x).abs() < 1e-9 && (a.y - b.y).abs() > 1.0)
+                .map(|(a, _)| a.x)
+                .collect();
+            xs.sort_by(f64::total_cmp);
+            xs.dedup_by(|a, b| (*a - *b).abs() < 1e-6);
+            let left = xs[0];
+            xs.iter().map(|x| x - left).collect()
+        };
+        for (one, next) in [("table.law-rise", "table.law-return"), ("table.profile-rise", "table.profile-return")] {
+            let (a, b) = (rules(one), rules(next));
+            assert_eq!(a.len(), b.len(), "{name}: {one} {a:?}, {next} {b:?}");
+            assert!(a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-6), "{name}: {one} {a:?}, {next} {b:?}");
+        }
+    }
+}

@@ -36,6 +36,9 @@ pub struct Table {
     /// The cells' lettering, mm: [`CELL_TEXT`], or 3.5 where the sheet has room; `label_w`
     /// and `cell_w` are given for [`CELL_TEXT`] and scale with it.
     pub text_h: f64,
+    /// The least width of each value column at [`CELL_TEXT`], mm: its twin's, where it has
+    /// one to line up with (see [`Table::line_up`]); empty for none.
+    pub least_columns: Vec<f64>,
 }
 
 /// Room either side of a cell's text, mm.
@@ -69,6 +72,9 @@ impl Table {
         let single = cells().filter(|v| !pair(v)).chain(&self.header).map(|v| width(v));
         let usual = single.fold(self.cell_w * self.k(), f64::max);
         let mut widths = vec![usual; self.header.len()];
+        for (w, least) in widths.iter_mut().zip(&self.least_columns) {
+            *w = w.max(least * self.k());
+        }
         for (_, cells) in &self.rows {
             for (w, v) in widths.iter_mut().zip(cells).filter(|(_, v)| pair(v)) {
                 *w = w.max(width(v));
@@ -82,6 +88,28 @@ impl Table {
         let h = self.text_h;
         let corner = Text::new(Point::ZERO, self.corner.as_str(), h, Anchor::Middle).core_box().width();
         (self.label_w * self.k()).max(corner + 2.0 * CELL_PAD * self.k() + h * super::text::SLANT)
+    }
+
+    /// Gives twin tables (a phase's and the next one's, one above the other) the same label
+    /// column and the same value columns, each the widest of theirs: their grids line up.
+    /// Tables of another count of columns are left as they are.
+    pub fn line_up(twins: &mut [Table]) {
+        let Some(n) = twins.first().map(|t| t.header.len()) else { return };
+        if twins.iter().any(|t| t.header.len() != n) {
+            return;
+        }
+        let mut least = vec![0.0f64; n];
+        let mut label = 0.0f64;
+        for t in twins.iter() {
+            for (l, w) in least.iter_mut().zip(t.column_widths()) {
+                *l = l.max(w / t.k());
+            }
+            label = label.max(t.label_width() / t.k());
+        }
+        for t in twins.iter_mut() {
+            t.least_columns = least.clone();
+            t.label_w = label;
+        }
     }
 
     fn grid_width(&self) -> f64 {

@@ -280,8 +280,12 @@ impl Prepared {
         let phis = nomogram::positions(d, DIVISIONS);
         let notes = tables::notes(d, &phis, errors, lang, ctx.first_table);
         let (law, rest): (Vec<_>, Vec<_>) = notes.iter().partition(|n| tables::is_law(n));
+        // A phase's table and the next phase's line up (the rise's and the return's law,
+        // their profiles): the results' table has columns of its own.
         let drawn = |ns: &[&NoteTable], h: f64| -> Vec<Table> {
-            ns.iter().map(|n| Table { text_h: h, ..tables::sheet_table(n, lang) }).collect()
+            let mut ts: Vec<Table> = ns.iter().map(|n| Table { text_h: h, ..tables::sheet_table(n, lang) }).collect();
+            Table::line_up(&mut ts[..2.min(ns.len())]);
+            ts
         };
         let small = Lettered::new(drawn(&law, CELL_TEXT), drawn(&rest, CELL_TEXT));
         let large = Lettered::new(drawn(&law, LARGE_TEXT), drawn(&rest, LARGE_TEXT));

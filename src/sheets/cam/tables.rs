@@ -60,5 +60,6 @@ pub fn sheet_table(n: &NoteTable, lang: Language) -> Table {
         cell_w: 12.0,
         corner: if results { c.quantity().into() } else { c.position_col().into() },
         text_h: crate::drawing::table::CELL_TEXT,
+        least_columns: Vec::new(),
     }
 }

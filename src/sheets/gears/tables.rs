@@ -132,5 +132,6 @@ fn sheet_table(n: &NoteTable, tolerance: Option<f64>, words: &GearWords) -> Tabl
         cell_w: 14.0,
         corner: if conditions { l.condition_col().into() } else { c.quantity().into() },
         text_h: crate::drawing::table::CELL_TEXT,
+        least_columns: Vec::new(),
     }
 }

@@ -127,6 +127,7 @@ pub(super) fn sheet_table(n: &NoteTable, lang: Language) -> Table {
         cell_w: 11.0,
         corner: String::new(),
         text_h: crate::drawing::table::CELL_TEXT,
+        least_columns: Vec::new(),
     }
 }
 
