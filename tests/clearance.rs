@@ -364,3 +364,36 @@ fn a_moment_arcs_head_keeps_clear_of_the_force_arrows_on_any_fixture() {
     assert!(checked > 20, "only {checked} moments");
     assert!(found.is_empty(), "{} heads:\n{}", found.len(), found.join("\n"));
 }
+
+/// A label a level line runs along just over or under reads as over- or underlined: the
+/// axial crank-slider's force polygon in Russian had its enlargement's stub 0.7 mm over
+/// "G₃ = 4,415 Н". The placer takes a spot 1 mm clear of such a line where one is free a
+/// little further (the label's own line, a dimension line under its value, excepted).
+#[test]
+fn a_label_is_not_underlined_or_overlined_by_a_line_running_along_it() {
+    let mut p = fixture("crank-slider-axial");
+    p.info.language = Language::Ru;
+    let b = &pipeline::build(&p, &[1]).unwrap()[0];
+    let (g, t) = b
+        .output
+        .scene
+        .groups
+        .iter()
+        .find_map(|g| g.texts().find(|t| t.plain() == "G_3 = 4,415 Н").map(|t| (g, t)))
+        .expect("G₃'s value in a polygon");
+    let r = t.bbox();
+    let lining: Vec<(kurbo::Point, kurbo::Point)> = g
+        .items
+        .iter()
+        .filter_map(common::path_points)
+        .flat_map(|(pts, _)| pts.windows(2).map(|w| (w[0], w[1])).collect::<Vec<_>>())
+        .filter(|&(a, b)| {
+            let level = (b.y - a.y).abs() <= 0.18 * (b.x - a.x).abs();
+            let beside = a.x.max(b.x).min(r.x1) - a.x.min(b.x).max(r.x0) >= 2.0;
+            let y = (a.y + b.y) / 2.0;
+            let near = (y < r.y0 && r.y0 - y < 1.0) || (y > r.y1 && y - r.y1 < 1.0);
+            level && beside && near
+        })
+        .collect();
+    assert!(lining.is_empty(), "lines along {:?}: {lining:?}", t.plain());
+}

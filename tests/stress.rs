@@ -309,6 +309,16 @@ fn a_six_bar_with_a_30_micrometre_crank_keeps_its_letters_clear() {
     assert!(sheet_svg(&text, 1).contains(" = 0.000001 m/mm)"), "no 1000:1 detail");
 }
 
+/// A six-bar the sweep found at stop 80: its stroke's value, written along its dimension
+/// line across two of the other positions' thin lines (interrupted for it), was then
+/// crossed by ω₁'s arc, drawn after it and turned to cross the fewest lines only. A turn
+/// arrow now counts a text it would cross as many lines.
+#[test]
+fn a_turn_arrow_keeps_off_a_strokes_value_written_before_it() {
+    let text = common::six_bar(HEADER, 0.004494, 0.000882, (0.005105, 0.002019), 0.000364, 0.005151, "backward");
+    assert_eq!(verdict(&text), Ok(Outcome::Built));
+}
+
 /// A crank-slider the sweep found at stop 72, its guide at 201°: the stroke H dimensioned
 /// under a 376 mm stroke, its extension line's 2 mm past the dimension line across the
 /// trajectories' legend (the offsets were tried without that overshoot). An offset whose

@@ -331,6 +331,24 @@ impl Obstacles {
         self.strokes.any_on_segment(a, b, near)
     }
 
+    /// Whether a level stroke runs along the box `r` (a label's letters) over or under it,
+    /// within `gap` mm: within about 10° of the level and beside the box over
+    /// 2 mm of its width or more (a third of a narrower one). Such a line reads as the label's over- or
+    /// underline (a polygon's stub 0.7 mm over "G₃ = 4,415 N").
+    /// A line through `own` (within 0.4 mm: the label's own line, a dimension line its
+    /// value stands on) does not count.
+    pub fn level_stroke_along(&self, r: Rect, gap: f64, own: Point) -> bool {
+        let band = r.inflate(0.0, gap);
+        let least = ALONG_TEXT_OVERLAP.min(r.width() / 3.0);
+        let mine = Rect::from_center_size(own, (2.0 * OWN_LINE, 2.0 * OWN_LINE));
+        self.strokes.any_in_box(band, |s| {
+            let d = s.b - s.a;
+            let level = d.y.abs() <= LEVEL_SLOPE * d.x.abs();
+            let beside = s.a.x.max(s.b.x).min(r.x1) - s.a.x.min(s.b.x).max(r.x0);
+            level && beside >= least && segment_meets_rect(s.a, s.b, band) && !segment_meets_rect(s.a, s.b, mine)
+        })
+    }
+
     /// Whether the segment `a`–`b` crosses any text box.
     pub fn segment_crosses_text(&self, a: Point, b: Point) -> bool {
         let clear = |t: Rect| t.inflate(LEADER_CLEAR, LEADER_CLEAR);
@@ -389,6 +407,13 @@ impl Hints {
 /// pens' half widths and a gap under 0.3 mm.
 const ALONG_NEAR: f64 = 0.6;
 const ALONG_SIN: f64 = 0.1;
+
+/// A level line beside a label's box over this much of its width (or a third of it, when
+/// narrower) runs along it, mm; level within this slope (about 10°).
+const ALONG_TEXT_OVERLAP: f64 = 2.0;
+const LEVEL_SLOPE: f64 = 0.18;
+/// A line this near a label's anchor is its own, mm.
+const OWN_LINE: f64 = 0.4;
 
 /// A leader passes a text's letters' box at least this far off, mm: one grazing the letters
 /// reads as a line through the label.

@@ -125,11 +125,12 @@ pub fn clear_turn_arrow(
         p
     };
     // Its crossings, counted up to one past `most`: a start crossing more than the best so
-    // far cannot win, and is left as soon as that is known.
+    // far cannot win, and is left as soon as that is known. A text crossed (a stroke's
+    // value written along its line before the arrows) counts as many lines.
     let crossings = |p: &Group, most: usize| {
         let mut n = 0;
         for (a, b) in p.items.iter().flat_map(segments) {
-            n += drawn.hits_segment(a, b);
+            n += drawn.hits_segment(a, b) + if drawn.segment_crosses_text(a, b) { TEXT_CROSSED } else { 0 };
             if n > most {
                 break;
             }
@@ -304,6 +305,9 @@ pub fn value_along(
 
 /// The most of the other positions' lines a stroke's value may interrupt.
 const MOST_BROKEN: usize = 6;
+
+/// What a turn arrow crossing a text costs, in lines crossed.
+const TEXT_CROSSED: usize = 20;
 
 /// Where along its dimension line a value is tried: the middle, then in steps of a sixth
 /// of the room each side of it, alternately toward either end.

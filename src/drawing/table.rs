@@ -63,6 +63,11 @@ impl Table {
     /// ("1,169→−1,169", see [`JUMP`]) as wide as those need,
     /// so one jump does not widen the whole table.
     fn column_widths(&self) -> Vec<f64> {
+        self.widths(true)
+    }
+
+    /// [`Table::column_widths`], widened for the jumps' pairs of values or not.
+    fn widths(&self, jumps: bool) -> Vec<f64> {
         let h = self.text_h;
         let width = |t: &str| {
             Text::new(Point::ZERO, t, h, Anchor::Middle).core_box().width() + 2.0 * CELL_PAD * self.k() + h * SLANT
@@ -75,7 +80,7 @@ impl Table {
         for (w, least) in widths.iter_mut().zip(&self.least_columns) {
             *w = w.max(least * self.k());
         }
-        for (_, cells) in &self.rows {
+        for (_, cells) in self.rows.iter().filter(|_| jumps) {
             for (w, v) in widths.iter_mut().zip(cells).filter(|(_, v)| pair(v)) {
                 *w = w.max(width(v));
             }
@@ -101,7 +106,7 @@ impl Table {
         let mut least = vec![0.0f64; n];
         let mut label = 0.0f64;
         for t in twins.iter() {
-            for (l, w) in least.iter_mut().zip(t.column_widths()) {
+            for (l, w) in least.iter_mut().zip(t.widths(false)) {
                 *l = l.max(w / t.k());
             }
             label = label.max(t.label_width() / t.k());

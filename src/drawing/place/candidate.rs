@@ -63,6 +63,10 @@ pub(super) struct Candidate {
 /// mm: a label further off in the open on a longer leader reads no better.
 const SEEN_SHORT: f64 = 8.0;
 
+/// A level line keeps this far over or under a label, mm (GOST 2.307 sets a value about
+/// 1 mm over its line): nearer, it reads as the label's over- or underline.
+const ALONG_CLEAR: f64 = 1.0;
+
 /// A line's name's leader is checked against the drawing from this far off its line, mm
 /// (drawn from the line itself, [`Labels::add_line_name`]).
 pub(super) const TOUCH: f64 = 0.4;
@@ -81,6 +85,12 @@ impl Candidate {
     pub(super) fn is_free(&self, o: &Obstacles) -> bool {
         self.box_is_free(o)
             && self.leader.is_none_or(|(a, b)| !o.segment_crosses_stroke_in(a, b, usize::from(self.dir)))
+    }
+
+    /// Whether a level line of `o` other than one through its anchor runs just over or
+    /// under its box ([`ALONG_CLEAR`]), where it reads as the label's over- or underline.
+    pub(super) fn is_lined(&self, o: &Obstacles) -> bool {
+        o.level_stroke_along(self.r, ALONG_CLEAR, self.anchor)
     }
 
     /// The box is clear and its leader crosses no text (it may cross lines).

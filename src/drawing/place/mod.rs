@@ -18,12 +18,14 @@ use super::text::{LabelText, SLANT, SUB};
 use crate::num::math::Norm;
 use candidate::{Candidate, TOUCH, Verdict, least_bad};
 use kurbo::{Point, Rect, Vec2};
+use lined::unlined;
 pub use request::Placed;
 use request::Request;
 use spots::Spots;
 
 mod candidate;
 mod crossings;
+mod lined;
 mod make_room;
 mod request;
 mod sides;
@@ -349,7 +351,13 @@ impl Labels {
                     best => best,
                 }
             };
-            let best = choose(s);
+            // Just over or under a level line, the label reads as over- or underlined: a
+            // spot clear of it instead, on a leader little longer, where one is free.
+            let best = choose(s).map(|c| {
+                let fits =
+                    |c: &Candidate, v: &mut Verdict| free(c, v) && self.reads_as_own(i, c) && v.leader_seen(c, drawn);
+                unlined(s, c, &fits, drawn)
+            });
             // Far off on a long leader, or nowhere: beside its point on thin lines broken
             // for it, where the drawing has such lines.
             let far = best.as_ref().is_none_or(|c| c.leader_at_least(LONG_LEADER));
@@ -391,7 +399,7 @@ const LONG_LEADER: f64 = 8.0;
 /// The most breakable lines (a link's position, a trajectory's dash) a label may interrupt.
 const MOST_BROKEN: usize = 6;
 /// How many of a label's cheapest spots are looked at for one beside its point.
-const NEAR_SPOTS: usize = 6 * DIRECTIONS;
+pub(super) const NEAR_SPOTS: usize = 6 * DIRECTIONS;
 
 /// A label's cheapest spot near its own anchor (beside it, or on a leader shorter than
 /// [`LONG_LEADER`] that crosses no text) that only breakable lines of the drawing cross, at

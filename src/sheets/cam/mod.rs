@@ -280,8 +280,7 @@ impl Prepared {
         let phis = nomogram::positions(d, DIVISIONS);
         let notes = tables::notes(d, &phis, errors, lang, ctx.first_table);
         let (law, rest): (Vec<_>, Vec<_>) = notes.iter().partition(|n| tables::is_law(n));
-        // A phase's table and the next phase's line up (the rise's and the return's law,
-        // their profiles): the results' table has columns of its own.
+        // The rise's table and the return's line up (the law's, the profiles').
         let drawn = |ns: &[&NoteTable], h: f64| -> Vec<Table> {
             let mut ts: Vec<Table> = ns.iter().map(|n| Table { text_h: h, ..tables::sheet_table(n, lang) }).collect();
             Table::line_up(&mut ts[..2.min(ns.len())]);
