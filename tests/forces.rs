@@ -341,3 +341,35 @@ fn the_balancing_table_says_what_a_negative_sign_means() {
     }
     assert_eq!(seen, [true, true], "both a driving and a braking balancing force among the fixtures");
 }
+
+/// Under the Zhukovsky lever, table 5's third balancing force is written with its source:
+/// P″ₘ from the balance of powers, in the sheet's language, agreeing with the lever's P′ₘ
+/// (two independent methods: virtual powers on the turned plan, and Σ P·v + M·ω = 0) to
+/// the four figures written. A teacher found P″ in the table and nowhere on the sheet.
+#[test]
+fn the_lever_says_where_the_third_balancing_force_comes_from() {
+    use tmm_sheets::drawing::labels::Language;
+    let source = |lang: Language| match lang {
+        Language::Uz => "(quvvatlar balansidan)",
+        Language::Ru => "(из баланса мощностей)",
+        Language::En => "(from the power balance)",
+    };
+    for lang in Language::ALL {
+        let mut p = common::fixture("worked-example");
+        p.info.language = lang;
+        let b = &tmm_sheets::pipeline::build(&p, &[1]).unwrap()[0];
+        let texts: Vec<_> = b.output.scene.texts().collect();
+        let value = |main: &str| -> f64 {
+            let t = texts
+                .iter()
+                .find(|t| t.text == main && t.tail.starts_with(" = "))
+                .unwrap_or_else(|| panic!("{lang:?}: no {main} = …"));
+            let number = t.tail[3..].split(' ').next().unwrap();
+            number.replace(',', ".").replace('\u{2212}', "-").parse().unwrap_or_else(|_| panic!("{}", t.tail))
+        };
+        let p2 = texts.iter().find(|t| t.text == "P″" && t.tail.starts_with(" = ")).expect("P″ under the lever");
+        assert!(p2.tail.ends_with(source(lang)), "{lang:?}: {:?}", p2.tail);
+        let (lever, power) = (value("P′"), value("P″"));
+        assert!((lever - power).abs() <= 5e-4 * lever.abs(), "{lang:?}: P′ = {lever}, P″ = {power}");
+    }
+}

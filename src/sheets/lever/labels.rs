@@ -34,6 +34,7 @@ crate::label_set! {
         stroke_intake,
         stroke_compression,
         short_arrow(len),
+        from_power_balance,
         sub_inertia,
         sub_balancing,
         sub_resistance,

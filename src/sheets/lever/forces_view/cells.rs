@@ -5,7 +5,7 @@
 use super::group::{GroupLayout, group_layout, group_scales};
 use super::inset::{Enlarge, Place};
 use super::load::cell_size as load_cell;
-use super::zhukovsky::{DESCENT, LEVER_LINES, lever_arrow_scale, lever_extent, lever_legend};
+use super::zhukovsky::{DESCENT, lever_arrow_scale, lever_extent, lever_legend, lever_lines};
 use super::{ForcesInput, LINE};
 use crate::drawing::scale;
 use crate::lever::plans::{Plan, velocity_plan};
@@ -187,7 +187,7 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
         let ext = lever_extent(inp, lever, mu, mu_f);
         let pad = MARGIN + LEVER_LABEL_ROOM;
         let w = (ext.width() / mu + 2.0 * pad).max(110.0);
-        let text_lines = LEVER_LINES + lever_legend(inp, mu_f, w - 4.0).len();
+        let text_lines = lever_lines(inp, w - 4.0) + lever_legend(inp, mu_f, w - 4.0).len();
         let h = TITLE + ext.height() / mu + 2.0 * pad + text_lines as f64 * LINE + DESCENT;
         (w, h, ext)
     });

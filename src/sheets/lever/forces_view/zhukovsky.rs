@@ -16,8 +16,28 @@ use crate::num::math::Norm;
 use crate::sheets::lever::plans_view::{PlanCell, draw_plan, plan_bbox};
 use kurbo::{Point, Rect, Vec2};
 
-/// Lines under the lever besides its legend: μ_v and μ_F, P′ₘ, Δ.
-pub(super) const LEVER_LINES: usize = 3;
+/// Lines under the lever besides its legend, in a cell `width` mm wide (less its margins):
+/// μ_v and μ_F, then [`balancing_rows`].
+pub(super) fn lever_lines(inp: &ForcesInput, width: f64) -> usize {
+    1 + balancing_rows(inp, width).len()
+}
+
+/// P′ₘ from the lever, its difference Δ from the kinetostatics' Pₘ and P″ₘ from the balance
+/// of powers (table 5's three), said where each comes from, wrapped to `width` mm.
+fn balancing_rows(inp: &ForcesInput, width: f64) -> Vec<Vec<LabelText>> {
+    let (f, w) = (&inp.fa.forces, &inp.words);
+    let newton = |v: f64| format!(" = {} {}", fmt::value(v, w.lang), w.common.unit_n());
+    let items = vec![
+        LabelText::new("P′", w.sheet.sub_balancing()).with_tail(newton(f.p_m_lever)),
+        LabelText::new("Δ", "").with_tail(format!(" = {} %", fmt::value(f.difference_percent(), w.lang))),
+        LabelText::new("P″", w.sheet.sub_balancing()).with_tail(format!(
+            "{} {}",
+            newton(f.p_m_power),
+            w.sheet.from_power_balance()
+        )),
+    ];
+    wrap_items(items, width, ";", "")
+}
 /// Room under the last line's baseline for its subscripts and descenders, mm (3.5 mm
 /// lettering).
 pub(super) const DESCENT: f64 = 1.5;
@@ -113,9 +133,8 @@ pub(super) fn draw_lever(
     (plan, extent): (&Plan, Rect),
     (mu, mu_f): (f64, f64),
 ) {
-    let f = &inp.fa.forces;
     let legend = lever_legend(inp, mu_f, r.width() - 4.0);
-    let text_h = (LEVER_LINES + legend.len()) as f64 * LINE + DESCENT;
+    let text_h = (lever_lines(inp, r.width() - 4.0) + legend.len()) as f64 * LINE + DESCENT;
     let plan_cell = Rect::new(r.x0, r.y0, r.x1, r.y1 - text_h);
     let cell = PlanCell {
         cell: plan_cell,
@@ -135,19 +154,11 @@ pub(super) fn draw_lever(
     for (image, force, label) in forces {
         arrows.arrow(g, labels, at(image), force, label);
     }
-    let lang = inp.words.lang;
-    let lines = [
-        vec![
-            with_semicolon(scale_item(inp, "v", mu, inp.words.common.unit_v_per_mm())),
-            scale_item(inp, "F", mu_f, inp.words.common.unit_n_per_mm()),
-        ],
-        vec![LabelText::new("P′", inp.words.sheet.sub_balancing()).with_tail(format!(
-            " = {} {}",
-            fmt::value(f.p_m_lever, lang),
-            inp.words.common.unit_n()
-        ))],
-        vec![LabelText::new("Δ", "").with_tail(format!(" = {} %", fmt::value(f.difference_percent(), lang)))],
-    ];
+    let mut lines = vec![vec![
+        with_semicolon(scale_item(inp, "v", mu, inp.words.common.unit_v_per_mm())),
+        scale_item(inp, "F", mu_f, inp.words.common.unit_n_per_mm()),
+    ]];
+    lines.extend(balancing_rows(inp, r.width() - 4.0));
     let y = text_rows(g, r.x0 + 2.0, r.y1 - text_h + LINE, &legend);
     text_rows(g, r.x0 + 2.0, y, &lines);
 }
