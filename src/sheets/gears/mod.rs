@@ -12,6 +12,7 @@ mod results;
 mod room;
 mod segments;
 mod sliding_view;
+mod stage_layout;
 mod stage_velocities;
 mod tables;
 mod teeth_view;
@@ -32,11 +33,10 @@ use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::table::{self, CELL_TEXT};
-use crate::drawing::text::{TooLong, wrap};
+use crate::drawing::text::TooLong;
 use crate::gears::pair::PairWarning;
 use crate::gears::sliding::Sliding;
 use crate::num::units::mm;
-use crate::project::gears::PlanetaryProject;
 use crate::project::{GearsProject, Project};
 use crate::report::AnswerKeys;
 use kurbo::{Point, Rect};
@@ -116,37 +116,44 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
     let answers = AnswerKeys::of(&format!("sheet{}", KIND.number), &notes);
     let mut measured = segments::mesh(&p.pair, drawn.mu, MESH_PART, &answers);
 
-    // The right half: the planetary views on top, the tables below.
-    let mut groups = vec![mesh];
+    // The right half: the planetary views on top, the tables below; the rack generation of
+    // each wheel in the largest room the rest leaves on the sheet.
     let right = right_of(region.x1 + 8.0);
-    let mut y_tables = right.y0;
-    let mut planetary_mu = None;
-    let mut planetary_reading = None;
-    if let Some(pl) = &p.planetary {
-        // The views as large as the tables below them still fit in 3.5 mm lettering.
-        let large = tables::large_sizes(&notes, tolerance, &words);
-        let fits = |share: f64| {
-            let below = Rect::new(right.x0, planetary_frame(pl, right, share).2.y1 + 4.0, right.x1, right.y1);
-            tables::fit(&large, below)
-        };
-        let share = VIEW_SHARES.into_iter().find(|&s| fits(s)).unwrap_or(VIEW_SHARES[VIEW_SHARES.len() - 1]);
-        let drawn = planetary_group(pl, right, share, &words);
-        measured.extend(segments::planetary(&pl.stage, pl.module, drawn.mu, PLANETARY_PART, &answers));
-        planetary_mu = Some(drawn.mu);
-        planetary_reading = Some(drawn.reading);
-        groups.push(drawn.group);
-        y_tables = drawn.bottom + 4.0;
-    }
-    groups.push(tables::group(&notes, Rect::new(right.x0, y_tables, right.x1, right.y1), tolerance, &words));
-
-    // The rack generation of each wheel in the largest room the rest leaves on the sheet,
-    // wheel 1 first (the pinion, the shift chosen against its undercut).
-    for wheel in 0..2 {
-        let drawn_items = Obstacles::of_items(groups.iter().flat_map(|g| g.items.iter()));
-        let outline = &p.pair.outlines[wheel];
-        groups.extend(generation_view::draw(&drawn_items, inner.inset(-4.0), (&p.pair, wheel), outline, &words));
-    }
-
+    let tables_in = |y0: f64| tables::group(&notes, Rect::new(right.x0, y0, right.x1, right.y1), tolerance, &words);
+    let mut planetary = None;
+    let groups = match &p.planetary {
+        None => {
+            let mut groups = vec![mesh, tables_in(right.y0)];
+            groups.extend(generations(&groups, p, &words));
+            groups
+        }
+        Some(pl) => {
+            let sizes =
+                [tables::largest_sizes(&notes, tolerance, &words), tables::large_sizes(&notes, tolerance, &words)];
+            let choices = stage_layout::choices(pl, right, &sizes, &words);
+            // Of the plan's rooms, the first that leaves the rack generation pictures as
+            // many rooms as any (a strip moves the tables down into theirs).
+            let mut best: Option<(stage_layout::PlanetaryDrawn, Vec<Group>)> = None;
+            for plan in choices.plans {
+                let drawn = stage_layout::draw(pl, right, choices.share, plan, &words);
+                let mut rest = vec![tables_in(drawn.bottom + 4.0)];
+                let pictures = generations(&[&mesh, &drawn.group, &rest[0]], p, &words);
+                rest.extend(pictures);
+                if best.as_ref().is_none_or(|(_, b)| rest.len() > b.len()) {
+                    best = Some((drawn, rest));
+                }
+                if best.as_ref().is_some_and(|(_, b)| b.len() == 3) {
+                    break;
+                }
+            }
+            let (drawn, rest) = best.expect("at least one room for the plan");
+            measured.extend(segments::planetary(&pl.stage, pl.module, drawn.mu, PLANETARY_PART, &answers));
+            planetary = Some((drawn.mu, drawn.reading));
+            let mut groups = vec![mesh, drawn.group];
+            groups.extend(rest);
+            groups
+        }
+    };
     let name = if p.planetary.is_some() { l.sheet_name() } else { l.sheet_name_pair() };
     let composition = Composition {
         name: name.to_string(),
@@ -159,7 +166,21 @@ pub fn build(ctx: &Context, p: &GearsProject) -> Result<GearsBuild, SheetError> 
         segments: measured,
         measured: None,
     };
+    let (planetary_mu, planetary_reading) = (planetary.map(|p| p.0), planetary.map(|p| p.1));
     Ok(GearsBuild { composition, mesh: drawn, planetary_mu, planetary_reading, sliding })
+}
+
+/// The rack generation of each wheel in the largest room `drawn` leaves on the sheet, wheel
+/// 1 first (the pinion, the shift chosen against its undercut).
+fn generations<G: std::borrow::Borrow<Group>>(drawn: &[G], p: &GearsProject, words: &GearWords) -> Vec<Group> {
+    let mut out: Vec<Group> = Vec::new();
+    for wheel in 0..2 {
+        let items = drawn.iter().map(|g| g.borrow()).chain(&out).flat_map(|g| g.items.iter());
+        let drawn_items = Obstacles::of_items(items);
+        let outline = &p.pair.outlines[wheel];
+        out.extend(generation_view::draw(&drawn_items, frame::inner().inset(-4.0), (&p.pair, wheel), outline, words));
+    }
+    out
 }
 
 /// The notes under the mesh (its results, the sheet's notes and the assumptions) may take
@@ -278,107 +299,6 @@ fn mesh_notes(p: &GearsProject, words: &GearWords) -> Vec<String> {
     }
     out.extend(p.assumptions.iter().map(|a| a.get(lang).to_string()));
     out
-}
-
-/// The planetary stage as drawn: the views' group, their μ_l, the bottom of their region and
-/// the ratio read off the plan of angular velocities.
-struct PlanetaryDrawn {
-    group: Group,
-    mu: f64,
-    bottom: f64,
-    reading: Reading,
-}
-
-/// The shares of the right half's width the front view may take, largest first: the views
-/// take the largest that leaves the tables room below them.
-const VIEW_SHARES: [f64; 3] = [0.54, 0.5, 0.45];
-
-/// The planetary views' μ_l and their region in the top of `right` when the front view may
-/// take `share` of its width.
-fn planetary_frame(pl: &PlanetaryProject, right: Rect, share: f64) -> (f64, f64, Rect) {
-    let s = &pl.stage;
-    let mu = planetary_view::scale_for(s, pl.module, (right.width() * share - 10.0).min(260.0));
-    let across = 2.0 * planetary_view::extent(s, pl.module) / mu;
-    let view_h = across + 16.0;
-    (mu, across, Rect::new(right.x0, right.y0, right.x1, right.y0 + 14.0 + view_h + 6.0))
-}
-
-/// The planetary views in the top of `right`: the front view, the kinematic scheme and beside
-/// it the pictures of linear and angular velocities, with the ratio read from them.
-fn planetary_group(pl: &PlanetaryProject, right: Rect, share: f64, words: &GearWords) -> PlanetaryDrawn {
-    let (l, lang) = (words.sheet, words.lang);
-    let s = &pl.stage;
-    let (mu, across, region) = planetary_frame(pl, right, share);
-    let mut g = Group::new("planetary", region);
-    let [u, required] =
-        <[String; 2]>::try_from(fmt::values_alike(&[s.ratio, s.ratio_required], lang)).expect("two values written");
-    let title = l.planetary_title(&u, &required, &s.planets.to_string());
-    // In the mesh's title's lettering: the two are the sheet's sections (in 3.5 mm it read
-    // as a caption under the mesh's, a teacher's review).
-    g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 6.0), title, 5.0, Anchor::Start));
-    let scheme = match s.scheme {
-        crate::gears::planetary::Scheme::SunPlanetRing => l.scheme_sun_planet_ring(),
-        crate::gears::planetary::Scheme::DoublePlanet => l.scheme_double_planet(),
-    };
-    let sc = l.scale(&fmt::localise(&scale::ratio(mu), lang));
-    g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 11.0), format!("{scheme}; {sc}"), 2.5, Anchor::Start));
-    let (top, bottom) = (region.y0 + 14.0, region.y1 - 6.0);
-    let front = Rect::new(region.x0, top, region.x0 + across + 14.0, bottom);
-    let scheme_w = ((region.x1 - front.x1) * 0.48).min(110.0);
-    let side = Rect::new(front.x1, top, front.x1 + scheme_w, bottom);
-    g.text(Text::new(Point::new(front.center().x, region.y1 - 1.5), l.front_view(), 2.5, Anchor::Middle));
-    g.text(Text::new(Point::new(side.center().x, region.y1 - 1.5), l.side_view(), 2.5, Anchor::Middle));
-    let mut labels = Labels::new();
-    let start = g.mark();
-    let points = planetary_view::draw(&mut g, front, side, s, pl.module, mu, &mut labels);
-    let pictures = Rect::new(side.x1 + 4.0, top - 8.0, region.x1, region.y1 - 1.0);
-    let reading = velocity_pictures(&mut g, pictures, &points, s.ratio, words, &mut labels);
-    labels.place(&mut g, region);
-    g.part_from(PLANETARY_PART, start);
-    PlanetaryDrawn { group: g, mu, bottom: region.y1, reading }
-}
-
-/// The pictures of linear and angular velocities in `area` beside the scheme, their captions
-/// and the ratio read from them against the analytic `ratio`.
-fn velocity_pictures(
-    g: &mut Group,
-    area: Rect,
-    points: &planetary_view::SchemePoints,
-    ratio: f64,
-    words: &GearWords,
-    labels: &mut Labels,
-) -> Reading {
-    let (l, lang) = (words.sheet, words.lang);
-    let axis = points.axis.y;
-    // The caption of the linear velocities above C; the plan's caption and reading at the foot.
-    let caption_at = Point::new(area.x0 + 10.0, points.c.y - 3.0);
-    g.text(Text::new(caption_at, l.linear_velocities(), 2.5, Anchor::Start));
-    let read = |mm: f64| fmt::localise(&format!("{:.1}", Reading::read(mm)), lang);
-    let note = |u: f64| {
-        let difference = fmt::localise(&format!("{:.2}", (u - ratio) / ratio * 100.0), lang);
-        wrap(&l.graphic_ratio_note(&fmt::value(ratio, lang), &difference), CELL_TEXT, area.width() - 2.0)
-    };
-    // The plan leaves room under it for its caption, the reading and the note (whose length
-    // the reading hardly changes: a difference of −99,99 % is the longest).
-    let line = CELL_TEXT * crate::drawing::text::LINE_PITCH;
-    let foot = area.y1 - (2 + note(-99.99 * ratio).len()) as f64 * line - 2.0;
-    let upper = Rect::new(area.x0, area.y0, area.x1, axis);
-    let lower = Rect::new(area.x0, axis, area.x1, foot);
-    let (reading, plan_bottom) = stage_velocities::draw(g, upper, lower, points, labels);
-    let (u_line, notes) = match reading.ratio {
-        Some(u) => (l.graphic_ratio(&read(reading.sun_mm), &read(reading.carrier_mm), &fmt::value(u, lang)), note(u)),
-        None => (l.graphic_ratio_unreadable().to_string(), Vec::new()),
-    };
-    let at = |y: f64| Point::new(area.x0 + 1.0, y);
-    let mut y = plan_bottom.min(foot) + line;
-    g.text(Text::new(at(y), l.angular_velocities(), CELL_TEXT, Anchor::Start));
-    y += line;
-    g.text(Text::new(at(y), "u", CELL_TEXT, Anchor::Start).with_sub("1H", u_line));
-    for text in notes {
-        y += line;
-        g.text(Text::new(at(y), text, CELL_TEXT, Anchor::Start));
-    }
-    reading
 }
 
 impl Sheet for GearsSheet<'_> {

@@ -41,6 +41,14 @@ pub fn scale_for(s: &Stage, m: f64, size: f64) -> f64 {
     crate::drawing::scale::length_scale(2.0 * extent(s, m) / size)
 }
 
+/// The heights (mm) above the axis at which the kinematic scheme drawn at μ_l `mu` puts the
+/// sun's pitch point A, the planet's axle B and the planet's contact with the ring C (see
+/// [`SchemePoints`]).
+pub fn heights(s: &Stage, m: f64, mu: f64) -> [f64; 3] {
+    let r = radii(s, m);
+    [r.sun / mu, r.carrier / mu, r.ring / mu]
+}
+
 /// The stage as drawn: its radii, the module (m) and the view of its lengths.
 struct Drawn<'a> {
     stage: &'a Stage,

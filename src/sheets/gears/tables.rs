@@ -44,17 +44,49 @@ pub fn table_count(p: &GearsProject) -> u32 {
 /// 2.5 mm columns. The room the planetary views leave below them is the tables': a right
 /// half left empty is what a teacher marks down.
 pub fn group(notes: &[NoteTable], region: Rect, tolerance: Option<f64>, words: &GearWords) -> Group {
-    for h in [LARGEST_TEXT, LARGE_TEXT] {
-        let drawn = lettered(notes, tolerance, words, h);
-        let sizes: Vec<(f64, f64)> = drawn.iter().map(Table::size).collect();
-        if fit(&sizes, region) {
-            return table::flow_spread("tables", drawn, region, GAP);
-        }
-        if table::rows_fit(&sizes, region, GAP) {
-            return table::flow_rows("tables", drawn, region, GAP);
+    let drawn = [LARGEST_TEXT, LARGE_TEXT].map(|h| lettered(notes, tolerance, words, h));
+    let sizes = drawn.each_ref().map(|d| d.iter().map(Table::size).collect::<Vec<_>>());
+    let [largest, large] = drawn;
+    let lettering = |i: usize| if i == 0 { largest } else { large };
+    match arrangement(&sizes, region) {
+        Arrangement::Columns(i) => table::flow_spread("tables", lettering(i), region, GAP),
+        Arrangement::Rows(i) => table::flow_rows("tables", lettering(i), region, GAP),
+        Arrangement::Small => table::flow("tables", lettered(notes, tolerance, words, CELL_TEXT), region, GAP),
+    }
+}
+
+/// How [`group`] sets the tables in a region: in columns or in rows in the lettering of the
+/// index (0: 5 mm, 1: 3.5 mm), or in 2.5 mm columns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Arrangement {
+    Columns(usize),
+    Rows(usize),
+    Small,
+}
+
+impl Arrangement {
+    /// The cells' lettering, mm.
+    pub fn lettering(self) -> f64 {
+        match self {
+            Arrangement::Columns(i) | Arrangement::Rows(i) => [LARGEST_TEXT, LARGE_TEXT][i],
+            Arrangement::Small => CELL_TEXT,
         }
     }
-    table::flow("tables", lettered(notes, tolerance, words, CELL_TEXT), region, GAP)
+}
+
+/// How [`group`] sets tables of `sizes` (in 5 and in 3.5 mm lettering, [`largest_sizes`]
+/// and [`large_sizes`]) in `region`: the first of 5 mm columns, 5 mm rows, 3.5 mm columns,
+/// 3.5 mm rows that fits it, else 2.5 mm columns.
+pub fn arrangement(sizes: &[Vec<(f64, f64)>; 2], region: Rect) -> Arrangement {
+    for (i, s) in sizes.iter().enumerate() {
+        if fit(s, region) {
+            return Arrangement::Columns(i);
+        }
+        if table::rows_fit(s, region, GAP) {
+            return Arrangement::Rows(i);
+        }
+    }
+    Arrangement::Small
 }
 
 /// The tables' sizes in 3.5 mm lettering, for [`fit`] (the planetary views grow while they
