@@ -55,13 +55,22 @@ fn the_worked_examples_stroke_is_dimensioned_as_computed_from_its_lengths() {
 /// language: upright text along a vertical line, no leader over 20 mm on the sheet.
 #[test]
 fn a_strokes_value_slides_along_its_line_to_where_it_has_room() {
+    assert_stroke_value_along_its_line(2, 20.0);
+}
+
+/// Task 6's `variant` in every language: H written along its vertical dimension line, no
+/// layout fault, no leader on the sheet longer than `longest_mm`.
+fn assert_stroke_value_along_its_line(variant: u32, longest_mm: f64) {
     for lang in tmm_sheets::drawing::labels::Language::ALL {
-        let out = common::catalogue_sheet1("6", 2, lang);
+        let out = common::catalogue_sheet1("6", variant, lang);
         let mech = out.scene.groups.iter().find(|g| g.id == "mechanism").unwrap();
         let h = mech.texts().find(|t| t.text == "H").unwrap_or_else(|| panic!("{lang:?}: no H"));
         assert_eq!(h.rotate.abs(), 90.0, "{lang:?}: H written along its vertical line");
-        let longest = out.results["layout"]["longest_leader_mm"].as_f64().unwrap();
-        assert!(longest <= 20.0, "{lang:?}: a leader of {longest} mm");
+        let layout = &out.results["layout"];
+        let faults = common::layout_faults(layout);
+        assert!(faults.is_empty(), "{lang:?}: {faults:?}");
+        let longest = layout["longest_leader_mm"].as_f64().unwrap();
+        assert!(longest <= longest_mm, "{lang:?}: a leader of {longest} mm");
     }
 }
 
@@ -71,17 +80,7 @@ fn a_strokes_value_slides_along_its_line_to_where_it_has_room() {
 /// crank, in Uzbek), in every language, with no text crossed.
 #[test]
 fn a_strokes_value_interrupts_the_other_positions_lines_rather_than_hang_far_off() {
-    for lang in tmm_sheets::drawing::labels::Language::ALL {
-        let out = common::catalogue_sheet1("6", 10, lang);
-        let mech = out.scene.groups.iter().find(|g| g.id == "mechanism").unwrap();
-        let h = mech.texts().find(|t| t.text == "H").unwrap_or_else(|| panic!("{lang:?}: no H"));
-        assert_eq!(h.rotate.abs(), 90.0, "{lang:?}: H written along its vertical line");
-        let layout = &out.results["layout"];
-        let faults = common::layout_faults(layout);
-        assert!(faults.is_empty(), "{lang:?}: {faults:?}");
-        let longest = layout["longest_leader_mm"].as_f64().unwrap();
-        assert!(longest <= 30.0, "{lang:?}: a leader of {longest} mm");
-    }
+    assert_stroke_value_along_its_line(10, 30.0);
 }
 
 /// The rocker's swing angle ψ on sheet 1, against references from the fixtures' lengths

@@ -256,6 +256,10 @@ pub struct Group {
     pub breakable: Vec<usize>,
 }
 
+/// The most breakable lines (a link's position, a trajectory's dash) one text may
+/// interrupt: a label's, or a stroke's value along its dimension line.
+pub const MOST_BROKEN: usize = 6;
+
 impl Group {
     pub fn new(id: impl Into<String>, region: Rect) -> Group {
         Group {

@@ -2,7 +2,7 @@
 
 use super::obstacles::{Obstacles, Piece, segments};
 use super::path::{Path, on_circle};
-use super::scene::{Anchor, Group, Item, Pen, THIN, Text};
+use super::scene::{Anchor, Group, Item, MOST_BROKEN, Pen, THIN, Text};
 use super::text::LabelText;
 use crate::num::math::{self, Norm};
 use crate::num::tol;
@@ -302,9 +302,6 @@ pub fn value_along(
     g.interrupt_breakable(&[gap(bb)]);
     true
 }
-
-/// The most of the other positions' lines a stroke's value may interrupt.
-const MOST_BROKEN: usize = 6;
 
 /// What a turn arrow crossing a text costs, in lines crossed.
 const TEXT_CROSSED: usize = 20;

@@ -13,7 +13,7 @@
 //! may be beside the neighbouring side, and read as its name. The geometry sits in an R-tree ([`super::obstacles`]).
 
 use super::obstacles::{Obstacles, Piece};
-use super::scene::{Anchor, Group, THIN};
+use super::scene::{Anchor, Group, MOST_BROKEN, THIN};
 use super::text::{LabelText, SLANT, SUB};
 use crate::num::math::Norm;
 use candidate::{Candidate, TOUCH, Verdict, least_bad};
@@ -396,8 +396,6 @@ struct Layers<'a> {
 /// point on breakable lines if it can ([`on_breakable`]): a pivot's "O" hung 20–35 mm off
 /// the fan of its crank's twelve positions.
 const LONG_LEADER: f64 = 8.0;
-/// The most breakable lines (a link's position, a trajectory's dash) a label may interrupt.
-const MOST_BROKEN: usize = 6;
 /// How many of a label's cheapest spots are looked at for one beside its point.
 pub(super) const NEAR_SPOTS: usize = 6 * DIRECTIONS;
 

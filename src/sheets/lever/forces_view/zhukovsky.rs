@@ -26,15 +26,15 @@ pub(super) fn lever_lines(inp: &ForcesInput, width: f64) -> usize {
 /// of powers (table 5's three), said where each comes from, wrapped to `width` mm.
 fn balancing_rows(inp: &ForcesInput, width: f64) -> Vec<Vec<LabelText>> {
     let (f, w) = (&inp.fa.forces, &inp.words);
-    let newton = |v: f64| format!(" = {} {}", fmt::value(v, w.lang), w.common.unit_n());
+    let balancing = |prime: &str, v: f64| {
+        value_item(inp, LabelText::new(prime, w.sheet.sub_balancing()), v, w.common.unit_n(), false)
+    };
+    let mut power = balancing("P″", f.p_m_power);
+    power.tail = format!("{} {}", power.tail, w.sheet.from_power_balance());
     let items = vec![
-        LabelText::new("P′", w.sheet.sub_balancing()).with_tail(newton(f.p_m_lever)),
+        balancing("P′", f.p_m_lever),
         LabelText::new("Δ", "").with_tail(format!(" = {} %", fmt::value(f.difference_percent(), w.lang))),
-        LabelText::new("P″", w.sheet.sub_balancing()).with_tail(format!(
-            "{} {}",
-            newton(f.p_m_power),
-            w.sheet.from_power_balance()
-        )),
+        power,
     ];
     wrap_items(items, width, ";", "")
 }
@@ -134,7 +134,12 @@ pub(super) fn draw_lever(
     (mu, mu_f): (f64, f64),
 ) {
     let legend = lever_legend(inp, mu_f, r.width() - 4.0);
-    let text_h = (lever_lines(inp, r.width() - 4.0) + legend.len()) as f64 * LINE + DESCENT;
+    let mut lines = vec![vec![
+        with_semicolon(scale_item(inp, "v", mu, inp.words.common.unit_v_per_mm())),
+        scale_item(inp, "F", mu_f, inp.words.common.unit_n_per_mm()),
+    ]];
+    lines.extend(balancing_rows(inp, r.width() - 4.0));
+    let text_h = (lines.len() + legend.len()) as f64 * LINE + DESCENT;
     let plan_cell = Rect::new(r.x0, r.y0, r.x1, r.y1 - text_h);
     let cell = PlanCell {
         cell: plan_cell,
@@ -154,11 +159,6 @@ pub(super) fn draw_lever(
     for (image, force, label) in forces {
         arrows.arrow(g, labels, at(image), force, label);
     }
-    let mut lines = vec![vec![
-        with_semicolon(scale_item(inp, "v", mu, inp.words.common.unit_v_per_mm())),
-        scale_item(inp, "F", mu_f, inp.words.common.unit_n_per_mm()),
-    ]];
-    lines.extend(balancing_rows(inp, r.width() - 4.0));
     let y = text_rows(g, r.x0 + 2.0, r.y1 - text_h + LINE, &legend);
     text_rows(g, r.x0 + 2.0, y, &lines);
 }
