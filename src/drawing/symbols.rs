@@ -343,6 +343,12 @@ pub fn turn(from: Vec2, to: Vec2) -> (f64, f64) {
 /// 5 mm past each (GOST 2.307, as a short linear dimension's).
 pub fn angular_dimension(g: &mut Group, apex: Point, (from, to): (Vec2, Vec2), r: f64, inside_min: f64) {
     let (a0, sweep) = turn(from, to);
+    arc_dimension(g, apex, (a0, sweep), r, inside_min);
+}
+
+/// As [`angular_dimension`], from the paper angle `a0` by the signed `sweep` (radians), which
+/// may exceed half a turn (a cam's phase of 200°).
+pub fn arc_dimension(g: &mut Group, apex: Point, (a0, sweep): (f64, f64), r: f64, inside_min: f64) {
     let tangent = |a: f64| Vec2::new(-math::sin(a), math::cos(a)) * sweep.signum();
     let out = if r * sweep.abs() < inside_min { -1.0 } else { 1.0 };
     let past = if out > 0.0 { 0.0 } else { 5.0 / r * sweep.signum() };

@@ -5,7 +5,10 @@
 //! with an offset, its axis in each position tangent to the circle of radius e; without one,
 //! its axis through O. Then the pitch profile through the B_k, the rollers, the working
 //! profile (the rollers' envelope as Bézier pieces), the base circle with r_min, the follower
-//! in the start position and the cam's sense of rotation.
+//! in the start position, the cam's sense of rotation and the phase angles at O
+//! (`phase_angles.rs`).
+
+mod phase_angles;
 
 use super::labels::{CamLabels, CamWords};
 use super::nomogram::{Placement, bounds, drawn_position_labels};
@@ -105,7 +108,8 @@ pub fn draw(
     draw_profiles(g, view, d, pieces);
     draw_rollers(g, labels, view, d, phis);
     follower_at_start(g, d, &|v| view.p(v), mu);
-    draw_rotation(g, labels, view, d);
+    let arrow_r = draw_rotation(g, labels, view, d);
+    phase_angles::draw(g, labels, view, d, words, arrow_r);
     name_profiles(labels, view, d, phis, words.sheet);
     draw_r_min(g, labels, view, d, words);
     ProfileDrawn { mu, pieces: pieces.count, deviation: pieces.deviation }
@@ -141,8 +145,8 @@ fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis
     }
 }
 
-/// O, and the sense of rotation with ω beside its arrow.
-fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, d: &Design) {
+/// O, and the sense of rotation with ω beside its arrow; the arrow's radius, mm.
+fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, d: &Design) -> f64 {
     frame_pivot(g, view.origin, 1.5);
     labels.add_text(view.origin, Vec2::new(-1.0, 1.0), "O", 3.5);
     let arrow_r = (0.25 * d.centre.r_min / view.mu).max(6.0);
@@ -150,6 +154,7 @@ fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, d: &Design) {
     let (s, c) = sin_cos(if view.mirror { 170.0f64 } else { 230.0f64 }.to_radians());
     let out = Vec2::new(c, s);
     labels.add_text_ranked(view.origin + out * arrow_r, out, "ω", 3.5, 0);
+    arrow_r
 }
 
 /// The profiles' names.
@@ -297,8 +302,7 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
             if mm(e) > tol::OFFSET_CIRCLE_MM {
                 g.circle(at(Vec2::ZERO), e / mu, AXIS);
             }
-            // The axis' foot nearest O, and the axis from it past the roller centre.
-            let foot = Vec2::new(0.0, d.centre.o.y);
+            let foot = axis_foot(d);
             let o = at(Vec2::ZERO);
             for &phi in phis {
                 let (f, end) = (at(pr.carried(foot, phi)), at(pr.pitch(phi).p));
@@ -308,6 +312,12 @@ fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point
             }
         }
     }
+}
+
+/// The translating follower's axis' foot nearest O (follower frame): its axis runs from it
+/// past the roller centre.
+fn axis_foot(d: &Design) -> Vec2 {
+    Vec2::new(0.0, d.centre.o.y)
 }
 
 /// A small turn of the cam, rad, that shows which way the carried pivot runs on paper: far

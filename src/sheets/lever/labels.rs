@@ -90,6 +90,6 @@ mod tests {
             [ru.force(Inertia, "2"), ru.force(Balancing, ""), ru.force(Resistance, "5"), ru.force(Gas, "3")],
             ["и2", "ур", "пс5", "г3"]
         );
-        assert_eq!(LeverLabels::get(Language::En).force(Balancing, ""), "m");
+        assert_eq!(LeverLabels::get(Language::En).force(Balancing, ""), "b");
     }
 }
