@@ -178,3 +178,21 @@ fn the_base_circles_name_takes_another_point_of_the_near_dwell_where_the_first_h
     assert!(longest < 40.0, "a leader of {longest} mm");
     assert!(layout_faults(layout).is_empty(), "{}", layout["problems"]);
 }
+
+/// The custom-laws cam keeps its profile at 5:2 in every language: the variant drawing it at
+/// 1:1 left 0.001 less of the sheet empty in Uzbek (ω's arrow turned elsewhere) and was
+/// taken, its profile crowded and r_min's value 28.7 mm off; a smaller profile now needs a
+/// clearly emptier sheet.
+#[test]
+fn a_smaller_profile_is_not_taken_for_a_cells_worth_of_ink() {
+    let mut scales = Vec::new();
+    each_sheet_3(|name, lang, results| {
+        if name == "custom-laws" {
+            scales.push((lang, results["profile_mu_l"].as_f64().unwrap()));
+        }
+    });
+    assert_eq!(scales.len(), 3);
+    for (lang, mu) in scales {
+        assert!((mu - 0.0004).abs() < 1e-12, "{lang:?}: the profile at {mu} m/mm, not 5:2");
+    }
+}

@@ -2,7 +2,7 @@
 //! phase's arc has its arrowheads on the lines of the phase's ends, the phase's angle apart
 //! at O, and its value written φ = …° — against the phases the project file gives, for a
 //! rocker (the worked example) and a translating follower with an offset, whose arcs end on
-//! its axes, not on rays through O.
+//! its axes, not on rays through O. And ω's arrow at O turned clear of r_min's radius.
 #![allow(clippy::disallowed_methods)]
 
 use kurbo::Point;
@@ -139,4 +139,49 @@ fn a_translating_followers_phase_arcs_end_on_its_axes() {
     let g = profile_group(&text, Language::Ru);
     assert_phases_at_o("translating-offset-auto", &g, &[120.0, 30.0, 90.0]);
     assert_eq!(phase_values(&g).len(), 3, "{:?}", phase_values(&g));
+}
+
+/// Whether the segments a–b and c–d cross.
+fn cross((a, b): (Point, Point), (c, d): (Point, Point)) -> bool {
+    let side = |p: Point, q: Point, r: Point| (q - p).cross(r - p);
+    let (d1, d2) = (side(c, d, a), side(c, d, b));
+    let (d3, d4) = (side(a, b, c), side(a, b, d));
+    d1 * d2 < 0.0 && d3 * d4 < 0.0
+}
+
+/// The arc round O nearest it (ω's arrow, the phases' arcs lying further out), as a polyline.
+fn omega_arc(g: &Group, o: Point) -> Vec<Point> {
+    let arcs = g.items.iter().filter_map(|i| match i {
+        Item::Path { path, .. } => match path.segs.as_slice() {
+            [Seg::Arc(a)] if (a.center - o).hypot() < 1e-6 => Some(*a),
+            _ => None,
+        },
+        _ => None,
+    });
+    let a = arcs.min_by(|x, y| x.radii.x.total_cmp(&y.radii.x)).expect("ω's arc");
+    (0..=48)
+        .map(|k| {
+            let t = a.start_angle + a.sweep_angle * f64::from(k) / 48.0;
+            o + kurbo::Vec2::new(t.cos(), t.sin()) * a.radii.x
+        })
+        .collect()
+}
+
+#[test]
+fn omegas_arrow_crosses_no_line_round_a_rockers_cam() {
+    // Inside a rocker's cam only r_min's radius and the phases' rays run to O: the arrow
+    // has room clear of them all (it crossed r_min's radius beside its head).
+    let knife = std::fs::read_to_string(common::root().join("fixtures/cams/knife-rocker.yaml")).unwrap();
+    for (name, text) in [("worked example", pipeline::DEFAULT_PROJECT), ("knife-rocker", knife.as_str())] {
+        for lang in Language::ALL {
+            let g = profile_group(text, lang);
+            let (o, _) = centre(&g);
+            let arc = omega_arc(&g, o);
+            let lines = straight_pieces(&g);
+            for w in arc.windows(2) {
+                let hit = lines.iter().find(|&&l| cross((w[0], w[1]), l));
+                assert!(hit.is_none(), "{name} {lang:?}: ω's arrow crosses the line {hit:?}");
+            }
+        }
+    }
 }

@@ -2,6 +2,7 @@
 //! notes under them, the nomogram of the minimum radius and the profile arranged where each
 //! comes out largest (`regions.rs`), the tables in a strip left of the title block.
 
+mod choice;
 mod diagrams;
 pub mod labels;
 mod nomogram;
@@ -206,7 +207,8 @@ fn title_lines(title: &str, r: Rect) -> (Point, Vec<String>) {
 /// they fit, and keeps the one that leaves the least of the sheet empty (the usual width by
 /// the rule on a tie) among those whose layout is no less clean: a column
 /// too narrow for its views' room leaves a band across the sheet's middle; one too wide
-/// shrinks the views; larger tables can leave the pressure angle's diagram room beside them.
+/// shrinks the views; larger tables can leave the pressure angle's diagram room beside them
+/// (`choice.rs`: a smaller profile only for a clearly emptier sheet).
 pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     use rayon::prelude::*;
     let prepared = Prepared::new(ctx, p);
@@ -223,12 +225,9 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
         || COLUMN_WIDTHS[1..].par_iter().filter_map(|&w| at_width(w).ok()).collect::<Vec<_>>(),
     );
     let (usual, usual_large) = usual?;
-    let (faults, empty) = measured(&usual);
-    let first = ((faults, empty - 0.005), usual);
-    let better = |a: (usize, f64), b: (usize, f64)| a.0 <= b.0 && a.1 < b.1;
     let rest =
         usual_large.into_iter().chain(others.into_iter().flat_map(|(rule, large)| [Some(rule), large]).flatten());
-    Ok(rest.map(|b| (measured(&b), b)).fold(first, |best, b| if better(b.0, best.0) { b } else { best }).1)
+    Ok(choice::kept(usual, rest))
 }
 
 /// How the tables are lettered.
@@ -239,18 +238,6 @@ enum Lettering {
     ByRule,
     /// In [`LARGE_TEXT`] wherever they fit.
     Large,
-}
-
-/// A build's drawings as the layout measure finds them on the page: their faults (texts
-/// crossed or overlapping, items out of their regions) and their share of empty cells.
-fn measured(b: &CamBuild) -> (usize, f64) {
-    use crate::drawing::{frame, layout, scene::Scene};
-    let (width, height) = frame::page();
-    let groups = b.composition.groups.clone();
-    let scene = Scene { ink: Default::default(), name: String::new(), width, height, title: String::new(), groups };
-    let l = layout::measure(&scene);
-    let empty = layout::empty_share(&scene, frame::inner(), frame::title_block_rect(), &[]);
-    (l.texts_crossed + l.text_overlaps + l.outside_region, empty)
 }
 
 /// What sheet 3 draws whatever its column's width: the integration, the positions, the

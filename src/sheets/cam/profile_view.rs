@@ -15,10 +15,11 @@ use super::nomogram::{Placement, bounds, drawn_position_labels};
 use crate::cams::Design;
 use crate::cams::follower::Follower;
 use crate::drawing::fmt;
+use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
-use crate::drawing::symbols::{angle_mark, frame_pivot, hatch, turn_arrow, vector};
+use crate::drawing::symbols::{angle_mark, clear_turn_arrow, frame_pivot, hatch, vector};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::num::bezier::Fitted;
@@ -108,10 +109,12 @@ pub fn draw(
     draw_profiles(g, view, d, pieces);
     draw_rollers(g, labels, view, d, phis);
     follower_at_start(g, d, &|v| view.p(v), mu);
+    // r_min's radius before ω's arrow, which turns clear of it (it crossed the radius
+    // beside its head on the worked example).
+    draw_r_min(g, labels, view, d, words);
     let arrow_r = draw_rotation(g, labels, view, d);
     phase_angles::draw(g, labels, view, d, words, arrow_r);
     name_profiles(labels, view, d, phis, words.sheet);
-    draw_r_min(g, labels, view, d, words);
     ProfileDrawn { mu, pieces: pieces.count, deviation: pieces.deviation }
 }
 
@@ -145,13 +148,16 @@ fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis
     }
 }
 
-/// O, and the sense of rotation with ω beside its arrow; the arrow's radius, mm.
+/// O, and the sense of rotation with ω beside its arrow, turned from the upper left to
+/// where it crosses fewest lines; the arrow's radius, mm.
 fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, d: &Design) -> f64 {
     frame_pivot(g, view.origin, 1.5);
     labels.add_text(view.origin, Vec2::new(-1.0, 1.0), "O", 3.5);
     let arrow_r = (0.25 * d.centre.r_min / view.mu).max(6.0);
-    turn_arrow(g, view.origin, arrow_r, 200.0, 60.0, view.mirror, THIN);
-    let (s, c) = sin_cos(if view.mirror { 170.0f64 } else { 230.0f64 }.to_radians());
+    let mut drawn = Obstacles::of_items(&g.items);
+    let start = clear_turn_arrow(g, &mut drawn, view.origin, arrow_r, 200.0, 60.0, view.mirror, (THIN, 0.0));
+    // ω at the arc's middle, outward.
+    let (s, c) = sin_cos(if view.mirror { start - 30.0 } else { start + 30.0 }.to_radians());
     let out = Vec2::new(c, s);
     labels.add_text_ranked(view.origin + out * arrow_r, out, "ω", 3.5, 0);
     arrow_r
