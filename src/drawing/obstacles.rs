@@ -228,6 +228,12 @@ impl Obstacles {
         owners.len()
     }
 
+    /// How many stroke segments the polyline `pts` crosses, segment by segment (an arc
+    /// tried for a dimension, sampled).
+    pub fn hits_polyline(&self, pts: &[Point]) -> usize {
+        pts.windows(2).map(|w| self.hits_segment(w[0], w[1])).sum()
+    }
+
     /// How many stroke segments the segment `a`–`b` crosses.
     pub fn hits_segment(&self, a: Point, b: Point) -> usize {
         // The few that cross, each once (a piece is listed in every cell it passes).

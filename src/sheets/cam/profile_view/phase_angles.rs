@@ -61,7 +61,7 @@ pub(super) fn draw(g: &mut Group, labels: &mut Labels, view: View, d: &Design, w
         // The radius whose arc crosses fewest lines drawn so far, the nearest O first.
         let crossings = |r: f64| {
             let pts: Vec<Point> = (0..=24).map(|k| on_circle(o, r, a0 + sweep * f64::from(k) / 24.0)).collect();
-            pts.windows(2).map(|w| drawn.hits_segment(w[0], w[1])).sum::<usize>()
+            drawn.hits_polyline(&pts)
         };
         let r = SHARES.iter().map(|s| inner + (outer - inner) * s).min_by_key(|&r| crossings(r)).unwrap_or(inner);
         arcs.push((a, b, sub, sweep, r));

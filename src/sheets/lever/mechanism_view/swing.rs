@@ -49,7 +49,7 @@ pub(super) fn swing(v: &MechanismView, g: &mut Group, labels: &mut Labels) -> Op
     let crossings = |r: f64| {
         let pts: Vec<Point> = (0..=24).map(|k| on_circle(c, r, a0 + sweep * f64::from(k) / 24.0)).collect();
         let fits = pts.iter().all(|&p| inside.contains(p));
-        fits.then(|| pts.windows(2).map(|w| drawn.hits_segment(w[0], w[1])).sum::<usize>())
+        fits.then(|| drawn.hits_polyline(&pts))
     };
     let r = RADII
         .iter()
