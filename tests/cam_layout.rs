@@ -179,20 +179,23 @@ fn the_base_circles_name_takes_another_point_of_the_near_dwell_where_the_first_h
     assert!(layout_faults(layout).is_empty(), "{}", layout["problems"]);
 }
 
-/// The custom-laws cam keeps its profile at 5:2 in every language: the variant drawing it at
-/// 1:1 left 0.001 less of the sheet empty in Uzbek (ω's arrow turned elsewhere) and was
-/// taken, its profile crowded and r_min's value 28.7 mm off; a smaller profile now needs a
-/// clearly emptier sheet.
+/// The custom-laws cam keeps its profile at 5:2 and translating-offset-auto at 2:1 in every
+/// language: the variant drawing custom-laws at 1:1 left 0.001 less of the sheet empty in
+/// Uzbek (ω's arrow turned elsewhere) and was taken, its profile crowded and r_min's value
+/// 28.7 mm off; a smaller profile now needs a clearly emptier sheet.
 #[test]
 fn a_smaller_profile_is_not_taken_for_a_cells_worth_of_ink() {
+    // translating-offset-auto in Russian alone took 1:1 for 0.014 of share, its axes' fan
+    // crowding the phases' arcs: a profile at half the scale needs 0.02.
+    let expected = [("custom-laws", 0.0004, "5:2"), ("translating-offset-auto", 0.0005, "2:1")];
     let mut scales = Vec::new();
     each_sheet_3(|name, lang, results| {
-        if name == "custom-laws" {
-            scales.push((lang, results["profile_mu_l"].as_f64().unwrap()));
+        if let Some(&(_, mu, scale)) = expected.iter().find(|e| e.0 == name) {
+            scales.push((name.to_string(), lang, results["profile_mu_l"].as_f64().unwrap(), mu, scale));
         }
     });
-    assert_eq!(scales.len(), 3);
-    for (lang, mu) in scales {
-        assert!((mu - 0.0004).abs() < 1e-12, "{lang:?}: the profile at {mu} m/mm, not 5:2");
+    assert_eq!(scales.len(), 6);
+    for (name, lang, mu, want, scale) in scales {
+        assert!((mu - want).abs() < 1e-12, "{name} {lang:?}: the profile at {mu} m/mm, not {scale}");
     }
 }

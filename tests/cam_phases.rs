@@ -167,21 +167,89 @@ fn omega_arc(g: &Group, o: Point) -> Vec<Point> {
         .collect()
 }
 
+/// ω's arrow on the profile: the lines it crosses, and the room (mm) between its ends and
+/// every line — a crossed line's distance from the arrow's ends, any other line's from the
+/// whole arc. Leaders ending on the arc (ω's own) are not lines it meets.
+fn omega_arrow_room(g: &Group) -> (usize, f64, Option<(Point, Point)>) {
+    let (o, _) = centre(g);
+    let arc = omega_arc(g, o);
+    let radius = (arc[0] - o).hypot();
+    let ends = [arc[0], arc[arc.len() - 1]];
+    let crosses = |l: (Point, Point)| arc.windows(2).any(|w| cross((w[0], w[1]), l));
+    let leader = |(a, b): (Point, Point)| {
+        [a, b].iter().any(|&p| ((p - o).hypot() - radius).abs() < 0.75 && ends.iter().all(|&e| (e - p).hypot() > 1.0))
+    };
+    let to_arc = |l| arc.iter().map(|&p| distance_to_piece(p, l)).fold(f64::INFINITY, f64::min);
+    let to_ends = |l| ends.iter().map(|&p| distance_to_piece(p, l)).fold(f64::INFINITY, f64::min);
+    let lines: Vec<_> = straight_pieces(g).into_iter().filter(|&l| !leader(l)).collect();
+    let crossed = lines.iter().filter(|&&l| crosses(l)).count();
+    let room_to = |l| if crosses(l) { to_ends(l) } else { to_arc(l) };
+    let nearest = lines.iter().copied().min_by(|&a, &b| room_to(a).total_cmp(&room_to(b)));
+    (crossed, nearest.map_or(f64::INFINITY, room_to), nearest)
+}
+
 #[test]
-fn omegas_arrow_crosses_no_line_round_a_rockers_cam() {
+fn omegas_arrow_keeps_its_ends_clear_of_every_line() {
     // Inside a rocker's cam only r_min's radius and the phases' rays run to O: the arrow
-    // has room clear of them all (it crossed r_min's radius beside its head).
-    let knife = std::fs::read_to_string(common::root().join("fixtures/cams/knife-rocker.yaml")).unwrap();
-    for (name, text) in [("worked example", pipeline::DEFAULT_PROJECT), ("knife-rocker", knife.as_str())] {
+    // crosses nothing (it crossed r_min's radius beside its head on the worked example).
+    // Inside a translating follower's fan of axes it may cross one line, mid-arc. Its ends
+    // stand 1 mm or more from every line: task 14 variant 37's head sat on an axis, task 4
+    // variant 45's tail 0.44 mm from one, knife-rocker's within 1 mm.
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    let cat = Catalogue::embedded().unwrap();
+    let mut inputs: Vec<(String, String, usize)> = vec![("worked example".into(), pipeline::DEFAULT_PROJECT.into(), 0)];
+    for (name, most) in [("knife-rocker", 0), ("custom-laws", 0), ("translating-offset-auto", 1)] {
+        let text = std::fs::read_to_string(common::root().join(format!("fixtures/cams/{name}.yaml"))).unwrap();
+        inputs.push((name.into(), text, most));
+    }
+    for (task, variant, most) in [("14", 37, 1), ("12", 21, 1), ("5", 4, 0), ("10", 9, 0), ("4", 45, 0)] {
+        let t = cat.tasks.iter().find(|t| t.id() == task).unwrap();
+        let Variant::Project { text, .. } = t.project(variant, Language::Ru, "tmm init").unwrap() else {
+            panic!("task {task} variant {variant} is complete in the guide")
+        };
+        inputs.push((format!("task {task} variant {variant}"), text, most));
+    }
+    for (name, text, most) in &inputs {
         for lang in Language::ALL {
-            let g = profile_group(text, lang);
-            let (o, _) = centre(&g);
-            let arc = omega_arc(&g, o);
-            let lines = straight_pieces(&g);
-            for w in arc.windows(2) {
-                let hit = lines.iter().find(|&&l| cross((w[0], w[1]), l));
-                assert!(hit.is_none(), "{name} {lang:?}: ω's arrow crosses the line {hit:?}");
+            let (crossed, room, nearest) = omega_arrow_room(&profile_group(text, lang));
+            assert!(crossed <= *most, "{name} {lang:?}: ω's arrow crosses {crossed} lines");
+            assert!(room >= 1.0, "{name} {lang:?}: ω's arrow ends {room:.2} mm from the line {nearest:?}");
+        }
+    }
+}
+
+/// ω's arrow over every catalogue variant with a cam, in `TMM_LANG` (ru unless uz or en):
+/// how many cross a line, and how many end within 1 mm of one (a sweep, `--ignored`).
+#[test]
+#[ignore]
+fn omegas_arrow_over_the_catalogue() {
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    let cat = Catalogue::embedded().unwrap();
+    let lang = match std::env::var("TMM_LANG").as_deref() {
+        Ok("uz") => Language::Uz,
+        Ok("en") => Language::En,
+        _ => Language::Ru,
+    };
+    let (mut sheets, mut crossing, mut close) = (0, Vec::new(), Vec::new());
+    for task in &cat.tasks {
+        for v in 1..=60 {
+            let Ok(Variant::Project { text, .. }) = task.project(v, lang, "tmm init") else { continue };
+            let Ok(mut p) = pipeline::load(&text) else { continue };
+            p.info.language = lang;
+            // A variant the guide leaves without a cam builds no sheet 3.
+            let Ok(mut built) = pipeline::build(&p, &[3]) else { continue };
+            let g = built.remove(0).output.scene.groups.into_iter().find(|g| g.id == "profile").unwrap();
+            let (crossed, room, _) = omega_arrow_room(&g);
+            sheets += 1;
+            let name = format!("t{}v{v}", task.id());
+            if crossed > 0 {
+                crossing.push(name.clone());
+            }
+            if room < 1.0 {
+                close.push(format!("{name} {room:.2}"));
             }
         }
     }
+    println!("{sheets} sheets; crossing a line: {crossing:?}; ending under 1 mm from one: {close:?}");
+    assert!(close.len() * 20 < sheets, "{close:?}");
 }

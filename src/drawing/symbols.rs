@@ -1,8 +1,11 @@
 //! Drafting symbols built from scene primitives: arrows, pivots, sliders, hatching.
 
-use super::obstacles::{Obstacles, Piece, segments};
+mod turn;
+pub use turn::{RoomAt, TurnChoice, best_turn, clear_turn_arrow, turn_arrow_into};
+
+use super::obstacles::Obstacles;
 use super::path::{Path, on_circle};
-use super::scene::{Anchor, Group, Item, MOST_BROKEN, Pen, THIN, Text};
+use super::scene::{Anchor, Group, MOST_BROKEN, Pen, THIN, Text};
 use super::text::LabelText;
 use crate::num::math::{self, Norm};
 use crate::num::tol;
@@ -103,93 +106,6 @@ pub fn turn_arrow(g: &mut Group, c: Point, r: f64, start_deg: f64, sweep_deg: f6
 pub fn turn_arrow_reach(c: Point, r: f64) -> Rect {
     let out = 2.0 * (r + ARROW_LEN);
     Rect::from_center_size(c, (out, out))
-}
-
-/// A [`turn_arrow`] turned (start every 10° from `pref_deg`) to where it crosses the fewest
-/// segments of `drawn`, with the most room round its head among equals (up to `room` mm;
-/// 0 for none asked), then nearest `pref_deg`; it joins `drawn`. Returns its start.
-#[allow(clippy::too_many_arguments)]
-pub fn clear_turn_arrow(
-    g: &mut Group,
-    drawn: &mut Obstacles,
-    c: Point,
-    r: f64,
-    pref_deg: f64,
-    sweep_deg: f64,
-    ccw: bool,
-    (pen, room): (Pen, f64),
-) -> f64 {
-    let probe = |start: f64| {
-        let mut p = Group::new("probe", Rect::ZERO);
-        turn_arrow(&mut p, c, r, start, sweep_deg, ccw, pen);
-        p
-    };
-    // Its crossings, counted up to one past `most`: a start crossing more than the best so
-    // far cannot win, and is left as soon as that is known. A text crossed (a stroke's
-    // value written along its line before the arrows) counts as many lines.
-    let crossings = |p: &Group, most: usize| {
-        let mut n = 0;
-        for (a, b) in p.items.iter().flat_map(segments) {
-            n += drawn.hits_segment(a, b) + if drawn.segment_crosses_text(a, b) { TEXT_CROSSED } else { 0 };
-            if n > most {
-                break;
-            }
-        }
-        n
-    };
-    let turn = |a: f64| {
-        let d = (a - pref_deg).rem_euclid(360.0);
-        d.min(360.0 - d)
-    };
-    // Every start, 10° apart from the preferred one: the least crossings, then the most
-    // room round the head (up to `room`: the first clear start from the preferred one set
-    // an inertia moment's head on a weight's head, a teacher's review), then the least
-    // turn.
-    let head_room = |p: &Group| -> f64 {
-        if room <= 0.0 {
-            return 0.0;
-        }
-        let Some(Item::Path { path, .. }) = p.items.first() else { return 0.0 };
-        let tip = path.end();
-        let near = drawn.near(Rect::from_center_size(tip, (2.0 * room, 2.0 * room)));
-        near.map(|(piece, _)| match *piece {
-            Piece::Segment(a, b) => {
-                kurbo::ParamCurveNearest::nearest(&kurbo::Line::new(a, b), tip, 0.0).distance_sq.sqrt()
-            }
-            Piece::Disc(c, rad) => ((tip - c).norm() - rad).max(0.0),
-            Piece::TextBox(r) => crate::drawing::obstacles::rect_segment_distance(r, (tip, tip)),
-        })
-        .fold(room, f64::min)
-    };
-    // Tried nearest the preferred start first: the first that crosses nothing with all the
-    // room asked wins without drawing the rest.
-    let mut starts: Vec<(f64, f64)> = (0..36).map(|k| pref_deg + 10.0 * f64::from(k)).map(|a| (turn(a), a)).collect();
-    starts.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let mut best: Option<((usize, f64), f64)> = None;
-    for (_, a) in starts {
-        let p = probe(a);
-        let most = best.map_or(usize::MAX, |(b, _)| b.0);
-        let crossed = crossings(&p, most);
-        if crossed > most {
-            // Beaten by the best on crossings alone (and crossing lines, it cannot end the
-            // search): its room is not measured.
-            continue;
-        }
-        let key = (crossed, -head_room(&p));
-        if best.is_none_or(|(b, _)| key.0 < b.0 || (key.0 == b.0 && key.1 < b.1)) {
-            best = Some((key, a));
-        }
-        if key.0 == 0 && -key.1 >= room {
-            break;
-        }
-    }
-    let start = best.map_or(pref_deg, |x| x.1);
-    let arrow = probe(start);
-    for (a, b) in arrow.items.iter().flat_map(segments) {
-        drawn.add(Piece::Segment(a, b), usize::MAX);
-    }
-    g.items.extend(arrow.items);
-    start
 }
 
 /// A linear dimension of the features at `a` and `b`: extension lines from them along
@@ -302,9 +218,6 @@ pub fn value_along(
     g.interrupt_breakable(&[gap(bb)]);
     true
 }
-
-/// What a turn arrow crossing a text costs, in lines crossed.
-const TEXT_CROSSED: usize = 20;
 
 /// Where along its dimension line a value is tried: the middle, then in steps of a sixth
 /// of the room each side of it, alternately toward either end.

@@ -7,18 +7,21 @@ use super::CamBuild;
 /// How much emptier another variant must leave the sheet than the usual one (its share of
 /// empty cells), so that a cell's worth of ink does not flip the layout.
 const USUAL_MARGIN: f64 = 0.005;
-/// How much emptier a variant drawing the profile at a smaller scale must leave the sheet:
-/// custom-laws in Uzbek went from 5:2 to 1:1 for 0.001 of share when ω's arrow turned
-/// elsewhere, and the profile's size is what a reader sees first.
-const SMALLER_PROFILE_MARGIN: f64 = 0.01;
+/// How much emptier a variant drawing the profile at half the scale must leave the sheet
+/// (in proportion to the scales' ratio's logarithm: 0.0064 for 5:2 against 2:1): custom-laws
+/// in Uzbek went from 5:2 to 1:1 for 0.001 of share when ω's arrow turned elsewhere, and
+/// translating-offset-auto in Russian to 1:1 from 2:1 for 0.014, its axes' fan crowding
+/// the phases' arcs and ω — the profile's size is what a reader sees first.
+const HALF_PROFILE_MARGIN: f64 = 0.02;
 
 /// Of `usual` and `rest`, the build kept.
 pub(super) fn kept(usual: CamBuild, rest: impl Iterator<Item = CamBuild>) -> CamBuild {
     let (faults, empty) = measured(&usual);
     let first = ((faults, empty - USUAL_MARGIN), usual);
     let better = |(a, ab): (&(usize, f64), &CamBuild), (b, bb): (&(usize, f64), &CamBuild)| {
-        let smaller = ab.profile_mu > bb.profile_mu * (1.0 + 1e-9);
-        let margin = if smaller { SMALLER_PROFILE_MARGIN } else { 0.0 };
+        // A larger μ draws the profile smaller.
+        let ratio = ab.profile_mu / bb.profile_mu;
+        let margin = if ratio > 1.0 + 1e-9 { HALF_PROFILE_MARGIN * ratio.log2() } else { 0.0 };
         a.0 <= b.0 && a.1 < b.1 - margin
     };
     let pick = |best: ((usize, f64), CamBuild), b: ((usize, f64), CamBuild)| {

@@ -19,7 +19,7 @@ use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
-use crate::drawing::symbols::{angle_mark, clear_turn_arrow, frame_pivot, hatch, vector};
+use crate::drawing::symbols::{RoomAt, angle_mark, best_turn, frame_pivot, hatch, turn_arrow_into, vector};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::num::bezier::Fitted;
@@ -148,16 +148,65 @@ fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis
     }
 }
 
+/// The radii ω's arrow is tried at, as shares of its nominal radius (a quarter of r_min), in
+/// the order preferred: the phases' arcs take the band beyond it.
+const OMEGA_RADII: [f64; 3] = [1.0, 0.75, 1.3];
+
+/// The sweeps ω's arrow is tried with, degrees, the usual first; a shorter one only where
+/// its arc is still [`OMEGA_LEAST_ARC`] long.
+const OMEGA_SWEEPS: [f64; 3] = [60.0, 45.0, 35.0];
+
+/// The shortest arc of a shortened ω arrow, mm (its head is 3).
+const OMEGA_LEAST_ARC: f64 = 12.0;
+
+/// The step between the starts tried for ω's arrow, degrees: in 10° steps a gap of 70°
+/// between r_min's radius and an axis had only starts on either line (task 1 variant 1).
+const OMEGA_STEP: f64 = 5.0;
+
+/// The smallest radius of ω's arrow, mm.
+const OMEGA_LEAST_R: f64 = 6.0;
+
+/// The room wanted round ω's arrow, mm.
+const OMEGA_ROOM: f64 = 1.5;
+
 /// O, and the sense of rotation with ω beside its arrow, turned from the upper left to
 /// where it crosses fewest lines; the arrow's radius, mm.
 fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, d: &Design) -> f64 {
     frame_pivot(g, view.origin, 1.5);
     labels.add_text(view.origin, Vec2::new(-1.0, 1.0), "O", 3.5);
-    let arrow_r = (0.25 * d.centre.r_min / view.mu).max(6.0);
+    let nominal = 0.25 * d.centre.r_min / view.mu;
     let mut drawn = Obstacles::of_items(&g.items);
-    let start = clear_turn_arrow(g, &mut drawn, view.origin, arrow_r, 200.0, 60.0, view.mirror, (THIN, 0.0));
+    // The usual arrow, else a smaller, a larger or a shorter one where it crosses fewer
+    // lines or leaves more room: inside a translating follower's fan of axes, or where
+    // r_min's radius halves the near dwell, every start of the usual one met a line (task
+    // 14 variant 37 crossed two; several began or ended under 1 mm from one).
+    let tries = OMEGA_SWEEPS
+        .iter()
+        .flat_map(|&sweep| OMEGA_RADII.iter().map(move |&f| ((nominal * f).max(OMEGA_LEAST_R), sweep)));
+    let (arrow_r, sweep, turn) = tries
+        .filter(|&(r, sweep)| sweep == OMEGA_SWEEPS[0] || r * sweep.to_radians() >= OMEGA_LEAST_ARC)
+        .map(|(r, sweep)| {
+            (
+                r,
+                sweep,
+                best_turn(
+                    &drawn,
+                    view.origin,
+                    r,
+                    (200.0, OMEGA_STEP),
+                    sweep,
+                    view.mirror,
+                    (THIN, OMEGA_ROOM, RoomAt::Whole),
+                ),
+            )
+        })
+        .reduce(|best, next| if next.2.beats(&best.2) { next } else { best })
+        .expect("the usual arrow is always tried");
+    let start = turn.start;
+    turn_arrow_into(g, &mut drawn, view.origin, arrow_r, start, sweep, view.mirror, THIN);
     // ω at the arc's middle, outward.
-    let (s, c) = sin_cos(if view.mirror { start - 30.0 } else { start + 30.0 }.to_radians());
+    let middle = if view.mirror { start - sweep / 2.0 } else { start + sweep / 2.0 };
+    let (s, c) = sin_cos(middle.to_radians());
     let out = Vec2::new(c, s);
     labels.add_text_ranked(view.origin + out * arrow_r, out, "ω", 3.5, 0);
     arrow_r

@@ -36,6 +36,9 @@ const PHASE_RANK: u8 = 4;
 /// through it there hung the name 57 mm off, task 14 variant 37).
 const SHARES: [f64; 3] = [0.0, 0.2, 0.4];
 
+/// Where along its arc a phase's value is tried, as shares of the arc from its start.
+const VALUE_AT: [f64; 5] = [0.5, 0.3, 0.7, 0.15, 0.85];
+
 /// The rays and arcs of the working phases with their values, if the working profile leaves
 /// room for them round O (`arrow_r`: the radius of ω's arrow on paper).
 pub(super) fn draw(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words: &CamWords, arrow_r: f64) {
@@ -81,10 +84,17 @@ pub(super) fn draw(g: &mut Group, labels: &mut Labels, view: View, d: &Design, w
         // The arc's ends where it meets the lines: the phase's angle apart.
         let a0 = angle_of(ends.at(a, r) - o);
         arc_dimension(g, o, (a0, sweep), r, ARROWS_INSIDE);
-        let mid = a0 + sweep / 2.0;
         let value = format!(" = {}°", fmt::trimmed((b - a).to_degrees(), words.lang));
-        let out = Vec2::new(math::cos(mid), math::sin(mid));
-        labels.add_ranked(on_circle(o, r, mid), out, LabelText::new("φ", sub).with_tail(value), 2.5, PHASE_RANK);
+        // Beside the arc's middle, else further along it: ω's value took the middle's room
+        // on task 4 variant 40 and hung φ_q = 120° 45 mm off.
+        let spots: Vec<(Point, Vec2)> = VALUE_AT
+            .iter()
+            .map(|f| {
+                let at = a0 + sweep * f;
+                (on_circle(o, r, at), Vec2::new(math::cos(at), math::sin(at)))
+            })
+            .collect();
+        labels.add_ranked_at_any(&spots, LabelText::new("φ", sub).with_tail(value), 2.5, PHASE_RANK);
     }
 }
 
