@@ -19,7 +19,7 @@ use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
-use crate::drawing::symbols::{RoomAt, angle_mark, best_turn, frame_pivot, hatch, turn_arrow_into, vector};
+use crate::drawing::symbols::{RoomAt, TurnChoice, angle_mark, best_turn, frame_pivot, hatch, turn_arrow_into, vector};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::num::bezier::Fitted;
@@ -183,25 +183,23 @@ fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, d: &Design) -> 
     let tries = OMEGA_SWEEPS
         .iter()
         .flat_map(|&sweep| OMEGA_RADII.iter().map(move |&f| ((nominal * f).max(OMEGA_LEAST_R), sweep)));
-    let (arrow_r, sweep, turn) = tries
-        .filter(|&(r, sweep)| sweep == OMEGA_SWEEPS[0] || r * sweep.to_radians() >= OMEGA_LEAST_ARC)
-        .map(|(r, sweep)| {
-            (
-                r,
-                sweep,
-                best_turn(
-                    &drawn,
-                    view.origin,
-                    r,
-                    (200.0, OMEGA_STEP),
-                    sweep,
-                    view.mirror,
-                    (THIN, OMEGA_ROOM, RoomAt::Whole),
-                ),
-            )
-        })
-        .reduce(|best, next| if next.2.beats(&best.2) { next } else { best })
-        .expect("the usual arrow is always tried");
+    let tries = tries.filter(|&(r, sweep)| sweep == OMEGA_SWEEPS[0] || r * sweep.to_radians() >= OMEGA_LEAST_ARC);
+    let turned = |(r, sweep): (f64, f64)| {
+        let choice = (THIN, OMEGA_ROOM, RoomAt::Whole);
+        (r, sweep, best_turn(&drawn, view.origin, r, (200.0, OMEGA_STEP), sweep, view.mirror, choice))
+    };
+    // The first that crosses nothing with all the room asked cannot be beaten: the rest are
+    // not tried (most cams stop at the usual arrow).
+    let mut best: Option<(f64, f64, TurnChoice)> = None;
+    for next in tries.map(turned) {
+        if best.is_none_or(|b| next.2.beats(&b.2)) {
+            best = Some(next);
+        }
+        if next.2.crossings == 0 && next.2.room >= OMEGA_ROOM {
+            break;
+        }
+    }
+    let (arrow_r, sweep, turn) = best.expect("the usual arrow is always tried");
     let start = turn.start;
     turn_arrow_into(g, &mut drawn, view.origin, arrow_r, start, sweep, view.mirror, THIN);
     // ω at the arc's middle, outward.
