@@ -253,3 +253,40 @@ fn omegas_arrow_over_the_catalogue() {
     println!("{sheets} sheets; crossing a line: {crossing:?}; ending under 1 mm from one: {close:?}");
     assert!(close.len() * 20 < sheets, "{close:?}");
 }
+
+#[test]
+fn a_translating_followers_axes_stop_clear_of_the_cams_support() {
+    // The support's hatching reaches 7.3 mm from O; the axes stopped 6 mm off and those
+    // from below ran into it. Lines from O (r_min's radius) or ending at it (the "O"
+    // label's leader) and the support's own strokes (within 8 mm at both ends) aside.
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    let cat = Catalogue::embedded().unwrap();
+    let t14 = cat.tasks.iter().find(|t| t.id() == "14").unwrap();
+    let Variant::Project { text: axial, .. } = t14.project(37, Language::Ru, "tmm init").unwrap() else {
+        panic!("task 14 variant 37 is complete in the guide")
+    };
+    let offset = std::fs::read_to_string(common::root().join("fixtures/cams/translating-offset-auto.yaml")).unwrap();
+    for (name, text) in [("task 14 variant 37", axial), ("translating-offset-auto", offset)] {
+        for lang in Language::ALL {
+            let g = profile_group(&text, lang);
+            let (o, _) = centre(&g);
+            // O here is the cam's centre: the base circle's, not an offset circle's.
+            let o = g
+                .items
+                .iter()
+                .find_map(|i| match i {
+                    Item::Circle { c, r, .. } if (*r - 1.5).abs() < 1e-9 => Some(*c),
+                    _ => None,
+                })
+                .unwrap_or(o);
+            for (a, b) in straight_pieces(&g) {
+                let (da, db) = ((a - o).hypot(), (b - o).hypot());
+                if da.min(db) < 1.0 || da.max(db) < 8.0 {
+                    continue;
+                }
+                let off = distance_to_piece(o, (a, b));
+                assert!(off >= 7.3, "{name} {lang:?}: the line {a:?}–{b:?} passes {off:.2} mm from O");
+            }
+        }
+    }
+}

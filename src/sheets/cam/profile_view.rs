@@ -378,8 +378,9 @@ fn axis_foot(d: &Design) -> Vec2 {
 const PROBE_TURN: f64 = 1e-3;
 
 /// Round O, mm, the translating follower's axis lines stop: with a small offset they all
-/// meet there and would hide the cam's bearing.
-const CENTRE_CLEAR_MM: f64 = 6.0;
+/// meet there and would hide the cam's bearing (its hatching reaches 7.3 mm from O; at 6
+/// the lines from below ran into it, a reviewer).
+const CENTRE_CLEAR_MM: f64 = 7.5;
 
 /// The start of the segment `a`–`b` moved out of the circle of centre `o` and radius `r` if
 /// it lies inside (paper).
