@@ -12,9 +12,11 @@ use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
 
 mod flatten;
 mod geometry;
+mod memo;
 pub use flatten::segments;
 use geometry::disc_meets_rect;
 pub use geometry::{rect_segment_distance, segment_meets_rect, segment_span_in_rect, segments_cross};
+pub use memo::new_build;
 
 /// Flattening tolerance of curves, mm: far below a line's width.
 pub const FLATTEN: f64 = 0.02;

@@ -1,6 +1,7 @@
 //! An item's drawn pieces for the index: its lines flattened into segments, a text's
 //! letters' boxes, and the box every piece of an item lies in.
 
+use super::memo;
 use super::{FLATTEN, Piece};
 use crate::drawing::path::{Path, Seg};
 use crate::drawing::scene::Item;
@@ -17,20 +18,28 @@ pub fn segments(item: &Item) -> Vec<(Point, Point)> {
 /// [`segments`] appended to `out`: an index made of many items flattens each into one
 /// buffer rather than a list of its own.
 fn segments_into(item: &Item, out: &mut Vec<(Point, Point)>) {
-    let bez = match item {
-        Item::Path { path, .. } if lines_only(path) => return polyline(path, path.closed, out),
-        Item::Fill { path } if lines_only(path) => return polyline(path, true, out),
-        Item::Path { path, .. } => path.to_bez(),
+    match item {
+        Item::Path { path, .. } if lines_only(path) => polyline(path, path.closed, out),
+        Item::Fill { path } if lines_only(path) => polyline(path, true, out),
+        Item::Path { path, .. } => flatten(path.to_bez().iter(), out),
         Item::Fill { path } => {
             let mut p = path.clone();
             p.closed = true;
-            p.to_bez()
+            flatten(p.to_bez().iter(), out);
         }
-        Item::Circle { c, r, .. } => kurbo::Circle::new(*c, *r).to_path(FLATTEN / 10.0),
-        Item::Text(_) => return,
-    };
+        // Flattened once a build ([`memo`]); its elements as its path would hold them,
+        // without making the path.
+        Item::Circle { c, r, .. } => memo::circle(*c, *r, out, |out| {
+            flatten(kurbo::Circle::new(*c, *r).path_elements(FLATTEN / 10.0), out);
+        }),
+        Item::Text(_) => {}
+    }
+}
+
+/// The segments of a path's elements flattened within [`FLATTEN`], appended to `out`.
+fn flatten(els: impl IntoIterator<Item = kurbo::PathEl>, out: &mut Vec<(Point, Point)>) {
     let (mut start, mut last) = (Point::ZERO, Point::ZERO);
-    kurbo::flatten(bez.iter(), FLATTEN, |el| match el {
+    kurbo::flatten(els, FLATTEN, |el| match el {
         kurbo::PathEl::MoveTo(p) => (start, last) = (p, p),
         kurbo::PathEl::LineTo(p) => {
             out.push((last, p));
