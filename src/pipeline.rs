@@ -98,9 +98,7 @@ pub struct Built {
 
 /// Builds the `requested` sheets (all the project has sections for when empty), in order.
 pub fn build(p: &Project, requested: &[u32]) -> Result<Vec<Built>, Error> {
-    // The circles flattened for the drawings' indexes are remembered within one build
-    // (obstacles::memo), not across builds.
-    crate::drawing::obstacles::new_build();
+    crate::sheets::new_build();
     // The title block's "sheet N of M": the sheets the project has sections for, in the
     // course's order (a kinematics exercise drawn on the first sheet alone is one sheet, not
     // "1 of 3"; a cam alone is one sheet too, not "3 of 3").

@@ -183,6 +183,12 @@ impl SelectError {
     }
 }
 
+/// Starts a build: what the drawings remember to compose faster (the circles flattened for
+/// their indexes, drawing::obstacles::memo) is kept within one build, not across builds.
+pub fn new_build() {
+    crate::drawing::obstacles::new_build();
+}
+
 /// The sheets to build: the requested ones (each must exist and have its section), or, with
 /// no request, every available sheet the project has a section for, in order.
 pub fn select<'a>(project: &'a Project, requested: &[u32]) -> Result<Vec<Box<dyn Sheet + 'a>>, SelectError> {
