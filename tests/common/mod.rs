@@ -121,11 +121,17 @@ pub fn check_layout(name: &str, scene: &Scene) {
         // SVG collapses leading and trailing white space: a gap made of spaces vanishes.
         assert!(t.text.trim() == t.text && !t.text.is_empty(), "{name}: text {:?} has outer white space", t.text);
     }
-    // Independently of the sheet's measurement: no two texts' letters overlap.
-    let texts: Vec<_> = scene.texts().collect();
-    for (i, a) in texts.iter().enumerate() {
-        for b in &texts[i + 1..] {
-            let overlap = a.core_box().intersect(b.core_box()).area();
+    // Independently of the sheet's measurement: no two texts' letters overlap (a turned
+    // text's letters boxed piece by piece: one box round a value set along a slanted radius
+    // takes in the corner beside it).
+    let texts: Vec<_> = scene.texts().map(|t| (t, t.core_box(), t.core_boxes().collect::<Vec<_>>())).collect();
+    for (i, (a, a_box, a_pieces)) in texts.iter().enumerate() {
+        for (b, b_box, b_pieces) in &texts[i + 1..] {
+            if a_box.intersect(*b_box).area() <= 1e-6 {
+                continue;
+            }
+            let overlap =
+                a_pieces.iter().flat_map(|p| b_pieces.iter().map(move |q| p.intersect(*q).area())).fold(0.0, f64::max);
             assert!(overlap <= 1e-6, "{name}: texts {:?} and {:?} overlap", a.text, b.text);
         }
     }

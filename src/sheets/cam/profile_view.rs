@@ -8,22 +8,21 @@
 //! in the start position, the cam's sense of rotation and the phase angles at O
 //! (`phase_angles.rs`).
 
+mod centre;
 mod phase_angles;
 
 use super::labels::{CamLabels, CamWords};
 use super::nomogram::{Placement, bounds, drawn_position_labels};
 use crate::cams::Design;
 use crate::cams::follower::Follower;
-use crate::drawing::fmt;
-use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
-use crate::drawing::symbols::{RoomAt, TurnChoice, angle_mark, best_turn, frame_pivot, hatch, turn_arrow_into, vector};
+use crate::drawing::symbols::{angle_mark, frame_pivot, hatch};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::num::bezier::Fitted;
-use crate::num::math::{Norm, atan2, sin_cos};
+use crate::num::math::{Norm, atan2};
 use crate::num::tol;
 use crate::num::units::mm;
 use kurbo::{CubicBez, Point, Vec2};
@@ -109,11 +108,9 @@ pub fn draw(
     draw_profiles(g, view, d, pieces);
     draw_rollers(g, labels, view, d, phis);
     follower_at_start(g, d, &|v| view.p(v), mu);
-    // r_min's radius before ω's arrow, which turns clear of it (it crossed the radius
-    // beside its head on the worked example).
-    draw_r_min(g, labels, view, d, words);
-    let arrow_r = draw_rotation(g, labels, view, d);
+    let (arrow_r, r_min) = centre::draw(g, labels, at, view, d, words);
     phase_angles::draw(g, labels, view, d, words, arrow_r);
+    centre::write_r_min(g, labels, at.area, r_min);
     name_profiles(labels, view, d, phis, words.sheet);
     ProfileDrawn { mu, pieces: pieces.count, deviation: pieces.deviation }
 }
@@ -146,68 +143,6 @@ fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis
             labels.add_text_ranked(rim, rim - view.origin, &name, 2.5, 2);
         }
     }
-}
-
-/// The radii ω's arrow is tried at, as shares of its nominal radius (a quarter of r_min), in
-/// the order preferred: the phases' arcs take the band beyond it.
-const OMEGA_RADII: [f64; 3] = [1.0, 0.75, 1.3];
-
-/// The sweeps ω's arrow is tried with, degrees, the usual first; a shorter one only where
-/// its arc is still [`OMEGA_LEAST_ARC`] long.
-const OMEGA_SWEEPS: [f64; 3] = [60.0, 45.0, 35.0];
-
-/// The shortest arc of a shortened ω arrow, mm (its head is 3).
-const OMEGA_LEAST_ARC: f64 = 12.0;
-
-/// The step between the starts tried for ω's arrow, degrees: in 10° steps a gap of 70°
-/// between r_min's radius and an axis had only starts on either line (task 1 variant 1).
-const OMEGA_STEP: f64 = 5.0;
-
-/// The smallest radius of ω's arrow, mm.
-const OMEGA_LEAST_R: f64 = 6.0;
-
-/// The room wanted round ω's arrow, mm.
-const OMEGA_ROOM: f64 = 1.5;
-
-/// O, and the sense of rotation with ω beside its arrow, turned from the upper left to
-/// where it crosses fewest lines; the arrow's radius, mm.
-fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, d: &Design) -> f64 {
-    frame_pivot(g, view.origin, 1.5);
-    labels.add_text(view.origin, Vec2::new(-1.0, 1.0), "O", 3.5);
-    let nominal = 0.25 * d.centre.r_min / view.mu;
-    let mut drawn = Obstacles::of_items(&g.items);
-    // The usual arrow, else a smaller, a larger or a shorter one where it crosses fewer
-    // lines or leaves more room: inside a translating follower's fan of axes, or where
-    // r_min's radius halves the near dwell, every start of the usual one met a line (task
-    // 14 variant 37 crossed two; several began or ended under 1 mm from one).
-    let tries = OMEGA_SWEEPS
-        .iter()
-        .flat_map(|&sweep| OMEGA_RADII.iter().map(move |&f| ((nominal * f).max(OMEGA_LEAST_R), sweep)));
-    let tries = tries.filter(|&(r, sweep)| sweep == OMEGA_SWEEPS[0] || r * sweep.to_radians() >= OMEGA_LEAST_ARC);
-    let turned = |(r, sweep): (f64, f64)| {
-        let choice = (THIN, OMEGA_ROOM, RoomAt::Whole);
-        (r, sweep, best_turn(&drawn, view.origin, r, (200.0, OMEGA_STEP), sweep, view.mirror, choice))
-    };
-    // The first that crosses nothing with all the room asked cannot be beaten: the rest are
-    // not tried (most cams stop at the usual arrow).
-    let mut best: Option<(f64, f64, TurnChoice)> = None;
-    for next in tries.map(turned) {
-        if best.is_none_or(|b| next.2.beats(&b.2)) {
-            best = Some(next);
-        }
-        if next.2.crossings == 0 && next.2.room >= OMEGA_ROOM {
-            break;
-        }
-    }
-    let (arrow_r, sweep, turn) = best.expect("the usual arrow is always tried");
-    let start = turn.start;
-    turn_arrow_into(g, &mut drawn, view.origin, arrow_r, start, sweep, view.mirror, THIN);
-    // ω at the arc's middle, outward.
-    let middle = if view.mirror { start - sweep / 2.0 } else { start + sweep / 2.0 };
-    let (s, c) = sin_cos(middle.to_radians());
-    let out = Vec2::new(c, s);
-    labels.add_text_ranked(view.origin + out * arrow_r, out, "ω", 3.5, 0);
-    arrow_r
 }
 
 /// The profiles' names.
@@ -284,39 +219,6 @@ const PHASE_POINTS: [f64; 3] = [0.5, 0.25, 0.75];
 const ROLLER_CLEAR_MM: f64 = 1.5;
 /// The step along the near dwell looking for the pitch profile clear of the rollers, rad.
 const NEAR_DWELL_STEP: f64 = 0.5 * std::f64::consts::PI / 180.0;
-
-/// Where along the near dwell the base circle's name may stand, best first (its middle holds
-/// r_min's radius).
-const BASE_NAME_AT: [f64; 6] = [0.7, 0.85, 0.3, 0.15, 0.6, 0.4];
-
-/// r_min: a radius into the middle of the near dwell, where the profile is the base circle,
-/// with the base circle's name on a leader of its own a little further round (clear of the
-/// radius' arrowhead).
-fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words: &CamWords) {
-    let (pr, prog) = (&d.profile, &d.spec.program);
-    let l = words.sheet;
-    let near = prog.rise + prog.far_dwell + prog.ret;
-    let dir = pr.pitch((near + TAU) / 2.0).p.unit();
-    let base = dir * d.centre.r_min;
-    vector(g, view.origin, view.p(base), THIN);
-    // Several points of the near dwell, the first a little round from the radius: the
-    // first alone hung the name 59 mm down a leader where the profile's region ends close
-    // beside that point (task 13 variant 41).
-    let spots: Vec<(Point, Vec2)> = BASE_NAME_AT
-        .iter()
-        .map(|&f| {
-            let aside = view.p(pr.pitch(near + (TAU - near) * f).p.unit() * d.centre.r_min);
-            (aside, aside - view.origin)
-        })
-        .collect();
-    labels.add_line_name_at_any(&spots, &[], LabelText::new(l.base_circle(), ""), 2.5, 3);
-    let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
-        " = {} {}",
-        fmt::trimmed(mm(d.centre.r_min), words.lang),
-        words.common.unit_mm()
-    ));
-    labels.add_ranked(view.p(base * 0.55), Vec2::ZERO, r_text, 2.5, 1);
-}
 
 /// The inversion's construction for each numbered position (cam frame through `at`).
 fn inversion(g: &mut Group, d: &Design, phis: &[f64], at: &dyn Fn(Vec2) -> Point, mu: f64, labels: &mut Labels) {
