@@ -397,3 +397,28 @@ fn a_label_is_not_underlined_or_overlined_by_a_line_running_along_it() {
         .collect();
     assert!(lining.is_empty(), "lines along {:?}: {lining:?}", t.plain());
 }
+
+/// An inertia moment's name beside its arc: tried beside the arc's middle alone, between
+/// the links of task 15's group II(2,3) M_и3 went 46.2 mm up a leader (four variants).
+#[test]
+fn an_inertia_moments_name_stands_beside_its_arc() {
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    let cat = Catalogue::embedded().unwrap();
+    let t15 = cat.tasks.iter().find(|t| t.id() == "15").unwrap();
+    let Variant::Project { text, .. } = t15.project(35, Language::Ru, "tmm init").unwrap() else {
+        panic!("task 15 variant 35 is complete in the guide")
+    };
+    for lang in Language::ALL {
+        let mut p = pipeline::load(&text).unwrap();
+        p.info.language = lang;
+        let built = pipeline::build(&p, &[1]).unwrap();
+        let forces = built[0].output.scene.groups.iter().find(|g| g.id == "forces").unwrap();
+        let longest = forces
+            .leaders
+            .iter()
+            .filter_map(|&k| common::path_points(&forces.items[k]))
+            .map(|(pts, _)| (pts[pts.len() - 1] - pts[0]).norm())
+            .fold(0.0, f64::max);
+        assert!(longest <= 20.0, "{lang:?}: a leader of {longest:.1} mm in the force analysis");
+    }
+}

@@ -390,13 +390,17 @@ fn draw_group_geometry(
         let start =
             clear_turn_arrow(g, &mut drawn, at, MOMENT_R, 200.0, MOMENT_SWEEP, il.moment > 0.0, (THIN, HEAD_ROOM));
         let sign = if il.moment > 0.0 { -1.0 } else { 1.0 };
-        let mid = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP / 2.0).to_radians()) * MOMENT_R;
-        labels.add(
-            mid,
-            mid - at,
-            LabelText::new("M", inp.words.sheet.force(ForceKind::Inertia, &m.links[il.link].number.to_string())),
-            3.5,
-        );
+        // Beside the arc's middle, else further along it: from the middle alone, between a
+        // group's links, the name went 46 mm up a leader (task 15's II(2,3)).
+        let spots: Vec<(Point, Vec2)> = MOMENT_NAME_AT
+            .iter()
+            .map(|&f| {
+                let on = at + crate::num::math::from_angle((start + sign * MOMENT_SWEEP * f).to_radians()) * MOMENT_R;
+                (on, on - at)
+            })
+            .collect();
+        let name = LabelText::new("M", inp.words.sheet.force(ForceKind::Inertia, &m.links[il.link].number.to_string()));
+        labels.add_at_any(&spots, name, 3.5);
     }
     // The letters last: they keep clear of the arrows.
     for &q in &points {
@@ -405,6 +409,9 @@ fn draw_group_geometry(
         labels.add(at, Vec2::new(-1.0, -1.0), LabelText::new(main, sub), 3.5);
     }
 }
+
+/// Where along an inertia moment's arc its name is tried, as shares of the arc, best first.
+const MOMENT_NAME_AT: [f64; 5] = [0.5, 0.25, 0.75, 0.1, 0.9];
 
 /// Radius and sweep of an inertia moment's arc, mm and degrees.
 const MOMENT_R: f64 = 6.0;
