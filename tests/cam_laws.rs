@@ -125,6 +125,31 @@ fn laws_are_found_by_key_and_by_the_guides_number() {
     assert_eq!(Law::by_key("spline"), None);
 }
 
+#[test]
+fn every_law_name_a_sheet_prints_is_found_as_that_law() {
+    // A student copies the law's name off a sheet into the project file: "sine, cycloidal
+    // (4)" was refused. Every name of templates/labels/cam.yaml in every language, with its
+    // number in brackets and without it; a number that is not the law's is refused.
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/templates/labels/cam.yaml")).unwrap();
+    let mut names = 0;
+    for line in text.lines().filter(|l| l.starts_with("law_") && l.contains("{uz:")) {
+        let (id, rest) = line.split_once(':').unwrap();
+        let Some(law) = Law::ALL.into_iter().find(|l| l.key().replace('-', "_") == id["law_".len()..]) else {
+            continue;
+        };
+        for printed in rest.split('"').skip(1).step_by(2) {
+            names += 1;
+            assert_eq!(Law::by_key(printed), Some(law), "{printed:?}");
+            let bare = printed.rsplit_once(" (").map_or(printed, |(name, _)| name);
+            assert_eq!(Law::by_key(bare), Some(law), "{bare:?}");
+            assert_eq!(Law::by_key(&format!("{bare} (9)")), None, "{bare:?} (9)");
+        }
+    }
+    assert_eq!(names, 27, "9 laws × 3 languages");
+    assert_eq!(Law::by_key("гармонический"), Some(Law::Cosine));
+    assert_eq!(Law::by_key("cosine (4)"), None);
+}
+
 fn guide_program() -> Program {
     let r = f64::to_radians;
     Program::new(r(70.0), r(10.0), r(70.0), (Law::Cosine, Law::Cosine), r(25.0)).unwrap()

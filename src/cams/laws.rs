@@ -60,7 +60,7 @@ pub struct Derivs {
 }
 
 /// Usual names of the laws, written as [`normalised`] leaves them.
-const SYNONYMS: [(&str, Standard); 36] = [
+const SYNONYMS: [(&str, Standard); 39] = [
     ("uniformly-accelerated", Standard::UniformAcceleration),
     ("constant-acceleration", Standard::UniformAcceleration),
     ("parabolic", Standard::UniformAcceleration),
@@ -73,10 +73,13 @@ const SYNONYMS: [(&str, Standard); 36] = [
     ("cosinusoidal", Standard::Cosine),
     ("simple-harmonic", Standard::Cosine),
     ("harmonic", Standard::Cosine),
+    ("garmonik", Standard::Cosine),
+    ("гармонический", Standard::Cosine),
     ("kosinusoidal", Standard::Cosine),
     ("косинусоидальный", Standard::Cosine),
     ("косинусный", Standard::Cosine),
     ("cycloidal", Standard::Sine),
+    ("sine-cycloidal", Standard::Sine),
     ("sinusoidal", Standard::Sine),
     ("sikloidal", Standard::Sine),
     ("синусоидальный", Standard::Sine),
@@ -99,10 +102,11 @@ const SYNONYMS: [(&str, Standard); 36] = [
     ("modified-trapezoidal", Standard::ModifiedTrapezoid),
 ];
 
-/// A law's name as looked up: trimmed, lower case, words joined by single `-`.
+/// A law's name as looked up: trimmed, lower case, words joined by single `-` (a comma
+/// between them too: the English sheet prints "sine, cycloidal").
 fn normalised(key: &str) -> String {
     let lower = key.trim().to_lowercase();
-    let words = lower.split(|c: char| c.is_whitespace() || c == '_' || c == '-').filter(|w| !w.is_empty());
+    let words = lower.split(|c: char| c.is_whitespace() || c == '_' || c == '-' || c == ',').filter(|w| !w.is_empty());
     words.collect::<Vec<_>>().join("-")
 }
 
@@ -147,8 +151,19 @@ impl Standard {
 
     /// A law by its key, the guide's number ("1"…"6") or a usual name in Uzbek, Russian or
     /// English (the names the sheets print among them: "cycloidal", "uniformly accelerated",
-    /// "синусоидальный"), whatever its case and with spaces or `_` for `-`.
+    /// "синусоидальный"), whatever its case and with spaces or `_` for `-`. A name as the
+    /// sheet prints it, with the guide's number after it in brackets
+    /// ("синусоидальный (4)"), is found when the number is that law's.
     pub fn by_key(key: &str) -> Option<Standard> {
+        if let Some((name, number)) = key.trim().strip_suffix(')').and_then(|k| k.rsplit_once('(')) {
+            let law = Standard::by_name(name)?;
+            return (law.guide_number().map(|n| n.to_string()).as_deref() == Some(number.trim())).then_some(law);
+        }
+        Standard::by_name(key)
+    }
+
+    /// [`Standard::by_key`] without the guide's number in brackets.
+    fn by_name(key: &str) -> Option<Standard> {
         let key = normalised(key);
         Standard::ALL
             .into_iter()
