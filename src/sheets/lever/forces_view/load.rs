@@ -63,12 +63,12 @@ pub(super) fn draw_load(
         name: "S/H".into(),
         ticks: [0.0, 0.5, 1.0].map(|v| (v, fmt::localise(&format!("{v}"), lang))).to_vec(),
     };
-    // Each stroke's least and largest force: P_max and the idle level read on the axis.
+    // Every level the diagram's corners stand at, read on the axis (the largest first where
+    // two are closer than its ticks allow): P_max, the idle level and the steps between
+    // them (only each stroke's least and largest were, leaving a working stroke's −21229 N
+    // corner to be read off between round ticks).
     let levels: Vec<f64> = (0..load.branches.len())
-        .flat_map(|b| {
-            let ys = || load.branches[b].curve.points.iter().map(move |p| signed(b, p.1));
-            [ys().fold(f64::MAX, f64::min), ys().fold(f64::MIN, f64::max)]
-        })
+        .flat_map(|b| load.branches[b].curve.points.iter().map(move |p| signed(b, p.1)))
         .collect();
     let ticks = level_ticks(&levels, lo, hi, mu, lang);
     let y = Axis { lo, hi, mu, name: format!("P, {}", inp.words.common.unit_n()), ticks };
