@@ -198,19 +198,17 @@ fn omegas_arrow_keeps_its_ends_clear_of_every_line() {
     // could leave the middle of the dwell. Its ends
     // stand 1 mm or more from every line: task 14 variant 37's head sat on an axis, task 4
     // variant 45's tail 0.44 mm from one, knife-rocker's within 1 mm.
-    use tmm_sheets::catalogue::{Catalogue, Variant};
-    let cat = Catalogue::embedded().unwrap();
     let mut inputs: Vec<(String, String, usize)> = vec![("worked example".into(), pipeline::DEFAULT_PROJECT.into(), 0)];
     for (name, most) in [("knife-rocker", 0), ("custom-laws", 0), ("translating-offset-auto", 0)] {
         let text = std::fs::read_to_string(common::root().join(format!("fixtures/cams/{name}.yaml"))).unwrap();
         inputs.push((name.into(), text, most));
     }
     for (task, variant, most) in [("14", 37, 0), ("12", 21, 1), ("5", 4, 0), ("10", 9, 0), ("4", 45, 0)] {
-        let t = cat.tasks.iter().find(|t| t.id() == task).unwrap();
-        let Variant::Project { text, .. } = t.project(variant, Language::Ru, "tmm init").unwrap() else {
-            panic!("task {task} variant {variant} is complete in the guide")
-        };
-        inputs.push((format!("task {task} variant {variant}"), text, most));
+        inputs.push((
+            format!("task {task} variant {variant}"),
+            common::catalogue_text(task, variant, Language::Ru),
+            most,
+        ));
     }
     for (name, text, most) in &inputs {
         for lang in Language::ALL {
@@ -219,17 +217,6 @@ fn omegas_arrow_keeps_its_ends_clear_of_every_line() {
             assert!(room >= 1.0, "{name} {lang:?}: ω's arrow ends {room:.2} mm from the line {nearest:?}");
         }
     }
-}
-
-/// Task `task`'s variant `variant` in Russian, as the catalogue writes it.
-fn variant_text(task: &str, variant: u32) -> String {
-    use tmm_sheets::catalogue::{Catalogue, Variant};
-    let cat = Catalogue::embedded().unwrap();
-    let t = cat.tasks.iter().find(|t| t.id() == task).unwrap();
-    let Variant::Project { text, .. } = t.project(variant, Language::Ru, "tmm init").unwrap() else {
-        panic!("task {task} variant {variant} is complete in the guide")
-    };
-    text
 }
 
 #[test]
@@ -241,7 +228,7 @@ fn r_mins_value_is_written_along_its_radius() {
     // to find room) and beside it, not past its ends.
     let mut inputs: Vec<(String, String)> = vec![("worked example".into(), pipeline::DEFAULT_PROJECT.into())];
     for (task, variant) in [("4", 45), ("14", 40), ("10", 7)] {
-        inputs.push((format!("task {task} variant {variant}"), variant_text(task, variant)));
+        inputs.push((format!("task {task} variant {variant}"), common::catalogue_text(task, variant, Language::Ru)));
     }
     for (name, text) in &inputs {
         for lang in Language::ALL {

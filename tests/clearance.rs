@@ -402,17 +402,9 @@ fn a_label_is_not_underlined_or_overlined_by_a_line_running_along_it() {
 /// the links of task 15's group II(2,3) M_и3 went 46.2 mm up a leader (four variants).
 #[test]
 fn an_inertia_moments_name_stands_beside_its_arc() {
-    use tmm_sheets::catalogue::{Catalogue, Variant};
-    let cat = Catalogue::embedded().unwrap();
-    let t15 = cat.tasks.iter().find(|t| t.id() == "15").unwrap();
-    let Variant::Project { text, .. } = t15.project(35, Language::Ru, "tmm init").unwrap() else {
-        panic!("task 15 variant 35 is complete in the guide")
-    };
     for lang in Language::ALL {
-        let mut p = pipeline::load(&text).unwrap();
-        p.info.language = lang;
-        let built = pipeline::build(&p, &[1]).unwrap();
-        let forces = built[0].output.scene.groups.iter().find(|g| g.id == "forces").unwrap();
+        let built = common::catalogue_sheet1("15", 35, lang);
+        let forces = built.scene.groups.iter().find(|g| g.id == "forces").unwrap();
         let longest = forces
             .leaders
             .iter()

@@ -31,6 +31,14 @@ forces:
     - resistance: {point: B, working: backward, force: 16505, idle_force: 655}
 "#;
 
+/// The texts of the force analysis' drawings (the load diagrams among them).
+fn force_texts(scene: &tmm_sheets::drawing::scene::Scene) -> Vec<&str> {
+    (scene.groups.iter().filter(|g| g.id.starts_with("forces")))
+        .flat_map(|g| &g.items)
+        .filter_map(|i| if let Item::Text(t) = i { Some(t.text.as_str()) } else { None })
+        .collect()
+}
+
 /// The S/H values stand on the side of the axis no curve runs through (below it here, where
 /// the idle line runs 1.6 mm above), the sheet's layout measure is clean, and the idle level
 /// is written on the P axis, in every language.
@@ -42,10 +50,7 @@ fn a_small_idle_force_keeps_its_line_off_the_stroke_values_and_is_marked() {
         let lever = common::build_lever(&p);
         let scene = &lever.composed.scene;
         common::check_layout(&format!("small idle force {lang:?}"), scene);
-        let texts: Vec<&str> = (scene.groups.iter().filter(|g| g.id.starts_with("forces")))
-            .flat_map(|g| &g.items)
-            .filter_map(|i| if let Item::Text(t) = i { Some(t.text.as_str()) } else { None })
-            .collect();
+        let texts = force_texts(scene);
         assert!(texts.contains(&"655"), "{lang:?}: the idle level is not written: {texts:?}");
     }
 }
@@ -79,10 +84,7 @@ forces:
     let lever = common::build_lever(&p);
     let scene = &lever.composed.scene;
     common::check_layout("corners' levels", scene);
-    let texts: Vec<&str> = (scene.groups.iter().filter(|g| g.id.starts_with("forces")))
-        .flat_map(|g| &g.items)
-        .filter_map(|i| if let Item::Text(t) = i { Some(t.text.as_str()) } else { None })
-        .collect();
+    let texts = force_texts(scene);
     for level in ["−28305", "−21229", "−5944", "19475"] {
         assert!(texts.contains(&level), "{level} is not written: {texts:?}");
     }

@@ -157,7 +157,7 @@ impl Standard {
     pub fn by_key(key: &str) -> Option<Standard> {
         if let Some((name, number)) = key.trim().strip_suffix(')').and_then(|k| k.rsplit_once('(')) {
             let law = Standard::by_name(name)?;
-            return (law.guide_number().map(|n| n.to_string()).as_deref() == Some(number.trim())).then_some(law);
+            return law.guide_number().is_some_and(|n| number.trim() == n.to_string()).then_some(law);
         }
         Standard::by_name(key)
     }

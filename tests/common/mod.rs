@@ -269,10 +269,16 @@ pub fn catalogue_sheet1(
     variant: u32,
     lang: tmm_sheets::drawing::labels::Language,
 ) -> tmm_sheets::sheets::SheetOutput {
+    let text = catalogue_text(task, variant, lang);
+    tmm_sheets::pipeline::build(&tmm_sheets::pipeline::load_for(&text, &[1]).unwrap(), &[1]).unwrap().remove(0).output
+}
+
+/// The project file the guide's catalogue writes for `task`'s `variant` in `lang`.
+pub fn catalogue_text(task: &str, variant: u32, lang: tmm_sheets::drawing::labels::Language) -> String {
     use tmm_sheets::catalogue::{Catalogue, Variant};
     let catalogue = Catalogue::embedded().unwrap();
     let Variant::Project { text, .. } = catalogue.task(task).unwrap().project(variant, lang, "test").unwrap() else {
         panic!("task {task}, variant {variant} gives a project");
     };
-    tmm_sheets::pipeline::build(&tmm_sheets::pipeline::load_for(&text, &[1]).unwrap(), &[1]).unwrap().remove(0).output
+    text
 }

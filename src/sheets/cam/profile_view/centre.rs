@@ -10,7 +10,7 @@ use crate::drawing::fmt;
 use crate::drawing::obstacles::{Obstacles, Piece};
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{Group, THIN};
-use crate::drawing::symbols::{RoomAt, TurnChoice, best_turn, frame_pivot, turn_arrow_into, vector};
+use crate::drawing::symbols::{RoomAt, TurnChoice, best_turn, frame_pivot, turn_arrow, turn_arrow_into, vector};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::num::math::{Norm, sin_cos};
@@ -130,11 +130,8 @@ const BASE_NAME_APART: f64 = 0.099;
 /// r_min: a radius into the near dwell (at `share` of it), where the profile is the base
 /// circle, with the base circle's name on a leader of its own a little further round.
 fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words: &CamWords, share: f64) -> Point {
-    let pr = &d.profile;
-    let l = words.sheet;
-    let near = d.spec.program.rise + d.spec.program.far_dwell + d.spec.program.ret;
-    let base = r_min_end(d, share);
-    vector(g, view.origin, view.p(base), THIN);
+    let end = view.p(r_min_end(d, share));
+    vector(g, view.origin, end, THIN);
     // Several points of the near dwell, the first a little round from the radius: the
     // first alone hung the name 59 mm down a leader where the profile's region ends close
     // beside that point (task 13 variant 41).
@@ -142,12 +139,12 @@ fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words:
         .iter()
         .filter(|&&f| (f - share).abs() >= BASE_NAME_APART)
         .map(|&f| {
-            let aside = view.p(pr.pitch(near + (TAU - near) * f).p.unit() * d.centre.r_min);
+            let aside = view.p(r_min_end(d, f));
             (aside, aside - view.origin)
         })
         .collect();
-    labels.add_line_name_at_any(&spots, &[], LabelText::new(l.base_circle(), ""), 2.5, 3);
-    view.p(base)
+    labels.add_line_name_at_any(&spots, &[], LabelText::new(words.sheet.base_circle(), ""), 2.5, 3);
+    end
 }
 
 /// r_min = … mm.
@@ -234,8 +231,7 @@ fn draw_rotation(g: &mut Group, labels: &mut Labels, view: View, omega: Omega) -
     labels.add_text(view.origin, Vec2::new(-1.0, 1.0), "O", 3.5);
     let Omega { r, sweep, turn } = omega;
     let start = turn.start;
-    // The arrow's pieces join no index here: nothing else is turned clear of it.
-    turn_arrow_into(g, &mut Obstacles::default(), view.origin, r, start, sweep, view.mirror, THIN);
+    turn_arrow(g, view.origin, r, start, sweep, view.mirror, THIN);
     // ω at the arc's middle, outward.
     let (out, _) = omega_middle(view, &omega);
     labels.add_text_ranked(view.origin + out * r, out, "ω", 3.5, 0);
