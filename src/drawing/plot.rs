@@ -164,8 +164,9 @@ pub fn round_ticks(lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, Strin
 
 /// Ticks at the diagram's own force levels (each printed with its value left of the P
 /// axis, however near the S/H axis, from a millimetre off it; closer ones than 4 mm
-/// merged), then the round ticks of [`round_ticks`] that keep 4 mm clear of them: a
-/// reader finds P_max and the idle level on the axis, not only round numbers.
+/// merged), then the round ticks of [`round_ticks`] that keep 4 mm clear of them and do not
+/// stand between two of them closer than 8 mm: a reader finds P_max, the idle level and
+/// every corner's level on the axis, and the round numbers apart from them.
 pub fn level_ticks(levels: &[f64], lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, String)> {
     const CLEAR: f64 = 4.0;
     let mut marked: Vec<f64> = Vec::new();
@@ -178,8 +179,13 @@ pub fn level_ticks(levels: &[f64], lo: f64, hi: f64, mu: f64, lang: Language) ->
         }
     }
     let mut ticks: Vec<(f64, String)> = marked.iter().map(|&v| (v, fmt::trimmed(v, lang))).collect();
+    // A round value between two levels both within twice that reads as one more corner's
+    // level ("9121, 8000, 7069" up an indicator diagram's axis): it goes too.
+    let within = |v: f64, above: bool| marked.iter().any(|&m| (m > v) == above && (m - v).abs() / mu < 2.0 * CLEAR);
     let round = round_ticks(lo, hi, mu, lang);
-    ticks.extend(round.into_iter().filter(|(v, _)| marked.iter().all(|m| (m - v).abs() / mu >= CLEAR)));
+    ticks.extend(round.into_iter().filter(|&(v, _)| {
+        marked.iter().all(|m| (m - v).abs() / mu >= CLEAR) && !(within(v, true) && within(v, false))
+    }));
     ticks.sort_by(|a, b| a.0.total_cmp(&b.0));
     ticks
 }
@@ -228,5 +234,11 @@ mod tests {
         let idle = level_ticks(&[30.0, -1000.0], -1000.0, 30.0, 20.0, Language::En);
         assert!(idle.iter().any(|x| x.0 == 30.0 && x.1 == "30"), "{idle:?}");
         assert!(level_ticks(&[10.0], 0.0, 1000.0, 20.0, Language::En).iter().all(|x| x.0 != 10.0));
+        // Round step 2000 N at 250 N/mm. Between levels at 9500 and 6500 N, both 6 mm off
+        // it, 8000 goes; with the lower level at 5000 N, 12 mm off, it stays.
+        let sandwiched = level_ticks(&[9500.0, 6500.0, 0.0], 0.0, 9500.0, 250.0, Language::En);
+        assert!(sandwiched.iter().all(|x| x.0 != 8000.0), "{sandwiched:?}");
+        let open = level_ticks(&[9500.0, 5000.0, 0.0], 0.0, 9500.0, 250.0, Language::En);
+        assert!(open.iter().any(|x| x.0 == 8000.0), "{open:?}");
     }
 }
