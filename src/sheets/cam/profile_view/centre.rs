@@ -78,6 +78,10 @@ fn r_min_and_omega(g: &Group, (view, area): (View, Rect), d: &Design, value: &La
         let mut drawn = below.clone();
         drawn.add_items(&centre.items, g.items.len());
         let omega = best_omega(&drawn, view, d);
+        if best.as_ref().is_some_and(|b| omega.turn.crossings > b.1.turn.crossings) {
+            // Cannot win, whether its value fits or not: not asked.
+            continue;
+        }
         let arrow = &mut Group::new("arrow", Rect::ZERO);
         turn_arrow_into(arrow, &mut drawn, view.origin, omega.r, omega.turn.start, omega.sweep, view.mirror, THIN);
         // ω's own letter, outside its arrow's middle, is in the way too.
