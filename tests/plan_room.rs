@@ -70,3 +70,43 @@ fn largest(results: &serde_json::Value, kind: &str) -> f64 {
     let plans = results["scales"][kind].as_array().unwrap();
     plans.iter().flat_map(|p| [&p["size_mm"][0], &p["size_mm"][1]]).map(|v| v.as_f64().unwrap()).fold(0.0, f64::max)
 }
+
+/// A kulisa whose rocker sweeps ten times faster near the crank pin's nearest approach to
+/// its pivot (0.18 m) than elsewhere: at the one μ_a that fitted every acceleration plan,
+/// those of positions 1, 4 and 7 were 5.6 mm long, their enlargement tied in cost with
+/// leaving them so and was not taken. Every plan is now at least 20 mm, position 10's
+/// alone off the common scale.
+#[test]
+fn no_plan_is_left_too_small_to_measure_when_one_scale_cannot_hold_them() {
+    let text = "project: {title: Fast kulisa, designation: TMM KP 00.00.13}
+mechanism:
+  frame:
+    - {name: O, at: [0, 0]}
+    - {name: O1, at: [0.1947, -0.8461]}
+  crank: {pivot: O, pin: A, length: 0.6846, rpm: 173.2, sense: ccw}
+  groups:
+    - rpr: {links: [2, 3], block_at: A, pivot: O1, length: 2.4477}
+  points:
+    - {name: B, link: 3, from: O1, toward: A3, distance: 2.3253}
+    - {name: S3, link: 3, from: O1, toward: A3, distance: 1.2239, mass_centre: true}
+  output_link: 3
+analysis: {positions: 12, assigned_deg: 210}
+forces:
+  links:
+    - {link: 2, mass: 3.73, inertia: 0.0366}
+    - {link: 3, mass: 34.52, inertia: rod}
+";
+    let p = tmm_sheets::pipeline::load(text).unwrap();
+    let built = tmm_sheets::pipeline::build(&p, &[1]).unwrap();
+    let results = &built[0].output.results;
+    for kind in ["velocity_plans", "acceleration_plans"] {
+        let plans = results["scales"][kind].as_array().unwrap();
+        for plan in plans {
+            let side = plan["size_mm"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).fold(0.0, f64::max);
+            assert!(side >= 20.0, "{kind} {}: {side:.1} mm", plan["position"]);
+        }
+        let common = results["scales"][if kind == "velocity_plans" { "mu_v" } else { "mu_a" }].as_f64().unwrap();
+        let own = plans.iter().filter(|p| p["mu"].as_f64() != Some(common)).count();
+        assert!(own <= 1, "{kind}: {own} plans off the common scale");
+    }
+}

@@ -64,6 +64,10 @@ pub(super) struct Floors {
     /// times smaller, or more where its lever grows by [`LEVER_WORTH_IT`].
     mu_l: f64,
     plan: f64,
+    /// How many plans may leave their kind's one scale: a plan at a scale of its own is
+    /// drawn at least 25 mm long, so a variant taking one off it reads as grown (task 4
+    /// variant 40 in Uzbek: acceleration plan 1 at its own μ_a, the rest 58 mm).
+    own_scales: usize,
     side: f64,
     lever: f64,
     drawing: f64,
@@ -76,6 +80,7 @@ impl Floors {
         Floors {
             mu_l: c.scales.mu_l,
             plan: plan_mm(c),
+            own_scales: c.scales.own_scales(),
             side: side_mm(c).min(POLYGON_SIDE_MIN),
             lever: lever_mm(c).min(LEVER_READABLE),
             // The worked example in Russian took a fuller variant with its group drawings
@@ -102,6 +107,7 @@ impl Floors {
         let lever_grown = !at_least(self.lever, LEVER_READABLE) && at_least(lever_mm(c), LEVER_WORTH_IT * self.lever);
         (mechanism_kept || lever_grown)
             && at_least(plan_mm(c), self.plan)
+            && c.scales.own_scales() <= self.own_scales
             && at_least(side_mm(c), self.side)
             && at_least(lever_mm(c), self.lever)
             && at_least(drawing_mm(c), self.drawing)

@@ -5,6 +5,7 @@
 //! makes it; the velocity plans fill the rest of the top band; the acceleration plans at
 //! the bottom left; the tables and notes at the bottom right, above the title block.
 
+mod column;
 mod corner;
 mod header;
 mod variant;
@@ -12,7 +13,7 @@ mod widen;
 
 pub(super) use header::region_header;
 
-use super::choice::{EMPTY_MOST, Floors, at_least, better, empty, lever_measurable};
+use super::choice::{EMPTY_MOST, Floors, better, empty};
 use super::drawn_once::DrawnOnce;
 use super::forces_view::{CellMemo, ForceScales, ForcesInput, draw_forces};
 use super::labels::LeverWords;
@@ -22,10 +23,8 @@ pub use super::plan_regions::PlanDrawn;
 use super::plan_regions::{LARGEST_PLAN, PlansRegion, Twins, plans_group, split_plans};
 use super::plans_view::Sizing;
 use super::segments;
-use crate::drawing::fmt;
 use crate::drawing::frame;
 use crate::drawing::layout::Layout;
-use crate::drawing::scale;
 use crate::drawing::scene::{Group, Scene};
 use crate::drawing::table::Table;
 use crate::drawing::text::TooLong;
@@ -37,6 +36,7 @@ use crate::report::lever::ForceTables;
 use crate::report::{AnswerKeys, Segment};
 use crate::sheets::scaffold::{self, Composition};
 use crate::sheets::{Context, SheetKind};
+use column::{FORCES_WIDTHS, compose_variant};
 use corner::with_larger_plans;
 use kurbo::Rect;
 use variant::{FULLER, Variant};
@@ -56,6 +56,16 @@ pub struct Scales {
     /// Each velocity plan's scale and drawn size.
     pub velocity_plans: Vec<PlanDrawn>,
     pub acceleration_plans: Vec<PlanDrawn>,
+}
+
+impl Scales {
+    /// How many plans are drawn at a scale of their own, off their kind's one.
+    pub fn own_scales(&self) -> usize {
+        let off = |plans: &[PlanDrawn], common: Option<f64>| {
+            plans.iter().filter(|p| common.is_none_or(|c| (p.mu / c - 1.0).abs() > crate::num::tol::SAME_SCALE)).count()
+        };
+        off(&self.velocity_plans, self.mu_v) + off(&self.acceleration_plans, self.mu_a)
+    }
 }
 
 /// The composed sheet and the scales it chose.
@@ -157,105 +167,6 @@ pub fn compose(inp: &Input, k: &Kinematics) -> Result<Composed, TooLong> {
     Ok(with_larger_plans(&variant, out))
 }
 
-/// Lays out sheet 1 as the variant `v` asks.
-fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: Variant) -> Result<Composed, TooLong> {
-    let memo = CellMemo::default();
-    // Tables 3–5 as this variant letters them, set once for every width tried.
-    let force_tables = force_tables(inp, v);
-    let arrange = |w: f64, memo| arrange(inp, k, plans, (w, v), (memo, &force_tables));
-    if inp.forces.is_none() {
-        return draw(inp, k, plans, arrange(FORCES_MIN_W, &memo)?);
-    }
-    // The split between the force drawings (left) and the plans (right): the widest force
-    // column is tried first; a narrower one wins when the forces still fit comfortably and
-    // the smallest plan grows by a tenth or more over the widest's, or the widest's layout is
-    // not clean — of those, the one whose smallest plan is largest (a wider one on a tie).
-    // Both conditions are known before anything is drawn, so a width that cannot win is
-    // never drawn (drawing is nearly all of the time). Nor is the widest drawn before the
-    // narrower ones that grow the plans: in that order they come first whether the widest
-    // is clean or not, so the first of them that is clean wins either way.
-    let widest = arrange(FORCES_WIDTHS[0], &memo)?;
-    // Drawing fails only where the title block refuses the sheet's texts: then with the
-    // widest's refusal, as when it was drawn first.
-    title_block_refusal(inp, &widest)?;
-    let (smallest, largest) = (widest.smallest_plan_mm(plans).unwrap_or(0.0), widest.largest_plan_mm(plans));
-    let mut narrower = Vec::new();
-    for &w in &FORCES_WIDTHS[1..] {
-        let next = arrange(w, &memo)?;
-        let (grown, larger) = (next.smallest_plan_mm(plans).unwrap_or(0.0), next.largest_plan_mm(plans));
-        if next.mech.comfortable {
-            narrower.push(((grown, larger), (w, next)));
-        }
-    }
-    narrower.sort_by(|a, b| b.0.0.total_cmp(&a.0.0));
-    // A narrower column wins where the smallest plan grows by a tenth, or the smaller kind's
-    // largest (to LARGEST_PLAN) does and the forces keep the widest's floors, or the lower
-    // floors larger plans may take them to with the mechanism's scale kept (below).
-    let (growing, rest): (Vec<_>, Vec<_>) = narrower.into_iter().partition(|((grown, _), _)| *grown > 1.1 * smallest);
-    let (larger, rest): (Vec<_>, Vec<_>) = rest.into_iter().partition(|((_, larger), _)| *larger > 1.1 * largest);
-    let narrow = |next| {
-        if v.widen {
-            widen::widened(|w| arrange(w, &memo), |a| draw(inp, k, plans, a), next)
-        } else {
-            draw(inp, k, plans, next.1)
-        }
-    };
-    // The first clean one whose lever stays measurable wins; were none, the first clean one
-    // wins unless the widest is clean with a measurable lever and the smaller kind's largest
-    // plan as large (both capped at LARGEST_PLAN: task 10 variant 24's widest has 77.6 mm).
-    let mut short_lever = None;
-    for ((_, larger), next) in growing {
-        let drawn = narrow(next)?;
-        if drawn.layout.is_clean() {
-            if lever_measurable(&drawn) {
-                return Ok(drawn);
-            }
-            short_lever.get_or_insert((larger, drawn));
-        }
-    }
-    let widest = draw(inp, k, plans, widest)?;
-    if let Some((larger, drawn)) = short_lever {
-        let plans_kept = at_least(largest, larger);
-        if !(widest.layout.is_clean() && lever_measurable(&widest) && plans_kept) {
-            return Ok(drawn);
-        }
-    }
-    if widest.layout.is_clean() {
-        let floors = Floors::of(&widest);
-        // Or, keeping the mechanism's scale, the forces shrunk as far as larger plans may
-        // shrink them.
-        let for_plans = floors.for_larger_plans();
-        let kept = |c: &Composed| floors.kept(c) || (for_plans.kept(c) && c.scales.mu_l <= widest.scales.mu_l);
-        for (_, next) in larger {
-            let drawn = narrow(next)?;
-            if drawn.layout.is_clean() && kept(&drawn) {
-                return Ok(drawn);
-            }
-        }
-        return Ok(widest);
-    }
-    for (_, next) in larger.into_iter().chain(rest) {
-        let drawn = narrow(next)?;
-        if drawn.layout.is_clean() {
-            return Ok(drawn);
-        }
-    }
-    Ok(widest)
-}
-
-/// The refusal of the title block of the sheet arranged `a`, if any: the one way [`draw`]
-/// fails.
-fn title_block_refusal(inp: &Input, a: &Arrangement) -> Result<(), TooLong> {
-    let l = a.words.sheet;
-    let name = if inp.forces.is_some() { l.sheet_name_forces() } else { l.sheet_name() };
-    let lang = inp.ctx.info.language;
-    let scale = fmt::localise(&scale::ratio(a.mech.mu_l), lang);
-    inp.ctx.title_block(crate::drawing::labels::Common::get(lang), name, &scale).map(|_| ())
-}
-
-/// Widths of the force column tried, mm.
-const FORCES_WIDTHS: [f64; 3] = [FORCES_MIN_W, 430.0, 390.0];
-
 /// What every composition of the sheet shares: the velocity and acceleration plans (the
 /// same at every layout), those that coincide on paper drawn once, and the drawings made
 /// so far of the mechanism and of each region of plans, by place.
@@ -307,6 +218,11 @@ impl Arrangement<'_> {
         let v = self.vsizing.largest(&plans.velocity.plans);
         let a = if plans.acceleration.plans.is_empty() { v } else { self.asizing.largest(&plans.acceleration.plans) };
         v.min(a).min(LARGEST_PLAN)
+    }
+
+    /// How many plans leave their kind's one scale for one of their own.
+    fn own_scales(&self) -> usize {
+        self.vsizing.own_count() + self.asizing.own_count()
     }
 
     /// The largest side of the smallest plan, mm (as the drawn plans will have it).

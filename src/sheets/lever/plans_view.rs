@@ -284,13 +284,20 @@ pub fn size_plans(body: Rect, measured: &PlanBoxes, min_w: f64) -> Sizing {
     // the largest drawing), over every scale from the one that draws the smallest plan at
     // MAX_PLAN to the one that fits them all.
     let smallest = sides.iter().copied().fold(f64::MAX, f64::min);
+    let top = all.common;
     let mut best = all;
-    // What a sizing costs: the plans off the common scale or too small to measure on it.
+    // What a sizing costs: first the plans drawn too small to measure, then those off the
+    // common scale or under MIN_PLAN on it. (Counted alike, one scale leaving a kulisa's
+    // slow plans 5.6 mm long tied with the same scale enlarging them, and was kept.)
+    let unmeasurable = |s: &Sizing| (0..boxes.len()).filter(|&i| sides[i] / s.mu[i] < MEASURABLE_PLAN).count();
     let own_count = |s: &Sizing| (0..boxes.len()).filter(|&i| s.own(i) || sides[i] / s.mu[i] < MIN_PLAN).count();
+    let cost = |s: &Sizing| (unmeasurable(s), own_count(s));
+    // Up to a few scales coarser than the one that fits them all at one scale: enlarged,
+    // the small plans' cells may not pack at that one.
     let mut mu = scale::plan_round_up(smallest / MAX_PLAN);
-    while mu < best.common {
+    while mu <= top * COARSER_AT_MOST {
         if let Some(s) = fit(mu, true)
-            && own_count(&s) < own_count(&best)
+            && cost(&s) < cost(&best)
         {
             best = s;
         }
@@ -298,6 +305,10 @@ pub fn size_plans(body: Rect, measured: &PlanBoxes, min_w: f64) -> Sizing {
     }
     best
 }
+
+/// How much coarser than the one fitting every plan at one scale the common scale may be
+/// made so that plans too small to measure on it can be enlarged.
+const COARSER_AT_MOST: f64 = 4.0;
 
 /// A plan's scale beside the common one: its own when it would be under [`MIN_PLAN`] (the
 /// coarsest round μ that draws it at least that long) or over [`MAX_PLAN`] (the finest that
