@@ -27,6 +27,25 @@ fn the_zhukovsky_lever_is_at_least_80_mm_on_every_fixture() {
     assert!(small.is_empty(), "levers under {LEVER_LEAST} mm: {small:?}");
 }
 
+/// A lever whose list of forces, wrapped in a cell 110 mm wide, left no height for the next
+/// finer μ: task 8 variant 45's V-compressor lever was 42.3 mm at μ 0.2 (fourteen arrows
+/// knotted round a, b and c), task 6 variant 1's 46.5 mm. Tried in a wider cell the list
+/// takes fewer lines and the lever the finer μ: 67.6 and 92.9 mm, at least
+/// `choice::LEVER_SHORTEST` (60 mm), the layout clean.
+#[test]
+fn a_levers_cell_widens_for_its_list_of_forces_where_that_lets_the_lever_grow() {
+    use tmm_sheets::drawing::labels::Language;
+    for (task, variant, lang) in [("8", 45, Language::Ru), ("6", 1, Language::Ru), ("8", 25, Language::Uz)] {
+        let results = common::catalogue_sheet1(task, variant, lang).results;
+        let lever = results["forces"]["scales"]["lever_mm"].as_f64().unwrap();
+        assert!(lever >= 60.0, "task {task} variant {variant} ({lang:?}): lever {lever:.1} mm");
+        let layout = &results["layout"];
+        for key in ["texts_crossed", "text_overlaps", "outside_region"] {
+            assert_eq!(layout[key], 0, "task {task} variant {variant}: {key}");
+        }
+    }
+}
+
 /// The kulisa's acceleration plan of position 10 is five times its others: in a row it made
 /// the row as tall as itself and its neighbours were lost in it (smallest plan 45.3 mm, the
 /// sheet 58 % empty). Beside the velocity plans it stands in its own column. Its smallest

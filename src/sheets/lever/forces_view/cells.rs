@@ -74,6 +74,9 @@ pub(super) struct Sizes {
     /// titles in 3.5 mm and set them in 2.5 mm: the last resort before short sides left on
     /// a polygon.
     pub(super) narrow_titles: bool,
+    /// The lever's cell is at least this wide, mm: wider, its list of forces wraps into
+    /// fewer lines and leaves the lever more of the cell's height.
+    pub(super) lever_w: f64,
 }
 
 /// How many polygons may grow one by one: a mechanism has at most a few groups.
@@ -115,13 +118,17 @@ impl Sizes {
 #[derive(Default)]
 pub struct CellMemo {
     polygons: RefCell<HashMap<PolygonKey, LaidOut>>,
-    /// The turned velocity plan with its box, and the lever's cell at each μ: its size and
-    /// the box it is sized round.
+    /// The turned velocity plan with its box, and the lever's cell at each μ and least
+    /// width: its size and the box it is sized round.
     lever: OnceCell<(Rc<Plan>, Rect, f64)>,
-    lever_cells: RefCell<HashMap<u64, (f64, f64, Rect)>>,
+    lever_cells: RefCell<HashMap<(u64, u64), LeverCell>>,
     /// The tables' sizes, in the cells' order.
     fixed: OnceCell<Vec<(f64, f64)>>,
 }
+
+/// The lever's cell at a μ and least width (their bits): its width, height and the box it
+/// is sized round.
+type LeverCell = (f64, f64, Rect);
 
 /// A polygon's index, its μ_l's and μ_P's bits, where its enlargements may go, their box's
 /// bits and whether its polygon stands under its drawing.
@@ -183,10 +190,10 @@ pub(super) fn cells(inp: &ForcesInput, s: Sizes) -> Vec<Cell> {
     let (bb, mu_f) = (*bb, *mu_f);
     let need = bb.width().max(bb.height()) / s.lever_box;
     let mu = if s.lever_fine { scale::plan_round_up(need) } else { s.round_up(need) };
-    let (w, h, ext) = *memo.lever_cells.borrow_mut().entry(mu.to_bits()).or_insert_with(|| {
+    let (w, h, ext) = *memo.lever_cells.borrow_mut().entry((mu.to_bits(), s.lever_w.to_bits())).or_insert_with(|| {
         let ext = lever_extent(inp, lever, mu, mu_f);
         let pad = MARGIN + LEVER_LABEL_ROOM;
-        let w = (ext.width() / mu + 2.0 * pad).max(110.0);
+        let w = (ext.width() / mu + 2.0 * pad).max(s.lever_w);
         let text_lines = lever_lines(inp, w - 4.0) + lever_legend(inp, mu_f, w - 4.0).len();
         let h = TITLE + ext.height() / mu + 2.0 * pad + text_lines as f64 * LINE + DESCENT;
         (w, h, ext)

@@ -217,6 +217,9 @@ fn apart(
 /// [`ARROW_MAX`] while its arms grow, and the forces read no better.
 const LEVER_LARGEST: f64 = 200.0;
 
+/// The widths the lever's cell is tried at, mm.
+const LEVER_WIDER: [f64; 5] = [super::LEVER_W, 130.0, 140.0, 160.0, 190.0];
+
 /// A fitting arrangement with the Zhukovsky lever as large as the cells still pack: its box
 /// from [`LEVER_LARGEST`] down to the one it got, at the finer series' scales (the lever's
 /// sides are the arms its forces are read by; the knot of a dozen arrows round p, b and s4
@@ -224,13 +227,16 @@ const LEVER_LARGEST: f64 = 200.0;
 pub(super) fn larger_lever(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -> Arranged {
     if ok {
         let mut lever_box = LEVER_LARGEST;
-        while lever_box > sizes.lever_box {
-            let tried = Sizes { lever_box, lever_fine: true, ..sizes };
-            let tried_cells = self::cells::cells(inp, tried);
-            if let (tried_at, true) = pack(&tried_cells, bodies) {
-                return (tried_cells, tried_at, true, tried);
+        while lever_box >= sizes.lever_box {
+            for lever_w in LEVER_WIDER {
+                let tried = Sizes { lever_box, lever_fine: true, lever_w, ..sizes };
+                let tried_cells = self::cells::cells(inp, tried);
+                if let (tried_at, true) = pack(&tried_cells, bodies) {
+                    return (tried_cells, tried_at, true, tried);
+                }
             }
-            lever_box *= 0.9;
+            // The box it got, at the finer series, last.
+            lever_box = if lever_box > sizes.lever_box { (lever_box * 0.9).max(sizes.lever_box) } else { 0.0 };
         }
     }
     (cells, at, ok, sizes)

@@ -330,6 +330,8 @@ fn drawing_in(cells: &[Cell], at: &[(usize, Point)], side: Option<usize>) -> boo
 /// How many times the drawings may shrink by 10 % to fit; a region that needs more than
 /// [`COMFORTABLE`] shrinks is cramped.
 const SHRINK_TRIES: usize = 12;
+/// The lever's cell's least width, mm.
+const LEVER_W: f64 = 110.0;
 const COMFORTABLE: usize = 3;
 /// The sizes a comfortable layout starts from (the mechanism above gets the rest), and the
 /// larger ones the drawings start from, shrinking until they fit what they got.
@@ -347,6 +349,7 @@ const COMFORTABLE_START: Sizes = Sizes {
     compact: false,
     inset_box: inset::INSET_BOX,
     narrow_titles: false,
+    lever_w: LEVER_W,
 };
 const DRAWN: Sizes = Sizes {
     group_box: 170.0,
@@ -362,6 +365,7 @@ const DRAWN: Sizes = Sizes {
     compact: false,
     inset_box: inset::INSET_BOX,
     narrow_titles: false,
+    lever_w: LEVER_W,
 };
 
 /// Cells, where they are, whether they all fit, and the sizes they were made at.
