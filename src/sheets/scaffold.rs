@@ -100,6 +100,12 @@ fn constructions(g: &Group) -> Group {
 
 /// The layout measurement of the whole sheet (see [`layout::measure`]).
 pub fn measure(scene: &Scene, c: &Composition) -> Layout {
+    measure_with_share(scene, c).0
+}
+
+/// [`measure`], and the share of empty cells unrounded (sheet 3 compares its variants'
+/// shares to the thousandth).
+pub fn measure_with_share(scene: &Scene, c: &Composition) -> (Layout, f64) {
     // The drawing field: inside the frame, the title block left out.
     let (mut layout, share) = layout::measure_with_share(
         scene,
@@ -110,7 +116,7 @@ pub fn measure(scene: &Scene, c: &Composition) -> Layout {
     layout.smallest_plan_mm = c.smallest_plan_mm;
     // Three decimals: the same bytes on every machine.
     layout.empty_share = Some((share * 1e3).round() / 1e3);
-    layout
+    (layout, share)
 }
 
 /// The finished sheet: the scene with its frame and title block, the layout measured and

@@ -2,7 +2,10 @@
 //! (the usual width by the rule on a tie) among those whose layout is no less clean, a
 //! smaller profile only for a clearly emptier sheet.
 
-use super::CamBuild;
+use super::{CamBuild, KIND};
+use crate::drawing::layout::{self, Layout};
+use crate::drawing::{frame, scene::Scene};
+use crate::sheets::{Context, scaffold};
 
 /// How much emptier another variant must leave the sheet than the usual one (its share of
 /// empty cells), so that a cell's worth of ink does not flip the layout.
@@ -14,9 +17,11 @@ const USUAL_MARGIN: f64 = 0.005;
 /// the phases' arcs and ω — the profile's size is what a reader sees first.
 const HALF_PROFILE_MARGIN: f64 = 0.02;
 
-/// Of `usual` and `rest`, the build kept.
-pub(super) fn kept(usual: CamBuild, rest: impl Iterator<Item = CamBuild>) -> CamBuild {
-    let (faults, empty) = measured(&usual);
+/// Of `usual` and `rest`, the build kept, each measured as its whole sheet (the kept one
+/// carries that sheet and its measure in `Composition::measured`: `finish` takes them
+/// rather than measuring the same sheet again).
+pub(super) fn kept(ctx: &Context, mut usual: CamBuild, rest: impl Iterator<Item = CamBuild>) -> CamBuild {
+    let (faults, empty) = measured(ctx, &mut usual);
     let first = ((faults, empty - USUAL_MARGIN), usual);
     let better = |(a, ab): (&(usize, f64), &CamBuild), (b, bb): (&(usize, f64), &CamBuild)| {
         // A larger μ draws the profile smaller.
@@ -27,17 +32,29 @@ pub(super) fn kept(usual: CamBuild, rest: impl Iterator<Item = CamBuild>) -> Cam
     let pick = |best: ((usize, f64), CamBuild), b: ((usize, f64), CamBuild)| {
         if better((&b.0, &b.1), (&best.0, &best.1)) { b } else { best }
     };
-    rest.map(|b| (measured(&b), b)).fold(first, pick).1
+    rest.map(|mut b| (measured(ctx, &mut b), b)).fold(first, pick).1
 }
 
-/// A build's drawings as the layout measure finds them on the page: their faults (texts
-/// crossed or overlapping, items out of their regions) and their share of empty cells.
-fn measured(b: &CamBuild) -> (usize, f64) {
-    use crate::drawing::{frame, layout, scene::Scene};
-    let (width, height) = frame::page();
-    let groups = b.composition.groups.clone();
-    let scene = Scene { ink: Default::default(), name: String::new(), width, height, title: String::new(), groups };
-    let l = layout::measure(&scene);
-    let empty = layout::empty_share(&scene, frame::inner(), frame::title_block_rect(), &[]);
-    (l.texts_crossed + l.text_overlaps + l.outside_region, empty)
+/// A build's whole sheet as the layout measure finds it: its faults (texts crossed or
+/// overlapping, items out of their regions) and its share of empty cells. The sheet and its
+/// measure are kept in the build's composition; where the title block refuses the sheet's
+/// texts (then `finish` refuses it too), its drawings alone are measured.
+fn measured(ctx: &Context, b: &mut CamBuild) -> (usize, f64) {
+    let faults = |l: &Layout| l.texts_crossed + l.text_overlaps + l.outside_region;
+    match scaffold::scene(ctx, KIND, &b.composition) {
+        Ok(scene) => {
+            let (layout, share) = scaffold::measure_with_share(&scene, &b.composition);
+            let out = (faults(&layout), share);
+            b.composition.measured = Some((scene, layout));
+            out
+        }
+        Err(_) => {
+            let (width, height) = frame::page();
+            let groups = b.composition.groups.clone();
+            let scene =
+                Scene { ink: Default::default(), name: String::new(), width, height, title: String::new(), groups };
+            let empty = layout::empty_share(&scene, frame::inner(), frame::title_block_rect(), &[]);
+            (faults(&layout::measure(&scene)), empty)
+        }
+    }
 }

@@ -227,7 +227,7 @@ pub fn build(ctx: &Context, p: &CamProject) -> Result<CamBuild, SheetError> {
     let (usual, usual_large) = usual?;
     let rest =
         usual_large.into_iter().chain(others.into_iter().flat_map(|(rule, large)| [Some(rule), large]).flatten());
-    Ok(choice::kept(usual, rest))
+    Ok(choice::kept(ctx, usual, rest))
 }
 
 /// How the tables are lettered.
