@@ -21,7 +21,7 @@ use super::mechanism_place::{MechanismDrawn, MechanismPlace, mechanism_group, me
 use super::note_tables::{NoteParts, NoteTables, note_tables, sheet_table, tables_group, with_units};
 pub use super::plan_regions::PlanDrawn;
 use super::plan_regions::{LARGEST_PLAN, PlansRegion, Twins, plans_group, split_plans};
-use super::plans_view::Sizing;
+use super::plans_view::{Sizing, off_scale};
 use super::segments;
 use crate::drawing::frame;
 use crate::drawing::layout::Layout;
@@ -62,7 +62,7 @@ impl Scales {
     /// How many plans are drawn at a scale of their own, off their kind's one.
     pub fn own_scales(&self) -> usize {
         let off = |plans: &[PlanDrawn], common: Option<f64>| {
-            plans.iter().filter(|p| common.is_none_or(|c| (p.mu / c - 1.0).abs() > crate::num::tol::SAME_SCALE)).count()
+            plans.iter().filter(|p| common.is_none_or(|c| off_scale(p.mu, c))).count()
         };
         off(&self.velocity_plans, self.mu_v) + off(&self.acceleration_plans, self.mu_a)
     }

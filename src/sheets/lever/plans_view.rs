@@ -112,8 +112,13 @@ impl Sizing {
 
     /// Whether plan `i` has a scale of its own.
     pub fn own(&self, i: usize) -> bool {
-        (self.mu[i] / self.common - 1.0).abs() > tol::SAME_SCALE
+        off_scale(self.mu[i], self.common)
     }
+}
+
+/// Whether a plan drawn at `mu` is off its kind's one scale `common`.
+pub fn off_scale(mu: f64, common: f64) -> bool {
+    (mu / common - 1.0).abs() > tol::SAME_SCALE
 }
 
 /// A cell's size for a plan of box `bb` at `mu`: the plan with room around it for its

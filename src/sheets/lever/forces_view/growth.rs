@@ -226,8 +226,11 @@ const LEVER_WIDER: [f64; 5] = [super::LEVER_W, 130.0, 140.0, 160.0, 190.0];
 /// at the coarse scale is what a teacher marks down).
 pub(super) fn larger_lever(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, sizes): Arranged) -> Arranged {
     if ok {
-        let mut lever_box = LEVER_LARGEST;
-        while lever_box >= sizes.lever_box {
+        // From the largest down by tenths, then the box it got, at the finer series.
+        let boxes = std::iter::successors(Some(LEVER_LARGEST), |&b| Some(b * 0.9))
+            .take_while(|&b| b > sizes.lever_box)
+            .chain([sizes.lever_box]);
+        for lever_box in boxes {
             for lever_w in LEVER_WIDER {
                 let tried = Sizes { lever_box, lever_fine: true, lever_w, ..sizes };
                 let tried_cells = self::cells::cells(inp, tried);
@@ -235,8 +238,6 @@ pub(super) fn larger_lever(inp: &ForcesInput, bodies: &Bodies, (cells, at, ok, s
                     return (tried_cells, tried_at, true, tried);
                 }
             }
-            // The box it got, at the finer series, last.
-            lever_box = if lever_box > sizes.lever_box { (lever_box * 0.9).max(sizes.lever_box) } else { 0.0 };
         }
     }
     (cells, at, ok, sizes)

@@ -330,9 +330,9 @@ fn drawing_in(cells: &[Cell], at: &[(usize, Point)], side: Option<usize>) -> boo
 /// How many times the drawings may shrink by 10 % to fit; a region that needs more than
 /// [`COMFORTABLE`] shrinks is cramped.
 const SHRINK_TRIES: usize = 12;
+const COMFORTABLE: usize = 3;
 /// The lever's cell's least width, mm.
 const LEVER_W: f64 = 110.0;
-const COMFORTABLE: usize = 3;
 /// The sizes a comfortable layout starts from (the mechanism above gets the rest), and the
 /// larger ones the drawings start from, shrinking until they fit what they got.
 const COMFORTABLE_START: Sizes = Sizes {
