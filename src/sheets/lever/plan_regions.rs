@@ -101,8 +101,9 @@ pub const LARGEST_PLAN: f64 = 80.0;
 /// Splits `column` between two kinds of plans, the first above or, across, on the left (a
 /// kulisa's one tall acceleration plan made a row as tall as itself, its three small
 /// neighbours lost in it; beside the velocity plans it is a column of its own, and the
-/// velocity plans take the height): at the share with the fewest plans off their kind's
-/// one scale (none where every plan can be measured at it); of those whose smallest plan is
+/// velocity plans take the height): at the share with the fewest plans drawn too small to
+/// measure, then the fewest off their kind's one scale (none where every plan can be
+/// measured at it); of those whose smallest plan is
 /// within [`SMALLEST_GIVE`] of the largest smallest (twice [`MIN_PLAN`] is enough), the one
 /// whose smaller kind's largest plan is largest (up to [`LARGEST_PLAN`]), then whose smallest
 /// plan is largest, then whose two largest plans sum most. Returns each kind's region and
@@ -129,7 +130,10 @@ pub(super) fn split_plans(column: Rect, kinds: [(&PlansRegion, &Twins); 2], word
     let score = |s: &[(Rect, Sizing); 2]| {
         let [(least_v, largest_v), (least_a, largest_a)] =
             [0, 1].map(|k| (s[k].1.least_measured(&kinds[k].1.plans), s[k].1.largest(&kinds[k].1.plans)));
-        let own = s[0].1.own_count() + s[1].1.own_count();
+        // Plans too small to measure first: a split fewest off their scale by leaving a
+        // kulisa's slow plans 3 mm long at one μ_v beat one that enlarges them.
+        let unmeasurable = s[0].1.unmeasurable(&kinds[0].1.plans) + s[1].1.unmeasurable(&kinds[1].1.plans);
+        let own = (unmeasurable, s[0].1.own_count() + s[1].1.own_count());
         (own, least_v.min(least_a), largest_v.min(largest_a).min(LARGEST_PLAN), largest_v + largest_a)
     };
     let tried: Vec<_> = velocity_shares()
@@ -156,9 +160,9 @@ pub(super) fn split_plans(column: Rect, kinds: [(&PlansRegion, &Twins); 2], word
         .expect("the best share is kept")
 }
 
-/// A split tried: (plans off their kind's scale, smallest plan, the smaller kind's largest
+/// A split tried: (plans too small to measure and plans off their kind's scale, smallest plan, the smaller kind's largest
 /// plan up to [`LARGEST_PLAN`], the two largest plans' sum), and the split.
-type Tried = ((usize, f64, f64, f64), [(Rect, Sizing); 2]);
+type Tried = (((usize, usize), f64, f64, f64), [(Rect, Sizing); 2]);
 
 /// How much of its smallest plan a split may give for a larger largest plan of a kind, mm:
 /// a step of the round scales at the smallest plans' 50 mm is 10–17 mm, so a 5 mm give

@@ -105,6 +105,11 @@ impl Sizing {
         self.sides(plans).enumerate().filter(|&(i, _)| !self.own(i)).map(|(_, d)| d).fold(f64::MAX, f64::min)
     }
 
+    /// How many plans are drawn shorter than [`MEASURABLE_PLAN`].
+    pub fn unmeasurable(&self, plans: &[Plan]) -> usize {
+        self.sides(plans).filter(|&d| d < MEASURABLE_PLAN).count()
+    }
+
     /// How many plans have a scale of their own.
     pub fn own_count(&self) -> usize {
         (0..self.mu.len()).filter(|&i| self.own(i)).count()
