@@ -60,6 +60,32 @@ fn a_narrower_force_column_leaves_the_lever_measurable() {
     }
 }
 
+/// A split of the plans' column may give a quarter of its smallest plan where that draws the
+/// largest plan of each kind 80 mm long: task 10 variant 45's acceleration plans were 62.5 mm
+/// beside a smallest velocity plan of 30.1 mm (a dead centre's, a line), task 15 variant 4's
+/// 72.8 mm, now 83 and 146 mm with smallest plans of 24 and 23 mm. The column's choice reads
+/// what its smallest plan could have been: task 5 variant 2 and task 10 variant 24 do not
+/// take a narrower force column, halving their levers (to 62 and 51 mm), for a smallest
+/// plan "grown" back (task 10 variant 24's acceleration plans stay 77.6 mm: 80 would take
+/// that lever).
+#[test]
+fn a_split_gives_some_of_its_smallest_plan_for_plans_80_mm_long_and_the_lever_keeps_its_size() {
+    for (task, variant, plans_80) in [("10", 45, true), ("15", 4, true), ("5", 2, true), ("10", 24, false)] {
+        for lang in [Language::Uz, Language::Ru] {
+            let results = common::catalogue_sheet1(task, variant, lang).results;
+            let (v, a) = (largest(&results, "velocity_plans"), largest(&results, "acceleration_plans"));
+            let smallest = results["layout"]["smallest_plan_mm"].as_f64().unwrap();
+            let lever = results["forces"]["scales"]["lever_mm"].as_f64().unwrap();
+            let at = format!("task {task} variant {variant} {lang:?}");
+            assert!(v.min(a) >= 80.0 || !plans_80, "{at}: largest plans {v:.1} and {a:.1} mm");
+            assert!(smallest >= 20.0, "{at}: smallest plan {smallest:.1} mm");
+            assert!(lever >= 100.0, "{at}: lever {lever:.1} mm");
+            let faults = common::layout_faults(&results["layout"]);
+            assert!(faults.is_empty(), "{at}: {faults:?}");
+        }
+    }
+}
+
 /// The largest side of the largest plan of a `kind` ("velocity_plans") sheet 1's results
 /// list, mm.
 fn largest(results: &serde_json::Value, kind: &str) -> f64 {

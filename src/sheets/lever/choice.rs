@@ -115,8 +115,9 @@ impl Floors {
     }
 }
 
+/// The smallest plan as choices read it: the plans' column's reach (`Composed::plan_reach_mm`).
 fn plan_mm(c: &Composed) -> f64 {
-    c.composition.smallest_plan_mm.unwrap_or(0.0)
+    c.plan_reach_mm.unwrap_or(0.0)
 }
 
 fn side_mm(c: &Composed) -> f64 {

@@ -20,7 +20,7 @@ use super::labels::LeverWords;
 use super::mechanism_place::{MechanismDrawn, MechanismPlace, mechanism_group, mechanism_place};
 use super::note_tables::{NoteParts, NoteTables, note_tables, sheet_table, tables_group, with_units};
 pub use super::plan_regions::PlanDrawn;
-use super::plan_regions::{LARGEST_PLAN, PlansRegion, Twins, plans_group, split_plans};
+use super::plan_regions::{LARGEST_PLAN, PlansRegion, Split, Twins, plans_group, split_plans};
 use super::plans_view::{Sizing, off_scale};
 use super::segments;
 use crate::drawing::frame;
@@ -76,6 +76,9 @@ pub struct Composed {
     pub scene: Scene,
     pub scales: Scales,
     pub force_scales: Option<ForceScales>,
+    /// The smallest plan as the choice between compositions reads it, mm: what its plans'
+    /// column could have drawn where its split gave some of it for larger plans.
+    pub plan_reach_mm: Option<f64>,
     /// The largest distance of a drawn trajectory from the exact path, paper mm.
     pub trajectory_error_mm: f64,
     /// The sheet's own measurement of its layout.
@@ -178,7 +181,7 @@ struct PlansOf<'a> {
     /// Tables 1 and 2 and the notes, the same in every layout.
     notes: NoteParts,
     /// The plans' column split by column (variants share columns; the kinds are the same).
-    splits: DrawnOnce<Rect, [(Rect, Sizing); 2]>,
+    splits: DrawnOnce<Rect, Split>,
 }
 
 /// A region of plans drawn: its group, each plan as drawn, their common scale and the
@@ -210,6 +213,9 @@ struct Arrangement<'a> {
     acceleration: PlansRegion<'a>,
     vsizing: Sizing,
     asizing: Sizing,
+    /// The smallest plan the plans' column could have drawn, where its split gave some of it
+    /// for plans [`LARGEST_PLAN`] long ([`Split::reach`]).
+    plan_reach: Option<f64>,
 }
 
 impl Arrangement<'_> {
@@ -223,6 +229,12 @@ impl Arrangement<'_> {
     /// How many plans leave their kind's one scale for one of their own.
     fn own_scales(&self) -> usize {
         self.vsizing.own_count() + self.asizing.own_count()
+    }
+
+    /// The smallest plan as the choice between columns and compositions reads it, mm: the
+    /// column's reach where its split gave some of it for larger plans, else as drawn.
+    fn smallest_plan_reach(&self, plans: &PlansOf) -> Option<f64> {
+        self.plan_reach.or_else(|| self.smallest_plan_mm(plans))
     }
 
     /// The largest side of the smallest plan, mm (as the drawn plans will have it).
@@ -275,23 +287,35 @@ fn arrange<'a>(
     };
     // With a force analysis both kinds of plans share the right column: split at the
     // height that leaves the smallest plan of either kind largest.
-    let [vsizing, asizing] = match force_region {
+    let ([vsizing, asizing], plan_reach) = match force_region {
         Some(_) => {
             let column = Rect::new(right_x0, TOP, inner.x1 - 4.0, plans_bottom);
             let kinds = [(&velocity, &plans.velocity), (&acceleration, &plans.acceleration)];
-            let [(vr, vs), (ar, as_)] = plans.splits.get(column, || split_plans(column, kinds, &words));
+            let Split { kinds: [(vr, vs), (ar, as_)], reach } =
+                plans.splits.get(column, || split_plans(column, kinds, &words));
             (velocity.region, acceleration.region) = (vr, ar);
-            [vs, as_]
+            ([vs, as_], reach)
         }
-        None => [velocity.sizing(&plans.velocity, &words), acceleration.sizing(&plans.acceleration, &words)],
+        None => ([velocity.sizing(&plans.velocity, &words), acceleration.sizing(&plans.acceleration, &words)], None),
     };
-    Ok(Arrangement { words, force_input, mech, force_region, notes, velocity, acceleration, vsizing, asizing })
+    Ok(Arrangement {
+        words,
+        force_input,
+        mech,
+        force_region,
+        notes,
+        velocity,
+        acceleration,
+        vsizing,
+        asizing,
+        plan_reach,
+    })
 }
 
 /// Draws sheet 1 as arranged, and measures it.
 fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<Composed, TooLong> {
-    let smallest_plan_mm = a.smallest_plan_mm(plans);
-    let Arrangement { words, force_input, mech, force_region, notes, velocity, acceleration, vsizing, asizing } = a;
+    let (smallest_plan_mm, plan_reach_mm) = (a.smallest_plan_mm(plans), a.smallest_plan_reach(plans));
+    let Arrangement { words, force_input, mech, force_region, notes, velocity, acceleration, vsizing, asizing, .. } = a;
     let l = words.sheet;
     let mech = plans.mechanisms.get(mech.clone(), || mechanism_group(inp, k, &words, mech));
     let answer = AnswerKeys::of(&format!("sheet{}", inp.kind.number), inp.notes);
@@ -334,6 +358,7 @@ fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<
         layout,
         scales: Scales { mu_l, detail_mu_l, mu_v, mu_a, velocity_plans: vdrawn, acceleration_plans: adrawn },
         force_scales,
+        plan_reach_mm,
         trajectory_error_mm: k.trajectories.iter().map(|t| t.fitted.error).fold(0.0, f64::max) / mu_l,
     })
 }

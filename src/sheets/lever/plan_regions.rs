@@ -106,9 +106,10 @@ pub const LARGEST_PLAN: f64 = 80.0;
 /// measured at it); of those whose smallest plan is
 /// within [`SMALLEST_GIVE`] of the largest smallest (twice [`MIN_PLAN`] is enough), the one
 /// whose smaller kind's largest plan is largest (up to [`LARGEST_PLAN`]), then whose smallest
-/// plan is largest, then whose two largest plans sum most. Returns each kind's region and
-/// sizing.
-pub(super) fn split_plans(column: Rect, kinds: [(&PlansRegion, &Twins); 2], words: &LeverWords) -> [(Rect, Sizing); 2] {
+/// plan is largest, then whose two largest plans sum most — or, where a split draws the
+/// largest plan of each kind [`LARGEST_PLAN`] long and keeps [`LARGEST_GIVE`] of that
+/// smallest plan, it. Returns each kind's region and sizing.
+pub(super) fn split_plans(column: Rect, kinds: [(&PlansRegion, &Twins); 2], words: &LeverWords) -> Split {
     // The same at every share.
     let measured = kinds.map(|(r, twins)| r.measured(twins, words));
     // A share over 1 splits the column across instead: the velocity plans on the left.
@@ -149,15 +150,29 @@ pub(super) fn split_plans(column: Rect, kinds: [(&PlansRegion, &Twins); 2], word
     let own = tried.iter().map(|t| t.0.0).min().expect("shares to try");
     let least = tried.iter().filter(|t| t.0.0 == own).map(|t| t.0.1).fold(0.0, f64::max);
     let enough = (least - SMALLEST_GIVE).min(2.0 * MIN_PLAN);
-    tried
+    let enough_at_largest = (least * LARGEST_GIVE).min(enough);
+    let kept = |t: &Tried| t.0.1 >= enough || (t.0.2 >= LARGEST_PLAN && t.0.1 >= enough_at_largest);
+    let (score, kinds) = tried
         .into_iter()
-        .filter(|t| t.0.0 == own && t.0.1 >= enough)
+        .filter(|t| t.0.0 == own && kept(t))
         .max_by(|a, b| {
             let smallest = |t: &Tried| t.0.1.min(2.0 * MIN_PLAN);
             a.0.2.total_cmp(&b.0.2).then(smallest(a).total_cmp(&smallest(b))).then(a.0.3.total_cmp(&b.0.3))
         })
-        .map(|(_, s)| s)
-        .expect("the best share is kept")
+        .expect("the best share is kept");
+    Split { kinds, reach: (score.1 < enough).then_some(least) }
+}
+
+/// A column split between the two kinds of plans: each kind's region and sizing, and, where
+/// the split gave more of its smallest plan than [`SMALLEST_GIVE`] for plans
+/// [`LARGEST_PLAN`] long, the smallest plan the column could have drawn. The choice between
+/// columns and compositions reads that reach: a column's smallest plan given for larger ones
+/// has not shrunk (task 5 variant 2 took a force column 40 mm narrower, halving its lever, for
+/// a smallest plan "grown" back to what its widest could draw).
+#[derive(Clone)]
+pub(super) struct Split {
+    pub(super) kinds: [(Rect, Sizing); 2],
+    pub(super) reach: Option<f64>,
 }
 
 /// A split tried: (plans too small to measure and plans off their kind's scale, smallest plan, the smaller kind's largest
@@ -168,6 +183,12 @@ type Tried = (((usize, usize), f64, f64, f64), [(Rect, Sizing); 2]);
 /// a step of the round scales at the smallest plans' 50 mm is 10–17 mm, so a 5 mm give
 /// lets the largest plans grow a step where the smallest stay within a tenth.
 const SMALLEST_GIVE: f64 = 5.0;
+
+/// The share of its smallest plan a split may keep where that draws the largest plan of
+/// each kind [`LARGEST_PLAN`] long: the course asks for plans that large, and a sheet's
+/// smallest plan is most often a dead centre's, a line read by its length alone (task 10
+/// variant 45: acceleration plans 62 → 83 mm for a smallest plan of 24 mm, not 30).
+const LARGEST_GIVE: f64 = 0.75;
 
 /// Two plans of a kind coincide on paper when no image or vector end of one is farther from
 /// the other's than this share of the kind's largest plan: 0.45 mm where that plan is drawn

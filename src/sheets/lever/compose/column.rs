@@ -30,12 +30,12 @@ pub(super) fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: V
     // Drawing fails only where the title block refuses the sheet's texts: then with the
     // widest's refusal, as when it was drawn first.
     title_block_refusal(inp, &widest)?;
-    let (smallest, largest) = (widest.smallest_plan_mm(plans).unwrap_or(0.0), widest.largest_plan_mm(plans));
+    let (smallest, largest) = (widest.smallest_plan_reach(plans).unwrap_or(0.0), widest.largest_plan_mm(plans));
     let own = widest.own_scales();
     let mut narrower = Vec::new();
     for &w in &FORCES_WIDTHS[1..] {
         let next = arrange(w, &memo)?;
-        let (grown, larger) = (next.smallest_plan_mm(plans).unwrap_or(0.0), next.largest_plan_mm(plans));
+        let (grown, larger) = (next.smallest_plan_reach(plans).unwrap_or(0.0), next.largest_plan_mm(plans));
         if next.mech.comfortable {
             narrower.push(((next.own_scales(), grown, larger), (w, next)));
         }
@@ -62,7 +62,8 @@ pub(super) fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: V
     };
     // The first clean one whose lever stays measurable wins; were none, the first clean one
     // wins unless the widest is clean with a measurable lever and the smaller kind's largest
-    // plan as large (both capped at LARGEST_PLAN: task 10 variant 24's widest has 77.6 mm).
+    // plan within a tenth as large (both capped at LARGEST_PLAN: task 10 variant 24's widest
+    // has 77.6 mm, and its narrowest 80 mm with a lever of 51 mm instead of 102).
     let mut short_lever = None;
     for ((_, _, larger), next) in growing {
         let drawn = narrow(next)?;
@@ -75,7 +76,7 @@ pub(super) fn compose_variant(inp: &Input, k: &Kinematics, plans: &PlansOf, v: V
     }
     let widest = draw(inp, k, plans, widest)?;
     if let Some((larger, drawn)) = short_lever {
-        let plans_kept = at_least(largest, larger);
+        let plans_kept = at_least(1.1 * largest, larger);
         if !(widest.layout.is_clean() && lever_measurable(&widest) && plans_kept) {
             return Ok(drawn);
         }
