@@ -7,6 +7,7 @@ use crate::cams::follower::Follower;
 use crate::cams::laws::Derivs;
 use crate::num::tol;
 use crate::num::units::mm;
+use std::f64::consts::{PI, TAU};
 
 /// The lift's unit as the tables write it: mm for a translating follower (as its drawing is
 /// measured), ° for a rocker.
@@ -126,15 +127,19 @@ pub fn polar_at(d: &Design, phi: f64, working: bool) -> (f64, f64) {
 pub fn profile(d: &Design, id: &'static str, first: usize, phis: &[f64]) -> NumTable {
     let polar = |phi: f64, working: bool| polar_at(d, phi, working);
     let col = |f: &dyn Fn(f64) -> f64| phis.iter().map(|&phi| f(phi)).collect::<Vec<_>>();
+    // θ counted on from φ, the turn it is nearest: the working profile's point at the rise's
+    // start lies a hair behind its radius, and a table that read 360,00 there (task 11
+    // variant 30) beside 16,04 at the next position reads 0,00 now.
+    let theta = |phi: f64, working: bool| (phi + (polar(phi, working).1 - phi + PI).rem_euclid(TAU) - PI).to_degrees();
     let (pitch, work) = (|| Sub::Word(SubWord::Pitch), || Sub::Word(SubWord::Work));
     let mut rows = vec![
         plain("φ", Unit::Deg, col(&|phi| phi.to_degrees())).exactly(),
         Row::new("r", pitch(), Unit::Mm, col(&|phi| mm(polar(phi, false).0))),
-        Row::new("θ", pitch(), Unit::Deg, col(&|phi| polar(phi, false).1.to_degrees())),
+        Row::new("θ", pitch(), Unit::Deg, col(&|phi| theta(phi, false))),
     ];
     if d.roller > 0.0 {
         rows.push(Row::new("r", work(), Unit::Mm, col(&|phi| mm(polar(phi, true).0))));
-        rows.push(Row::new("θ", work(), Unit::Deg, col(&|phi| polar(phi, true).1.to_degrees())));
+        rows.push(Row::new("θ", work(), Unit::Deg, col(&|phi| theta(phi, true))));
     }
     NumTable { id, columns: positions(first, phis.len()), rows }
 }

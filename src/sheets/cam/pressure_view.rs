@@ -70,6 +70,10 @@ pub fn draw(region: Rect, d: &Design, phis: &[f64], title: &str, words: &CamWord
     let lang = words.lang;
     let mu_phi = scale::plan_round_up(work / w);
     let top = alpha_top(d);
+    // Where the numbers take two rows, the plot gives the second its height.
+    let names = position_labels(phis);
+    let lower = staggered(mu_phi, phis, &names);
+    let h = if lower { (h - STAGGER).max(MIN_PLOT.1) } else { h };
     let mu_alpha = scale::plan_round_up(top / h);
     let mut g = super::view_heading::view_group("pressure", region, title);
     let l = words.sheet;
@@ -108,19 +112,47 @@ pub fn draw(region: Rect, d: &Design, phis: &[f64], title: &str, words: &CamWord
         .collect();
     plot.line(&mut g, &curve, MAIN);
     let mut labels = Labels::new();
-    for (&phi, name) in phis.iter().zip(position_labels(phis)) {
+    for (k, (&phi, name)) in phis.iter().zip(names).enumerate() {
         let a = alpha(phi.min((work).to_radians() - tol::INSIDE_PHASE));
         if a / mu_alpha >= 0.5 {
             g.line(plot.at(phi.to_degrees(), 0.0), plot.at(phi.to_degrees(), a), THIN);
         }
         if let Some(name) = name {
-            labels.add_text(plot.at(phi.to_degrees(), 0.0) + Vec2::new(0.0, 1.5), Vec2::new(0.0, 1.0), &name, 2.5);
+            let below = if lower && k % 2 == 1 { 1.5 + STAGGER } else { 1.5 };
+            let at = plot.at(phi.to_degrees(), 0.0) + Vec2::new(0.0, below);
+            labels.add_text(at, Vec2::new(0.0, 1.0), &name, NUMBER_H);
         }
     }
     allowed_and_largest(&mut g, &plot, d, &mut labels, words);
     labels.place(&mut g, region);
     Some((g, PressureScales { mu_phi_deg: mu_phi, mu_alpha_deg: mu_alpha }))
 }
+
+/// The position numbers' lettering, mm.
+const NUMBER_H: f64 = 2.5;
+/// How much lower the odd positions' numbers stand where the numbers do not fit side by
+/// side, mm: a row of their own under the even ones, clear of them by the labels' own
+/// clearance (the plot is this much lower for it).
+const STAGGER: f64 = 4.4;
+
+/// Whether the odd positions' numbers go a row lower: where two neighbours' numbers, each
+/// with the room the labels keep round them, are wider than the step between their
+/// positions (task 2 variant 35: 4.4 mm between "13" and "14"; in one row the numbers from
+/// 11 on slid right, "15" under position 16's tick and "17" under the axis' arrow).
+fn staggered(mu_phi: f64, phis: &[f64], names: &[Option<String>]) -> bool {
+    let width = |n: &Option<String>| {
+        n.as_ref().map_or(0.0, |n| crate::drawing::place::label_size(&LabelText::new(n.as_str(), ""), NUMBER_H).0)
+    };
+    (1..phis.len()).any(|k| {
+        let step = (phis[k] - phis[k - 1]).abs().to_degrees() / mu_phi;
+        let room = (width(&names[k - 1]) + width(&names[k])) / 2.0 + NUMBERS_APART;
+        names[k - 1].is_some() && names[k].is_some() && step < room
+    })
+}
+
+/// The least clear space between two numbers side by side, mm (the labels' own clearance
+/// each side and a little).
+const NUMBERS_APART: f64 = 1.4;
 
 /// Each phase's allowed angle dashed over its span, named above its middle, and its largest
 /// angle as a dot on the curve, its value in a line under the scales (beside the dot, where
