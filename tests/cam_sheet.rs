@@ -720,13 +720,8 @@ fn a_phases_table_and_the_next_phases_line_up_column_for_column() {
 /// follower's offset and the roller's normal, never by a whole turn).
 #[test]
 fn the_profiles_polar_angles_follow_the_cam_angle_without_a_turns_jump() {
-    let catalogue = Catalogue::embedded().unwrap();
     for (task, variant) in [("11", 30), ("2", 35), ("4", 40), ("15", 6)] {
-        let Variant::Project { text, .. } =
-            catalogue.task(task).unwrap().project(variant, Language::Ru, "test").unwrap()
-        else {
-            panic!("task {task} variant {variant} gives a project");
-        };
+        let text = common::catalogue_text(task, variant, Language::Ru);
         let built = pipeline::build(&pipeline::load_for(&text, &[3]).unwrap(), &[3]).unwrap();
         let answers: Vec<_> = built[0].output.tables.iter().flat_map(|t| t.answers("sheet3")).collect();
         let value = |id: &str| answers.iter().find(|a| a.id == id).map(|a| a.value);
@@ -757,19 +752,14 @@ fn the_profiles_polar_angles_follow_the_cam_angle_without_a_turns_jump() {
 /// English and Uzbek it was already at 1:5.
 #[test]
 fn a_smaller_cam_profile_must_earn_its_margin_against_the_largest_one_tried() {
-    let catalogue = Catalogue::embedded().unwrap();
     for lang in [Language::Ru, Language::En, Language::Uz] {
-        let Variant::Project { text, .. } = catalogue.task("4").unwrap().project(40, lang, "test").unwrap() else {
-            panic!("task 4 variant 40 gives a project");
-        };
+        let text = common::catalogue_text("4", 40, lang);
         let built = pipeline::build(&pipeline::load_for(&text, &[3]).unwrap(), &[3]).unwrap();
         let results = &built[0].output.results;
         let mu = results["profile_mu_l"].as_f64().unwrap();
         assert!(mu <= 0.005 + 1e-12, "{lang:?}: the profile at μ_l = {mu} m/mm");
-        let layout = &results["layout"];
-        let faults: u64 =
-            ["texts_crossed", "text_overlaps", "outside_region"].iter().map(|k| layout[k].as_u64().unwrap()).sum();
-        assert_eq!(faults, 0, "{lang:?}: {layout}");
+        let faults = common::layout_faults(&results["layout"]);
+        assert!(faults.is_empty(), "{lang:?}: {faults:?}");
     }
 }
 
@@ -779,10 +769,7 @@ fn a_smaller_cam_profile_must_earn_its_margin_against_the_largest_one_tried() {
 /// "15" under position 16's tick and "16" past the axis' end.
 #[test]
 fn the_pressure_diagrams_position_numbers_stand_under_their_own_ticks() {
-    let catalogue = Catalogue::embedded().unwrap();
-    let Variant::Project { text, .. } = catalogue.task("2").unwrap().project(35, Language::Ru, "test").unwrap() else {
-        panic!("task 2 variant 35 gives a project");
-    };
+    let text = common::catalogue_text("2", 35, Language::Ru);
     let built = pipeline::build(&pipeline::load_for(&text, &[3]).unwrap(), &[3]).unwrap();
     let out = &built[0].output;
     let mu_phi = out.results["pressure_diagram"]["mu_phi_deg"].as_f64().unwrap();

@@ -314,7 +314,10 @@ fn arrange<'a>(
 
 /// Draws sheet 1 as arranged, and measures it.
 fn draw(inp: &Input, k: &Kinematics, plans: &PlansOf, a: Arrangement) -> Result<Composed, TooLong> {
-    let (smallest_plan_mm, plan_reach_mm) = (a.smallest_plan_mm(plans), a.smallest_plan_reach(plans));
+    // The plans' sizes walked once: the reach is the drawn smallest plan where the split
+    // gave none of it.
+    let smallest_plan_mm = a.smallest_plan_mm(plans);
+    let plan_reach_mm = a.plan_reach.or(smallest_plan_mm);
     let Arrangement { words, force_input, mech, force_region, notes, velocity, acceleration, vsizing, asizing, .. } = a;
     let l = words.sheet;
     let mech = plans.mechanisms.get(mech.clone(), || mechanism_group(inp, k, &words, mech));
