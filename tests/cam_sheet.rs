@@ -180,8 +180,9 @@ fn the_law_table_gives_both_values_where_the_acceleration_jumps_inside_a_phase()
 /// The diagrams are big enough to measure: the lift at most 100 mm and at least 25 mm (a
 /// peaky law, like the fixture's two rectangles, spends height on its acceleration), the
 /// acceleration analog 20–75 mm each side of its axis from the law's exact peak (the guide
-/// takes a 70 mm amplitude; the worked example's is drawn within 10 % of it), H2 a whole
-/// number of mm in 15–40 (its rays apart); and with one law on both phases the drawn
+/// takes a 70 mm amplitude; the worked example's is drawn within 10 % of it), μ_s and
+/// μ_ds/dφ round ({1, 1.25, 1.5, 2, 2.5, 3, 4, 5, 6, 7.5}·10ⁿ), μ_d²s/dφ² of two
+/// significant digits and H2 derived from them in 14–40 mm (its rays apart); and with one law on both phases the drawn
 /// displacement closes at zero (the return's chord error cancels the rise's).
 #[test]
 fn the_diagrams_are_measurable_and_close_for_one_law() {
@@ -193,8 +194,14 @@ fn the_diagrams_are_measurable_and_close_for_one_law() {
         let prog = &p.cam.as_ref().unwrap().design.spec.program;
         let lift_mm = prog.lift / f("mu_s");
         assert!((25.0..=100.0 + 1e-9).contains(&lift_mm), "{name}: the lift is drawn {lift_mm} mm");
+        for k in ["mu_s", "mu_ds"] {
+            assert!(is_round(f(k), &[1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 7.5]), "{name}: {k} = {}", f(k));
+        }
+        let two_digits: Vec<f64> = (10..100).map(|m| f64::from(m) / 10.0).collect();
+        assert!(is_round(f("mu_dds"), &two_digits), "{name}: μ_d²s/dφ² = {}", f("mu_dds"));
         let h2 = f("h2");
-        assert!(h2.fract() == 0.0 && (15.0..=40.0).contains(&h2), "{name}: H2 = {h2}");
+        assert!((14.0..=40.0).contains(&h2), "{name}: H2 = {h2}");
+        assert!((f("mu_ds") / (f("mu_dds") * f("mu_phi_rad")) / h2 - 1.0).abs() < 1e-12, "{name}: H2 = {h2}");
         let amax = (prog.rise_law.peaks().1 * prog.lift / (prog.rise * prog.rise))
             .max(prog.return_law.peaks().1 * prog.lift / (prog.ret * prog.ret));
         let a_mm = amax / f("mu_dds");
@@ -209,6 +216,12 @@ fn the_diagrams_are_measurable_and_close_for_one_law() {
             assert!(closure.is_finite() && closure.abs() <= 0.01 * prog.lift, "{name}: closure {closure}");
         }
     }
+}
+
+/// A scale whose mantissa (in [1, 10)) is one of `mantissas` to within round-off.
+fn is_round(mu: f64, mantissas: &[f64]) -> bool {
+    let mantissa = mu / 10f64.powf(mu.log10().floor());
+    mantissas.iter().chain(&[10.0]).any(|m| (mantissa / m - 1.0).abs() < 1e-9)
 }
 
 /// A cosine rise (120°) and a 3-4-5 polynomial return (90°) of a 40 mm lift, integrated by
@@ -801,4 +814,21 @@ fn the_pressure_diagrams_position_numbers_stand_under_their_own_ticks() {
         seen += 1;
     }
     assert!(seen >= 17, "{seen} position numbers");
+}
+
+/// The law's tables stand under the diagrams where a column nearly as tall as the tallest
+/// leaves them room: task 15 v11's tallest column (432 mm, the two-digit μ_d²s/dφ² let s be
+/// drawn larger) left them none, and they took the right side's middle with the other
+/// tables, the pressure angle's diagram pushed into a corner (0.537 of the sheet empty); a
+/// column of 390 mm leaves them room under it (0.492 empty in Russian).
+#[test]
+fn the_law_tables_keep_their_place_under_a_column_nearly_as_tall() {
+    for lang in [Language::Ru, Language::Uz, Language::En] {
+        let text = common::catalogue_text("15", 11, lang);
+        let b = sheet3(&load_in(&text, lang));
+        let under = b.output.scene.groups.iter().any(|g| g.id == "law-tables");
+        assert!(under, "{lang:?}: the law's tables are not under the diagrams");
+        let empty = b.output.results["layout"]["empty_share"].as_f64().unwrap();
+        assert!(lang != Language::Ru || empty <= 0.5, "{lang:?}: {empty} of sheet 3 is empty");
+    }
 }

@@ -46,6 +46,25 @@ pub fn plan_round_down(x: f64) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// The smallest value of two significant digits ≥ `x` (0.027, 0.0035; 1 for no extent): a
+/// scale derived where the plans' series would step too far (the acceleration analog's, its
+/// pole derived from it), read and multiplied as easily.
+pub fn two_digits_up(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    let e = math::log10(x).floor() as i32 - 1;
+    (e - 1..=e + 1)
+        .flat_map(|k| (10..100).map(move |m| series_value(f64::from(m), k)))
+        .find(|&v| v >= x * EXACT)
+        .unwrap_or_else(|| series_value(10.0, e + 2))
+}
+
+/// The next value of two significant digits above `mu`.
+pub fn two_digits_next(mu: f64) -> f64 {
+    two_digits_up(mu * 1.001)
+}
+
 /// The next value of the plans' series above `mu`.
 pub fn plan_next_round(mu: f64) -> f64 {
     plan_round_up(mu * 1.001)

@@ -81,12 +81,21 @@ fn balanced(tried: Vec<(diagrams::Plan, Regions)>) -> Option<(diagrams::Plan, Re
     let nomogram = tried.iter().map(|t| t.1.nomogram_mu).fold(f64::INFINITY, f64::min);
     let height = tried.iter().map(|t| t.0.height).fold(0.0, f64::max);
     let kept = |t: &(diagrams::Plan, Regions)| (nomogram / t.1.nomogram_mu).min(t.0.height / height);
+    let largest_profile = |t: &(diagrams::Plan, Regions)| t.1.profile_mu <= profile * 1.001;
+    // The law's tables under the diagrams where a column nearly as tall leaves them room:
+    // else they take the right side's middle from the pressure angle's diagram.
+    let under = |t: &(diagrams::Plan, Regions)| t.1.law_tables.is_some();
+    let room_under = tried.iter().any(|t| largest_profile(t) && under(t) && t.0.height >= TABLES_UNDER * height);
     // The first (tallest) wins a tie.
     tried
         .into_iter()
-        .filter(|t| t.1.profile_mu <= profile * 1.001)
+        .filter(|t| largest_profile(t) && (under(t) || !room_under))
         .reduce(|best, t| if kept(&t) > kept(&best) * 1.001 { t } else { best })
 }
+
+/// The share of the tallest column's height a column keeps to leave the law's tables room
+/// under it.
+const TABLES_UNDER: f64 = 0.85;
 
 /// The diagrams' column is planned this much shorter than its room, mm: the first as tall
 /// as it goes.

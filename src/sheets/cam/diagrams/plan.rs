@@ -1,6 +1,6 @@
 //! The diagrams' scales, chosen before they are drawn: μ_φ to fill the column's width, μ_s
 //! the largest drawing whose acceleration analog stands near the guide's 70 mm within the
-//! height, the poles H1 and H2 by the course's rules.
+//! height, μ_d²s/dφ² round, the poles H1 and H2 derived from them by the course's rules.
 
 use super::{GAP, PHASES, POLE_NAME};
 use crate::cams::Design;
@@ -30,8 +30,12 @@ const LIFT_MIN_MM: f64 = 30.0;
 /// takes "the maximum amplitude along the ordinate axis 70 mm" (its fig. 1.8), and the range
 /// accepted around it (a column too low for 70 takes less).
 const ACCELERATION_MM: (f64, f64, f64) = (20.0, 70.0, 75.0);
-/// The pole distance H2, whole mm: below 15 mm its rays merge.
+/// The pole distance H2's range, mm: below 15 mm its rays merge.
 const H2_MM: (f64, f64) = (15.0, 40.0);
+/// How far a pole derived from a two-digit μ_d²s/dφ² may fall short of the least H2, mm: the
+/// scale's steps are up to a tenth, and a whole mm kept 7 more of the catalogue's Russian
+/// sheets 3 at the course's shared scale of s and ds/dφ.
+const H2_SHORT: f64 = 1.0;
 /// μ_φ's series, degrees per mm (times 10ⁿ): finer than the plans' round series, so that the
 /// working angle fills the column (the guide takes 0.73 °/mm).
 const PHI_MANTISSAS: [f64; 10] = [1.0, 1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
@@ -53,10 +57,14 @@ pub struct Plan {
 /// - H1 = 1/μ_φ, so that s and ds/dφ share μ_s;
 /// - μ_s of the plans' round series (steps of at most 1.5×: 5 → 6 → 7.5 → 10), the smallest
 ///   (the largest drawing) with the lift at most [`LIFT_MAX_MM`]
-///   whose acceleration analog can be drawn between [`ACCELERATION_MM`] with a whole-mm H2
-///   in [`H2_MM`] within the height: the analog's height is H2·d²s/dφ²·μ_φ/μ_s, so a
-///   large μ_s's small drawing is what keeps H2 from merging its rays;
-/// - μ_d²s/dφ² = μ_ds/dφ/(H2·μ_φ), the course's rule, from the chosen H2.
+///   whose acceleration analog can be drawn between [`ACCELERATION_MM`] with H2 in
+///   [`H2_MM`] within the height: the analog's height is H2·d²s/dφ²·μ_φ/μ_s, so a large
+///   μ_s's small drawing is what keeps H2 from merging its rays;
+/// - μ_d²s/dφ² of two significant digits (steps under 10 %: the plans' series' steps of a
+///   third left the analog that much lower in a column it filled), the analog nearest the guide's 70 mm (or the
+///   largest the height leaves room for), and H2 = μ_ds/dφ/(μ_d²s/dφ²·μ_φ), the course's
+///   rule read for the pole: round scales, poles derived from them, as the guide derives
+///   H1 = 1/μ_φ (its 78.74 mm).
 ///
 /// Where one phase is so much shorter than the other that the shared scale would leave the
 /// lift under [`LIFT_MIN_MM`] (a 3° return after a 280° rise: its ds/dφ is ~90 times the
@@ -78,20 +86,22 @@ pub fn plan(d: &Design, (max_w, phi_max): (f64, f64), max_h: f64) -> Plan {
     let mu_phi_rad = mu_phi_deg.to_radians();
     let (_, amax) = peaks(d);
     let (v_lo, v_hi) = velocity_range(d);
-    // A = k·H2: the analog's height per mm of pole distance. H2 aims at the guide's 70 mm;
-    // `giving`, it gives up height (down to the least accepted) where the column has no more.
+    // μ_d²s/dφ² of two significant digits, H2 = μ_ds/dφ/(μ_d²s/dφ²·μ_φ) derived from it:
+    // the analog nearest the guide's 70 mm with H2 in its range; `giving`, the largest the
+    // column's height leaves room for (down to the least accepted).
     let fit = |mu_s: f64, mu_ds: f64, giving: bool| {
-        let k = amax * mu_phi_rad / mu_ds;
         let rest = p.lift / mu_s + (v_hi - v_lo) / mu_ds + 4.0 * GAP + PHASES + 8.0;
-        let room = if giving { ((max_h - rest) / (2.0 * k)).floor() } else { f64::INFINITY };
-        let h2 = (ACCELERATION_MM.1 / k).round().min(room).clamp(H2_MM.0, H2_MM.1);
-        let a = k * h2;
-        (h2, a, rest + 2.0 * a)
+        let drawn = |(mu_dds, h2, a): (f64, f64, f64)| Fit { mu_dds, h2, a, height: rest + 2.0 * a };
+        let all = acceleration_scales(amax, mu_ds, mu_phi_rad).into_iter().map(drawn);
+        let accepted = all.clone().filter(|f| (ACCELERATION_MM.0..=ACCELERATION_MM.2).contains(&f.a));
+        let nearest = |fits: &mut dyn Iterator<Item = Fit>| {
+            fits.min_by(|x, y| (x.a - ACCELERATION_MM.1).abs().total_cmp(&(y.a - ACCELERATION_MM.1).abs()))
+        };
+        let chosen = if giving { accepted.clone().find(|f| f.height <= max_h) } else { nearest(&mut accepted.clone()) };
+        // None accepted (an analog too low or too high at every H2 in range): the nearest.
+        (chosen, nearest(&mut all.clone()))
     };
-    let fits = |mu_s: f64, mu_ds: f64, giving: bool| {
-        let (_, a, height) = fit(mu_s, mu_ds, giving);
-        (ACCELERATION_MM.0..=ACCELERATION_MM.2).contains(&a) && height <= max_h
-    };
+    let fits = |mu_s: f64, mu_ds: f64, giving: bool| fit(mu_s, mu_ds, giving).0.is_some_and(|f| f.height <= max_h);
     let first = scale::plan_round_up(p.lift / LIFT_MAX_MM);
     let steps = |from: f64| std::iter::successors(Some(from), |&m| Some(scale::plan_next_round(m))).take(40);
     let lift_readable = |m: f64| p.lift / m >= LIFT_MIN_MM;
@@ -115,11 +125,37 @@ pub fn plan(d: &Design, (max_w, phi_max): (f64, f64), max_h: f64) -> Plan {
     };
     let (mu_s, mu_ds, giving) =
         [false, true].into_iter().find_map(|giving| shared(giving).or_else(|| own(giving))).unwrap_or_else(fallback);
-    let (h2, _, height) = fit(mu_s, mu_ds, giving);
+    let (chosen, nearest) = fit(mu_s, mu_ds, giving);
+    let Fit { mu_dds, h2, height, .. } = chosen.or(nearest).unwrap_or(Fit {
+        mu_dds: mu_ds / (H2_MM.1 * mu_phi_rad),
+        h2: H2_MM.1,
+        a: 0.0,
+        height: max_h,
+    });
     // Shared, H1 = 1/μ_φ exactly (the ratio's rounding would move its last digit).
     let h1 = if mu_s == mu_ds { 1.0 / mu_phi_rad } else { mu_s / (mu_ds * mu_phi_rad) };
-    let scales = Scales { mu_phi_deg, mu_phi_rad, mu_s, mu_ds, mu_dds: mu_ds / (h2 * mu_phi_rad), h1, h2 };
+    let scales = Scales { mu_phi_deg, mu_phi_rad, mu_s, mu_ds, mu_dds, h1, h2 };
     Plan { scales, width: width(mu_phi_deg), height }
+}
+
+/// One way to draw the acceleration analog: μ_d²s/dφ², the pole distance H2 derived from it
+/// and the analog's height each side of its axis, mm, with the three diagrams' height.
+#[derive(Debug, Clone, Copy)]
+struct Fit {
+    mu_dds: f64,
+    h2: f64,
+    a: f64,
+    height: f64,
+}
+
+/// Every μ_d²s/dφ² of two significant digits whose pole H2 = μ_ds/dφ/(μ_d²s/dφ²·μ_φ) is in
+/// [`H2_MM`] (less [`H2_SHORT`]), with H2 and the analog's height amax/μ, mm (the highest drawing first).
+fn acceleration_scales(amax: f64, mu_ds: f64, mu_phi_rad: f64) -> Vec<(f64, f64, f64)> {
+    let first = scale::two_digits_up(mu_ds / (H2_MM.1 * mu_phi_rad));
+    std::iter::successors(Some(first), |&m| Some(scale::two_digits_next(m)))
+        .map(|mu_dds| (mu_dds, mu_ds / (mu_dds * mu_phi_rad), amax / mu_dds))
+        .take_while(|&(_, h2, _)| h2 >= H2_MM.0 - H2_SHORT)
+        .collect()
 }
 
 /// A warning when the lift is drawn lower than [`LIFT_MIN_MM`]: a phase so short beside the
