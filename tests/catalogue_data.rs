@@ -161,3 +161,104 @@ fn every_value_is_within_its_units_plausible_range() {
     }
     assert!(out.is_empty(), "{}", out.join("\n"));
 }
+
+/// The texts of `lang` in a project file written in `lang`: its comments and every
+/// `lang: "…"` value (the other languages' values stand beside them on the same lines).
+fn texts_in(project: &str, lang: Language) -> Vec<String> {
+    let key = format!("{}: \"", lang.key());
+    let mut out = Vec::new();
+    for line in project.lines() {
+        if let Some(comment) = line.trim_start().strip_prefix('#') {
+            out.push(comment.to_string());
+        }
+        let mut rest = line;
+        while let Some(at) = rest.find(&key) {
+            let value = &rest[at + key.len()..];
+            let end = value
+                .char_indices()
+                .find(|&(i, c)| c == '"' && !value[..i].ends_with('\\'))
+                .map_or(value.len(), |(i, _)| i);
+            out.push(value[..end].to_string());
+            rest = &value[end..];
+        }
+    }
+    out
+}
+
+/// A figure or a note of the guide named with a Latin letter in Russian text: «Рисунок 4,a»,
+/// «рис. 2,b», «примечание g)» (the Russian guide letters them а, б, в, г, д, е, ж, з).
+fn latin_letter_in_russian(text: &str) -> Option<String> {
+    let lower = text.to_lowercase();
+    let chars: Vec<char> = lower.chars().collect();
+    let word_at = |i: usize, w: &str| chars[i..].iter().take(w.chars().count()).copied().eq(w.chars());
+    for i in 0..chars.len() {
+        let figure = word_at(i, "рисун") || word_at(i, "рис.");
+        let note = word_at(i, "примечани");
+        if !(figure || note) {
+            continue;
+        }
+        let mut j = i;
+        while j < chars.len() && (chars[j].is_alphabetic() || chars[j] == '.') && !chars[j].is_ascii() {
+            j += 1;
+        }
+        j += usize::from(chars.get(j) == Some(&'.'));
+        while chars.get(j).is_some_and(|c| c.is_whitespace()) {
+            j += 1;
+        }
+        if figure {
+            let digits = j;
+            while chars.get(j).is_some_and(|c| c.is_ascii_digit() || *c == '.') {
+                j += 1;
+            }
+            if j == digits || chars.get(j) != Some(&',') {
+                continue;
+            }
+            j += 1;
+            while chars.get(j).is_some_and(|c| c.is_whitespace()) {
+                j += 1;
+            }
+        }
+        let letter = chars.get(j).is_some_and(char::is_ascii_alphabetic);
+        let alone = !chars.get(j + 1).is_some_and(|c| c.is_alphabetic());
+        let closes = chars.get(j + 1) == Some(&')');
+        if letter && alone && (figure || closes) {
+            return Some(chars[i..(j + 2).min(chars.len())].iter().collect());
+        }
+    }
+    None
+}
+
+/// Every variant's project file in each language speaks that language only: the Russian
+/// one names the guide's figures and notes with Cyrillic letters (tasks 4, 6 and 13 still
+/// wrote «примечание g)», «примечание h)», «Примечание c)») and the sun gear the course's
+/// way (not «солнце»); the Uzbek (Latin script) and the English ones hold no Cyrillic letter
+/// but in the garbled heading of task 1's table quoted as printed ("N_ж, N_ш").
+#[test]
+fn every_variants_texts_are_in_its_own_language_and_script() {
+    assert_eq!(latin_letter_in_russian("Рисунок 4,a утерян").as_deref(), Some("рисунок 4,a "));
+    assert_eq!(latin_letter_in_russian("задание 4, примечание g): 1460").as_deref(), Some("примечание g)"));
+    assert_eq!(latin_letter_in_russian("Рисунок 4,а утерян; примечание б); столбец a (0,10 м)"), None);
+    let cat = catalogue();
+    let mut seen = 0;
+    for t in &cat.tasks {
+        for v in t.variants() {
+            for lang in Language::ALL {
+                let Ok(Variant::Project { text, .. }) = t.project(v, lang, "tmm init") else { continue };
+                seen += 1;
+                for s in texts_in(&text, lang) {
+                    let at = format!("task {} variant {v} {lang:?}: {s}", t.id());
+                    let unquoted = s.replace("N_ж", "").replace("N_ш", "");
+                    let cyrillic = unquoted.chars().any(|c| ('\u{400}'..='\u{4ff}').contains(&c));
+                    match lang {
+                        Language::Ru => {
+                            assert_eq!(latin_letter_in_russian(&s), None, "{at}");
+                            assert!(!s.to_lowercase().contains("солнце"), "{at}");
+                        }
+                        Language::Uz | Language::En => assert!(!cyrillic, "{at}"),
+                    }
+                }
+            }
+        }
+    }
+    assert!(seen > 1500, "{seen} projects read");
+}
