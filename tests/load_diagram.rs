@@ -6,6 +6,7 @@ mod common;
 
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::drawing::scene::Item;
+use tmm_sheets::num::math::Norm;
 use tmm_sheets::pipeline;
 
 /// A crank-slider resisting 16 505 N on its working stroke and 655 N on its idle one (4 %).
@@ -87,5 +88,54 @@ forces:
     let texts = force_texts(scene);
     for level in ["−28305", "−21229", "−5944", "19475"] {
         assert!(texts.contains(&level), "{level} is not written: {texts:?}");
+    }
+}
+
+/// The load diagram's stroke arrows: filled triangles 5 mm long, as (centre, direction).
+fn stroke_arrows(scene: &tmm_sheets::drawing::scene::Scene) -> Vec<(kurbo::Point, kurbo::Vec2)> {
+    use tmm_sheets::drawing::path::Seg;
+    let fills = (scene.groups.iter().filter(|g| g.id.starts_with("forces"))).flat_map(|g| &g.items).filter_map(|i| {
+        let Item::Fill { path } = i else { return None };
+        let [Seg::Line(b1), Seg::Line(b2)] = path.segs.as_slice() else { return None };
+        let base = b1.midpoint(*b2);
+        Some((path.start.midpoint(base), path.start - base, (*b1 - *b2).norm()))
+    });
+    fills
+        .filter(|(_, dir, width)| (dir.norm() - 5.0).abs() < 1e-6 && (width - 2.6).abs() < 1e-6)
+        .map(|(c, d, _)| (c, d))
+        .collect()
+}
+
+/// Each stroke of the worked example's load diagram carries an arrow along its line the way
+/// the slider travels on it: the working stroke (−4600 N, drawn below the axis) towards
+/// S/H = 1, the idle stroke (+1650 N, above it) back towards 0; the stroke's name stands
+/// beside its own arrow, not both along the shared axis.
+#[test]
+fn each_stroke_of_a_load_diagram_shows_which_way_it_runs() {
+    for lang in Language::ALL {
+        let mut p = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+        p.info.language = lang;
+        let lever = common::build_lever(&p);
+        let scene = &lever.composed.scene;
+        let arrows = stroke_arrows(scene);
+        assert_eq!(arrows.len(), 2, "{lang:?}: {arrows:?}");
+        let forward: Vec<_> = arrows.iter().filter(|a| a.1.x > 0.0).collect();
+        let back: Vec<_> = arrows.iter().filter(|a| a.1.x < 0.0).collect();
+        assert!(forward.len() == 1 && back.len() == 1, "{lang:?}: {arrows:?}");
+        // Paper y grows downwards: the working stroke's −4600 N is the lower line.
+        assert!(forward[0].0.y > back[0].0.y + 20.0, "{lang:?}: {arrows:?}");
+        let (working, idle) = match lang {
+            Language::Uz => ("ishchi yurish", "salt yurish"),
+            Language::Ru => ("рабочий ход", "холостой ход"),
+            Language::En => ("working stroke", "idle stroke"),
+        };
+        for ((c, d), name) in [(forward[0], working), (back[0], idle)] {
+            assert!(d.y.abs() < 1e-6, "{lang:?}: both strokes are flat here: {d:?}");
+            let text = (scene.groups.iter().flat_map(|g| &g.items))
+                .find_map(|i| if let Item::Text(t) = i { (t.text == name).then(|| t.bbox()) } else { None })
+                .unwrap_or_else(|| panic!("{lang:?}: no «{name}»"));
+            let beside = (text.center().y - c.y).abs() < 6.0 && text.x0 - 12.0 < c.x && c.x < text.x1 + 12.0;
+            assert!(beside, "{lang:?}: «{name}» at {text:?} is not beside its arrow at {c:?}");
+        }
     }
 }

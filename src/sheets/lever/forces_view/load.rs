@@ -11,6 +11,7 @@ use crate::drawing::scale;
 use crate::drawing::scene::{DASHED, Group, MAIN, THIN};
 use crate::drawing::text::LabelText;
 use crate::lever::load::{Load, Stroke};
+use crate::num::math::Norm;
 use kurbo::{Point, Rect, Vec2};
 
 /// Room around a load diagram's plot, mm: the title and the P axis' arrow and name above,
@@ -93,23 +94,33 @@ pub(super) fn draw_load(
             Stroke::Intake => inp.words.sheet.stroke_intake(),
             Stroke::Compression => inp.words.sheet.stroke_compression(),
         };
-        // Named at its own fraction of the stroke (apart from the other branches' names and
-        // from the S/H values at 0, ½ and 1), on the side away from the other branch.
-        let s = (b + 1) as f64 / (load.branches.len() + 1) as f64;
-        let at = plot.at(s, signed(b, br.curve.at(s)));
-        names.push((at, Vec2::new(0.3, if b == 0 { -1.0 } else { 1.0 }), name));
+        names.push(name);
     }
     g.line(foot, mark, THIN);
     g.circle(mark, 1.0, MAIN);
+    let arrows = stroke_arrows(g, &plot, &data, value.s);
+    // Each stroke named beside its arrow, on the side away from the other stroke's line
+    // (where the lines run together, the first above and the second below); without an
+    // arrow, at its own fraction of the stroke (apart from the other's name and from the S/H
+    // values at 0, ½ and 1).
+    let names: Vec<(Point, Vec2, &str)> = (names.into_iter().enumerate())
+        .map(|(b, name)| {
+            let s = arrows[b].unwrap_or((b + 1) as f64 / (load.branches.len() + 1) as f64);
+            let at = plot.at(s, polyline_at(&data[b], s));
+            let other = plot.at(s, polyline_at(&data[1 - b], s));
+            let up = if (other.y - at.y).abs() > 1.0 { other.y > at.y } else { b == 0 };
+            (at, Vec2::new(0.3, if up { -1.0 } else { 1.0 }), name)
+        })
+        .collect();
+    let phi = fmt::localise(&format!("{:.1}", inp.phi_deg), lang);
+    // On the side of its branch away from that branch's name: beside the name,
+    // "φ1 = 45,0° ishchi yurish" read as one phrase.
+    let off = |b: usize| (signed(b, load.branches[b].curve.at(value.s)) - along).abs();
+    let on = (0..load.branches.len()).min_by(|&a, &b| off(a).total_cmp(&off(b))).unwrap_or(0);
+    let side = -names.get(on).map_or(-1.0, |n| n.1.y.signum());
     for (at, pref, name) in names {
         labels.add_text(at, pref, name, 2.5);
     }
-    let phi = fmt::localise(&format!("{:.1}", inp.phi_deg), lang);
-    // On the side of its branch away from that branch's name (the first's is above it):
-    // beside the name, "φ1 = 45,0° ishchi yurish" read as one phrase.
-    let off = |b: usize| (signed(b, load.branches[b].curve.at(value.s)) - along).abs();
-    let on = (0..load.branches.len()).min_by(|&a, &b| off(a).total_cmp(&off(b))).unwrap_or(0);
-    let side = if on == 0 { 1.0 } else { -1.0 };
     labels.add(mark, Vec2::new(1.0, side), LabelText::new("φ", "1").with_tail(format!(" = {phi}°")), 2.5);
     let lines = [
         vec![LabelText::new("φ", "1").with_tail(format!(
@@ -158,5 +169,70 @@ fn leave_out_crossed_values(plot: &mut Plot, (foot, mark): (Point, Point)) {
         if crossed {
             label.clear();
         }
+    }
+}
+
+/// Clearance of a stroke's arrow from the analysed position's ordinate, the S/H values and
+/// the other stroke's arrow, along the axis, mm.
+const ARROW_CLEAR: f64 = 6.0;
+/// A stroke's arrowhead's length and half width, mm: a thin line's (3 × 0.55) hid in the
+/// working stroke's main line.
+const STROKE_ARROW: (f64, f64) = (5.0, 1.3);
+/// Steepest slope on paper a stroke's arrow stands on (63°): on a step it would read as
+/// pointing up or down; a compression's curve is steep all along.
+const ARROW_SLOPE: f64 = 2.0;
+
+/// Each stroke's direction of travel, an arrowhead on its line (the first branch moves
+/// along the axis, towards S/H = 1; the second back): the two strokes share the S/H axis,
+/// and without them a reader cannot tell the working stroke's line from the idle one's
+/// where both run along it. Each stands where its line runs farthest (up to 4 mm) from
+/// the other's and flat, in the middle of such stretch, clear of the analysed position
+/// `mark_s`, the S/H values and the other arrow. Returns each stroke's arrow's S/H.
+fn stroke_arrows(g: &mut Group, plot: &Plot, data: &[Vec<(f64, f64)>], mark_s: f64) -> Vec<Option<f64>> {
+    let y_at = |b: usize, s: f64| polyline_at(&data[b], s);
+    let mm = |s: f64| s / plot.x.mu;
+    let mut taken: Vec<f64> = vec![mark_s, 0.0, 0.5, 1.0];
+    let mut chosen = Vec::with_capacity(data.len());
+    for b in 0..data.len() {
+        let others: Vec<usize> = (0..data.len()).filter(|&o| o != b).collect();
+        let point = |s: f64| plot.at(s, y_at(b, s));
+        let flat = |s: f64| {
+            let (l, m, r) = (point(s - 0.02), point(s), point(s + 0.02));
+            [(l, m), (m, r)].iter().all(|(a, c)| (c.y - a.y).abs() <= ARROW_SLOPE * (c.x - a.x).abs())
+        };
+        let apart = |s: f64| {
+            let here = point(s);
+            others.iter().map(|&o| (plot.at(s, y_at(o, s)).y - here.y).abs()).fold(4.0f64, f64::min)
+        };
+        let clear = |s: f64| taken.iter().all(|&t| (mm(s) - mm(t)).abs() >= ARROW_CLEAR);
+        let candidates: Vec<f64> = (6..=94).map(|k| f64::from(k) / 100.0).filter(|&s| flat(s) && clear(s)).collect();
+        let most = candidates.iter().map(|&s| apart(s)).fold(0.0f64, f64::max);
+        let best: Vec<f64> = candidates.into_iter().filter(|&s| apart(s) >= most - 1e-9).collect();
+        let Some(&s) = best.get(best.len() / 2) else {
+            chosen.push(None);
+            continue;
+        };
+        let sense = if b == 0 { 1.0 } else { -1.0 };
+        let dir = (point(s + 0.02) - point(s - 0.02)) * sense;
+        let len = dir.norm();
+        if len > 0.0 {
+            let (u, (long, half)) = (dir / len, STROKE_ARROW);
+            let (tip, n) = (point(s) + u * (long / 2.0), Vec2::new(-u.y, u.x));
+            let base = tip - u * long;
+            g.fill(&[tip, base + n * half, base - n * half]);
+        }
+        taken.push(s);
+        chosen.push(Some(s));
+    }
+    chosen
+}
+
+/// A polyline's ordinate at `x`, straight between its points (clamped to its ends).
+fn polyline_at(points: &[(f64, f64)], x: f64) -> f64 {
+    let i = points.partition_point(|p| p.0 <= x).clamp(1, points.len().max(2) - 1);
+    match (points.get(i - 1), points.get(i)) {
+        (Some(&(x0, y0)), Some(&(x1, y1))) if x1 > x0 => y0 + (y1 - y0) * ((x - x0) / (x1 - x0)).clamp(0.0, 1.0),
+        (Some(&(_, y0)), _) => y0,
+        _ => 0.0,
     }
 }
