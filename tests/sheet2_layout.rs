@@ -348,3 +348,48 @@ fn the_spaces_value_moves_along_under_its_arc_before_it_takes_a_leader() {
         assert_eq!(layout["texts_crossed"], 0, "{lang:?}: {}", layout["problems"]);
     }
 }
+
+/// The planetary views' captions stand clear of the plan of angular velocities under them:
+/// task 7 v1's «Вид спереди» and «Кинематическая схема» stood 2.9 mm over the plan's labels
+/// 2, 0 and H, read as the plan's own. Every label of the plan's line under the captions is at
+/// least 4 mm lower, on the worked example and task 7 v1 in every language: the plan's
+/// labels of its line across the strip, wherever they stand along it.
+#[test]
+fn the_planetary_views_captions_stand_clear_of_the_plan_under_them() {
+    use tmm_sheets::drawing::scene::Item;
+    for lang in Language::ALL {
+        let captions = match lang {
+            Language::Uz => ["Old koʻrinish", "Kinematik sxema"],
+            Language::Ru => ["Вид спереди", "Кинематическая схема"],
+            Language::En => ["Front view", "Kinematic scheme"],
+        };
+        let mut task7 = pipeline::load(&common::catalogue_text("7", 1, lang)).unwrap();
+        task7.info.language = lang;
+        let mut worked = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+        worked.info.language = lang;
+        for (name, p) in [("task 7 v1", task7), ("worked example", worked)] {
+            let b = sheet2(&p);
+            let g = b.output.scene.groups.iter().find(|g| g.id == "planetary").expect("a planetary stage");
+            let texts: Vec<_> =
+                g.items.iter().filter_map(|i| if let Item::Text(t) = i { Some(t) } else { None }).collect();
+            for caption in captions {
+                let c = texts
+                    .iter()
+                    .find(|t| t.text == caption)
+                    .unwrap_or_else(|| panic!("{name} {lang:?}: no «{caption}»"))
+                    .bbox();
+                // The plan's labels: its line's 2, 0, H, 1 in the row under the captions.
+                for t in texts.iter().filter(|t| ["0", "1", "2", "H"].contains(&t.text.as_str())) {
+                    let r = t.bbox();
+                    let under = r.y0 >= c.y1 - 0.1;
+                    assert!(
+                        !under || r.y0 - c.y1 >= 4.0,
+                        "{name} {lang:?}: «{}» {:.1} mm under «{caption}»",
+                        t.text,
+                        r.y0 - c.y1
+                    );
+                }
+            }
+        }
+    }
+}

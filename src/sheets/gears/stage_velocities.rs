@@ -51,9 +51,10 @@ pub const CARRIER_TARGETS_MM: [f64; 2] = [20.0, 15.0];
 /// draws its rays nearly flat.
 const H_MOST: f64 = 40.0;
 const H_LEAST: f64 = 3.0;
-/// Room round the plan, mm: over its line for the labels 2, 0, H, 1; under its pole for P's;
-/// at either end of its line.
-const ABOVE: f64 = 7.0;
+/// Room round the plan, mm: over its line for the labels 2, 0, H, 1 (and 4 mm between them
+/// and the views' captions over the strip: 2 mm read the captions as the plan's); under its
+/// pole for P's; at either end of its line.
+const ABOVE: f64 = 10.0;
 const BELOW: f64 = 6.0;
 const ENDS: f64 = 7.0;
 
