@@ -98,7 +98,8 @@ pub(super) fn draw_load(
     }
     g.line(foot, mark, THIN);
     g.circle(mark, 1.0, MAIN);
-    let arrows = stroke_arrows(g, &plot, &data, value.s);
+    let at_s = |b: usize, s: f64| signed(b, load.branches[b].curve.at(s));
+    let arrows = stroke_arrows(g, &plot, &at_s, value.s);
     // Each stroke named beside its arrow, on the side away from the other stroke's line
     // (where the lines run together, the first above and the second below); without an
     // arrow, at its own fraction of the stroke (apart from the other's name and from the S/H
@@ -106,8 +107,7 @@ pub(super) fn draw_load(
     let names: Vec<(Point, Vec2, &str)> = (names.into_iter().enumerate())
         .map(|(b, name)| {
             let s = arrows[b].unwrap_or((b + 1) as f64 / (load.branches.len() + 1) as f64);
-            let at = plot.at(s, polyline_at(&data[b], s));
-            let other = plot.at(s, polyline_at(&data[1 - b], s));
+            let (at, other) = (plot.at(s, at_s(b, s)), plot.at(s, at_s(1 - b, s)));
             let up = if (other.y - at.y).abs() > 1.0 { other.y > at.y } else { b == 0 };
             (at, Vec2::new(0.3, if up { -1.0 } else { 1.0 }), name)
         })
@@ -187,14 +187,16 @@ const ARROW_SLOPE: f64 = 2.0;
 /// and without them a reader cannot tell the working stroke's line from the idle one's
 /// where both run along it. Each stands where its line runs farthest (up to 4 mm) from
 /// the other's and flat, in the middle of such stretch, clear of the analysed position
-/// `mark_s`, the S/H values and the other arrow. Returns each stroke's arrow's S/H.
-fn stroke_arrows(g: &mut Group, plot: &Plot, data: &[Vec<(f64, f64)>], mark_s: f64) -> Vec<Option<f64>> {
-    let y_at = |b: usize, s: f64| polyline_at(&data[b], s);
+/// `mark_s`, the S/H values and the other arrow; `y_at(b, s)` is stroke b's force at s, in
+/// the plot's units. Returns each stroke's arrow's S/H.
+fn stroke_arrows(g: &mut Group, plot: &Plot, y_at: &dyn Fn(usize, f64) -> f64, mark_s: f64) -> Vec<Option<f64>> {
+    // A load has two branches (`Load::branches`): along the axis, and back.
+    const STROKES: usize = 2;
     let mm = |s: f64| s / plot.x.mu;
     let mut taken: Vec<f64> = vec![mark_s, 0.0, 0.5, 1.0];
-    let mut chosen = Vec::with_capacity(data.len());
-    for b in 0..data.len() {
-        let others: Vec<usize> = (0..data.len()).filter(|&o| o != b).collect();
+    let mut chosen = Vec::with_capacity(STROKES);
+    for b in 0..STROKES {
+        let others: Vec<usize> = (0..STROKES).filter(|&o| o != b).collect();
         let point = |s: f64| plot.at(s, y_at(b, s));
         let flat = |s: f64| {
             let (l, m, r) = (point(s - 0.02), point(s), point(s + 0.02));
@@ -225,14 +227,4 @@ fn stroke_arrows(g: &mut Group, plot: &Plot, data: &[Vec<(f64, f64)>], mark_s: f
         chosen.push(Some(s));
     }
     chosen
-}
-
-/// A polyline's ordinate at `x`, straight between its points (clamped to its ends).
-fn polyline_at(points: &[(f64, f64)], x: f64) -> f64 {
-    let i = points.partition_point(|p| p.0 <= x).clamp(1, points.len().max(2) - 1);
-    match (points.get(i - 1), points.get(i)) {
-        (Some(&(x0, y0)), Some(&(x1, y1))) if x1 > x0 => y0 + (y1 - y0) * ((x - x0) / (x1 - x0)).clamp(0.0, 1.0),
-        (Some(&(_, y0)), _) => y0,
-        _ => 0.0,
-    }
 }
