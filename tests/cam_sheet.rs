@@ -34,6 +34,12 @@ fn load_in(text: &str, lang: Language) -> Project {
     p
 }
 
+/// Sheet 3 of a catalogue variant in `lang` (its project file written in that language).
+fn catalogue_sheet3(task: &str, variant: u32, lang: Language) -> pipeline::Built {
+    let text = common::catalogue_text(task, variant, lang);
+    pipeline::build(&pipeline::load_for(&text, &[3]).unwrap(), &[3]).unwrap_or_else(|e| panic!("{e:#}")).remove(0)
+}
+
 fn sheet3(p: &Project) -> pipeline::Built {
     pipeline::build(p, &[3]).unwrap_or_else(|e| panic!("{e:#}")).remove(0)
 }
@@ -734,9 +740,8 @@ fn a_phases_table_and_the_next_phases_line_up_column_for_column() {
 #[test]
 fn the_profiles_polar_angles_follow_the_cam_angle_without_a_turns_jump() {
     for (task, variant) in [("11", 30), ("2", 35), ("4", 40), ("15", 6)] {
-        let text = common::catalogue_text(task, variant, Language::Ru);
-        let built = pipeline::build(&pipeline::load_for(&text, &[3]).unwrap(), &[3]).unwrap();
-        let answers: Vec<_> = built[0].output.tables.iter().flat_map(|t| t.answers("sheet3")).collect();
+        let built = catalogue_sheet3(task, variant, Language::Ru);
+        let answers: Vec<_> = built.output.tables.iter().flat_map(|t| t.answers("sheet3")).collect();
         let value = |id: &str| answers.iter().find(|a| a.id == id).map(|a| a.value);
         let mut checked = 0;
         for phase in ["profile-rise", "profile-return"] {
@@ -766,9 +771,8 @@ fn the_profiles_polar_angles_follow_the_cam_angle_without_a_turns_jump() {
 #[test]
 fn a_smaller_cam_profile_must_earn_its_margin_against_the_largest_one_tried() {
     for lang in [Language::Ru, Language::En, Language::Uz] {
-        let text = common::catalogue_text("4", 40, lang);
-        let built = pipeline::build(&pipeline::load_for(&text, &[3]).unwrap(), &[3]).unwrap();
-        let results = &built[0].output.results;
+        let built = catalogue_sheet3("4", 40, lang);
+        let results = &built.output.results;
         let mu = results["profile_mu_l"].as_f64().unwrap();
         assert!(mu <= 0.005 + 1e-12, "{lang:?}: the profile at μ_l = {mu} m/mm");
         let faults = common::layout_faults(&results["layout"]);
@@ -782,9 +786,8 @@ fn a_smaller_cam_profile_must_earn_its_margin_against_the_largest_one_tried() {
 /// "15" under position 16's tick and "16" past the axis' end.
 #[test]
 fn the_pressure_diagrams_position_numbers_stand_under_their_own_ticks() {
-    let text = common::catalogue_text("2", 35, Language::Ru);
-    let built = pipeline::build(&pipeline::load_for(&text, &[3]).unwrap(), &[3]).unwrap();
-    let out = &built[0].output;
+    let built = catalogue_sheet3("2", 35, Language::Ru);
+    let out = &built.output;
     let mu_phi = out.results["pressure_diagram"]["mu_phi_deg"].as_f64().unwrap();
     // Eight divisions of the rise and of the return, the far dwell between (this cam's).
     let phase = |k: &str| out.results["phases_deg"][k].as_f64().unwrap();
@@ -824,8 +827,7 @@ fn the_pressure_diagrams_position_numbers_stand_under_their_own_ticks() {
 #[test]
 fn the_law_tables_keep_their_place_under_a_column_nearly_as_tall() {
     for lang in [Language::Ru, Language::Uz, Language::En] {
-        let text = common::catalogue_text("15", 11, lang);
-        let b = sheet3(&load_in(&text, lang));
+        let b = catalogue_sheet3("15", 11, lang);
         let under = b.output.scene.groups.iter().any(|g| g.id == "law-tables");
         assert!(under, "{lang:?}: the law's tables are not under the diagrams");
         let empty = b.output.results["layout"]["empty_share"].as_f64().unwrap();

@@ -363,8 +363,7 @@ fn the_planetary_views_captions_stand_clear_of_the_plan_under_them() {
             Language::Ru => ["Вид спереди", "Кинематическая схема"],
             Language::En => ["Front view", "Kinematic scheme"],
         };
-        let mut task7 = pipeline::load(&common::catalogue_text("7", 1, lang)).unwrap();
-        task7.info.language = lang;
+        let task7 = pipeline::load(&common::catalogue_text("7", 1, lang)).unwrap();
         let mut worked = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
         worked.info.language = lang;
         for (name, p) in [("task 7 v1", task7), ("worked example", worked)] {

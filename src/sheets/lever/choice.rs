@@ -54,12 +54,10 @@ pub(super) fn empty(c: &Composed) -> f64 {
 /// its load diagrams' stroke names moved beside their arrows (110 mm before, 0.005 emptier).
 pub(super) fn better(l: &Composed, rule: &Composed, margin: f64) -> bool {
     let floors = Floors { together: false, ..Floors::of(rule) };
-    let rescues_lever =
-        !at_least(lever_mm(rule), LEVER_READABLE) && at_least(lever_mm(l), LEVER_WORTH_IT * lever_mm(rule));
     let emptier_by = empty(rule) - empty(l);
     (l.layout.is_clean() || !rule.layout.is_clean())
         && floors.kept(l)
-        && (emptier_by > margin || (rescues_lever && emptier_by >= -margin))
+        && (emptier_by > margin || (floors.lever_grown(l) && emptier_by >= -margin))
 }
 
 /// What a variant must keep of the rule's composition: the mechanism's scale, its smallest
@@ -110,10 +108,14 @@ impl Floors {
         Floors { together: together(c), ..self }
     }
 
+    /// Whether `c` grows a lever under [`LEVER_READABLE`] by [`LEVER_WORTH_IT`].
+    fn lever_grown(&self, c: &Composed) -> bool {
+        !at_least(self.lever, LEVER_READABLE) && at_least(lever_mm(c), LEVER_WORTH_IT * self.lever)
+    }
+
     pub(super) fn kept(&self, c: &Composed) -> bool {
         let mechanism_kept = c.scales.mu_l <= self.mu_l * MECHANISM_SHRUNK_MOST * (1.0 + crate::num::tol::ROUND_VALUE);
-        let lever_grown = !at_least(self.lever, LEVER_READABLE) && at_least(lever_mm(c), LEVER_WORTH_IT * self.lever);
-        (mechanism_kept || lever_grown)
+        (mechanism_kept || self.lever_grown(c))
             && at_least(plan_mm(c), self.plan)
             && c.scales.own_scales() <= self.own_scales
             && at_least(side_mm(c), self.side)

@@ -89,19 +89,19 @@ pub fn plan(d: &Design, (max_w, phi_max): (f64, f64), max_h: f64) -> Plan {
     // μ_d²s/dφ² of two significant digits, H2 = μ_ds/dφ/(μ_d²s/dφ²·μ_φ) derived from it:
     // the analog nearest the guide's 70 mm with H2 in its range; `giving`, the largest the
     // column's height leaves room for (down to the least accepted).
-    let fit = |mu_s: f64, mu_ds: f64, giving: bool| {
+    let all = |mu_s: f64, mu_ds: f64| {
         let rest = p.lift / mu_s + (v_hi - v_lo) / mu_ds + 4.0 * GAP + PHASES + 8.0;
-        let drawn = |(mu_dds, h2, a): (f64, f64, f64)| Fit { mu_dds, h2, a, height: rest + 2.0 * a };
-        let all = acceleration_scales(amax, mu_ds, mu_phi_rad).into_iter().map(drawn);
-        let accepted = all.clone().filter(|f| (ACCELERATION_MM.0..=ACCELERATION_MM.2).contains(&f.a));
-        let nearest = |fits: &mut dyn Iterator<Item = Fit>| {
-            fits.min_by(|x, y| (x.a - ACCELERATION_MM.1).abs().total_cmp(&(y.a - ACCELERATION_MM.1).abs()))
-        };
-        let chosen = if giving { accepted.clone().find(|f| f.height <= max_h) } else { nearest(&mut accepted.clone()) };
-        // None accepted (an analog too low or too high at every H2 in range): the nearest.
-        (chosen, nearest(&mut all.clone()))
+        let drawn = move |(mu_dds, h2, a): (f64, f64, f64)| Fit { mu_dds, h2, a, height: rest + 2.0 * a };
+        acceleration_scales(amax, mu_ds, mu_phi_rad).into_iter().map(drawn)
     };
-    let fits = |mu_s: f64, mu_ds: f64, giving: bool| fit(mu_s, mu_ds, giving).0.is_some_and(|f| f.height <= max_h);
+    let nearest_70 = |fits: &mut dyn Iterator<Item = Fit>| {
+        fits.min_by(|x, y| (x.a - ACCELERATION_MM.1).abs().total_cmp(&(y.a - ACCELERATION_MM.1).abs()))
+    };
+    let fit = |mu_s: f64, mu_ds: f64, giving: bool| {
+        let mut accepted = all(mu_s, mu_ds).filter(|f| (ACCELERATION_MM.0..=ACCELERATION_MM.2).contains(&f.a));
+        if giving { accepted.find(|f| f.height <= max_h) } else { nearest_70(&mut accepted) }
+    };
+    let fits = |mu_s: f64, mu_ds: f64, giving: bool| fit(mu_s, mu_ds, giving).is_some_and(|f| f.height <= max_h);
     let first = scale::plan_round_up(p.lift / LIFT_MAX_MM);
     let steps = |from: f64| std::iter::successors(Some(from), |&m| Some(scale::plan_next_round(m))).take(40);
     let lift_readable = |m: f64| p.lift / m >= LIFT_MIN_MM;
@@ -125,13 +125,10 @@ pub fn plan(d: &Design, (max_w, phi_max): (f64, f64), max_h: f64) -> Plan {
     };
     let (mu_s, mu_ds, giving) =
         [false, true].into_iter().find_map(|giving| shared(giving).or_else(|| own(giving))).unwrap_or_else(fallback);
-    let (chosen, nearest) = fit(mu_s, mu_ds, giving);
-    let Fit { mu_dds, h2, height, .. } = chosen.or(nearest).unwrap_or(Fit {
-        mu_dds: mu_ds / (H2_MM.1 * mu_phi_rad),
-        h2: H2_MM.1,
-        a: 0.0,
-        height: max_h,
-    });
+    // None accepted (an analog too low or too high at every H2 in range): the nearest.
+    let chosen = fit(mu_s, mu_ds, giving).or_else(|| nearest_70(&mut all(mu_s, mu_ds)));
+    let Fit { mu_dds, h2, height, .. } =
+        chosen.unwrap_or(Fit { mu_dds: mu_ds / (H2_MM.1 * mu_phi_rad), h2: H2_MM.1, a: 0.0, height: max_h });
     // Shared, H1 = 1/μ_φ exactly (the ratio's rounding would move its last digit).
     let h1 = if mu_s == mu_ds { 1.0 / mu_phi_rad } else { mu_s / (mu_ds * mu_phi_rad) };
     let scales = Scales { mu_phi_deg, mu_phi_rad, mu_s, mu_ds, mu_dds, h1, h2 };
