@@ -139,3 +139,31 @@ fn each_stroke_of_a_load_diagram_shows_which_way_it_runs() {
         }
     }
 }
+
+/// A stroke whose line runs along the S/H axis is named on the side away from the axis'
+/// values: the two-cylinder compressor's «от крышки» and the engine's «II – выпуск» stood
+/// on the values' row right after "0,5", read as "0,5 от крышки". No text of the force
+/// drawings stands on the row of an S/H value within 4 mm of it, in every language.
+#[test]
+fn a_stroke_along_the_axis_is_named_away_from_the_stroke_values() {
+    for name in ["two-cylinder-compressor", "crank-slider-axial"] {
+        for lang in Language::ALL {
+            let mut p = common::fixture(name);
+            p.info.language = lang;
+            let lever = common::build_lever(&p);
+            let texts: Vec<_> = (lever.composed.scene.groups.iter().filter(|g| g.id.starts_with("forces")))
+                .flat_map(|g| &g.items)
+                .filter_map(|i| if let Item::Text(t) = i { Some((t.text.as_str(), t.bbox())) } else { None })
+                .collect();
+            let halves: Vec<_> = texts.iter().filter(|(t, _)| *t == "0,5" || *t == "0.5").collect();
+            assert!(!halves.is_empty(), "{name} {lang:?}: no S/H value 0,5");
+            for (half, h) in halves {
+                for (t, b) in texts.iter().filter(|(t, _)| t != half) {
+                    let same_row = b.y0 < h.y1 && b.y1 > h.y0;
+                    let gap = (b.x0 - h.x1).max(h.x0 - b.x1);
+                    assert!(!same_row || gap >= 4.0, "{name} {lang:?}: «{t}» {gap:.1} mm beside «{half}»");
+                }
+            }
+        }
+    }
+}

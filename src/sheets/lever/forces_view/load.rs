@@ -101,14 +101,24 @@ pub(super) fn draw_load(
     let at_s = |b: usize, s: f64| signed(b, load.branches[b].curve.at(s));
     let arrows = stroke_arrows(g, &plot, &at_s, value.s);
     // Each stroke named beside its arrow, on the side away from the other stroke's line
-    // (where the lines run together, the first above and the second below); without an
+    // (where the lines run together, the first above and the second below) or, along the
+    // axis, from the S/H values; without an
     // arrow, at its own fraction of the stroke (apart from the other's name and from the S/H
     // values at 0, ½ and 1).
     let names: Vec<(Point, Vec2, &str)> = (names.into_iter().enumerate())
         .map(|(b, name)| {
             let s = arrows[b].unwrap_or((b + 1) as f64 / (load.branches.len() + 1) as f64);
             let (at, other) = (plot.at(s, at_s(b, s)), plot.at(s, at_s(1 - b, s)));
-            let up = if (other.y - at.y).abs() > 1.0 { other.y > at.y } else { b == 0 };
+            // A line along the axis (within 3 mm) is named on the side away from the S/H
+            // values: beside them «0,5 от крышки» read as one phrase (two fixtures).
+            let axis_y = plot.at(s, 0.0).y;
+            let up = if (at.y - axis_y).abs() < 3.0 {
+                !plot.x_values_above()
+            } else if (other.y - at.y).abs() > 1.0 {
+                other.y > at.y
+            } else {
+                b == 0
+            };
             (at, Vec2::new(0.3, if up { -1.0 } else { 1.0 }), name)
         })
         .collect();
