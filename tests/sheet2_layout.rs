@@ -392,3 +392,40 @@ fn the_planetary_views_captions_stand_clear_of_the_plan_under_them() {
         }
     }
 }
+
+/// The plan of angular velocities' caption and reading stand just over the plan, whichever
+/// room it took: beside the scheme under the carrier they stood at the axis, 55 mm over the
+/// plan, under the picture of linear velocities' O, and read as its caption (the worked
+/// example and the undercut fixture in Russian). The caption's foot is at most 25 mm over
+/// the plan's highest label (its line's 2, 0, H, 1: over a strip, at the foot of the
+/// pictures, 22.5 mm), and never under it.
+#[test]
+fn the_angular_velocity_plans_caption_stands_over_its_plan() {
+    use tmm_sheets::drawing::scene::Item;
+    for lang in Language::ALL {
+        let caption = match lang {
+            Language::Uz => "Burchak tezliklar plani",
+            Language::Ru => "План угловых скоростей",
+            Language::En => "Angular velocities",
+        };
+        let mut worked = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
+        worked.info.language = lang;
+        let mut undercut = common::fixture("gears/undercut");
+        undercut.info.language = lang;
+        for (name, p) in [("worked example", worked), ("undercut", undercut)] {
+            let b = sheet2(&p);
+            let g = b.output.scene.groups.iter().find(|g| g.id == "planetary").expect("a planetary stage");
+            let texts: Vec<_> =
+                g.items.iter().filter_map(|i| if let Item::Text(t) = i { Some(t) } else { None }).collect();
+            let c = texts.iter().find(|t| t.text == caption).unwrap_or_else(|| panic!("{name} {lang:?}")).bbox();
+            // The plan's line labels: the lowest row of 2, 0, H and 1 (the picture of linear
+            // velocities names its lines 1, 2, H too, higher up).
+            let row: Vec<_> =
+                texts.iter().filter(|t| ["0", "1", "2", "H"].contains(&t.text.as_str())).map(|t| t.bbox()).collect();
+            let zero = texts.iter().find(|t| t.text == "0").expect("the plan's 0").bbox();
+            let top = row.iter().filter(|r| (r.y0 - zero.y0).abs() < 1.0).map(|r| r.y0).fold(f64::INFINITY, f64::min);
+            let gap = top - c.y1;
+            assert!((0.0..=25.0).contains(&gap), "{name} {lang:?}: «{caption}» {gap:.1} mm over its plan");
+        }
+    }
+}

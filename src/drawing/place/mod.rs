@@ -129,6 +129,13 @@ impl Labels {
         self.push_at_any(spots, Request { rank, ..Request::new(Point::ZERO, Vec2::ZERO, label, h) });
     }
 
+    /// As [`Labels::add_at_any`], a label naming the segment a–b (a force's arrow): like a
+    /// side's name ([`Labels::add_side`]) it prefers spots nearer its own segment than any
+    /// other named one (two arrows from one point, G₂ and P_и2, each read the other's name).
+    pub fn add_side_at_any(&mut self, spots: &[(Point, Vec2)], (a, b): (Point, Point), label: LabelText, h: f64) {
+        self.push_at_any(spots, Request { side: Some((a, b)), ..Request::new(Point::ZERO, Vec2::ZERO, label, h) });
+    }
+
     /// `req` at the first of `spots`, the rest its further anchors.
     fn push_at_any(&mut self, spots: &[(Point, Vec2)], req: Request) {
         let Some((&(anchor, pref), others)) = spots.split_first() else { return };

@@ -317,3 +317,46 @@ fn a_lines_name_walled_in_at_its_first_points_goes_along_its_line() {
         assert_eq!((a - open).norm() < 1e-9, with_along, "the leader starts at {a:?}");
     }
 }
+
+/// Two force arrows from one point (the worked example's G₃ and P_и3 at S₃): each name
+/// stands nearer its own arrow than the other, or hangs on a leader to it — with the spots
+/// beside each arrow asked plainly, "G₃" stood at P_и3's tip and read as its name.
+#[test]
+fn an_arrows_name_stands_nearer_its_own_arrow_than_its_twin() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let at = Point::new(50.0, 50.0);
+    let arrows = [(Vec2::new(-0.8, 0.6), ("P", "и3")), (Vec2::new(0.0, 1.0), ("G", "3"))];
+    let mut g = Group::new("g", region);
+    // The link through the point, as the force drawing has it.
+    g.line(Point::new(30.0, 30.0), Point::new(70.0, 70.0), crate::drawing::scene::MAIN);
+    let mut labels = Labels::new();
+    let segments: Vec<(Point, Point)> = arrows.iter().map(|&(d, _)| (at, at + d * 7.0)).collect();
+    for (&(d, (main, sub)), &(start, _)) in arrows.iter().zip(&segments) {
+        crate::drawing::symbols::vector(&mut g, start, start + d * 7.0, crate::drawing::scene::VECTOR);
+        let n = d.turn_90();
+        let along = |k: f64| start + d * (7.0 * k);
+        let spots = [(along(0.55), n), (along(0.55), -n), (along(0.85), n), (along(0.85), -n), (along(0.25), n)];
+        labels.add_side_at_any(&spots, (start, start + d * 7.0), LabelText::new(main, sub), 3.5);
+    }
+    let drawn = g.items.len();
+    assert_eq!(labels.place(&mut g, region), vec![true, true]);
+    let boxes: Vec<Rect> = g.texts().map(Text::bbox).collect();
+    // A leader's far end on a box: that name is read along its leader.
+    let leader_ends: Vec<Point> = (g.items[drawn..].iter())
+        .filter_map(|i| match i {
+            Item::Path { path, .. } => Some(path.end()),
+            _ => None,
+        })
+        .collect();
+    for (k, own) in segments.iter().enumerate() {
+        let other = segments[1 - k];
+        let (d_own, d_other) = (rect_segment_distance(boxes[k], *own), rect_segment_distance(boxes[k], other));
+        let on_leader = leader_ends.iter().any(|&e| boxes[k].inflate(1.0, 1.0).contains(e));
+        assert!(
+            on_leader || d_own + NEARER_BY <= d_other,
+            "name {k} at {:?}: {d_own} mm from its arrow, {d_other} from the other",
+            boxes[k]
+        );
+    }
+    assert_clean(g);
+}

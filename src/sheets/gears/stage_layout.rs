@@ -206,7 +206,7 @@ fn velocity_pictures(
     // the foot just above the plan; else the plan beside the scheme, under the picture of
     // linear velocities with the texts under it, or, where that draws 0–H longer, under the
     // carrier (right of the ring, from the foot of the carrier's arm down to the scheme's
-    // caption) with the texts over it.
+    // caption) with the texts just over it.
     let line = CELL_TEXT * crate::drawing::text::LINE_PITCH;
     let block = (2 + note(-99.99 * ratio).len()) as f64 * line;
     let foot = area.y1 - block - 2.0;
@@ -227,7 +227,9 @@ fn velocity_pictures(
     let at = |y: f64| Point::new(area.x0 + 1.0, y);
     let mut y = match (strip, under_wins) {
         (Some(_), _) => foot,
-        (None, true) => axis + 3.0,
+        // Just over the plan: at the axis, 55 mm over a tall stage's plan, the caption read
+        // as the picture of linear velocities' (the worked example in Russian).
+        (None, true) => (under.y0 - block - 3.0).max(axis + 3.0),
         (None, false) => plan_bottom.min(foot),
     } + line;
     g.text(Text::new(at(y), l.angular_velocities(), CELL_TEXT, Anchor::Start));

@@ -161,7 +161,7 @@ impl Arrows {
         // Beside the arrow's middle, else nearer its tip or its tail on either side.
         let along = |k: f64| start + d * (len * k);
         let spots = [(along(0.55), n), (along(0.55), -n), (along(0.85), n), (along(0.85), -n), (along(0.25), n)];
-        labels.add_at_any(&spots, label, self.h);
+        labels.add_side_at_any(&spots, (start, tip), label, self.h);
         natural < ARROW_MIN
     }
 }
