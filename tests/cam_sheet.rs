@@ -834,3 +834,32 @@ fn the_law_tables_keep_their_place_under_a_column_nearly_as_tall() {
         assert!(lang != Language::Ru || empty <= 0.5, "{lang:?}: {empty} of sheet 3 is empty");
     }
 }
+
+/// A diagram's scale («μ_β = 0,0075 рад/мм») and an axis value in its row read as one
+/// phrase when they stand a word's space apart: «μ_β = 0,0075 рад/мм 20» at 4 mm (a
+/// teacher's review). On every cam project in every language, a value to the right of a
+/// scale text whose row it shares stands at least 6 mm from it.
+#[test]
+fn a_diagrams_scale_stands_apart_from_the_values_in_its_row() {
+    for (name, text) in cam_projects() {
+        for lang in Language::ALL {
+            let b = sheet3(&load_in(&text, lang));
+            let g = b.output.scene.groups.iter().find(|g| g.id == "diagrams").unwrap();
+            let is_value = |s: &str| s.replace(',', ".").replace('−', "-").trim().parse::<f64>().is_ok();
+            let scales: Vec<kurbo::Rect> = g.texts().filter(|t| t.text.starts_with('μ')).map(|t| t.bbox()).collect();
+            assert!(!scales.is_empty(), "{name} {lang:?}: no scale text");
+            for v in g.texts().filter(|t| is_value(&t.text)) {
+                let r = v.bbox();
+                for s in &scales {
+                    let same_row = r.y0 < s.y1 && s.y0 < r.y1;
+                    let gap = r.x0 - s.x1;
+                    assert!(
+                        !same_row || !(0.0..6.0).contains(&gap),
+                        "{name} {lang:?}: «{}» {gap:.1} mm after a scale text",
+                        v.text
+                    );
+                }
+            }
+        }
+    }
+}

@@ -171,8 +171,10 @@ impl Stack<'_> {
         };
         // Beside the axis's values, not at the column's left edge: that room is the poles'
         // of the diagrams below, and this one has none (its μ stood 95 mm from its axis).
+        // Its first line shares the top value's row: twice the poles' gap keeps them apart
+        // («μ_β = 0,0075 рад/мм 20» read as one at 4 mm).
         let widest = lines.iter().map(|t| t.width(SCALE_TEXT)).fold(0.0, f64::max);
-        let x = (s_plot.y_labels_left() - SCALE_GAP - widest).max(self.left);
+        let x = (s_plot.y_labels_left() - 2.0 * SCALE_GAP - widest).max(self.left);
         scale_text(g, Point::new(x, s_plot.origin.y - p.lift / sc.mu_s), &lines);
         s_plot.origin.y + PHASES + GAP
     }
