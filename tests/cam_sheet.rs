@@ -863,3 +863,24 @@ fn a_diagrams_scale_stands_apart_from_the_values_in_its_row() {
         }
     }
 }
+
+/// A given roller outside the course's 0.25–0.4·r_min is said on the sheet, as the build
+/// warns of it: translating-offset-auto's 8 mm roller is 0.2428·r_min (r_min = 32.95 mm),
+/// and a sheet handed in showed it as the course's. The worked example's roller is the
+/// course's: no such note.
+#[test]
+fn a_roller_outside_the_courses_share_is_noted_on_the_sheet() {
+    let text = std::fs::read_to_string(root().join("fixtures/cams/translating-offset-auto.yaml")).unwrap();
+    for lang in Language::ALL {
+        let share = match lang {
+            Language::Uz => "8,000 mm = 0,2428·rₘᵢₙ",
+            Language::Ru => "8,000 мм = 0,2428·rₘᵢₙ",
+            Language::En => "8.000 mm = 0.2428·rₘᵢₙ",
+        };
+        let b = sheet3(&load_in(&text, lang));
+        let noted = b.output.scene.texts().any(|t| t.text.contains(share));
+        assert!(noted, "{lang:?}: no note of the roller's share «{share}»");
+        let worked = sheet3(&load_in(pipeline::DEFAULT_PROJECT, lang));
+        assert!(!worked.output.scene.texts().any(|t| t.text.contains("·rₘᵢₙ = ")), "{lang:?}: the worked example");
+    }
+}

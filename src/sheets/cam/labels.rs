@@ -45,6 +45,8 @@ crate::label_set! {
         knife_note,
         knife_note_rocker,
         roller_reduced(r, rho),
+        roller_outside(r, k, lo, hi),
+        roller_near_curvature(r, lim),
         law_table(n, phase),
         profile_table(n, phase),
         results_table(n),

@@ -21,7 +21,6 @@ pub use profile_view::{MAX_PIECES, PROFILE_TOL};
 use super::notes::Room;
 use super::scaffold::Composition;
 use super::{COURSE, Context, Sheet, SheetError, SheetKind};
-use crate::cams::follower::Follower;
 use crate::cams::integrate::{self, Integrated};
 use crate::drawing::columns::{self, Para};
 use crate::drawing::place::Labels;
@@ -136,18 +135,6 @@ struct Column {
     width: ColumnWidth,
 }
 
-/// The title over the diagrams: the law's name (or both phases' laws).
-fn laws_title(p: &CamProject, words: &CamWords) -> String {
-    let l = words.sheet;
-    let rocker = matches!(p.design.spec.follower, Follower::Rocker { .. });
-    if p.laws.0 == p.laws.1 {
-        let name = notes::law_name(p, &p.laws.0, words);
-        if rocker { l.laws_title_rocker(&name) } else { l.laws_title(&name) }
-    } else {
-        l.laws_title_two(&notes::law_name(p, &p.laws.0, words), &notes::law_name(p, &p.laws.1, words))
-    }
-}
-
 /// The notes under the diagrams (the sheet's and the assumptions) may take this much
 /// height, mm: the diagrams keep the rest of the column at the course's scales.
 const NOTES_MAX_H: f64 = 80.0;
@@ -163,13 +150,21 @@ fn plan_column(
     words: &CamWords,
     width: ColumnWidth,
 ) -> Result<Column, TooLong> {
-    let title = laws_title(p, words);
+    let title = notes::laws_title(p, words);
     let notes = notes::sheet_notes(p, errors, deviation, words);
-    let head = head_h(&title, width.left - 4.0);
-    let room = SHEET.height() - head - notes_h(&notes, width.left - 4.0) - 8.0;
-    let plan = diagrams::plan(&p.design, (width.left - 4.0, width.phi), room);
-    // The notes are set as wide as the diagrams.
-    let drawn_h = notes_h(&notes, plan.width);
+    let (head, wide_h) = (head_h(&title, width.left - 4.0), notes_h(&notes, width.left - 4.0));
+    let mut room = SHEET.height() - head - wide_h - 8.0;
+    let mut plan = diagrams::plan(&p.design, (width.left - 4.0, width.phi), room);
+    // The title and the notes are set as wide as the diagrams (the column's region narrows
+    // to them): in more lines than the column's width gave, where those leave the diagrams
+    // no room the plan is made again in what is left (its width does not change with its
+    // height). A roller's note and a title in two lines put a column 5 mm past the frame.
+    let (head, drawn_h) = (head_h(&title, plan.width), notes_h(&notes, plan.width));
+    let excess = head + drawn_h - (SHEET.height() - 8.0 - room);
+    if excess > 0.0 && plan.height > room - excess {
+        room -= excess;
+        plan = diagrams::plan(&p.design, (width.left - 4.0, width.phi), room);
+    }
     let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(words.lang).to_string()).collect();
     let notes_room =
         Room { field: "cam.assumptions", place: "notes under the diagrams", size: (plan.width, NOTES_MAX_H) };

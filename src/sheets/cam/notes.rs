@@ -49,10 +49,17 @@ pub fn sheet_notes(
     } else {
         out.push(l.profile_note(&fmt::bound_above(deviation * 1e6, lang)));
     }
+    // What the build warns of the roller, the sheet says too: a sheet handed in must not
+    // hide that its roller is not the course's.
+    let v = |x: f64| fmt::value(x, lang);
     for w in &d.warnings {
-        if let CamWarning::RollerBelowCourse { r, rho_min, .. } = w {
-            out.push(l.roller_reduced(&fmt::value(mm(*r), lang), &fmt::value(mm(*rho_min), lang)));
-        }
+        out.push(match *w {
+            CamWarning::RollerBelowCourse { r, rho_min, .. } => l.roller_reduced(&v(mm(r)), &v(mm(rho_min))),
+            CamWarning::RollerOutsideCourse { r, r_min } => {
+                l.roller_outside(&v(mm(r)), &v(r / r_min), &v(mm(0.25 * r_min)), &v(mm(0.4 * r_min)))
+            }
+            CamWarning::RollerNearCurvature { r, rho_min } => l.roller_near_curvature(&v(mm(r)), &v(mm(0.8 * rho_min))),
+        });
     }
     for (k, law) in [&p.laws.0, &p.laws.1].into_iter().enumerate() {
         if let Law::Custom(c) = law
@@ -89,5 +96,17 @@ pub fn law_name(p: &CamProject, law: &Law, words: &CamWords) -> String {
             Some((_, name)) => name.get(words.lang).to_string(),
             None => c.replaces().map_or_else(|| c.key().to_string(), |s| l.law(s).to_string()),
         },
+    }
+}
+
+/// The title over the diagrams: the law's name (or both phases' laws).
+pub(super) fn laws_title(p: &CamProject, words: &CamWords) -> String {
+    let l = words.sheet;
+    let rocker = matches!(p.design.spec.follower, Follower::Rocker { .. });
+    if p.laws.0 == p.laws.1 {
+        let name = law_name(p, &p.laws.0, words);
+        if rocker { l.laws_title_rocker(&name) } else { l.laws_title(&name) }
+    } else {
+        l.laws_title_two(&law_name(p, &p.laws.0, words), &law_name(p, &p.laws.1, words))
     }
 }
