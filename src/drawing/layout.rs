@@ -2,7 +2,7 @@
 //! each other, items leaving their region or the page. A teacher sends a sheet back for any of them, so
 //! `results.json` reports the counts and the tests hold them at zero.
 
-use super::frame::{DESIGNATION_BOX, FRAME, TITLE_BLOCK};
+use super::frame::{self, DESIGNATION_BOX, FRAME, TITLE_BLOCK};
 use super::obstacles::{Obstacles, Piece, segments};
 use super::scene::{Item, Scene};
 use crate::num::math::Norm;
@@ -147,9 +147,13 @@ fn measure_flat(scene: &Scene, flat: &Flattened) -> Layout {
         .filter(|g| g.id == TITLE_BLOCK || g.id == DESIGNATION_BOX)
         .map(|g| g.region.inflate(-EDGE, -EDGE))
         .collect();
+    // A sheet's drawings stay inside its frame (a diagrams' column whose region ran 5 mm past
+    // it, its items inside that region, was counted clean).
+    let inner = scene.groups.iter().any(|g| g.id == FRAME).then(frame::inner);
     for g in &scene.groups {
         let region = g.region.inflate(EDGE, EDGE);
         let own = [TITLE_BLOCK, DESIGNATION_BOX, FRAME].contains(&g.id.as_str());
+        let inner = inner.filter(|_| !own);
         for item in &g.items {
             let bb = item.bbox();
             for tb in blocks.iter().filter(|tb| !own && tb.intersect(bb).area() > 0.0) {
@@ -166,6 +170,9 @@ fn measure_flat(scene: &Scene, flat: &Flattened) -> Layout {
                     extent(bb),
                     overshoot(page, bb)
                 ));
+            } else if let Some(f) = inner.filter(|f| !inside(f.inflate(EDGE, EDGE), bb)) {
+                out.outside_region += 1;
+                out.note(format!("drawing '{}': {} leaves the frame by {:.1} mm", g.id, extent(bb), overshoot(f, bb)));
             } else if !inside(region, bb) {
                 out.outside_region += 1;
                 out.note(format!(
@@ -350,6 +357,23 @@ pub(crate) mod tests {
         s.groups[0].region = Rect::new(0.0, 0.0, 50.0, 200.0);
         s.groups[0].items.push(Item::Text(Text::new(Point::new(60.0, 60.0), "beside", 2.5, Anchor::Start)));
         assert_eq!(measure(&s).outside_region, 3, "leaving the page and the region counts once");
+    }
+
+    /// A sheet's drawing stays inside its frame even where its region reaches past it (sheet
+    /// 3's diagrams' column ran 5 mm past the frame's foot, its notes inside their region):
+    /// an item past the frame's inside is counted once a scene has a frame.
+    #[test]
+    fn an_item_past_the_frame_is_counted_even_inside_its_region() {
+        let inner = frame::inner();
+        let below = |y: f64| Item::Text(Text::new(Point::new(100.0, y), "note", 2.5, Anchor::Start));
+        let mut s = scene(vec![below(inner.y1 - 5.0), below(inner.y1 + 4.0)]);
+        (s.width, s.height) = (841.0, 594.0);
+        s.groups[0].region = Rect::new(inner.x0, inner.y0, 400.0, 594.0);
+        assert!(measure(&s).is_clean(), "no frame drawn: the page bounds it");
+        s.groups.push(Group::new(FRAME, Rect::new(0.0, 0.0, 841.0, 594.0)));
+        let m = measure(&s);
+        assert_eq!(m.outside_region, 1, "{m:?}");
+        assert!(m.problems[0].contains("leaves the frame"), "{m:?}");
     }
 
     /// The title block is no drawing's room even where a drawing's region covers it (a mesh
