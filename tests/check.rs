@@ -146,12 +146,15 @@ fn the_values_are_never_overwritten_and_the_project_goes_after_the_subcommand() 
 #[test]
 fn the_report_is_written_as_markdown_or_csv() {
     let f = temp("md.csv", "id,value\nsheet3.results.r_min,1\n");
-    let md = f.with_file_name("report.md");
+    // The reports in a directory of their own, removed when dropped (beside the input they
+    // were left in the system's temporary directory under fixed names).
+    let dir = tempfile::tempdir().unwrap();
+    let md = dir.path().join("report.md");
     let o = check(&[f.to_str().unwrap(), "-o", md.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1));
     let text = std::fs::read_to_string(&md).unwrap();
     assert!(text.starts_with("| line | id |") && text.contains("FAIL") && text.contains("0 of 1 values pass"));
-    let csv = f.with_file_name("report.csv");
+    let csv = dir.path().join("report.csv");
     check(&[f.to_str().unwrap(), "-o", csv.to_str().unwrap()]);
     assert!(std::fs::read_to_string(&csv).unwrap().starts_with("line,id,name,exact,student"));
 }
@@ -165,13 +168,14 @@ fn the_report_to_hand_back_is_a_pdf_of_a4_pages_in_the_projects_language() {
     }
     csv.push_str("v_B.3,0.5,m/s\n");
     let f = temp("pdf.csv", &csv);
-    let pdf = f.with_file_name("report.pdf");
+    let dir = tempfile::tempdir().unwrap();
+    let pdf = dir.path().join("report.pdf");
     let o = check(&[f.to_str().unwrap(), "-o", pdf.to_str().unwrap(), "--lang", "ru"]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     let bytes = std::fs::read(&pdf).unwrap();
     assert!(bytes.starts_with(b"%PDF-"));
     // The same report twice is the same file.
-    let again = f.with_file_name("again.pdf");
+    let again = dir.path().join("again.pdf");
     check(&[f.to_str().unwrap(), "-o", again.to_str().unwrap(), "--lang", "ru"]);
     assert_eq!(bytes, std::fs::read(&again).unwrap());
     let Ok(text) = Command::new("pdftotext").args(["-layout"]).arg(&pdf).arg("-").output() else {
