@@ -356,7 +356,6 @@ fn the_spaces_value_moves_along_under_its_arc_before_it_takes_a_leader() {
 /// labels of its line across the strip, wherever they stand along it.
 #[test]
 fn the_planetary_views_captions_stand_clear_of_the_plan_under_them() {
-    use tmm_sheets::drawing::scene::Item;
     for lang in Language::ALL {
         let captions = match lang {
             Language::Uz => ["Old koʻrinish", "Kinematik sxema"],
@@ -369,8 +368,7 @@ fn the_planetary_views_captions_stand_clear_of_the_plan_under_them() {
         for (name, p) in [("task 7 v1", task7), ("worked example", worked)] {
             let b = sheet2(&p);
             let g = b.output.scene.groups.iter().find(|g| g.id == "planetary").expect("a planetary stage");
-            let texts: Vec<_> =
-                g.items.iter().filter_map(|i| if let Item::Text(t) = i { Some(t) } else { None }).collect();
+            let texts: Vec<_> = g.texts().collect();
             for caption in captions {
                 let c = texts
                     .iter()
@@ -401,7 +399,6 @@ fn the_planetary_views_captions_stand_clear_of_the_plan_under_them() {
 /// pictures, 22.5 mm), and never under it.
 #[test]
 fn the_angular_velocity_plans_caption_stands_over_its_plan() {
-    use tmm_sheets::drawing::scene::Item;
     for lang in Language::ALL {
         let caption = match lang {
             Language::Uz => "Burchak tezliklar plani",
@@ -415,8 +412,7 @@ fn the_angular_velocity_plans_caption_stands_over_its_plan() {
         for (name, p) in [("worked example", worked), ("undercut", undercut)] {
             let b = sheet2(&p);
             let g = b.output.scene.groups.iter().find(|g| g.id == "planetary").expect("a planetary stage");
-            let texts: Vec<_> =
-                g.items.iter().filter_map(|i| if let Item::Text(t) = i { Some(t) } else { None }).collect();
+            let texts: Vec<_> = g.texts().collect();
             let c = texts.iter().find(|t| t.text == caption).unwrap_or_else(|| panic!("{name} {lang:?}")).bbox();
             // The plan's line labels: the lowest row of 2, 0, H and 1 (the picture of linear
             // velocities names its lines 1, 2, H too, higher up).

@@ -152,15 +152,15 @@ fn plan_column(
 ) -> Result<Column, TooLong> {
     let title = notes::laws_title(p, words);
     let notes = notes::sheet_notes(p, errors, deviation, words);
-    let (head, wide_h) = (head_h(&title, width.left - 4.0), notes_h(&notes, width.left - 4.0));
-    let mut room = SHEET.height() - head - wide_h - 8.0;
+    let wide = head_h(&title, width.left - 4.0) + notes_h(&notes, width.left - 4.0);
+    let mut room = SHEET.height() - wide - 8.0;
     let mut plan = diagrams::plan(&p.design, (width.left - 4.0, width.phi), room);
     // The title and the notes are set as wide as the diagrams (the column's region narrows
     // to them): in more lines than the column's width gave, where those leave the diagrams
     // no room the plan is made again in what is left (its width does not change with its
     // height). A roller's note and a title in two lines put a column 5 mm past the frame.
     let (head, drawn_h) = (head_h(&title, plan.width), notes_h(&notes, plan.width));
-    let excess = head + drawn_h - (SHEET.height() - 8.0 - room);
+    let excess = head + drawn_h - wide;
     if excess > 0.0 && plan.height > room - excess {
         room -= excess;
         plan = diagrams::plan(&p.design, (width.left - 4.0, width.phi), room);
