@@ -8,9 +8,9 @@ use crate::backend::{self, BackendError, svg};
 use crate::check;
 use crate::project::{self, Project, Refusal, Warning};
 use crate::report;
-/// The course's sheets, their numbers and the project sections they draw.
-pub use crate::sheets::COURSE;
 use crate::sheets::{self, Context, SheetOutput};
+/// The course's sheets, their numbers and the project sections they draw.
+pub use crate::sheets::{COURSE, LAYOUT_FAULTS};
 use rayon::prelude::*;
 use serde::Serialize;
 

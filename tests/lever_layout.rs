@@ -194,7 +194,7 @@ fn assert_crank_detailed(text: &str, crank: f64) -> (kurbo::Point, f64) {
     let built = pipeline::build(&pipeline::load(text).unwrap(), &[1]).unwrap();
     let out = &built[0].output;
     let layout = &out.results["layout"];
-    for fault in ["texts_crossed", "text_overlaps", "outside_region"] {
+    for fault in tmm_sheets::drawing::layout::FAULTS {
         assert_eq!(layout[fault].as_u64(), Some(0), "{fault}: {}", layout["problems"]);
     }
     let scales = &out.results["scales"];
@@ -581,7 +581,7 @@ fn a_crowded_crank_is_drawn_again_enlarged_with_its_numbers() {
         assert!(detail < 0.99 * mu_l, "{lang:?}: the detail at {detail} m/mm, the mechanism at {mu_l}");
         let longest = layout["longest_leader_mm"].as_f64().unwrap();
         assert!(longest <= 20.0, "{lang:?}: a leader of {longest} mm");
-        for fault in ["texts_crossed", "text_overlaps", "outside_region"] {
+        for fault in tmm_sheets::drawing::layout::FAULTS {
             assert_eq!(layout[fault].as_u64(), Some(0), "{lang:?} {fault}: {}", layout["problems"]);
         }
     }
@@ -594,7 +594,7 @@ fn a_crowded_crank_is_drawn_again_enlarged_with_its_numbers() {
         let (mu_l, detail) = (scales["mu_l"].as_f64().unwrap(), scales["detail_mu_l"].as_f64());
         let detail = detail.expect("the crowded crank's detail");
         assert!(detail < 0.99 * mu_l, "{lang:?}: the detail at {detail} m/mm, the mechanism at {mu_l}");
-        for fault in ["texts_crossed", "text_overlaps", "outside_region"] {
+        for fault in tmm_sheets::drawing::layout::FAULTS {
             assert_eq!(layout[fault].as_u64(), Some(0), "{lang:?} {fault}: {}", layout["problems"]);
         }
     }
@@ -610,7 +610,7 @@ fn a_name_at_a_plans_foot_stays_at_its_foot() {
         let layout = &out.results["layout"];
         let longest = layout["longest_leader_mm"].as_f64().unwrap();
         assert!(longest <= 30.0, "{lang:?}: a leader of {longest} mm");
-        for fault in ["texts_crossed", "text_overlaps", "outside_region"] {
+        for fault in tmm_sheets::drawing::layout::FAULTS {
             assert_eq!(layout[fault].as_u64(), Some(0), "{lang:?} {fault}: {}", layout["problems"]);
         }
     }

@@ -96,7 +96,7 @@ fn verdict(text: &str) -> Result<Outcome, String> {
     let count = |keys: &[&str]| -> u64 {
         built.iter().flat_map(|b| keys.iter().map(|k| b.output.results["layout"][k].as_u64().unwrap_or(0))).sum()
     };
-    if count(&["outside_region", "texts_crossed", "text_overlaps"]) > 0 {
+    if count(&tmm_sheets::drawing::layout::FAULTS) > 0 {
         let problems: Vec<String> = built
             .iter()
             .flat_map(|b| {

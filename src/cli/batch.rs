@@ -71,7 +71,7 @@ pub struct Outcome {
     /// [`KEY_ANSWERS`] in order (`None`: that sheet was not built).
     pub answers: Vec<Option<f64>>,
     /// Per sheet 1–3: texts crossed, text overlaps, items outside (`None`: not built).
-    pub layout: [Option<[u64; 3]>; 3],
+    pub layout: [Option<[u64; 4]>; 3],
     pub seconds: f64,
 }
 
@@ -247,7 +247,7 @@ fn record(
         let layout = &b.output.results["layout"];
         let n = |k: &str| layout[k].as_u64().unwrap_or(0);
         if let Some(slot) = o.layout.get_mut(b.output.number as usize - 1) {
-            *slot = Some([n("texts_crossed"), n("text_overlaps"), n("outside_region")]);
+            *slot = Some(pipeline::LAYOUT_FAULTS.map(n));
         }
     }
 }

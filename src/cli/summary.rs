@@ -12,8 +12,8 @@ fn answer(x: Option<f64>) -> String {
     x.map_or(String::new(), |x| if x.abs() < 1e-9 { "0".into() } else { digits::sig(x, 6) })
 }
 
-fn layout(l: Option<[u64; 3]>) -> String {
-    l.map_or(String::new(), |[c, o, out]| format!("{c}/{o}/{out}"))
+fn layout(l: Option<[u64; 4]>) -> String {
+    l.map_or(String::new(), |[c, o, out, run]| format!("{c}/{o}/{out}/{run}"))
 }
 
 /// `summary.csv`.

@@ -4,6 +4,7 @@
 
 use super::frame::{self, DESIGNATION_BOX, FRAME, TITLE_BLOCK};
 use super::obstacles::{Obstacles, Piece, segments};
+use super::phrases;
 use super::scene::{Item, Scene};
 use crate::num::math::Norm;
 use crate::num::tol;
@@ -28,6 +29,9 @@ pub struct Layout {
     pub texts_crossed: usize,
     /// Pairs of texts whose letters overlap.
     pub text_overlaps: usize,
+    /// Pairs of texts on one line, one stating a value, so close that they read as one
+    /// phrase ([`phrases::run_together`]).
+    pub texts_run_together: usize,
     /// Items not inside their group's region, or not on the page (a region may itself have
     /// grown off the page with what it holds); an item leaving both counts once.
     pub outside_region: usize,
@@ -48,9 +52,18 @@ pub struct Layout {
     pub problems: Vec<String>,
 }
 
+/// The counts of [`Layout`] that are faults, as `results.json` names them: a clean sheet has
+/// none of any.
+pub const FAULTS: [&str; 4] = ["texts_crossed", "text_overlaps", "outside_region", "texts_run_together"];
+
 impl Layout {
     pub fn is_clean(&self) -> bool {
-        self.texts_crossed == 0 && self.text_overlaps == 0 && self.outside_region == 0
+        self.faults() == [0; 4]
+    }
+
+    /// The counts named by [`FAULTS`], in its order.
+    pub fn faults(&self) -> [usize; 4] {
+        [self.texts_crossed, self.text_overlaps, self.outside_region, self.texts_run_together]
     }
 
     fn note(&mut self, what: String) {
@@ -81,9 +94,7 @@ pub fn measure(scene: &Scene) -> Layout {
 
 /// The texts of `scene` whose letters' boxes, grown by `clearance` (mm; negative shrinks
 /// them), a drawn line meets: each as its group's and its item's index.
-fn texts_meeting_lines(scene: &Scene, flat: &Flattened, clearance: f64) -> Vec<(usize, usize)> {
-    let drawn = scene.groups.iter().zip(flat).flat_map(|(g, segs)| g.items.iter().zip(segs));
-    let strokes = Obstacles::of_flattened(drawn.filter(|(i, _)| !is_text(i)).map(|(i, s)| (i, &s[..])), STROKE_CELL);
+fn texts_meeting_lines(scene: &Scene, strokes: &Obstacles, clearance: f64) -> Vec<(usize, usize)> {
     let mut out = Vec::new();
     for (gi, g) in scene.groups.iter().enumerate() {
         for (ii, item) in g.items.iter().enumerate() {
@@ -104,12 +115,19 @@ fn texts_meeting_lines(scene: &Scene, flat: &Flattened, clearance: f64) -> Vec<(
 /// letters' boxes), each as its group's and its item's index: letters that touch a line
 /// read as crowded even where none crosses them (the tests hold placed labels 0.4 mm clear).
 pub fn texts_near_lines(scene: &Scene, clearance: f64) -> Vec<(usize, usize)> {
-    texts_meeting_lines(scene, &flattened(scene), clearance)
+    texts_meeting_lines(scene, &strokes(scene, &flattened(scene)), clearance)
+}
+
+/// The drawn lines of `scene` (not its texts), indexed.
+fn strokes(scene: &Scene, flat: &Flattened) -> Obstacles {
+    let drawn = scene.groups.iter().zip(flat).flat_map(|(g, segs)| g.items.iter().zip(segs));
+    Obstacles::of_flattened(drawn.filter(|(i, _)| !is_text(i)).map(|(i, s)| (i, &s[..])), STROKE_CELL)
 }
 
 fn measure_flat(scene: &Scene, flat: &Flattened) -> Layout {
     let mut out = Layout::default();
-    for (gi, ii) in texts_meeting_lines(scene, flat, -TOUCH) {
+    let strokes = strokes(scene, flat);
+    for (gi, ii) in texts_meeting_lines(scene, &strokes, -TOUCH) {
         let g = &scene.groups[gi];
         let Item::Text(t) = &g.items[ii] else { continue };
         out.texts_crossed += 1;
@@ -184,6 +202,13 @@ fn measure_flat(scene: &Scene, flat: &Flattened) -> Layout {
                 ));
             }
         }
+    }
+    for r in phrases::run_together(scene, &strokes) {
+        out.texts_run_together += 1;
+        out.note(format!(
+            "drawing '{}': “{}” and “{}” read as one phrase, {:.1} mm apart at ({:.1}, {:.1}) mm",
+            r.group, r.first, r.second, r.gap, r.at.x, r.at.y
+        ));
     }
     out.longest_leader_mm = longest_leader(scene).map(|mm| (mm * 10.0).round() / 10.0);
     out

@@ -15,6 +15,7 @@ pub mod labels;
 pub mod layout;
 pub mod obstacles;
 pub mod path;
+pub mod phrases;
 pub mod place;
 pub mod plot;
 pub mod scale;

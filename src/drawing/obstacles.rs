@@ -31,6 +31,14 @@ pub enum Piece {
     /// A disc no label may enter (a roller: a number inside another roller's circle reads
     /// as that roller's).
     Disc(Point, f64),
+    /// The room beside a value's statement on its line, where a label would read as part
+    /// of it ([`crate::drawing::phrases::level_band`]): no label's box may enter it, a
+    /// leader may cross it (nothing is drawn there).
+    Band(Rect),
+    /// A value's statement's letters and their height, mm (its letters are a text box
+    /// too): a label level with it keeps off its line beside it, as far as the smaller's
+    /// height needs ([`Obstacles::statement_meets`]); nothing else sees it.
+    Statement(Rect, f64),
 }
 
 /// The side of the text boxes' grid's cells, mm: they are few and a leader's walk through
@@ -134,7 +142,9 @@ impl Obstacles {
         for (k, (p, _)) in pieces.iter().enumerate() {
             match *p {
                 Piece::Segment(a, b) => strokes.push((grid::Shape::Segment(a, b), Stroke { id: id(k), a, b })),
-                Piece::TextBox(_) | Piece::Disc(..) => boxes.push((grid::Shape::Box(bounds(p)), id(k))),
+                Piece::TextBox(_) | Piece::Disc(..) | Piece::Band(_) | Piece::Statement(..) => {
+                    boxes.push((grid::Shape::Box(bounds(p)), id(k)))
+                }
             }
         }
         Obstacles {
@@ -182,7 +192,7 @@ impl Obstacles {
         self.extent = Some(self.extent.map_or(b, |e| e.union(b)));
         match piece {
             Piece::Segment(a, b) => self.strokes.insert_segment(a, b, Stroke { id, a, b }),
-            Piece::TextBox(_) | Piece::Disc(..) => self.boxes.insert_box(b, id),
+            Piece::TextBox(_) | Piece::Disc(..) | Piece::Band(_) | Piece::Statement(..) => self.boxes.insert_box(b, id),
         }
     }
 
@@ -211,7 +221,8 @@ impl Obstacles {
         for (p, _) in self.near(r) {
             match *p {
                 Piece::Segment(a, b) => strokes += usize::from(segment_meets_rect(a, b, r)),
-                Piece::TextBox(t) => area += t.intersect(r).area().max(0.0),
+                Piece::TextBox(t) | Piece::Band(t) => area += t.intersect(r).area().max(0.0),
+                Piece::Statement(..) => {}
                 Piece::Disc(c, rad) => strokes += usize::from(disc_meets_rect(c, rad, r)),
             }
         }
@@ -268,7 +279,8 @@ impl Obstacles {
     fn clear_after(&self, r: Rect, slot: Option<&AtomicU32>) -> bool {
         let meets = |p: &Piece| match *p {
             Piece::Segment(a, b) => segment_meets_rect(a, b, r),
-            Piece::TextBox(t) => t.intersect(r).area() > 0.0,
+            Piece::TextBox(t) | Piece::Band(t) => t.intersect(r).area() > 0.0,
+            Piece::Statement(..) => false,
             Piece::Disc(c, rad) => disc_meets_rect(c, rad, r),
         };
         if slot.is_some_and(|s| self.hinted(s, |p, q| segment_meets_rect(p, q, r))) {
@@ -357,6 +369,23 @@ impl Obstacles {
         })
     }
 
+    /// Whether a text box (not a line) meeting the box `r` is one `blocks` accepts.
+    pub fn text_box_meets(&self, r: Rect, blocks: impl Fn(Rect) -> bool) -> bool {
+        self.boxes.any_in_box(
+            r,
+            |id| matches!(self.pieces[id as usize].0, Piece::TextBox(t) if t.intersect(r).area() > 0.0 && blocks(t)),
+        )
+    }
+
+    /// Whether a statement's letters (with their height) meeting the box `r` are ones
+    /// `blocks` accepts.
+    pub fn statement_meets(&self, r: Rect, blocks: impl Fn(Rect, f64) -> bool) -> bool {
+        self.boxes.any_in_box(
+            r,
+            |id| matches!(self.pieces[id as usize].0, Piece::Statement(s, h) if s.intersect(r).area() > 0.0 && blocks(s, h)),
+        )
+    }
+
     /// Whether the segment `a`–`b` crosses any text box.
     pub fn segment_crosses_text(&self, a: Point, b: Point) -> bool {
         let clear = |t: Rect| t.inflate(LEADER_CLEAR, LEADER_CLEAR);
@@ -433,6 +462,7 @@ fn bounds(p: &Piece) -> Rect {
     match *p {
         Piece::Segment(a, b) => Rect::from_points(a, b),
         Piece::TextBox(r) => r.inflate(LEADER_CLEAR, LEADER_CLEAR),
+        Piece::Band(r) | Piece::Statement(r, _) => r,
         Piece::Disc(c, r) => Rect::from_center_size(c, (2.0 * r, 2.0 * r)),
     }
 }

@@ -14,6 +14,8 @@ pub mod notes;
 pub mod scaffold;
 pub mod words;
 
+/// The layout measure's faults as `results.json` names them (a clean sheet has none).
+pub use crate::drawing::layout::FAULTS as LAYOUT_FAULTS;
 use crate::drawing::scene::Scene;
 use crate::drawing::text::TooLong;
 use crate::lever::analysis::AnalysisError;

@@ -138,14 +138,7 @@ pub fn check_layout(name: &str, scene: &Scene) {
     // The sheet's own measurement, held at zero: no text crossed by a line, no two texts
     // overlapping, nothing outside its region.
     let l = layout::measure(scene);
-    assert!(
-        l.is_clean(),
-        "{name}: {} crossed, {} overlaps, {} outside: {:#?}",
-        l.texts_crossed,
-        l.text_overlaps,
-        l.outside_region,
-        l.problems
-    );
+    assert!(l.is_clean(), "{name}: {:?} of {:?}: {:#?}", l.faults(), layout::FAULTS, l.problems);
 }
 
 /// Every run of every text of a scene (a symbol, its subscript and its tail each on its own),
@@ -191,7 +184,7 @@ pub fn path_points(
 /// The layout measure's faults in a sheet's `results.layout`: each non-zero count of texts
 /// crossed, texts overlapping and items outside their region, named.
 pub fn layout_faults(layout: &serde_json::Value) -> Vec<String> {
-    ["texts_crossed", "text_overlaps", "outside_region"]
+    tmm_sheets::drawing::layout::FAULTS
         .iter()
         .filter(|k| layout[**k] != 0)
         .map(|k| format!("{k} {}", layout[*k]))

@@ -3,6 +3,7 @@
 
 use super::{CLEAR, Request};
 use crate::drawing::obstacles::Obstacles;
+use crate::drawing::phrases;
 use crate::num::math::Norm;
 use kurbo::{Point, Rect};
 
@@ -57,6 +58,10 @@ pub(super) struct Candidate {
     /// Its direction from its anchor (an index of the turns tried): the box's test asks
     /// first the line that last met a box in that direction.
     pub(super) dir: u8,
+    /// How far a text level with it keeps off ([`Request::apart`]), mm.
+    pub(super) apart: f64,
+    /// Its lettering height, mm.
+    pub(super) h: f64,
 }
 
 /// A leader shorter than this leaves its label beside its point, seen or lost in a line,
@@ -93,10 +98,36 @@ impl Candidate {
         o.level_stroke_along(self.r, ALONG_CLEAR, self.anchor)
     }
 
-    /// The box is clear and its leader crosses no text (it may cross lines).
+    /// The box is clear, its leader crosses no text (it may cross lines), and it reads
+    /// apart from the texts on its line ([`Candidate::stands_apart`]).
     pub(super) fn box_is_free(&self, o: &Obstacles) -> bool {
         o.is_clear_in(self.r.inflate(CLEAR, CLEAR), usize::from(self.dir))
             && self.leader.is_none_or(|(a, b)| !o.segment_crosses_text(a, b))
+            && self.stands_apart(o)
+    }
+
+    /// Whether no text of `o` level with it runs into it: none beside it if it states a
+    /// value ([`Request::apart`]), no statement beside it if not.
+    pub(super) fn stands_apart(&self, o: &Obstacles) -> bool {
+        (self.apart == 0.0 || !o.text_box_meets(phrases::level_band(self.r, self.apart), |t| self.runs_into(t)))
+            && !o.statement_meets(phrases::level_band(self.r, phrases::APART * self.h), |s, h| {
+                self.runs_into_statement(s, h)
+            })
+    }
+
+    /// Whether a statement's letters `s`, `h` high, level with it stand nearer than
+    /// [`phrases::APART`] of the smaller's height.
+    fn runs_into_statement(&self, s: Rect, h: f64) -> bool {
+        let gap = (s.x0 - self.r.x1).max(self.r.x0 - s.x1);
+        gap < phrases::APART * h.min(self.h)
+    }
+
+    /// Whether the text box `t` level with it stands nearer than [`phrases::APART`] of the
+    /// smaller's height (a box's height its text's at most: a smaller name may stand nearer a
+    /// statement than a text of its own size).
+    fn runs_into(&self, t: Rect) -> bool {
+        let gap = (t.x0 - self.r.x1).max(self.r.x0 - t.x1);
+        gap < phrases::APART * t.height().min(self.apart / phrases::APART)
     }
 }
 
@@ -115,6 +146,8 @@ pub(super) fn least_bad(cands: &[Candidate], layers: [&Obstacles; 2], req: &Requ
             cost: 0.0,
             breaks: false,
             dir: 0,
+            apart: req.apart,
+            h: req.h,
         }
     };
     cands

@@ -23,7 +23,9 @@ impl Labels {
     pub(super) fn pieces(&self, i: usize, c: &Candidate) -> impl Iterator<Item = Piece> {
         let gap = if self.requests[i].rank >= NUMBERS_RANK { LABEL_GAP } else { 0.0 };
         let leader = self.requests[i].drawn_leader(c).map(|(a, b)| Piece::Segment(a, b));
-        std::iter::once(Piece::TextBox(c.r.inflate(gap, 0.0))).chain(leader)
+        // A statement keeps the labels placed after it off its line beside it.
+        let statement = (c.apart > 0.0).then_some(Piece::Statement(c.r, c.h));
+        std::iter::once(Piece::TextBox(c.r.inflate(gap, 0.0))).chain(statement).chain(leader)
     }
 
     /// The labels of `placed` that `keep` accepts, as obstacles.

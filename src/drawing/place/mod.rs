@@ -13,9 +13,11 @@
 //! may be beside the neighbouring side, and read as its name. The geometry sits in an R-tree ([`super::obstacles`]).
 
 use super::obstacles::{Obstacles, Piece};
-use super::scene::{Anchor, Group, MOST_BROKEN, THIN};
+use super::phrases;
+use super::scene::{Anchor, Group, THIN};
 use super::text::{LabelText, SLANT, SUB};
 use crate::num::math::Norm;
+use breakable::{LONG_LEADER, on_breakable};
 use candidate::{Candidate, TOUCH, Verdict, least_bad};
 use kurbo::{Point, Rect, Vec2};
 use lined::unlined;
@@ -23,6 +25,7 @@ pub use request::Placed;
 use request::Request;
 use spots::Spots;
 
+mod breakable;
 mod candidate;
 mod crossings;
 mod lined;
@@ -213,7 +216,9 @@ impl Labels {
         // The drawing without its breakable lines, where it has any: the same pieces but
         // theirs, taken from `drawn` rather than flattened again.
         let mut hard = (!g.breakable.is_empty()).then(|| drawn.without(|k| g.breakable.binary_search(&k).is_ok()));
-        for &piece in &self.keep_out {
+        // A value's statement already written keeps a label off its line beside it.
+        let bands = statements(g, reach);
+        for &piece in self.keep_out.iter().chain(&bands) {
             drawn.add(piece, usize::MAX);
             if let Some(h) = hard.as_mut() {
                 h.add(piece, usize::MAX);
@@ -329,7 +334,16 @@ impl Labels {
     ) -> Vec<(Candidate, bool)> {
         let drawn = layers.drawn;
         let mut placed = Obstacles::empty_over(drawn.extent().map_or(bounds, |e| e.union(bounds)));
-        let none = Candidate { r: Rect::ZERO, anchor: Point::ZERO, leader: None, cost: 0.0, breaks: false, dir: 0 };
+        let none = Candidate {
+            r: Rect::ZERO,
+            anchor: Point::ZERO,
+            leader: None,
+            cost: 0.0,
+            breaks: false,
+            dir: 0,
+            apart: 0.0,
+            h: 0.0,
+        };
         let mut out = vec![(none, false); self.requests.len()];
         for &i in order {
             let s = &mut spots[i];
@@ -391,6 +405,17 @@ impl Labels {
     }
 }
 
+/// The level statements of `g` within `reach`, which a label keeps off its line beside
+/// ([`Candidate::box_is_free`]).
+fn statements(g: &Group, reach: Rect) -> Vec<Piece> {
+    let level = g.texts().filter(|t| t.rotate == 0.0 && phrases::states_value(&t.plain()));
+    level
+        .map(|t| (t.core_box(), t.h))
+        .filter(|(b, _)| b.intersect(reach).area() > 0.0)
+        .map(|(b, h)| Piece::Statement(b, h))
+        .collect()
+}
+
 /// The drawing as the labels see it: everything, and without its breakable lines (none
 /// when it has none).
 #[derive(Clone, Copy)]
@@ -399,35 +424,8 @@ struct Layers<'a> {
     hard: Option<&'a Obstacles>,
 }
 
-/// A label whose first free spot is on a leader this long or longer, mm, stands beside its
-/// point on breakable lines if it can ([`on_breakable`]): a pivot's "O" hung 20–35 mm off
-/// the fan of its crank's twelve positions.
-const LONG_LEADER: f64 = 8.0;
 /// How many of a label's cheapest spots are looked at for one beside its point.
 pub(super) const NEAR_SPOTS: usize = 6 * DIRECTIONS;
-
-/// A label's cheapest spot near its own anchor (beside it, or on a leader shorter than
-/// [`LONG_LEADER`] that crosses no text) that only breakable lines of the drawing cross, at
-/// most [`MOST_BROKEN`] of them, clear of everything else (`hard`) and of the labels
-/// `placed`; it is marked to interrupt them.
-fn on_breakable(
-    s: &mut Spots,
-    req: &Request,
-    (drawn, hard): (&Obstacles, &Obstacles),
-    placed: &Obstacles,
-) -> Option<Candidate> {
-    (0..NEAR_SPOTS).map_while(|k| s.get(k).map(|(c, _)| c.clone())).find_map(|mut c| {
-        let r = c.r.inflate(CLEAR, CLEAR);
-        let short = c.leader.is_none_or(|(a, b)| (b - a).norm() < LONG_LEADER && !hard.segment_crosses_text(a, b));
-        let fits = short
-            && c.anchor == req.anchor
-            && hard.is_clear(r)
-            && c.box_is_free(placed)
-            && drawn.items_meeting(r) <= MOST_BROKEN;
-        c.breaks = true;
-        fits.then_some(c)
-    })
-}
 
 /// The first of a label's spots that `fits` and that `prefer` accepts, looked for up to
 /// `lookahead` spots past the first that fits; none where there is none.

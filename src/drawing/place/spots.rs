@@ -192,7 +192,8 @@ impl Around {
         // none: the answers are the same).
         const _: () = assert!(DIRECTIONS <= crate::drawing::obstacles::SLOTS && DIRECTIONS <= 256);
         let dir = k as u8;
-        Some(Candidate { r, anchor: self.anchor, leader, cost: spot_cost(self.extra, di, k), breaks: false, dir })
+        let cost = spot_cost(self.extra, di, k);
+        Some(Candidate { r, anchor: self.anchor, leader, cost, breaks: false, dir, apart: req.apart, h: req.h })
     }
 }
 

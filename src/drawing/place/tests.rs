@@ -360,3 +360,28 @@ fn an_arrows_name_stands_nearer_its_own_arrow_than_its_twin() {
     }
     assert_clean(g);
 }
+
+/// A value's statement set on the line of another text, a word's space from it, reads as
+/// one phrase with it ("φ₁ = 150,0° 1" at a load diagram's axis, "α_п = 40° 2" beside a
+/// nomogram's point): a label stating a value keeps `APART` heights off a text level with
+/// it, and any label keeps as far off a statement already drawn. Each label's first spot is
+/// free of lines and texts but 3 mm from the other text, and the measure counts the pair.
+#[test]
+fn a_statement_and_a_text_on_its_line_stand_apart() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let fixed = |text: &str| Text::new(Point::new(52.5, 51.3), text, 3.5, Anchor::Start);
+    // The statement is the label, the text drawn; then the other way round.
+    let cases = [
+        ("1", LabelText::new("φ", "1").with_tail(" = 150,0°"), Vec2::new(-1.0, 0.0)),
+        ("H = 100,0 mm", LabelText::new("ε", "4"), Vec2::new(-1.0, 0.0)),
+    ];
+    for (drawn, label, pref) in cases {
+        let mut g = Group::new("g", region);
+        g.text(fixed(drawn));
+        let mut labels = Labels::new();
+        labels.add(Point::new(50.0, 50.0), pref, label.clone(), 3.5);
+        assert_eq!(labels.place(&mut g, region), vec![true]);
+        let l = layout::measure(&layout::tests::scene(g.items));
+        assert!(l.is_clean(), "{label:?} beside “{drawn}”: {:?}", l.problems);
+    }
+}

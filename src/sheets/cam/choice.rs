@@ -44,7 +44,7 @@ pub(super) fn kept(ctx: &Context, mut usual: CamBuild, rest: impl Iterator<Item 
 /// measure are kept in the build's composition; where the title block refuses the sheet's
 /// texts (then `finish` refuses it too), its drawings alone are measured.
 fn measured(ctx: &Context, b: &mut CamBuild) -> (usize, f64) {
-    let faults = |l: &Layout| l.texts_crossed + l.text_overlaps + l.outside_region;
+    let faults = |l: &Layout| l.faults().iter().sum::<usize>();
     match scaffold::scene(ctx, KIND, &b.composition) {
         Ok(scene) => {
             let (layout, share) = scaffold::measure_with_share(&scene, &b.composition);

@@ -6,7 +6,8 @@
 //! rods' lines; the detail gives them the room a teacher would.
 
 use super::{JOINT_R, MechanismView, SENSE_R, mu_l_text, sense_arrow, split_name};
-use crate::drawing::obstacles::Obstacles;
+use crate::drawing::obstacles::{Obstacles, Piece};
+use crate::drawing::phrases;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, MAIN, THIN};
@@ -146,7 +147,11 @@ impl MechanismView<'_> {
         // Where the box with its full margin is not free, the box with the margin the
         // numbers and letters need at least, before a coarser scale.
         let tight = DetailPlace { size: sized(self.m, d.mu, self.words, TIGHT_MARGIN), ..*d };
-        let drawn = Obstacles::of_items_within(&g.items, g.region);
+        let mut drawn = Obstacles::of_items_within(&g.items, g.region);
+        // Its title beside a value's statement would read on as part of it ("W = … = 1 Z").
+        for band in phrases::statement_bands(g.texts(), SCALE_H, 0.0) {
+            drawn.add(Piece::Band(band), usize::MAX);
+        }
         [Some(*d), Some(tight), smaller]
             .into_iter()
             .flatten()

@@ -1,0 +1,153 @@
+//! Texts that read as one phrase: two level texts of one size on one baseline, the second
+//! starting about a word's space after the first ends, with no line between them. A teacher
+//! read «S5 H = 288,6 mm» (a point's name beside a dimension's value) and «P_и3 G3 = 4,415 N»
+//! as one phrase each; neither text crosses a line or the other, so the overlap and crossing
+//! measures pass them.
+
+use super::obstacles::Obstacles;
+use super::scene::{Scene, Text};
+use kurbo::Rect;
+
+/// Texts closer than this many lettering heights, end to start, read as one phrase: a word
+/// space of the sheet's font is about 0.35 of the height, and two texts are read apart only
+/// with a clear gap of about two letters.
+pub const APART: f64 = 1.2;
+/// Baselines closer than this share of the height are one line.
+const ONE_LINE: f64 = 0.4;
+/// Heights within this ratio are one size (a subscript is 0.7 of its symbol).
+const ONE_SIZE: f64 = 1.5;
+
+/// Two texts that run together: their groups' ids, their plain texts and the gap between
+/// them, mm.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunTogether {
+    pub group: String,
+    pub first: String,
+    pub second: String,
+    pub gap: f64,
+    pub at: kurbo::Point,
+}
+
+/// Every pair of level texts of `scene` that run together, `strokes` the sheet's drawn lines
+/// (a line between two texts parts them: a table's cell border).
+pub fn run_together(scene: &Scene, strokes: &Obstacles) -> Vec<RunTogether> {
+    let mut texts: Vec<(&str, &Text, Rect)> = scene
+        .groups
+        .iter()
+        .flat_map(|g| g.texts().map(move |t| (g.id.as_str(), t, t.core_box())))
+        .filter(|(_, t, _)| t.rotate == 0.0 && !t.plain().trim().is_empty())
+        .collect();
+    // By baseline: a text's partners on its line are a short run of its neighbours (a
+    // sheet has a thousand texts, and the measure runs for every sheet built).
+    texts.sort_by(|a, b| a.1.at.y.total_cmp(&b.1.at.y));
+    let mut out = Vec::new();
+    for (k, (ga, a, ra)) in texts.iter().enumerate() {
+        let reach = ONE_LINE * a.h;
+        let from = texts.partition_point(|t| t.1.at.y < a.at.y - reach);
+        for (j, (_, b, rb)) in texts.iter().enumerate().skip(from) {
+            if b.at.y > a.at.y + reach {
+                break;
+            }
+            let h = a.h.min(b.h);
+            if j == k || a.h.max(b.h) > ONE_SIZE * h || (a.at.y - b.at.y).abs() > ONE_LINE * h {
+                continue;
+            }
+            let gap = rb.x0 - ra.x1;
+            if rb.x0 <= ra.x0 || gap >= APART * h || gap < -0.5 * h {
+                continue;
+            }
+            if continues(a, b) || !(is_statement(a) || is_statement(b)) {
+                continue;
+            }
+            let between = Rect::new(ra.x1.min(rb.x0), ra.y0.max(rb.y0), ra.x1.max(rb.x0), ra.y1.min(rb.y1));
+            if between.width() > 0.05 && strokes.segment_meets(between) {
+                continue;
+            }
+            out.push(RunTogether { group: (*ga).to_string(), first: a.plain(), second: b.plain(), gap, at: a.at });
+        }
+    }
+    // In the sheet's reading order, whatever the sort left of equal baselines.
+    out.sort_by(|p, q| (p.at.y, p.at.x).partial_cmp(&(q.at.y, q.at.x)).unwrap_or(std::cmp::Ordering::Equal));
+    out
+}
+
+/// Whether `b` written after `a` is meant as one phrase: punctuation says so (a sum's
+/// "+ G_2", a list's "…;", an opened bracket).
+fn continues(a: &Text, b: &Text) -> bool {
+    let (end, start) = (a.plain(), b.plain());
+    let end = end.trim_end();
+    let start = start.trim_start();
+    end.ends_with([';', ',', '(', ':', '=', '+', '−', '-', '·'])
+        || start.starts_with(['+', '−', '-', '=', '(', ')', ',', ';', '·', '/'])
+}
+
+/// Whether `t` states a value ("H = 288,6 mm"): a name beside it reads as the value's.
+fn is_statement(t: &Text) -> bool {
+    states_value(&t.plain())
+}
+
+/// Whether `text` states a value: a name, " = ", a value.
+pub fn states_value(text: &str) -> bool {
+    text.contains(" = ")
+}
+
+/// The bands beside the level statements among `texts` that another text, of lettering
+/// `h` high or higher, keeps clear of ([`level_band`]; two texts run together within
+/// [`APART`] of the smaller's height), for a box tested `clear` larger.
+pub fn statement_bands<'a>(texts: impl Iterator<Item = &'a Text>, h: f64, clear: f64) -> impl Iterator<Item = Rect> {
+    let statements = texts.filter(|t| t.rotate == 0.0 && states_value(&t.plain()));
+    statements.map(move |t| level_band(t.core_box(), APART * t.h.min(h) - clear))
+}
+
+/// The room beside a text of lettering height `h` on its line that another keeps clear of,
+/// where either states a value ([`run_together`] counts the pairs that do not), mm: the
+/// band of the letters' middle half, `apart` wider on either side (a text above or below
+/// on another line does not meet it).
+pub fn level_band(letters: Rect, apart: f64) -> Rect {
+    let quarter = letters.height() / 4.0;
+    Rect::new(letters.x0 - apart, letters.y0 + quarter, letters.x1 + apart, letters.y1 - quarter)
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::drawing::layout;
+    use crate::drawing::scene::{Anchor, Item, MAIN, Text};
+    use kurbo::Point;
+
+    /// How many pairs run together in a scene of `texts` and the lines `lines`.
+    fn counted(texts: &[Text], lines: &[(Point, Point)]) -> usize {
+        let mut items: Vec<Item> = texts.iter().cloned().map(Item::Text).collect();
+        let mut g = crate::drawing::scene::Group::new("g", kurbo::Rect::new(0.0, 0.0, 100.0, 100.0));
+        for &(a, b) in lines {
+            g.line(a, b, MAIN);
+        }
+        items.extend(g.items);
+        layout::measure(&layout::tests::scene(items)).texts_run_together
+    }
+
+    fn at(x: f64, y: f64, text: &str, h: f64) -> Text {
+        Text::new(Point::new(x, y), text, h, Anchor::Start)
+    }
+
+    /// A name 2 mm after a statement on its baseline runs into it; 6 mm after, on another
+    /// line, across a drawn line, or continuing it with punctuation, it does not; a name
+    /// of 5 mm lettering beside a 3.5 mm statement still does (a teacher read «S5 H =
+    /// 288,6 mm» as one phrase).
+    #[test]
+    fn a_name_a_words_space_from_a_statement_runs_into_it() {
+        let statement = at(10.0, 50.0, "H = 288,6 mm", 3.5);
+        let end = statement.core_box().x1;
+        let name = |gap: f64, dy: f64, h: f64| at(end + gap, 50.0 + dy, "S", h);
+        assert_eq!(counted(&[statement.clone(), name(2.0, 0.0, 3.5)], &[]), 1);
+        assert_eq!(counted(&[name(-30.0 - end, 0.0, 3.5), statement.clone()], &[]), 0, "far before it");
+        assert_eq!(counted(&[statement.clone(), name(2.0, 0.0, 5.0)], &[]), 1, "a larger name");
+        assert_eq!(counted(&[statement.clone(), name(6.0, 0.0, 3.5)], &[]), 0, "6 mm apart");
+        assert_eq!(counted(&[statement.clone(), name(2.0, 4.0, 3.5)], &[]), 0, "on the next line");
+        let wall = (Point::new(end + 1.0, 40.0), Point::new(end + 1.0, 60.0));
+        assert_eq!(counted(&[statement.clone(), name(2.0, 0.0, 3.5)], &[wall]), 0, "a cell's border between");
+        let sum = at(end + 1.5, 50.0, "+ G", 3.5);
+        assert_eq!(counted(&[statement.clone(), sum], &[]), 0, "a sum goes on");
+        let names = [at(10.0, 50.0, "b", 3.5), at(13.0, 50.0, "a", 3.5)];
+        assert_eq!(counted(&names, &[]), 0, "two points' names state no value");
+    }
+}
