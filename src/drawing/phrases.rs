@@ -31,20 +31,21 @@ pub struct RunTogether {
 /// Every pair of level texts of `scene` that run together, `strokes` the sheet's drawn lines
 /// (a line between two texts parts them: a table's cell border).
 pub fn run_together(scene: &Scene, strokes: &Obstacles) -> Vec<RunTogether> {
-    let mut texts: Vec<(&str, &Text, Rect)> = scene
+    // Each level text with its group, its letters' box and its words, found once.
+    let mut texts: Vec<(&str, &Text, Rect, String)> = scene
         .groups
         .iter()
-        .flat_map(|g| g.texts().map(move |t| (g.id.as_str(), t, t.core_box())))
-        .filter(|(_, t, _)| t.rotate == 0.0 && !t.plain().trim().is_empty())
+        .flat_map(|g| g.texts().filter(|t| t.rotate == 0.0).map(move |t| (g.id.as_str(), t, t.core_box(), t.plain())))
+        .filter(|(.., words)| !words.trim().is_empty())
         .collect();
     // By baseline: a text's partners on its line are a short run of its neighbours (a
     // sheet has a thousand texts, and the measure runs for every sheet built).
     texts.sort_by(|a, b| a.1.at.y.total_cmp(&b.1.at.y));
     let mut out = Vec::new();
-    for (k, (ga, a, ra)) in texts.iter().enumerate() {
+    for (k, (ga, a, ra, wa)) in texts.iter().enumerate() {
         let reach = ONE_LINE * a.h;
         let from = texts.partition_point(|t| t.1.at.y < a.at.y - reach);
-        for (j, (_, b, rb)) in texts.iter().enumerate().skip(from) {
+        for (j, (_, b, rb, wb)) in texts.iter().enumerate().skip(from) {
             if b.at.y > a.at.y + reach {
                 break;
             }
@@ -56,14 +57,14 @@ pub fn run_together(scene: &Scene, strokes: &Obstacles) -> Vec<RunTogether> {
             if rb.x0 <= ra.x0 || gap >= APART * h || gap < -0.5 * h {
                 continue;
             }
-            if continues(a, b) || !(is_statement(a) || is_statement(b)) {
+            if continues(wa, wb) || !(states_value(wa) || states_value(wb)) {
                 continue;
             }
             let between = Rect::new(ra.x1.min(rb.x0), ra.y0.max(rb.y0), ra.x1.max(rb.x0), ra.y1.min(rb.y1));
             if between.width() > 0.05 && strokes.segment_meets(between) {
                 continue;
             }
-            out.push(RunTogether { group: (*ga).to_string(), first: a.plain(), second: b.plain(), gap, at: a.at });
+            out.push(RunTogether { group: (*ga).to_string(), first: wa.clone(), second: wb.clone(), gap, at: a.at });
         }
     }
     // In the sheet's reading order, whatever the sort left of equal baselines.
@@ -73,30 +74,28 @@ pub fn run_together(scene: &Scene, strokes: &Obstacles) -> Vec<RunTogether> {
 
 /// Whether `b` written after `a` is meant as one phrase: punctuation says so (a sum's
 /// "+ G_2", a list's "…;", an opened bracket).
-fn continues(a: &Text, b: &Text) -> bool {
-    let (end, start) = (a.plain(), b.plain());
-    let end = end.trim_end();
-    let start = start.trim_start();
+fn continues(a: &str, b: &str) -> bool {
+    let (end, start) = (a.trim_end(), b.trim_start());
     end.ends_with([';', ',', '(', ':', '=', '+', '−', '-', '·'])
         || start.starts_with(['+', '−', '-', '=', '(', ')', ',', ';', '·', '/'])
 }
 
-/// Whether `t` states a value ("H = 288,6 mm"): a name beside it reads as the value's.
-fn is_statement(t: &Text) -> bool {
-    states_value(&t.plain())
-}
-
-/// Whether `text` states a value: a name, " = ", a value.
+/// Whether `text` states a value ("H = 288,6 mm": a name, " = ", a value): a name beside
+/// it reads as the value's.
 pub fn states_value(text: &str) -> bool {
     text.contains(" = ")
 }
 
+/// The level texts among `texts` that state a value: those a text on their line keeps off.
+pub fn level_statements<'a>(texts: impl Iterator<Item = &'a Text>) -> impl Iterator<Item = &'a Text> {
+    texts.filter(|t| t.rotate == 0.0 && states_value(&t.plain()))
+}
+
 /// The bands beside the level statements among `texts` that another text, of lettering
 /// `h` high or higher, keeps clear of ([`level_band`]; two texts run together within
-/// [`APART`] of the smaller's height), for a box tested `clear` larger.
-pub fn statement_bands<'a>(texts: impl Iterator<Item = &'a Text>, h: f64, clear: f64) -> impl Iterator<Item = Rect> {
-    let statements = texts.filter(|t| t.rotate == 0.0 && states_value(&t.plain()));
-    statements.map(move |t| level_band(t.core_box(), APART * t.h.min(h) - clear))
+/// [`APART`] of the smaller's height).
+pub fn statement_bands<'a>(texts: impl Iterator<Item = &'a Text>, h: f64) -> impl Iterator<Item = Rect> {
+    level_statements(texts).map(move |t| level_band(t.core_box(), APART * t.h.min(h)))
 }
 
 /// The room beside a text of lettering height `h` on its line that another keeps clear of,

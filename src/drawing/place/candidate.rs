@@ -58,8 +58,8 @@ pub(super) struct Candidate {
     /// Its direction from its anchor (an index of the turns tried): the box's test asks
     /// first the line that last met a box in that direction.
     pub(super) dir: u8,
-    /// How far a text level with it keeps off ([`Request::apart`]), mm.
-    pub(super) apart: f64,
+    /// Its label states a value ([`Request::states_value`]).
+    pub(super) states_value: bool,
     /// Its lettering height, mm.
     pub(super) h: f64,
 }
@@ -107,27 +107,20 @@ impl Candidate {
     }
 
     /// Whether no text of `o` level with it runs into it: none beside it if it states a
-    /// value ([`Request::apart`]), no statement beside it if not.
+    /// value ([`Request::states_value`]), no statement beside it if not. A text box's height
+    /// stands for its lettering's (at most: a smaller name may stand nearer).
     pub(super) fn stands_apart(&self, o: &Obstacles) -> bool {
-        (self.apart == 0.0 || !o.text_box_meets(phrases::level_band(self.r, self.apart), |t| self.runs_into(t)))
-            && !o.statement_meets(phrases::level_band(self.r, phrases::APART * self.h), |s, h| {
-                self.runs_into_statement(s, h)
-            })
+        let band = phrases::level_band(self.r, phrases::APART * self.h);
+        let statement_beside = o.statement_meets(band, |s, h| self.runs_into(s, h));
+        let text_beside = || o.text_box_meets(band, |t| self.runs_into(t, t.height()));
+        !(statement_beside || self.states_value && text_beside())
     }
 
-    /// Whether a statement's letters `s`, `h` high, level with it stand nearer than
-    /// [`phrases::APART`] of the smaller's height.
-    fn runs_into_statement(&self, s: Rect, h: f64) -> bool {
-        let gap = (s.x0 - self.r.x1).max(self.r.x0 - s.x1);
-        gap < phrases::APART * h.min(self.h)
-    }
-
-    /// Whether the text box `t` level with it stands nearer than [`phrases::APART`] of the
-    /// smaller's height (a box's height its text's at most: a smaller name may stand nearer a
-    /// statement than a text of its own size).
-    fn runs_into(&self, t: Rect) -> bool {
+    /// Whether letters `t`, `h` high, level with it stand nearer than [`phrases::APART`]
+    /// of the smaller's height.
+    fn runs_into(&self, t: Rect, h: f64) -> bool {
         let gap = (t.x0 - self.r.x1).max(self.r.x0 - t.x1);
-        gap < phrases::APART * t.height().min(self.apart / phrases::APART)
+        gap < phrases::APART * h.min(self.h)
     }
 }
 
@@ -146,7 +139,7 @@ pub(super) fn least_bad(cands: &[Candidate], layers: [&Obstacles; 2], req: &Requ
             cost: 0.0,
             breaks: false,
             dir: 0,
-            apart: req.apart,
+            states_value: req.states_value,
             h: req.h,
         }
     };

@@ -24,7 +24,7 @@ impl Labels {
         let gap = if self.requests[i].rank >= NUMBERS_RANK { LABEL_GAP } else { 0.0 };
         let leader = self.requests[i].drawn_leader(c).map(|(a, b)| Piece::Segment(a, b));
         // A statement keeps the labels placed after it off its line beside it.
-        let statement = (c.apart > 0.0).then_some(Piece::Statement(c.r, c.h));
+        let statement = c.states_value.then_some(Piece::Statement(c.r, c.h));
         std::iter::once(Piece::TextBox(c.r.inflate(gap, 0.0))).chain(statement).chain(leader)
     }
 

@@ -341,7 +341,7 @@ impl Labels {
             cost: 0.0,
             breaks: false,
             dir: 0,
-            apart: 0.0,
+            states_value: false,
             h: 0.0,
         };
         let mut out = vec![(none, false); self.requests.len()];
@@ -408,8 +408,7 @@ impl Labels {
 /// The level statements of `g` within `reach`, which a label keeps off its line beside
 /// ([`Candidate::box_is_free`]).
 fn statements(g: &Group, reach: Rect) -> Vec<Piece> {
-    let level = g.texts().filter(|t| t.rotate == 0.0 && phrases::states_value(&t.plain()));
-    level
+    phrases::level_statements(g.texts())
         .map(|t| (t.core_box(), t.h))
         .filter(|(b, _)| b.intersect(reach).area() > 0.0)
         .map(|(b, h)| Piece::Statement(b, h))

@@ -6,12 +6,6 @@ use crate::drawing::phrases;
 use crate::drawing::text::LabelText;
 use kurbo::{Point, Vec2};
 
-/// [`Request::apart`] of `label` at lettering height `h`.
-fn statement_apart(label: &LabelText, h: f64) -> f64 {
-    let text = format!("{}{}{}", label.main, label.sub, label.tail);
-    if phrases::states_value(&text) { phrases::APART * h } else { 0.0 }
-}
-
 /// Where a label went: whether its spot is clean, its leader's length (0: none), mm, and
 /// its rank.
 #[derive(Debug, Clone, Copy)]
@@ -44,16 +38,15 @@ pub(super) struct Request {
     /// The segment the label names (a polygon's side): a spot nearer another named segment
     /// than this one reads as that one's name, and is taken only when no other is free.
     pub(super) side: Option<(Point, Point)>,
-    /// How far a text on its line keeps from it, mm: a value's statement ("φ₁ = 150,0°")
-    /// with a name or a number beside it reads as one phrase ([`phrases::run_together`]);
-    /// other labels 0.
-    pub(super) apart: f64,
+    /// It states a value ("φ₁ = 150,0°"): a name or a number beside it on its line reads
+    /// as part of it ([`phrases::run_together`]).
+    pub(super) states_value: bool,
 }
 
 impl Request {
     /// A one-line label of rank 0 at one anchor.
     pub(super) fn new(anchor: Point, pref: Vec2, label: LabelText, h: f64) -> Request {
-        let apart = statement_apart(&label, h);
+        let states_value = phrases::states_value(&format!("{}{}{}", label.main, label.sub, label.tail));
         Request {
             anchor,
             pref,
@@ -65,7 +58,7 @@ impl Request {
             rank: 0,
             names_line: false,
             side: None,
-            apart,
+            states_value,
         }
     }
 

@@ -193,7 +193,16 @@ impl Around {
         const _: () = assert!(DIRECTIONS <= crate::drawing::obstacles::SLOTS && DIRECTIONS <= 256);
         let dir = k as u8;
         let cost = spot_cost(self.extra, di, k);
-        Some(Candidate { r, anchor: self.anchor, leader, cost, breaks: false, dir, apart: req.apart, h: req.h })
+        Some(Candidate {
+            r,
+            anchor: self.anchor,
+            leader,
+            cost,
+            breaks: false,
+            dir,
+            states_value: req.states_value,
+            h: req.h,
+        })
     }
 }
 

@@ -149,7 +149,7 @@ impl MechanismView<'_> {
         let tight = DetailPlace { size: sized(self.m, d.mu, self.words, TIGHT_MARGIN), ..*d };
         let mut drawn = Obstacles::of_items_within(&g.items, g.region);
         // Its title beside a value's statement would read on as part of it ("W = … = 1 Z").
-        for band in phrases::statement_bands(g.texts(), SCALE_H, 0.0) {
+        for band in phrases::statement_bands(g.texts(), SCALE_H) {
             drawn.add(Piece::Band(band), usize::MAX);
         }
         [Some(*d), Some(tight), smaller]
