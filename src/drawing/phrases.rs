@@ -10,8 +10,9 @@ use kurbo::Rect;
 
 /// Texts closer than this many lettering heights, end to start, read as one phrase: a word
 /// space of the sheet's font is about 0.35 of the height, and two texts are read apart only
-/// with a clear gap of about two letters.
-pub const APART: f64 = 1.2;
+/// with a clear gap of about three letters (at 1.2, «φ₁ = 150,0°  1», 3 mm apart in 2.5 mm
+/// lettering, still read as one).
+pub const APART: f64 = 2.0;
 /// Baselines closer than this share of the height are one line.
 const ONE_LINE: f64 = 0.4;
 /// Heights within this ratio are one size (a subscript is 0.7 of its symbol).
@@ -57,7 +58,10 @@ pub fn run_together(scene: &Scene, strokes: &Obstacles) -> Vec<RunTogether> {
             if rb.x0 <= ra.x0 || gap >= APART * h || gap < -0.5 * h {
                 continue;
             }
-            if continues(wa, wb) || !(states_value(wa) || states_value(wb)) {
+            // Two statements side by side read as a list («λ₁ = −15,09  λ₂ = −4,669»), a
+            // statement and a name as the name's value — unless brackets close the first
+            // («K (μ_P = 4 N/mm)  T (…»: two details' captions).
+            if continues(wa, wb) || closed(wa) || states_value(wa) == states_value(wb) {
                 continue;
             }
             let between = Rect::new(ra.x1.min(rb.x0), ra.y0.max(rb.y0), ra.x1.max(rb.x0), ra.y1.min(rb.y1));
@@ -78,6 +82,11 @@ fn continues(a: &str, b: &str) -> bool {
     let (end, start) = (a.trim_end(), b.trim_start());
     end.ends_with([';', ',', '(', ':', '=', '+', '−', '-', '·'])
         || start.starts_with(['+', '−', '-', '=', '(', ')', ',', ';', '·', '/'])
+}
+
+/// Whether `text` ends by closing a bracket: what it states stays inside it.
+fn closed(text: &str) -> bool {
+    text.trim_end().ends_with(')')
 }
 
 /// Whether `text` states a value ("H = 288,6 mm": a name, " = ", a value): a name beside
@@ -128,10 +137,11 @@ mod tests {
         Text::new(Point::new(x, y), text, h, Anchor::Start)
     }
 
-    /// A name 2 mm after a statement on its baseline runs into it; 6 mm after, on another
-    /// line, across a drawn line, or continuing it with punctuation, it does not; a name
-    /// of 5 mm lettering beside a 3.5 mm statement still does (a teacher read «S5 H =
-    /// 288,6 mm» as one phrase).
+    /// A name 2 or 5 mm after a statement on its baseline runs into it; 8 mm after, on
+    /// another line, across a drawn line, or continuing it with punctuation, it does not; a
+    /// name of 5 mm lettering beside a 3.5 mm statement still does (a teacher read «S5 H =
+    /// 288,6 mm» as one phrase, and «φ₁ = 150,0° 1» at 3 mm in 2.5 mm lettering); two
+    /// statements side by side read as a list.
     #[test]
     fn a_name_a_words_space_from_a_statement_runs_into_it() {
         let statement = at(10.0, 50.0, "H = 288,6 mm", 3.5);
@@ -140,7 +150,8 @@ mod tests {
         assert_eq!(counted(&[statement.clone(), name(2.0, 0.0, 3.5)], &[]), 1);
         assert_eq!(counted(&[name(-30.0 - end, 0.0, 3.5), statement.clone()], &[]), 0, "far before it");
         assert_eq!(counted(&[statement.clone(), name(2.0, 0.0, 5.0)], &[]), 1, "a larger name");
-        assert_eq!(counted(&[statement.clone(), name(6.0, 0.0, 3.5)], &[]), 0, "6 mm apart");
+        assert_eq!(counted(&[statement.clone(), name(5.0, 0.0, 3.5)], &[]), 1, "5 mm apart");
+        assert_eq!(counted(&[statement.clone(), name(8.0, 0.0, 3.5)], &[]), 0, "8 mm apart");
         assert_eq!(counted(&[statement.clone(), name(2.0, 4.0, 3.5)], &[]), 0, "on the next line");
         let wall = (Point::new(end + 1.0, 40.0), Point::new(end + 1.0, 60.0));
         assert_eq!(counted(&[statement.clone(), name(2.0, 0.0, 3.5)], &[wall]), 0, "a cell's border between");
@@ -148,5 +159,10 @@ mod tests {
         assert_eq!(counted(&[statement.clone(), sum], &[]), 0, "a sum goes on");
         let names = [at(10.0, 50.0, "b", 3.5), at(13.0, 50.0, "a", 3.5)];
         assert_eq!(counted(&names, &[]), 0, "two points' names state no value");
+        let list = at(end + 2.0, 50.0, "λ₂ = −4,669", 3.5);
+        assert_eq!(counted(&[statement.clone(), list], &[]), 0, "two statements are a list");
+        let caption = at(10.0, 50.0, "K (μ = 4 N/mm)", 3.5);
+        let next = at(caption.core_box().x1 + 3.0, 50.0, "T (", 3.5);
+        assert_eq!(counted(&[caption, next], &[]), 0, "a bracket closes a caption");
     }
 }

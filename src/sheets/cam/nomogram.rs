@@ -114,15 +114,22 @@ pub fn draw(
     }
     let limiting = draw_limiting_lines(g, labels, view, at.extent, d, words);
     draw_zone_boundary(g, labels, (view, memo), at.extent, d, &limiting);
-    // In two lines, at its last space: in one, 25–35 mm long, it found no room inside the
-    // wedge under O and hung 36 mm off on a leader (translating-offset-auto).
-    let zone = words.sheet.zone();
-    let lines: Vec<String> = match zone.rsplit_once(' ') {
-        Some((a, b)) => vec![a.to_string(), b.to_string()],
-        None => vec![zone.to_string()],
-    };
+    let lines = two_lines(words.sheet.zone());
     labels.add_text_lines_ranked(view.p(zone_anchor(d, at.extent, at.mu)), Vec2::ZERO, &lines, 2.5, 3);
     draw_centre(g, labels, (view, at.extent, at.area), d, words);
+}
+
+/// `text` in two lines of about one length, split at the space that makes the longer
+/// shortest: in one line, 25–35 mm long, the zone's name found no room inside the wedge under
+/// O and hung 36 mm off on a leader (translating-offset-auto); split at its last space,
+/// «ruxsat etilgan» still 20 mm wide, its one spot in reach stood a word's space after
+/// «e = 1,596 mm».
+fn two_lines(text: &str) -> Vec<String> {
+    let longer = |at: usize| text[..at].chars().count().max(text[at + 1..].chars().count());
+    match text.match_indices(' ').map(|(at, _)| at).min_by_key(|&at| longer(at)) {
+        Some(at) => vec![text[..at].to_string(), text[at + 1..].to_string()],
+        None => vec![text.to_string()],
+    }
 }
 
 /// Where the zone's name points: into the zone from O, 0.4 r_min deep, but inside the
@@ -390,5 +397,20 @@ mod tests {
             assert!(inner > 1e-3, "a stroke {a:?}–{b:?} outside the zone: margins {sa}, {sb}");
             assert!(edge > -2e-3, "a stroke {a:?}–{b:?} starts outside the boundary: margin {edge}");
         }
+    }
+}
+
+#[cfg(test)]
+mod zone_name_tests {
+    use super::two_lines;
+
+    /// The zone's name splits where its longer line is shortest, in every language's
+    /// wording, and a word stays whole.
+    #[test]
+    fn the_zones_name_splits_into_two_lines_of_about_one_length() {
+        assert_eq!(two_lines("ruxsat etilgan soha"), ["ruxsat", "etilgan soha"]);
+        assert_eq!(two_lines("допустимая зона"), ["допустимая", "зона"]);
+        assert_eq!(two_lines("admissible zone"), ["admissible", "zone"]);
+        assert_eq!(two_lines("zone"), ["zone"]);
     }
 }

@@ -12,7 +12,8 @@ const SLIDER_NUMBER_MM: f64 = 5.0;
 /// Where a slider's numbers leave a label no clean spot, its positions nearer than this on
 /// paper are one point to the reader and share a number ("0 ≡ 1 ≡ 9"), as the cam's do:
 /// round a dead centre the slider barely moves, and eight numbers within 5 mm left one no
-/// spot off the guide's lines. Only then: "1 ≡ 7" reads as positions that coincide.
+/// spot off the guide's lines. Only then, or where three or more stand that near
+/// ([`lingers`]): "1 ≡ 7" reads as positions that coincide.
 pub(in crate::sheets::lever) const SLIDER_SAME_MM: f64 = 1.5;
 
 impl MechanismView<'_> {
@@ -29,12 +30,20 @@ impl MechanismView<'_> {
             let n_world = dir.turn_90();
             let up = self.view.dir(n_world * -self.hatch_side(joint, through, n_world));
             let at = |group: &Vec<usize>| self.view.p(self.k.positions[group[0]].state.points[d].p);
-            let numbers = groups.iter().map(|g| (at(g), self.joined_label(g)));
-            for (point, label) in merged(numbers, self.slider_same_mm) {
+            let numbers: Vec<(Point, String)> = groups.iter().map(|g| (at(g), self.joined_label(g))).collect();
+            let same = if lingers(&numbers) { SLIDER_SAME_MM } else { self.slider_same_mm };
+            for (point, label) in merged(numbers.into_iter(), same) {
                 labels.add_text_ranked(point, up, &label, 2.5, 2);
             }
         }
     }
+}
+
+/// Whether three or more of the numbers stand within [`SLIDER_SAME_MM`] of one: a slider
+/// lingering at its dead centre, whose numbers share a label even where each would find a
+/// spot (six numbers on leaders into one 1.5 mm cluster name no point a reader can tell).
+fn lingers(numbers: &[(Point, String)]) -> bool {
+    numbers.iter().any(|(p, _)| numbers.iter().filter(|(q, _)| (*q - *p).norm() < SLIDER_SAME_MM).count() >= 3)
 }
 
 /// The numbers at their points, each merged into the first earlier one nearer than `same`
