@@ -199,3 +199,41 @@ fn a_smaller_profile_is_not_taken_for_a_cells_worth_of_ink() {
         assert!((mu - want).abs() < 1e-12, "{name} {lang:?}: the profile at {mu} m/mm, not {scale}");
     }
 }
+
+/// A knife's profile name is not set along the follower's arm: knife-rocker's «рабочий
+/// (центровой) профиль» stood level 1 mm over the rocker drawn from A₀ to position 0, on a
+/// leader to the profile's point beside the knife's tip, and read as the arm's name. No
+/// level line longer than 20 mm runs within 3 mm over or under the name's letters, in any
+/// language.
+#[test]
+fn a_knifes_profile_name_does_not_lie_along_the_followers_arm() {
+    use tmm_sheets::drawing::path::Seg;
+    use tmm_sheets::drawing::scene::Item;
+    let text =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/cams/knife-rocker.yaml")).unwrap();
+    let names = ["amaliy (nazariy) profil", "рабочий (центровой) профиль", "working (pitch) profile"];
+    for lang in Language::ALL {
+        let mut p = pipeline::load(&text).unwrap();
+        p.info.language = lang;
+        let scene = pipeline::build(&p, &[3]).unwrap().remove(0).output.scene;
+        let items = || scene.groups.iter().flat_map(|g| g.items.iter());
+        let name = items()
+            .find_map(|i| match i {
+                Item::Text(t) if names.contains(&t.plain().as_str()) => Some(t.core_box()),
+                _ => None,
+            })
+            .unwrap_or_else(|| panic!("{lang:?}: the profile's name is drawn"));
+        for item in items() {
+            let Item::Path { path, .. } = item else { continue };
+            let mut from = path.start;
+            for seg in &path.segs {
+                let Seg::Line(to) = *seg else { continue };
+                let level = (to.y - from.y).abs() < 0.2 && (to.x - from.x).abs() > 20.0;
+                let beside = from.x.min(to.x) < name.x1 && from.x.max(to.x) > name.x0;
+                let near = (from.y - name.y1).abs() < 3.0 || (from.y - name.y0).abs() < 3.0;
+                assert!(!(level && beside && near), "{lang:?}: a level line at y = {:.1} along {name:?}", from.y);
+                from = to;
+            }
+        }
+    }
+}

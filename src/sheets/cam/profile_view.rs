@@ -187,8 +187,10 @@ fn pitch_name_spots(view: View, d: &Design, phis: &[f64]) -> Vec<(Point, Vec2)> 
         let p = view.p(pr.pitch(phi).p);
         (p, p - view.origin)
     };
-    // Clear of every roller's circle by a line's clearance and a little.
-    let reach = view.len(d.roller) + ROLLER_CLEAR_MM;
+    // Clear of every roller's circle by a line's clearance and a little; a knife's tip by
+    // more: the name set level at position 0's tip lay along the rocker's arm drawn to it
+    // and read as the arm's (knife-rocker).
+    let reach = (view.len(d.roller) + ROLLER_CLEAR_MM).max(if d.roller == 0.0 { KNIFE_TIP_CLEAR_MM } else { 0.0 });
     let centres: Vec<Point> = phis.iter().map(|&k| view.p(pr.pitch(k).p)).collect();
     let clear = |phi: f64| {
         let p = view.p(pr.pitch(phi).p);
@@ -217,6 +219,9 @@ const PHASE_POINTS: [f64; 3] = [0.5, 0.25, 0.75];
 
 /// How far outside a roller's circle the pitch profile's name may be set on it, mm.
 const ROLLER_CLEAR_MM: f64 = 1.5;
+/// How far from a knife's tip at a numbered position the profile's name may be set on the
+/// profile, mm: about two lettering heights, off the follower's line drawn to the tip.
+const KNIFE_TIP_CLEAR_MM: f64 = 6.0;
 /// The step along the near dwell looking for the pitch profile clear of the rollers, rad.
 const NEAR_DWELL_STEP: f64 = 0.5 * std::f64::consts::PI / 180.0;
 
