@@ -8,7 +8,7 @@
 import { chromium } from "playwright-core";
 import { execFileSync } from "node:child_process";
 import { createServer } from "node:http";
-import { mkdtempSync, readFileSync, readdirSync, writeFileSync, existsSync } from "node:fs";
+import { mkdtempSync, readFileSync, readdirSync, writeFileSync, existsSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, extname, resolve, dirname } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -55,6 +55,8 @@ function cliFiles(args) {
   const ms = performance.now() - start;
   const files = new Map();
   for (const name of readdirSync(dir).filter((n) => !n.startsWith("."))) files.set(name, readFileSync(join(dir, name)));
+  // Read into memory: the folder goes (every run left two behind in the temporary directory).
+  rmSync(dir, { recursive: true, force: true });
   return { files, ms };
 }
 
@@ -67,6 +69,7 @@ function unzip(bytes) {
   execFileSync("python3", ["-c", "import sys, zipfile; z = zipfile.ZipFile(sys.argv[1]); assert z.testzip() is None; z.extractall(sys.argv[2]); print('\\n'.join(z.namelist()))", zip, out]);
   const files = new Map();
   for (const name of readdirSync(out)) files.set(name, readFileSync(join(out, name)));
+  rmSync(dir, { recursive: true, force: true });
   return files;
 }
 
