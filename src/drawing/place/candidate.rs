@@ -45,7 +45,7 @@ impl Verdict {
     }
 }
 
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub(super) struct Candidate {
     pub(super) r: Rect,
     /// The anchor it labels (a request may have several).
@@ -132,16 +132,8 @@ pub(super) fn least_bad(cands: &[Candidate], layers: [&Obstacles; 2], req: &Requ
         let (w, up, down) = req.size();
         let x0 = req.anchor.x.min(bounds.x1 - w).max(bounds.x0);
         let y1 = req.anchor.y.max(bounds.y0 + up + down).min(bounds.y1);
-        Candidate {
-            r: Rect::new(x0, y1 - up - down, x0 + w, y1),
-            anchor: req.anchor,
-            leader: None,
-            cost: 0.0,
-            breaks: false,
-            dir: 0,
-            states_value: req.states_value,
-            h: req.h,
-        }
+        let r = Rect::new(x0, y1 - up - down, x0 + w, y1);
+        Candidate { r, anchor: req.anchor, states_value: req.states_value, h: req.h, ..Candidate::default() }
     };
     cands
         .iter()

@@ -334,17 +334,7 @@ impl Labels {
     ) -> Vec<(Candidate, bool)> {
         let drawn = layers.drawn;
         let mut placed = Obstacles::empty_over(drawn.extent().map_or(bounds, |e| e.union(bounds)));
-        let none = Candidate {
-            r: Rect::ZERO,
-            anchor: Point::ZERO,
-            leader: None,
-            cost: 0.0,
-            breaks: false,
-            dir: 0,
-            states_value: false,
-            h: 0.0,
-        };
-        let mut out = vec![(none, false); self.requests.len()];
+        let mut out = vec![(Candidate::default(), false); self.requests.len()];
         for &i in order {
             let s = &mut spots[i];
             let first = |s: &mut Spots, free: &dyn Fn(&Candidate, &mut Verdict) -> bool| {
