@@ -189,6 +189,15 @@ impl Labels {
     }
 
     /// A plain text label of a rank (see [`Labels::add_ranked`]).
+    /// How many labels were added (the next one's index in what placing returns).
+    pub fn len(&self) -> usize {
+        self.requests.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.requests.is_empty()
+    }
+
     pub fn add_text_ranked(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64, rank: u8) {
         self.add_ranked(anchor, pref, LabelText::new(text, ""), h, rank);
     }
@@ -353,6 +362,10 @@ impl Labels {
                     .or_else(|| prefer_seen.then(|| seen_spot(s, &box_free, drawn)).flatten())
                     .or_else(|| first(s, &free))
                     .or_else(|| first(s, &box_free));
+                // Across lines, but not across another label's leader where a spot little
+                // further allows: two leaders crossing read as each other's («3 ≡ 9» over
+                // «4 ≡ 8»'s on a slider).
+                let best = best.map(|c| crossings::off_leaders(s, &box_free, (drawn, &placed), c));
                 // On a long leader: a nearer spot across a line or two, if it weighs less.
                 match best {
                     Some(c) if c.leader_at_least(crossings::LONG) => {

@@ -112,28 +112,50 @@ pub(super) fn mechanism_group(
         }
         DetailAt::Inside => (d, None),
     });
-    let draw_as = |detail: Option<(DetailPlace, Option<Rect>)>, slider_same_mm: f64| {
+    let draw_as = |detail: Option<(DetailPlace, Option<Rect>)>, slider_same_mm: f64, number_short_strokes: bool| {
         let mut group = Group::new("mechanism", region);
         mechanism_header(&mut group, region, mu_l, k, words);
         trajectory_legend(&mut group, region, words);
         let mut labels = Labels::new();
         let kulisa = &inp.project.kulisa_lengths;
         let view = View::new(origin, mu_l);
-        let detail_mu_l =
-            MechanismView { m, k, view, kulisa, words, detail, slider_same_mm }.draw(&mut group, &mut labels);
+        let short_stroke_numbers = Default::default();
+        let mv = MechanismView {
+            m,
+            k,
+            view,
+            kulisa,
+            words,
+            detail,
+            slider_same_mm,
+            number_short_strokes,
+            short_stroke_numbers,
+        };
+        let detail_mu_l = mv.draw(&mut group, &mut labels);
         let placed = labels.place_measured(&mut group, region.inflate(-0.5, -0.5));
         let farthest = placed.iter().filter(|p| p.rank >= NUMBERS_RANK).map(|p| p.leader).fold(0.0, f64::max);
         let unplaced = placed.iter().filter(|p| !p.clean).count();
-        (MechanismDrawn { group, region, mu_l, detail_mu_l }, farthest, unplaced)
+        let short_far =
+            mv.short_stroke_numbers.borrow().iter().any(|&i| !placed[i].clean || placed[i].leader > SHORT_STROKE_FAR);
+        (MechanismDrawn { group, region, mu_l, detail_mu_l }, farthest, unplaced, short_far)
+    };
+    // A short stroke's numbers are kept where each stands near its point, clean.
+    let numbered = |detail, slider_same_mm| {
+        let (drawn, farthest, unplaced, short_far) = draw_as(detail, slider_same_mm, true);
+        if !short_far {
+            return (drawn, farthest, unplaced);
+        }
+        let (drawn, farthest, unplaced, _) = draw_as(detail, slider_same_mm, false);
+        (drawn, farthest, unplaced)
     };
     // A slider's numbers that leave a label no clean spot share one where they stand within
     // SLIDER_SAME_MM, if that leaves fewer without.
     let draw = |detail| {
-        let (drawn, farthest, unplaced) = draw_as(detail, 0.0);
+        let (drawn, farthest, unplaced) = numbered(detail, 0.0);
         if unplaced == 0 || !m.steps.iter().any(|s| matches!(s, Step::Rrp { .. })) {
             return (drawn, farthest, unplaced);
         }
-        let (merged, nearest, left) = draw_as(detail, SLIDER_SAME_MM);
+        let (merged, nearest, left) = numbered(detail, SLIDER_SAME_MM);
         if left < unplaced { (merged, nearest, left) } else { (drawn, farthest, unplaced) }
     };
     let (drawn, farthest, unplaced) = draw(detail);
@@ -151,6 +173,11 @@ pub(super) fn mechanism_group(
     let better = (left_over, nearer) < (unplaced, farthest);
     if redrawn.detail_mu_l.is_some() && better { redrawn } else { drawn }
 }
+
+/// A short stroke's number this far off its point on a leader, mm, or with no clean spot,
+/// has the stroke drawn unnumbered: a six-bar's «11» hung 46 mm off across its crank's
+/// circle, where its rod's twelve positions fan over the guide.
+const SHORT_STROKE_FAR: f64 = 20.0;
 
 /// Whether the crank's pivot is left of the mechanism's middle (its detail goes that side).
 fn crank_on_left(m: &Mechanism, k: &Kinematics, world: Rect) -> bool {

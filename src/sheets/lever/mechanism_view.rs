@@ -7,8 +7,8 @@ use crate::drawing::fmt;
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::path::Path;
 use crate::drawing::place::Labels;
-use crate::drawing::scene::{AXIS, DASHED, Group, Item, MAIN, Pen, THIN};
-use crate::drawing::symbols::{clear_turn_arrow, dimension, frame_pivot, hatch, slider, turn_arrow_reach, value_along};
+use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, Pen, THIN};
+use crate::drawing::symbols::{clear_turn_arrow, frame_pivot, hatch, slider, turn_arrow_reach};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::analysis::{Kinematics, Position};
@@ -19,6 +19,7 @@ use kurbo::{CubicBez, Point, Rect, Vec2};
 
 mod crank_detail;
 mod slider_numbers;
+mod strokes;
 mod swing;
 pub(super) use crank_detail::{DETAIL_GAP, DetailAt, DetailPlace, detail_place};
 pub(super) use slider_numbers::SLIDER_SAME_MM;
@@ -31,22 +32,6 @@ const JOINT_R: f64 = 1.0;
 /// line is an axis in GOST 2.303), the paths' dashes cut on the scene
 /// ([`Group::dashed_curve`]) so that every renderer puts them in the same places.
 pub const TRAJECTORY: Pen = DASHED;
-/// A slider's stroke shorter than this on paper is not dimensioned: its arrows would hide it, mm.
-const STROKE_MIN_MM: f64 = 3.0;
-/// A slider's stroke to dimension: the rod's joint, the slider's point, the guide (a point and
-/// its direction), the extreme positions on paper and H, m.
-struct Stroke {
-    joint: PointId,
-    slider: PointId,
-    through: Vec2,
-    dir: Vec2,
-    ea: Point,
-    eb: Point,
-    length: f64,
-}
-
-/// Two strokes whose ends are this close on paper are one (mm).
-const STROKE_SAME_MM: f64 = 0.5;
 /// Positions whose every point is nearer than this on paper are one drawn position, mm:
 /// GOST 2.303's least distance between parallel lines (closer, two positions print as one
 /// thick line with two numbers).
@@ -99,6 +84,11 @@ pub struct MechanismView<'a> {
     pub detail: Option<(DetailPlace, Option<Rect>)>,
     /// A slider's positions this near on paper share one number, mm (0: each its own).
     pub slider_same_mm: f64,
+    /// Whether a stroke short of 5 mm for each position (its positions on one point counted
+    /// once) is numbered: it is tried, and drawn again without where a number hangs far.
+    pub number_short_strokes: bool,
+    /// The labels (by their order in `labels`) of the short strokes' numbers drawn.
+    pub short_stroke_numbers: std::cell::RefCell<Vec<usize>>,
 }
 
 impl MechanismView<'_> {
@@ -198,65 +188,6 @@ impl MechanismView<'_> {
             let (pa, pb) = (self.view.p(a) + off, self.view.p(b) + off);
             g.line(pa, pb, THIN);
             hatch(g, pa, pb, self.view.dir(n_world * side), 2.5);
-        }
-    }
-
-    /// Each slider's stroke H, dimensioned between its point's extreme positions: beyond the
-    /// guide's hatching, or on the rod's side, at the offset whose lines cross the fewest
-    /// drawn lines — a contour line (the thick position's rod) counting as ten — and stay in
-    /// the drawing's region. Drawn after the positions, so that it sees them.
-    ///
-    /// With two sliders each H is named by its slider's point (H_B, H_E); two strokes between
-    /// the same extreme points (two pistons on one line, cranks 180° apart) are one dimension.
-    fn strokes(&self, g: &mut Group, labels: &mut Labels) {
-        let mut strokes: Vec<Stroke> = Vec::new();
-        for st in &self.m.steps {
-            let Step::Rrp { p: joint, d: slider, through, dir, .. } = *st else { continue };
-            let (lo, hi) = self.travel(slider, through, dir);
-            let (ea, eb) = (self.view.p(through + dir * lo), self.view.p(through + dir * hi));
-            let near = |a: Point, b: Point| (a - b).norm() < STROKE_SAME_MM;
-            let repeated =
-                strokes.iter().any(|s| (near(s.ea, ea) && near(s.eb, eb)) || (near(s.ea, eb) && near(s.eb, ea)));
-            if (eb - ea).norm() >= STROKE_MIN_MM && !repeated {
-                strokes.push(Stroke { joint, slider, through, dir, ea, eb, length: hi - lo });
-            }
-        }
-        let named = strokes.len() > 1;
-        for Stroke { joint, slider, through, dir, ea, eb, length } in strokes {
-            let n_world = dir.turn_90();
-            let hatch_side = self.view.dir(n_world * self.hatch_side(joint, through, n_world));
-            let all = Obstacles::of_items(&g.items);
-            let contours =
-                Obstacles::of_items(g.items.iter().filter(|i| matches!(i, Item::Path { pen, .. } if *pen == MAIN)));
-            let inside = g.region.inflate(-5.0, -5.0);
-            // The dimension line and its extension lines, run `past` mm beyond it (as drawn,
-            // 2 mm: `dimension`; the cost and the fit count them to the dimension line).
-            let lines_past = |off: Vec2, past: f64| {
-                let ext = off + off / off.norm().max(tol::PAPER) * past;
-                [(ea + off, eb + off), (ea, ea + ext), (eb, eb + ext)]
-            };
-            let lines = |off: Vec2| lines_past(off, 0.0);
-            let cost = |off: Vec2| -> usize {
-                lines(off).iter().map(|&(a, b)| 10 * contours.hits_segment(a, b) + all.hits_segment(a, b)).sum()
-            };
-            let hatch_off = SLIDER.1 / 2.0 + 2.5 + 4.0;
-            let candidates =
-                [hatch_side * hatch_off, hatch_side * (hatch_off + 4.0), -hatch_side * 6.0, -hatch_side * 10.0];
-            let fits = |off: &Vec2| lines(*off).iter().all(|&(a, b)| inside.contains(a) && inside.contains(b));
-            // A line across a text (the trajectories' legend under a long stroke) only where
-            // every offset that fits crosses one: the cost counts lines alone.
-            let crosses_text = |off: &Vec2| lines_past(*off, 2.0).iter().any(|&(a, b)| all.segment_crosses_text(a, b));
-            let fitting = candidates.into_iter().filter(fits);
-            let Some(off) = fitting.min_by_key(|&off| (crosses_text(&off), cost(off))) else { continue };
-            let since = g.items.len();
-            let mid = dimension(g, ea, eb, off);
-            let (lang, c) = (self.words.lang, self.words.common);
-            let value = format!(" = {} {}", fmt::value(1e3 * length, lang), c.unit_mm());
-            let sub = if named { self.m.name(slider) } else { "" };
-            let label = LabelText::new("H", sub).with_tail(value);
-            if !value_along(g, (&all, since), &label, (ea + off, eb + off), 3.5, inside) {
-                labels.add(mid, off, label, 3.5);
-            }
         }
     }
 

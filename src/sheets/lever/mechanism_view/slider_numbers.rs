@@ -15,28 +15,57 @@ const SLIDER_NUMBER_MM: f64 = 5.0;
 /// spot off the guide's lines. Only then, or where three or more stand that near
 /// ([`lingers`]): "1 ≡ 7" reads as positions that coincide.
 pub(in crate::sheets::lever) const SLIDER_SAME_MM: f64 = 1.5;
+/// Positions nearer than this on paper are one point to the eye (the guide's line is 0.5 mm
+/// thick) and always share a number: a symmetric crank-slider's 1 and 11 stand on one point,
+/// and two numbers side by side on leaders into it («9 3») read as two positions.
+const SLIDER_ONE_POINT_MM: f64 = 0.5;
 
 impl MechanismView<'_> {
     /// Each slider's positions numbered on the side of the guide away from its hatching
-    /// (where the rod comes from) — when its stroke leaves each number room; crowded, they
-    /// would only hide the guide. `groups` are the runs of positions drawn as one.
+    /// (where the rod comes from) — when its stroke leaves each number room (those on one
+    /// point share one); crowded, they would only hide the guide. `groups` are the runs of positions drawn as one. A slider travelling
+    /// where one already numbered does (two pistons one behind the other, drawn on one
+    /// axis) is left unnumbered: two numbers at every point would name neither.
     pub(super) fn slider_numbers(&self, labels: &mut Labels, groups: &[Vec<usize>]) {
+        let mut numbered: Vec<(Point, Point)> = Vec::new();
         for st in &self.m.steps {
             let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
             let (lo, hi) = self.travel(d, through, dir);
-            if self.view.len(hi - lo) < SLIDER_NUMBER_MM * self.k.positions.len() as f64 {
+            let travel = (self.view.p(through + dir * lo), self.view.p(through + dir * hi));
+            if numbered.iter().any(|&other| shares_travel(travel, other)) {
+                continue;
+            }
+            let at = |group: &Vec<usize>| self.view.p(self.k.positions[group[0]].state.points[d].p);
+            let numbers: Vec<(Point, String)> = groups.iter().map(|g| (at(g), self.joined_label(g))).collect();
+            let same = if lingers(&numbers) { SLIDER_SAME_MM } else { self.slider_same_mm.max(SLIDER_ONE_POINT_MM) };
+            // Positions on one point need one number's room; short of room for each
+            // position, its numbers are tried (see `number_short_strokes`).
+            let apart = merged(numbers.iter().cloned(), SLIDER_ONE_POINT_MM).len();
+            let stroke = self.view.len(hi - lo);
+            let short = stroke < SLIDER_NUMBER_MM * self.k.positions.len() as f64;
+            if stroke < SLIDER_NUMBER_MM * apart as f64 || (short && !self.number_short_strokes) {
                 continue;
             }
             let n_world = dir.turn_90();
             let up = self.view.dir(n_world * -self.hatch_side(joint, through, n_world));
-            let at = |group: &Vec<usize>| self.view.p(self.k.positions[group[0]].state.points[d].p);
-            let numbers: Vec<(Point, String)> = groups.iter().map(|g| (at(g), self.joined_label(g))).collect();
-            let same = if lingers(&numbers) { SLIDER_SAME_MM } else { self.slider_same_mm };
-            for (point, label) in merged(numbers.into_iter(), same) {
+            for (point, label) in merged(numbers.iter().cloned(), same) {
+                if short {
+                    self.short_stroke_numbers.borrow_mut().push(labels.len());
+                }
                 labels.add_text_ranked(point, up, &label, 2.5, 2);
             }
+            numbered.push(travel);
         }
     }
+}
+
+/// Whether two travels on paper overlap on one line (within [`SLIDER_ONE_POINT_MM`]).
+fn shares_travel((a, b): (Point, Point), (c, d): (Point, Point)) -> bool {
+    let along = (b - a).unit();
+    let off = |p: Point| along.cross(p - a).abs();
+    let at = |p: Point| along.dot(p - a);
+    let (c_at, d_at) = (at(c).min(at(d)), at(c).max(at(d)));
+    off(c) < SLIDER_ONE_POINT_MM && off(d) < SLIDER_ONE_POINT_MM && c_at < (b - a).norm() && d_at > 0.0
 }
 
 /// Whether three or more of the numbers stand within [`SLIDER_SAME_MM`] of one: a slider
