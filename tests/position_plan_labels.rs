@@ -183,3 +183,30 @@ fn a_labels_leader_keeps_off_the_leaders_drawn_before() {
         }
     }
 }
+
+/// A slider's number a word's space before a point's letter on its line reads as one
+/// designation with it: the worked example's «0» stood 3 mm before «D» («0D», the guide's
+/// D₀). No position number of a fixture's mechanism drawing stands level within two of its
+/// heights of a taller text, in any language.
+#[test]
+fn a_position_number_keeps_off_a_points_letter_on_its_line() {
+    let number = |t: &str| !t.is_empty() && t.chars().all(|c| c.is_ascii_digit() || " ≡′".contains(c));
+    for name in fixture_names() {
+        for lang in Language::ALL {
+            let mut p = fixture(&name);
+            p.info.language = lang;
+            let Ok(mut built) = pipeline::build(&p, &[1]) else { continue };
+            let out = built.remove(0).output;
+            let Some(g) = out.scene.groups.iter().find(|g| g.id == "mechanism") else { continue };
+            let texts: Vec<_> = g.texts().filter(|t| t.rotate == 0.0).collect();
+            for n in texts.iter().filter(|t| number(&t.text)) {
+                for l in texts.iter().filter(|t| t.h > 1.5 * n.h) {
+                    let (a, b) = (n.core_box(), l.core_box());
+                    let gap = (b.x0 - a.x1).max(a.x0 - b.x1);
+                    let level = (n.at.y - l.at.y).abs() < 0.4 * n.h;
+                    assert!(!(level && gap < 2.0 * n.h), "{name} {lang:?}: «{}» {gap:.1} mm from «{}»", n.text, l.text);
+                }
+            }
+        }
+    }
+}

@@ -60,6 +60,8 @@ pub(super) struct Candidate {
     pub(super) dir: u8,
     /// Its label states a value ([`Request::states_value`]).
     pub(super) states_value: bool,
+    /// It keeps off taller texts on its line ([`Request::apart_from_taller`]).
+    pub(super) apart_from_taller: bool,
     /// Its lettering height, mm.
     pub(super) h: f64,
 }
@@ -67,6 +69,10 @@ pub(super) struct Candidate {
 /// A leader shorter than this leaves its label beside its point, seen or lost in a line,
 /// mm: a label further off in the open on a longer leader reads no better.
 const SEEN_SHORT: f64 = 8.0;
+
+/// A text box this many times as high as a label's is taller lettering (a point's 5 mm
+/// letter beside a 2.5 mm number).
+const TALLER: f64 = 1.5;
 
 /// A level line keeps this far over or under a label, mm (GOST 2.307 sets a value about
 /// 1 mm over its line): nearer, it reads as the label's over- or underline.
@@ -113,7 +119,9 @@ impl Candidate {
         let band = phrases::level_band(self.r, phrases::APART * self.h);
         let statement_beside = o.statement_meets(band, |s, h| self.runs_into(s, h));
         let text_beside = || o.text_box_meets(band, |t| self.runs_into(t, t.height()));
-        !(statement_beside || self.states_value && text_beside())
+        let taller = |t: Rect| t.height() > TALLER * self.r.height() && self.runs_into(t, t.height());
+        let taller_beside = || self.apart_from_taller && o.text_box_meets(band, taller);
+        !(statement_beside || self.states_value && text_beside() || taller_beside())
     }
 
     /// Whether letters `t`, `h` high, level with it stand nearer than [`phrases::APART`]

@@ -189,13 +189,16 @@ impl Labels {
     }
 
     /// A plain text label of a rank (see [`Labels::add_ranked`]).
-    /// How many labels were added (the next one's index in what placing returns).
-    pub fn len(&self) -> usize {
-        self.requests.len()
+    /// As [`Labels::add_text_ranked`], the text kept off taller texts on its line
+    /// ([`Request::apart_from_taller`]).
+    pub fn add_text_apart(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64, rank: u8) {
+        let req = Request::new(anchor, pref, LabelText::new(text, ""), h);
+        self.requests.push(Request { rank, apart_from_taller: true, ..req });
     }
 
-    pub fn is_empty(&self) -> bool {
-        self.requests.is_empty()
+    /// How many labels were added (the next one's index in what placing returns).
+    pub fn count(&self) -> usize {
+        self.requests.len()
     }
 
     pub fn add_text_ranked(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64, rank: u8) {

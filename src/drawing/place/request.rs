@@ -41,6 +41,10 @@ pub(super) struct Request {
     /// It states a value ("φ₁ = 150,0°"): a name or a number beside it on its line reads
     /// as part of it ([`phrases::run_together`]).
     pub(super) states_value: bool,
+    /// It keeps a statement's distance from taller texts on its line: a slider's number a
+    /// word's space before a point's letter reads as one designation with it («0 D»: the
+    /// guide's D₀).
+    pub(super) apart_from_taller: bool,
 }
 
 impl Request {
@@ -59,6 +63,7 @@ impl Request {
             names_line: false,
             side: None,
             states_value,
+            apart_from_taller: false,
         }
     }
 

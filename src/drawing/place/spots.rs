@@ -201,6 +201,7 @@ impl Around {
             breaks: false,
             dir,
             states_value: req.states_value,
+            apart_from_taller: req.apart_from_taller,
             h: req.h,
         })
     }

@@ -50,9 +50,9 @@ impl MechanismView<'_> {
             let up = self.view.dir(n_world * -self.hatch_side(joint, through, n_world));
             for (point, label) in merged(numbers.iter().cloned(), same) {
                 if short {
-                    self.short_stroke_numbers.borrow_mut().push(labels.len());
+                    self.short_stroke_numbers.borrow_mut().push(labels.count());
                 }
-                labels.add_text_ranked(point, up, &label, 2.5, 2);
+                labels.add_text_apart(point, up, &label, 2.5, 2);
             }
             numbered.push(travel);
         }
