@@ -189,8 +189,9 @@ impl Labels {
     }
 
     /// A plain text label of a rank (see [`Labels::add_ranked`]).
-    /// As [`Labels::add_text_ranked`], the text kept off taller texts on its line
-    /// ([`Request::apart_from_taller`]).
+    /// As [`Labels::add_text_ranked`], the text kept two of its heights off taller texts on
+    /// its line: a slider's number a word's space before a point's letter reads as one
+    /// designation with it («0 D»: the guide's D₀).
     pub fn add_text_apart(&mut self, anchor: Point, pref: Vec2, text: &str, h: f64, rank: u8) {
         let req = Request::new(anchor, pref, LabelText::new(text, ""), h);
         self.requests.push(Request { rank, apart_from_taller: true, ..req });
