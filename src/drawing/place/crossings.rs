@@ -44,7 +44,7 @@ pub(super) fn nearer_across(
 
 /// `c`, or where its leader crosses a leader of `placed`, the cheapest spot that `fits`
 /// whose leader crosses none and is seen (runs along no line of `drawn`), if it costs at
-/// most [`PER_CROSSING`] more and hangs at most [`FURTHER`] further off.
+/// most [`PER_CROSSING`] more and its leader is at most [`NEAR`] long.
 pub(super) fn off_leaders(
     s: &mut Spots,
     fits: &dyn Fn(&Candidate, &mut Verdict) -> bool,
@@ -55,22 +55,20 @@ pub(super) fn off_leaders(
     if !crosses(&c) {
         return c;
     }
-    let (bound, reach) = (c.cost + PER_CROSSING, (c.leader_length() + FURTHER).min(NEAR));
+    let bound = c.cost + PER_CROSSING;
     for k in 0.. {
         let Some((o, v)) = s.get(k) else { break };
         if o.cost > bound {
             break;
         }
-        if o.leader_length() <= reach && fits(o, v) && v.leader_seen(o, drawn) && !crosses(o) {
+        if o.leader_length() <= NEAR && fits(o, v) && v.leader_seen(o, drawn) && !crosses(o) {
             return o.clone();
         }
     }
     c
 }
 
-/// How much further off than a leader crossing another's a label may hang to cross none,
-/// mm: a slider's «11» went 100 mm up its guide.
-const FURTHER: f64 = 8.0;
 /// The longest leader a label moved off another's leader may hang on, mm: moved further, it
-/// took spots the labels after it needed, and one of a crank's numbers went 58 mm off.
+/// took spots the labels after it needed (a crank's number went 58 mm off, a slider's «11»
+/// 100 mm up its guide).
 const NEAR: f64 = 8.0;

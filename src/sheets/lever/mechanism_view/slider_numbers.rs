@@ -23,9 +23,10 @@ const SLIDER_ONE_POINT_MM: f64 = 0.5;
 impl MechanismView<'_> {
     /// Each slider's positions numbered on the side of the guide away from its hatching
     /// (where the rod comes from) — when its stroke leaves each number room (those on one
-    /// point share one); crowded, they would only hide the guide. `groups` are the runs of positions drawn as one. A slider travelling
-    /// where one already numbered does (two pistons one behind the other, drawn on one
-    /// axis) is left unnumbered: two numbers at every point would name neither.
+    /// point share one); crowded, they would only hide the guide. `groups` are the runs of
+    /// positions drawn as one. A slider travelling where one already numbered does (two
+    /// pistons one behind the other, drawn on one axis) is left unnumbered: two numbers at
+    /// every point would name neither.
     pub(super) fn slider_numbers(&self, labels: &mut Labels, groups: &[Vec<usize>]) {
         let mut numbered: Vec<(Point, Point)> = Vec::new();
         for st in &self.m.steps {
