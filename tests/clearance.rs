@@ -140,8 +140,9 @@ fn hidden_leaders(scene: &tmm_sheets::drawing::scene::Scene) -> (usize, Vec<Stri
 fn no_leader_runs_hidden_along_a_line_on_any_fixture() {
     let (leaders, hidden) = on_every_fixture(hidden_leaders);
     // 98 since labels crowded by the thin lines of many positions stand beside their points
-    // on those lines, interrupted for them, rather than off on leaders (over 100 before).
-    assert!(leaders > 80, "only {leaders} leaders");
+    // on those lines, interrupted for them, rather than off on leaders (over 100 before);
+    // 76 since sliders' numbers stand between their guide and their stroke's dimension line.
+    assert!(leaders > 60, "only {leaders} leaders");
     assert!(hidden.is_empty(), "{} of {leaders} leaders run along a line:\n{}", hidden.len(), hidden.join("\n"));
 }
 

@@ -5,6 +5,8 @@
 
 use super::{Candidate, Spots, Verdict};
 use crate::drawing::obstacles::Obstacles;
+use crate::num::math::segments_cross_strictly;
+use kurbo::Point;
 
 /// A leader this long or longer, mm, is weighed against nearer spots across lines.
 pub(super) const LONG: f64 = 20.0;
@@ -42,16 +44,17 @@ pub(super) fn nearer_across(
     best.map(|b| b.1)
 }
 
-/// `c`, or where its leader crosses a leader of `placed`, the cheapest spot that `fits`
-/// whose leader crosses none and is seen (runs along no line of `drawn`), if it costs at
+/// `c`, or where its leader crosses a leader of `placed` (or `crosses_wall`), the cheapest
+/// spot that `fits` whose leader crosses neither and is seen (runs along no line of `drawn`), if it costs at
 /// most [`PER_CROSSING`] more and its leader is at most [`NEAR`] long.
 pub(super) fn off_leaders(
     s: &mut Spots,
     fits: &dyn Fn(&Candidate, &mut Verdict) -> bool,
     (drawn, placed): (&Obstacles, &Obstacles),
+    crosses_wall: &dyn Fn(&Candidate) -> bool,
     c: Candidate,
 ) -> Candidate {
-    let crosses = |c: &Candidate| c.leader.is_some_and(|(a, b)| placed.segment_crosses_stroke(a, b));
+    let crosses = |c: &Candidate| crosses_wall(c) || c.leader.is_some_and(|(a, b)| placed.segment_crosses_stroke(a, b));
     if !crosses(&c) {
         return c;
     }
@@ -72,3 +75,11 @@ pub(super) fn off_leaders(
 /// took spots the labels after it needed (a crank's number went 58 mm off, a slider's «11»
 /// 100 mm up its guide).
 const NEAR: f64 = 8.0;
+
+/// Whether `c`'s leader, if any, crosses one of `walls` ([`super::Labels::keep_leaders_off`]).
+pub(super) fn crosses_walls(walls: &[(Point, Point)], c: &Candidate) -> bool {
+    let crosses = |(a, b): (Point, Point), &(c, d): &(Point, Point)| {
+        segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2())
+    };
+    c.leader.is_some_and(|l| walls.iter().any(|w| crosses(l, w)))
+}

@@ -23,6 +23,7 @@ use kurbo::{Point, Rect, Vec2};
 use lined::unlined;
 pub use request::Placed;
 use request::Request;
+use seen::{first_preferred, seen_spot};
 use spots::Spots;
 
 mod breakable;
@@ -31,6 +32,7 @@ mod crossings;
 mod lined;
 mod make_room;
 mod request;
+mod seen;
 mod sides;
 mod spots;
 
@@ -63,6 +65,9 @@ pub struct Labels {
     /// Room below the bounds (down to this y) for the labels anchored within the given
     /// distance of their bottom (see [`Labels::reach_below`]).
     below: Option<(f64, f64)>,
+    /// Lines a leader crosses only where no spot near enough avoids them, as another
+    /// label's leader ([`Labels::keep_leaders_off`]).
+    walls: Vec<(Point, Point)>,
 }
 
 /// The size of a label's box at lettering height `h` (slant and subscript included): width,
@@ -174,6 +179,12 @@ impl Labels {
     /// A box (paper mm) every label and leader keeps out of: room round a title.
     pub fn keep_clear(&mut self, r: Rect) {
         self.keep_out.push(Piece::TextBox(r));
+    }
+
+    /// A line (paper mm) that leaders keep off as they keep off each other's: a dimension
+    /// line, which a number's leader across reads as its value.
+    pub fn keep_leaders_off(&mut self, (a, b): (Point, Point)) {
+        self.walls.push((a, b));
     }
 
     /// Lets a label anchored within `near` mm of the bounds' bottom reach further down, to
@@ -369,7 +380,8 @@ impl Labels {
                 // Across lines, but not across another label's leader where a spot little
                 // further allows: two leaders crossing read as each other's («3 ≡ 9» over
                 // «4 ≡ 8»'s on a slider).
-                let best = best.map(|c| crossings::off_leaders(s, &box_free, (drawn, &placed), c));
+                let crosses = |c: &Candidate| crossings::crosses_walls(&self.walls, c);
+                let best = best.map(|c| crossings::off_leaders(s, &box_free, (drawn, &placed), &crosses, c));
                 // On a long leader: a nearer spot across a line or two, if it weighs less.
                 match best {
                     Some(c) if c.leader_at_least(crossings::LONG) => {
@@ -432,46 +444,6 @@ struct Layers<'a> {
 
 /// How many of a label's cheapest spots are looked at for one beside its point.
 pub(super) const NEAR_SPOTS: usize = 6 * DIRECTIONS;
-
-/// The first of a label's spots that `fits` and that `prefer` accepts, looked for up to
-/// `lookahead` spots past the first that fits; none where there is none.
-fn first_preferred(
-    s: &mut Spots,
-    fits: &dyn Fn(&Candidate, &mut Verdict) -> bool,
-    mut prefer: impl FnMut(&Candidate, &mut Verdict) -> bool,
-    lookahead: usize,
-) -> Option<Candidate> {
-    let mut last = usize::MAX;
-    for k in 0.. {
-        if k > last {
-            return None;
-        }
-        let (c, v) = s.get(k)?;
-        if !fits(c, v) {
-            continue;
-        }
-        if prefer(c, v) {
-            return Some(c.clone());
-        }
-        last = last.min(k + lookahead);
-    }
-    None
-}
-
-/// A label's first spot that `fits` (free, or free but for thin lines its leader crosses)
-/// whose leader, if any, runs along no line of the drawing, looked for up to
-/// [`SEEN_LOOKAHEAD`] spots past the first that fits: a leader along a line is lost in it
-/// and its label seems to name nothing (the compressors' crank centre "O" hung 30 mm down
-/// its own centre line, the one way out of the fan of position lines a leader crossed no
-/// line by). None where there is none: a leader crossing thin lines, seen, is tried before
-/// one lost in a line.
-fn seen_spot(s: &mut Spots, fits: &dyn Fn(&Candidate, &mut Verdict) -> bool, drawn: &Obstacles) -> Option<Candidate> {
-    first_preferred(s, fits, |c, v| v.leader_seen(c, drawn), SEEN_LOOKAHEAD)
-}
-
-/// How many spots past its first that fits a label looks for one whose leader is seen: two
-/// rings of directions.
-const SEEN_LOOKAHEAD: usize = 2 * DIRECTIONS;
 
 /// How many of a label's spots around its first anchor are free against the drawing alone
 /// (further anchors are a fallback, not a reason to place it later).

@@ -10,11 +10,12 @@ use super::mechanism_view::{
 };
 use crate::drawing::place::{Labels, NUMBERS_RANK};
 use crate::drawing::scale;
-use crate::drawing::scene::{Anchor, Group, Text};
+use crate::drawing::scene::{Anchor, Group, Item, Text};
 use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::analysis::Kinematics;
 use crate::lever::linkage::{Mechanism, Step};
+use crate::num::math::segments_cross_strictly;
 use kurbo::{Point, Rect};
 
 /// The mechanism's region at most, mm; it shrinks to the drawing at the chosen μ_l.
@@ -52,6 +53,36 @@ pub(super) struct MechanismDrawn {
     pub(super) mu_l: f64,
     /// The crank's detail's μ_l, m/mm, where it has one.
     pub(super) detail_mu_l: Option<f64>,
+}
+
+/// How a slider's positions are numbered (see [`MechanismView`]'s fields of those names).
+#[derive(Clone, Copy)]
+struct SliderNumbering {
+    short_strokes: bool,
+    beyond_hatching: bool,
+}
+
+/// One drawing of the mechanism, and how its labels stand: the longest number's leader,
+/// the labels without a clean spot, whether a short stroke's number is far or unclean, and
+/// how many leaders cross a stroke's dimension line.
+struct Attempt {
+    mech: MechanismDrawn,
+    farthest: f64,
+    unplaced: usize,
+    short_far: bool,
+    across: usize,
+}
+
+/// How many of `g`'s leaders cross one of `lines`.
+fn leaders_across(g: &Group, lines: &[(Point, Point)]) -> usize {
+    let leader = |&k: &usize| match &g.items[k] {
+        Item::Path { path, .. } => Some((path.start, path.end())),
+        _ => None,
+    };
+    let cross = |(a, b): (Point, Point), (c, d): &(Point, Point)| {
+        segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2())
+    };
+    g.leaders.iter().filter_map(leader).map(|l| lines.iter().filter(|d| cross(l, d)).count()).sum()
 }
 
 /// The mechanism's place: the largest GOST μ_l that fits its box, the region shrunk to the
@@ -112,14 +143,13 @@ pub(super) fn mechanism_group(
         }
         DetailAt::Inside => (d, None),
     });
-    let draw_as = |detail: Option<(DetailPlace, Option<Rect>)>, slider_same_mm: f64, number_short_strokes: bool| {
+    let draw_as = |detail: Option<(DetailPlace, Option<Rect>)>, slider_same_mm: f64, numbers: SliderNumbering| {
         let mut group = Group::new("mechanism", region);
         mechanism_header(&mut group, region, mu_l, k, words);
         trajectory_legend(&mut group, region, words);
         let mut labels = Labels::new();
         let kulisa = &inp.project.kulisa_lengths;
         let view = View::new(origin, mu_l);
-        let short_stroke_numbers = Default::default();
         let mv = MechanismView {
             m,
             k,
@@ -128,25 +158,38 @@ pub(super) fn mechanism_group(
             words,
             detail,
             slider_same_mm,
-            number_short_strokes,
-            short_stroke_numbers,
+            number_short_strokes: numbers.short_strokes,
+            numbers_beyond_hatching: numbers.beyond_hatching,
         };
-        let detail_mu_l = mv.draw(&mut group, &mut labels);
+        let drawn = mv.draw(&mut group, &mut labels);
         let placed = labels.place_measured(&mut group, region.inflate(-0.5, -0.5));
         let farthest = placed.iter().filter(|p| p.rank >= NUMBERS_RANK).map(|p| p.leader).fold(0.0, f64::max);
         let unplaced = placed.iter().filter(|p| !p.clean).count();
         let short_far =
-            mv.short_stroke_numbers.borrow().iter().any(|&i| !placed[i].clean || placed[i].leader > SHORT_STROKE_FAR);
-        (MechanismDrawn { group, region, mu_l, detail_mu_l }, farthest, unplaced, short_far)
+            drawn.short_stroke_numbers.iter().any(|&i| !placed[i].clean || placed[i].leader > SHORT_STROKE_FAR);
+        let across = leaders_across(&group, &drawn.dimension_lines);
+        let detail_mu_l = drawn.detail_mu_l;
+        let mech = MechanismDrawn { group, region, mu_l, detail_mu_l };
+        Attempt { mech, farthest, unplaced, short_far, across }
     };
-    // A short stroke's numbers are kept where each stands near its point, clean.
+    // A short stroke's numbers are kept where each stands near its point, clean; where a
+    // number crowded off its side crosses its stroke's dimension line beyond the hatching,
+    // the line is drawn again further off, leaving them room, if that leaves fewer across
+    // and no more labels without a clean spot.
     let numbered = |detail, slider_same_mm| {
-        let (drawn, farthest, unplaced, short_far) = draw_as(detail, slider_same_mm, true);
-        if !short_far {
-            return (drawn, farthest, unplaced);
+        let mut numbers = SliderNumbering { short_strokes: true, beyond_hatching: false };
+        let mut first = draw_as(detail, slider_same_mm, numbers);
+        if first.short_far {
+            numbers.short_strokes = false;
+            first = draw_as(detail, slider_same_mm, numbers);
         }
-        let (drawn, farthest, unplaced, _) = draw_as(detail, slider_same_mm, false);
-        (drawn, farthest, unplaced)
+        if first.across > 0 {
+            let roomy = draw_as(detail, slider_same_mm, SliderNumbering { beyond_hatching: true, ..numbers });
+            if roomy.unplaced <= first.unplaced && roomy.across < first.across {
+                first = roomy;
+            }
+        }
+        (first.mech, first.farthest, first.unplaced)
     };
     // A slider's numbers that leave a label no clean spot share one where they stand within
     // SLIDER_SAME_MM, if that leaves fewer without.

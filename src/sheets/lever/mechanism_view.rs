@@ -87,13 +87,24 @@ pub struct MechanismView<'a> {
     /// Whether a stroke short of 5 mm for each position (its positions on one point counted
     /// once) is numbered: it is tried, and drawn again without where a number hangs far.
     pub number_short_strokes: bool,
-    /// The labels (by their order in `labels`) of the short strokes' numbers drawn.
-    pub short_stroke_numbers: std::cell::RefCell<Vec<usize>>,
+    /// Whether a numbered slider's stroke dimensioned beyond its hatching leaves room for
+    /// numbers between them: tried where a number crowded off its side crossed the line.
+    pub numbers_beyond_hatching: bool,
+}
+
+/// What drawing the mechanism tells its caller.
+pub struct ViewDrawn {
+    /// The μ_l of the crank's detail, where one was drawn.
+    pub detail_mu_l: Option<f64>,
+    /// The labels (by their order in `labels`) of the short strokes' numbers.
+    pub short_stroke_numbers: Vec<usize>,
+    /// The strokes' dimension lines, paper mm.
+    pub dimension_lines: Vec<(Point, Point)>,
 }
 
 impl MechanismView<'_> {
-    /// Draws the mechanism; returns the μ_l of the crank's detail where one was drawn.
-    pub fn draw(&self, g: &mut Group, labels: &mut Labels) -> Option<f64> {
+    /// Draws the mechanism, its labels into `labels`.
+    pub fn draw(&self, g: &mut Group, labels: &mut Labels) -> ViewDrawn {
         self.crank_circle(g);
         for t in &self.k.trajectories {
             // World to paper is affine, so the pieces map exactly through their control points.
@@ -122,7 +133,7 @@ impl MechanismView<'_> {
                 frame_pivot(g, self.view.p(p), JOINT_R * 1.5);
             }
         }
-        self.strokes(g, labels);
+        let dimension_lines = self.strokes(g, labels);
         swing::swing(self, g, labels);
         // The other links' arrows before a free spot for the crank's detail is sought, so
         // that it keeps clear of them; ω₁ in the mechanism only if no detail has it.
@@ -143,9 +154,9 @@ impl MechanismView<'_> {
             }
         };
         let detailed = detail.is_some();
-        self.position_numbers(labels, detailed);
+        let short_stroke_numbers = self.position_numbers(labels, detailed);
         self.letters(labels, detailed);
-        detail.map(|d| d.0.mu)
+        ViewDrawn { detail_mu_l: detail.map(|d| d.0.mu), short_stroke_numbers, dimension_lines }
     }
 
     /// A slider's point `d` over the positions: its least and largest distance along its
@@ -305,8 +316,9 @@ impl MechanismView<'_> {
     }
 
     /// Position numbers beside the crank pin of every position, outward from the pivot
-    /// (in the crank's detail instead, when it has one).
-    fn position_numbers(&self, labels: &mut Labels, detailed: bool) {
+    /// (in the crank's detail instead, when it has one), and each slider's on its guide;
+    /// returns the short strokes' numbers' labels.
+    fn position_numbers(&self, labels: &mut Labels, detailed: bool) -> Vec<usize> {
         let crank = self.m.crank();
         let ends = |st: &State| (self.view.p(st.points[crank.pivot].p), self.view.p(st.points[crank.pin].p));
         let groups = self.coincident();
@@ -321,7 +333,7 @@ impl MechanismView<'_> {
                 labels.add_text_ranked(a, a - o, &self.joined_label(group), h, 2);
             }
         }
-        self.slider_numbers(labels, &groups);
+        self.slider_numbers(labels, &groups)
     }
 
     /// Letters of the assigned position's points, away from the mechanism's centre.

@@ -3,9 +3,9 @@
 use super::MechanismView;
 use crate::drawing::place::Labels;
 use crate::drawing::text::merged_labels;
-use crate::lever::linkage::Step;
+use crate::lever::linkage::{PointId, Step};
 use crate::num::math::Norm;
-use kurbo::Point;
+use kurbo::{Point, Vec2};
 
 /// The length of a slider's stroke each of its position numbers needs (2.5 mm lettering), mm.
 const SLIDER_NUMBER_MM: f64 = 5.0;
@@ -20,15 +20,41 @@ pub(in crate::sheets::lever) const SLIDER_SAME_MM: f64 = 1.5;
 /// and two numbers side by side on leaders into it («9 3») read as two positions.
 const SLIDER_ONE_POINT_MM: f64 = 0.5;
 
+/// A slider's numbers as they will be written: at their points, on the guide's side `up`
+/// (on paper, unit), and whether its stroke is short of room for every position.
+pub(super) struct SliderNumbers {
+    /// The slider's point.
+    pub slider: PointId,
+    pub up: Vec2,
+    pub numbers: Vec<(Point, String)>,
+    pub short: bool,
+}
+
 impl MechanismView<'_> {
     /// Each slider's positions numbered on the side of the guide away from its hatching
-    /// (where the rod comes from) — when its stroke leaves each number room (those on one
-    /// point share one); crowded, they would only hide the guide. `groups` are the runs of
-    /// positions drawn as one. A slider travelling where one already numbered does (two
-    /// pistons one behind the other, drawn on one axis) is left unnumbered: two numbers at
-    /// every point would name neither.
-    pub(super) fn slider_numbers(&self, labels: &mut Labels, groups: &[Vec<usize>]) {
+    /// (where the rod comes from), as [`Self::slider_number_plan`] plans them; returns the
+    /// labels (by their order in `labels`) of the short strokes' numbers.
+    pub(super) fn slider_numbers(&self, labels: &mut Labels, groups: &[Vec<usize>]) -> Vec<usize> {
+        let mut short = Vec::new();
+        for plan in self.slider_number_plan(groups) {
+            for (point, label) in plan.numbers {
+                if plan.short {
+                    short.push(labels.count());
+                }
+                labels.add_text_apart(point, plan.up, &label, 2.5, 2);
+            }
+        }
+        short
+    }
+
+    /// The sliders whose positions are numbered: those whose stroke leaves each number room
+    /// (those on one point share one); crowded, they would only hide the guide. `groups`
+    /// are the runs of positions drawn as one. A slider travelling where one already
+    /// numbered does (two pistons one behind the other, drawn on one axis) is left
+    /// unnumbered: two numbers at every point would name neither.
+    pub(super) fn slider_number_plan(&self, groups: &[Vec<usize>]) -> Vec<SliderNumbers> {
         let mut numbered: Vec<(Point, Point)> = Vec::new();
+        let mut plans = Vec::new();
         for st in &self.m.steps {
             let Step::Rrp { p: joint, d, through, dir, .. } = *st else { continue };
             let (lo, hi) = self.travel(d, through, dir);
@@ -49,14 +75,10 @@ impl MechanismView<'_> {
             }
             let n_world = dir.turn_90();
             let up = self.view.dir(n_world * -self.hatch_side(joint, through, n_world));
-            for (point, label) in merged(numbers.iter().cloned(), same) {
-                if short {
-                    self.short_stroke_numbers.borrow_mut().push(labels.count());
-                }
-                labels.add_text_apart(point, up, &label, 2.5, 2);
-            }
+            plans.push(SliderNumbers { slider: d, up, numbers: merged(numbers.into_iter(), same), short });
             numbered.push(travel);
         }
+        plans
     }
 }
 

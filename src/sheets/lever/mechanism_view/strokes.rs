@@ -1,11 +1,12 @@
 //! Each slider's stroke H dimensioned between its extreme positions, its value along the
 //! dimension line where it has room.
 
+use super::slider_numbers::SliderNumbers;
 use super::{MechanismView, SLIDER};
 use crate::drawing::along::along_line;
 use crate::drawing::fmt;
 use crate::drawing::obstacles::Obstacles;
-use crate::drawing::place::Labels;
+use crate::drawing::place::{Labels, label_size};
 use crate::drawing::scene::{Group, Item, MAIN};
 use crate::drawing::symbols::{dimension, value_along};
 use crate::drawing::text::LabelText;
@@ -28,6 +29,20 @@ struct Stroke {
     length: f64,
 }
 
+/// The room between a slider's block and its numbers, and between them and the stroke's
+/// dimension line beyond them, mm.
+const NUMBERS_GAP: f64 = 1.5;
+
+/// How far a slider's numbers reach off its guide on their side, their boxes' extent along
+/// the guide's normal (2.5 mm lettering), mm.
+fn numbers_depth(plan: &SliderNumbers) -> f64 {
+    let depth = |text: &String| {
+        let (w, up, down) = label_size(&LabelText::new(text.as_str(), ""), 2.5);
+        w * plan.up.x.abs() + (up + down) * plan.up.y.abs()
+    };
+    plan.numbers.iter().map(|(_, text)| depth(text)).fold(0.0, f64::max)
+}
+
 /// Two strokes whose ends are this close on paper are one (mm).
 const STROKE_SAME_MM: f64 = 0.5;
 
@@ -39,7 +54,9 @@ impl MechanismView<'_> {
     ///
     /// With two sliders each H is named by its slider's point (H_B, H_E); two strokes between
     /// the same extreme points (two pistons on one line, cranks 180° apart) are one dimension.
-    pub(super) fn strokes(&self, g: &mut Group, labels: &mut Labels) {
+    ///
+    /// Returns the dimension lines drawn.
+    pub(super) fn strokes(&self, g: &mut Group, labels: &mut Labels) -> Vec<(Point, Point)> {
         let mut strokes: Vec<Stroke> = Vec::new();
         for st in &self.m.steps {
             let Step::Rrp { p: joint, d: slider, through, dir, .. } = *st else { continue };
@@ -53,9 +70,15 @@ impl MechanismView<'_> {
             }
         }
         let named = strokes.len() > 1;
+        let numbers = self.slider_number_plan(&self.coincident());
+        let mut drawn_lines = Vec::new();
         for Stroke { joint, slider, through, dir, ea, eb, length } in strokes {
             let n_world = dir.turn_90();
             let hatch_side = self.view.dir(n_world * self.hatch_side(joint, through, n_world));
+            // On the numbers' side, the dimension line beyond them: between the guide and
+            // it, their leaders cross it no more (the offset crank-slider's «8» and «4»
+            // hung across its H).
+            let beyond = numbers.iter().find(|n| n.slider == slider).map_or(0.0, numbers_depth);
             let all = Obstacles::of_items(&g.items);
             let contours =
                 Obstacles::of_items(g.items.iter().filter(|i| matches!(i, Item::Path { pen, .. } if *pen == MAIN)));
@@ -70,9 +93,16 @@ impl MechanismView<'_> {
             let cost = |off: Vec2| -> usize {
                 lines(off).iter().map(|&(a, b)| 10 * contours.hits_segment(a, b) + all.hits_segment(a, b)).sum()
             };
-            let hatch_off = SLIDER.1 / 2.0 + 2.5 + 4.0;
-            let candidates =
-                [hatch_side * hatch_off, hatch_side * (hatch_off + 4.0), -hatch_side * 6.0, -hatch_side * 10.0];
+            let hatch_off = SLIDER.1 / 2.0
+                + 2.5
+                + if self.numbers_beyond_hatching && beyond > 0.0 { NUMBERS_GAP + beyond + NUMBERS_GAP } else { 4.0 };
+            let rod_off = if beyond > 0.0 { SLIDER.1 / 2.0 + NUMBERS_GAP + beyond + NUMBERS_GAP } else { 6.0 };
+            let candidates = [
+                hatch_side * hatch_off,
+                hatch_side * (hatch_off + 4.0),
+                -hatch_side * rod_off,
+                -hatch_side * (rod_off + 4.0),
+            ];
             let fits = |off: &Vec2| lines(*off).iter().all(|&(a, b)| inside.contains(a) && inside.contains(b));
             // A line across a text (the trajectories' legend under a long stroke) only where
             // every offset that fits crosses one: the cost counts lines alone.
@@ -86,6 +116,8 @@ impl MechanismView<'_> {
             let sub = if named { self.m.name(slider) } else { "" };
             let label = LabelText::new("H", sub).with_tail(value);
             let line = (ea + off, eb + off);
+            labels.keep_leaders_off(line);
+            drawn_lines.push(line);
             if value_along(g, (&all, since), &label, line, 3.5, inside) {
                 continue;
             }
@@ -98,5 +130,6 @@ impl MechanismView<'_> {
                 None => labels.add(mid, off, label, 3.5),
             }
         }
+        drawn_lines
     }
 }
