@@ -29,7 +29,7 @@ impl Labels {
     }
 
     /// The labels of `placed` that `keep` accepts, as obstacles.
-    fn obstacles_of(&self, placed: &[(Candidate, bool)], keep: impl Fn(usize) -> bool) -> Obstacles {
+    pub(super) fn obstacles_of(&self, placed: &[(Candidate, bool)], keep: impl Fn(usize) -> bool) -> Obstacles {
         let pieces = placed
             .iter()
             .enumerate()

@@ -35,6 +35,7 @@ mod request;
 mod seen;
 mod sides;
 mod spots;
+mod untangle;
 
 /// Distances tried between an anchor and its label's box, mm.
 const DISTANCES: [f64; 19] =
@@ -285,6 +286,7 @@ impl Labels {
         if failures(&best) > 0 {
             self.make_room(layers, &mut spots, &mut best);
         }
+        self.untangle(layers, &own, &mut best);
         let mut placed = Vec::with_capacity(best.len());
         let mut gaps = Vec::new();
         for (req, (cand, clear)) in self.requests.iter().zip(best) {

@@ -209,7 +209,7 @@ impl Around {
 
 /// A leader from `gap` off the anchor to [`LEADER_SHORT`] short of the nearest point of the
 /// label's box (a leader ending on the box's edge touches the letters' tops).
-fn leader(anchor: Point, r: Rect, gap: f64) -> (Point, Point) {
+pub(super) fn leader(anchor: Point, r: Rect, gap: f64) -> (Point, Point) {
     let end = Point::new(anchor.x.clamp(r.x0, r.x1), anchor.y.clamp(r.y0, r.y1));
     let d = end - anchor;
     let start = anchor + d.unit() * gap.min(d.norm() / 2.0);

@@ -1,0 +1,100 @@
+//! Two labels whose leaders cross read as each other's (a rocker's ω₃ and ε₃ over its
+//! pivot, each hung across the other's leader): where the labels swap spots — each box
+//! centred where the other's was — their leaders no longer cross (two crossing segments
+//! with their ends exchanged never do), and they are swapped where both stand as clear as
+//! before.
+
+use super::candidate::{Candidate, Verdict};
+use super::crossings::crosses_walls;
+use super::spots::leader;
+use super::{LEADER_FROM, LEADER_GAP, Labels, Layers, TOUCH};
+use crate::num::math::{Norm, segments_cross_strictly};
+use kurbo::{Point, Rect};
+
+/// Passes over the placement: a swap may leave another pair crossing.
+const ROUNDS: usize = 3;
+
+impl Labels {
+    /// Swaps the spots of two placed labels whose leaders cross, where both then stand
+    /// clear (see [`Labels::swapped`]), each inside its bounds `own`.
+    pub(super) fn untangle(&self, layers: Layers, own: &[Rect], placed: &mut [(Candidate, bool)]) {
+        for _ in 0..ROUNDS {
+            let mut swapped = false;
+            for i in 0..placed.len() {
+                for j in i + 1..placed.len() {
+                    if !self.leaders_cross(placed, i, j) {
+                        continue;
+                    }
+                    let inside = |k: usize, c: &Candidate| {
+                        let b = own[k];
+                        c.r.x0 >= b.x0 && c.r.y0 >= b.y0 && c.r.x1 <= b.x1 && c.r.y1 <= b.y1
+                    };
+                    let moved = self.swapped(layers, placed, i, j);
+                    if let Some((a, b)) = moved.filter(|(a, b)| inside(i, a) && inside(j, b)) {
+                        (placed[i].0, placed[j].0) = (a, b);
+                        swapped = true;
+                    }
+                }
+            }
+            if !swapped {
+                break;
+            }
+        }
+    }
+
+    fn leaders_cross(&self, placed: &[(Candidate, bool)], i: usize, j: usize) -> bool {
+        let drawn = |k: usize| self.requests[k].drawn_leader(&placed[k].0);
+        match (drawn(i), drawn(j)) {
+            (Some((a, b)), Some((c, d))) => segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2()),
+            _ => false,
+        }
+    }
+
+    /// Labels `i` and `j` at each other's spots, if both boxes are free of the drawing,
+    /// of the other labels and of each other, their leaders seen, crossing no other label's
+    /// leader, no wall and, together, no more lines than before; none where a label stands
+    /// on lines broken for it or would read as naming another side.
+    fn swapped(
+        &self,
+        layers: Layers,
+        placed: &[(Candidate, bool)],
+        i: usize,
+        j: usize,
+    ) -> Option<(Candidate, Candidate)> {
+        let (ci, cj) = (&placed[i].0, &placed[j].0);
+        if ci.breaks || cj.breaks {
+            return None;
+        }
+        let (a, b) = (self.moved(i, ci, cj.r.center()), self.moved(j, cj, ci.r.center()));
+        let drawn = layers.drawn;
+        let crossings = |c: &Candidate| c.leader.map_or(0, |(p, q)| drawn.hits_segment(p, q));
+        if crossings(&a) + crossings(&b) > crossings(ci) + crossings(cj) {
+            return None;
+        }
+        let clear = |c: &Candidate| {
+            let mut v = Verdict::default();
+            v.box_is_free(c, drawn) && v.leader_seen(c, drawn) && !crosses_walls(&self.walls, c)
+        };
+        if !(clear(&a) && clear(&b) && self.reads_as_own(i, &a) && self.reads_as_own(j, &b)) {
+            return None;
+        }
+        let mut others = self.obstacles_of(placed, |k| k != i && k != j);
+        if !a.is_free(&others) {
+            return None;
+        }
+        for piece in self.pieces(i, &a) {
+            others.add(piece, i);
+        }
+        b.is_free(&others).then_some((a, b))
+    }
+
+    /// Label `k`'s candidate `c` moved to have its box centred at `centre`, its leader
+    /// drawn anew.
+    fn moved(&self, k: usize, c: &Candidate, centre: Point) -> Candidate {
+        let r = Rect::from_center_size(centre, c.r.size());
+        let nearest = Point::new(c.anchor.x.clamp(r.x0, r.x1), c.anchor.y.clamp(r.y0, r.y1));
+        let gap = if self.requests[k].names_line { TOUCH } else { LEADER_GAP };
+        let leader = ((nearest - c.anchor).norm() >= LEADER_FROM).then(|| leader(c.anchor, r, gap));
+        Candidate { r, leader, ..c.clone() }
+    }
+}
