@@ -166,19 +166,8 @@ fn a_labels_leader_keeps_off_the_leaders_drawn_before() {
     for (task, variant) in [("1", 43), ("10", 1), ("11", 21)] {
         let out = common::catalogue_sheet1(task, variant, Language::Ru);
         for g in &out.scene.groups {
-            let leaders: Vec<(Point, Point)> = g
-                .leaders
-                .iter()
-                .filter_map(|&k| match &g.items[k] {
-                    Item::Path { path, .. } => Some((path.start, path.end())),
-                    _ => None,
-                })
-                .collect();
-            for (i, &(a, b)) in leaders.iter().enumerate() {
-                for &(c, d) in &leaders[i + 1..] {
-                    let cross = segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2());
-                    assert!(!cross, "task {task} v{variant} {}: leaders from {a:?} and {c:?} cross", g.id);
-                }
+            if let Some((l, m)) = crossing_pairs(&leaders(g)).next() {
+                panic!("task {task} v{variant} {}: leaders from {:?} and {:?} cross", g.id, l.0, m.0);
             }
         }
     }
@@ -239,6 +228,19 @@ fn leaders(g: &tmm_sheets::drawing::scene::Group) -> Vec<(Point, Point)> {
         .collect()
 }
 
+/// Whether two segments cross (touching ends do not).
+fn cross((a, b): (Point, Point), (c, d): (Point, Point)) -> bool {
+    segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2())
+}
+
+/// The pairs of `leaders` that cross.
+fn crossing_pairs(leaders: &[(Point, Point)]) -> impl Iterator<Item = ((Point, Point), (Point, Point))> + '_ {
+    leaders
+        .iter()
+        .enumerate()
+        .flat_map(move |(i, &l)| leaders[i + 1..].iter().filter(move |&&m| cross(l, m)).map(move |&m| (l, m)))
+}
+
 /// A slider's numbers hung across its stroke's dimension line read as values of it and hide
 /// it (the offset crank-slider's «4» and «8», the V-compressor's «5 ≡ 7», task 8 variant 7):
 /// on the numbers' side the dimension line stands beyond them, a number crowded across the
@@ -265,13 +267,9 @@ fn no_leader_crosses_a_strokes_dimension_line() {
         let Some(g) = out.scene.groups.iter().find(|g| g.id == "mechanism") else { continue };
         let lines = dimension_lines(g);
         dimensioned += usize::from(!lines.is_empty());
-        for (a, b) in leaders(g) {
-            for &(c, d) in &lines {
-                let cross = segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2());
-                if cross {
-                    crossing
-                        .push(format!("{what}: the leader {a:.1?}–{b:.1?} crosses the dimension line {c:.1?}–{d:.1?}"));
-                }
+        for l in leaders(g) {
+            for &d in lines.iter().filter(|&&d| cross(l, d)) {
+                crossing.push(format!("{what}: the leader {l:.1?} crosses the dimension line {d:.1?}"));
             }
         }
     }
@@ -303,12 +301,9 @@ fn leader_crossings_over_the_catalogue() {
             let before = (across_dimensions, across_leaders, long);
             for g in &out.scene.groups {
                 let (leaders, lines) = (leaders(g), dimension_lines(g));
-                let cross = |(a, b): (Point, Point), (c, d): (Point, Point)| {
-                    segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2())
-                };
-                for (i, &l) in leaders.iter().enumerate() {
+                across_leaders += crossing_pairs(&leaders).count();
+                for &l in &leaders {
                     across_dimensions += lines.iter().filter(|&&d| cross(l, d)).count();
-                    across_leaders += leaders[i + 1..].iter().filter(|&&o| cross(l, o)).count();
                     long += usize::from(g.id == "mechanism" && (l.1 - l.0).norm() > 20.0);
                 }
             }
@@ -337,13 +332,8 @@ fn no_two_leaders_cross_on_any_fixture() {
             p.info.language = lang;
             let Ok(built) = pipeline::build(&p, &[]) else { continue };
             for g in built.iter().flat_map(|b| &b.output.scene.groups) {
-                let leaders = leaders(g);
-                for (i, &(a, b)) in leaders.iter().enumerate() {
-                    for &(c, d) in &leaders[i + 1..] {
-                        if segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2()) {
-                            crossing.push(format!("{name} {lang:?} {}: {a:.1?}–{b:.1?} × {c:.1?}–{d:.1?}", g.id));
-                        }
-                    }
+                for (l, m) in crossing_pairs(&leaders(g)) {
+                    crossing.push(format!("{name} {lang:?} {}: {l:.1?} × {m:.1?}", g.id));
                 }
             }
         }
