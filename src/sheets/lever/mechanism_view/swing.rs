@@ -61,7 +61,9 @@ pub(super) fn swing(v: &MechanismView, g: &mut Group, labels: &mut Labels) -> Op
     angular_dimension(g, c, (from, to), r, ARC_READ);
     let psi = sweep.abs().to_degrees();
     let mid = a0 + sweep / 2.0;
-    let value = format!(" = {}°", fmt::value(psi, v.words.lang));
+    // At one precision with the sheet's other dimensions (0,01 at most, fewer where exact:
+    // ψ = 60°), not four significant digits (7,777° beside 40,26° and 60,00°).
+    let value = format!(" = {}°", fmt::dimension(psi, v.words.lang));
     labels.add(
         on_circle(c, r, mid),
         Vec2::new(math::cos(mid), math::sin(mid)),
