@@ -228,6 +228,22 @@ fn leaders(g: &tmm_sheets::drawing::scene::Group) -> Vec<(Point, Point)> {
         .collect()
 }
 
+/// Every fixture built in every language (`sheets` as `pipeline::build` takes them), named
+/// "fixture Lang"; those refused left out.
+fn every_fixture_built(sheets: &[u32]) -> Vec<(String, Vec<pipeline::Built>)> {
+    let mut out = Vec::new();
+    for name in fixture_names() {
+        for lang in Language::ALL {
+            let mut p = fixture(&name);
+            p.info.language = lang;
+            if let Ok(built) = pipeline::build(&p, sheets) {
+                out.push((format!("{name} {lang:?}"), built));
+            }
+        }
+    }
+    out
+}
+
 /// Whether two segments cross (touching ends do not).
 fn cross((a, b): (Point, Point), (c, d): (Point, Point)) -> bool {
     segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2())
@@ -251,15 +267,8 @@ fn crossing_pairs(leaders: &[(Point, Point)]) -> impl Iterator<Item = ((Point, P
 /// (`leader_crossings_over_the_catalogue`).
 #[test]
 fn no_leader_crosses_a_strokes_dimension_line() {
-    let mut drawings = Vec::new();
-    for name in fixture_names() {
-        for lang in Language::ALL {
-            let mut p = fixture(&name);
-            p.info.language = lang;
-            let Ok(mut built) = pipeline::build(&p, &[1]) else { continue };
-            drawings.push((format!("{name} {lang:?}"), built.remove(0).output));
-        }
-    }
+    let mut drawings: Vec<_> =
+        every_fixture_built(&[1]).into_iter().map(|(what, mut b)| (what, b.remove(0).output)).collect();
     drawings.push(("task 8 v7".to_string(), common::catalogue_sheet1("8", 7, Language::Ru)));
     let mut dimensioned = 0;
     let mut crossing = Vec::new();
@@ -326,15 +335,10 @@ fn leader_crossings_over_the_catalogue() {
 #[test]
 fn no_two_leaders_cross_on_any_fixture() {
     let mut crossing = Vec::new();
-    for name in fixture_names() {
-        for lang in Language::ALL {
-            let mut p = fixture(&name);
-            p.info.language = lang;
-            let Ok(built) = pipeline::build(&p, &[]) else { continue };
-            for g in built.iter().flat_map(|b| &b.output.scene.groups) {
-                for (l, m) in crossing_pairs(&leaders(g)) {
-                    crossing.push(format!("{name} {lang:?} {}: {l:.1?} × {m:.1?}", g.id));
-                }
+    for (what, built) in every_fixture_built(&[]) {
+        for g in built.iter().flat_map(|b| &b.output.scene.groups) {
+            for (l, m) in crossing_pairs(&leaders(g)) {
+                crossing.push(format!("{what} {}: {l:.1?} × {m:.1?}", g.id));
             }
         }
     }

@@ -19,6 +19,7 @@ use kurbo::{CubicBez, Point, Rect, Vec2};
 
 mod crank_detail;
 mod slider_numbers;
+use slider_numbers::SliderNumbers;
 mod strokes;
 mod swing;
 pub(super) use crank_detail::{DETAIL_GAP, DetailAt, DetailPlace, detail_place};
@@ -124,7 +125,10 @@ impl MechanismView<'_> {
         self.guides(g);
         // Positions that coincide on paper are drawn once (twice, their thin lines would
         // read as one thick line).
-        for group in self.coincident() {
+        let groups = self.coincident();
+        // Planned once: the strokes' dimensions leave their numbers room, then they are placed.
+        let slider_numbers = self.slider_number_plan(&groups);
+        for group in &groups {
             self.position(g, &self.k.positions[group[0]], THIN, 0.7);
         }
         self.position(g, &self.k.assigned, MAIN, JOINT_R * 1.3);
@@ -133,7 +137,7 @@ impl MechanismView<'_> {
                 frame_pivot(g, self.view.p(p), JOINT_R * 1.5);
             }
         }
-        let dimension_lines = self.strokes(g, labels);
+        let dimension_lines = self.strokes(g, labels, &slider_numbers);
         swing::swing(self, g, labels);
         // The other links' arrows before a free spot for the crank's detail is sought, so
         // that it keeps clear of them; ω₁ in the mechanism only if no detail has it.
@@ -154,7 +158,7 @@ impl MechanismView<'_> {
             }
         };
         let detailed = detail.is_some();
-        let short_stroke_numbers = self.position_numbers(labels, detailed);
+        let short_stroke_numbers = self.position_numbers(labels, detailed, &groups, slider_numbers);
         self.letters(labels, detailed);
         ViewDrawn { detail_mu_l: detail.map(|d| d.0.mu), short_stroke_numbers, dimension_lines }
     }
@@ -316,24 +320,29 @@ impl MechanismView<'_> {
     }
 
     /// Position numbers beside the crank pin of every position, outward from the pivot
-    /// (in the crank's detail instead, when it has one), and each slider's on its guide;
+    /// (in the crank's detail instead, when it has one), and each slider's as `sliders` plans;
     /// returns the short strokes' numbers' labels.
-    fn position_numbers(&self, labels: &mut Labels, detailed: bool) -> Vec<usize> {
+    fn position_numbers(
+        &self,
+        labels: &mut Labels,
+        detailed: bool,
+        groups: &[Vec<usize>],
+        sliders: Vec<SliderNumbers>,
+    ) -> Vec<usize> {
         let crank = self.m.crank();
         let ends = |st: &State| (self.view.p(st.points[crank.pivot].p), self.view.p(st.points[crank.pin].p));
-        let groups = self.coincident();
         if !detailed {
             let r = self.k.positions.first().map_or(f64::INFINITY, |p| {
                 let (o, a) = ends(&p.state);
                 (a - o).norm()
             });
             let h = self.numbers_height(r);
-            for group in &groups {
+            for group in groups {
                 let (o, a) = ends(&self.k.positions[group[0]].state);
                 labels.add_text_ranked(a, a - o, &self.joined_label(group), h, 2);
             }
         }
-        self.slider_numbers(labels, &groups)
+        self.slider_numbers(labels, sliders)
     }
 
     /// Letters of the assigned position's points, away from the mechanism's centre.

@@ -34,9 +34,9 @@ impl MechanismView<'_> {
     /// Each slider's positions numbered on the side of the guide away from its hatching
     /// (where the rod comes from), as [`Self::slider_number_plan`] plans them; returns the
     /// labels (by their order in `labels`) of the short strokes' numbers.
-    pub(super) fn slider_numbers(&self, labels: &mut Labels, groups: &[Vec<usize>]) -> Vec<usize> {
+    pub(super) fn slider_numbers(&self, labels: &mut Labels, plans: Vec<SliderNumbers>) -> Vec<usize> {
         let mut short = Vec::new();
-        for plan in self.slider_number_plan(groups) {
+        for plan in plans {
             for (point, label) in plan.numbers {
                 if plan.short {
                     short.push(labels.count());

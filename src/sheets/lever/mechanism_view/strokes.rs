@@ -56,7 +56,7 @@ impl MechanismView<'_> {
     /// the same extreme points (two pistons on one line, cranks 180° apart) are one dimension.
     ///
     /// Returns the dimension lines drawn.
-    pub(super) fn strokes(&self, g: &mut Group, labels: &mut Labels) -> Vec<(Point, Point)> {
+    pub(super) fn strokes(&self, g: &mut Group, labels: &mut Labels, numbers: &[SliderNumbers]) -> Vec<(Point, Point)> {
         let mut strokes: Vec<Stroke> = Vec::new();
         for st in &self.m.steps {
             let Step::Rrp { p: joint, d: slider, through, dir, .. } = *st else { continue };
@@ -70,7 +70,6 @@ impl MechanismView<'_> {
             }
         }
         let named = strokes.len() > 1;
-        let numbers = self.slider_number_plan(&self.coincident());
         let mut drawn_lines = Vec::new();
         for Stroke { joint, slider, through, dir, ea, eb, length } in strokes {
             let n_world = dir.turn_90();
