@@ -200,23 +200,6 @@ fn a_position_number_keeps_off_a_points_letter_on_its_line() {
     }
 }
 
-/// The double-arrowed lines of a group (its dimension lines): straight lines each of whose
-/// ends is an arrowhead's tip.
-fn dimension_lines(g: &tmm_sheets::drawing::scene::Group) -> Vec<(Point, Point)> {
-    use tmm_sheets::drawing::path::Seg;
-    let tips: Vec<Point> =
-        g.items.iter().filter_map(|i| if let Item::Fill { path } = i { Some(path.start) } else { None }).collect();
-    let tip = |p: Point| tips.iter().any(|t| (*t - p).norm() < 1e-6);
-    g.items
-        .iter()
-        .filter_map(|i| match i {
-            Item::Path { path, .. } if matches!(path.segs[..], [Seg::Line(_)]) => Some((path.start, path.end())),
-            _ => None,
-        })
-        .filter(|&(a, b)| tip(a) && tip(b))
-        .collect()
-}
-
 /// The leaders of a group, each from its label to its point.
 fn leaders(g: &tmm_sheets::drawing::scene::Group) -> Vec<(Point, Point)> {
     g.leaders
@@ -274,7 +257,7 @@ fn no_leader_crosses_a_strokes_dimension_line() {
     let mut crossing = Vec::new();
     for (what, out) in &drawings {
         let Some(g) = out.scene.groups.iter().find(|g| g.id == "mechanism") else { continue };
-        let lines = dimension_lines(g);
+        let lines = common::dimension_lines(g);
         dimensioned += usize::from(!lines.is_empty());
         for l in leaders(g) {
             for &d in lines.iter().filter(|&&d| cross(l, d)) {
@@ -294,32 +277,21 @@ fn no_leader_crosses_a_strokes_dimension_line() {
 #[test]
 #[ignore]
 fn leader_crossings_over_the_catalogue() {
-    use tmm_sheets::catalogue::{Catalogue, Variant};
-    let lang = match std::env::var("SWEEP_LANG").as_deref() {
-        Ok("uz") => Language::Uz,
-        Ok("en") => Language::En,
-        _ => Language::Ru,
-    };
+    let lang = common::sweep_lang();
     let (mut across_dimensions, mut across_leaders, mut long) = (0, 0, 0);
-    for task in &Catalogue::embedded().unwrap().tasks {
-        for v in task.variants() {
-            let Ok(Variant::Project { text, .. }) = task.project(v, lang, "test") else { continue };
-            let Ok(p) = pipeline::load_for(&text, &[1]) else { continue };
-            let Ok(mut built) = pipeline::build(&p, &[1]) else { continue };
-            let out = built.remove(0).output;
-            let before = (across_dimensions, across_leaders, long);
-            for g in &out.scene.groups {
-                let (leaders, lines) = (leaders(g), dimension_lines(g));
-                across_leaders += crossing_pairs(&leaders).count();
-                for &l in &leaders {
-                    across_dimensions += lines.iter().filter(|&&d| cross(l, d)).count();
-                    long += usize::from(g.id == "mechanism" && (l.1 - l.0).norm() > 20.0);
-                }
+    for (task, v, out) in common::catalogue_sheets1(lang) {
+        let before = (across_dimensions, across_leaders, long);
+        for g in &out.scene.groups {
+            let (leaders, lines) = (leaders(g), common::dimension_lines(g));
+            across_leaders += crossing_pairs(&leaders).count();
+            for &l in &leaders {
+                across_dimensions += lines.iter().filter(|&&d| cross(l, d)).count();
+                long += usize::from(g.id == "mechanism" && (l.1 - l.0).norm() > 20.0);
             }
-            if std::env::var_os("SWEEP_EACH").is_some() {
-                let counts = (across_dimensions - before.0, across_leaders - before.1, long - before.2);
-                eprintln!("task {} v{v}: {counts:?}", task.id());
-            }
+        }
+        if std::env::var_os("SWEEP_EACH").is_some() {
+            let counts = (across_dimensions - before.0, across_leaders - before.1, long - before.2);
+            eprintln!("task {task} v{v}: {counts:?}");
         }
     }
     eprintln!(

@@ -8,6 +8,7 @@
 mod common;
 
 use common::fixture;
+use tmm_sheets::drawing::scene::{Group, Text};
 use tmm_sheets::pipeline;
 
 /// D's x over a full crank turn (10⁵ steps), with B on either side of AC; H is its range.
@@ -115,4 +116,54 @@ fn a_rockers_swing_angle_is_dimensioned_as_computed_from_its_lengths() {
             }
         }
     }
+}
+
+/// Which side of its dimension line a value stands on, by the convention written here (GOST
+/// 2.307): `Some(true)` over it — above a level or slanted line (paper y grows downward),
+/// left of a vertical one —, `Some(false)` under it, `None` where no dimension line of the
+/// group runs along the value within 5 mm of its box's centre.
+fn value_over_its_line(g: &Group, value: &Text) -> Option<bool> {
+    let c = value.bbox().center();
+    common::dimension_lines(g).into_iter().find_map(|(a, b)| {
+        let d = b - a;
+        let along = (c - a).dot(d) / d.dot(d);
+        let foot = a + d * along;
+        let off = c - foot;
+        ((0.0..=1.0).contains(&along) && off.hypot() < 5.0)
+            .then(|| if d.x.abs() < 1e-9 { off.x < 0.0 } else { off.y < 0.0 })
+    })
+}
+
+/// The catalogue's sheets 1 measured (`cargo test --release --test stroke -- --ignored
+/// --nocapture`, in the language `SWEEP_LANG` names, Russian by default): strokes' values
+/// over their dimension lines, under them, and off them (on a leader). A report to compare
+/// changes by, not a bound. GOST 2.307 writes a value over its line; at stop 92 (Russian):
+/// 231 over, 166 under (the worked example's «H = 288,6 mm» among them: its slider's numbers
+/// take the room over the line), 119 off (level beside a line shorter than the value).
+#[test]
+#[ignore]
+fn stroke_values_over_the_catalogue() {
+    let lang = common::sweep_lang();
+    let (mut over, mut under, mut off) = (0, 0, 0);
+    for (task, v, out) in common::catalogue_sheets1(lang) {
+        let Some(mech) = out.scene.groups.iter().find(|g| g.id == "mechanism") else { continue };
+        for value in mech.texts().filter(|t| t.text == "H") {
+            match value_over_its_line(mech, value) {
+                Some(true) => over += 1,
+                Some(false) => {
+                    under += 1;
+                    if std::env::var_os("SWEEP_EACH").is_some() {
+                        eprintln!("task {} v{v}: «{}» under its line", task, value.plain());
+                    }
+                }
+                None => {
+                    off += 1;
+                    if std::env::var_os("SWEEP_EACH").is_some() {
+                        eprintln!("task {} v{v}: «{}» off its line", task, value.plain());
+                    }
+                }
+            }
+        }
+    }
+    eprintln!("{lang:?}: stroke values {over} over their lines, {under} under, {off} off them");
 }

@@ -275,3 +275,57 @@ pub fn catalogue_text(task: &str, variant: u32, lang: tmm_sheets::drawing::label
     };
     text
 }
+
+/// The double-arrowed lines of a group (its dimension lines): straight lines each of whose
+/// ends is an arrowhead's tip.
+pub fn dimension_lines(g: &tmm_sheets::drawing::scene::Group) -> Vec<(kurbo::Point, kurbo::Point)> {
+    use kurbo::Point;
+    use tmm_sheets::drawing::path::Seg;
+    use tmm_sheets::drawing::scene::Item;
+    use tmm_sheets::num::math::Norm;
+    let tips: Vec<Point> =
+        g.items.iter().filter_map(|i| if let Item::Fill { path } = i { Some(path.start) } else { None }).collect();
+    let tip = |p: Point| tips.iter().any(|t| (*t - p).norm() < 1e-6);
+    g.items
+        .iter()
+        .filter_map(|i| match i {
+            Item::Path { path, .. } if matches!(path.segs[..], [Seg::Line(_)]) => Some((path.start, path.end())),
+            _ => None,
+        })
+        .filter(|&(a, b)| tip(a) && tip(b))
+        .collect()
+}
+
+/// The language a catalogue sweep's report is in: `SWEEP_LANG` (uz, ru, en), Russian by
+/// default.
+pub fn sweep_lang() -> tmm_sheets::drawing::labels::Language {
+    use tmm_sheets::drawing::labels::Language;
+    match std::env::var("SWEEP_LANG").as_deref() {
+        Ok("uz") => Language::Uz,
+        Ok("en") => Language::En,
+        _ => Language::Ru,
+    }
+}
+
+/// Every catalogue variant's sheet 1 built in `lang`, each with its task's id and its
+/// variant's number; those refused left out.
+pub fn catalogue_sheets1(
+    lang: tmm_sheets::drawing::labels::Language,
+) -> impl Iterator<Item = (String, u32, tmm_sheets::sheets::SheetOutput)> {
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    let catalogue = Catalogue::embedded().unwrap();
+    let variants: Vec<(String, u32, String)> = catalogue
+        .tasks
+        .iter()
+        .flat_map(|task| {
+            task.variants().filter_map(move |v| match task.project(v, lang, "test") {
+                Ok(Variant::Project { text, .. }) => Some((task.id(), v, text)),
+                _ => None,
+            })
+        })
+        .collect();
+    variants.into_iter().filter_map(|(task, v, text)| {
+        let p = pipeline::load_for(&text, &[1]).ok()?;
+        Some((task, v, pipeline::build(&p, &[1]).ok()?.remove(0).output))
+    })
+}
