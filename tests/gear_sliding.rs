@@ -121,3 +121,52 @@ fn a_pair_alones_sliding_diagram_keeps_off_the_title_block() {
     assert!(faults.is_empty(), "{faults:?}: {}", l["problems"]);
     assert!(b.output.results["sliding"].is_object(), "the diagram found room elsewhere");
 }
+
+/// The λ axis is marked at λ = 1, the most a flank slides (at the other wheel's N), with
+/// its round ticks, each at its value's height at the stated μ_λ: the worked example's axis
+/// read only −6, −4, −2 under the curves' tops. On every gear fixture with the diagram and
+/// the worked example, in every language.
+#[test]
+fn the_lambda_axis_is_marked_at_one_and_at_its_round_values() {
+    use tmm_sheets::drawing::labels::Language;
+    use tmm_sheets::drawing::scene::Item;
+    let dir = root().join("fixtures/gears");
+    let mut texts: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "yaml"))
+        .map(|p| std::fs::read_to_string(&p).unwrap())
+        .collect();
+    texts.push(pipeline::DEFAULT_PROJECT.to_string());
+    let mut checked = 0;
+    for text in &texts {
+        for lang in Language::ALL {
+            let mut p = pipeline::load(text).unwrap();
+            p.info.language = lang;
+            let b = pipeline::build(&p, &[2]).unwrap().remove(0);
+            let Some(mu) = b.output.results["sliding"]["mu_lambda"].as_f64() else { continue };
+            let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
+            let part = mesh.parts.iter().find(|p| p.id == "mesh.sliding").unwrap();
+            // The axis's values: the part's texts that read as numbers, with their heights.
+            let mut ticks: Vec<(f64, f64)> = mesh.items[part.items.clone()]
+                .iter()
+                .filter_map(|item| match item {
+                    Item::Text(t) if t.sub.is_empty() && t.tail.is_empty() => {
+                        t.text.replace('−', "-").replace(',', ".").parse::<f64>().ok().map(|v| (v, t.at.y))
+                    }
+                    _ => None,
+                })
+                .collect();
+            ticks.sort_by(|a, b| a.0.total_cmp(&b.0));
+            assert!(ticks.iter().any(|t| t.0 == 1.0), "{lang:?}: no «1» on the λ axis: {ticks:?}");
+            assert!(ticks.len() >= 3, "{lang:?}: {ticks:?}");
+            let (top_v, top_y) = ticks[ticks.len() - 1];
+            for &(v, y) in &ticks {
+                let want = top_y + (top_v - v) / mu;
+                assert!((y - want).abs() < 1e-6, "{lang:?}: «{v}» at {y:.3} mm, its height at μ_λ {want:.3}");
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked >= 6, "{checked} diagrams");
+}

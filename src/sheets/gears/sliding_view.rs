@@ -74,13 +74,7 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
     let plot = Plot {
         origin: Point::new(room.x0 + LEFT, room.y0 + TOP + 1.0 / mu_lambda),
         x: Axis { lo: 0.0, hi: s.line, mu: mu_l, name: "N₁N₂".into(), ticks },
-        y: Axis {
-            lo: lowest,
-            hi: 1.0,
-            mu: mu_lambda,
-            name: "λ".into(),
-            ticks: round_ticks(lowest, 1.0, mu_lambda, lang),
-        },
+        y: Axis { lo: lowest, hi: 1.0, mu: mu_lambda, name: "λ".into(), ticks: lambda_ticks(lowest, mu_lambda, lang) },
         x_above: None,
     };
     g.text(Text::new(Point::new(room.x0 + 2.0, room.y0 + 5.0), title, 3.5, Anchor::Start));
@@ -166,4 +160,15 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
     }
     let placed = labels.place(g, room);
     (!placed.contains(&false)).then_some(SlidingDrawn { lambda: at_b, mu_l, mu_lambda })
+}
+
+/// The λ axis's ticks: the round ones from `lowest` up, and λ = 1, the most a flank slides
+/// (at the other wheel's N), where no round one is within 4 mm of it: the axis read only
+/// −6, −4, −2 under the curves' tops.
+fn lambda_ticks(lowest: f64, mu: f64, lang: crate::drawing::labels::Language) -> Vec<(f64, String)> {
+    let mut ticks = round_ticks(lowest, 1.0, mu, lang);
+    if ticks.iter().all(|(v, _)| (1.0 - v) / mu >= 4.0) {
+        ticks.push((1.0, "1".to_string()));
+    }
+    ticks
 }
