@@ -8,7 +8,7 @@ use common::{fixture, fixture_names};
 use kurbo::Point;
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::drawing::scene::Item;
-use tmm_sheets::num::math::{Norm, segments_cross_strictly};
+use tmm_sheets::num::math::{Norm, lines_cross as cross};
 use tmm_sheets::pipeline;
 
 /// No label of the position plan hangs off its point on a long leader (the review found the
@@ -225,11 +225,6 @@ fn every_fixture_built(sheets: &[u32]) -> Vec<(String, Vec<pipeline::Built>)> {
         }
     }
     out
-}
-
-/// Whether two segments cross (touching ends do not).
-fn cross((a, b): (Point, Point), (c, d): (Point, Point)) -> bool {
-    segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2())
 }
 
 /// The pairs of `leaders` that cross.

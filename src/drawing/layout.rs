@@ -6,7 +6,7 @@ use super::frame::{self, DESIGNATION_BOX, FRAME, TITLE_BLOCK};
 use super::obstacles::{Obstacles, Piece, segments};
 use super::phrases;
 use super::scene::{Item, Scene};
-use crate::num::math::Norm;
+use crate::num::math::{Norm, rect_inside as inside};
 use crate::num::tol;
 use kurbo::{Point, Rect};
 
@@ -282,10 +282,6 @@ fn empty_share_flat(scene: &Scene, flat: &Flattened, field: Rect, excluded: Rect
 
 fn is_text(i: &Item) -> bool {
     matches!(i, Item::Text(_))
-}
-
-fn inside(outer: Rect, r: Rect) -> bool {
-    r.x0 >= outer.x0 && r.y0 >= outer.y0 && r.x1 <= outer.x1 && r.y1 <= outer.y1
 }
 
 /// A box as a reader finds it on the sheet: its corners in paper millimetres.

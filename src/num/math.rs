@@ -3,7 +3,7 @@
 //! operating system it is built on. `clippy.toml` forbids the platform versions in `src/`.
 //! Square roots need no such care: IEEE 754 rounds them exactly everywhere.
 
-use kurbo::Vec2;
+use kurbo::{Point, Rect, Vec2};
 
 pub fn sin_cos(x: f64) -> (f64, f64) {
     libm::sincos(x)
@@ -69,6 +69,17 @@ pub fn orientations(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> [f64; 4] {
 pub fn segments_cross_strictly(a: Vec2, b: Vec2, c: Vec2, d: Vec2) -> bool {
     let [d1, d2, d3, d4] = orientations(a, b, c, d);
     d1 * d2 < 0.0 && d3 * d4 < 0.0
+}
+
+/// Whether `r` lies inside `outer` (its edges may touch).
+pub fn rect_inside(outer: Rect, r: Rect) -> bool {
+    r.x0 >= outer.x0 && r.y0 >= outer.y0 && r.x1 <= outer.x1 && r.y1 <= outer.y1
+}
+
+/// [`segments_cross_strictly`] for two segments given by their end points (two leaders,
+/// a leader and a dimension line).
+pub fn lines_cross((a, b): (Point, Point), (c, d): (Point, Point)) -> bool {
+    segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2())
 }
 
 /// Lengths and directions of vectors through an exactly rounded square root.

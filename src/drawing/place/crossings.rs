@@ -5,7 +5,7 @@
 
 use super::{Candidate, Spots, Verdict};
 use crate::drawing::obstacles::Obstacles;
-use crate::num::math::segments_cross_strictly;
+use crate::num::math::lines_cross;
 use kurbo::Point;
 
 /// A leader this long or longer, mm, is weighed against nearer spots across lines.
@@ -78,8 +78,5 @@ const NEAR: f64 = 8.0;
 
 /// Whether `c`'s leader, if any, crosses one of `walls` ([`super::Labels::keep_leaders_off`]).
 pub(super) fn crosses_walls(walls: &[(Point, Point)], c: &Candidate) -> bool {
-    let crosses = |(a, b): (Point, Point), &(c, d): &(Point, Point)| {
-        segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2())
-    };
-    c.leader.is_some_and(|l| walls.iter().any(|w| crosses(l, w)))
+    c.leader.is_some_and(|l| walls.iter().any(|&w| lines_cross(l, w)))
 }

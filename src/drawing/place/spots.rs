@@ -183,7 +183,7 @@ impl Around {
         // around the anchor: boxes beside, above and diagonal all keep the gap).
         let centre = self.anchor + Vec2::new(d.x * (w / 2.0 + dist), d.y * (ht / 2.0 + dist));
         let r = Rect::new(centre.x - w / 2.0, centre.y - ht / 2.0, centre.x + w / 2.0, centre.y + ht / 2.0);
-        if !(r.x0 >= bounds.x0 && r.y0 >= bounds.y0 && r.x1 <= bounds.x1 && r.y1 <= bounds.y1) {
+        if !math::rect_inside(bounds, r) {
             return None;
         }
         let gap = if req.names_line { TOUCH } else { LEADER_GAP };

@@ -8,7 +8,7 @@ use super::candidate::{Candidate, Verdict};
 use super::crossings::crosses_walls;
 use super::spots::leader;
 use super::{LEADER_FROM, LEADER_GAP, Labels, Layers, TOUCH};
-use crate::num::math::{Norm, segments_cross_strictly};
+use crate::num::math::{Norm, lines_cross, rect_inside};
 use kurbo::{Point, Rect};
 
 /// Passes over the placement: a swap may leave another pair crossing.
@@ -25,10 +25,7 @@ impl Labels {
                     if !self.leaders_cross(placed, i, j) {
                         continue;
                     }
-                    let inside = |k: usize, c: &Candidate| {
-                        let b = own[k];
-                        c.r.x0 >= b.x0 && c.r.y0 >= b.y0 && c.r.x1 <= b.x1 && c.r.y1 <= b.y1
-                    };
+                    let inside = |k: usize, c: &Candidate| rect_inside(own[k], c.r);
                     let moved = self.swapped(layers, placed, i, j);
                     if let Some((a, b)) = moved.filter(|(a, b)| inside(i, a) && inside(j, b)) {
                         (placed[i].0, placed[j].0) = (a, b);
@@ -45,7 +42,7 @@ impl Labels {
     fn leaders_cross(&self, placed: &[(Candidate, bool)], i: usize, j: usize) -> bool {
         let drawn = |k: usize| self.requests[k].drawn_leader(&placed[k].0);
         match (drawn(i), drawn(j)) {
-            (Some((a, b)), Some((c, d))) => segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2()),
+            (Some(l), Some(m)) => lines_cross(l, m),
             _ => false,
         }
     }

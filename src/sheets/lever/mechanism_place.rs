@@ -15,7 +15,7 @@ use crate::drawing::text::LabelText;
 use crate::drawing::view::View;
 use crate::lever::analysis::Kinematics;
 use crate::lever::linkage::{Mechanism, Step};
-use crate::num::math::segments_cross_strictly;
+use crate::num::math::lines_cross;
 use kurbo::{Point, Rect};
 
 /// The mechanism's region at most, mm; it shrinks to the drawing at the chosen μ_l.
@@ -79,10 +79,7 @@ fn leaders_across(g: &Group, lines: &[(Point, Point)]) -> usize {
         Item::Path { path, .. } => Some((path.start, path.end())),
         _ => None,
     };
-    let cross = |(a, b): (Point, Point), (c, d): &(Point, Point)| {
-        segments_cross_strictly(a.to_vec2(), b.to_vec2(), c.to_vec2(), d.to_vec2())
-    };
-    g.leaders.iter().filter_map(leader).map(|l| lines.iter().filter(|d| cross(l, d)).count()).sum()
+    g.leaders.iter().filter_map(leader).map(|l| lines.iter().filter(|&&d| lines_cross(l, d)).count()).sum()
 }
 
 /// The mechanism's place: the largest GOST μ_l that fits its box, the region shrunk to the
