@@ -239,6 +239,19 @@ fn crank_sliders_with_loads_small_idle_forces_included() {
     run_n("crank-sliders with loads", 80, cases() / 3, strategy);
 }
 
+/// A pair the sweep found (a random seed, 1500 cases) whose diagram of specific sliding
+/// wrote its two values under its title exactly two lettering heights apart, where the
+/// layout measure reads them as one phrase: «λ₁ (B₁) → −∞» ran into «λ₂ (B₂) = −2.610».
+/// They now stand further apart, in every language.
+#[test]
+fn a_pair_the_sweep_found_keeps_its_two_sliding_values_apart() {
+    for lang in ["uz", "ru", "en"] {
+        let text = HEADER.replace("language: en", &format!("language: {lang}"))
+            + "gears:\n  pair: {module: 0.50, z: [21, 15], shift: [-0.245, -0.343]}\n  planetary: {scheme: double-planet, module: 0.5, ratio: 2.00}\n";
+        assert_eq!(verdict(&text), Ok(Outcome::Built), "{lang}");
+    }
+}
+
 /// Pairs the sweep found drawing teeth off the page (their three teeth wider than the
 /// region at the course's tooth height): now drawn at a scale at which they fit.
 #[test]

@@ -98,7 +98,9 @@ fn draw_in(g: &mut Group, room: Rect, s: &Sliding, title: &str, words: &GearWord
             None => format!(" ({point}) → −∞"),
         });
         v.draw(g, Point::new(x, room.y0 + 19.5), 2.5, Anchor::Start);
-        x += v.width(2.5) + 5.0;
+        // Further apart than two values read as one phrase (a gap of exactly phrases::APART
+        // heights, 5 mm, ran «λ₁ (B₁) → −∞» into «λ₂ (B₂) = −2.610»).
+        x += v.width(2.5) + (crate::drawing::phrases::APART + 0.4) * 2.5;
     }
     plot.draw_axes(g);
     // Each flank's curve where it is within the plot: λ1 from where it reaches the lowest
