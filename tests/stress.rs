@@ -268,10 +268,21 @@ fn pairs_the_sweep_found_off_the_page_fit_their_region() {
         // A pair alone, its mesh as wide as the tables leave: the region ran over the title
         // block and the circles' arcs through its lines (now the region ends above it).
         "{module: 5.50, z: [18, 17]}",
+        // A random seed's find (stop 92): its notes under the mesh sized with stand-in
+        // numbers in three columns, set with its own in one, 22 mm taller: in English their
+        // last lines ran 8.2 mm off the page (the mesh is now drawn again above them).
+        "{module: 0.50, z: [133, 133], shift: [-0.478, -0.461]}",
     ] {
         let text = format!("{HEADER}gears:\n  pair: {pair}\n");
         assert_eq!(verdict(&text), Ok(Outcome::Built), "{pair}");
     }
+    // A random seed's find (stop 93): p_b's value set along its line over the end of α_w's
+    // arc, where α_w's name is anchored; α_w stood on a leader across «p_b = 57.09». The
+    // dimensions' values now keep off α_w's anchor.
+    let text = format!(
+        "{HEADER}gears:\n  pair: {{module: 19.34, z: [64, 258], shift: [0.941, 0.106]}}\n  planetary: {{scheme: double-planet, module: 0.5, ratio: 2.00}}\n"
+    );
+    assert_eq!(verdict(&text), Ok(Outcome::Built));
     // A 363-tooth wheel's arc ended on its region's edge, its stroke 0.4 mm over it.
     let text = format!(
         "{HEADER}gears:\n  pair: {{module: 1.76, z: [363, 132], shift: [0.993, -0.062]}}\n  planetary: {{scheme: double-planet, module: 0.5, ratio: 2.00}}\n"
@@ -447,6 +458,13 @@ fn cams_the_sweep_found_with_texts_crossed_are_clean() {
         // reached into the pole's rays; a scale line the highest ray would cross is broken
         // after its "=".
         cam("{translating: {stroke: 0.0067, offset: auto}}", (55.09, 27.95, 235.73), "uniform-acceleration", 58.0),
+        // A random seed's find (stop 93): a 375 mm stroke over a 20° rise, ds/dφ's top value
+        // «2000» set left of its axis 2.7 mm after «μ_ds/dφ = 0.04 m/mm», read as one phrase;
+        // a value left of the axis now keeps a phrase's gap from a text level with it.
+        cam("{translating: {stroke: 0.3752, offset: auto}}", (20.38, 48.87, 35.21), "sine", 19.0),
+        // The same seed's: a 12.8° swing, «μ_β = 0.006 rad/mm» held by the column's edge
+        // 2.4 mm before the top value «12.5», on its row; the scale now steps off the row.
+        cam("{rocker: {length: 0.1947, swing_deg: 12.8}}", (32.54, 221.40, 65.14), "uniform-acceleration", 28.2),
     ] {
         assert_eq!(verdict(&text), Ok(Outcome::Built), "{text}");
     }

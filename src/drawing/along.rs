@@ -48,6 +48,16 @@ pub fn value_along(at: Point, normal: Vec2, off: f64, value: &LabelText, h: f64)
     t
 }
 
+/// The side of the line a–b a value set along it stands over (GOST 2.307 writes it there):
+/// its letters' up, as [`value_along`] turns them — above a level or slanted line, left of
+/// a vertical one.
+pub fn over(a: Point, b: Point) -> Vec2 {
+    let u = (b - a).unit();
+    let right = if u.x >= 0.0 { u } else { -u };
+    let d = if right.y > STEEP_DOWN { -right } else { right };
+    Vec2::new(d.y, -d.x)
+}
+
 /// `value` along the dimension line a–b, clear of `drawn` and inside `area`: beside its middle, else moved
 /// along it up to its ends, the nearest clear within 8 mm, on `pref`'s side first at each
 /// distance (either first where None).
@@ -107,4 +117,31 @@ pub fn along_extension(
             && t.bbox_pieces().all(|b| !segment_meets_rect(*end, *far, b.inflate(0.5, 0.5)))
     };
     tried.find(clear).map(|(end, far, text)| Set { text, extension: Some((end, far)) })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// On a line at any angle, the side `over` names is the one a value set along the line
+    /// has its letters' up towards, and it is the upper side (GOST 2.307's "over") unless
+    /// the line is within 30° of the vertical, where it is the left.
+    #[test]
+    fn over_is_the_side_the_letters_face_up_to() {
+        let value = LabelText::new("r", "min");
+        for k in 0..72 {
+            let angle = f64::from(k) * 5.0_f64.to_radians() + 0.01;
+            let (a, b) =
+                (Point::new(10.0, 10.0), Point::new(10.0 + 50.0 * math::cos(angle), 10.0 + 50.0 * math::sin(angle)));
+            let u = (b - a).unit();
+            let side = over(a, b);
+            assert!(side.dot(u).abs() < 1e-12 && (side.norm() - 1.0).abs() < 1e-12, "across the line at {k}");
+            let t = value_along(a.midpoint(b), Vec2::new(u.y, -u.x), 1.0, &value, 2.5);
+            let turned = t.rotate.to_radians();
+            let up = Vec2::new(-math::sin(turned), -math::cos(turned));
+            assert!((up - side).norm() < 1e-9, "at {}°: letters up {up:?}, over {side:?}", f64::from(k) * 5.0);
+            let steep = u.x.abs() < 0.5;
+            assert!(if steep { side.x < 0.0 } else { side.y < 0.0 }, "at {}°: over is {side:?}", f64::from(k) * 5.0);
+        }
+    }
 }

@@ -74,6 +74,12 @@ impl Plot {
         values.chain([self.y_name()]).map(|t| t.at.x - m.width(&t.text, t.h)).fold(x0 - TICK, f64::min)
     }
 
+    /// The baselines of the y axis's values as [`Plot::draw_axes`] writes them, mm: what a
+    /// text set level beside them keeps off (on one baseline, they read as one phrase).
+    pub fn y_value_baselines(&self) -> impl Iterator<Item = f64> + '_ {
+        self.y.ticks.iter().map(|(v, l)| self.y_value(*v, l).at.y)
+    }
+
     /// A y tick's value, left of its tick mark.
     fn y_value(&self, v: f64, label: &str) -> Text {
         let p = Point::new(self.at(self.x.lo, 0.0).x, self.at(0.0, v).y);

@@ -48,6 +48,10 @@ const LEADER_GAP: f64 = 0.8;
 /// line's ink ("φ1 = 45,0°" under a load diagram's mark, 148 texts within 0.4 mm of a line
 /// on the fixtures' sheets); at 0.5 every catalogue sheet still lays out clean.
 const CLEAR: f64 = 0.5;
+/// A line interrupted for a label stops this far from its box, mm: at [`CLEAR`] the break
+/// read, printed, as the line run through the letters (a teacher read a cam profile's
+/// «φ_в = 90°» as cut by the follower's axes).
+const BREAK_CLEAR: f64 = 1.2;
 /// More room kept beside a placed position number for the next label, mm (about a space:
 /// two numbers 0.5 mm apart read as one, "0≡17 16"), and the rank from which labels are
 /// position numbers.
@@ -301,7 +305,7 @@ impl Labels {
                 g.leader_line(a, b, THIN);
             }
             if cand.breaks {
-                gaps.push(cand.r.inflate(CLEAR, CLEAR));
+                gaps.push(cand.r.inflate(BREAK_CLEAR, BREAK_CLEAR));
             }
             placed.push(Placed { clean: clear, leader: leader.map_or(0.0, |(a, b)| (b - a).norm()), rank: req.rank });
         }

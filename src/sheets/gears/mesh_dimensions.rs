@@ -50,6 +50,12 @@ impl Drawn {
         &self.obstacles
     }
 
+    /// Keeps the dimensions' values off `r`: a label's anchor, placed after them (a value
+    /// set on α_w's arc end left α_w a leader across the value only).
+    pub fn reserve(&mut self, r: Rect) {
+        self.obstacles.add(Piece::TextBox(r), usize::MAX);
+    }
+
     /// Draws a value set beside its line (and the line's extension under it, if any),
     /// indexed by its pieces (a rotated text's pieces hug its letters where one box would
     /// block its whole slant).

@@ -87,6 +87,9 @@ impl MeshPoints {
 
 /// The radius of the arc marking α_w at P, mm.
 const ALPHA_ARC_MM: f64 = 28.0;
+/// The dimensions' values keep off a square this wide round α_w's anchor, mm: room for its
+/// name beside it.
+const ALPHA_ROOM: f64 = 8.0;
 
 /// Draws the mesh into `g` (its region): title above, notes below are the caller's; the
 /// drawing is placed in `area`.
@@ -111,6 +114,8 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     let senses = senses_of_rotation(g, v, area, &points, v.len(p.wheels[1].root));
     // One index of the drawing for the dimensions' values, each added to it as it is set.
     let mut drawn = super::mesh_dimensions::Drawn::of(g);
+    let alpha_at = pp + Vec2::new(-ALPHA_ARC_MM - 2.0, -ALPHA_ARC_MM * 0.18);
+    drawn.reserve(Rect::from_center_size(alpha_at, (ALPHA_ROOM, ALPHA_ROOM)));
     if let Some(line) = a_w {
         super::mesh_dimensions::centre_distance_value(g, (labels, &mut drawn), area, p, line, inp.lang);
     }
@@ -123,7 +128,6 @@ pub fn draw_mesh(g: &mut Group, area: Rect, inp: &MeshInput, labels: &mut Labels
     }
     labels.add_ranked(pp - Vec2::new(tau, 0.0), Vec2::new(0.0, -1.0), LabelText::new("τ", ""), 3.5, 1);
     labels.add_ranked(pp + Vec2::new(tau, 0.0), Vec2::new(0.0, -1.0), LabelText::new("τ", ""), 3.5, 1);
-    let alpha_at = pp + Vec2::new(-ALPHA_ARC_MM - 2.0, -ALPHA_ARC_MM * 0.18);
     labels.add_ranked(alpha_at, Vec2::new(-1.0, -0.4), LabelText::new("α", "w"), 3.5, 1);
     for (at, l) in circle_labels {
         labels.add_ranked(at, Vec2::new(-1.0, 0.0), l, 3.5, 2);

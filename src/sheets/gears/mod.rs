@@ -197,6 +197,53 @@ fn mesh_group(
 ) -> Result<(Group, MeshDrawn, Option<sliding_view::SlidingDrawn>), TooLong> {
     let (l, lang) = (words.sheet, words.lang);
     let notes = mesh_notes(p, words);
+    // Left of the title block where the region reaches down beside it (set across the
+    // region, the notes' last column ran into it).
+    let title_block = frame::title_block_rect();
+    let notes_w = if region.y1 > title_block.y0 && region.x1 > title_block.x0 {
+        (title_block.x0 - 4.0 - (region.x0 + 2.0)).min(region.width() - 4.0)
+    } else {
+        region.width() - 4.0
+    };
+    // The notes' height: four lines of results (their numbers come from the drawing, not
+    // drawn yet: set here with numbers at least as wide as the drawing's will be, so that
+    // the lines wrap no less than the real ones) and the notes, in columns.
+    let exact = fmt::value(p.pair.contact_ratio, lang);
+    let head_like = [
+        l.scale(&fmt::localise("2.5:1", lang)),
+        l.contact_ratio_exact(&exact),
+        l.contact_ratio_drawn(&exact, &fmt::percent_difference(-9.99, lang)),
+        l.involute_note(&fmt::bound_above(99.9, lang)),
+    ];
+    let mut notes_h = columns::set(&note_paras(&head_like, &notes), CELL_TEXT, notes_w).height + 6.0;
+    let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
+    let room = Room { field: "gears.assumptions", place: "notes under the mesh", size: (notes_w, NOTES_MAX_H) };
+    // The real numbers may still set the notes taller (a column ending elsewhere: a pair of
+    // 133/133 teeth had its notes in three columns with the stand-ins, in one with its own
+    // and 22 mm taller, off the page): then the mesh is drawn again above that height.
+    let mut drawn = None;
+    for _ in 0..3 {
+        room.check(&assumptions, notes_h)?;
+        let (mesh, real_h) = mesh_over_notes(p, region, (&notes, notes_w, notes_h), words);
+        let fits = real_h <= notes_h + 1e-9;
+        drawn = Some(mesh);
+        if fits {
+            break;
+        }
+        notes_h = real_h;
+    }
+    Ok(drawn.expect("drawn at least once"))
+}
+
+/// The mesh's group in `region` with the notes (`notes`, set `notes_w` wide) under its
+/// drawing, which ends `notes_h` mm above the region's foot; with the notes' real height.
+fn mesh_over_notes(
+    p: &GearsProject,
+    region: Rect,
+    (notes, notes_w, notes_h): (&[String], f64, f64),
+    words: &GearWords,
+) -> ((Group, MeshDrawn, Option<sliding_view::SlidingDrawn>), f64) {
+    let (l, lang) = (words.sheet, words.lang);
     let mut mesh = Group::new("mesh", region);
     let mut labels = Labels::new();
     let title = l.mesh_title(
@@ -206,28 +253,6 @@ fn mesh_group(
     );
     let at = crate::drawing::frame::clear_of_designation_box(Point::new(region.x0 + 2.0, region.y0 + 6.0), 5.0);
     mesh.text(Text::new(at, title, 5.0, Anchor::Start));
-    // The notes' height: four lines of results (their numbers come from the drawing, not
-    // drawn yet: set here with numbers at least as wide as the drawing's will be, so that
-    // the lines wrap no less than the real ones) and the notes, in columns.
-    // Left of the title block where the region reaches down beside it (set across the
-    // region, the notes' last column ran into it).
-    let title_block = frame::title_block_rect();
-    let notes_w = if region.y1 > title_block.y0 && region.x1 > title_block.x0 {
-        (title_block.x0 - 4.0 - (region.x0 + 2.0)).min(region.width() - 4.0)
-    } else {
-        region.width() - 4.0
-    };
-    let exact = fmt::value(p.pair.contact_ratio, lang);
-    let head_like = [
-        l.scale(&fmt::localise("2.5:1", lang)),
-        l.contact_ratio_exact(&exact),
-        l.contact_ratio_drawn(&exact, &fmt::percent_difference(-9.99, lang)),
-        l.involute_note(&fmt::bound_above(99.9, lang)),
-    ];
-    let notes_h = columns::set(&note_paras(&head_like, &notes), CELL_TEXT, notes_w).height + 6.0;
-    let assumptions: Vec<String> = p.assumptions.iter().map(|a| a.get(lang).to_string()).collect();
-    let room = Room { field: "gears.assumptions", place: "notes under the mesh", size: (notes_w, NOTES_MAX_H) };
-    room.check(&assumptions, notes_h)?;
     let area = Rect::new(region.x0 + 2.0, region.y0 + 10.0, region.x1 - 2.0, region.y1 - notes_h);
     let start = mesh.mark();
     let drawn = draw_mesh(
@@ -253,10 +278,10 @@ fn mesh_group(
         l.contact_ratio_drawn(&eps(drawn.contact_ratio_drawn, lang), &fmt::percent_difference(diff, lang)),
         l.involute_note(&fmt::bound_above(drawn.involute_deviation * 1e6, lang)),
     ];
-    let set = columns::set(&note_paras(&head, &notes), CELL_TEXT, notes_w);
+    let set = columns::set(&note_paras(&head, notes), CELL_TEXT, notes_w);
     columns::draw(&mut mesh, Point::new(region.x0 + 2.0, area.y1 + 5.0), &set, CELL_TEXT);
     mesh.part_from("mesh.notes", start);
-    Ok((mesh, drawn, sliding))
+    ((mesh, drawn, sliding), set.height + 6.0)
 }
 
 /// The results under the mesh and its notes, as paragraphs. The head's second line, the

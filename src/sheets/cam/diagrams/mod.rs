@@ -18,6 +18,7 @@ use crate::cams::integrate::Integrated;
 use crate::cams::laws::Program;
 use crate::drawing::fmt;
 use crate::drawing::labels::Language;
+use crate::drawing::phrases;
 use crate::drawing::place::{Labels, label_size};
 use crate::drawing::plot::{Axis, Plot};
 use crate::drawing::scene::{Anchor, DASHED, Group, MAIN, THIN};
@@ -27,7 +28,7 @@ use crate::num::tol;
 use axes::{analog_ticks, axis_values, lift_ticks, ordinates, unlabelled};
 use kurbo::{Point, Rect, Vec2};
 use plan::peaks;
-use pole::{Pole, SCALE_GAP, SCALE_TEXT, clear_of_rays, pole, scale_text, top_ray};
+use pole::{Pole, SCALE_GAP, SCALE_TEXT, clear_of_rays, pole, scale_line, scale_text, top_ray};
 
 /// What the diagrams measured.
 pub struct Drawn {
@@ -175,7 +176,8 @@ impl Stack<'_> {
         // («μ_β = 0,0075 рад/мм 20» read as one at 4 mm).
         let widest = lines.iter().map(|t| t.width(SCALE_TEXT)).fold(0.0, f64::max);
         let x = (s_plot.y_labels_left() - 2.0 * SCALE_GAP - widest).max(self.left);
-        scale_text(g, Point::new(x, s_plot.origin.y - p.lift / sc.mu_s), &lines);
+        let at = Point::new(x, s_plot.origin.y - p.lift / sc.mu_s);
+        scale_text(g, off_value_rows(at, &lines, &s_plot), &lines);
         s_plot.origin.y + PHASES + GAP
     }
 
@@ -260,6 +262,26 @@ impl Stack<'_> {
         a_plot.origin.y + amax / sc.mu_dds + GAP
     }
 }
+
+/// `at`, or lower by as little as keeps each of the scale `lines` off the rows of `plot`'s
+/// y values where the column's edge holds it nearer them than a phrase's gap (a 12.8°
+/// swing's «μ_β = 0,006 рад/мм» stood 2.4 mm before «12,5», on its row, read as one).
+fn off_value_rows(at: Point, lines: &[LabelText], plot: &Plot) -> Point {
+    let left = plot.y_labels_left();
+    let rows: Vec<f64> = plot.y_value_baselines().collect();
+    let near = |at: Point| {
+        lines.iter().enumerate().any(|(k, t)| {
+            let base = scale_line(at, k);
+            let apart = left - (base.x + t.width(SCALE_TEXT)) >= phrases::APART * SCALE_TEXT;
+            !apart && rows.iter().any(|&y| (y - base.y).abs() < ROW_CLEAR * SCALE_TEXT)
+        })
+    };
+    (0..=16).map(|k| at + Vec2::new(0.0, 0.5 * f64::from(k))).find(|&p| !near(p)).unwrap_or(at)
+}
+
+/// A scale line this many heights above or below a value's row is on a row of its own (the
+/// layout measure's one line is 0.4).
+const ROW_CLEAR: f64 = 0.6;
 
 /// The ticks within the range `(lo, hi)`.
 fn within(ticks: Vec<(f64, String)>, (lo, hi): (f64, f64)) -> Vec<(f64, String)> {

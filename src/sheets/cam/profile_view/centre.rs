@@ -5,7 +5,7 @@
 //! the arrow no clear start, the radius goes further round the dwell.
 
 use crate::cams::Design;
-use crate::drawing::along::along_line;
+use crate::drawing::along::{along_line, over};
 use crate::drawing::fmt;
 use crate::drawing::obstacles::{Obstacles, Piece};
 use crate::drawing::place::Labels;
@@ -45,13 +45,13 @@ pub fn draw(
     (draw_rotation(g, labels, view, omega), RMin { radius: (view.origin, end), value })
 }
 
-/// r_min's value along its radius where it finds room there (GOST 2.307, as on the
-/// nomogram), else level beside it on a leader if need be; after every line of the view
-/// is drawn, before the labels are placed.
+/// r_min's value along its radius where it finds room there, over it where it can (GOST
+/// 2.307, as on the nomogram), else level beside it on a leader if need be; after every
+/// line of the view is drawn, before the labels are placed.
 pub fn write_r_min(g: &mut Group, labels: &mut Labels, area: Rect, r_min: RMin) {
     let RMin { radius: (o, end), value } = r_min;
     let drawn = Obstacles::of_items(&g.items);
-    match along_line((&drawn, area), (clear_of_o(o, end), end), (&value, VALUE_H), None) {
+    match along_line((&drawn, area), (clear_of_o(o, end), end), (&value, VALUE_H), Some(over(o, end))) {
         Some(t) => g.text(t),
         None => labels.add_ranked(o + (end - o) * R_MIN_VALUE_AT, Vec2::ZERO, value, VALUE_H, 1),
     }
@@ -87,7 +87,8 @@ fn r_min_and_omega(g: &Group, (view, area): (View, Rect), d: &Design, value: &La
         // ω's own letter, outside its arrow's middle, is in the way too.
         let (out, _) = omega_middle(view, &omega);
         drawn.add(Piece::TextBox(Rect::from_center_size(view.origin + out * (omega.r + 2.5), (4.0, 4.0))), usize::MAX);
-        let fits = along_line((&drawn, area), (clear_of_o(view.origin, end), end), (value, VALUE_H), None).is_some();
+        let radius = (clear_of_o(view.origin, end), end);
+        let fits = along_line((&drawn, area), radius, (value, VALUE_H), Some(over(view.origin, end))).is_some();
         // The radius leaves the middle only for a share where its value is written along
         // it, and ω's arrow crosses no more lines: where the value is set level it needs the
         // room the middle gives it (moved off it to clear ω, it went on 19–26 mm leaders on
