@@ -170,11 +170,13 @@ pub fn round_ticks(lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, Strin
 
 /// Ticks at the diagram's own force levels (each printed with its value left of the P
 /// axis, however near the S/H axis, from a millimetre off it; closer ones than 4 mm
-/// merged), then the round ticks of [`round_ticks`] that keep 4 mm clear of them and do not
+/// merged), then the round ticks of [`round_ticks`] that keep 7 mm clear of them and do not
 /// stand between two of them closer than 8 mm: a reader finds P_max, the idle level and
-/// every corner's level on the axis, and the round numbers apart from them.
+/// every corner's level on the axis, and the round numbers apart from them (6 mm apart, a
+/// teacher read the worked example's «−4000» over «−4600» as crowded).
 pub fn level_ticks(levels: &[f64], lo: f64, hi: f64, mu: f64, lang: Language) -> Vec<(f64, String)> {
     const CLEAR: f64 = 4.0;
+    const ROUND_CLEAR: f64 = 7.0;
     let mut marked: Vec<f64> = Vec::new();
     // A level nearer the axis than a millimetre is drawn on it.
     let mut sorted: Vec<f64> = levels.iter().copied().filter(|v| v.abs() / mu >= 1.0).collect();
@@ -190,7 +192,7 @@ pub fn level_ticks(levels: &[f64], lo: f64, hi: f64, mu: f64, lang: Language) ->
     let within = |v: f64, above: bool| marked.iter().any(|&m| (m > v) == above && (m - v).abs() / mu < 2.0 * CLEAR);
     let round = round_ticks(lo, hi, mu, lang);
     ticks.extend(round.into_iter().filter(|&(v, _)| {
-        marked.iter().all(|m| (m - v).abs() / mu >= CLEAR) && !(within(v, true) && within(v, false))
+        marked.iter().all(|m| (m - v).abs() / mu >= ROUND_CLEAR) && !(within(v, true) && within(v, false))
     }));
     ticks.sort_by(|a, b| a.0.total_cmp(&b.0));
     ticks
@@ -232,19 +234,22 @@ mod tests {
         let t = level_ticks(&[-1299.0, -130.0, -1299.0, 0.0], -1299.0, 0.0, 20.0, Language::Ru);
         let values: Vec<f64> = t.iter().map(|x| x.0).collect();
         // Round step 250 N (a sixth of 1299 N, rounded up): −1250 is 2.45 mm from −1299 and
-        // goes; −250 is 6 mm from −130 and stays.
-        assert_eq!(values, [-1299.0, -1000.0, -750.0, -500.0, -250.0, -130.0]);
+        // −250 6 mm from −130: both go; −500 is 18.5 mm from −130 and stays.
+        assert_eq!(values, [-1299.0, -1000.0, -750.0, -500.0, -130.0]);
         assert_eq!(t[0].1, "−1299");
         // A small idle level 1.5 mm from the axis is marked (its value left of the P axis,
         // where the S/H axis does not run); one 0.5 mm from it is drawn on the axis.
         let idle = level_ticks(&[30.0, -1000.0], -1000.0, 30.0, 20.0, Language::En);
         assert!(idle.iter().any(|x| x.0 == 30.0 && x.1 == "30"), "{idle:?}");
         assert!(level_ticks(&[10.0], 0.0, 1000.0, 20.0, Language::En).iter().all(|x| x.0 != 10.0));
-        // Round step 2000 N at 250 N/mm. Between levels at 9500 and 6500 N, both 6 mm off
+        // Round step 2000 N at 250 N/mm. Between levels at 9900 and 6100 N, both 7.6 mm off
         // it, 8000 goes; with the lower level at 5000 N, 12 mm off, it stays.
-        let sandwiched = level_ticks(&[9500.0, 6500.0, 0.0], 0.0, 9500.0, 250.0, Language::En);
+        let sandwiched = level_ticks(&[9900.0, 6100.0, 0.0], 0.0, 9900.0, 250.0, Language::En);
         assert!(sandwiched.iter().all(|x| x.0 != 8000.0), "{sandwiched:?}");
-        let open = level_ticks(&[9500.0, 5000.0, 0.0], 0.0, 9500.0, 250.0, Language::En);
+        let open = level_ticks(&[9900.0, 5000.0, 0.0], 0.0, 9900.0, 250.0, Language::En);
         assert!(open.iter().any(|x| x.0 == 8000.0), "{open:?}");
+        // The worked example's −4000 N, 6 mm from its working level −4600 N at 100 N/mm.
+        let worked = level_ticks(&[1650.0, -4600.0, 0.0], -4600.0, 1650.0, 100.0, Language::Ru);
+        assert!(worked.iter().all(|x| x.0 != -4000.0) && worked.iter().any(|x| x.0 == -2000.0), "{worked:?}");
     }
 }

@@ -97,7 +97,7 @@ pub(super) fn draw_load(
         names.push(name);
     }
     g.line(foot, mark, THIN);
-    g.circle(mark, 1.0, MAIN);
+    g.circle(mark, MARK_R, MAIN);
     let at_s = |b: usize, s: f64| signed(b, load.branches[b].curve.at(s));
     let arrows = stroke_arrows(g, &plot, &at_s, value.s);
     // Each stroke named beside its arrow, on the side away from the other stroke's line
@@ -147,14 +147,15 @@ pub(super) fn draw_load(
 
 /// The side of the S/H axis (above: `true`) its values stand on: the plot's own where no
 /// curve runs through them, else the other where none does there (a small idle force's line
-/// ran through "0", "0.5" and "1" above the axis, an audit of 120 random crank-sliders);
-/// `data` are the curves in the plot's units.
+/// ran through "0", "0.5" and "1" above the axis, an audit of 120 random crank-sliders; one
+/// passing over their tops, within a millimetre, reads as crossing them too); `data` are the
+/// curves in the plot's units.
 fn values_side(plot: &Plot, data: &[Vec<(f64, f64)>]) -> bool {
     let curves: Vec<Vec<Point>> = data.iter().map(|c| c.iter().map(|&(x, y)| plot.at(x, y)).collect()).collect();
     let crossed = |above: bool| {
         let p = Plot { x_above: Some(above), ..plot.clone() };
         p.x.ticks.iter().filter(|(_, label)| !label.is_empty()).any(|(v, label)| {
-            let b = p.x_value(*v, label).bbox().inflate(0.3, 0.3);
+            let b = p.x_value(*v, label).bbox().inflate(1.0, 1.0);
             curves.iter().any(|c| c.windows(2).any(|w| segment_meets_rect(w[0], w[1], b)))
         })
     };
@@ -163,16 +164,19 @@ fn values_side(plot: &Plot, data: &[Vec<(f64, f64)>]) -> bool {
 }
 
 /// Leaves out an x value that the analysed position's ordinate (from the axis to its mark)
-/// would cross: its tick stays, and the position's S/H is written under the diagram.
+/// or its mark's circle would cross: its tick stays, and the position's S/H is written under
+/// the diagram (a mark at S/H = 0 on an idle level 5 mm up stood on the «0»).
 fn leave_out_crossed_values(plot: &mut Plot, (foot, mark): (Point, Point)) {
     let (y0, y1) = (foot.y.min(mark.y), foot.y.max(mark.y));
+    let circle = Rect::from_center_size(mark, (2.0 * MARK_R, 2.0 * MARK_R)).inflate(0.3, 0.3);
     let crossed: Vec<bool> = plot
         .x
         .ticks
         .iter()
         .map(|(v, label)| {
             let b = plot.x_value(*v, label).bbox();
-            (b.x0 - 0.3..=b.x1 + 0.3).contains(&foot.x) && b.y0 < y1 && b.y1 > y0
+            let on_ordinate = (b.x0 - 0.3..=b.x1 + 0.3).contains(&foot.x) && b.y0 < y1 && b.y1 > y0;
+            on_ordinate || b.intersect(circle).area() > 0.0
         })
         .collect();
     for ((_, label), crossed) in plot.x.ticks.iter_mut().zip(crossed) {
@@ -181,6 +185,9 @@ fn leave_out_crossed_values(plot: &mut Plot, (foot, mark): (Point, Point)) {
         }
     }
 }
+
+/// The radius of the analysed position's mark on its stroke's line, mm.
+const MARK_R: f64 = 1.0;
 
 /// Clearance of a stroke's arrow from the analysed position's ordinate, the S/H values and
 /// the other stroke's arrow, along the axis, mm.
