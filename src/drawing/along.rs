@@ -29,12 +29,7 @@ const STEEP_DOWN: f64 = 0.866_025_403_784_438_6;
 /// `value` set along a dimension line through `at` whose unit normal is `normal`, centred
 /// on `at`, its box `off` mm from the line on `normal`'s side (on the other where negative).
 pub fn value_along(at: Point, normal: Vec2, off: f64, value: &LabelText, h: f64) -> Text {
-    // The baseline's direction and the letters' up: read from the drawing's bottom or its
-    // right (GOST 2.307's aligned values) — left to right, or upward where the line runs
-    // within 30° of the vertical down to the right (read downward, they face the left).
-    let right = if normal.y <= 0.0 { Vec2::new(-normal.y, normal.x) } else { Vec2::new(normal.y, -normal.x) };
-    let d = if right.y > STEEP_DOWN { -right } else { right };
-    let up = Vec2::new(d.y, -d.x);
+    let (d, up) = reading(Vec2::new(-normal.y, normal.x));
     // The baseline this far from the line along `normal`: the box's near side `off` from it.
     let (depth, top) = (0.3 * h, 1.05 * h);
     let shift = match (off > 0.0, up.dot(normal) > 0.0) {
@@ -52,10 +47,17 @@ pub fn value_along(at: Point, normal: Vec2, off: f64, value: &LabelText, h: f64)
 /// its letters' up, as [`value_along`] turns them — above a level or slanted line, left of
 /// a vertical one.
 pub fn over(a: Point, b: Point) -> Vec2 {
-    let u = (b - a).unit();
+    reading((b - a).unit()).1
+}
+
+/// The baseline's direction and the letters' up of a value along a line running `u` (a
+/// unit vector either way along it): read from the drawing's bottom or its right (GOST
+/// 2.307's aligned values) — left to right, or upward where the line runs within 30° of
+/// the vertical down to the right (read downward, they face the left).
+fn reading(u: Vec2) -> (Vec2, Vec2) {
     let right = if u.x >= 0.0 { u } else { -u };
     let d = if right.y > STEEP_DOWN { -right } else { right };
-    Vec2::new(d.y, -d.x)
+    (d, Vec2::new(d.y, -d.x))
 }
 
 /// `value` along the dimension line a–b, clear of `drawn` and inside `area`: beside its middle, else moved

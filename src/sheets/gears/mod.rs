@@ -221,18 +221,15 @@ fn mesh_group(
     // The real numbers may still set the notes taller (a column ending elsewhere: a pair of
     // 133/133 teeth had its notes in three columns with the stand-ins, in one with its own
     // and 22 mm taller, off the page): then the mesh is drawn again above that height.
-    let mut drawn = None;
-    for _ in 0..3 {
+    for tries in 1.. {
         room.check(&assumptions, notes_h)?;
         let (mesh, real_h) = mesh_over_notes(p, region, (&notes, notes_w, notes_h), words);
-        let fits = real_h <= notes_h + 1e-9;
-        drawn = Some(mesh);
-        if fits {
-            break;
+        if real_h <= notes_h + 1e-9 || tries == 3 {
+            return Ok(mesh);
         }
         notes_h = real_h;
     }
-    Ok(drawn.expect("drawn at least once"))
+    unreachable!("the tries end at the third")
 }
 
 /// The mesh's group in `region` with the notes (`notes`, set `notes_w` wide) under its
