@@ -9,7 +9,7 @@ use common::{fixture, fixture_names};
 use std::sync::OnceLock;
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::drawing::layout::texts_near_lines;
-use tmm_sheets::drawing::scene::{Group, Item, MAIN, Scene, VECTOR};
+use tmm_sheets::drawing::scene::{Group, Item, MAIN, STUB, Scene, THIN, VECTOR};
 use tmm_sheets::num::math::Norm;
 use tmm_sheets::pipeline;
 
@@ -414,4 +414,78 @@ fn an_inertia_moments_name_stands_beside_its_arc() {
             .fold(0.0, f64::max);
         assert!(longest <= 20.0, "{lang:?}: a leader of {longest:.1} mm in the force analysis");
     }
+}
+
+/// A line's end this near a label's letters is at a break for it, mm (the placer's 1.2 mm
+/// gap round a label's box, which stands up to about a millimetre off its letters).
+const AT_A_BREAK: f64 = 2.2;
+
+/// The pieces of breakable line shorter than [`STUB`] with both ends at a label's break
+/// (near its letters, and not where the line ends as drawn),
+/// each named; and how many short pieces were checked.
+fn stubs_between_breaks(scene: &Scene) -> (usize, Vec<String>) {
+    let boxes: Vec<kurbo::Rect> = scene.groups.iter().flat_map(|g| g.texts().flat_map(|t| t.core_boxes())).collect();
+    let at_a_break = |p: kurbo::Point| {
+        boxes.iter().any(|b| {
+            let dx = (b.x0 - p.x).max(p.x - b.x1).max(0.0);
+            let dy = (b.y0 - p.y).max(p.y - b.y1).max(0.0);
+            dx * dx + dy * dy < AT_A_BREAK * AT_A_BREAK
+        })
+    };
+    let (mut checked, mut stubs) = (0, Vec::new());
+    for g in &scene.groups {
+        for &k in &g.breakable {
+            let Item::Path { path, .. } = &g.items[k] else { continue };
+            if path.closed || path.length() >= STUB {
+                continue;
+            }
+            checked += 1;
+            let (a, b) = (path.start, path.end());
+            if !g.is_line_end(a) && !g.is_line_end(b) && at_a_break(a) && at_a_break(b) {
+                stubs.push(format!(
+                    "'{}' {:.1} mm ({:.1}, {:.1})–({:.1}, {:.1})",
+                    g.id,
+                    path.length(),
+                    a.x,
+                    a.y,
+                    b.x,
+                    b.y
+                ));
+            }
+        }
+    }
+    (checked, stubs)
+}
+
+/// A line passing two labels close together is not left as a 1–3 mm stub between their
+/// breaks: read at 150 dpi, such a stub is a stray tick, not the line (a teacher's mark
+/// on the four-bar's force drawing near R₃₂ and the worked example's crank near ω₁).
+#[test]
+fn no_stub_of_a_line_is_left_between_two_labels_breaks_on_any_fixture() {
+    let (checked, stubs) = on_every_fixture(stubs_between_breaks);
+    assert!(checked > 20, "only {checked} short pieces");
+    assert!(stubs.is_empty(), "{} stubs between two breaks:\n{}", stubs.len(), stubs.join("\n"));
+}
+
+/// A line broken for labels set one after another (each placement breaks the lines for
+/// its own): the piece left between two breaks, 2 mm, goes; the line's own short end,
+/// 1 mm past a break, stays (it is where the line ends), and so does a 3 mm piece.
+#[test]
+fn a_stub_between_two_breaks_goes_but_a_lines_short_end_stays() {
+    let mut g = Group::new("g", kurbo::Rect::new(0.0, -10.0, 50.0, 10.0));
+    g.line(kurbo::Point::new(0.0, 0.0), kurbo::Point::new(40.0, 0.0), THIN);
+    g.breakable_from(0);
+    let gap = |x0: f64, x1: f64| kurbo::Rect::new(x0, -1.0, x1, 1.0);
+    g.interrupt_breakable(&[gap(1.0, 10.0)]);
+    g.interrupt_breakable(&[gap(12.0, 20.0)]);
+    g.interrupt_breakable(&[gap(23.0, 30.0), gap(32.0, 39.0)]);
+    let spans: Vec<(f64, f64)> = (g.items.iter())
+        .map(|i| match i {
+            Item::Path { path, .. } => (path.start.x, path.end().x),
+            _ => unreachable!(),
+        })
+        .collect();
+    assert_eq!(spans, vec![(0.0, 1.0), (20.0, 23.0), (39.0, 40.0)], "3 mm is one stub, kept");
+    assert_eq!(STUB, 3.0);
+    assert_eq!(g.breakable, vec![0, 1, 2]);
 }

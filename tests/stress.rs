@@ -34,6 +34,41 @@ fn seed() -> RngSeed {
 
 const HEADER: &str = "project:\n  title: {uz: \"Sinov\", ru: \"Проба\", en: \"Stress\"}\n  designation: {uz: \"MMN KL 00.00.00\", ru: \"ТММ КП 00.00.00\", en: \"TMM CP 00.00.00\"}\n  language: en\n\n";
 
+/// A crank-slider with its rod's and slider's masses and a load on the slider, as the
+/// mechanism sweep writes it: the crank (length m, rpm, clockwise), the rod's length (m),
+/// the guide (its height through x = 0, m; its angle, °), φ₁ analysed (°), the masses
+/// (kg) and the load (the stroke it works on, its force and its idle force, N).
+fn loaded_crank_slider(
+    (crank, rpm): (f64, f64),
+    rod: f64,
+    (guide_y, guide_deg): (f64, f64),
+    assigned_deg: f64,
+    (m2, m3): (f64, f64),
+    (working, force, idle): (&str, f64, f64),
+) -> String {
+    format!(
+        "{HEADER}mechanism:
+  frame:
+    - {{name: O, at: [0.0, 0.0]}}
+  crank: {{pivot: O, pin: A, length: {crank}, rpm: {rpm}, sense: cw}}
+  groups:
+    - rrp: {{links: [2, 3], joint: A, point: B, length: {rod}, guide: {{through: [0.0, {guide_y}], angle_deg: {guide_deg}}}, branch: forward}}
+  points:
+    - {{name: S2, link: 2, from: A, toward: B, ratio: 0.32, mass_centre: true}}
+    - {{name: S3, link: 3, from: B, mass_centre: true}}
+analysis:
+  positions: 12
+  assigned_deg: {assigned_deg}
+forces:
+  links:
+    - {{link: 2, mass: {m2}, inertia: rod}}
+    - {{link: 3, mass: {m3}}}
+  loads:
+    - resistance: {{point: B, working: {working}, force: {force}, idle_force: {idle}}}
+"
+    )
+}
+
 /// How a case ended.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Outcome {
@@ -321,27 +356,13 @@ fn a_five_tooth_pinions_pitch_value_stands_clear_of_its_sense_arrow() {
 /// group's title. A twin no longer pushes into the side a force still to come leaves by.
 #[test]
 fn a_slider_pushed_into_from_above_keeps_its_load_arrow_under_the_group_title() {
-    let text = format!(
-        "{HEADER}{}",
-        r#"mechanism:
-  frame:
-    - {name: O, at: [0.0, 0.0]}
-  crank: {pivot: O, pin: A, length: 0.206268, rpm: 339.0, sense: cw}
-  groups:
-    - rrp: {links: [2, 3], joint: A, point: B, length: 0.559253, guide: {through: [0.0, 0.000000], angle_deg: 81.754}, branch: forward}
-  points:
-    - {name: S2, link: 2, from: A, toward: B, ratio: 0.32, mass_centre: true}
-    - {name: S3, link: 3, from: B, mass_centre: true}
-analysis:
-  positions: 12
-  assigned_deg: 288.228
-forces:
-  links:
-    - {link: 2, mass: 37.20, inertia: rod}
-    - {link: 3, mass: 22.32}
-  loads:
-    - resistance: {point: B, working: forward, force: 44731.5, idle_force: 18332.2}
-"#
+    let text = loaded_crank_slider(
+        (0.206268, 339.0),
+        0.559253,
+        (0.000000, 81.754),
+        288.228,
+        (37.20, 22.32),
+        ("forward", 44731.5, 18332.2),
     );
     assert_eq!(verdict(&text), Ok(Outcome::Built));
 }
@@ -373,27 +394,29 @@ fn a_turn_arrow_keeps_off_a_strokes_value_written_before_it() {
 /// lines cross a text now comes after every one whose lines do not.
 #[test]
 fn a_slider_strokes_dimension_keeps_off_the_trajectories_legend() {
-    let text = format!(
-        "{HEADER}{}",
-        r#"mechanism:
-  frame:
-    - {name: O, at: [0.0, 0.0]}
-  crank: {pivot: O, pin: A, length: 0.187398, rpm: 60.0, sense: cw}
-  groups:
-    - rrp: {links: [2, 3], joint: A, point: B, length: 0.502822, guide: {through: [0.0, -0.040406], angle_deg: 201.292}, branch: forward}
-  points:
-    - {name: S2, link: 2, from: A, toward: B, ratio: 0.32, mass_centre: true}
-    - {name: S3, link: 3, from: B, mass_centre: true}
-analysis:
-  positions: 12
-  assigned_deg: 0.000
-forces:
-  links:
-    - {link: 2, mass: 1.00, inertia: rod}
-    - {link: 3, mass: 0.60}
-  loads:
-    - resistance: {point: B, working: backward, force: 100.0, idle_force: 61.3}
-"#
+    let text = loaded_crank_slider(
+        (0.187398, 60.0),
+        0.502822,
+        (-0.040406, 201.292),
+        0.000,
+        (1.00, 0.60),
+        ("backward", 100.0, 61.3),
+    );
+    assert_eq!(verdict(&text), Ok(Outcome::Built));
+}
+
+/// A crank-slider a random sweep found at stop 93, its guide at 214°: no offset of its
+/// stroke's dimension left the extension line clear of the trajectories' legend in the
+/// region's bottom left corner. The legend moves to a corner the drawing leaves free.
+#[test]
+fn a_legend_crossed_by_the_drawing_moves_to_a_free_corner() {
+    let text = loaded_crank_slider(
+        (0.05, 60.0),
+        0.333333,
+        (0.075834, 214.109),
+        66.105,
+        (1.00, 0.60),
+        ("backward", 100.0, 0.1),
     );
     assert_eq!(verdict(&text), Ok(Outcome::Built));
 }

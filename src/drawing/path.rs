@@ -7,7 +7,7 @@
 
 use crate::num::math;
 use crate::num::tol;
-use kurbo::{Arc, BezPath, CubicBez, ParamCurve, ParamCurveExtrema, PathSeg, Point, Rect};
+use kurbo::{Arc, BezPath, CubicBez, ParamCurve, ParamCurveArclen, ParamCurveExtrema, PathSeg, Point, Rect};
 
 /// One piece of a path, starting where the previous one ends.
 #[derive(Debug, Clone, PartialEq)]
@@ -86,6 +86,11 @@ impl Path {
         let mut p = Path::new(on_circle(center, r, start_angle));
         p.segs.push(Seg::Arc(Arc::new(center, (r, r), start_angle, sweep, 0.0)));
         p
+    }
+
+    /// The path's length along its pieces (mm, within [`tol::ARC_MEASURE`]).
+    pub fn length(&self) -> f64 {
+        self.to_bez().segments().map(|s| s.arclen(tol::ARC_MEASURE)).sum()
     }
 
     pub fn end(&self) -> Point {

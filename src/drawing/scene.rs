@@ -254,7 +254,14 @@ pub struct Group {
     /// plan's other positions of the links, the trajectories: GOST 2.316 interrupts lines
     /// at an inscription), by item index, ascending.
     pub breakable: Vec<usize>,
+    /// Where the breakable lines end as drawn, before any break: a piece of one ending
+    /// elsewhere ends at a break.
+    line_ends: Vec<Point>,
 }
+
+/// The shortest piece of a line kept between two breaks, mm: shorter, at 150 dpi it reads
+/// as a stray tick between two labels («φ_ut = 30°|»), not as the line passing them.
+pub const STUB: f64 = 3.0;
 
 /// The most breakable lines (a link's position, a trajectory's dash) one text may
 /// interrupt: a label's, or a stroke's value along its dimension line.
@@ -270,6 +277,7 @@ impl Group {
             writing: Vec::new(),
             leaders: Vec::new(),
             breakable: Vec::new(),
+            line_ends: Vec::new(),
         }
     }
 
@@ -300,24 +308,33 @@ impl Group {
     /// cubics as breakable (see [`Group::breakable`]).
     pub fn breakable_from(&mut self, start: usize) {
         for k in start..self.items.len() {
-            if matches!(&self.items[k], Item::Path { path, .. } if path.has_no_arc()) {
+            if let Item::Path { path, .. } = &self.items[k]
+                && path.has_no_arc()
+            {
+                self.line_ends.extend([path.start, path.end()]);
                 self.breakable.push(k);
             }
         }
     }
 
     /// Interrupts the breakable lines where they cross the boxes `gaps` (labels and values
-    /// set on them).
+    /// set on them). A piece left between two breaks shorter than [`STUB`] goes too.
     pub fn interrupt_breakable(&mut self, gaps: &[Rect]) {
         if gaps.is_empty() {
             return;
         }
         for k in self.breakable.clone().into_iter().rev() {
             let Item::Path { path, pen } = &self.items[k] else { continue };
-            let Some(runs) = path.outside_rects(gaps) else { continue };
+            let Some(mut runs) = path.outside_rects(gaps) else { continue };
             let pen = *pen;
+            runs.retain(|run| self.is_line_end(run.start) || self.is_line_end(run.end()) || run.length() >= STUB);
             self.split_item(k, runs.into_iter().map(|path| Item::Path { path, pen }).collect());
         }
+    }
+
+    /// Whether `p` is where a breakable line ends as drawn (not a break's end).
+    pub fn is_line_end(&self, p: Point) -> bool {
+        self.line_ends.iter().any(|e| (*e - p).hypot2() < 1e-18)
     }
 
     /// Replaces item `k` by `pieces` (none: removes it), keeping every index the group holds

@@ -18,7 +18,7 @@ use super::scene::{Anchor, Group, THIN};
 use super::text::{LabelText, SLANT, SUB};
 use crate::num::math::Norm;
 use breakable::{LONG_LEADER, on_breakable};
-use candidate::{Candidate, TOUCH, Verdict, least_bad};
+use candidate::{Candidate, Verdict, least_bad};
 use kurbo::{Point, Rect, Vec2};
 use lined::unlined;
 pub use request::Placed;
@@ -153,6 +153,12 @@ impl Labels {
     fn push_at_any(&mut self, spots: &[(Point, Vec2)], req: Request) {
         let Some((&(anchor, pref), others)) = spots.split_first() else { return };
         self.requests.push(Request { anchor, pref, others: others.to_vec(), ..req });
+    }
+
+    /// As [`Labels::add_ranked_at_any`], a label whose spots lie on a drawn line (an
+    /// angle's value on its arc): a leader, where it needs one, starts on the line.
+    pub fn add_on_line_at_any(&mut self, spots: &[(Point, Vec2)], label: LabelText, h: f64, rank: u8) {
+        self.push_at_any(spots, Request { rank, on_line: true, ..Request::new(Point::ZERO, Vec2::ZERO, label, h) });
     }
 
     /// A line's name (a profile's, a circle's) with `anchor` on the line: set off on a leader

@@ -1,7 +1,8 @@
 //! One label waiting to be placed: its anchors, its lines, its rank and what it names.
 
 use super::candidate::Candidate;
-use super::{LINE_PITCH, label_size};
+use super::candidate::TOUCH;
+use super::{LEADER_GAP, LINE_PITCH, label_size};
 use crate::drawing::phrases;
 use crate::drawing::text::LabelText;
 use kurbo::{Point, Vec2};
@@ -35,6 +36,10 @@ pub(super) struct Request {
     pub(super) rank: u8,
     /// A label naming a line (a curve's name): always on a leader that touches the line.
     pub(super) names_line: bool,
+    /// Its anchors lie on a drawn line (an angle's arc), not at a joint's circle: a leader
+    /// starts on the line (with a gap off it, 2–3 mm of leader read as a dash in the text,
+    /// «−φ_fd = 20°», «φ_ut = 30°|»).
+    pub(super) on_line: bool,
     /// The segment the label names (a polygon's side): a spot nearer another named segment
     /// than this one reads as that one's name, and is taken only when no other is free.
     pub(super) side: Option<(Point, Point)>,
@@ -61,6 +66,7 @@ impl Request {
             h,
             rank: 0,
             names_line: false,
+            on_line: false,
             side: None,
             states_value,
             apart_from_taller: false,
@@ -77,8 +83,19 @@ impl Request {
         })
     }
 
-    /// A candidate's leader as drawn: a line's name's reaches the line it names.
+    /// A candidate's leader as drawn: one from a line reaches the line.
     pub(super) fn drawn_leader(&self, c: &Candidate) -> Option<(Point, Point)> {
-        c.leader.map(|(a, b)| (if self.names_line { c.anchor } else { a }, b))
+        c.leader.map(|(a, b)| (if self.leader_from_line() { c.anchor } else { a }, b))
+    }
+
+    /// Whether its leader starts on its anchor's line (checked from [`TOUCH`] off it).
+    fn leader_from_line(&self) -> bool {
+        self.names_line || self.on_line
+    }
+
+    /// How far off the anchor its leader is checked from, mm: a joint's leader keeps clear
+    /// of the joint's circle.
+    pub(super) fn leader_gap(&self) -> f64 {
+        if self.leader_from_line() { TOUCH } else { LEADER_GAP }
     }
 }

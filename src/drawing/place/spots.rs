@@ -2,7 +2,7 @@
 //! [`DIRECTIONS`] turns from the preferred direction, a further anchor's dearer by a few
 //! distance steps, each with its leader when it stands off.
 
-use super::{Candidate, DIRECTIONS, DISTANCES, LEADER_FROM, LEADER_GAP, Request, TOUCH, Verdict};
+use super::{Candidate, DIRECTIONS, DISTANCES, LEADER_FROM, Request, Verdict};
 use crate::num::math::{self, Norm};
 use crate::num::tol;
 use kurbo::{Point, Rect, Vec2};
@@ -186,7 +186,7 @@ impl Around {
         if !math::rect_inside(bounds, r) {
             return None;
         }
-        let gap = if req.names_line { TOUCH } else { LEADER_GAP };
+        let gap = req.leader_gap();
         let leader = (dist >= LEADER_FROM).then(|| leader(self.anchor, r, gap));
         // A direction's spots share a slot of hints (a direction past the slots would have
         // none: the answers are the same).

@@ -7,7 +7,7 @@
 use super::candidate::{Candidate, Verdict};
 use super::crossings::crosses_walls;
 use super::spots::leader;
-use super::{LEADER_FROM, LEADER_GAP, Labels, Layers, TOUCH};
+use super::{LEADER_FROM, Labels, Layers};
 use crate::num::math::{Norm, lines_cross, rect_inside};
 use kurbo::{Point, Rect};
 
@@ -90,7 +90,7 @@ impl Labels {
     fn moved(&self, k: usize, c: &Candidate, centre: Point) -> Candidate {
         let r = Rect::from_center_size(centre, c.r.size());
         let nearest = Point::new(c.anchor.x.clamp(r.x0, r.x1), c.anchor.y.clamp(r.y0, r.y1));
-        let gap = if self.requests[k].names_line { TOUCH } else { LEADER_GAP };
+        let gap = self.requests[k].leader_gap();
         let leader = ((nearest - c.anchor).norm() >= LEADER_FROM).then(|| leader(c.anchor, r, gap));
         Candidate { r, leader, ..c.clone() }
     }

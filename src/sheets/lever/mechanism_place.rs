@@ -8,6 +8,8 @@ use super::labels::LeverWords;
 use super::mechanism_view::{
     DETAIL_GAP, DetailAt, DetailPlace, MechanismView, SLIDER_SAME_MM, TRAJECTORY, detail_place, mu_l_text, world_extent,
 };
+use crate::drawing::obstacles::Obstacles;
+use crate::drawing::path::Path;
 use crate::drawing::place::{Labels, NUMBERS_RANK};
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, Item, Text};
@@ -143,7 +145,7 @@ pub(super) fn mechanism_group(
     let draw_as = |detail: Option<(DetailPlace, Option<Rect>)>, slider_same_mm: f64, numbers: SliderNumbering| {
         let mut group = Group::new("mechanism", region);
         mechanism_header(&mut group, region, mu_l, k, words);
-        trajectory_legend(&mut group, region, words);
+        let legend = trajectory_legend(&mut group, region, words);
         let mut labels = Labels::new();
         let kulisa = &inp.project.kulisa_lengths;
         let view = View::new(origin, mu_l);
@@ -159,6 +161,7 @@ pub(super) fn mechanism_group(
             numbers_beyond_hatching: numbers.beyond_hatching,
         };
         let drawn = mv.draw(&mut group, &mut labels);
+        legend_off_the_drawing(&mut group, legend, region, words);
         let placed = labels.place_measured(&mut group, region.inflate(-0.5, -0.5));
         let farthest = placed.iter().filter(|p| p.rank >= NUMBERS_RANK).map(|p| p.leader).fold(0.0, f64::max);
         let unplaced = placed.iter().filter(|p| !p.clean).count();
@@ -249,16 +252,71 @@ fn header_width(mu_l: f64, k: &Kinematics, words: &LeverWords) -> f64 {
     let lines = header_lines(mu_l, k, words);
     let line = lines.iter().map(|l| l.width(3.5) + 8.0).sum::<f64>() - 8.0;
     let title = LabelText::new(words.sheet.positions_title(), "").width(5.0);
-    let legend = 16.0 + LabelText::new(words.sheet.trajectories(), "").width(2.5);
+    let legend = LEGEND_SAMPLE + LabelText::new(words.sheet.trajectories(), "").width(2.5);
     line.max(title).max(legend) + 6.0 - 2.0 * MECH_PAD
 }
 
-/// The legend shows the trajectories' own line type, then says what it is.
-fn trajectory_legend(g: &mut Group, region: Rect, words: &LeverWords) {
-    let legend_y = region.y1 - 2.0;
-    let sample = (Point::new(region.x0 + 2.0, legend_y - 1.2), Point::new(region.x0 + 16.0, legend_y - 1.2));
-    g.writing_line(sample.0, sample.1, TRAJECTORY);
-    g.text(Text::new(Point::new(region.x0 + 18.0, legend_y), words.sheet.trajectories(), 2.5, Anchor::Start));
+/// The legend shows the trajectories' own line type, then says what it is: drawn in the
+/// region's bottom left corner (the drawing keeps off it where it can), its two items.
+fn trajectory_legend(g: &mut Group, region: Rect, words: &LeverWords) -> [usize; 2] {
+    let k = g.mark();
+    for item in legend_items(region, words, Corner::BottomLeft) {
+        g.items.push(item);
+    }
+    g.writing.push(k);
+    [k, k + 1]
+}
+
+/// A corner of the mechanism's region the legend may stand in.
+#[derive(Clone, Copy)]
+enum Corner {
+    BottomLeft,
+    BottomRight,
+    TopLeft,
+    TopRight,
+}
+
+/// The legend's sample line and its words in `corner` of `region` (a top corner under
+/// the header).
+fn legend_items(region: Rect, words: &LeverWords, corner: Corner) -> [Item; 2] {
+    let text = words.sheet.trajectories();
+    let w = LEGEND_SAMPLE + LabelText::new(text, "").width(2.5);
+    let x0 = match corner {
+        Corner::BottomLeft | Corner::TopLeft => region.x0 + 2.0,
+        Corner::BottomRight | Corner::TopRight => region.x1 - 2.0 - w,
+    };
+    let y = match corner {
+        Corner::BottomLeft | Corner::BottomRight => region.y1 - 2.0,
+        Corner::TopLeft | Corner::TopRight => region.y0 + HEADER + 3.0,
+    };
+    let sample = Path::polyline(&[Point::new(x0, y - 1.2), Point::new(x0 + 14.0, y - 1.2)], false);
+    [
+        Item::Path { path: sample, pen: TRAJECTORY },
+        Item::Text(Text::new(Point::new(x0 + LEGEND_SAMPLE, y), text, 2.5, Anchor::Start)),
+    ]
+}
+
+/// From the legend's sample line's start to its words, mm.
+const LEGEND_SAMPLE: f64 = 16.0;
+
+/// Moves the legend (its `items`) to the first corner of `region` where no line of the
+/// drawing meets it, if one meets it where it stands: a stroke's dimension, with no
+/// offset left clear of it, ran its extension line through the words (a crank-slider with
+/// its guide at 214°, found by the random sweep).
+fn legend_off_the_drawing(g: &mut Group, items: [usize; 2], region: Rect, words: &LeverWords) {
+    let drawn = Obstacles::of_items(&g.items[items[1] + 1..]);
+    let clear = |legend: &[Item; 2]| {
+        let r = legend[0].bbox().union(legend[1].bbox());
+        drawn.is_clear(r.inflate(1.0, 1.0))
+    };
+    if clear(&[g.items[items[0]].clone(), g.items[items[1]].clone()]) {
+        return;
+    }
+    let corners = [Corner::BottomRight, Corner::TopLeft, Corner::TopRight];
+    if let Some([line, text]) = corners.iter().map(|&c| legend_items(region, words, c)).find(clear) {
+        g.items[items[0]] = line;
+        g.items[items[1]] = text;
+    }
 }
 
 /// A mechanism region, its scale, the drawing's height and the crank's detail.

@@ -94,7 +94,7 @@ pub(super) fn draw(g: &mut Group, labels: &mut Labels, view: View, d: &Design, w
                 (on_circle(o, r, at), Vec2::new(math::cos(at), math::sin(at)))
             })
             .collect();
-        labels.add_ranked_at_any(&spots, LabelText::new("φ", sub).with_tail(value), 2.5, PHASE_RANK);
+        labels.add_on_line_at_any(&spots, LabelText::new("φ", sub).with_tail(value), 2.5, PHASE_RANK);
     }
 }
 
