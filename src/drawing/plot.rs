@@ -186,7 +186,8 @@ pub fn level_ticks(levels: &[f64], lo: f64, hi: f64, mu: f64, lang: Language) ->
             marked.push(v);
         }
     }
-    let mut ticks: Vec<(f64, String)> = marked.iter().map(|&v| (v, fmt::trimmed(v, lang))).collect();
+    // Written alike, at the largest's decimals: «203.6» under «1357» read as two precisions.
+    let mut ticks: Vec<(f64, String)> = marked.iter().copied().zip(fmt::values_alike(&marked, lang)).collect();
     // A round value between two levels both within twice that reads as one more corner's
     // level ("9121, 8000, 7069" up an indicator diagram's axis): it goes too.
     let within = |v: f64, above: bool| marked.iter().any(|&m| (m > v) == above && (m - v).abs() / mu < 2.0 * CLEAR);
@@ -242,6 +243,11 @@ mod tests {
         let idle = level_ticks(&[30.0, -1000.0], -1000.0, 30.0, 20.0, Language::En);
         assert!(idle.iter().any(|x| x.0 == 30.0 && x.1 == "30"), "{idle:?}");
         assert!(level_ticks(&[10.0], 0.0, 1000.0, 20.0, Language::En).iter().all(|x| x.0 != 10.0));
+        // One precision up the axis: the offset crank-slider's levels read «203.6» under
+        // «1357»; at the largest's four digits, 6786 N, every level is whole.
+        let alike = level_ticks(&[203.6, 1357.2, 6786.0], 0.0, 6786.0, 50.0, Language::En);
+        let written: Vec<&str> = alike.iter().filter(|x| x.0 % 1000.0 != 0.0).map(|x| x.1.as_str()).collect();
+        assert_eq!(written, ["204", "1357", "6786"]);
         // Round step 2000 N at 250 N/mm. Between levels at 9900 and 6100 N, both 7.6 mm off
         // it, 8000 goes; with the lower level at 5000 N, 12 mm off, it stays.
         let sandwiched = level_ticks(&[9900.0, 6100.0, 0.0], 0.0, 9900.0, 250.0, Language::En);
