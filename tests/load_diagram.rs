@@ -167,3 +167,32 @@ fn a_stroke_along_the_axis_is_named_away_from_the_stroke_values() {
         }
     }
 }
+
+/// The analysed position's «φ₁ = 60,0°» stands off the S/H values' row: with its mark on
+/// the axis, the offset crank-slider's stood under it between «0» and «0,5», read as one
+/// more value. No φ₁ of a load diagram stands level with an S/H value's row within the
+/// axis, on the fixtures with a load, in every language.
+#[test]
+fn the_analysed_positions_angle_keeps_off_the_stroke_values_row() {
+    for name in ["crank-slider-offset-vertical", "crank-slider-axial", "two-cylinder-compressor", "worked-example"] {
+        for lang in Language::ALL {
+            let mut p = common::fixture(name);
+            p.info.language = lang;
+            let lever = common::build_lever(&p);
+            for g in lever.composed.scene.groups.iter().filter(|g| g.id.starts_with("forces")) {
+                let texts: Vec<_> = g
+                    .items
+                    .iter()
+                    .filter_map(|i| if let Item::Text(t) = i { Some((t, t.bbox())) } else { None })
+                    .collect();
+                let halves: Vec<_> = texts.iter().filter(|(t, _)| t.text == "0,5" || t.text == "0.5").collect();
+                for (_, h) in &halves {
+                    for (t, b) in texts.iter().filter(|(t, _)| t.text == "φ" && t.plain().contains('°')) {
+                        let same_row = b.y0 < h.y1 && b.y1 > h.y0;
+                        assert!(!same_row, "{name} {lang:?}: «{}» on the S/H values' row", t.plain());
+                    }
+                }
+            }
+        }
+    }
+}

@@ -127,7 +127,18 @@ pub(super) fn draw_load(
     // "φ1 = 45,0° ishchi yurish" read as one phrase.
     let off = |b: usize| (signed(b, load.branches[b].curve.at(value.s)) - along).abs();
     let on = (0..load.branches.len()).min_by(|&a, &b| off(a).total_cmp(&off(b))).unwrap_or(0);
-    let side = -names.get(on).map_or(-1.0, |n| n.1.y.signum());
+    // A mark on the axis (within 3 mm) takes φ₁ away from the S/H values, whose row it
+    // would join («0   φ₁ = 60,0°   0,5   1», the offset crank-slider); the band of their
+    // row is kept clear of it either way.
+    let on_axis = (mark.y - foot.y).abs() < 3.0;
+    let side = if on_axis {
+        if plot.x_values_above() { 1.0 } else { -1.0 }
+    } else {
+        -names.get(on).map_or(-1.0, |n| n.1.y.signum())
+    };
+    if let Some(row) = x_values_row(&plot) {
+        labels.keep_clear(row);
+    }
     for (at, pref, name) in names {
         labels.add_text(at, pref, name, 2.5);
     }
@@ -143,6 +154,17 @@ pub(super) fn draw_load(
     ];
     text_rows(g, r.x0 + 2.0, r.y1 - 2.0 - LINE, &lines);
     (mu, area.width())
+}
+
+/// The band of the S/H values' row, along the whole axis (a label there reads as one more
+/// value), if any value is written.
+fn x_values_row(plot: &Plot) -> Option<Rect> {
+    let row = (plot.x.ticks.iter())
+        .filter(|(_, label)| !label.is_empty())
+        .map(|(v, label)| plot.x_value(*v, label).bbox())
+        .reduce(|a, b| a.union(b))?;
+    let area = plot.area();
+    Some(Rect::new(area.x0, row.y0, area.x1, row.y1))
 }
 
 /// The side of the S/H axis (above: `true`) its values stand on: the plot's own where no
