@@ -304,12 +304,15 @@ const LEGEND_SAMPLE: f64 = 16.0;
 /// offset left clear of it, ran its extension line through the words (a crank-slider with
 /// its guide at 214°, found by the random sweep).
 fn legend_off_the_drawing(g: &mut Group, items: [usize; 2], region: Rect, words: &LeverWords) {
+    let room = |legend: &[Item; 2]| legend[0].bbox().union(legend[1].bbox()).inflate(1.0, 1.0);
+    // Nothing drawn even near it, mostly: the drawing is not indexed for nothing.
+    let here = room(&[g.items[items[0]].clone(), g.items[items[1]].clone()]);
+    if g.items[items[1] + 1..].iter().all(|i| !i.bbox().overlaps(here)) {
+        return;
+    }
     let drawn = Obstacles::of_items(&g.items[items[1] + 1..]);
-    let clear = |legend: &[Item; 2]| {
-        let r = legend[0].bbox().union(legend[1].bbox());
-        drawn.is_clear(r.inflate(1.0, 1.0))
-    };
-    if clear(&[g.items[items[0]].clone(), g.items[items[1]].clone()]) {
+    let clear = |legend: &[Item; 2]| drawn.is_clear(room(legend));
+    if drawn.is_clear(here) {
         return;
     }
     let corners = [Corner::BottomRight, Corner::TopLeft, Corner::TopRight];
