@@ -9,6 +9,7 @@ use common::{fixture, fixture_names};
 use std::sync::OnceLock;
 use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::drawing::layout::texts_near_lines;
+use tmm_sheets::drawing::obstacles::rect_segment_distance;
 use tmm_sheets::drawing::scene::{Group, Item, MAIN, STUB, Scene, THIN, VECTOR};
 use tmm_sheets::num::math::Norm;
 use tmm_sheets::pipeline;
@@ -425,13 +426,7 @@ const AT_A_BREAK: f64 = 2.2;
 /// each named; and how many short pieces were checked.
 fn stubs_between_breaks(scene: &Scene) -> (usize, Vec<String>) {
     let boxes: Vec<kurbo::Rect> = scene.groups.iter().flat_map(|g| g.texts().flat_map(|t| t.core_boxes())).collect();
-    let at_a_break = |p: kurbo::Point| {
-        boxes.iter().any(|b| {
-            let dx = (b.x0 - p.x).max(p.x - b.x1).max(0.0);
-            let dy = (b.y0 - p.y).max(p.y - b.y1).max(0.0);
-            dx * dx + dy * dy < AT_A_BREAK * AT_A_BREAK
-        })
-    };
+    let at_a_break = |p: kurbo::Point| boxes.iter().any(|b| rect_segment_distance(*b, (p, p)) < AT_A_BREAK);
     let (mut checked, mut stubs) = (0, Vec::new());
     for g in &scene.groups {
         for &k in &g.breakable {

@@ -304,18 +304,19 @@ const LEGEND_SAMPLE: f64 = 16.0;
 /// offset left clear of it, ran its extension line through the words (a crank-slider with
 /// its guide at 214°, found by the random sweep).
 fn legend_off_the_drawing(g: &mut Group, items: [usize; 2], region: Rect, words: &LeverWords) {
-    let room = |legend: &[Item; 2]| legend[0].bbox().union(legend[1].bbox()).inflate(1.0, 1.0);
+    let room = |line: &Item, text: &Item| line.bbox().union(text.bbox()).inflate(1.0, 1.0);
+    let here = room(&g.items[items[0]], &g.items[items[1]]);
+    let drawing = &g.items[items[1] + 1..];
     // Nothing drawn even near it, mostly: the drawing is not indexed for nothing.
-    let here = room(&[g.items[items[0]].clone(), g.items[items[1]].clone()]);
-    if g.items[items[1] + 1..].iter().all(|i| !i.bbox().overlaps(here)) {
+    if drawing.iter().all(|i| !i.bbox().overlaps(here)) {
         return;
     }
-    let drawn = Obstacles::of_items(&g.items[items[1] + 1..]);
-    let clear = |legend: &[Item; 2]| drawn.is_clear(room(legend));
+    let drawn = Obstacles::of_items(drawing);
     if drawn.is_clear(here) {
         return;
     }
     let corners = [Corner::BottomRight, Corner::TopLeft, Corner::TopRight];
+    let clear = |[line, text]: &[Item; 2]| drawn.is_clear(room(line, text));
     if let Some([line, text]) = corners.iter().map(|&c| legend_items(region, words, c)).find(clear) {
         g.items[items[0]] = line;
         g.items[items[1]] = text;
