@@ -484,3 +484,54 @@ fn a_stub_between_two_breaks_goes_but_a_lines_short_end_stays() {
     assert_eq!(STUB, 3.0);
     assert_eq!(g.breakable, vec![0, 1, 2]);
 }
+
+/// A leader's start this near a drawn line (its centre line), mm, touches it.
+const LEADER_ON: f64 = 0.2;
+
+/// The names set on a drawn arc or circle: a turn arrow's ω and ε, an angle's α, a
+/// generation picture's circles r, r_a, r_b, r_f.
+const ON_ARCS: [&str; 4] = ["ω", "ε", "α", "r"];
+
+/// The leaders of the names in [`ON_ARCS`] whose start touches no drawn line of their
+/// group, each named; and how many such leaders were checked. A leader's name is the text
+/// whose box its end comes within a millimetre of.
+fn leaders_off_their_arcs(scene: &Scene) -> (usize, Vec<String>) {
+    use tmm_sheets::drawing::obstacles::segments;
+    let (mut checked, mut floating) = (0, Vec::new());
+    for g in &scene.groups {
+        let drawn: Vec<(kurbo::Point, kurbo::Point)> = (g.items.iter().enumerate())
+            .filter(|(k, i)| !g.writing.contains(k) && !matches!(i, Item::Text(_)))
+            .flat_map(|(_, i)| segments(i))
+            .collect();
+        for &k in &g.leaders {
+            let Item::Path { path, .. } = &g.items[k] else { continue };
+            let (start, end) = (path.start, path.end());
+            let at = |p: kurbo::Point| kurbo::Rect::from_points(p, p);
+            let named = g.texts().find(|t| rect_segment_distance(t.bbox(), (end, end)) < 1.0);
+            let Some(t) = named.filter(|t| ON_ARCS.contains(&t.text.as_str())) else { continue };
+            checked += 1;
+            if !drawn.iter().any(|&s| rect_segment_distance(at(start), s) < LEADER_ON) {
+                floating.push(format!(
+                    "'{}' «{}»'s {:.1} mm leader from ({:.1}, {:.1})",
+                    g.id,
+                    t.plain(),
+                    path.length(),
+                    start.x,
+                    start.y
+                ));
+            }
+        }
+    }
+    (checked, floating)
+}
+
+/// A name set on an arc (a turn arrow's ω₁, an angle's α_k, a rack picture's r_b2), where it
+/// stands off on a leader, has the leader start on the arc: one starting 0.8–2 mm short of
+/// it hung in the air beside the name and read, 3 mm long, as a bar or a dash («|ω₁»,
+/// «|α_k = 45°», «r_b2 −», teachers' marks on the worked example), in every language.
+#[test]
+fn a_name_on_an_arc_hangs_on_a_leader_from_the_arc_on_every_fixture() {
+    let (checked, floating) = on_every_fixture(leaders_off_their_arcs);
+    assert!(checked >= 20, "only {checked} leaders of names on arcs");
+    assert!(floating.is_empty(), "{} leaders short of their arcs:\n{}", floating.len(), floating.join("\n"));
+}

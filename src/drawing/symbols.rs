@@ -236,13 +236,14 @@ const VALUE_GAP: f64 = 0.7;
 /// Room kept between a dimension's value and anything else drawn, mm (the label placer's).
 const VALUE_CLEAR: f64 = 0.5;
 
-/// An angle's mark at `apex` from the unit direction `from` to the unit direction `to` (the
-/// smaller turn): an arc of radius `r`. Returns the point just outside the arc's middle, where
-/// its value is written.
+/// An angle's mark at `apex` from the unit direction `from` to the unit direction `to`
+/// (the smaller turn): an arc of radius `r`. Returns the arc's middle, where its value is
+/// named ([`crate::drawing::place::Labels::add_on_line_at_any`]: a leader, where it needs
+/// one, starts on the arc; one from 2 mm outside it read as a stray tick, «|α_k = 45°»).
 pub fn angle_mark(g: &mut Group, apex: Point, from: Vec2, to: Vec2, r: f64) -> Point {
     let (a0, sweep) = turn(from, to);
     g.curve(Path::arc(apex, r, a0, sweep), THIN);
-    on_circle(apex, r + 2.0, a0 + sweep / 2.0)
+    on_circle(apex, r, a0 + sweep / 2.0)
 }
 
 /// The smaller turn from the unit direction `from` to `to`: its start angle and its signed

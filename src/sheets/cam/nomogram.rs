@@ -217,7 +217,7 @@ fn draw_limiting_lines(
         let alpha = ph.allowed(&d.spec.allowed).to_degrees();
         let sub = if ph == Phase::Rise { words.sheet.sub_rise() } else { words.sheet.sub_return() };
         let text = LabelText::new("α", sub).with_tail(format!(" = {}°", fmt::trimmed(alpha, words.lang)));
-        labels.add_ranked(at, at - a, text, 2.5, 1);
+        labels.add_on_line_at_any(&[(at, at - a)], text, 2.5, 1);
     }
     limiting
 }

@@ -242,7 +242,7 @@ fn draw_wheel(g: &mut Group, labels: &mut Labels, v: View, pic: Rect, pair: &Pai
             // together at one end of the inset where the other may have room.
             let at = |t: f64| on_circle(oc, v.len(r), a0 + sweep * t);
             let ends = [(at(0.04), Vec2::new(-1.0, 0.0)), (at(0.96), Vec2::new(1.0, 0.0))];
-            labels.add_ranked_at_any(&ends, name, 3.5, 2);
+            labels.add_on_line_at_any(&ends, name, 3.5, 2);
         }
     }
     let top = v.p(Vec2::new(0.0, e.world.y1));
@@ -271,7 +271,7 @@ fn draw_lines(g: &mut Group, labels: &mut Labels, v: View, lines: &[(f64, Pen, S
     labels.add_ranked(np, Vec2::new(1.0, 0.3), LabelText::new("N", ""), 3.5, 0);
     let r = ((np - pp).norm() * 0.6).min(20.0);
     let at = symbols::angle_mark(g, pp, Vec2::new(1.0, 0.0), along, r);
-    labels.add_ranked(at, Vec2::new(1.0, 0.4), LabelText::new("α", ""), 3.5, 1);
+    labels.add_on_line_at_any(&[(at, Vec2::new(1.0, 0.4))], LabelText::new("α", ""), 3.5, 1);
 }
 
 /// The shift's value, "x·m = 1,8".

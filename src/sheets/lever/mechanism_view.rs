@@ -427,7 +427,7 @@ fn sense_arrow(
     let start = clear_turn_arrow(g, drawn, centre, r, along + 40.0, SENSE_SWEEP, ccw, (THIN, 0.0));
     let mid = (start + if ccw { -SENSE_SWEEP / 2.0 } else { SENSE_SWEEP / 2.0 }).to_radians();
     let at = centre + math::from_angle(mid) * r;
-    labels.add_ranked(at, at - centre, name, 3.5, 1);
+    labels.add_on_line_at_any(&[(at, at - centre)], name, 3.5, 1);
 }
 
 /// "μ_l = 0,005 m/mm": a length scale in the sheet's language (the mechanism's header, its
