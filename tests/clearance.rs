@@ -535,3 +535,33 @@ fn a_name_on_an_arc_hangs_on_a_leader_from_the_arc_on_every_fixture() {
     assert!(checked >= 20, "only {checked} leaders of names on arcs");
     assert!(floating.is_empty(), "{} leaders short of their arcs:\n{}", floating.len(), floating.join("\n"));
 }
+
+/// The texts of a sheet's velocity and acceleration plans that print a point's index on the
+/// baseline ("s3", "d=s4"), each named; and how many plan texts were checked.
+fn plan_indices_on_the_baseline(scene: &Scene) -> (usize, Vec<String>) {
+    let (mut checked, mut plain) = (0, Vec::new());
+    let on_baseline = |run: &str| {
+        let chars: Vec<char> = run.chars().collect();
+        chars.windows(2).any(|w| w[0].is_ascii_lowercase() && w[1].is_ascii_digit())
+    };
+    for g in scene.groups.iter().filter(|g| g.id.ends_with("-plans")) {
+        for t in g.texts() {
+            checked += 1;
+            let mut full_height = [&t.text, &t.tail].into_iter().chain(t.then.iter().map(|(_, tail)| tail));
+            if full_height.any(|run| on_baseline(run)) {
+                plain.push(format!("'{}' «{}»", g.id, t.plain()));
+            }
+        }
+    }
+    (checked, plain)
+}
+
+/// A plan names a point's image by its letter with its index as a subscript, as the mechanism
+/// names the point (S₃ there, s₃ here; «s3», «d=s4=s5» on the baseline read as names of
+/// their own, a teacher's mark), however many names share one point.
+#[test]
+fn a_plan_writes_a_points_index_as_a_subscript_on_every_fixture() {
+    let (checked, plain) = on_every_fixture(plan_indices_on_the_baseline);
+    assert!(checked >= 200, "only {checked} plan texts");
+    assert!(plain.is_empty(), "{} plan texts with an index on the baseline:\n{}", plain.len(), plain.join("\n"));
+}

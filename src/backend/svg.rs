@@ -5,7 +5,7 @@
 
 use super::{BackendError, shapes};
 use crate::drawing::path::{Path, Seg};
-use crate::drawing::scene::{Anchor, Ink, Item, LineType, MAIN, Pen, SUB, SUB_DROP, Scene, Text, VECTOR};
+use crate::drawing::scene::{Anchor, Ink, Item, LineType, MAIN, Pen, Scene, Text, VECTOR};
 use crate::font;
 use crate::num::math;
 use crate::num::work::{self, Step};
@@ -197,18 +197,16 @@ fn text_element(t: &Text, ink: &str) -> Result<String, BackendError> {
     ))
 }
 
-/// The subscript as a smaller run lowered by its drop, and the tail back on the baseline:
-/// the renderer sets each after the last with its own font.
+/// The runs after the main text: a subscript as a smaller run lowered by its drop, a tail
+/// back on the baseline; the renderer sets each after the last with its own font.
 fn subscript_and_tail(t: &Text) -> Result<String, BackendError> {
     let mut out = String::new();
-    let drop = num(t.h * SUB_DROP)?;
-    if !t.sub.is_empty() {
-        let size = num(font::size_for_cap(t.h * SUB))?;
-        out.push_str(&format!("<tspan dy=\"{drop}\" font-size=\"{size}\">{}</tspan>", escape(&t.sub)));
-    }
-    if !t.tail.is_empty() {
-        let back = if t.sub.is_empty() { String::new() } else { format!(" dy=\"-{drop}\"") };
-        out.push_str(&format!("<tspan{back}>{}</tspan>", escape(&t.tail)));
+    let mut drop = 0.0;
+    for r in t.runs().skip(usize::from(!t.text.is_empty())) {
+        let dy = if r.drop == drop { String::new() } else { format!(" dy=\"{}\"", num(r.drop - drop)?) };
+        let size = if r.h == t.h { String::new() } else { format!(" font-size=\"{}\"", num(font::size_for_cap(r.h))?) };
+        out.push_str(&format!("<tspan{dy}{size}>{}</tspan>", escape(r.text)));
+        drop = r.drop;
     }
     Ok(out)
 }

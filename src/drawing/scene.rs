@@ -5,8 +5,10 @@
 
 pub use super::path::{Path, Seg};
 
+mod text;
 mod text_boxes;
 use kurbo::{Point, Rect};
+pub use text::{Run, SUB, SUB_DROP, Text};
 
 /// GOST 2.303 line types.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -50,142 +52,6 @@ pub enum Anchor {
     Start,
     Middle,
     End,
-}
-
-/// Subscript height relative to its symbol (GOST 2.304: indices one size smaller; 2.5 mm
-/// lettering takes 1.8 mm indices, the smallest size, not 1.75).
-pub const SUB: f64 = 0.72;
-/// How far a subscript's baseline lies below its symbol's, in the symbol's heights.
-pub const SUB_DROP: f64 = 0.3;
-
-/// A line of text: a symbol or words, an optional subscript and an optional tail after it at
-/// the symbol's height (v_BA, "μ_l = 0,005 m/mm"). One item, so that every backend sets the
-/// subscript after the main text with its own font. `h` is the GOST lettering height
-/// (capital height, mm); `at` is the anchor point on the main text's baseline.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Text {
-    pub at: Point,
-    pub text: String,
-    /// Set at [`SUB`] of `h`, its baseline [`SUB_DROP`]·h lower.
-    pub sub: String,
-    /// Set after the subscript at `h`, on the main baseline.
-    pub tail: String,
-    pub h: f64,
-    pub anchor: Anchor,
-    /// Rotation in degrees, counter-clockwise on paper.
-    pub rotate: f64,
-    /// GOST type B sloped lettering (75°).
-    pub sloped: bool,
-    /// Width factor of the letters (1: the font's own; below 1 condensed, as GOST 2.304's
-    /// narrow type A, to fit a long name into its title-block cell).
-    pub stretch: f64,
-}
-
-/// One run of a [`Text`]: its text, its lettering height and its baseline's drop below the
-/// main baseline, mm.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Run<'a> {
-    pub text: &'a str,
-    pub h: f64,
-    pub drop: f64,
-}
-
-impl Text {
-    pub fn new(at: Point, text: impl Into<String>, h: f64, anchor: Anchor) -> Text {
-        Text {
-            at,
-            text: text.into(),
-            sub: String::new(),
-            tail: String::new(),
-            h,
-            anchor,
-            rotate: 0.0,
-            sloped: true,
-            stretch: 1.0,
-        }
-    }
-
-    /// The same text condensed (or widened) by `stretch`.
-    pub fn with_stretch(mut self, stretch: f64) -> Text {
-        self.stretch = stretch;
-        self
-    }
-
-    /// A run's advance width as set, mm (its stretch applied).
-    fn width_of(&self, r: Run) -> f64 {
-        run_width(r) * self.stretch
-    }
-
-    /// The same text with a subscript and a tail.
-    pub fn with_sub(mut self, sub: impl Into<String>, tail: impl Into<String>) -> Text {
-        self.sub = sub.into();
-        self.tail = tail.into();
-        self
-    }
-
-    /// The runs in order: the main text, the subscript, the tail (the empty ones left out).
-    pub fn runs(&self) -> impl Iterator<Item = Run<'_>> {
-        let h = self.h;
-        [
-            Run { text: self.text.as_str(), h, drop: 0.0 },
-            Run { text: self.sub.as_str(), h: h * SUB, drop: h * SUB_DROP },
-            Run { text: self.tail.as_str(), h, drop: 0.0 },
-        ]
-        .into_iter()
-        .filter(|r| !r.text.is_empty())
-    }
-
-    /// The text as one string for messages: "v_BA = 1".
-    pub fn plain(&self) -> String {
-        if self.sub.is_empty() {
-            format!("{}{}", self.text, self.tail)
-        } else {
-            format!("{}_{}{}", self.text, self.sub, self.tail)
-        }
-    }
-
-    /// Advance width of every run together, mm.
-    pub fn advance(&self) -> f64 {
-        self.runs().map(|r| self.width_of(r)).sum()
-    }
-
-    /// Left edge of a box of width `w` placed by the anchor.
-    fn left(&self, w: f64) -> f64 {
-        match self.anchor {
-            Anchor::Start => self.at.x,
-            Anchor::Middle => self.at.x - w / 2.0,
-            Anchor::End => self.at.x - w,
-        }
-    }
-
-    /// Each run without its leading spaces, with the left end of its baseline, unrotated
-    /// (the spaces before a tail are room, not letters), and the width of its letters.
-    /// Each run is measured once (a text's boxes are asked for thousands of times while a
-    /// sheet is composed, and measuring was 6 % of building sheet 1); the sums and
-    /// differences are those of measuring it anew each time, so every box is the same.
-    fn placed_runs(&self) -> impl Iterator<Item = (Run<'_>, Point, f64)> {
-        let mut widths = [(Run { text: "", h: 0.0, drop: 0.0 }, 0.0, 0.0); 3];
-        let mut n = 0;
-        for r in self.runs() {
-            let letters = Run { text: r.text.trim_start(), ..r };
-            let w = self.width_of(r);
-            // Without leading spaces the letters are the run: its width.
-            let lw = if letters.text.len() == r.text.len() { w } else { self.width_of(letters) };
-            widths[n] = (letters, w, lw);
-            n += 1;
-        }
-        let mut x = self.left(widths[..n].iter().map(|&(_, w, _)| w).sum());
-        widths.into_iter().take(n).map(move |(letters, w, lw)| {
-            let at = Point::new(x + w - lw, self.at.y + letters.drop);
-            x += w;
-            (letters, at, lw)
-        })
-    }
-}
-
-/// A run's advance width, mm.
-fn run_width(r: Run) -> f64 {
-    crate::font::metrics().width(r.text, crate::font::size_for_cap(r.h))
 }
 
 #[derive(Debug, Clone, PartialEq)]

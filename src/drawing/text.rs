@@ -36,16 +36,39 @@ pub struct LabelText {
     pub sub: String,
     /// Text after the subscript, at the symbol's size (" = 0,005 m/mm").
     pub tail: String,
+    /// Further subscripts with the text after each ([`Text::then`]).
+    pub then: Vec<(String, String)>,
 }
 
 impl LabelText {
     pub fn new(main: impl Into<String>, sub: impl Into<String>) -> LabelText {
-        LabelText { main: main.into(), sub: sub.into(), tail: String::new() }
+        LabelText { main: main.into(), sub: sub.into(), tail: String::new(), then: Vec::new() }
     }
 
     pub fn with_tail(mut self, tail: impl Into<String>) -> LabelText {
         self.tail = tail.into();
         self
+    }
+
+    /// The same label with further subscripts and their tails ([`Text::then`]).
+    pub fn with_then(mut self, then: Vec<(String, String)>) -> LabelText {
+        self.then = then;
+        self
+    }
+
+    /// Whether any run is a subscript (it hangs below the baseline).
+    pub fn has_sub(&self) -> bool {
+        !self.sub.is_empty() || self.then.iter().any(|(s, _)| !s.is_empty())
+    }
+
+    /// The label's characters in order, subscripts unmarked ("d=s4=s5").
+    pub fn chars_in_order(&self) -> String {
+        let mut out = format!("{}{}{}", self.main, self.sub, self.tail);
+        for (s, t) in &self.then {
+            out.push_str(s);
+            out.push_str(t);
+        }
+        out
     }
 
     /// Width of the symbol, subscript and tail at lettering height `h`, mm.
@@ -55,7 +78,9 @@ impl LabelText {
 
     /// The label as one scene text with its baseline at `at`, anchored by `anchor`.
     pub fn text(&self, at: Point, h: f64, anchor: Anchor) -> Text {
-        Text::new(at, self.main.clone(), h, anchor).with_sub(self.sub.clone(), self.tail.clone())
+        Text::new(at, self.main.clone(), h, anchor)
+            .with_sub(self.sub.clone(), self.tail.clone())
+            .with_then(self.then.clone())
     }
 
     /// Draws the label with its baseline at `at.y`, anchored horizontally by `anchor`;

@@ -144,7 +144,13 @@ pub fn check_layout(name: &str, scene: &Scene) {
 /// Every run of every text of a scene (a symbol, its subscript and its tail each on its own),
 /// for checks of what a sheet prints.
 pub fn runs(scene: &Scene) -> impl Iterator<Item = &str> {
-    scene.texts().flat_map(|t| [t.text.as_str(), t.sub.as_str(), t.tail.as_str()]).filter(|r| !r.is_empty())
+    scene
+        .texts()
+        .flat_map(|t| {
+            let further = t.then.iter().flat_map(|(sub, tail)| [sub.as_str(), tail.as_str()]);
+            [t.text.as_str(), t.sub.as_str(), t.tail.as_str()].into_iter().chain(further)
+        })
+        .filter(|r| !r.is_empty())
 }
 
 /// A count of random cases from the environment variable `var`, else `default`.

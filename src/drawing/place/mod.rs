@@ -79,7 +79,7 @@ pub struct Labels {
 /// height above the baseline, depth below it.
 pub fn label_size(label: &LabelText, h: f64) -> (f64, f64, f64) {
     let w = label.width(h) + SLANT * h;
-    let below = if label.sub.is_empty() { 0.3 * h } else { 0.3 * h + 0.3 * h * SUB };
+    let below = if !label.has_sub() { 0.3 * h } else { 0.3 * h + 0.3 * h * SUB };
     (w, 1.05 * h, below)
 }
 

@@ -55,7 +55,7 @@ pub(super) struct Request {
 impl Request {
     /// A one-line label of rank 0 at one anchor.
     pub(super) fn new(anchor: Point, pref: Vec2, label: LabelText, h: f64) -> Request {
-        let states_value = phrases::states_value(&format!("{}{}{}", label.main, label.sub, label.tail));
+        let states_value = phrases::states_value(&label.chars_in_order());
         Request {
             anchor,
             pref,

@@ -396,32 +396,47 @@ pub fn draw_plan(g: &mut Group, c: &PlanCell, labels: &mut Labels) -> Point {
     pole_p
 }
 
-/// The lines of names sharing a point as labels, a line's first "_" setting the pair's
-/// names after it (to the next "=") as a subscript: "a=n_BA" is "a=n" with "BA" below, "n_BA=b" is "n", "BA"
-/// and "=b" after. A label holds one subscript, so a line with two subscripted names (two
-/// normals ending at one point) is broken before the second: "n_BA=" over "n_CD".
+/// The lines of names sharing a point as labels, each name's index set as a subscript
+/// (see [`subscripted`]).
 fn label_lines(names: &[String]) -> Vec<LabelText> {
-    let mut out = Vec::new();
-    for line in lines(names) {
-        let mut piece = String::new();
-        for (k, name) in line.split_inclusive('=').enumerate() {
-            if k > 0 && name.contains('_') && piece.contains('_') {
-                out.push(subscripted(&std::mem::take(&mut piece)));
-            }
-            piece.push_str(name);
-        }
-        out.push(subscripted(&piece));
-    }
-    out
+    lines(names).iter().map(|l| subscripted(l)).collect()
 }
 
-/// One label line with at most one subscripted name (see [`label_lines`]).
+/// One label line, "p=b=s3=", as a label with each name's index as a subscript: a normal's
+/// pair after its "_" ("n_BA": n with BA below), a point's digits after its letter ("s3":
+/// s with 3 below, as the mechanism writes S₃; plain, it read as a name of its own).
 fn subscripted(line: &str) -> LabelText {
-    let Some((main, rest)) = line.split_once('_') else { return LabelText::new(line, "") };
-    // The pair's names run to the next name ("O3O1" of n_O3O1 holds digits).
-    let sub_len = rest.find('=').unwrap_or(rest.len());
-    let (sub, tail) = rest.split_at(sub_len);
-    LabelText::new(main, sub).with_tail(tail)
+    // Each run of text before a subscript, with the subscript; then the text after the last.
+    let mut pieces: Vec<(String, String)> = Vec::new();
+    let mut text = String::new();
+    for (k, name) in line.split('=').enumerate() {
+        if k > 0 {
+            text.push('=');
+        }
+        let (letter, index) = name_and_index(name);
+        text.push_str(letter);
+        if !index.is_empty() {
+            pieces.push((std::mem::take(&mut text), index.to_string()));
+        }
+    }
+    let mut tails = pieces.iter().skip(1).map(|(before, _)| before.clone()).chain([text]);
+    let Some(((main, sub), rest)) = pieces.split_first() else {
+        return LabelText::new(tails.next().unwrap_or_default(), "");
+    };
+    let tail = tails.next().unwrap_or_default();
+    let then = rest.iter().map(|(_, sub)| sub.clone()).zip(tails).collect();
+    LabelText::new(main.as_str(), sub.as_str()).with_tail(tail).with_then(then)
+}
+
+/// A plan point's name split into its letter(s) and its index: "n_BA" into "n" and "BA",
+/// "s3" into "s" and "3"; a name without either ("b", "k") whole.
+fn name_and_index(name: &str) -> (&str, &str) {
+    if let Some(split) = name.split_once('_') {
+        return split;
+    }
+    let first = name.chars().next().map_or(0, char::len_utf8);
+    let (letter, digits) = name.split_at(first);
+    if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) { (letter, digits) } else { (name, "") }
 }
 
 /// Where a plan stands in its cell: the paper centre of its box, and the left end of its

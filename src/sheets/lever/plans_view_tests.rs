@@ -11,22 +11,34 @@ fn names_of_one_point_stack_as_one_chain() {
     assert!(lines(&names(&["p", "b", "s3", "c"])).iter().all(|l| !l.starts_with('=')));
 }
 
+/// A label as its runs' texts in order, each subscript in brackets: "n[BA]=b=".
+fn runs_of(t: &LabelText) -> String {
+    let mut out = t.main.clone();
+    for (sub, tail) in std::iter::once((&t.sub, &t.tail)).chain(t.then.iter().map(|(s, t)| (s, t))) {
+        if !sub.is_empty() {
+            out.push_str(&format!("[{sub}]"));
+        }
+        out.push_str(tail);
+    }
+    out
+}
+
 #[test]
-fn a_normal_components_end_is_named_with_its_pair_as_a_subscript() {
-    let parts = |l: &str| {
-        let t = subscripted(l);
-        (t.main, t.sub, t.tail)
-    };
-    let own = |a: &str, b: &str, c: &str| (a.to_string(), b.to_string(), c.to_string());
-    assert_eq!(parts("n_BA"), own("n", "BA", ""));
-    assert_eq!(parts("a=n_BA"), own("a=n", "BA", ""));
-    assert_eq!(parts("n_BA=b="), own("n", "BA", "=b="));
-    assert_eq!(parts("p=b=s3="), own("p=b=s3=", "", ""));
-    assert_eq!(parts("a3=n_O3O1=k"), own("a3=n", "O3O1", "=k"), "names with digits");
+fn every_names_index_is_a_subscript_a_normals_pair_and_a_points_digits() {
+    let runs = |l: &str| runs_of(&subscripted(l));
+    assert_eq!(runs("n_BA"), "n[BA]");
+    assert_eq!(runs("a=n_BA"), "a=n[BA]");
+    assert_eq!(runs("n_BA=b="), "n[BA]=b=");
+    assert_eq!(runs("p=b=s3="), "p=b=s[3]=");
+    assert_eq!(runs("d=s4=s5"), "d=s[4]=s[5]", "two subscripts on one line");
+    assert_eq!(runs("a3=n_O3O1=k"), "a[3]=n[O3O1]=k", "a pair's names with digits");
+    assert_eq!(runs("b=k"), "b=k");
+    assert_eq!(runs("b'=c1x"), "b'=c1x", "an index is digits only");
+    let t = subscripted("d=s4=s5");
+    assert_eq!((t.main.as_str(), t.sub.as_str(), t.tail.as_str()), ("d=s", "4", "=s"));
     let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
-    let split: Vec<_> =
-        label_lines(&names(&["a", "n_BA", "n_CD"])).into_iter().map(|t| (t.main, t.sub, t.tail)).collect();
-    assert_eq!(split, [own("a=n", "BA", "="), own("n", "CD", "")], "one subscript a line");
+    let one: Vec<_> = label_lines(&names(&["a", "n_BA", "n_CD"])).iter().map(runs_of).collect();
+    assert_eq!(one, ["a=n[BA]=n[CD]"], "three names a line, subscripted or not");
 }
 
 #[test]
