@@ -124,29 +124,33 @@ pub fn draw(
 }
 
 /// Each of `values` in turn beside its arc, clear of `drawn` and of the values set before it
-/// (None: no spot, left to the label placer's leaders): along the arc, as GOST 2.307 writes
-/// a dimension's value over its line, else level.
+/// (None: no spot, left to the label placer's leaders): along the arc over it, as GOST 2.307
+/// writes a dimension's value, else under it, else level.
 fn set_values(arc: &Arc, values: &[&Value], drawn: &Obstacles, r_s: f64) -> Vec<Option<Text>> {
     let mut out = Vec::new();
     // The pieces of the values set so far (a handful: no index).
     let mut placed: Vec<Rect> = Vec::new();
+    // Whether a value of s's arc went under it, into the band between the arcs.
+    let mut in_the_band = false;
     for &&Value { r, mid, half, ref text } in values {
-        // p's value toward the wheel's empty body: over its arc, it stood in the band between
-        // the arcs with s's, one above the other. Away from the other arc a value may stand
-        // far enough to clear what crosses its band; toward it, half the band at most.
+        // p's arc lies inside s's: p's value over its arc stands in the band between them,
+        // where an s or e value set under its arc would make the two one stack; p then goes
+        // under its arc, toward the wheel's empty body. Away from the other arc a value may
+        // stand far enough to clear what crosses its band; toward it, half the band at most.
         let away = r < r_s;
         let own = if away { -1.0 } else { 1.0 };
+        let first = if away && in_the_band { -1.0 } else { 1.0 };
         let steps = |far: bool| (0..=if far { 30 } else { 12 }).map(|k| 1.0 + 0.5 * f64::from(k));
         let allowed = |off: f64| off.signum() == own || off.abs() <= 7.0;
         let apart =
             |t: &Text| t.bbox_pieces().all(|b| placed.iter().all(|p| p.intersect(b.inflate(0.5, 0.5)).area() <= 0.0));
         let clear = |t: &Text| clear_inside(t, drawn, arc.area) && apart(t);
-        // Along the arc: on its own side within a few millimetres, then on the other (the
+        // Along the arc: on the first side within a few millimetres, then on the other (the
         // other wheel's circles cross the band over s's arc), then either, farther; moved
         // along the arc by up to a quarter of its length where its middle is crowded.
         let near = |sign: f64| steps(false).take_while(|&d| d <= 4.0).map(move |d| sign * d);
         let farther = steps(true).filter(|&d| d > 4.0).flat_map(|d| [own * d, -own * d]);
-        let offs = near(own).chain(near(-own)).chain(farther).filter(|&off| allowed(off));
+        let offs = near(first).chain(near(-first)).chain(farther).filter(|&off| allowed(off));
         let shifts: Vec<f64> =
             (0..=(r * half / 2.0).floor() as i32).flat_map(|k| [k, -k]).skip(1).map(f64::from).collect();
         let along = offs.flat_map(|off| shifts.iter().map(move |&shift| (off, shift)));
@@ -165,13 +169,14 @@ fn set_values(arc: &Arc, values: &[&Value], drawn: &Obstacles, r_s: f64) -> Vec<
         let level_shifted = steps(false).flat_map(|d| {
             (1..=reach).flat_map(move |k| [k, -k]).map(move |k| hanging(arc.at(mid, r - d) + tangent * f64::from(k)))
         });
-        let set = if away {
+        let set = if first < 0.0 {
             along.chain(under).chain(over).chain(level_shifted).find(clear)
         } else {
             along.chain(over).chain(under).chain(level_shifted).find(clear)
         };
         if let Some(t) = &set {
             placed.extend(t.bbox_pieces());
+            in_the_band |= !away && (t.core_box().center() - arc.at(mid, 0.0)).norm() < r;
         }
         out.push(set);
     }

@@ -142,7 +142,9 @@ fn the_contact_ratio_measured_on_the_drawing_agrees_with_the_closed_form() {
 
 /// Each of s, e and p reads as its own arc's value: its text (wherever the placer set it)
 /// is nearer its own dimension arc than the other one — s's value once sat under p's arc
-/// with a leader, and read as p's.
+/// with a leader, and read as p's; and p's value stands over its arc as GOST 2.307 writes
+/// it (it stood under, toward the wheel's body, on every pair: a teacher's mark), unless
+/// s's or e's is under theirs.
 #[test]
 fn each_mesh_dimension_value_is_nearest_its_own_arc() {
     use super::super::mesh_dimensions::{P_INSIDE_ROOT, S_INSIDE_ROOT};
@@ -159,7 +161,7 @@ fn each_mesh_dimension_value_is_nearest_its_own_arc() {
         let o1 = v.p(Vec2::ZERO);
         let root = v.len(pair.wheels[0].root);
         let (r_s, r_p) = (root - S_INSIDE_ROOT, root - P_INSIDE_ROOT);
-        let mut found = 0;
+        let (mut found, mut over) = (0, Vec::new());
         // s, e and p (a_w, h_a1 and h_f1 are written too, with subscripts).
         let arc_value =
             |t: &&crate::drawing::scene::Text| ["s", "e", "p"].contains(&t.text.as_str()) && t.sub.is_empty();
@@ -171,12 +173,19 @@ fn each_mesh_dimension_value_is_nearest_its_own_arc() {
                 "{z:?}: “{}” {d:.1} mm from O1, arcs at {own:.1} and {other:.1}",
                 t.plain()
             );
-            // p's value inside its arc, toward the wheel's body: not in the band between
-            // the arcs with s's (the two read as one stack there).
-            assert!(t.text != "p" || d < own, "{z:?}: p's value {d:.1} mm from O1, its arc at {own:.1}");
+            over.push((t.text.clone(), d > own));
             found += 1;
         }
         assert_eq!(found, 3, "{z:?}: s, e and p are written");
+        // p's value over its arc (GOST 2.307), but under it where s's or e's went under
+        // theirs, into the band between the arcs, where the two would read as one stack.
+        let band = over.iter().any(|(name, up)| name != "p" && !up);
+        let p_over = over.iter().any(|(name, up)| name == "p" && *up);
+        assert_eq!(p_over, !band, "{z:?}: p's value over its arc: {p_over}, {over:?}");
+        // The worked example's mesh has room for all three over their arcs.
+        if z == [17, 19] {
+            assert!(over.iter().all(|(_, up)| *up), "{z:?}: {over:?}");
+        }
     }
 }
 
