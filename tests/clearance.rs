@@ -11,7 +11,7 @@ use tmm_sheets::drawing::labels::Language;
 use tmm_sheets::drawing::layout::texts_near_lines;
 use tmm_sheets::drawing::obstacles::rect_segment_distance;
 use tmm_sheets::drawing::scene::{Group, Item, MAIN, STUB, Scene, THIN, VECTOR};
-use tmm_sheets::num::math::Norm;
+use tmm_sheets::num::math::{self, Norm};
 use tmm_sheets::pipeline;
 
 /// Every fixture's sheets in the three languages, built once for this file's tests:
@@ -564,4 +564,63 @@ fn a_plan_writes_a_points_index_as_a_subscript_on_every_fixture() {
     let (checked, plain) = on_every_fixture(plan_indices_on_the_baseline);
     assert!(checked >= 200, "only {checked} plan texts");
     assert!(plain.is_empty(), "{} plan texts with an index on the baseline:\n{}", plain.len(), plain.join("\n"));
+}
+
+/// The values set along a slanted or level dimension line (turned texts reading "x = …")
+/// that stand under their line, each named; and how many such values were checked. A
+/// value's line is the drawn segment parallel to it (within 1°) nearest its letters' middle,
+/// within 6 mm; "under" is the side away from the letters' up.
+fn values_under_their_lines(scene: &Scene) -> (usize, Vec<String>) {
+    use tmm_sheets::drawing::obstacles::segments;
+    let (mut checked, mut under) = (0, Vec::new());
+    for g in &scene.groups {
+        let drawn: Vec<(kurbo::Point, kurbo::Point)> = (g.items.iter().enumerate())
+            .filter(|(k, i)| !g.writing.contains(k) && !matches!(i, Item::Text(_)))
+            .flat_map(|(_, i)| segments(i))
+            .filter(|(a, b)| (*b - *a).norm() > 1.0)
+            .collect();
+        for t in g.texts().filter(|t| t.rotate != 0.0 && t.tail.starts_with(" = ")) {
+            let turned = t.rotate.to_radians();
+            let (along, up) = (
+                kurbo::Vec2::new(math::cos(turned), -math::sin(turned)),
+                kurbo::Vec2::new(-math::sin(turned), -math::cos(turned)),
+            );
+            let mid = t.core_box().center();
+            let side_of = |(a, b): (kurbo::Point, kurbo::Point)| {
+                let u = (b - a) / (b - a).norm();
+                let parallel = u.cross(along).abs() < math::sin(1f64.to_radians());
+                let off = (mid - a).dot(kurbo::Vec2::new(-u.y, u.x));
+                let foot = (mid - a).dot(u);
+                let beside = foot > -2.0 && foot < (b - a).norm() + 2.0;
+                (parallel && beside && off.abs() < 6.0)
+                    .then(|| ((mid - a).dot(up) - (mid - a).dot(u) * u.dot(up), off.abs()))
+            };
+            let nearest = drawn.iter().filter_map(|&s| side_of(s)).min_by(|x, y| x.1.total_cmp(&y.1));
+            let Some((height, _)) = nearest else { continue };
+            checked += 1;
+            if height < 0.0 {
+                under.push(format!("'{}' «{}»", g.id, t.plain()));
+            }
+        }
+    }
+    (checked, under)
+}
+
+/// The drawings whose values along their lines may still stand under them where over has no
+/// room: the mechanism's slanted strokes (the V-compressor's H_B and H_C: their offset is
+/// chosen before the value) and the cam profile's r_min (ω's arrow over its radius).
+const UNDER_ALLOWED_IN: [&str; 2] = ["mechanism", "profile"];
+
+/// A value set along its dimension line stands over it, as GOST 2.307 writes it: the mesh's
+/// h_a1 and h_f1 (on their extensions), a_w, p_b, s, e and p, the nomogram's r_min, on every
+/// fixture in every language (h_a1, h_f1 and the nomogram's r_min stood under their lines on
+/// the worked example: the nearest place won, and a slanted value's box needs a millimetre
+/// more room over its line than under).
+#[test]
+fn a_value_along_its_dimension_line_stands_over_it_on_every_fixture() {
+    let (checked, under) = on_every_fixture(values_under_their_lines);
+    let under: Vec<&String> =
+        under.iter().filter(|u| !UNDER_ALLOWED_IN.iter().any(|g| u.contains(&format!("'{g}'")))).collect();
+    assert!(checked >= 30, "only {checked} values along their lines");
+    assert!(under.is_empty(), "{} values under their lines:\n{:#?}", under.len(), under);
 }

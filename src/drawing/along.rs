@@ -61,8 +61,8 @@ fn reading(u: Vec2) -> (Vec2, Vec2) {
 }
 
 /// `value` along the dimension line a–b, clear of `drawn` and inside `area`: beside its middle, else moved
-/// along it up to its ends, the nearest clear within 8 mm, on `pref`'s side first at each
-/// distance (either first where None).
+/// along it up to its ends, the nearest clear within 8 mm: on `pref`'s side first at each
+/// distance; where None, over the line first ([`over_first`]).
 pub fn along_line(
     (drawn, area): (&Obstacles, Rect),
     (a, b): (Point, Point),
@@ -72,11 +72,33 @@ pub fn along_line(
     let (along, mid) = (b - a, a.midpoint(b));
     let (length, u) = (along.norm(), along.unit());
     let normal = Vec2::new(u.y, -u.x);
-    let first = if pref.is_some_and(|p| p.dot(normal) < 0.0) { -1.0 } else { 1.0 };
-    let offs = (0..=14).map(|k| 1.0 + 0.5 * f64::from(k)).flat_map(|d| [first * d, -first * d]);
+    let distances = (0..=14).map(|k| 1.0 + 0.5 * f64::from(k));
+    let offs: Vec<f64> = match pref {
+        // The preferred side first at each distance.
+        Some(pref) => {
+            let first = if pref.dot(normal) < 0.0 { -1.0 } else { 1.0 };
+            distances.flat_map(|d| [first * d, -first * d]).collect()
+        }
+        None => over_first(if over(a, b).dot(normal) < 0.0 { -1.0 } else { 1.0 }, distances).collect(),
+    };
     let shifts: Vec<f64> = (0..=(length / 2.0).floor() as i32).flat_map(|k| [k, -k]).skip(1).map(f64::from).collect();
-    let tried = offs.flat_map(|off| shifts.iter().map(move |&shift| (off, shift)));
+    let tried = offs.into_iter().flat_map(|off| shifts.iter().map(move |&shift| (off, shift)));
     tried.map(|(off, shift)| value_along(mid + u * shift, normal, off, value, h)).find(|t| clear_inside(t, drawn, area))
+}
+
+/// How far over its line a value is tried before any place under it, mm: a slanted value's
+/// box needs about a millimetre more room over its line than under it, and nearest first
+/// set the worked example's h_a1 and h_f1 under their lines. Farther over, a value taking a
+/// label's room turned a cam sheet's profile to a smaller scale.
+const OVER_FIRST: f64 = 2.5;
+
+/// The offsets from a line, `distances` (ascending) on either side, the side `up` (±1,
+/// the normal's sign of "over") alone first up to [`OVER_FIRST`], then both sides, nearest
+/// first, over before under at each distance.
+fn over_first(up: f64, distances: impl Iterator<Item = f64> + Clone) -> impl Iterator<Item = f64> + Clone {
+    let near = distances.clone().take_while(|&d| d <= OVER_FIRST).map(move |d| up * d);
+    let rest = distances.flat_map(move |d| if d <= OVER_FIRST { vec![-up * d] } else { vec![up * d, -up * d] });
+    near.chain(rest)
 }
 
 /// Whether `t` meets nothing of `drawn` (0.5 mm clear) and lies inside `area`.
@@ -88,7 +110,7 @@ pub fn clear_inside(t: &Text, drawn: &Obstacles, area: Rect) -> bool {
 }
 
 /// `value` on the extension of the dimension line a–b past one of its arrows (GOST 2.307,
-/// where the value has no room between them): beside the extension 1–4 mm (its own line
+/// where the value has no room between them): beside the extension 1–4 mm, over it first ([`over_first`]) (its own line
 /// 0.5 mm clear of the text's pieces, as every other line), b's end first,
 /// clear of `drawn` and inside `area`, the extension crossing no line (it would read as part
 /// of another dimension), with the extension from that end of a–b to its far end.
@@ -104,10 +126,9 @@ pub fn along_extension(
         (0..=6).flat_map(move |k| {
             let gap = 2.0 + f64::from(k);
             let far = end + out * (gap + width + 1.0);
-            let normal = Vec2::new(out.y, -out.x);
-            (0..=6).map(|j| 1.0 + 0.5 * f64::from(j)).flat_map(move |off| {
-                [off, -off].map(|off| (end, far, value_along(end + out * (gap + width / 2.0), normal, off, value, h)))
-            })
+            let normal = over(end, far);
+            over_first(1.0, (0..=6).map(|j| 1.0 + 0.5 * f64::from(j)))
+                .map(move |off| (end, far, value_along(end + out * (gap + width / 2.0), normal, off, value, h)))
         })
     });
     let clear = |(end, far, t): &(Point, Point, Text)| {

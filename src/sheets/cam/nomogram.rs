@@ -319,7 +319,7 @@ fn draw_centre(
     // the limiting lines a level value hung 22–35 mm off on a leader. Set after every line
     // of the picture is drawn.
     let drawn = Obstacles::of_items(&g.items);
-    match along_line((&drawn, area), (view.p(o), view.p(Vec2::ZERO)), (&r_text, 3.5), Some(Vec2::new(1.0, 0.0))) {
+    match along_line((&drawn, area), (view.p(o), view.p(Vec2::ZERO)), (&r_text, 3.5), None) {
         Some(t) => g.text(t),
         None => labels.add(view.p(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5),
     }

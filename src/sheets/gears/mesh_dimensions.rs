@@ -227,7 +227,7 @@ pub fn centre_distance_value(
     lang: Language,
 ) {
     let value = LabelText::new("a", "w").with_tail(format!(" = {}", fmt::dimension(mm(p.centre_distance), lang)));
-    match along_line((drawn.sync(g), area), (o1, far), (&value, TEXT_H), Some(Vec2::new(-1.0, 0.0))) {
+    match along_line((drawn.sync(g), area), (o1, far), (&value, TEXT_H), None) {
         Some(text) => drawn.set(g, Set::beside(text)),
         None => labels.add_ranked(o1 + (far - o1) * 0.25, Vec2::new(1.0, 0.0), value, TEXT_H, 1),
     }
@@ -276,7 +276,7 @@ pub fn heights(
         let (a, b) = (on(deg, r0), on(deg, r1));
         let indexed = drawn.sync(g);
         // The extension from the inner end first.
-        let set = along_line((indexed, area), (a, b), (&v_, TEXT_H), Some(side))
+        let set = along_line((indexed, area), (a, b), (&v_, TEXT_H), None)
             .map(Set::beside)
             .or_else(|| along_extension((indexed, area), (b, a), (&v_, TEXT_H)));
         match set {

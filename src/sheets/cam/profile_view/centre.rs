@@ -5,7 +5,7 @@
 //! the arrow no clear start, the radius goes further round the dwell.
 
 use crate::cams::Design;
-use crate::drawing::along::{along_line, over};
+use crate::drawing::along::along_line;
 use crate::drawing::fmt;
 use crate::drawing::obstacles::{Obstacles, Piece};
 use crate::drawing::place::Labels;
@@ -51,7 +51,7 @@ pub fn draw(
 pub fn write_r_min(g: &mut Group, labels: &mut Labels, area: Rect, r_min: RMin) {
     let RMin { radius: (o, end), value } = r_min;
     let drawn = Obstacles::of_items(&g.items);
-    match along_line((&drawn, area), (clear_of_o(o, end), end), (&value, VALUE_H), Some(over(o, end))) {
+    match along_line((&drawn, area), (clear_of_o(o, end), end), (&value, VALUE_H), None) {
         Some(t) => g.text(t),
         None => labels.add_ranked(o + (end - o) * R_MIN_VALUE_AT, Vec2::ZERO, value, VALUE_H, 1),
     }
@@ -88,7 +88,7 @@ fn r_min_and_omega(g: &Group, (view, area): (View, Rect), d: &Design, value: &La
         let (out, _) = omega_middle(view, &omega);
         drawn.add(Piece::TextBox(Rect::from_center_size(view.origin + out * (omega.r + 2.5), (4.0, 4.0))), usize::MAX);
         let radius = (clear_of_o(view.origin, end), end);
-        let fits = along_line((&drawn, area), radius, (value, VALUE_H), Some(over(view.origin, end))).is_some();
+        let fits = along_line((&drawn, area), radius, (value, VALUE_H), None).is_some();
         // The radius leaves the middle only for a share where its value is written along
         // it, and ω's arrow crosses no more lines: where the value is set level it needs the
         // room the middle gives it (moved off it to clear ω, it went on 19–26 mm leaders on
