@@ -62,7 +62,7 @@ fn reading(u: Vec2) -> (Vec2, Vec2) {
 
 /// `value` along the dimension line a–b, clear of `drawn` and inside `area`: beside its middle, else moved
 /// along it up to its ends, the nearest clear within 8 mm: on `pref`'s side first at each
-/// distance; where None, over the line first ([`over_first`]).
+/// distance; where None, over the line up to 2.5 mm before any spot under it.
 pub fn along_line(
     (drawn, area): (&Obstacles, Rect),
     (a, b): (Point, Point),
@@ -110,9 +110,9 @@ pub fn clear_inside(t: &Text, drawn: &Obstacles, area: Rect) -> bool {
 }
 
 /// `value` on the extension of the dimension line a–b past one of its arrows (GOST 2.307,
-/// where the value has no room between them): beside the extension 1–4 mm, over it first ([`over_first`]) (its own line
-/// 0.5 mm clear of the text's pieces, as every other line), b's end first,
-/// clear of `drawn` and inside `area`, the extension crossing no line (it would read as part
+/// where the value has no room between them): beside the extension 1–4 mm, over it up to
+/// 2.5 mm first (its own line 0.5 mm clear of the text's pieces, as every other line), b's
+/// end first, clear of `drawn` and inside `area`, the extension crossing no line (it would read as part
 /// of another dimension), with the extension from that end of a–b to its far end.
 pub fn along_extension(
     (drawn, area): (&Obstacles, Rect),
