@@ -485,6 +485,15 @@ fn a_stub_between_two_breaks_goes_but_a_lines_short_end_stays() {
     assert_eq!(g.breakable, vec![0, 1, 2]);
 }
 
+/// A group's drawn lines as segments: its paths and circles, not its lettering (texts,
+/// leaders, legend samples).
+fn drawn_lines(g: &Group) -> Vec<(kurbo::Point, kurbo::Point)> {
+    (g.items.iter().enumerate())
+        .filter(|(k, i)| !g.writing.contains(k) && !matches!(i, Item::Text(_)))
+        .flat_map(|(_, i)| tmm_sheets::drawing::obstacles::segments(i))
+        .collect()
+}
+
 /// A leader's start this near a drawn line (its centre line), mm, touches it.
 const LEADER_ON: f64 = 0.2;
 
@@ -496,13 +505,9 @@ const ON_ARCS: [&str; 4] = ["ω", "ε", "α", "r"];
 /// group, each named; and how many such leaders were checked. A leader's name is the text
 /// whose box its end comes within a millimetre of.
 fn leaders_off_their_arcs(scene: &Scene) -> (usize, Vec<String>) {
-    use tmm_sheets::drawing::obstacles::segments;
     let (mut checked, mut floating) = (0, Vec::new());
     for g in &scene.groups {
-        let drawn: Vec<(kurbo::Point, kurbo::Point)> = (g.items.iter().enumerate())
-            .filter(|(k, i)| !g.writing.contains(k) && !matches!(i, Item::Text(_)))
-            .flat_map(|(_, i)| segments(i))
-            .collect();
+        let drawn = drawn_lines(g);
         for &k in &g.leaders {
             let Item::Path { path, .. } = &g.items[k] else { continue };
             let (start, end) = (path.start, path.end());
@@ -571,14 +576,9 @@ fn a_plan_writes_a_points_index_as_a_subscript_on_every_fixture() {
 /// value's line is the drawn segment parallel to it (within 1°) nearest its letters' middle,
 /// within 6 mm; "under" is the side away from the letters' up.
 fn values_under_their_lines(scene: &Scene) -> (usize, Vec<String>) {
-    use tmm_sheets::drawing::obstacles::segments;
     let (mut checked, mut under) = (0, Vec::new());
     for g in &scene.groups {
-        let drawn: Vec<(kurbo::Point, kurbo::Point)> = (g.items.iter().enumerate())
-            .filter(|(k, i)| !g.writing.contains(k) && !matches!(i, Item::Text(_)))
-            .flat_map(|(_, i)| segments(i))
-            .filter(|(a, b)| (*b - *a).norm() > 1.0)
-            .collect();
+        let drawn: Vec<_> = drawn_lines(g).into_iter().filter(|(a, b)| (*b - *a).norm() > 1.0).collect();
         for t in g.texts().filter(|t| t.rotate != 0.0 && t.tail.starts_with(" = ")) {
             let turned = t.rotate.to_radians();
             let (along, up) = (

@@ -97,7 +97,9 @@ const OVER_FIRST: f64 = 2.5;
 /// first, over before under at each distance.
 fn over_first(up: f64, distances: impl Iterator<Item = f64> + Clone) -> impl Iterator<Item = f64> + Clone {
     let near = distances.clone().take_while(|&d| d <= OVER_FIRST).map(move |d| up * d);
-    let rest = distances.flat_map(move |d| if d <= OVER_FIRST { vec![-up * d] } else { vec![up * d, -up * d] });
+    // Both sides at each distance, less the near ones over the line tried already.
+    let rest =
+        distances.flat_map(move |d| [up * d, -up * d]).filter(move |&off| off * up < 0.0 || off.abs() > OVER_FIRST);
     near.chain(rest)
 }
 

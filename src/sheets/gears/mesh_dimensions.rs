@@ -261,8 +261,9 @@ pub fn heights(
     let Some(deg) = HEIGHTS_AT_DEG.into_iter().find(|&d| clear(d)) else { return };
     let value = |name: &str, x: f64| LabelText::new("h", name).with_tail(format!(" = {}", fmt::dimension(mm(x), lang)));
     let along = on(deg, 1.0) - on(deg, 0.0);
-    // The values beside their lines toward the teeth (the angles are past 90°), where the
+    // A value left to the placer stands toward the teeth (the angles are past 90°), where the
     // wheel's body is empty: the circles' names stand at the other side, at the area's edge.
+    // Along its line it stands over it (along.rs), as GOST 2.307 writes it.
     let side = Vec2::new(-along.y, along.x);
     // Wheel 1's heights (a shifted pair's wheel 2 has others).
     let dims =
