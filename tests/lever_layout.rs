@@ -506,7 +506,7 @@ fn a_strokes_value_is_written_along_its_dimension_line() {
     }];
     for (out, vertical) in cases {
         let mechanism = out.scene.groups.iter().find(|g| g.id.ends_with("mechanism")).expect("the mechanism's group");
-        let value = mechanism.texts().find(|t| t.text == "H" && t.tail.contains("mm")).expect("the stroke's value");
+        let value = mechanism.texts().find(|t| t.text == "H" && t.tail.starts_with(" = ")).expect("the stroke's value");
         assert_eq!(value.rotate, if vertical { 90.0 } else { 0.0 }, "{value:?}");
         let bb = value.bbox();
         // The dimension line: a thin straight line along the value, at most 2 mm from its box.

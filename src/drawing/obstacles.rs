@@ -300,6 +300,12 @@ impl Obstacles {
         !(self.strokes.any_in_box(r, met) || self.boxes.any_in_box(r, |id| meets(&self.pieces[id as usize].0)))
     }
 
+    /// Whether the segment `a`–`b` crosses a stroke segment of an item that `of` picks (by
+    /// its owner's index; pieces added with no item are never picked).
+    pub fn segment_crosses_stroke_of(&self, a: Point, b: Point, of: impl Fn(usize) -> bool) -> bool {
+        self.strokes.any_on_segment(a, b, |s| segments_cross(a, b, s.a, s.b) && of(self.pieces[s.id as usize].1))
+    }
+
     /// Whether the segment `a`–`b` crosses any stroke segment.
     pub fn segment_crosses_stroke(&self, a: Point, b: Point) -> bool {
         self.crosses_after(a, b, None)

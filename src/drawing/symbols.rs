@@ -126,16 +126,23 @@ pub fn dimension(g: &mut Group, a: Point, b: Point, offset: Vec2) -> Point {
         return da;
     }
     let u = (db - da) / len;
-    if len >= 2.0 * ARROW_LEN + 2.0 {
+    let tail = dimension_tail(da, db);
+    if tail == 0.0 {
         g.line(da, db, THIN);
         arrowhead(g, da, -u);
         arrowhead(g, db, u);
     } else {
-        g.line(da - u * 5.0, db + u * 5.0, THIN);
+        g.line(da - u * tail, db + u * tail, THIN);
         arrowhead(g, da, u);
         arrowhead(g, db, -u);
     }
     da.midpoint(db)
+}
+
+/// How far a dimension line da–db runs past each end, mm: 5 where it is too short for its
+/// arrows between its ends and they stand outside, pointing in; else none.
+pub fn dimension_tail(da: Point, db: Point) -> f64 {
+    if (db - da).norm() >= 2.0 * ARROW_LEN + 2.0 { 0.0 } else { 5.0 }
 }
 
 /// A dimension's value written along its horizontal or vertical dimension line `a`–`b` (GOST

@@ -5,6 +5,7 @@
 //! boxed in by "d=s5", "b=n_DB", s2 and s4, hung on a leader through "d=s5" in every round.
 
 use super::candidate::Candidate;
+use super::crossings::crosses_walls;
 use super::spots::Spots;
 use super::{LABEL_GAP, Labels, Layers, NEAR_SPOTS, NUMBERS_RANK};
 use crate::drawing::obstacles::{Obstacles, Piece};
@@ -39,10 +40,19 @@ impl Labels {
         Obstacles::of_pieces(pieces)
     }
 
-    /// Gives each label of `placed` without a clean spot one near its anchor where the
-    /// labels blocking it (at most [`MOST_MOVED`], each clean) can move to clean spots of
-    /// their own ([`MOVED_SPOTS`]); a label with no such spot stays where it is.
-    pub(super) fn make_room(&self, layers: Layers, spots: &mut [Spots], placed: &mut [(Candidate, bool)]) {
+    /// Gives each label of `placed` that `needs` a better spot (one without a clean spot,
+    /// one on a leader across a vector) one near its anchor, free against the drawing, where
+    /// the labels blocking it (at most [`MOST_MOVED`], each clean) can move to clean spots of
+    /// their own ([`MOVED_SPOTS`]) on leaders at most `reach` long (or no longer than they
+    /// were); a label with no such spot stays where it is.
+    pub(super) fn make_room(
+        &self,
+        layers: Layers,
+        spots: &mut [Spots],
+        placed: &mut [(Candidate, bool)],
+        needs: impl Fn(&(Candidate, bool)) -> bool,
+        reach: f64,
+    ) {
         // Each placed label as obstacles of its own, asked of every spot tried and made
         // again only when a move changes where labels stand.
         let each = |placed: &[(Candidate, bool)]| -> Vec<Obstacles> {
@@ -50,16 +60,16 @@ impl Labels {
         };
         let mut alone = each(placed);
         for i in 0..placed.len() {
-            if placed[i].1 {
+            if !needs(&placed[i]) {
                 continue;
             }
             for k in 0..NEAR_SPOTS {
                 let Some((c, v)) = spots[i].get(k) else { break };
-                if !v.is_free(c, layers.drawn) || !self.reads_as_own(i, c) {
+                if !v.is_free(c, layers.drawn) || !self.reads_as_own(i, c) || crosses_walls(&self.walls, c) {
                     continue;
                 }
                 let c = c.clone();
-                if let Some(moved) = self.moved_for(i, c, layers, spots, (placed, &alone)) {
+                if let Some(moved) = self.moved_for(i, c, (layers, reach), spots, (placed, &alone)) {
                     placed.clone_from_slice(&moved);
                     alone = each(placed);
                     break;
@@ -75,7 +85,7 @@ impl Labels {
         &self,
         i: usize,
         c: Candidate,
-        layers: Layers,
+        (layers, reach): (Layers, f64),
         spots: &mut [Spots],
         (placed, alone): (&[(Candidate, bool)], &[Obstacles]),
     ) -> Option<Vec<(Candidate, bool)>> {
@@ -90,9 +100,14 @@ impl Labels {
             // Against every label but this blocker and those not yet moved.
             let others = self.obstacles_of(&trial, |k| k != j && !blockers[n..].contains(&k));
             let s = &mut spots[j];
+            let reach = reach.max(placed[j].0.leader_length());
             let spot = (0..MOVED_SPOTS).find_map(|k| {
                 let (cand, v) = s.get(k)?;
-                let fits = v.is_free(cand, layers.drawn) && cand.is_free(&others) && self.reads_as_own(j, cand);
+                let fits = cand.leader_length() <= reach
+                    && !crosses_walls(&self.walls, cand)
+                    && v.is_free(cand, layers.drawn)
+                    && cand.is_free(&others)
+                    && self.reads_as_own(j, cand);
                 fits.then(|| cand.clone())
             })?;
             trial[j] = (spot, true);

@@ -19,7 +19,9 @@ use super::text::{LabelText, SLANT, SUB};
 use crate::num::math::Norm;
 use breakable::{LONG_LEADER, on_breakable};
 use candidate::{Candidate, Verdict, least_bad};
+use crossings::Detour;
 use kurbo::{Point, Rect, Vec2};
+use layers::{Layers, is_bold};
 use lined::unlined;
 pub use request::Placed;
 use request::Request;
@@ -29,6 +31,7 @@ use spots::Spots;
 mod breakable;
 mod candidate;
 mod crossings;
+mod layers;
 mod lined;
 mod make_room;
 mod request;
@@ -259,7 +262,8 @@ impl Labels {
                 h.add(piece, usize::MAX);
             }
         }
-        let layers = Layers { drawn: &drawn, hard: hard.as_ref() };
+        let bold: Vec<bool> = g.items.iter().map(is_bold).collect();
+        let layers = Layers { drawn: &drawn, hard: hard.as_ref(), bold: &bold, items: &g.items };
         // What the drawing alone says of each candidate is asked once (see `Verdict`): the
         // order and every round below ask it again and again, and it does not change as
         // labels are placed.
@@ -294,8 +298,13 @@ impl Labels {
             }
         }
         if failures(&best) > 0 {
-            self.make_room(layers, &mut spots, &mut best);
+            self.make_room(layers, &mut spots, &mut best, |(_, clean)| !clean, f64::INFINITY);
         }
+        // A leader across a vector where the spots clear of it near its point were taken by
+        // other labels (s₂ of a flat velocity plan, boxed in by «a» and «b=s₄»): those
+        // labels moved, each to a spot near its own point.
+        let across = |(c, clean): &(Candidate, bool)| *clean && layers.crosses_bold(c);
+        self.make_room(layers, &mut spots, &mut best, across, crossings::NEAR);
         self.untangle(layers, &own, &mut best);
         let mut placed = Vec::with_capacity(best.len());
         let mut gaps = Vec::new();
@@ -393,12 +402,19 @@ impl Labels {
                 // further allows: two leaders crossing read as each other's («3 ≡ 9» over
                 // «4 ≡ 8»'s on a slider).
                 let crosses = |c: &Candidate| crossings::crosses_walls(&self.walls, c);
-                let best = best.map(|c| crossings::off_leaders(s, &box_free, (drawn, &placed), &crosses, c));
+                let off = Detour { crosses_wall: &crosses, steps: crossings::PER_CROSSING, near: crossings::NEAR };
+                let best = best.map(|c| crossings::off_leaders(s, &box_free, (drawn, &placed), off, c));
+                // Then not across a vector or a link either, where a spot near enough allows.
+                let across = |c: &Candidate| crosses(c) || layers.crosses_bold(c);
+                let (steps, near) = crossings::OFF_BOLD;
+                let off = Detour { crosses_wall: &across, steps, near };
+                let best = best.map(|c| crossings::off_leaders(s, &box_free, (drawn, &placed), off, c));
                 // On a long leader: a nearer spot across a line or two, if it weighs less.
                 match best {
                     Some(c) if c.leader_at_least(crossings::LONG) => {
                         let reads = |c: &Candidate, v: &mut Verdict| box_free(c, v) && self.reads_as_own(i, c);
-                        crossings::nearer_across(s, &reads, (drawn, &placed), c.cost).or(Some(c))
+                        let bold = |c: &Candidate| layers.crosses_bold(c);
+                        crossings::nearer_across(s, &reads, (drawn, &placed), &bold, c.cost).or(Some(c))
                     }
                     best => best,
                 }
@@ -444,14 +460,6 @@ fn statements(g: &Group, reach: Rect) -> Vec<Piece> {
         .filter(|(b, _)| b.intersect(reach).area() > 0.0)
         .map(|(b, h)| Piece::Statement(b, h))
         .collect()
-}
-
-/// The drawing as the labels see it: everything, and without its breakable lines (none
-/// when it has none).
-#[derive(Clone, Copy)]
-struct Layers<'a> {
-    drawn: &'a Obstacles,
-    hard: Option<&'a Obstacles>,
 }
 
 /// How many of a label's cheapest spots are looked at for one beside its point.

@@ -288,16 +288,13 @@ fn draw_centre(
     d: &Design,
     words: &CamWords,
 ) {
-    let (l, c, lang) = (words.sheet, words.common, words.lang);
+    let (l, lang) = (words.sheet, words.lang);
     let o = d.centre.o;
     g.dot(view.p(o), 0.8);
     labels.add_text(view.p(o), Vec2::new(-1.0, 1.0), "O", 3.5);
     vector(g, view.p(o), view.p(Vec2::ZERO), THIN);
-    let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(
-        " = {} {}",
-        fmt::trimmed(mm(d.centre.r_min), lang),
-        c.unit_mm()
-    ));
+    // The dimensions without their unit, as GOST 2.307 writes a drawing's millimetres.
+    let r_text = LabelText::new("r", l.sub_min()).with_tail(format!(" = {}", fmt::trimmed(mm(d.centre.r_min), lang)));
     if let Some(a) = d.spec.follower.pivot() {
         let end = toward(o, a, extent);
         g.line(view.p(o), view.p(end), DASHED);
@@ -307,18 +304,19 @@ fn draw_centre(
             labels.add_text(view.p(end), view.p(end) - view.p(o), "A", 3.5);
         }
         let dist = d.centre_distance().unwrap_or_default();
-        let t = LabelText::new("a", "w").with_tail(format!(" = {} {}", fmt::trimmed(mm(dist), lang), c.unit_mm()));
+        let t = LabelText::new("a", "w").with_tail(format!(" = {}", fmt::trimmed(mm(dist), lang)));
         labels.add(view.p((o + end) * 0.5), Vec2::new(0.0, 1.0), t, 3.5);
     } else if o.x.abs() > tol::ZERO_OFFSET {
         let depth = offset_depth(d, view.len(o.x.abs()));
         let mid = dimension(g, view.p(Vec2::new(0.0, o.y)), view.p(o), Vec2::new(0.0, depth));
-        let t = format!("e = {} {}", fmt::trimmed(mm(o.x.abs()), lang), c.unit_mm());
+        // Still with its unit: without it, the shorter label took the admissible zone's
+        // middle from its name on a translating-offset cam and went 46 mm off (left open).
+        let t = format!("e = {} {}", fmt::trimmed(mm(o.x.abs()), lang), words.common.unit_mm());
         labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);
     }
-    // Along its radius where it finds room there (GOST 2.307), else level beside it: between
-    // the limiting lines a level value hung 22–35 mm off on a leader. Set after every line
-    // of the picture is drawn.
     let drawn = Obstacles::of_items(&g.items);
+    // Along its radius where it finds room there (GOST 2.307), else level beside it: between
+    // the limiting lines a level value hung 22–35 mm off on a leader.
     match along_line((&drawn, area), (view.p(o), view.p(Vec2::ZERO)), (&r_text, 3.5), None) {
         Some(t) => g.text(t),
         None => labels.add(view.p(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5),

@@ -152,13 +152,9 @@ fn draw_r_min(g: &mut Group, labels: &mut Labels, view: View, d: &Design, words:
     end
 }
 
-/// r_min = … mm.
+/// r_min = … (mm, without the unit as GOST 2.307 writes a dimension).
 fn r_min_value(d: &Design, words: &CamWords) -> LabelText {
-    LabelText::new("r", words.sheet.sub_min()).with_tail(format!(
-        " = {} {}",
-        fmt::trimmed(mm(d.centre.r_min), words.lang),
-        words.common.unit_mm()
-    ))
+    LabelText::new("r", words.sheet.sub_min()).with_tail(format!(" = {}", fmt::trimmed(mm(d.centre.r_min), words.lang)))
 }
 
 /// The radius of O's joint circle, mm.

@@ -110,8 +110,8 @@ impl MechanismView<'_> {
             let Some(off) = fitting.min_by_key(|&off| (crosses_text(&off), cost(off))) else { continue };
             let since = g.items.len();
             let mid = dimension(g, ea, eb, off);
-            let (lang, c) = (self.words.lang, self.words.common);
-            let value = format!(" = {} {}", fmt::value(1e3 * length, lang), c.unit_mm());
+            // Without its unit, as GOST 2.307 writes a drawing's millimetres.
+            let value = format!(" = {}", fmt::trimmed(1e3 * length, self.words.lang));
             let sub = if named { self.m.name(slider) } else { "" };
             let label = LabelText::new("H", sub).with_tail(value);
             let line = (ea + off, eb + off);
