@@ -138,3 +138,46 @@ fn a_translating_followers_pressure_angle_is_the_textbook_ones() {
         assert!((drawn - alpha).abs() < 0.3 * mu + 0.5, "{name}: at φ = {phi}° drawn {drawn}°, textbook {alpha}°");
     }
 }
+
+/// A knife-edged rocker's tabulated pressure angles are its linkage's, computed here with
+/// the pivot A at the origin, the cam's centre O at (a_w, 0) and the rocker at ψ = ψ₀ + β
+/// from AO: the relative instant centre P of cam and rocker lies on AO at a_w/(1 − i), i =
+/// dβ/dφ (the rocker's angular velocity over the cam's), and the contact normal runs from
+/// the knife edge B through P, so the angle from B's velocity (across AB) to it is
+/// tan α = (l(1 − i) − a_w cos ψ)/(a_w sin ψ). The law is coded here (the guide's law 2,
+/// β = β_max(3x² − 2x³) on the rise, falling back likewise on the return); only a_w and ψ₀
+/// come from the design. The signed angle passes through zero late in the return, between
+/// its positions of 142.5° and 150°: the drawn |α| dips there, and a teacher asked why.
+#[test]
+fn a_knife_rockers_tabulated_pressure_angles_are_its_linkages() {
+    let (_, b) = built().into_iter().find(|(n, _)| n == "knife-rocker").unwrap();
+    let r = &b.output.results;
+    let (l, beta_max) = (0.12, 20f64.to_radians());
+    let (a_w, psi_0) = (r["centre_distance"].as_f64().unwrap(), r["rocker_start_deg"].as_f64().unwrap().to_radians());
+    let (rise, ret) = (90f64.to_radians(), 60f64.to_radians());
+    // β and dβ/dφ of the guide's law 2 at φ (no far dwell).
+    let law = |phi: f64| {
+        let (x, sign, span) = if phi <= rise { (phi / rise, 1.0, rise) } else { ((phi - rise) / ret, -1.0, ret) };
+        let (s, ds) = (x * x * (3.0 - 2.0 * x), 6.0 * x * (1.0 - x));
+        let beta = if sign > 0.0 { beta_max * s } else { beta_max * (1.0 - s) };
+        (beta, sign * beta_max * ds / span)
+    };
+    let signed = |phi_deg: f64| {
+        let (beta, i) = law(phi_deg.to_radians());
+        let psi = psi_0 + beta;
+        (l * (1.0 - i) - a_w * psi.cos()).atan2(a_w * psi.sin()).to_degrees()
+    };
+    let mut checked = 0;
+    for id in ["law-rise", "law-return"] {
+        let t = b.output.tables.iter().find(|t| t.table.id == id).unwrap();
+        let row = |key: &str| &t.table.rows.iter().find(|r| r.key == key).unwrap().values;
+        for (&phi, &alpha) in row("phi").iter().zip(row("alpha")) {
+            let exact = signed(phi).abs();
+            assert!((alpha - exact).abs() < 1e-6, "{id} at φ = {phi}°: {alpha}° against the linkage's {exact}°");
+            checked += 1;
+        }
+    }
+    assert!(checked >= 15, "only {checked} tabulated angles");
+    let (before, after) = (signed(142.5), signed(150.0));
+    assert!(before * after < 0.0 && before.abs() > 15.0, "no sign change: {before}° at 142.5°, {after}° at 150°");
+}
