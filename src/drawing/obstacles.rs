@@ -12,10 +12,13 @@ use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
 
 mod flatten;
 mod geometry;
+mod hints;
 mod memo;
 pub use flatten::segments;
 use geometry::disc_meets_rect;
 pub use geometry::{rect_segment_distance, segment_meets_rect, segment_span_in_rect, segments_cross};
+use hints::Hints;
+pub use hints::SLOTS;
 pub use memo::new_build;
 
 /// Flattening tolerance of curves, mm: far below a line's width.
@@ -398,50 +401,6 @@ impl Obstacles {
         let meets =
             |id: u32| matches!(self.pieces[id as usize].0, Piece::TextBox(t) if segment_meets_rect(a, b, clear(t)));
         self.boxes.any_on_segment(a, b, meets)
-    }
-}
-
-/// The segments that last answered a question, asked first next time: a label's spots come
-/// round its anchor, and the line that blocked one spot mostly blocks the next (most spots
-/// tried are blocked, and a blocked box's cells were read up to the line that blocks it).
-/// Only the order in which segments are tested changes: every answer is the same.
-#[derive(Debug)]
-struct Hints {
-    met: AtomicU32,
-    crossed: AtomicU32,
-    /// The segment that last met a box asked in each slot ([`Obstacles::is_clear_in`]).
-    slots: [AtomicU32; SLOTS],
-    /// The segment that last crossed one asked in each slot
-    /// ([`Obstacles::segment_crosses_stroke_in`]).
-    crossed_slots: [AtomicU32; SLOTS],
-}
-
-/// How many slots of hints [`Obstacles::is_clear_in`] keeps: one for each of a label's
-/// directions.
-pub const SLOTS: usize = 24;
-
-impl Default for Hints {
-    fn default() -> Hints {
-        Hints {
-            met: AtomicU32::new(u32::MAX),
-            crossed: AtomicU32::new(u32::MAX),
-            slots: std::array::from_fn(|_| AtomicU32::new(u32::MAX)),
-            crossed_slots: std::array::from_fn(|_| AtomicU32::new(u32::MAX)),
-        }
-    }
-}
-
-impl Clone for Hints {
-    fn clone(&self) -> Hints {
-        Hints::default()
-    }
-}
-
-impl Hints {
-    /// Remembers piece `id` in `hint`; true, to end the search that found it.
-    fn remember(&self, hint: &AtomicU32, id: u32) -> bool {
-        hint.store(id, Relaxed);
-        true
     }
 }
 
