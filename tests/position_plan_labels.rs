@@ -298,16 +298,27 @@ fn leader_crossings_over_the_catalogue() {
 /// leader, each beside the other's arc. Where two labels' leaders cross, the labels swap
 /// spots if both then stand clear (`place::untangle`). No two leaders of one drawing cross
 /// on any fixture's three sheets, in any language (three pairs before, one per language;
-/// over the catalogue's Russian sheets 1, 304 → 262).
+/// over the catalogue's Russian sheets 1, 304 → 262) but the pairs [`CROSSING_ALLOWED`]
+/// names.
 #[test]
 fn no_two_leaders_cross_on_any_fixture() {
     let mut crossing = Vec::new();
     for (what, built) in every_fixture_built(&[]) {
         for g in built.iter().flat_map(|b| &b.output.scene.groups) {
-            for (l, m) in crossing_pairs(&leaders(g)) {
-                crossing.push(format!("{what} {}: {l:.1?} × {m:.1?}", g.id));
+            let pairs: Vec<String> =
+                crossing_pairs(&leaders(g)).map(|(l, m)| format!("{what} {}: {l:.1?} × {m:.1?}", g.id)).collect();
+            let allowed =
+                CROSSING_ALLOWED.iter().find(|(f, id, _)| what.starts_with(f) && g.id == *id).map_or(0, |a| a.2);
+            if pairs.len() > allowed {
+                crossing.extend(pairs);
             }
         }
     }
     assert!(crossing.is_empty(), "{}", crossing.join("\n"));
 }
+
+/// How many pairs of leaders may cross in a fixture's drawing, where no spot near the points
+/// is free of both: the vertical slider's twelve positions within 130 mm of its guide, «4»
+/// and «8» boxed in by «3», «5», «9» and the rod (since short leaders meet their labels at a
+/// corner, not level into their side: catalogue-wide the pairs crossing went 267 → 265).
+const CROSSING_ALLOWED: [(&str, &str, usize); 1] = [("crank-slider-offset-vertical", "mechanism", 1)];

@@ -25,7 +25,7 @@ pub(super) fn on_breakable(
     (drawn, hard): (&Obstacles, &Obstacles),
     placed: &Obstacles,
 ) -> Option<Candidate> {
-    (0..NEAR_SPOTS).map_while(|k| s.get(k).map(|(c, _)| c.clone())).find_map(|mut c| {
+    (0..).map_while(|k| s.near(k, NEAR_SPOTS).map(|(c, _)| c.clone())).find_map(|mut c| {
         let r = c.r.inflate(CLEAR, CLEAR);
         let short = c.leader.is_none_or(|(a, b)| (b - a).norm() < LONG_LEADER && !hard.segment_crosses_text(a, b));
         let fits = short

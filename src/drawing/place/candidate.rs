@@ -64,6 +64,12 @@ pub(super) struct Candidate {
     pub(super) apart_from_taller: bool,
     /// Its lettering height, mm.
     pub(super) h: f64,
+    /// It is the box of the candidate before it with another leader (see
+    /// [`super::spots`]).
+    pub(super) again: bool,
+    /// How many boxes of its label's spots come before its own (a box's further leaders
+    /// share it): a window of near spots counts boxes, not leaders.
+    pub(super) nth: usize,
 }
 
 /// A leader shorter than this leaves its label beside its point, seen or lost in a line,

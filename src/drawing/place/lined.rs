@@ -19,8 +19,10 @@ pub(super) fn unlined(
         return chosen;
     }
     let longest = chosen.leader_length() + LINED_DETOUR;
-    (0..NEAR_SPOTS)
-        .map_while(|k| s.get(k).map(|(c, v)| (c.leader_length() <= longest && fits(c, v)).then(|| c.clone())))
+    (0..)
+        .map_while(|k| {
+            s.near(k, NEAR_SPOTS).map(|(c, v)| (c.leader_length() <= longest && fits(c, v)).then(|| c.clone()))
+        })
         .flatten()
         .find(|c| !c.is_lined(drawn))
         .unwrap_or(chosen)

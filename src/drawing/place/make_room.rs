@@ -41,7 +41,8 @@ impl Labels {
     }
 
     /// Gives each label of `placed` that `needs` a better spot (one without a clean spot,
-    /// one on a leader across a vector) one near its anchor, free against the drawing, where
+    /// one on a leader across a vector) one near its anchor, its box free against the
+    /// drawing and its leader across no vector and at most as many lines as `needs` says, where
     /// the labels blocking it (at most [`MOST_MOVED`], each clean) can move to clean spots of
     /// their own ([`MOVED_SPOTS`]) on leaders at most `reach` long (or no longer than they
     /// were); a label with no such spot stays where it is.
@@ -50,7 +51,7 @@ impl Labels {
         layers: Layers,
         spots: &mut [Spots],
         placed: &mut [(Candidate, bool)],
-        needs: impl Fn(&(Candidate, bool)) -> bool,
+        needs: impl Fn(&(Candidate, bool)) -> Option<usize>,
         reach: f64,
     ) {
         // Each placed label as obstacles of its own, asked of every spot tried and made
@@ -60,16 +61,22 @@ impl Labels {
         };
         let mut alone = each(placed);
         for i in 0..placed.len() {
-            if !needs(&placed[i]) {
-                continue;
-            }
-            for k in 0..NEAR_SPOTS {
-                let Some((c, v)) = spots[i].get(k) else { break };
-                if !v.is_free(c, layers.drawn) || !self.reads_as_own(i, c) || crosses_walls(&self.walls, c) {
+            let Some(most_crossed) = needs(&placed[i]) else { continue };
+            for k in 0.. {
+                let Some((c, v)) = spots[i].near(k, NEAR_SPOTS) else { break };
+                let clear = if most_crossed == 0 {
+                    v.is_free(c, layers.drawn)
+                } else {
+                    v.box_is_free(c, layers.drawn)
+                        && v.crossings(c, layers.drawn) <= most_crossed
+                        && !layers.crosses_bold(c)
+                };
+                if !clear || !self.reads_as_own(i, c) || crosses_walls(&self.walls, c) {
                     continue;
                 }
                 let c = c.clone();
-                if let Some(moved) = self.moved_for(i, c, (layers, reach), spots, (placed, &alone)) {
+                let thin = most_crossed > 0;
+                if let Some(moved) = self.moved_for(i, c, (layers, reach, thin), spots, (placed, &alone)) {
                     placed.clone_from_slice(&moved);
                     alone = each(placed);
                     break;
@@ -85,7 +92,7 @@ impl Labels {
         &self,
         i: usize,
         c: Candidate,
-        (layers, reach): (Layers, f64),
+        (layers, reach, thin): (Layers, f64, bool),
         spots: &mut [Spots],
         (placed, alone): (&[(Candidate, bool)], &[Obstacles]),
     ) -> Option<Vec<(Candidate, bool)>> {
@@ -101,15 +108,26 @@ impl Labels {
             let others = self.obstacles_of(&trial, |k| k != j && !blockers[n..].contains(&k));
             let s = &mut spots[j];
             let reach = reach.max(placed[j].0.leader_length());
-            let spot = (0..MOVED_SPOTS).find_map(|k| {
-                let (cand, v) = s.get(k)?;
-                let fits = cand.leader_length() <= reach
-                    && !crosses_walls(&self.walls, cand)
-                    && v.is_free(cand, layers.drawn)
-                    && cand.is_free(&others)
-                    && self.reads_as_own(j, cand);
-                fits.then(|| cand.clone())
-            })?;
+            let crossed = placed[j].0.leader.map_or(0, |(a, b)| layers.drawn.hits_segment(a, b));
+            let spot = (0..)
+                .map_while(|k| {
+                    let (cand, v) = s.near(k, MOVED_SPOTS)?;
+                    let clear = if thin {
+                        v.box_is_free(cand, layers.drawn)
+                            && v.crossings(cand, layers.drawn) <= crossed
+                            && !layers.crosses_bold(cand)
+                    } else {
+                        v.is_free(cand, layers.drawn)
+                    };
+                    let fits = cand.leader_length() <= reach
+                        && !crosses_walls(&self.walls, cand)
+                        && clear
+                        && cand.is_free(&others)
+                        && self.reads_as_own(j, cand);
+                    Some(fits.then(|| cand.clone()))
+                })
+                .flatten()
+                .next()?;
             trial[j] = (spot, true);
         }
         Some(trial)

@@ -29,21 +29,29 @@ struct Stream {
     around: Around,
     at: usize,
     head: Option<Candidate>,
+    /// The same spot with its further leaders, next after the head, the last first (see
+    /// [`Around::spot`]).
+    further: Vec<Candidate>,
 }
 
 impl Stream {
     fn new(req: &Request, bounds: Rect, around: Around) -> Stream {
-        let mut s = Stream { around, at: 0, head: None };
+        let mut s = Stream { around, at: 0, head: None, further: Vec::new() };
         s.advance(req, bounds);
         s
     }
 
     /// Makes the next spot inside `bounds` the head.
     fn advance(&mut self, req: &Request, bounds: Rect) {
+        if let Some(c) = self.further.pop() {
+            self.head = Some(c);
+            return;
+        }
         self.head = loop {
             let Some(&(di, dir)) = SPOTS_CHEAPEST_FIRST.get(self.at) else { break None };
             self.at += 1;
-            if let Some(c) = self.around.spot(req, bounds, di, dir) {
+            if let Some((c, further)) = self.around.spot(req, bounds, di, dir) {
+                self.further = further;
                 break Some(c);
             }
         };
@@ -94,7 +102,7 @@ impl<'a> Spots<'a> {
             while self.made.len() <= k {
                 let c = stream.head.take()?;
                 stream.advance(self.req, self.bounds);
-                self.made.push((c, Verdict::default()));
+                push(&mut self.made, c);
             }
         }
         while self.made.len() <= k {
@@ -108,9 +116,15 @@ impl<'a> Spots<'a> {
             let stream = &mut self.streams[cheapest];
             let c = stream.head.take()?;
             stream.advance(self.req, self.bounds);
-            self.made.push((c, Verdict::default()));
+            push(&mut self.made, c);
         }
         self.made.get_mut(k).map(|(c, v)| (&*c, v))
+    }
+
+    /// Candidate `k` and its verdict, as [`Spots::get`], while its box is one of the first
+    /// `boxes`.
+    pub(super) fn near(&mut self, k: usize, boxes: usize) -> Option<(&Candidate, &mut Verdict)> {
+        self.get(k).filter(|(c, _)| c.nth < boxes)
     }
 
     /// Every candidate.
@@ -118,6 +132,12 @@ impl<'a> Spots<'a> {
         while self.get(self.made.len()).is_some() {}
         self.made.iter().map(|(c, _)| c.clone()).collect()
     }
+}
+
+/// Makes `c` the next candidate of `made`, numbering its box.
+fn push(made: &mut Vec<(Candidate, Verdict)>, mut c: Candidate) {
+    c.nth = made.last().map_or(0, |(p, _)| p.nth + usize::from(!c.again));
+    made.push((c, Verdict::default()));
 }
 
 /// Every (distance, direction) index pair, cheapest first and, among equals, in the order
@@ -169,8 +189,13 @@ impl Around {
     }
 
     /// The candidate box at distance `DISTANCES[di]` in direction `k`, if it is inside
-    /// `bounds` (and far enough for a line's name).
-    fn spot(&self, req: &Request, bounds: Rect, di: usize, k: usize) -> Option<Candidate> {
+    /// `bounds` (and far enough for a line's name), and the same box with further leaders,
+    /// the last to try first: a short leader that would run level into the box's side goes
+    /// to the side's corner farther from the anchor's height, then to the other
+    /// ([`LEVEL_SHORT`]). A third try with the level leader itself, as a last resort, left
+    /// more leaders across vectors over the catalogue's sheets 1, not fewer (973 against
+    /// 968), and 215 dashes.
+    fn spot(&self, req: &Request, bounds: Rect, di: usize, k: usize) -> Option<(Candidate, Vec<Candidate>)> {
         let dist = DISTANCES[di];
         if req.names_line && dist < LEADER_FROM {
             return None;
@@ -187,13 +212,14 @@ impl Around {
             return None;
         }
         let gap = req.leader_gap();
-        let leader = (dist >= LEADER_FROM).then(|| leader(self.anchor, r, gap));
+        let ends = (dist >= LEADER_FROM).then(|| leader_ends(self.anchor, r, gap));
+        let leader = ends.as_ref().map(|e| e.0);
         // A direction's spots share a slot of hints (a direction past the slots would have
         // none: the answers are the same).
         const _: () = assert!(DIRECTIONS <= crate::drawing::obstacles::SLOTS && DIRECTIONS <= 256);
         let dir = k as u8;
         let cost = spot_cost(self.extra, di, k);
-        Some(Candidate {
+        let c = Candidate {
             r,
             anchor: self.anchor,
             leader,
@@ -203,18 +229,50 @@ impl Around {
             states_value: req.states_value,
             apart_from_taller: req.apart_from_taller,
             h: req.h,
-        })
+            again: false,
+            nth: 0,
+        };
+        let further = ends.map_or_else(Vec::new, |e| {
+            e.1.iter().rev().map(|&l| Candidate { leader: Some(l), again: true, ..c.clone() }).collect()
+        });
+        Some((c, further))
     }
 }
 
-/// A leader from `gap` off the anchor to [`LEADER_SHORT`] short of the nearest point of the
-/// label's box (a leader ending on the box's edge touches the letters' tops).
-pub(super) fn leader(anchor: Point, r: Rect, gap: f64) -> (Point, Point) {
+/// A label's leader from `gap` off the anchor to [`LEADER_SHORT`] short of the nearest point
+/// of the label's box `r` (a leader ending on the box's edge touches the letters' tops),
+/// and no other; or where that one is short and runs level into the box's side (the anchor
+/// at the height of the box), leaders to the side's two corners instead, the one farther
+/// from the anchor's height first.
+pub(super) fn leader_ends(anchor: Point, r: Rect, gap: f64) -> ((Point, Point), Vec<(Point, Point)>) {
     let end = Point::new(anchor.x.clamp(r.x0, r.x1), anchor.y.clamp(r.y0, r.y1));
+    let level = anchor.y > r.y0 && anchor.y < r.y1;
+    if !level || (end - anchor).norm() >= LEVEL_SHORT + gap + LEADER_SHORT {
+        return (leader_to(anchor, end, gap), Vec::new());
+    }
+    let (far, near) = if anchor.y - r.y0 > r.y1 - anchor.y { (r.y0, r.y1) } else { (r.y1, r.y0) };
+    // It stops short of the corner along both sides (a slanted leader stopped short along
+    // itself alone ends closer than that to the letters' side).
+    let corner = |y: f64| {
+        let c = Point::new(end.x, y);
+        let out = Vec2::new((c.x - r.center().x).signum(), (c.y - r.center().y).signum()) * LEADER_SHORT;
+        let d = c + out - anchor;
+        (anchor + d.unit() * gap.min(d.norm() / 2.0), c + out)
+    };
+    (corner(far), vec![corner(near)])
+}
+
+/// A leader from `gap` off `anchor` to [`LEADER_SHORT`] short of `end`.
+fn leader_to(anchor: Point, end: Point, gap: f64) -> (Point, Point) {
     let d = end - anchor;
     let start = anchor + d.unit() * gap.min(d.norm() / 2.0);
     (start, end - d.unit() * LEADER_SHORT.min(d.norm() / 4.0))
 }
+
+/// A leader shorter than this as drawn, mm, running level into its label's side reads as a
+/// dash or a minus in the text («—s₂», «r_b1 −», a teacher's marks): it meets a corner,
+/// slanted.
+const LEVEL_SHORT: f64 = 8.0;
 
 /// How far a leader stops short of its label's box, mm.
 const LEADER_SHORT: f64 = 0.5;

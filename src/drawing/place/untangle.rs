@@ -2,11 +2,12 @@
 //! pivot, each hung across the other's leader): where the labels swap spots — each box
 //! centred where the other's was — their leaders no longer cross (two crossing segments
 //! with their ends exchanged never do), and they are swapped where both stand as clear as
-//! before.
+//! before. First, though, a short leader that meets its label at a corner may go to the
+//! side's other corner instead, where that one crosses nothing (a slider's «4» and «8»).
 
 use super::candidate::{Candidate, Verdict};
 use super::crossings::crosses_walls;
-use super::spots::leader;
+use super::spots::leader_ends;
 use super::{LEADER_FROM, Labels, Layers};
 use crate::num::math::{Norm, lines_cross, rect_inside};
 use kurbo::{Point, Rect};
@@ -23,6 +24,12 @@ impl Labels {
             for i in 0..placed.len() {
                 for j in i + 1..placed.len() {
                     if !self.leaders_cross(placed, i, j) {
+                        continue;
+                    }
+                    if let Some(c) = self.rerouted(layers, placed, i).or_else(|| self.rerouted(layers, placed, j)) {
+                        let k = if c.anchor == placed[i].0.anchor && c.r == placed[i].0.r { i } else { j };
+                        placed[k].0 = c;
+                        swapped = true;
                         continue;
                     }
                     let inside = |k: usize, c: &Candidate| rect_inside(own[k], c.r);
@@ -85,13 +92,35 @@ impl Labels {
         b.is_free(&others).then_some((a, b))
     }
 
+    /// Label `k` where it stands with its leader to the other corner of its box's side
+    /// ([`leader_ends`]), if that one crosses no other label's leader, is seen, crosses no
+    /// wall, no vector or link it did not, and no more lines.
+    fn rerouted(&self, layers: Layers, placed: &[(Candidate, bool)], k: usize) -> Option<Candidate> {
+        let c = &placed[k].0;
+        let (first, others) = leader_ends(c.anchor, c.r, self.requests[k].leader_gap());
+        let drawn = layers.drawn;
+        let crossings = |c: &Candidate| c.leader.map_or(0, |(p, q)| drawn.hits_segment(p, q));
+        let labels = self.obstacles_of(placed, |m| m != k);
+        let bold = layers.crosses_bold(c);
+        std::iter::once(first).chain(others).filter(|&l| c.leader != Some(l)).find_map(|l| {
+            let a = Candidate { leader: Some(l), ..c.clone() };
+            let fits = c.leader.is_some()
+                && crossings(&a) <= crossings(c)
+                && Verdict::default().leader_seen(&a, drawn)
+                && !crosses_walls(&self.walls, &a)
+                && (bold || !layers.crosses_bold(&a))
+                && a.is_free(&labels);
+            fits.then_some(a)
+        })
+    }
+
     /// Label `k`'s candidate `c` moved to have its box centred at `centre`, its leader
     /// drawn anew.
     fn moved(&self, k: usize, c: &Candidate, centre: Point) -> Candidate {
         let r = Rect::from_center_size(centre, c.r.size());
         let nearest = Point::new(c.anchor.x.clamp(r.x0, r.x1), c.anchor.y.clamp(r.y0, r.y1));
         let gap = self.requests[k].leader_gap();
-        let leader = ((nearest - c.anchor).norm() >= LEADER_FROM).then(|| leader(c.anchor, r, gap));
+        let leader = ((nearest - c.anchor).norm() >= LEADER_FROM).then(|| leader_ends(c.anchor, r, gap).0);
         Candidate { r, leader, ..c.clone() }
     }
 }
