@@ -149,9 +149,9 @@ pub fn dimension_tail(da: Point, db: Point) -> f64 {
 /// 2.307: over a horizontal line, left of a vertical one reading upward; else on the other
 /// side), where nothing drawn in `g` is within 0.5 mm of it (`drawn` indexes its items
 /// before `since`, the caller's index reused; those after are indexed here) and it stays
-/// inside
-/// `bounds`; returns whether it was written (else the caller places it as a label: an oblique
-/// line, a value longer than its line, or no room on either side).
+/// inside `bounds`, under its line too unless `over_only`; returns whether it was written
+/// (else nothing was, and the caller places it as a label: an oblique line, a value longer
+/// than its line, or no room on either side).
 pub fn value_along(
     g: &mut Group,
     (drawn, since): (&Obstacles, usize),
@@ -159,6 +159,7 @@ pub fn value_along(
     (a, b): (Point, Point),
     h: f64,
     bounds: Rect,
+    over_only: bool,
 ) -> bool {
     let d = b - a;
     let len = d.norm();
@@ -193,7 +194,8 @@ pub fn value_along(
     let half = corners.iter().map(|&c| (c - mid).dot(t).abs()).fold(0.0, f64::max);
     let room = (len / 2.0 - half - ARROW_LEN - VALUE_CLEAR).max(0.0);
     let spots = || {
-        [VALUE_GAP - lo, -VALUE_GAP - hi].into_iter().flat_map(move |shift| {
+        let under = (!over_only).then_some(-VALUE_GAP - hi);
+        [Some(VALUE_GAP - lo), under].into_iter().flatten().flat_map(move |shift| {
             along_slides().map(move |slide| {
                 let text = Text { rotate, ..value.text(mid + t * (slide * room) + up * shift, h, Anchor::Middle) };
                 let clear = if slide == 0.0 { VALUE_CLEAR } else { SLID_CLEAR };

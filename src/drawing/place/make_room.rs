@@ -1,4 +1,6 @@
-//! The last repair of a placement: a label the rounds left without a clean spot takes a
+//! The repairs after the rounds ([`Labels::repair`]), the last of them here: a label the
+//! rounds left without a clean spot (or on a leader across a vector, or across another
+//! label's leader) takes a
 //! spot near its anchor that only other labels block, and those labels move to clean spots
 //! of their own. Putting the failed label first (the rounds) cannot do this
 //! where the labels placed after it then fail in turn: a flat acceleration plan's n_BA,
@@ -7,8 +9,9 @@
 use super::candidate::Candidate;
 use super::crossings::crosses_walls;
 use super::spots::Spots;
-use super::{LABEL_GAP, Labels, Layers, NEAR_SPOTS, NUMBERS_RANK};
+use super::{LABEL_GAP, Labels, Layers, NEAR_SPOTS, NUMBERS_RANK, crossings};
 use crate::drawing::obstacles::{Obstacles, Piece};
+use kurbo::Rect;
 
 /// The most placed labels one failed label may move.
 const MOST_MOVED: usize = 2;
@@ -18,6 +21,36 @@ const MOST_MOVED: usize = 2;
 const MOVED_SPOTS: usize = 3 * NEAR_SPOTS;
 
 impl Labels {
+    /// The repairs after the rounds, on `best` (each label's bounds `own`): a label left
+    /// without a clean spot, then one on a leader across a vector or a link, takes a spot
+    /// near its point where the labels in its way can move ([`Labels::make_room`]); two
+    /// labels whose leaders cross swap or turn a leader ([`Labels::untangle`]), and where
+    /// they still cross one moves as well.
+    pub(super) fn repair(&self, layers: Layers, spots: &mut [Spots], best: &mut [(Candidate, bool)], own: &[Rect]) {
+        if best.iter().any(|p| !p.1) {
+            let failed = |_: usize, (_, clean): &(Candidate, bool)| (!clean).then_some(0);
+            self.make_room(layers, spots, best, failed, f64::INFINITY);
+        }
+        // A leader across a vector where the spots clear of it near its point were taken by
+        // other labels (s₂ of a flat velocity plan, boxed in by «a» and «b=s₄»): those
+        // labels moved, each to a spot near its own point. In a knot of thin lines (a
+        // slider's positions on their guide) the new leader may cross as many thin lines.
+        let thin_crossed = |c: &Candidate| c.leader.map_or(0, |(a, b)| layers.drawn.hits_segment(a, b));
+        let across =
+            |_: usize, (c, clean): &(Candidate, bool)| (*clean && layers.crosses_bold(c)).then(|| thin_crossed(c));
+        self.make_room(layers, spots, best, across, crossings::NEAR);
+        self.untangle(layers, own, best);
+        // Two leaders still crossing, neither swapped nor turned to another corner: one
+        // moves to a spot near its point, the labels in its way to spots of their own (over
+        // the catalogue's Russian sheets 1, pairs of leaders crossing 249 → 193).
+        let crossed: Vec<bool> =
+            (0..best.len()).map(|i| (0..best.len()).any(|j| j != i && self.leaders_cross(best, i, j))).collect();
+        if crossed.contains(&true) {
+            let crossing = |i: usize, (c, clean): &(Candidate, bool)| (*clean && crossed[i]).then(|| thin_crossed(c));
+            self.make_room(layers, spots, best, crossing, crossings::NEAR);
+        }
+    }
+
     /// What label `i` standing at `c` keeps the labels placed after it out of: its box
     /// (a position number's widened by [`LABEL_GAP`]: two numbers 0.5 mm apart read as
     /// one) and its leader.
@@ -51,7 +84,7 @@ impl Labels {
         layers: Layers,
         spots: &mut [Spots],
         placed: &mut [(Candidate, bool)],
-        needs: impl Fn(&(Candidate, bool)) -> Option<usize>,
+        needs: impl Fn(usize, &(Candidate, bool)) -> Option<usize>,
         reach: f64,
     ) {
         // Each placed label as obstacles of its own, asked of every spot tried and made
@@ -61,7 +94,7 @@ impl Labels {
         };
         let mut alone = each(placed);
         for i in 0..placed.len() {
-            let Some(most_crossed) = needs(&placed[i]) else { continue };
+            let Some(most_crossed) = needs(i, &placed[i]) else { continue };
             for k in 0.. {
                 let Some((c, v)) = spots[i].near(k, NEAR_SPOTS) else { break };
                 let clear = if most_crossed == 0 {

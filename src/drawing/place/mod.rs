@@ -297,22 +297,7 @@ impl Labels {
                 best = whole;
             }
         }
-
-        if failures(&best) > 0 {
-            let failed = |(_, clean): &(Candidate, bool)| (!clean).then_some(0);
-            self.make_room(layers, &mut spots, &mut best, failed, f64::INFINITY);
-        }
-        // A leader across a vector where the spots clear of it near its point were taken by
-        // other labels (s₂ of a flat velocity plan, boxed in by «a» and «b=s₄»): those
-        // labels moved, each to a spot near its own point. In a knot of thin lines (a
-        // slider's positions on their guide) the new leader may cross as many thin lines.
-        let across = |(c, clean): &(Candidate, bool)| {
-            (*clean && layers.crosses_bold(c)).then(|| c.leader.map_or(0, |(a, b)| layers.drawn.hits_segment(a, b)))
-        };
-        self.make_room(layers, &mut spots, &mut best, across, crossings::NEAR);
-
-        self.untangle(layers, &own, &mut best);
-
+        self.repair(layers, &mut spots, &mut best, &own);
         let mut placed = Vec::with_capacity(best.len());
         let mut gaps = Vec::new();
         for (req, (cand, clear)) in self.requests.iter().zip(best) {

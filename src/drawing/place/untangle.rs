@@ -46,7 +46,7 @@ impl Labels {
         }
     }
 
-    fn leaders_cross(&self, placed: &[(Candidate, bool)], i: usize, j: usize) -> bool {
+    pub(super) fn leaders_cross(&self, placed: &[(Candidate, bool)], i: usize, j: usize) -> bool {
         let drawn = |k: usize| self.requests[k].drawn_leader(&placed[k].0);
         match (drawn(i), drawn(j)) {
             (Some(l), Some(m)) => lines_cross(l, m),

@@ -43,6 +43,10 @@ fn numbers_depth(plan: &SliderNumbers) -> f64 {
     plan.numbers.iter().map(|(_, text)| depth(text)).fold(0.0, f64::max)
 }
 
+/// How much further out a stroke's dimension line goes to have its value over it, mm: the
+/// value's 3.5 mm lettering and its gaps.
+const VALUE_ROOM: f64 = 5.0;
+
 /// Two strokes whose ends are this close on paper are one (mm).
 const STROKE_SAME_MM: f64 = 0.5;
 
@@ -108,16 +112,34 @@ impl MechanismView<'_> {
             let crosses_text = |off: &Vec2| lines_past(*off, 2.0).iter().any(|&(a, b)| all.segment_crosses_text(a, b));
             let fitting = candidates.into_iter().filter(fits);
             let Some(off) = fitting.min_by_key(|&off| (crosses_text(&off), cost(off))) else { continue };
-            let since = g.items.len();
-            let mid = dimension(g, ea, eb, off);
             // Without its unit, as GOST 2.307 writes a drawing's millimetres.
             let value = format!(" = {}", fmt::trimmed(1e3 * length, self.words.lang));
             let sub = if named { self.m.name(slider) } else { "" };
             let label = LabelText::new("H", sub).with_tail(value);
+            // Its value over the line (GOST 2.307): where the slider's numbers leave no room
+            // there, the line a value's height further out (the worked example's H stood
+            // under its line, the numbers 1, 2 and 6 over it).
+            let further = off + off / off.norm().max(tol::PAPER) * VALUE_ROOM;
+            let over = [off, further].into_iter().filter(|o| *o == off || (fits(o) && !crosses_text(o))).find(|&o| {
+                let since = g.items.len();
+                dimension(g, ea, eb, o);
+                let written = value_along(g, (&all, since), &label, (ea + o, eb + o), 3.5, inside, true);
+                if !written {
+                    g.items.truncate(since);
+                }
+                written
+            });
+            if let Some(o) = over {
+                labels.keep_leaders_off((ea + o, eb + o));
+                drawn_lines.push((ea + o, eb + o));
+                continue;
+            }
+            let since = g.items.len();
+            let mid = dimension(g, ea, eb, off);
             let line = (ea + off, eb + off);
             labels.keep_leaders_off(line);
             drawn_lines.push(line);
-            if value_along(g, (&all, since), &label, line, 3.5, inside) {
+            if value_along(g, (&all, since), &label, line, 3.5, inside, false) {
                 continue;
             }
             // An oblique stroke's value along its line too, as GOST 2.307 writes it (a
