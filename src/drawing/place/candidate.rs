@@ -32,7 +32,7 @@ impl Verdict {
 
     /// How many stroke segments of `drawn` its leader, if any, crosses, remembered.
     pub(super) fn crossings(&mut self, c: &Candidate, drawn: &Obstacles) -> usize {
-        *self.crossings.get_or_insert_with(|| c.leader.map_or(0, |(a, b)| drawn.hits_segment(a, b)))
+        *self.crossings.get_or_insert_with(|| c.crossings(drawn))
     }
 
     /// [`Candidate::is_free`] against `drawn`, remembered.
@@ -97,6 +97,11 @@ impl Candidate {
     /// Whether it hangs on a leader `mm` long or longer.
     pub(super) fn leader_at_least(&self, mm: f64) -> bool {
         self.leader.is_some_and(|(a, b)| (b - a).norm() >= mm)
+    }
+
+    /// How many stroke segments of `o` its leader, if any, crosses.
+    pub(super) fn crossings(&self, o: &Obstacles) -> usize {
+        self.leader.map_or(0, |(a, b)| o.hits_segment(a, b))
     }
 
     pub(super) fn is_free(&self, o: &Obstacles) -> bool {

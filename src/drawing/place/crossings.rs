@@ -36,7 +36,7 @@ pub(super) fn nearer_across(
         if !fits(c, v) || !v.leader_seen(c, drawn) {
             continue;
         }
-        let crossed = v.crossings(c, drawn) + c.leader.map_or(0, |(a, b)| placed.hits_segment(a, b));
+        let crossed = v.crossings(c, drawn) + c.crossings(placed);
         let score = c.cost + PER_CROSSING * crossed as f64;
         // The bold test is dearer than the count: asked only of a spot that could still win.
         let score = if score < best.as_ref().map_or(bound, |b| b.0) && bold(c) { score + PER_CROSSING } else { score };

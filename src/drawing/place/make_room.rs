@@ -35,7 +35,7 @@ impl Labels {
         // other labels (s₂ of a flat velocity plan, boxed in by «a» and «b=s₄»): those
         // labels moved, each to a spot near its own point. In a knot of thin lines (a
         // slider's positions on their guide) the new leader may cross as many thin lines.
-        let thin_crossed = |c: &Candidate| c.leader.map_or(0, |(a, b)| layers.drawn.hits_segment(a, b));
+        let thin_crossed = |c: &Candidate| c.crossings(layers.drawn);
         let across =
             |_: usize, (c, clean): &(Candidate, bool)| (*clean && layers.crosses_bold(c)).then(|| thin_crossed(c));
         self.make_room(layers, spots, best, across, crossings::NEAR);
@@ -141,7 +141,7 @@ impl Labels {
             let others = self.obstacles_of(&trial, |k| k != j && !blockers[n..].contains(&k));
             let s = &mut spots[j];
             let reach = reach.max(placed[j].0.leader_length());
-            let crossed = placed[j].0.leader.map_or(0, |(a, b)| layers.drawn.hits_segment(a, b));
+            let crossed = placed[j].0.crossings(layers.drawn);
             let spot = (0..)
                 .map_while(|k| {
                     let (cand, v) = s.near(k, MOVED_SPOTS)?;

@@ -29,21 +29,20 @@ struct Stream {
     around: Around,
     at: usize,
     head: Option<Candidate>,
-    /// The same spot with its further leaders, next after the head, the last first (see
-    /// [`Around::spot`]).
-    further: Vec<Candidate>,
+    /// The same spot with its other leader, next after the head (see [`Around::spot`]).
+    further: Option<Candidate>,
 }
 
 impl Stream {
     fn new(req: &Request, bounds: Rect, around: Around) -> Stream {
-        let mut s = Stream { around, at: 0, head: None, further: Vec::new() };
+        let mut s = Stream { around, at: 0, head: None, further: None };
         s.advance(req, bounds);
         s
     }
 
     /// Makes the next spot inside `bounds` the head.
     fn advance(&mut self, req: &Request, bounds: Rect) {
-        if let Some(c) = self.further.pop() {
+        if let Some(c) = self.further.take() {
             self.head = Some(c);
             return;
         }
@@ -189,13 +188,13 @@ impl Around {
     }
 
     /// The candidate box at distance `DISTANCES[di]` in direction `k`, if it is inside
-    /// `bounds` (and far enough for a line's name), and the same box with further leaders,
-    /// the last to try first: a short leader that would run level into the box's side goes
+    /// `bounds` (and far enough for a line's name), and the same box with another leader: a
+    /// short leader that would run level into the box's side goes
     /// to the side's corner farther from the anchor's height, then to the other
     /// ([`LEVEL_SHORT`]). A third try with the level leader itself, as a last resort, left
     /// more leaders across vectors over the catalogue's sheets 1, not fewer (973 against
     /// 968), and 215 dashes.
-    fn spot(&self, req: &Request, bounds: Rect, di: usize, k: usize) -> Option<(Candidate, Vec<Candidate>)> {
+    fn spot(&self, req: &Request, bounds: Rect, di: usize, k: usize) -> Option<(Candidate, Option<Candidate>)> {
         let dist = DISTANCES[di];
         if req.names_line && dist < LEADER_FROM {
             return None;
@@ -232,9 +231,7 @@ impl Around {
             again: false,
             nth: 0,
         };
-        let further = ends.map_or_else(Vec::new, |e| {
-            e.1.iter().rev().map(|&l| Candidate { leader: Some(l), again: true, ..c.clone() }).collect()
-        });
+        let further = ends.and_then(|e| e.1).map(|l| Candidate { leader: Some(l), again: true, ..c.clone() });
         Some((c, further))
     }
 }
@@ -244,11 +241,11 @@ impl Around {
 /// and no other; or where that one is short and runs level into the box's side (the anchor
 /// at the height of the box), leaders to the side's two corners instead, the one farther
 /// from the anchor's height first.
-pub(super) fn leader_ends(anchor: Point, r: Rect, gap: f64) -> ((Point, Point), Vec<(Point, Point)>) {
+pub(super) fn leader_ends(anchor: Point, r: Rect, gap: f64) -> ((Point, Point), Option<(Point, Point)>) {
     let end = Point::new(anchor.x.clamp(r.x0, r.x1), anchor.y.clamp(r.y0, r.y1));
     let level = anchor.y > r.y0 && anchor.y < r.y1;
     if !level || (end - anchor).norm() >= LEVEL_SHORT + gap + LEADER_SHORT {
-        return (leader_to(anchor, end, gap), Vec::new());
+        return (leader_to(anchor, end, gap), None);
     }
     let (far, near) = if anchor.y - r.y0 > r.y1 - anchor.y { (r.y0, r.y1) } else { (r.y1, r.y0) };
     // It stops short of the corner along both sides (a slanted leader stopped short along
@@ -259,7 +256,7 @@ pub(super) fn leader_ends(anchor: Point, r: Rect, gap: f64) -> ((Point, Point), 
         let d = c + out - anchor;
         (anchor + d.unit() * gap.min(d.norm() / 2.0), c + out)
     };
-    (corner(far), vec![corner(near)])
+    (corner(far), Some(corner(near)))
 }
 
 /// A leader from `gap` off `anchor` to [`LEADER_SHORT`] short of `end`.

@@ -71,7 +71,7 @@ impl Labels {
         }
         let (a, b) = (self.moved(i, ci, cj.r.center()), self.moved(j, cj, ci.r.center()));
         let drawn = layers.drawn;
-        let crossings = |c: &Candidate| c.leader.map_or(0, |(p, q)| drawn.hits_segment(p, q));
+        let crossings = |c: &Candidate| c.crossings(drawn);
         if crossings(&a) + crossings(&b) > crossings(ci) + crossings(cj) {
             return None;
         }
@@ -97,21 +97,18 @@ impl Labels {
     /// wall, no vector or link it did not, and no more lines.
     fn rerouted(&self, layers: Layers, placed: &[(Candidate, bool)], k: usize) -> Option<Candidate> {
         let c = &placed[k].0;
-        let (first, others) = leader_ends(c.anchor, c.r, self.requests[k].leader_gap());
+        let (first, second) = leader_ends(c.anchor, c.r, self.requests[k].leader_gap());
+        // Only a corner leader has another (most labels have none: nothing to index).
+        let other = second.filter(|_| c.leader.is_some()).map(|o| if c.leader == Some(o) { first } else { o })?;
         let drawn = layers.drawn;
-        let crossings = |c: &Candidate| c.leader.map_or(0, |(p, q)| drawn.hits_segment(p, q));
         let labels = self.obstacles_of(placed, |m| m != k);
-        let bold = layers.crosses_bold(c);
-        std::iter::once(first).chain(others).filter(|&l| c.leader != Some(l)).find_map(|l| {
-            let a = Candidate { leader: Some(l), ..c.clone() };
-            let fits = c.leader.is_some()
-                && crossings(&a) <= crossings(c)
-                && Verdict::default().leader_seen(&a, drawn)
-                && !crosses_walls(&self.walls, &a)
-                && (bold || !layers.crosses_bold(&a))
-                && a.is_free(&labels);
-            fits.then_some(a)
-        })
+        let a = Candidate { leader: Some(other), ..c.clone() };
+        let fits = a.crossings(drawn) <= c.crossings(drawn)
+            && Verdict::default().leader_seen(&a, drawn)
+            && !crosses_walls(&self.walls, &a)
+            && (layers.crosses_bold(c) || !layers.crosses_bold(&a))
+            && a.is_free(&labels);
+        fits.then_some(a)
     }
 
     /// Label `k`'s candidate `c` moved to have its box centred at `centre`, its leader
