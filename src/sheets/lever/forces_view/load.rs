@@ -217,6 +217,14 @@ const ARROW_CLEAR: f64 = 6.0;
 /// A stroke's arrowhead's length and half width, mm: a thin line's (3 × 0.55) hid in the
 /// working stroke's main line.
 const STROKE_ARROW: (f64, f64) = (5.0, 1.3);
+/// How far behind its arrowhead a stroke's name hangs from its line, mm.
+const NAME_BEHIND: f64 = 1.5;
+
+/// The sense in S/H of stroke `b`'s arrow: the first along the axis, the second back.
+fn stroke_sense(b: usize) -> f64 {
+    if b == 0 { 1.0 } else { -1.0 }
+}
+
 /// Steepest slope on paper a stroke's arrow stands on (63°): on a step it would read as
 /// pointing up or down; a compression's curve is steep all along.
 const ARROW_SLOPE: f64 = 2.0;
@@ -227,7 +235,7 @@ const ARROW_SLOPE: f64 = 2.0;
 /// where both run along it. Each stands where its line runs farthest (up to 4 mm) from
 /// the other's and flat, in the middle of such stretch, clear of the analysed position
 /// `mark_s`, the S/H values and the other arrow; `y_at(b, s)` is stroke b's force at s, in
-/// the plot's units. Returns each stroke's arrow's S/H.
+/// the plot's units. Returns the S/H each stroke's name hangs from, behind its arrow.
 fn stroke_arrows(g: &mut Group, plot: &Plot, y_at: &dyn Fn(usize, f64) -> f64, mark_s: f64) -> Vec<Option<f64>> {
     // A load has two branches (`Load::branches`): along the axis, and back.
     const STROKES: usize = 2;
@@ -253,7 +261,7 @@ fn stroke_arrows(g: &mut Group, plot: &Plot, y_at: &dyn Fn(usize, f64) -> f64, m
             chosen.push(None);
             continue;
         };
-        let sense = if b == 0 { 1.0 } else { -1.0 };
+        let sense = stroke_sense(b);
         let dir = (point(s + 0.02) - point(s - 0.02)) * sense;
         let len = dir.norm();
         if len > 0.0 {
@@ -263,7 +271,14 @@ fn stroke_arrows(g: &mut Group, plot: &Plot, y_at: &dyn Fn(usize, f64) -> f64, m
             g.fill(&[tip, base + n * half, base - n * half]);
         }
         taken.push(s);
-        chosen.push(Some(s));
+        // The name hangs from the line behind the arrowhead (from the arrow's middle its
+        // leader ran out across the filled head: 83 catalogue sheets), at its base where
+        // the line bends sooner (behind a step's corner, the name hung halfway up the step).
+        let at_base = s - sense * STROKE_ARROW.0 / 2.0 * plot.x.mu;
+        let behind = at_base - sense * NAME_BEHIND * plot.x.mu;
+        let (l, m, r) = (point(behind), point((behind + s) / 2.0), point(s));
+        let straight = [(l, m), (m, r)].iter().all(|(a, c)| (c.y - a.y).abs() <= ARROW_SLOPE * (c.x - a.x).abs());
+        chosen.push(Some(if straight { behind } else { at_base }));
     }
     chosen
 }
