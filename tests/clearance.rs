@@ -843,3 +843,57 @@ fn a_strokes_name_hangs_from_its_line_behind_its_arrowhead() {
         assert!(names.is_empty(), "task 12 variant {v}: {names:?}");
     }
 }
+
+/// A load diagram's stroke arrowheads (its filled triangles) and the lines of the diagram
+/// that cross one, other than the line it lies on: each named by its diagram and place; and
+/// how many arrowheads were checked.
+fn arrowheads_crossed(scene: &Scene) -> (usize, Vec<String>) {
+    use tmm_sheets::drawing::obstacles::segments;
+    let (mut checked, mut crossed) = (0, Vec::new());
+    for g in &scene.groups {
+        for part in g.parts.iter().filter(|p| p.id.contains(".load.")) {
+            let items = &g.items[part.items.clone()];
+            for head in items.iter().filter(|i| matches!(i, Item::Fill { .. })) {
+                let sides = segments(head);
+                let [(p, q), (_, r), ..] = sides[..] else { continue };
+                // Its tip is the corner opposite the shortest side.
+                let corners = [p, q, r];
+                let k = (0..3).min_by(|&i, &j| {
+                    let side = |i: usize| (corners[(i + 1) % 3] - corners[(i + 2) % 3]).norm();
+                    side(i).total_cmp(&side(j))
+                });
+                let Some(k) = k else { continue };
+                let (tip, base) = (corners[k], corners[(k + 1) % 3].midpoint(corners[(k + 2) % 3]));
+                // A stroke's arrowhead is 5 mm long (the axes' own are shorter).
+                if ((tip - base).norm() - 5.0).abs() > 0.05 {
+                    continue;
+                }
+                let middle = tip.midpoint(base);
+                checked += 1;
+                // The line it lies on (or one that coincides with it) passes through its
+                // middle; a curve drawn as a polyline may bend under it.
+                let through = |(a, b): (kurbo::Point, kurbo::Point)| {
+                    let t = ((middle - a).dot(b - a) / (b - a).hypot2().max(1e-12)).clamp(0.0, 1.0);
+                    (a.lerp(b, t) - middle).norm() < 0.3
+                };
+                let meets = |s: (kurbo::Point, kurbo::Point)| sides.iter().any(|&e| math::lines_cross(s, e));
+                let beside = items.iter().filter(|i| matches!(i, Item::Path { .. })).map(segments);
+                let beside = beside.filter(|segs| !segs.iter().any(|&s| through(s)));
+                if beside.flatten().any(meets) {
+                    crossed.push(format!("'{}' arrowhead at ({:.1}, {:.1})", part.id, tip.x, tip.y));
+                }
+            }
+        }
+    }
+    (checked, crossed)
+}
+
+/// A stroke's arrowhead on a load diagram keeps off the lines beside its stroke's: the
+/// axial crank-slider's exhaust runs 1.1 mm over the S/H axis, and its 2.6 mm wide head
+/// lay across the axis (its head is narrowed to keep off it).
+#[test]
+fn a_strokes_arrowhead_keeps_off_the_lines_beside_its_own_on_every_fixture() {
+    let (checked, crossed) = on_every_fixture(arrowheads_crossed);
+    assert!(checked >= 30, "only {checked} arrowheads found");
+    assert!(crossed.is_empty(), "{} of {checked}:\n{}", crossed.len(), crossed.join("\n"));
+}
