@@ -15,6 +15,9 @@ use kurbo::Rect;
 pub const APART: f64 = 2.0;
 /// Baselines closer than this share of the height are one line.
 const ONE_LINE: f64 = 0.4;
+/// Texts whose letters' boxes share this much of the lower one's height are on one line too
+/// (a 2.5 mm «S/H» 1.2 mm under a 3.5 mm «μP = 60 N/mm»'s baseline, reading as one line).
+const SHARED: f64 = 0.75;
 /// Heights within this ratio are one size (a subscript is 0.7 of its symbol).
 const ONE_SIZE: f64 = 1.5;
 
@@ -44,14 +47,16 @@ pub fn run_together(scene: &Scene, strokes: &Obstacles) -> Vec<RunTogether> {
     texts.sort_by(|a, b| a.1.at.y.total_cmp(&b.1.at.y));
     let mut out = Vec::new();
     for (k, (ga, a, ra, wa)) in texts.iter().enumerate() {
-        let reach = ONE_LINE * a.h;
+        let reach = ONE_SIZE * a.h;
         let from = texts.partition_point(|t| t.1.at.y < a.at.y - reach);
         for (j, (_, b, rb, wb)) in texts.iter().enumerate().skip(from) {
             if b.at.y > a.at.y + reach {
                 break;
             }
             let h = a.h.min(b.h);
-            if j == k || a.h.max(b.h) > ONE_SIZE * h || (a.at.y - b.at.y).abs() > ONE_LINE * h {
+            let shared = ra.y1.min(rb.y1) - ra.y0.max(rb.y0);
+            let one_line = (a.at.y - b.at.y).abs() <= ONE_LINE * h || shared >= SHARED * ra.height().min(rb.height());
+            if j == k || a.h.max(b.h) > ONE_SIZE * h || !one_line {
                 continue;
             }
             let gap = rb.x0 - ra.x1;
@@ -164,5 +169,22 @@ mod tests {
         let caption = at(10.0, 50.0, "K (μ = 4 N/mm)", 3.5);
         let next = at(caption.core_box().x1 + 3.0, 50.0, "T (", 3.5);
         assert_eq!(counted(&[caption, next], &[]), 0, "a bracket closes a caption");
+    }
+
+    /// Texts of two sizes whose baselines differ by more than [`super::ONE_LINE`] of the
+    /// smaller still stand on one line where their letters share most of its height: an
+    /// axis's «S/H» (2.5 mm) 1.2 mm under the baseline of «μP = 60 N/mm» (3.5 mm), 3 mm
+    /// after it, read as one line (the two-cylinder compressor's English sheet 1); 3 mm
+    /// under it they do not.
+    #[test]
+    fn a_smaller_text_whose_letters_share_a_lines_height_stands_on_it() {
+        let name = at(10.0, 50.0, "S/H", 2.5);
+        let statement = |dy: f64| {
+            let mu = at(name.core_box().x1 + 3.0, 50.0 - dy, "μ", 3.5);
+            Text { sub: "P".into(), tail: " = 60 N/mm".into(), ..mu }
+        };
+        assert_eq!(counted(&[name.clone(), statement(1.2)], &[]), 1);
+        assert_eq!(counted(&[name.clone(), statement(0.0)], &[]), 1, "on its baseline");
+        assert_eq!(counted(&[name.clone(), statement(3.0)], &[]), 0, "a line higher");
     }
 }
