@@ -248,6 +248,12 @@ const ARROW_GAP: f64 = 0.35;
 /// The narrowest half width of a stroke's arrowhead, mm.
 const ARROW_HALF_LEAST: f64 = 0.5;
 
+/// Whether a line through the three points on paper rises no steeper than
+/// [`ARROW_SLOPE`] between any two neighbours.
+fn gentle([l, m, r]: [Point; 3]) -> bool {
+    [(l, m), (m, r)].iter().all(|(a, c)| (c.y - a.y).abs() <= ARROW_SLOPE * (c.x - a.x).abs())
+}
+
 /// Steepest slope on paper a stroke's arrow stands on (63°): on a step it would read as
 /// pointing up or down; a compression's curve is steep all along.
 const ARROW_SLOPE: f64 = 2.0;
@@ -268,10 +274,7 @@ fn stroke_arrows(g: &mut Group, plot: &Plot, y_at: &dyn Fn(usize, f64) -> f64, m
     for b in 0..STROKES {
         let others: Vec<usize> = (0..STROKES).filter(|&o| o != b).collect();
         let point = |s: f64| plot.at(s, y_at(b, s));
-        let flat = |s: f64| {
-            let (l, m, r) = (point(s - 0.02), point(s), point(s + 0.02));
-            [(l, m), (m, r)].iter().all(|(a, c)| (c.y - a.y).abs() <= ARROW_SLOPE * (c.x - a.x).abs())
-        };
+        let flat = |s: f64| gentle([point(s - 0.02), point(s), point(s + 0.02)]);
         let apart = |s: f64| {
             let here = point(s);
             others.iter().map(|&o| (plot.at(s, y_at(o, s)).y - here.y).abs()).fold(4.0f64, f64::min)
@@ -299,8 +302,7 @@ fn stroke_arrows(g: &mut Group, plot: &Plot, y_at: &dyn Fn(usize, f64) -> f64, m
         // the line bends sooner (behind a step's corner, the name hung halfway up the step).
         let at_base = s - sense * STROKE_ARROW.0 / 2.0 * plot.x.mu;
         let behind = at_base - sense * NAME_BEHIND * plot.x.mu;
-        let (l, m, r) = (point(behind), point((behind + s) / 2.0), point(s));
-        let straight = [(l, m), (m, r)].iter().all(|(a, c)| (c.y - a.y).abs() <= ARROW_SLOPE * (c.x - a.x).abs());
+        let straight = gentle([point(behind), point((behind + s) / 2.0), point(s)]);
         chosen.push(Some(if straight { behind } else { at_base }));
     }
     chosen
