@@ -287,16 +287,18 @@ pub fn heights(
     }
 }
 
-/// The base pitch p_b of wheel 1 on a normal to its flanks — a tangent to its base circle,
-/// the line of action where it serves — between two neighbouring same-side flanks of its
-/// three drawn teeth: their involutes are p_b apart along every such normal. A point at roll
+/// The base pitch p_b of wheel 1 on a normal to its flanks — a tangent to its base circle
+/// clear of the line of action — between two neighbouring same-side flanks of its three
+/// drawn teeth: their involutes are p_b apart along every such normal. A point at roll
 /// length L along the tangent at base angle θ lies on the involute from base angle θ + L/r_b
 /// (world angles, the tangent turned counter-clockwise from the radius, as the line of action
 /// from N1 toward N2); the flank through P comes from θ_N1 + N1P/r_b, its neighbours a tooth
 /// step either side. The two points are taken at roll lengths where the involute is drawn
-/// (between the form or base circle and the tip), on the line of action first, else as
-/// near the middle of that span as the teeth allow; not drawn where the flank is shorter
-/// than p_b or the points leave the drawing.
+/// (between the form or base circle and the tip), as near the middle of that span as the
+/// teeth allow; not drawn where the flank is shorter than p_b or the points leave the
+/// drawing. Not on the line of action, nor beside it within [`ACTION_CLEAR`]: drawn there, the
+/// thin dimension line and its arrowheads were lost in the bold line (task 13 variant 22,
+/// a teacher's mark); its mirror image through P crossed it there.
 pub fn base_pitch(
     g: &mut Group,
     (labels, drawn): (&mut Labels, &mut Drawn),
@@ -318,11 +320,9 @@ pub fn base_pitch(
     let n1p = rb * tan(aw);
     let flank_p = theta_n1 + n1p / rb;
     let step = pb / rb;
-    // On the line of action (its points at N1P + k·p_b), else centred in the flank's span,
-    // else anywhere along it (eight steps).
-    let on_line = [-1.0, 0.0].map(|k| n1p + k * pb);
+    // Centred in the flank's span, else anywhere along it (eight steps).
     let spread = (0..=8).map(|k| low + (high - pb - low) * f64::from(k) / 8.0);
-    let rolls = on_line.into_iter().chain([(low + high - pb) / 2.0, low, high - pb]).chain(spread);
+    let rolls = [(low + high - pb) / 2.0, low, high - pb].into_iter().chain(spread);
     let tried: Vec<(f64, f64)> =
         rolls.filter(|&l| l >= low && l + pb <= high).flat_map(|l| [(0.0, l), (-1.0, l)]).collect();
     let world = |(k, l): (f64, f64)| {
@@ -335,7 +335,12 @@ pub fn base_pitch(
     let axis = from_angle(middle);
     let mirror = |q: Vec2| axis * (2.0 * q.dot(axis)) - q;
     let direct = tried.iter().map(|&kl| world(kl));
-    let points = direct.clone().chain(direct.map(|qs| qs.map(mirror))).map(|qs| qs.map(|q| v.p(q)));
+    // The line of action: through N1, square to O1N1.
+    let (n1, action) = (from_angle(theta_n1) * rb, from_angle(theta_n1 + std::f64::consts::FRAC_PI_2));
+    let off_action = |q: Vec2| v.len((q - n1).cross(action).abs());
+    let clear = |qs: &[Vec2; 3]| off_action(qs[1]).max(off_action(qs[2])) >= ACTION_CLEAR;
+    let both = direct.clone().chain(direct.map(|qs| qs.map(mirror)));
+    let points = both.filter(clear).map(|qs| qs.map(|q| v.p(q)));
     let inside = points.filter(|qs| qs.iter().all(|q| area.contains(*q)));
     let candidates: Vec<(kurbo::Point, kurbo::Point)> = inside.map(|[_, a, b]| (a, b)).collect();
     let Some(&first) = candidates.first() else {
@@ -362,6 +367,10 @@ pub fn base_pitch(
         }
     }
 }
+
+/// The least distance of p_b's dimension line from the line of action at either end,
+/// paper mm: nearer, the two read as one line.
+const ACTION_CLEAR: f64 = 3.0;
 
 /// Arc dimensions about wheel 1's centre from features on the circle of paper radius
 /// `r_feature`.

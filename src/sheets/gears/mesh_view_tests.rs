@@ -191,13 +191,18 @@ fn each_mesh_dimension_value_is_nearest_its_own_arc() {
 
 /// p_b is dimensioned between two points of wheel 1's drawn flanks (each on its outline,
 /// exactly: depth zero within the flank's fit) on one tangent to its base circle (the
-/// line's distance from O1 is r_b), p_b apart; the value names it.
+/// line's distance from O1 is r_b), p_b apart, clear of the line of action (a thin line on
+/// the bold one is lost in it); the value names it.
 #[test]
 fn the_base_pitch_spans_two_flanks_of_wheel_1_along_a_normal() {
     use crate::drawing::obstacles::segments;
-    for (z, x) in
-        [([17u32, 19u32], [0.0, 0.0]), ([12, 30], [0.295, 0.0]), ([40, 60], [0.0, 0.0]), ([25, 50], [0.2, 0.1])]
-    {
+    for (z, x) in [
+        ([17u32, 19u32], [0.0, 0.0]),
+        ([12, 30], [0.295, 0.0]),
+        ([40, 60], [0.0, 0.0]),
+        ([25, 50], [0.2, 0.1]),
+        ([18, 36], [0.0, 0.0]),
+    ] {
         let (pair, outlines) = pair_of(z, x);
         let inp = input(&pair, &outlines);
         let (g, v) = drawn(&inp);
@@ -223,5 +228,13 @@ fn the_base_pitch_spans_two_flanks_of_wheel_1_along_a_normal() {
             "{z:?}: the line is {off} m from O1, r_b {}",
             pair.wheels[0].base
         );
+        // The line of action: through P, on O1O2 at r_w1 = r_b1 / cos α_w from O1, at α_w to
+        // the common tangent there.
+        let aw = pair.working_pressure_angle;
+        let p = Vec2::new(0.0, pair.wheels[0].base / crate::num::math::cos(aw));
+        let along = Vec2::new(crate::num::math::cos(aw), -crate::num::math::sin(aw));
+        let from_action = |q: Vec2| v.len((q - p).cross(along).abs());
+        let nearest_end = from_action(wa).max(from_action(wb));
+        assert!(nearest_end >= 3.0, "{z:?}: p_b's line {nearest_end} mm from the line of action at its farther end");
     }
 }
