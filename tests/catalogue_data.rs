@@ -262,3 +262,39 @@ fn every_variants_texts_are_in_its_own_language_and_script() {
     }
     assert!(seen > 1500, "{seen} projects read");
 }
+
+/// The assumptions a variant prints on its sheets write symbols as the sheets do: no
+/// underscore (a plain text prints it as it stands: «m_5», «J_S»), and in Russian and
+/// English none of the guide's Uzbek-lettered names («φish», «Upl», «mpl», «Vor»: a
+/// teacher's mark on task 13's Russian sheets) — words, or the course's symbols.
+#[test]
+fn every_assumption_on_a_sheet_writes_its_symbols_as_a_sheet_does() {
+    const GUIDES_NAMES: [&str; 4] = ["φish", "upl", "mpl", "vor"];
+    let cat = catalogue();
+    let mut seen = 0;
+    let mut out = Vec::new();
+    for t in &cat.tasks {
+        for v in t.variants() {
+            let Ok(Variant::Project { text, .. }) = t.project(v, Language::Ru, "tmm init") else { continue };
+            let Ok(p) = tmm_sheets::project::load(&text) else { continue };
+            let lever = p.lever.iter().flat_map(|l| &l.assumptions);
+            let gears = p.gears.iter().flat_map(|g| &g.assumptions);
+            let cam = p.cam.iter().flat_map(|c| &c.assumptions);
+            for a in lever.chain(gears).chain(cam) {
+                seen += 1;
+                for lang in Language::ALL {
+                    let s = a.get(lang);
+                    let lower = s.to_lowercase();
+                    let mut words = lower.split(|c: char| !c.is_alphanumeric());
+                    let guide = words.any(|w| lang != Language::Uz && GUIDES_NAMES.contains(&w));
+                    if s.contains('_') || guide {
+                        out.push(format!("task {} variant {v} {lang:?}: {s}", t.id()));
+                    }
+                }
+            }
+        }
+    }
+    assert!(seen > 1000, "{seen} assumptions read");
+    out.dedup();
+    assert!(out.is_empty(), "{}", out.join("\n"));
+}
