@@ -237,3 +237,36 @@ fn a_knifes_profile_name_does_not_lie_along_the_followers_arm() {
         }
     }
 }
+
+/// Where a rocker's rollers reach the circle of its pivot's positions, their numbers go
+/// inside them, by the working profile: task 5 variant 7's rollers of 92 mm had each number
+/// outside its roller among the pivots' names, 2–3 mm from the next «A», read as «A₃ 1»,
+/// «A₄ 2» (a teacher's mark). No position number stands within 5 mm of a pivot's name, in
+/// any language.
+#[test]
+fn a_rollers_number_does_not_stand_among_the_pivots_names() {
+    use tmm_sheets::catalogue::{Catalogue, Variant};
+    let cat = Catalogue::embedded().unwrap();
+    let task = cat.tasks.iter().find(|t| t.id() == "5").expect("task 5");
+    for lang in Language::ALL {
+        let Variant::Project { text, .. } = task.project(7, lang, "tmm init").unwrap() else {
+            panic!("task 5 variant 7 is complete in the guide")
+        };
+        let b = pipeline::build(&pipeline::load(&text).unwrap(), &[3]).unwrap().remove(0);
+        let g = b.output.scene.groups.iter().find(|g| g.id == "profile").expect("the profile");
+        let texts: Vec<_> = g.texts().collect();
+        let pivots: Vec<_> = texts.iter().filter(|t| t.text == "A" && !t.sub.is_empty()).map(|t| t.bbox()).collect();
+        let numbers = texts.iter().filter(|t| !t.text.is_empty() && t.text.chars().all(|c| c.is_ascii_digit()));
+        assert!(pivots.len() >= 10, "{lang:?}: {} pivots named", pivots.len());
+        let mut seen = 0;
+        for n in numbers {
+            seen += 1;
+            let r = n.bbox();
+            for p in &pivots {
+                let gap = (p.x0 - r.x1).max(r.x0 - p.x1).max((p.y0 - r.y1).max(r.y0 - p.y1));
+                assert!(gap >= 5.0, "{lang:?}: «{}» {gap:.1} mm from a pivot's name", n.text);
+            }
+        }
+        assert!(seen >= 10, "{lang:?}: {seen} numbers");
+    }
+}

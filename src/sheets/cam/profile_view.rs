@@ -128,10 +128,12 @@ fn draw_profiles(g: &mut Group, view: View, d: &Design, pieces: &Pieces) {
     }
 }
 
-/// The numbered positions: the rollers and their numbers outside them.
+/// The numbered positions: the rollers and their numbers outside them, or inside them where
+/// the rollers reach the rocker's pivot positions ([`numbers_inward`]).
 fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis: &[f64]) {
     // At the roller's rim (a knife's point), outward: a leader, if any, reaches it.
-    let rim = |p: Vec2| view.p(p * (1.0 + d.roller / p.norm()));
+    let side = if numbers_inward(view, d, phis) { -1.0 } else { 1.0 };
+    let rim = |p: Vec2| view.p(p * (1.0 + side * d.roller / p.norm()));
     let rims: Vec<Point> = phis.iter().map(|&phi| rim(d.profile.pitch(phi).p)).collect();
     for ((&phi, &rim), name) in phis.iter().zip(&rims).zip(drawn_position_labels(phis, &rims)) {
         let p = d.profile.pitch(phi).p;
@@ -140,10 +142,23 @@ fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis
             labels.keep_out(view.p(p), view.len(d.roller));
         }
         if let Some(name) = name {
-            labels.add_text_ranked(rim, rim - view.origin, &name, 2.5, 2);
+            labels.add_text_ranked(rim, (rim - view.origin) * side, &name, 2.5, 2);
         }
     }
 }
+
+/// Whether the rollers' numbers go on their inner rims, toward the cam's centre: where a
+/// roller's outer rim comes within [`NUMBERS_ROOM`] of the rocker's pivot positions' circle
+/// (or past it), numbers outside the rollers stood among the pivots' names and read with
+/// them («A₃ 1», «A₄ 2»: task 5 variant 7's rollers of 92 mm, a teacher's mark).
+fn numbers_inward(view: View, d: &Design, phis: &[f64]) -> bool {
+    let Some(a_w) = d.centre_distance().filter(|_| d.roller > 0.0) else { return false };
+    phis.iter().any(|&phi| view.len(a_w - (d.profile.pitch(phi).p.norm() + d.roller)) < NUMBERS_ROOM)
+}
+
+/// The least room between the rollers' outer rims and the pivots' circle that keeps the
+/// rollers' numbers outside them, paper mm: a number (2.5 mm) with room on either side.
+const NUMBERS_ROOM: f64 = 8.0;
 
 /// The profiles' names.
 fn name_profiles(labels: &mut Labels, view: View, d: &Design, phis: &[f64], l: &CamLabels) {
