@@ -132,11 +132,11 @@ fn draw_profiles(g: &mut Group, view: View, d: &Design, pieces: &Pieces) {
 /// the rollers reach the rocker's pivot positions ([`numbers_inward`]).
 fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis: &[f64]) {
     // At the roller's rim (a knife's point), outward: a leader, if any, reaches it.
-    let side = if numbers_inward(view, d, phis) { -1.0 } else { 1.0 };
+    let centres: Vec<Vec2> = phis.iter().map(|&phi| d.profile.pitch(phi).p).collect();
+    let side = if numbers_inward(view, d, &centres) { -1.0 } else { 1.0 };
     let rim = |p: Vec2| view.p(p * (1.0 + side * d.roller / p.norm()));
-    let rims: Vec<Point> = phis.iter().map(|&phi| rim(d.profile.pitch(phi).p)).collect();
-    for ((&phi, &rim), name) in phis.iter().zip(&rims).zip(drawn_position_labels(phis, &rims)) {
-        let p = d.profile.pitch(phi).p;
+    let rims: Vec<Point> = centres.iter().map(|&p| rim(p)).collect();
+    for ((&p, &rim), name) in centres.iter().zip(&rims).zip(drawn_position_labels(phis, &rims)) {
         if d.roller != 0.0 {
             g.circle(view.p(p), view.len(d.roller), THIN);
             labels.keep_out(view.p(p), view.len(d.roller));
@@ -151,9 +151,10 @@ fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis
 /// roller's outer rim comes within [`NUMBERS_ROOM`] of the rocker's pivot positions' circle
 /// (or past it), numbers outside the rollers stood among the pivots' names and read with
 /// them («A₃ 1», «A₄ 2»: task 5 variant 7's rollers of 92 mm, a teacher's mark).
-fn numbers_inward(view: View, d: &Design, phis: &[f64]) -> bool {
+/// `centres`: the rollers' centres, cam frame.
+fn numbers_inward(view: View, d: &Design, centres: &[Vec2]) -> bool {
     let Some(a_w) = d.centre_distance().filter(|_| d.roller > 0.0) else { return false };
-    phis.iter().any(|&phi| view.len(a_w - (d.profile.pitch(phi).p.norm() + d.roller)) < NUMBERS_ROOM)
+    centres.iter().any(|p| view.len(a_w - (p.norm() + d.roller)) < NUMBERS_ROOM)
 }
 
 /// The least room between the rollers' outer rims and the pivots' circle that keeps the

@@ -234,7 +234,7 @@ fn the_base_pitch_spans_two_flanks_of_wheel_1_along_a_normal() {
         let p = Vec2::new(0.0, pair.wheels[0].base / crate::num::math::cos(aw));
         let along = Vec2::new(crate::num::math::cos(aw), -crate::num::math::sin(aw));
         let from_action = |q: Vec2| v.len((q - p).cross(along).abs());
-        let nearest_end = from_action(wa).max(from_action(wb));
-        assert!(nearest_end >= 3.0, "{z:?}: p_b's line {nearest_end} mm from the line of action at its farther end");
+        let farther_end = from_action(wa).max(from_action(wb));
+        assert!(farther_end >= 3.0, "{z:?}: p_b's line {farther_end} mm from the line of action at its farther end");
     }
 }
