@@ -355,21 +355,21 @@ fn each_phase_table_is_titled_with_its_number_and_phase() {
         (
             Language::Ru,
             [
-                "Таблица 9. Закон движения по положениям: подъём",
-                "Таблица 10. Закон движения по положениям: возврат",
-                "Таблица 11. Полярные координаты профилей: подъём",
-                "Таблица 12. Полярные координаты профилей: возврат",
-                "Таблица 13. Результаты",
+                "Таблица 9 – Закон движения по положениям: подъём",
+                "Таблица 10 – Закон движения по положениям: возврат",
+                "Таблица 11 – Полярные координаты профилей: подъём",
+                "Таблица 12 – Полярные координаты профилей: возврат",
+                "Таблица 13 – Результаты",
             ],
         ),
         (
             Language::En,
             [
-                "Table 9. The law by positions: rise",
-                "Table 10. The law by positions: return",
-                "Table 11. Polar coordinates of the profiles: rise",
-                "Table 12. Polar coordinates of the profiles: return",
-                "Table 13. Results",
+                "Table 9 – The law by positions: rise",
+                "Table 10 – The law by positions: return",
+                "Table 11 – Polar coordinates of the profiles: rise",
+                "Table 12 – Polar coordinates of the profiles: return",
+                "Table 13 – Results",
             ],
         ),
     ] {

@@ -255,10 +255,15 @@ fn a_long_thin_mechanisms_crank_detail_stands_under_it() {
     assert!(centre.y > lowest_joint + 15.0, "the detail at y = {:.1}, a joint at {lowest_joint:.1}", centre.y);
 }
 
-/// The guide's task 12, variant 23 in Russian: its sheet 1's crank detail letter and its
-/// force polygons' inset letters (each inset's title: its letter, then " (").
-fn task_12_v23_ru_detail_letters() -> (Option<String>, Vec<String>) {
-    let out = common::catalogue_sheet1("12", 23, tmm_sheets::drawing::labels::Language::Ru);
+/// Catalogue sheets 1 in Russian that had both a crank detail and force polygons' enlarged
+/// insets (task 12 variant 23 had four insets until the tables' captions took GOST 2.105's
+/// form and moved its composition; task 1 variant 12 has four, variant 2 three).
+const DETAIL_AND_INSETS: [(&str, u32); 3] = [("12", 23), ("1", 12), ("1", 2)];
+
+/// A Russian catalogue sheet 1's crank detail letter and its force polygons' inset letters
+/// (each inset's title: its letter, then " (").
+fn detail_letters(task: &str, variant: u32) -> (Option<String>, Vec<String>) {
+    let out = common::catalogue_sheet1(task, variant, tmm_sheets::drawing::labels::Language::Ru);
     let scene = &out.scene;
     let mech = scene.groups.iter().find(|g| g.id == "mechanism").unwrap();
     let texts: Vec<_> = mech.texts().collect();
@@ -273,16 +278,23 @@ fn task_12_v23_ru_detail_letters() -> (Option<String>, Vec<String>) {
     (detail, insets)
 }
 
-/// Task 12, variant 23 in Russian has both a crank detail and four force polygons' enlarged
-/// insets (variant 3 had, until the tables' decimals per row moved its composition): the insets take their letters from the front of the shared list, the detail from
-/// its end, so that the detail never shares an inset's letter (task 14 variant 40's were
-/// both "K"; it lost its detail when its polygons' cells grew for their enlargements).
+/// Sheets with both a crank detail and force polygons' enlarged insets: the insets take
+/// their letters from the front of the shared list, the detail from its end, so that the
+/// detail never shares an inset's letter (task 14 variant 40's were both "K"; it lost its
+/// detail when its polygons' cells grew for their enlargements). At least one of
+/// [`DETAIL_AND_INSETS`] must still have both, or the test proves nothing.
 #[test]
 fn a_crank_detail_and_the_force_insets_never_share_a_letter() {
-    let (detail, insets) = task_12_v23_ru_detail_letters();
-    let detail = detail.expect("a crank detail");
-    assert!(!insets.is_empty(), "the force polygons' insets");
-    assert!(!insets.contains(&detail), "the detail {detail} and the insets {insets:?}");
+    let mut both = 0;
+    for (task, variant) in DETAIL_AND_INSETS {
+        let (Some(detail), insets) = detail_letters(task, variant) else { continue };
+        if insets.is_empty() {
+            continue;
+        }
+        both += 1;
+        assert!(!insets.contains(&detail), "task {task} v{variant}: the detail {detail} and the insets {insets:?}");
+    }
+    assert!(both > 0, "none of {DETAIL_AND_INSETS:?} has both a crank detail and insets");
 }
 
 /// Found by the test above: each force polygon letters its insets from "K" on, so two
@@ -290,11 +302,16 @@ fn a_crank_detail_and_the_force_insets_never_share_a_letter() {
 /// sheet's polygons (their cells are laid out apart, memoised per scale).
 #[test]
 fn the_force_insets_of_one_sheet_have_distinct_letters() {
-    let (_, insets) = task_12_v23_ru_detail_letters();
-    let mut distinct = insets.clone();
-    distinct.sort();
-    distinct.dedup();
-    assert_eq!(distinct.len(), insets.len(), "inset letters {insets:?}");
+    let mut several = 0;
+    for (task, variant) in DETAIL_AND_INSETS {
+        let (_, insets) = detail_letters(task, variant);
+        let mut distinct = insets.clone();
+        distinct.sort();
+        distinct.dedup();
+        assert_eq!(distinct.len(), insets.len(), "task {task} v{variant}: inset letters {insets:?}");
+        several += usize::from(insets.len() >= 2);
+    }
+    assert!(several > 0, "none of {DETAIL_AND_INSETS:?} has two insets or more");
 }
 
 /// The guide's `task`, `variant` built (sheet 1, Uzbek): its `results.json`.

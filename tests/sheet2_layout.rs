@@ -401,7 +401,7 @@ fn the_planetary_views_captions_stand_clear_of_the_plan_under_them() {
 fn the_angular_velocity_plans_caption_stands_over_its_plan() {
     for lang in Language::ALL {
         let caption = match lang {
-            Language::Uz => "Burchak tezliklar plani",
+            Language::Uz => "Burchak tezliklari rejasi",
             Language::Ru => "План угловых скоростей",
             Language::En => "Angular velocities",
         };
@@ -422,6 +422,55 @@ fn the_angular_velocity_plans_caption_stands_over_its_plan() {
             let top = row.iter().filter(|r| (r.y0 - zero.y0).abs() < 1.0).map(|r| r.y0).fold(f64::INFINITY, f64::min);
             let gap = top - c.y1;
             assert!((0.0..=25.0).contains(&gap), "{name} {lang:?}: «{caption}» {gap:.1} mm over its plan");
+        }
+    }
+}
+
+/// p_b is dimensioned off the line of action: on it, the thin dimension line and its arrows
+/// are lost in the bold line B1B2 (task 13 variant 22 had it there, a teacher's review). On
+/// that variant, the gear fixtures and the worked example, in every language: the mesh's
+/// dimension line of p_b's drawn length (`segments`) has an end at least 3 mm off the line
+/// through the bold straight B1B2.
+#[test]
+fn the_base_pitch_is_not_dimensioned_on_the_line_of_action() {
+    use tmm_sheets::drawing::path::Seg;
+    use tmm_sheets::drawing::scene::Item;
+    use tmm_sheets::num::math::Norm;
+    let mut cases = projects();
+    let text = common::catalogue_text("13", 22, Language::Ru);
+    cases.push(("task 13 variant 22".to_string(), pipeline::load_for(&text, &[2]).unwrap()));
+    for (name, project) in cases {
+        for lang in Language::ALL {
+            let mut p = project.clone();
+            p.info.language = lang;
+            let b = sheet2(&p);
+            let pb = b.output.segments.iter().find(|s| s.id == "mesh.drawing.p_b").unwrap().length_mm;
+            let mesh = b.output.scene.groups.iter().find(|g| g.id == "mesh").unwrap();
+            let bold: Vec<(kurbo::Point, kurbo::Point)> = mesh
+                .items
+                .iter()
+                .filter_map(|i| match i {
+                    Item::Path { path, pen } if pen.width > 1.0 && matches!(path.segs[..], [Seg::Line(_)]) => {
+                        Some((path.start, path.end()))
+                    }
+                    _ => None,
+                })
+                .collect();
+            let [(b1, b2)] = bold[..] else { panic!("{name} {lang:?}: {} bold straight lines", bold.len()) };
+            let along = (b2 - b1) / (b2 - b1).norm();
+            let off = |q: kurbo::Point| (q - b1).cross(along).abs();
+            let lines: Vec<_> = common::dimension_lines(mesh)
+                .into_iter()
+                .filter(|&(a, c)| ((c - a).norm() - pb).abs() < 1e-3)
+                .collect();
+            assert!(!lines.is_empty(), "{name} {lang:?}: no dimension line of p_b's {pb:.2} mm");
+            for (a, c) in lines {
+                let apart = off(a).max(off(c));
+                assert!(
+                    apart >= 3.0,
+                    "{name} {lang:?}: p_b's line {a:?}–{c:?} is {apart:.2} mm off the line of action"
+                );
+            }
         }
     }
 }

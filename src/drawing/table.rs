@@ -1,7 +1,7 @@
 //! Tables drawn on the sheet: a header row, a label column, ruled cells.
 
 use super::scene::{Anchor, Group, MAIN, Pen, THIN, Text};
-use super::text::{LINE_PITCH, LabelText, SLANT, paragraph, wrap};
+use super::text::{LINE_PITCH, LabelText, SLANT, caption_head, paragraph, wrap};
 use crate::num::digits::JUMP;
 use kurbo::{Point, Rect};
 
@@ -124,7 +124,12 @@ impl Table {
     /// The title's lines: wrapped to the grid's width `grid_w` when it is wider (at least
     /// 60 mm at 2.5 mm lettering, more at larger).
     fn title_lines(&self, grid_w: f64) -> Vec<String> {
-        wrap(&self.title, self.title_text(), grid_w.max(60.0 * self.k()))
+        // A narrow table's title may reach past its grid, to hold the caption's head on one
+        // line.
+        let h = self.title_text();
+        let head =
+            caption_head(&self.title).map_or(0.0, |head| Text::new(Point::ZERO, head, h, Anchor::Start).bbox().width());
+        wrap(&self.title, h, grid_w.max(60.0 * self.k()).max(head))
     }
 
     /// Height of the title of `lines` above the grid, mm.

@@ -170,6 +170,12 @@ fn pieces(word: &str) -> std::str::SplitInclusive<'_, char> {
     word.split_inclusive('-')
 }
 
+/// A caption's head, its number through the title's first word ("Таблица 5 – Уравновешивающая",
+/// GOST 2.105 puts them on one line), when `text` begins as a caption does.
+pub fn caption_head(text: &str) -> Option<String> {
+    units(text).into_iter().next().filter(|unit| unit.contains(" – "))
+}
+
 /// The words of `text` as wrapping sees them: a one- or two-letter word (a preposition or
 /// conjunction: "в", "и", "da") goes to the next line with the word after it, as Russian
 /// typesetting asks ("длины в" over "мм" reads as if the unit were lost), and so does a
@@ -193,10 +199,18 @@ fn units(text: &str) -> Vec<String> {
             _ => out.push(word.to_string()),
         }
         let short_word = word.chars().count() <= 2 && word.chars().all(char::is_alphabetic);
-        // A number ends in a digit: "5." ends a clause ("Таблица 5." over its title).
+        // A number ends in a digit: "5." ends a clause.
         let number = word.ends_with(|c: char| c.is_ascii_digit())
             && word.chars().all(|c| c.is_ascii_digit() || matches!(c, ',' | '.' | '−' | '-' | '+'));
-        glue = short_word || number;
+        // A caption's dash ("Таблица 9 – Результаты", GOST 2.105) holds the title's first
+        // word too: its number alone over the title reads as a stray line.
+        let caption = dash && out.len() <= 2;
+        glue = short_word || number || caption;
+    }
+    // And its word before the number: "Таблица" alone over "5 – Уравновешивающая".
+    if out.len() >= 2 && out[1].contains(" – ") && out[1].starts_with(|c: char| c.is_ascii_digit()) {
+        let head = out.remove(0);
+        out[0] = format!("{head} {}", out[0]);
     }
     out
 }
@@ -388,13 +402,14 @@ mod tests {
             assert_eq!(lines.join(" "), text);
         }
         assert_eq!(units("Таблица 5. Уравновешивающая сила")[1], "5.");
+        assert_eq!(units("Таблица 5 – Уравновешивающая сила"), ["Таблица 5 – Уравновешивающая", "сила"]);
         assert_eq!(units("y = 0,06 m, 12 N·m"), ["y =", "0,06 m,", "12 N·m"]);
     }
 
     /// Table 5's signed title broke before its dash: "— harakatlantiruvchi)" began a line.
     #[test]
     fn a_dash_never_begins_a_line() {
-        let text = "5-jadval. Muvozanatlovchi kuch («+» — harakatlantiruvchi)";
+        let text = "5-jadval – Muvozanatlovchi kuch («+» — harakatlantiruvchi)";
         for width in (50..=120).step_by(2) {
             let lines = wrap(text, 3.5, width as f64);
             assert!(lines.iter().all(|l| !l.starts_with('—')), "{lines:?} at {width} mm");
@@ -402,10 +417,31 @@ mod tests {
         }
     }
 
+    /// A caption's number, dash and first word make one line (GOST 2.105): never "5-jadval –"
+    /// alone over its title.
+    #[test]
+    fn a_captions_number_stays_with_its_title() {
+        let cases = [
+            ("5-jadval – Muvozanatlovchi kuch", "5-jadval – Muvozanatlovchi"),
+            ("Таблица 13 – Результаты", "Таблица 13 – Результаты"),
+            ("Table 2 – Accelerations (m/s²) and angular ones", "Table 2 – Accelerations (m/s²)"),
+        ];
+        let head_w = |s: &str| font::metrics().width(s, font::size_for_cap(3.5)) + SLANT * 3.5;
+        for (text, head) in cases {
+            assert_eq!(caption_head(text).as_deref(), Some(head));
+            // A table widens its title to the head's width (Table::title_lines).
+            for width in (20..=120).step_by(5) {
+                let lines = wrap(text, 3.5, head_w(head).max(width as f64));
+                assert!(lines.iter().any(|l| l.contains(head)), "{lines:?} at {width} mm");
+            }
+        }
+        assert_eq!(caption_head("Qalin chiziq — vatarlar"), None);
+    }
+
     /// Russian table 4's title ended in "(Н)" alone on its third line.
     #[test]
     fn a_unit_in_brackets_stays_with_its_word() {
-        let text = "Таблица 4. Реакции в кинематических парах (Н)";
+        let text = "Таблица 4 – Реакции в кинематических парах (Н)";
         for width in (45..=90).step_by(5) {
             let lines = wrap(text, 3.5, width as f64);
             assert!(lines.iter().all(|l| !l.starts_with('(')), "{lines:?} at {width} mm");
