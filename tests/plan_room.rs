@@ -64,13 +64,15 @@ fn a_narrower_force_column_leaves_the_lever_measurable() {
 /// largest plan of each kind 80 mm long: task 10 variant 45's acceleration plans were 62.5 mm
 /// beside a smallest velocity plan of 30.1 mm (a dead centre's, a line), task 15 variant 4's
 /// 72.8 mm, now 83 and 146 mm with smallest plans of 24 and 23 mm. The column's choice reads
-/// what its smallest plan could have been: task 5 variant 2 and task 10 variant 24 do not
-/// take a narrower force column, halving their levers (to 62 and 51 mm), for a smallest
-/// plan "grown" back (task 10 variant 24's acceleration plans stay 77.6 mm: 80 would take
-/// that lever).
+/// what its smallest plan could have been: task 10 variant 24 does not take a narrower force
+/// column, halving its lever (to 51 mm), for a smallest plan "grown" back (its acceleration
+/// plans stay 77.6 mm: 80 would take that lever). Task 5 variant 2 was the second such case
+/// until its jaw took the crushing force: with the load diagram's cell and the larger
+/// polygons it now takes the narrower column, its lever 64 mm (over
+/// `choice::LEVER_SHORTEST`, 60 mm), its plans at least 80 mm.
 #[test]
 fn a_split_gives_some_of_its_smallest_plan_for_plans_80_mm_long_and_the_lever_keeps_its_size() {
-    for (task, variant, plans_80) in [("10", 45, true), ("15", 4, true), ("5", 2, true), ("10", 24, false)] {
+    for (task, variant, plans_80) in [("10", 45, true), ("15", 4, true), ("10", 24, false)] {
         for lang in [Language::Uz, Language::Ru] {
             let results = common::catalogue_sheet1(task, variant, lang).results;
             let (v, a) = (largest(&results, "velocity_plans"), largest(&results, "acceleration_plans"));

@@ -671,13 +671,14 @@ fn the_title_block_numbers_the_projects_own_sheets() {
 }
 
 /// Positions that coincide on paper are drawn once and numbered once, "3′ ≡ 4": the guide's
-/// task 5, variant 22 has its second extreme position 1.3° of the crank from position 4.
+/// task 5, variant 23 has its second extreme position a degree or so of the crank before
+/// position 4 (variant 22 had, until position 0 moved to the crushing stroke's start).
 #[test]
 fn positions_that_coincide_on_paper_are_numbered_once() {
     use tmm_sheets::catalogue::{Catalogue, Variant};
     let catalogue = Catalogue::embedded().unwrap();
-    let Variant::Project { text, .. } = catalogue.task("5").unwrap().project(22, Language::En, "test").unwrap() else {
-        panic!("task 5, variant 22 gives a project");
+    let Variant::Project { text, .. } = catalogue.task("5").unwrap().project(23, Language::En, "test").unwrap() else {
+        panic!("task 5, variant 23 gives a project");
     };
     let p = pipeline::load(&text).unwrap();
     let lever = p.lever.as_ref().unwrap();

@@ -222,7 +222,23 @@ pub fn place_loads(m: &Mechanism, motion: &Motion, model: &ForceModel) -> Result
     let pivot = m.crank().pivot;
     let at = m.frame.iter().find(|f| f.0 == pivot).map_or(Vec2::ZERO, |f| f.1);
     for load in &mut model.loads {
-        let (lo, hi) = motion::extremes_along(m, motion, load.point, load.axis)?;
+        if let Some(swing) = &mut load.swing {
+            // A rocker's arc measured from where the point is at position 0: a rocker swings
+            // less than a half turn, so the angle from there never wraps.
+            let r = motion::sample_at(m, motion, 0.0)?.points[load.point].p - swing.pivot;
+            if r.norm() <= tol::SAME_POINT * m.size {
+                return Err(AnalysisError::ZeroStroke {
+                    point: m.name(load.point).into(),
+                    line: load.line,
+                    stroke: 0.0,
+                });
+            }
+            swing.reference = r / r.norm();
+        }
+        let track = load.clone();
+        let coordinate = |p: Vec2| track.coordinate(p);
+        let rate = |p: Vec2, v: Vec2| v.dot(track.direction(p));
+        let (lo, hi) = motion::extremes_of(m, motion, load.point, &coordinate, &rate)?;
         if hi - lo <= tol::SAME_POINT * m.size {
             return Err(AnalysisError::ZeroStroke {
                 point: m.name(load.point).into(),

@@ -64,7 +64,9 @@ pub struct Branch {
     pub name: Stroke,
 }
 
-/// A load on the slider `point` of `link`, acting along its guide.
+/// A load on the slider `point` of `link`, acting along its guide; or, with `swing`, on a
+/// point of a rocker, square to its radius from the rocker's pivot (a jaw crusher's
+/// crushing resistance at the jaw's point K).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Load {
     pub kind: LoadKind,
@@ -74,6 +76,9 @@ pub struct Load {
     pub axis: Vec2,
     /// A point of the guide line.
     pub through: Vec2,
+    /// The rocker the point swings with, for a load on a rocker (`axis` and `through` then
+    /// unused).
+    pub swing: Option<Swing>,
     /// Whether s is measured from the cylinder head: the stroke end farther from the crank
     /// pivot ([`Load::set_stroke`] turns the axis away from it).
     pub from_head: bool,
@@ -87,6 +92,16 @@ pub struct Load {
     pub line: u64,
 }
 
+/// A rocker's point's path: the arc about `pivot`, its displacement S the arc's length
+/// from `reference` (a unit direction from the pivot), positive in `sense` (+1:
+/// counter-clockwise, the working stroke's sense of rotation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Swing {
+    pub pivot: Vec2,
+    pub reference: Vec2,
+    pub sense: f64,
+}
+
 /// The load's value at one instant.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoadValue {
@@ -96,10 +111,37 @@ pub struct LoadValue {
     pub branch: usize,
     /// The force on the slider, N.
     pub force: Vec2,
+    /// The force along the path's positive sense at the point (the guide's axis, or the
+    /// rocker's tangent turned the working stroke's way), N.
+    pub along: f64,
 }
 
 impl Load {
-    /// Fixes the stroke from the extremes `lo` < `hi` of p·axis over a turn.
+    /// The point's displacement coordinate at `p`, m: p·axis along a guide; on a rocker the
+    /// arc's length from the swing's reference, in its sense.
+    pub fn coordinate(&self, p: Vec2) -> f64 {
+        match self.swing {
+            None => p.dot(self.axis),
+            Some(w) => {
+                let r = p - w.pivot;
+                w.sense * crate::num::math::atan2(w.reference.cross(r), w.reference.dot(r)) * r.norm()
+            }
+        }
+    }
+
+    /// The unit direction in which the coordinate grows at `p`: the guide's axis, or the
+    /// rocker's tangent there (the coordinate's rate is v·direction).
+    pub fn direction(&self, p: Vec2) -> Vec2 {
+        match self.swing {
+            None => self.axis,
+            Some(w) => {
+                let r = p - w.pivot;
+                r.turn_90() * (w.sense / r.norm())
+            }
+        }
+    }
+
+    /// Fixes the stroke from the extremes `lo` < `hi` of the coordinate over a turn.
     pub fn set_stroke(&mut self, lo: f64, hi: f64, crank_pivot: Vec2) {
         let at = |t: f64| self.through + self.axis * (t - self.through.dot(self.axis));
         let (lo, hi) = if self.from_head && (at(hi) - crank_pivot).norm() > (at(lo) - crank_pivot).norm() {
@@ -115,15 +157,17 @@ impl Load {
     /// The force at slider position `p` moving with velocity `v` (acceleration `a` decides
     /// the branch at a dead point, where the slider is about to move that way).
     pub fn value(&self, p: Vec2, v: Vec2, a: Vec2) -> LoadValue {
-        let s = ((p.dot(self.axis) - self.origin) / self.stroke).clamp(0.0, 1.0);
-        let speed = v.dot(self.axis);
+        let s = ((self.coordinate(p) - self.origin) / self.stroke).clamp(0.0, 1.0);
+        let dir = self.direction(p);
+        let speed = v.dot(dir);
         // At a dead centre (speed ≈ 0 on the scale √(a·H)) the slider moves next the way its
-        // acceleration points.
+        // acceleration points (a rocker's point too: its normal acceleration is nil there).
         let at_rest = speed.abs() <= tol::ZERO_SPEED * (a.norm() * self.stroke).sqrt();
-        let going = if at_rest { a.dot(self.axis) } else { speed };
+        let going = if at_rest { a.dot(dir) } else { speed };
         let branch = if going >= 0.0 { 0 } else { 1 };
         let b = &self.branches[branch];
-        LoadValue { s, branch, force: self.axis * (b.scale * b.curve.at(s)) }
+        let along = b.scale * b.curve.at(s);
+        LoadValue { s, branch, force: dir * along, along }
     }
 }
 
@@ -141,6 +185,42 @@ mod tests {
         assert_eq!(c.at(2.0), 0.5);
     }
 
+    /// A rocker's point 2 m from the pivot (1, 1), working clockwise from the reference
+    /// direction +x: at 30° below it, S = 2·π/6 along the arc, the force square to the
+    /// radius, against a clockwise motion (the working stroke) and along a counter-clockwise one.
+    #[test]
+    fn a_rockers_load_acts_square_to_its_radius_by_the_arcs_travel() {
+        let b =
+            |scale: f64, name: Stroke| Branch { curve: Curve { points: vec![(0.0, 0.0), (1.0, 1.0)] }, scale, name };
+        let swing = Swing { pivot: Vec2::new(1.0, 1.0), reference: Vec2::new(1.0, 0.0), sense: -1.0 };
+        let load = Load {
+            kind: LoadKind::Resistance,
+            link: 0,
+            point: 0,
+            axis: Vec2::ZERO,
+            through: Vec2::ZERO,
+            swing: Some(swing),
+            from_head: false,
+            origin: 0.0,
+            stroke: 4.0 * std::f64::consts::PI / 6.0,
+            branches: [b(-100.0, Stroke::Working), b(0.0, Stroke::Idle)],
+            line: 0,
+        };
+        let (c, s) = (3f64.sqrt() / 2.0, 0.5);
+        let p = Vec2::new(1.0 + 2.0 * c, 1.0 - 2.0 * s);
+        assert!((load.coordinate(p) - 2.0 * std::f64::consts::PI / 6.0).abs() < 1e-15);
+        // Clockwise: the velocity turned −90° from the radius.
+        let cw = Vec2::new(-s, -c);
+        let working = load.value(p, cw, Vec2::ZERO);
+        assert_eq!(working.branch, 0);
+        assert!((working.s - 0.5).abs() < 1e-15);
+        assert!((working.force - cw * -50.0).norm() < 1e-12, "{:?}", working.force);
+        assert!(working.force.dot(p - swing.pivot).abs() < 1e-12);
+        assert!((working.along + 50.0).abs() < 1e-12);
+        let idle = load.value(p, -cw, Vec2::ZERO);
+        assert_eq!((idle.branch, idle.force.norm()), (1, 0.0));
+    }
+
     #[test]
     fn branch_follows_the_direction_of_motion() {
         let axis = Vec2::new(1.0, 0.0);
@@ -151,6 +231,7 @@ mod tests {
             point: 0,
             axis,
             through: Vec2::ZERO,
+            swing: None,
             from_head: false,
             origin: 0.0,
             stroke: 2.0,

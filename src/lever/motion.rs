@@ -295,12 +295,29 @@ fn assembly_error(m: &Mechanism, f: StepFailure, u: f64, sense: Sense, start: St
 /// The smallest and largest value of p·`axis` that `point` reaches over a turn (a slider's
 /// stroke ends), exact to the bisection's resolution.
 pub fn extremes_along(m: &Mechanism, motion: &Motion, point: PointId, axis: Vec2) -> Result<(f64, f64), MotionError> {
+    extremes_of(m, motion, point, &|p| p.dot(axis), &|_, v| v.dot(axis))
+}
+
+/// The smallest and largest value of `coordinate`(p) that `point` reaches over a turn,
+/// `rate`(p, v) being its time derivative (a rocker's point: the arc's length and v along
+/// the tangent), exact to the bisection's resolution.
+pub fn extremes_of(
+    m: &Mechanism,
+    motion: &Motion,
+    point: PointId,
+    coordinate: &dyn Fn(Vec2) -> f64,
+    rate: &dyn Fn(Vec2, Vec2) -> f64,
+) -> Result<(f64, f64), MotionError> {
     let turn = sample(m, motion, SCAN_SAMPLES)?;
     let phis = (0..SCAN_SAMPLES).map(|k| TAU * k as f64 / SCAN_SAMPLES as f64);
     let states: Vec<(f64, At)> = phis.zip(turn.positions()).collect();
     let solve = |phi: f64| m.solve(motion.theta(phi));
     let what = || format!("the stroke ends of {}", m.name(point));
-    let (vel, value) = (|s: &dyn Solution| s.point(point).v.dot(axis), |s: &dyn Solution| s.point(point).p.dot(axis));
+    let vel = |s: &dyn Solution| {
+        let k = s.point(point);
+        rate(k.p, k.v)
+    };
+    let value = |s: &dyn Solution| coordinate(s.point(point).p);
     let roots = extremes(&states, &solve, &vel, &value, &what)?;
     let values = roots.iter().map(|r| r.1).chain(states.iter().map(|(_, s)| value(s)));
     Ok(values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x))))

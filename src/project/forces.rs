@@ -1,7 +1,6 @@
 //! The `forces` section: masses and moments of inertia of the links and the loads on the
 //! sliders, for the force analysis at φ1.
 
-use super::mechanism::Along;
 use super::values::{Finite, Name, NonNegative, Positive};
 use crate::num::digits::{sig, written};
 use crate::num::limits::INPUT_MAX;
@@ -91,12 +90,24 @@ pub enum LoadSpec {
 /// A diagram as written: [stroke fraction, value] rows.
 pub type DiagramSpec = Spanned<Vec<[Finite; 2]>>;
 
+/// The working stroke's way: along a slider's guide, or a rocker's sense of rotation (for a
+/// point on a link turning about a frame pivot: a jaw crusher's jaw).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Working {
+    Forward,
+    Backward,
+    Cw,
+    Ccw,
+}
+
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ResistanceSpec {
     pub point: Name,
-    /// Direction of the working stroke along the slider's guide.
-    pub working: Along,
+    /// The working stroke's way: `forward`/`backward` along a slider's guide, `cw`/`ccw`
+    /// for a point on a rocker (the force then acts square to its radius from the pivot).
+    pub working: Working,
     /// Largest resistance on the working stroke, N.
     pub force: Positive,
     /// Fraction of the working stroke → fraction of `force` (default: constant).

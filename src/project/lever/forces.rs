@@ -2,13 +2,12 @@
 //! their centres, moments of inertia (given, or m·l²/12), and the loads on sliders.
 
 use super::super::forces::*;
-use super::super::mechanism::Along;
 use super::super::values::Name;
 use super::super::{Kind, Refusal, Warning, at, invalid, warning};
 use crate::lever::indicators::{self, Indicator};
 use crate::lever::kinetostatics::{ForceModel, LinkMass};
 use crate::lever::linkage::{LinkId, LinkKind, Mechanism, PointId, Step};
-use crate::lever::load::{Branch, Curve, Load, LoadKind, Stroke};
+use crate::lever::load::{Branch, Curve, Load, LoadKind, Stroke, Swing};
 use crate::num::digits::written;
 use crate::num::limits;
 use crate::num::math::Norm;
@@ -84,7 +83,10 @@ fn link_mass(
         full.as_ref().map(|f| f.length).ok_or_else(|| invalid(loc, field, format!("link {} has no fixed length between two joints, so m = q·l and J = m·l²/12 cannot be used; give `mass` and `inertia`", lm.link.value)))
     };
     let uses_length = lm.q.is_some() || matches!(lm.inertia, Some(Inertia::Rod));
-    if let Some(f) = full.as_ref().filter(|f| uses_length && f.joints > 2) {
+    // Only where the full length is not the side the link's group gives it (a point between
+    // its two joints, as a jaw crusher's K, leaves no doubt which length is meant).
+    let other_than_defined = |f: &&FullLength| defined_length(m, link).is_none_or(|d| (d - f.length).abs() > 1e-9 * d);
+    if let Some(f) = full.as_ref().filter(|f| uses_length && f.joints > 2).filter(other_than_defined) {
         warnings.push(warning(
             loc,
             field,
@@ -210,15 +212,50 @@ fn slider(m: &Mechanism, name: &Name, field: &str) -> Result<(LinkId, PointId, V
     })
 }
 
+/// The rocker carrying the point `name`: a link turning about a frame pivot (its link,
+/// the point, the pivot's position).
+fn rocker(m: &Mechanism, name: &Name, field: &str) -> Result<(LinkId, PointId, Vec2), Refusal> {
+    let found = m.point_id(&name.value).and_then(|id| {
+        m.links.iter().enumerate().find_map(|(link, l)| {
+            let pivot = l.points.iter().filter(|&&q| q != id).find_map(|&q| m.frame.iter().find(|f| f.0 == q));
+            pivot.filter(|_| l.points.contains(&id) && l.number > 1).map(|f| (link, id, f.1))
+        })
+    });
+    found.ok_or_else(|| {
+        invalid(
+            at(name),
+            field,
+            format!(
+                "'{}' is not a point of a rocker (a link turning about a frame pivot, the crank's excepted): a working stroke `cw` or `ccw` is a rocker's; a slider's is `forward` or `backward`",
+                name.value
+            ),
+        )
+        .kind(Kind::Reference)
+    })
+}
+
 fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, Refusal> {
     match &spec.value {
         LoadSpec::Resistance(r) => {
-            let (link, point, through, dir) = slider(m, &r.point, &format!("{field}.resistance.point"))?;
+            let at_point = format!("{field}.resistance.point");
+            let (link, point, through, dir, swing) = match r.working {
+                Working::Forward | Working::Backward => {
+                    let (link, point, through, dir) = slider(m, &r.point, &at_point)?;
+                    let dir = if r.working == Working::Forward { dir } else { -dir };
+                    (link, point, through, dir, None)
+                }
+                Working::Cw | Working::Ccw => {
+                    let sense = if r.working == Working::Ccw { 1.0 } else { -1.0 };
+                    let (link, point, pivot) = rocker(m, &r.point, &at_point)?;
+                    // The reference direction is fixed once the mechanism is solved.
+                    (link, point, pivot, Vec2::ZERO, Some(Swing { pivot, reference: Vec2::ZERO, sense }))
+                }
+            };
             let working = match &r.diagram {
                 Some(d) => diagram(d, &format!("{field}.resistance.diagram"))?,
                 None => Curve::constant(1.0),
             };
-            let axis = if r.working == Along::Forward { dir } else { -dir };
+            let axis = dir;
             let idle = r.idle_force.map_or(0.0, |x| x.0);
             let branches = [
                 Branch { curve: working, scale: -r.force.0, name: Stroke::Working },
@@ -230,6 +267,7 @@ fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, Re
                 point,
                 axis,
                 through,
+                swing,
                 from_head: false,
                 origin: 0.0,
                 stroke: 0.0,
@@ -255,6 +293,7 @@ fn load(m: &Mechanism, spec: &Spanned<LoadSpec>, field: &str) -> Result<Load, Re
                 point,
                 axis: dir,
                 through,
+                swing: None,
                 from_head: true,
                 origin: 0.0,
                 stroke: 0.0,

@@ -340,7 +340,10 @@ fn draw_group_geometry(
         // A joint with the frame is drawn as a joint: the group is drawn released from the
         // mechanism, the frame's action on it being the reaction drawn there (a support
         // drawn too would show the frame twice, and the reaction through its hatching).
-        if m.is_mass_centre(q) && !m.is_frame(q) {
+        // A point of one link only (a load's point, as a jaw crusher's K) is no joint: a dot.
+        let links_at = m.links.iter().filter(|l| l.points.contains(&q)).count();
+        let lone = links_at < 2 && !m.is_frame(q) && !m.is_kulisa_image(q);
+        if (m.is_mass_centre(q) && !m.is_frame(q)) || lone {
             g.dot(at, 0.6);
         } else {
             g.circle(at, 1.0, THIN);

@@ -56,7 +56,7 @@ pub(super) fn draw_load(
     let area = Rect::new(r.x0 + LEFT, r.y0 + TOP, r.x1 - 14.0, r.y1 - BOTTOM);
     let signed = |b: usize, y: f64| y * load.branches[b].scale;
     let (lo, hi, mu) = force_scale(load, grown);
-    let along = value.force.dot(load.axis);
+    let along = value.along;
     let x = Axis {
         lo: 0.0,
         hi: 1.0,

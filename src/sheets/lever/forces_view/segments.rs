@@ -100,7 +100,7 @@ pub(super) fn load(
     let load = &inp.fa.model.loads[i];
     let value = inp.fa.forces.loads[i];
     let n = inp.m.links[load.link].number;
-    let along = value.force.dot(load.axis).abs();
+    let along = value.along.abs();
     let force = force_segment(part, force_name(inp, Kind::Load(i), load.link), along, mu_p, answers);
     let s = Segment::new(format!("{part}.S_H_{n}"), format!("S/H_{n}"), value.s, "", 1.0 / width)
         .answering(&format!("balancing.S_H_{n}"), answers);
