@@ -144,12 +144,12 @@ impl Plot {
     /// rather than across it.
     pub fn x_value(&self, v: f64, label: &str) -> Text {
         let p = self.at(v, 0.0);
-        let baseline = if self.x_values_above() { -(TICK + 0.8) } else { TICK + TEXT + 0.8 };
+        let above = self.x_values_above();
+        let baseline = if above { -(TICK + 0.8) } else { TICK + TEXT + 0.8 };
         // Beside the y axis where its line runs past the value, farther off: over the x axis
         // the y axis always reaches up to its arrow, under it where its range goes below
         // zero (0.8 mm left a slanted «0» within 0.4 mm of a load diagram's P axis, its
         // range all below zero).
-        let above = self.x_values_above();
         let axis_beside = above || self.y.lo < 0.0;
         let off = if axis_beside { 1.4 } else { 0.8 };
         let (x, anchor) = if v == self.x.lo { (p.x + off, Anchor::Start) } else { (p.x, Anchor::Middle) };
