@@ -21,9 +21,21 @@ fn group<'a>(svg: &'a str, id: &str) -> &'a str {
     &svg[start..start + svg[start..].find("</g>").unwrap()]
 }
 
-/// The lengths of the straight `vector`, `thin`, `dashed` and `contour` paths in one SVG group.
+/// The SVG group `id` and its parts drawn apart (a force polygon's enlargements of its
+/// short sides, `id.T`), one after another.
+fn group_and_parts(svg: &str, id: &str) -> String {
+    let mut out = group(svg, id).to_string();
+    let part = format!("<g id=\"{id}.");
+    for (start, _) in svg.match_indices(&part) {
+        out.push_str(&svg[start..start + svg[start..].find("</g>").unwrap()]);
+    }
+    out
+}
+
+/// The lengths of the straight `vector`, `thin`, `dashed` and `contour` paths in one SVG group
+/// and its parts.
 fn drawn_lengths(svg: &str, id: &str) -> Vec<f64> {
-    group(svg, id)
+    group_and_parts(svg, id)
         .lines()
         .filter(|l| {
             ["vector", "thin", "dashed", "contour"].iter().any(|c| l.starts_with(&format!("<path class=\"{c}\"")))

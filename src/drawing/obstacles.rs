@@ -42,6 +42,10 @@ pub enum Piece {
     /// too): a label level with it keeps off its line beside it, as far as the smaller's
     /// height needs ([`Obstacles::statement_meets`]); nothing else sees it.
     Statement(Rect, f64),
+    /// A number's letters and their height, mm, that read as the index of a taller letter
+    /// beside it on its line («2 A»: A₂): a taller label keeps off its line beside it
+    /// ([`Obstacles::index_meets`]); nothing else sees it.
+    Index(Rect, f64),
 }
 
 /// The side of the text boxes' grid's cells, mm: they are few and a leader's walk through
@@ -145,7 +149,7 @@ impl Obstacles {
         for (k, (p, _)) in pieces.iter().enumerate() {
             match *p {
                 Piece::Segment(a, b) => strokes.push((grid::Shape::Segment(a, b), Stroke { id: id(k), a, b })),
-                Piece::TextBox(_) | Piece::Disc(..) | Piece::Band(_) | Piece::Statement(..) => {
+                Piece::TextBox(_) | Piece::Disc(..) | Piece::Band(_) | Piece::Statement(..) | Piece::Index(..) => {
                     boxes.push((grid::Shape::Box(bounds(p)), id(k)))
                 }
             }
@@ -195,7 +199,9 @@ impl Obstacles {
         self.extent = Some(self.extent.map_or(b, |e| e.union(b)));
         match piece {
             Piece::Segment(a, b) => self.strokes.insert_segment(a, b, Stroke { id, a, b }),
-            Piece::TextBox(_) | Piece::Disc(..) | Piece::Band(_) | Piece::Statement(..) => self.boxes.insert_box(b, id),
+            Piece::TextBox(_) | Piece::Disc(..) | Piece::Band(_) | Piece::Statement(..) | Piece::Index(..) => {
+                self.boxes.insert_box(b, id)
+            }
         }
     }
 
@@ -225,7 +231,7 @@ impl Obstacles {
             match *p {
                 Piece::Segment(a, b) => strokes += usize::from(segment_meets_rect(a, b, r)),
                 Piece::TextBox(t) | Piece::Band(t) => area += t.intersect(r).area().max(0.0),
-                Piece::Statement(..) => {}
+                Piece::Statement(..) | Piece::Index(..) => {}
                 Piece::Disc(c, rad) => strokes += usize::from(disc_meets_rect(c, rad, r)),
             }
         }
@@ -283,7 +289,7 @@ impl Obstacles {
         let meets = |p: &Piece| match *p {
             Piece::Segment(a, b) => segment_meets_rect(a, b, r),
             Piece::TextBox(t) | Piece::Band(t) => t.intersect(r).area() > 0.0,
-            Piece::Statement(..) => false,
+            Piece::Statement(..) | Piece::Index(..) => false,
             Piece::Disc(c, rad) => disc_meets_rect(c, rad, r),
         };
         if slot.is_some_and(|s| self.hinted(s, |p, q| segment_meets_rect(p, q, r))) {
@@ -402,6 +408,15 @@ impl Obstacles {
             |id: u32| matches!(self.pieces[id as usize].0, Piece::TextBox(t) if segment_meets_rect(a, b, clear(t)));
         self.boxes.any_on_segment(a, b, meets)
     }
+
+    /// Whether a number that reads as a taller letter's index ([`Piece::Index`]) meets `r`
+    /// and `blocks` says it blocks (given its letters and their height).
+    pub fn index_meets(&self, r: Rect, blocks: impl Fn(Rect, f64) -> bool) -> bool {
+        self.boxes.any_in_box(
+            r,
+            |id| matches!(self.pieces[id as usize].0, Piece::Index(s, h) if s.intersect(r).area() > 0.0 && blocks(s, h)),
+        )
+    }
 }
 
 /// A stroke this near a leader's points, mm, and this near its direction (the sine of the
@@ -427,7 +442,7 @@ fn bounds(p: &Piece) -> Rect {
     match *p {
         Piece::Segment(a, b) => Rect::from_points(a, b),
         Piece::TextBox(r) => r.inflate(LEADER_CLEAR, LEADER_CLEAR),
-        Piece::Band(r) | Piece::Statement(r, _) => r,
+        Piece::Band(r) | Piece::Statement(r, _) | Piece::Index(r, _) => r,
         Piece::Disc(c, r) => Rect::from_center_size(c, (2.0 * r, 2.0 * r)),
     }
 }

@@ -21,6 +21,10 @@ const SHARED: f64 = 0.75;
 /// Heights within this ratio are one size (a subscript is 0.7 of its symbol).
 const ONE_SIZE: f64 = 1.5;
 
+/// The drawings whose numbers are positions' ([`numbers_point`]): elsewhere a number names
+/// a link (a planetary stage's velocity picture's «0», «1», «H») or a value.
+const POSITIONS_DRAWN: [&str; 3] = ["mechanism", "profile", "nomogram"];
+
 /// Two texts that run together: their groups' ids, their plain texts and the gap between
 /// them, mm.
 #[derive(Debug, Clone, PartialEq)]
@@ -56,7 +60,8 @@ pub fn run_together(scene: &Scene, strokes: &Obstacles) -> Vec<RunTogether> {
             let h = a.h.min(b.h);
             let shared = ra.y1.min(rb.y1) - ra.y0.max(rb.y0);
             let one_line = (a.at.y - b.at.y).abs() <= ONE_LINE * h || shared >= SHARED * ra.height().min(rb.height());
-            if j == k || a.h.max(b.h) > ONE_SIZE * h || !one_line {
+            let numbered = POSITIONS_DRAWN.contains(ga) && (numbers_point(wa, wb) || numbers_point(wb, wa));
+            if j == k || !numbered && a.h.max(b.h) > ONE_SIZE * h || !one_line {
                 continue;
             }
             let gap = rb.x0 - ra.x1;
@@ -66,7 +71,8 @@ pub fn run_together(scene: &Scene, strokes: &Obstacles) -> Vec<RunTogether> {
             // Two statements side by side read as a list («λ₁ = −15,09  λ₂ = −4,669»), a
             // statement and a name as the name's value — unless brackets close the first
             // («K (μ_P = 4 N/mm)  T (…»: two details' captions).
-            if continues(wa, wb) || closed(wa) || states_value(wa) == states_value(wb) {
+            let phrase = !continues(wa, wb) && !closed(wa) && states_value(wa) != states_value(wb);
+            if !phrase && !numbered {
                 continue;
             }
             let between = Rect::new(ra.x1.min(rb.x0), ra.y0.max(rb.y0), ra.x1.max(rb.x0), ra.y1.min(rb.y1));
@@ -87,6 +93,27 @@ fn continues(a: &str, b: &str) -> bool {
     let (end, start) = (a.trim_end(), b.trim_start());
     end.ends_with([';', ',', '(', ':', '=', '+', '−', '-', '·'])
         || start.starts_with(['+', '−', '-', '=', '(', ')', ',', ';', '·', '/'])
+}
+
+/// Whether `number` beside `name` reads as one designation with it: a position's number
+/// a word's space from a point's letter, of any size («2 A», «O 11»: the guide's A₂, O₁₁).
+fn numbers_point(number: &str, name: &str) -> bool {
+    is_position_number(number) && is_point_name(name)
+}
+
+/// A position's number: digits and primes, or a run of them joined by «≡» («5′ ≡ 6»).
+pub fn is_position_number(text: &str) -> bool {
+    let text = text.trim();
+    text.starts_with(|c: char| c.is_ascii_digit()) && text.chars().all(|c| c.is_ascii_digit() || "′≡ ".contains(c))
+}
+
+/// A point's name: a Latin letter and a short index, one word («A», «O1», «S2»; not a
+/// Greek symbol's «ω»).
+fn is_point_name(text: &str) -> bool {
+    let text = text.trim();
+    text.starts_with(|c: char| c.is_ascii_alphabetic())
+        && text.chars().count() <= 3
+        && text.chars().all(char::is_alphanumeric)
 }
 
 /// Whether `text` ends by closing a bracket: what it states stays inside it.
@@ -135,7 +162,10 @@ mod tests {
             g.line(a, b, MAIN);
         }
         items.extend(g.items);
-        layout::measure(&layout::tests::scene(items)).texts_run_together
+        // In a mechanism's drawing, where numbers are positions'.
+        let mut scene = layout::tests::scene(items);
+        scene.groups[0].id = "mechanism".into();
+        layout::measure(&scene).texts_run_together
     }
 
     fn at(x: f64, y: f64, text: &str, h: f64) -> Text {
@@ -186,5 +216,31 @@ mod tests {
         assert_eq!(counted(&[name.clone(), statement(1.2)], &[]), 1);
         assert_eq!(counted(&[name.clone(), statement(0.0)], &[]), 1, "on its baseline");
         assert_eq!(counted(&[name.clone(), statement(3.0)], &[]), 0, "a line higher");
+    }
+
+    /// A position's number a word's space from a point's letter, before or after it, reads
+    /// as the letter's index whatever their sizes («2 A», «O 11»: a teacher read a crank's
+    /// «2» 1.8 mm before «A» as A₂); 8 mm off it, or beside another number, a tick's value or
+    /// a name that is not a point's, it does not.
+    #[test]
+    fn a_position_number_beside_a_points_letter_reads_as_its_index() {
+        let letter = |x: f64, name: &str| at(x, 50.0, name, 5.0);
+        let number = |x: f64, text: &str, h: f64| at(x, 50.0, text, h);
+        let after = |name: &Text, gap: f64| name.core_box().x1 + gap;
+        let a = letter(10.0, "A");
+        assert_eq!(counted(&[a.clone(), number(after(&a, 1.8), "2", 2.5)], &[]), 1, "«A 2»");
+        assert_eq!(counted(&[a.clone(), number(after(&a, 4.0), "5′ ≡ 6", 3.5)], &[]), 1, "a joined run");
+        assert_eq!(counted(&[a.clone(), number(after(&a, 8.0), "2", 3.5)], &[]), 0, "8 mm off");
+        let two = number(10.0, "11", 3.5);
+        assert_eq!(counted(&[two.clone(), letter(after(&two, 1.5), "O1")], &[]), 1, "«11 O1»");
+        assert_eq!(counted(&[two.clone(), number(after(&two, 1.5), "4", 2.5)], &[]), 0, "two numbers");
+        assert_eq!(counted(&[two.clone(), letter(after(&two, 1.5), "S/H")], &[]), 0, "an axis's name");
+        let tick = number(10.0, "0,5", 2.5);
+        assert_eq!(counted(&[tick.clone(), letter(after(&tick, 1.5), "P")], &[]), 0, "a tick's value");
+        let link = number(10.0, "0", 3.5);
+        let mut picture =
+            layout::tests::scene(vec![Item::Text(link.clone()), Item::Text(letter(after(&link, 1.5), "H"))]);
+        picture.groups[0].id = "planetary".into();
+        assert_eq!(layout::measure(&picture).texts_run_together, 0, "a link's number in a velocity picture");
     }
 }

@@ -77,8 +77,8 @@ pub(super) struct Candidate {
 const SEEN_SHORT: f64 = 8.0;
 
 /// A text box this many times as high as a label's is taller lettering (a point's 5 mm
-/// letter beside a 2.5 mm number).
-const TALLER: f64 = 1.5;
+/// letter beside a 2.5 or 3.5 mm number).
+const TALLER: f64 = 1.3;
 
 /// A level line keeps this far over or under a label, mm (GOST 2.307 sets a value about
 /// 1 mm over its line): nearer, it reads as the label's over- or underline.
@@ -124,7 +124,9 @@ impl Candidate {
     }
 
     /// Whether no text of `o` level with it runs into it: none beside it if it states a
-    /// value ([`Request::states_value`]), no statement beside it if not. A text box's height
+    /// value ([`Request::states_value`]), no statement beside it if not, no taller text
+    /// beside it if it keeps off those ([`Request::apart_from_taller`]), and no such
+    /// shorter number beside it ([`crate::drawing::obstacles::Piece::Index`]). A text box's height
     /// stands for its lettering's (at most: a smaller name may stand nearer).
     pub(super) fn stands_apart(&self, o: &Obstacles) -> bool {
         let band = phrases::level_band(self.r, phrases::APART * self.h);
@@ -132,7 +134,9 @@ impl Candidate {
         let text_beside = || o.text_box_meets(band, |t| self.runs_into(t, t.height()));
         let taller = |t: Rect| t.height() > TALLER * self.r.height() && self.runs_into(t, t.height());
         let taller_beside = || self.apart_from_taller && o.text_box_meets(band, taller);
-        !(statement_beside || self.states_value && text_beside() || taller_beside())
+        let shorter = |t: Rect, h: f64| self.r.height() > TALLER * t.height() && self.runs_into(t, h);
+        let index_beside = || o.index_meets(band, shorter);
+        !(statement_beside || self.states_value && text_beside() || taller_beside() || index_beside())
     }
 
     /// Whether letters `t`, `h` high, level with it stand nearer than [`phrases::APART`]

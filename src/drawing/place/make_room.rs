@@ -59,7 +59,9 @@ impl Labels {
         let leader = self.requests[i].drawn_leader(c).map(|(a, b)| Piece::Segment(a, b));
         // A statement keeps the labels placed after it off its line beside it.
         let statement = c.states_value.then_some(Piece::Statement(c.r, c.h));
-        std::iter::once(Piece::TextBox(c.r.inflate(gap, 0.0))).chain(statement).chain(leader)
+        // A number kept off taller letters keeps a taller label placed after it off too.
+        let index = c.apart_from_taller.then_some(Piece::Index(c.r, c.h));
+        std::iter::once(Piece::TextBox(c.r.inflate(gap, 0.0))).chain(statement).chain(index).chain(leader)
     }
 
     /// The labels of `placed` that `keep` accepts, as obstacles.

@@ -388,3 +388,49 @@ fn a_statement_and_a_text_on_its_line_stand_apart() {
         assert!(l.is_clean(), "{label:?} beside “{drawn}”: {:?}", l.problems);
     }
 }
+
+/// A position's number a word's space from a point's letter reads as the letter's index
+/// («2 A»: the guide's A₂; a teacher read a crank's «2» 1.8 mm before «A»): a number kept
+/// apart from taller texts ([`Labels::add_text_apart`]) stands off the letter's line
+/// beside it, of either lettering height, and the measure finds the drawing clean; set as
+/// a plain label, its first spot 3 mm before the letter, the measure counts the pair.
+#[test]
+fn a_position_number_stands_apart_from_a_points_letter() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    for (h, apart) in [(2.5, true), (3.5, true), (3.5, false)] {
+        let mut g = Group::new("g", region);
+        // The letter a label of its own, placed first (rank 0), as a mechanism's are.
+        let mut labels = Labels::new();
+        labels.add_text_ranked(Point::new(53.0, 50.0), Vec2::new(1.0, 0.0), "A", 5.0, 0);
+        if apart {
+            labels.add_text_apart(Point::new(50.0, 50.0), Vec2::new(-1.0, 0.0), "2", h, 2);
+        } else {
+            labels.add_text_ranked(Point::new(50.0, 50.0), Vec2::new(-1.0, 0.0), "2", h, 2);
+        }
+        assert_eq!(labels.place(&mut g, region), vec![true, true]);
+        let mut scene = layout::tests::scene(g.items);
+        scene.groups[0].id = "mechanism".into();
+        let l = layout::measure(&scene);
+        assert_eq!(l.texts_run_together, usize::from(!apart), "{h} mm, apart {apart}: {:?}", l.problems);
+    }
+}
+
+/// A taller letter placed after a number kept apart from taller texts (a repair round
+/// puts a label that found no clean spot first) keeps off the number's line beside it too,
+/// wherever its first spot is.
+#[test]
+fn a_letter_placed_after_a_position_number_stands_apart_from_it() {
+    let region = Rect::new(0.0, 0.0, 100.0, 100.0);
+    let mut counts = Vec::new();
+    for dy in [-3.0, -2.0, -1.0, 0.0, 1.0, 2.0, 3.0, 4.0, 5.0] {
+        let mut g = Group::new("g", region);
+        let mut labels = Labels::new();
+        labels.add_text_apart(Point::new(50.0, 50.0), Vec2::new(1.0, 0.0), "11", 2.5, 0);
+        labels.add_text_ranked(Point::new(60.0, 50.0 + dy), Vec2::new(-1.0, 0.0), "B", 5.0, 1);
+        assert_eq!(labels.place(&mut g, region), vec![true, true]);
+        let mut scene = layout::tests::scene(g.items);
+        scene.groups[0].id = "mechanism".into();
+        counts.push(layout::measure(&scene).texts_run_together);
+    }
+    assert_eq!(counts, vec![0; counts.len()]);
+}

@@ -207,6 +207,6 @@ fn distance(piece: &Piece, s: (Point, Point)) -> f64 {
         Piece::Segment(a, b) => to(a, s).min(to(b, s)).min(to(s.0, (a, b))).min(to(s.1, (a, b))),
         Piece::Disc(c, rad) => (to(c, s) - rad).max(0.0),
         Piece::TextBox(r) | Piece::Band(r) => rect_segment_distance(r, s),
-        Piece::Statement(..) => f64::INFINITY,
+        Piece::Statement(..) | Piece::Index(..) => f64::INFINITY,
     }
 }

@@ -186,7 +186,7 @@ fn draw_positions(g: &mut Group, labels: &mut Labels, view: View, d: &Design, ph
         g.breakable_from(line);
         g.dot(at, 0.45);
         if let Some(name) = name {
-            labels.add_text_ranked(at, Vec2::ZERO, &name, 2.5, 2);
+            labels.add_text_apart(at, Vec2::ZERO, &name, 2.5, 2);
         }
     }
 }

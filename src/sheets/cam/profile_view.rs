@@ -141,8 +141,9 @@ fn draw_rollers(g: &mut Group, labels: &mut Labels, view: View, d: &Design, phis
             g.circle(view.p(p), view.len(d.roller), THIN);
             labels.keep_out(view.p(p), view.len(d.roller));
         }
+        // Kept off the centre's «O» on its line: «O 10» reads as O₁₀.
         if let Some(name) = name {
-            labels.add_text_ranked(rim, (rim - view.origin) * side, &name, 2.5, 2);
+            labels.add_text_apart(rim, (rim - view.origin) * side, &name, 2.5, 2);
         }
     }
 }

@@ -339,7 +339,7 @@ impl MechanismView<'_> {
             let h = self.numbers_height(r);
             for group in groups {
                 let (o, a) = ends(&self.k.positions[group[0]].state);
-                labels.add_text_ranked(a, a - o, &self.joined_label(group), h, 2);
+                labels.add_text_apart(a, a - o, &self.joined_label(group), h, 2);
             }
         }
         self.slider_numbers(labels, sliders)

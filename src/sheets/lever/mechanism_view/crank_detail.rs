@@ -233,7 +233,7 @@ impl MechanismView<'_> {
         let h = self.numbers_height(r);
         for group in &groups {
             let pin = view.p(self.k.positions[group[0]].state.points[crank.pin].p);
-            labels.add_text_ranked(pin, pin - o, &self.joined_label(group), h, 2);
+            labels.add_text_apart(pin, pin - o, &self.joined_label(group), h, 2);
         }
     }
 
