@@ -270,3 +270,38 @@ fn a_rollers_number_does_not_stand_among_the_pivots_names() {
         assert!(seen >= 10, "{lang:?}: {seen} numbers");
     }
 }
+
+/// r_min's value set over its radius leaves the room under the line to it alone: a
+/// profile's name just under the line read as the value's second line («r_min = 75,14» over
+/// «рабочий профиль», task 1 variant 5, a teacher's review of the Russian sheets). No text
+/// of the profile's drawing stands in the value's box mirrored across the line.
+#[test]
+fn nothing_stands_under_r_mins_line_as_its_values_second_line() {
+    let text = common::catalogue_text("1", 5, Language::Ru);
+    let p = tmm_sheets::pipeline::load_for(&text, &[3]).unwrap();
+    let out = tmm_sheets::pipeline::build(&p, &[3]).unwrap().remove(0).output;
+    let g = out.scene.groups.iter().find(|g| g.id == "profile").expect("the profile");
+    let value = g.texts().find(|t| t.plain().starts_with("r_min = ")).expect("r_min's value");
+    assert!(value.rotate.abs() < 1e-6, "the case is r_min along a level radius: {}", value.rotate);
+    let b = value.core_box();
+    // The level line under the value: the first stroke under its baseline across its middle.
+    let line_y = g
+        .items
+        .iter()
+        .filter_map(common::path_points)
+        .flat_map(|(pts, _)| pts.windows(2).map(|w| (w[0], w[1])).collect::<Vec<_>>())
+        .filter(|(a, c)| (a.y - c.y).abs() < 1e-6 && a.x.min(c.x) < b.center().x && a.x.max(c.x) > b.center().x)
+        .map(|(a, _)| a.y)
+        .filter(|&y| y >= b.y1 - 0.01 && y < b.y1 + 3.0)
+        .fold(f64::INFINITY, f64::min);
+    assert!(line_y.is_finite(), "r_min's line under its value");
+    let mirrored = kurbo::Rect::new(b.x0, 2.0 * line_y - b.y1, b.x1, 2.0 * line_y - b.y0);
+    for t in g.texts().filter(|t| t.plain() != value.plain()) {
+        assert!(
+            t.core_box().intersect(mirrored).area() == 0.0,
+            "«{}» under r_min's line at {:?}",
+            t.plain(),
+            t.core_box()
+        );
+    }
+}

@@ -172,6 +172,18 @@ fn structure_matches_the_guide() {
     assert!((p.mechanism.omega1 + 7.330382858376184).abs() < 1e-12, "ω1 = −π·70/30 (clockwise)");
 }
 
+/// Two rods on one crank (the V and two-cylinder compressors): both groups hang on the
+/// crank, not the second on the first («I(0,1) → II(2,3) → II(4,5)» said so, a teacher's
+/// review of tasks 1 and 8).
+#[test]
+fn two_rods_on_one_crank_branch_from_it_in_the_formula() {
+    for name in ["v-compressor", "two-cylinder-compressor"] {
+        let s = structure::analyse(&lever(name).mechanism);
+        assert_eq!(s.formula, "II(2,3) ← I(0,1) → II(4,5)", "{name}");
+        assert_eq!((s.moving_links, s.p5, s.dof), (5, 7, 1), "{name}");
+    }
+}
+
 /// The guide's velocity plans are drawn at μ_v = 0.021975 (m/s)/mm: reading a vector to
 /// ±2 mm gives ±0.044 m/s, and ±0.044/l for an angular velocity ω = v/l.
 const READING: f64 = 2.0 * 0.021975;
@@ -243,4 +255,36 @@ fn committed_report_is_current() {
         committed == cmp.report,
         "docs/worked-example-vs-guide.md is out of date: run UPDATE=1 cargo test --test worked_example"
     );
+}
+
+/// The decimals a printed value carries.
+fn decimals(printed: &str) -> usize {
+    printed.split_once('.').map_or(0, |(_, d)| d.len())
+}
+
+/// One quantity, one precision (GOST 2.105): every reaction of table 4 at the same
+/// decimals (a teacher read a reaction's −978,1 over another's −978).
+#[test]
+fn the_rows_of_one_quantity_share_their_decimals() {
+    let p = common::fixture("worked-example");
+    let built = tmm_sheets::pipeline::build(&p, &[1]).unwrap().remove(0).output;
+    for (id, expected) in [("reactions", None::<usize>)] {
+        let table = &built.tables.iter().find(|t| t.table.id == id).expect("the table").table;
+        let mut by_unit: Vec<(String, Vec<usize>)> = Vec::new();
+        for row in &table.rows {
+            let unit = format!("{:?}", row.unit);
+            let d: Vec<usize> = row.printed(false).iter().filter(|v| v.as_str() != "—").map(|v| decimals(v)).collect();
+            match by_unit.iter_mut().find(|(u, _)| *u == unit) {
+                Some((_, all)) => all.extend(d),
+                None => by_unit.push((unit, d)),
+            }
+        }
+        for (unit, all) in &by_unit {
+            assert!(all.windows(2).all(|w| w[0] == w[1]), "{id}, {unit}: decimals {all:?}");
+        }
+        if let Some(d) = expected {
+            let first = &by_unit[0];
+            assert_eq!(first.1[0], d, "{id}, {}: the guide's precision", first.0);
+        }
+    }
 }

@@ -43,6 +43,18 @@ pub fn value_along(at: Point, normal: Vec2, off: f64, value: &LabelText, h: f64)
     t
 }
 
+/// The room the text `t`, set along the line a–b, leaves on the line's other side: its box
+/// mirrored across the line, which a label keeps clear of (a profile's name just under
+/// r_min's line read as a second line of its value, «r_min = 75,14 / рабочий профиль»).
+pub fn mirrored_room(t: &Text, (a, b): (Point, Point)) -> Rect {
+    let r = t.bbox();
+    let u = (b - a).unit();
+    let c = r.center().to_vec2() - a.to_vec2();
+    let along = u * c.dot(u);
+    let mirrored = a + along * 2.0 - c;
+    Rect::from_center_size(mirrored, r.size())
+}
+
 /// The side of the line a–b a value set along it stands over (GOST 2.307 writes it there):
 /// its letters' up, as [`value_along`] turns them — above a level or slanted line, left of
 /// a vertical one.

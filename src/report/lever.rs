@@ -1,7 +1,7 @@
 //! The lever sheet's tables of the explanatory note as numbers: 1-jadval (velocities),
 //! 2-jadval (accelerations) and, with a force analysis, tables 3–5.
 
-use super::{Column, ForceKind, NumTable, Row, Sub, Unit};
+use super::{Column, ForceKind, NumTable, Row, Sub, Unit, share_decimals};
 use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::kinetostatics::{FRAME, Forces, InertiaLoad, Kind, Part};
 use crate::lever::linkage::{LinkKind, Mechanism};
@@ -156,7 +156,7 @@ pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {
                 .absent_where(no_moment),
         ],
     };
-    let reactions = NumTable {
+    let mut reactions = NumTable {
         id: "reactions",
         columns: vec![Column::new("x", "x"), Column::new("y", "y"), Column::new("abs", "|R|")],
         rows: reactions(m, f)
@@ -164,6 +164,9 @@ pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {
             .map(|(sub, r)| Row::new("R", Sub::Name(sub), Unit::N, vec![r.x, r.y, r.norm()]))
             .collect(),
     };
+    // One quantity, one precision (GOST 2.105): a column read −978,1 under 1394 and over
+    // −978 (a teacher's mark on task 1 variant 5).
+    share_decimals(reactions.rows.iter_mut(), 0);
     let balancing = Sub::Force(ForceKind::Balancing, String::new());
     let mut rows = vec![];
     for (load, v) in fa.model.loads.iter().zip(&f.loads) {

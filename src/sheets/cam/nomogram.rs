@@ -9,7 +9,7 @@ use super::labels::CamWords;
 use crate::cams::follower::Follower;
 use crate::cams::radius::{Phase, Region};
 use crate::cams::{Design, Sense};
-use crate::drawing::along::along_line;
+use crate::drawing::along::{along_line, mirrored_room};
 use crate::drawing::fmt;
 use crate::drawing::obstacles::Obstacles;
 use crate::drawing::place::Labels;
@@ -318,7 +318,10 @@ fn draw_centre(
     // Along its radius where it finds room there (GOST 2.307), else level beside it: between
     // the limiting lines a level value hung 22–35 mm off on a leader.
     match along_line((&drawn, area), (view.p(o), view.p(Vec2::ZERO)), (&r_text, 3.5), None) {
-        Some(t) => g.text(t),
+        Some(t) => {
+            labels.keep_clear(mirrored_room(&t, (view.p(o), view.p(Vec2::ZERO))));
+            g.text(t)
+        }
         None => labels.add(view.p(o * 0.5), Vec2::new(1.0, 0.0), r_text, 3.5),
     }
 }

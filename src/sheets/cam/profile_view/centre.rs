@@ -5,7 +5,7 @@
 //! the arrow no clear start, the radius goes further round the dwell.
 
 use crate::cams::Design;
-use crate::drawing::along::along_line;
+use crate::drawing::along::{along_line, mirrored_room};
 use crate::drawing::fmt;
 use crate::drawing::obstacles::{Obstacles, Piece};
 use crate::drawing::place::Labels;
@@ -52,7 +52,10 @@ pub fn write_r_min(g: &mut Group, labels: &mut Labels, area: Rect, r_min: RMin) 
     let RMin { radius: (o, end), value } = r_min;
     let drawn = Obstacles::of_items(&g.items);
     match along_line((&drawn, area), (clear_of_o(o, end), end), (&value, VALUE_H), None) {
-        Some(t) => g.text(t),
+        Some(t) => {
+            labels.keep_clear(mirrored_room(&t, (o, end)));
+            g.text(t)
+        }
         None => labels.add_ranked(o + (end - o) * R_MIN_VALUE_AT, Vec2::ZERO, value, VALUE_H, 1),
     }
 }
