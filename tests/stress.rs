@@ -168,6 +168,18 @@ fn run(name: &str, min_built: u32, strategy: impl Strategy<Value = String>) {
 
 /// As [`run`], `n` cases.
 fn run_n(name: &str, min_built: u32, n: u32, strategy: impl Strategy<Value = String>) {
+    run_checked(name, min_built, n, strategy, |_| None);
+}
+
+/// As [`run_n`], each built case's project text also asked of `wrong`: what is wrong with
+/// its sheets beyond the verdict's checks, if anything.
+fn run_checked(
+    name: &str,
+    min_built: u32,
+    n: u32,
+    strategy: impl Strategy<Value = String>,
+    wrong: impl Fn(&str) -> Option<String>,
+) {
     let config = Config { cases: n, failure_persistence: None, rng_seed: seed(), ..Config::default() };
     let mut runner = TestRunner::new(config);
     let built = std::cell::Cell::new(0u32);
@@ -176,6 +188,8 @@ fn run_n(name: &str, min_built: u32, n: u32, strategy: impl Strategy<Value = Str
         prop_assert!(outcome.is_ok(), "{}:\n{text}", outcome.as_ref().unwrap_err());
         if let Ok(Outcome::Built) = outcome {
             built.set(built.get() + 1);
+            let wrong = wrong(&text);
+            prop_assert!(wrong.is_none(), "{}:\n{text}", wrong.unwrap_or_default());
         }
         Ok(())
     });
@@ -750,25 +764,11 @@ fn crank_rockers_with_a_load_on_the_rockers_point() {
             )
         },
     );
-    let config = Config { cases: cases() / 3, failure_persistence: None, rng_seed: seed(), ..Config::default() };
-    let built = std::cell::Cell::new(0u32);
-    let result = TestRunner::new(config).run(&strategy, |text| {
-        let outcome = std::panic::catch_unwind(|| verdict(&text)).unwrap_or_else(|_| Err("panicked".into()));
-        prop_assert!(outcome.is_ok(), "{}:\n{text}", outcome.as_ref().unwrap_err());
-        if let Ok(Outcome::Built) = outcome {
-            built.set(built.get() + 1);
-            let p = pipeline::load(&text).unwrap();
-            let out = pipeline::build(&p, &[1]).unwrap().remove(0).output;
-            let wrong = rocker_load_wrong(&out.results);
-            prop_assert!(wrong.is_none(), "{}:\n{text}", wrong.unwrap_or_default());
-        }
-        Ok(())
-    });
-    if let Err(e) = result {
-        panic!("crank-rockers with loads: {e}");
-    }
-    eprintln!("crank-rockers with loads: {} of {} built, their physics checked", built.get(), cases() / 3);
-    assert!(built.get() * 100 >= 60 * (cases() / 3), "only {} built", built.get());
+    let physics = |text: &str| {
+        let p = pipeline::load(text).unwrap();
+        rocker_load_wrong(&pipeline::build(&p, &[1]).unwrap().remove(0).output.results)
+    };
+    run_checked("crank-rockers with loads", 60, cases() / 3, strategy, physics);
 }
 
 /// What is wrong with the load on the rocker's point K (pivot C) in a sheet's results, if

@@ -102,7 +102,7 @@ fn numbers_point(number: &str, name: &str) -> bool {
 }
 
 /// A position's number: digits and primes, or a run of them joined by «≡» («5′ ≡ 6»).
-pub fn is_position_number(text: &str) -> bool {
+fn is_position_number(text: &str) -> bool {
     let text = text.trim();
     text.starts_with(|c: char| c.is_ascii_digit()) && text.chars().all(|c| c.is_ascii_digit() || "′≡ ".contains(c))
 }

@@ -235,9 +235,8 @@ pub fn place_loads(m: &Mechanism, motion: &Motion, model: &ForceModel) -> Result
             }
             swing.reference = r / r.norm();
         }
-        let track: &super::load::Load = load;
-        let coordinate = |p: Vec2| track.coordinate(p);
-        let rate = |p: Vec2, v: Vec2| v.dot(track.direction(p));
+        let coordinate = |p: Vec2| load.coordinate(p);
+        let rate = |p: Vec2, v: Vec2| v.dot(load.direction(p));
         let (lo, hi) = motion::extremes_of(m, motion, load.point, &coordinate, &rate)?;
         if hi - lo <= tol::SAME_POINT * m.size {
             return Err(AnalysisError::ZeroStroke {
