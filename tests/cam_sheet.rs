@@ -365,8 +365,8 @@ fn each_phase_table_is_titled_with_its_number_and_phase() {
         (
             Language::En,
             [
-                "Table 9 – The law by positions: rise",
-                "Table 10 – The law by positions: return",
+                "Table 9 – Follower motion by position: rise",
+                "Table 10 – Follower motion by position: return",
                 "Table 11 – Polar coordinates of the profiles: rise",
                 "Table 12 – Polar coordinates of the profiles: return",
                 "Table 13 – Results",

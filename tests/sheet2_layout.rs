@@ -360,7 +360,7 @@ fn the_planetary_views_captions_stand_clear_of_the_plan_under_them() {
         let captions = match lang {
             Language::Uz => ["Old koʻrinish", "Kinematik sxema"],
             Language::Ru => ["Вид спереди", "Кинематическая схема"],
-            Language::En => ["Front view", "Kinematic scheme"],
+            Language::En => ["Front view", "Kinematic diagram"],
         };
         let task7 = pipeline::load(&common::catalogue_text("7", 1, lang)).unwrap();
         let mut worked = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
@@ -403,7 +403,7 @@ fn the_angular_velocity_plans_caption_stands_over_its_plan() {
         let caption = match lang {
             Language::Uz => "Burchak tezliklari rejasi",
             Language::Ru => "План угловых скоростей",
-            Language::En => "Angular velocities",
+            Language::En => "Angular velocity diagram",
         };
         let mut worked = pipeline::load(pipeline::DEFAULT_PROJECT).unwrap();
         worked.info.language = lang;

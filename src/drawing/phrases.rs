@@ -60,12 +60,13 @@ pub fn run_together(scene: &Scene, strokes: &Obstacles) -> Vec<RunTogether> {
             let h = a.h.min(b.h);
             let shared = ra.y1.min(rb.y1) - ra.y0.max(rb.y0);
             let one_line = (a.at.y - b.at.y).abs() <= ONE_LINE * h || shared >= SHARED * ra.height().min(rb.height());
-            let numbered = POSITIONS_DRAWN.contains(ga) && (numbers_point(wa, wb) || numbers_point(wb, wa));
-            if j == k || !numbered && a.h.max(b.h) > ONE_SIZE * h || !one_line {
+            let gap = rb.x0 - ra.x1;
+            if j == k || !one_line || rb.x0 <= ra.x0 || gap >= APART * h || gap < -0.5 * h {
                 continue;
             }
-            let gap = rb.x0 - ra.x1;
-            if rb.x0 <= ra.x0 || gap >= APART * h || gap < -0.5 * h {
+            // The words read only for a pair close enough (a sheet has a thousand texts).
+            let numbered = POSITIONS_DRAWN.contains(ga) && (numbers_point(wa, wb) || numbers_point(wb, wa));
+            if !numbered && a.h.max(b.h) > ONE_SIZE * h {
                 continue;
             }
             // Two statements side by side read as a list («λ₁ = −15,09  λ₂ = −4,669»), a

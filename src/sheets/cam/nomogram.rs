@@ -11,7 +11,7 @@ use crate::cams::radius::{Phase, Region};
 use crate::cams::{Design, Sense};
 use crate::drawing::along::{along_line, mirrored_room};
 use crate::drawing::fmt;
-use crate::drawing::obstacles::Obstacles;
+use crate::drawing::obstacles::{Obstacles, Piece};
 use crate::drawing::place::Labels;
 use crate::drawing::scene::{AXIS, DASHED, Group, MAIN, THIN};
 use crate::drawing::symbols::{angle_mark, dimension, frame_pivot, hatch_along, vector};
@@ -279,6 +279,9 @@ fn draw_zone_boundary(
     }
 }
 
+/// The room round O that r_min's value leaves for O's letter, mm.
+const O_LETTER_ROOM: f64 = 4.5;
+
 /// O and r_min as a radius (thin, its arrow at B₀ as on the profile), and the rocker's
 /// centre distance or the translating follower's offset.
 fn draw_centre(
@@ -314,7 +317,11 @@ fn draw_centre(
         let t = format!("e = {} {}", fmt::trimmed(mm(o.x.abs()), lang), words.common.unit_mm());
         labels.add_text(mid, Vec2::new(0.0, 1.0), &t, 3.5);
     }
-    let drawn = Obstacles::of_items(&g.items);
+    let mut drawn = Obstacles::of_items(&g.items);
+    // O's letter is placed round O after the value: the value keeps a letter's room from O
+    // (set along the radius from O's very dot, it left the letter a spot whose leader
+    // crossed it: a random rocker's "r_min = 1761").
+    drawn.add(Piece::Disc(view.p(o), O_LETTER_ROOM), usize::MAX);
     // Along its radius where it finds room there (GOST 2.307), else level beside it: between
     // the limiting lines a level value hung 22–35 mm off on a leader.
     match along_line((&drawn, area), (view.p(o), view.p(Vec2::ZERO)), (&r_text, 3.5), None) {
