@@ -10,7 +10,7 @@ use super::{PLANETARY_PART, planetary_view, tables};
 use crate::drawing::fmt;
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
-use crate::drawing::scene::{Anchor, Group, Text};
+use crate::drawing::scene::{Anchor, Group, Item, Text};
 use crate::drawing::table::CELL_TEXT;
 use crate::drawing::text::wrap;
 use crate::project::gears::PlanetaryProject;
@@ -167,17 +167,36 @@ fn group(pl: &PlanetaryProject, f: Frame, plan: PlanRoom, words: &GearWords) -> 
     };
     let sc = l.scale(&fmt::localise(&scale::ratio(mu), lang));
     g.text(Text::new(Point::new(region.x0 + 2.0, region.y0 + 11.0), format!("{scheme}; {sc}"), 2.5, Anchor::Start));
-    let captions = f.strip.y0 - 1.5;
-    g.text(Text::new(Point::new(f.front.center().x, captions), l.front_view(), 2.5, Anchor::Middle));
-    g.text(Text::new(Point::new(f.side.center().x, captions), l.side_view(), 2.5, Anchor::Middle));
     let mut labels = Labels::new();
     let start = g.mark();
     let points = planetary_view::draw(&mut g, f.front, f.side, s, pl.module, mu, &mut labels);
+    // Each view's caption just under it, not at the foot of the views' row: there, over
+    // a plan of angular velocities in the strip below, «Кинематическая схема» read as the
+    // plan's title (a teacher's review of the Russian sheets).
+    for (view, caption) in [(f.front, l.front_view()), (f.side, l.side_view())] {
+        let y = (drawn_bottom(&g.items[start..], view) + CAPTION_UNDER).min(f.strip.y0 - 1.5);
+        g.text(Text::new(Point::new(view.center().x, y), caption, 2.5, Anchor::Middle));
+    }
     let strip = (plan != PlanRoom::Column).then_some(f.strip);
     let reading = velocity_pictures(&mut g, (f.pictures, strip), &points, s.ratio, words, &mut labels);
     labels.place(&mut g, region);
     g.part_from(PLANETARY_PART, start);
     PlanetaryDrawn { group: g, mu, bottom: region.y1, reading }
+}
+
+/// A view's caption's baseline under the view's lowest line, mm: a name placed under the
+/// view keeps to the room between them.
+const CAPTION_UNDER: f64 = 7.0;
+
+/// The lowest point of `items` drawn in `view`'s columns (their boxes' middles within
+/// them), else the view's top.
+fn drawn_bottom(items: &[Item], view: Rect) -> f64 {
+    items
+        .iter()
+        .map(Item::bbox)
+        .filter(|b| (view.x0..=view.x1).contains(&b.center().x))
+        .map(|b| b.y1)
+        .fold(view.y0, f64::max)
 }
 
 /// The pictures of linear and angular velocities: the linear in `area` beside the scheme,
