@@ -632,3 +632,47 @@ fn a_name_at_a_plans_foot_stays_at_its_foot() {
         }
     }
 }
+
+/// The legends under the force drawings write each quantity at one precision, as tables 3
+/// and 4 print it (GOST 2.105): the worked example's legend read G₂ = 206,0 N and
+/// Pᵢ₂ = 111,7 N beside G₅ = 4905 N and table 3's 206 and 112 (a teacher's review). Every
+/// weight, inertia force, inertia moment and whole reaction written in a legend has the
+/// decimals of its quantity's others, on every fixture with a force analysis and the worked
+/// example.
+#[test]
+fn a_legend_writes_each_quantity_at_one_precision() {
+    let mut projects: Vec<(String, tmm_sheets::project::Project)> = common::fixture_names()
+        .into_iter()
+        .map(|n| (n.clone(), common::fixture(&n)))
+        .filter(|(_, p)| p.lever.as_ref().is_some_and(|l| l.forces.is_some()))
+        .collect();
+    projects
+        .push(("worked example".into(), tmm_sheets::pipeline::load(tmm_sheets::pipeline::DEFAULT_PROJECT).unwrap()));
+    for (name, p) in projects {
+        let out = common::build_lever(&p).composed;
+        let mut decimals: std::collections::BTreeMap<String, std::collections::BTreeSet<usize>> = Default::default();
+        for g in out.scene.groups.iter().filter(|g| g.id.starts_with("forces")) {
+            for t in g.texts() {
+                // "G_2 = 206 N;", "P_i3* = 52 N", "M_i2 = 0,98 N·m", "R_12 = 6469 N".
+                let plain = t.plain();
+                let Some((name_part, rest)) = plain.split_once(" = ") else { continue };
+                let Some((number, _unit)) = rest.split_once(' ') else { continue };
+                let name_part = name_part.trim_end_matches('*');
+                let Some((main, sub)) = name_part.split_once('_') else { continue };
+                let quantity = match main {
+                    "G" => "G",
+                    "P" if sub.starts_with('i') => "P_i",
+                    "M" if sub.starts_with('i') => "M_i",
+                    "R" if sub.chars().all(|c| c.is_ascii_digit()) => "R",
+                    _ => continue,
+                };
+                let places = number.split_once(',').map_or(0, |(_, d)| d.len());
+                decimals.entry(quantity.to_string()).or_default().insert(places);
+            }
+        }
+        assert!(decimals.contains_key("G") && decimals.contains_key("R"), "{name}: legends read {decimals:?}");
+        for (q, d) in &decimals {
+            assert_eq!(d.len(), 1, "{name}: {q} written at {d:?} decimals");
+        }
+    }
+}

@@ -129,6 +129,35 @@ pub fn reactions(m: &Mechanism, f: &Forces) -> Vec<(String, kurbo::Vec2)> {
     out
 }
 
+/// The decimals tables 3 and 4 print the force drawings' quantities with, for their legends
+/// to write the same digits: a group's legend read P_i2 = 111,7 N and G2 = 206,0 N over
+/// table 3's 112 and 206 (a teacher's review). Reactions' parts (Rⁿ, Rᵗ) take table 4's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LegendDecimals {
+    pub weight: usize,
+    pub inertia: usize,
+    pub moment: usize,
+    pub reaction: usize,
+}
+
+impl LegendDecimals {
+    /// Read off the tables' rows: table 3's G, P_i and M_i, table 4's reactions.
+    pub fn of(t: &ForceTables) -> LegendDecimals {
+        let row =
+            |table: &NumTable, key: &str| table.rows.iter().find(|r| r.key == key).map_or(0, Row::decimals_printed);
+        let reaction = t.reactions.rows.iter().map(Row::decimals_printed).max().unwrap_or(0);
+        LegendDecimals {
+            weight: row(&t.inertia, INERTIA_KEYS[0]),
+            inertia: row(&t.inertia, INERTIA_KEYS[1]),
+            moment: row(&t.inertia, INERTIA_KEYS[2]),
+            reaction,
+        }
+    }
+}
+
+/// The keys of table 3's rows of weights, inertia forces and inertia moments.
+const INERTIA_KEYS: [&str; 3] = ["G", "P_i", "M_i"];
+
 /// Tables 3–5 of the force analysis: inertia loads per link, reactions per pair, and the
 /// balancing force found three ways.
 pub fn force_tables(m: &Mechanism, fa: &ForceAnalysis) -> ForceTables {

@@ -250,10 +250,8 @@ impl Row {
         let present: Vec<f64> = self.present().collect();
         let whole = whole && (self.count || present.iter().all(|&v| whole_value(v)));
         let whole = whole && self.decimals.is_none();
-        let decimals =
-            if self.exact { self.decimals.or_else(|| digits::exact_decimals(&present)) } else { self.decimals };
-        let row = decimals.unwrap_or_else(|| digits::row_decimals(&present));
-        let one = |v: f64| digits::at_decimals(v, if whole && whole_value(v) { 0 } else { decimals.unwrap_or(row) });
+        let row = self.decimals_printed();
+        let one = |v: f64| digits::at_decimals(v, if whole && whole_value(v) { 0 } else { row });
         (0..self.values.len())
             .map(|c| match self.jump_at(c) {
                 _ if self.is_absent(c) => "—".to_string(),
@@ -261,6 +259,17 @@ impl Row {
                 None => one(self.values[c]),
             })
             .collect()
+    }
+
+    /// The decimals [`Row::printed`] writes the row's values with (a whole row asked for whole
+    /// numbers aside): those shared with its table's other rows of one quantity, an exact
+    /// row's fewest exact ones, else its largest value's four significant digits'.
+    pub fn decimals_printed(&self) -> usize {
+        use crate::num::digits;
+        let present: Vec<f64> = self.present().collect();
+        let decimals =
+            if self.exact { self.decimals.or_else(|| digits::exact_decimals(&present)) } else { self.decimals };
+        decimals.unwrap_or_else(|| digits::row_decimals(&present))
     }
 
     /// A condition's row: its value, its limit and 1 when it is met, else 0.

@@ -32,7 +32,7 @@ use crate::lever::analysis::{ForceAnalysis, Kinematics, Position};
 use crate::lever::plans::{acceleration_plan, velocity_plan};
 use crate::project::LeverProject;
 use crate::report::NoteTable;
-use crate::report::lever::ForceTables;
+use crate::report::lever::{ForceTables, LegendDecimals};
 use crate::report::{AnswerKeys, Segment};
 use crate::sheets::scaffold::{self, Composition};
 use crate::sheets::{Context, SheetKind};
@@ -395,9 +395,10 @@ fn force_input<'a>(
     (memo, v): (&'a CellMemo, Variant),
     tables: &Option<Vec<Table>>,
 ) -> Option<ForcesInput<'a>> {
-    inp.forces.zip(tables.as_ref()).map(|((fa, _), tables)| ForcesInput {
+    inp.forces.zip(tables.as_ref()).map(|((fa, force_tables), tables)| ForcesInput {
         m: &inp.project.mechanism,
         fa,
+        decimals: LegendDecimals::of(force_tables),
         state: &k.assigned.state,
         phi_deg: k.assigned.phi.to_degrees(),
         words: *words,

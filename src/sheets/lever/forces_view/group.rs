@@ -6,8 +6,8 @@ use super::arrows::{Arrows, Push, arrow_scale, twins_reach, unit_directions};
 use super::cells::Sizes;
 use super::inset::{self, Enlarge, Inset, Place};
 use super::legend::{
-    cell_title, equation_lines, equation_rows, force_label, scale_item, text_rows, value_item, with_semicolon,
-    with_short_note, wrap_items,
+    cell_title, decimals_of, equation_lines, equation_rows, force_label, scale_item, text_rows, value_item,
+    with_semicolon, with_short_note, wrap_items,
 };
 use super::polygon::{bbox_of, chain, draw_polygon};
 use super::{ARROW_MAX, ARROW_MIN, ForcesInput, LINE};
@@ -83,13 +83,14 @@ fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec
         let f = t.force.norm();
         let s = f / mu_f < ARROW_MIN;
         short |= s;
-        items.push(value_item(inp, force_label(inp, t.kind, t.on), f, inp.words.common.unit_n(), s));
+        let label = force_label(inp, t.kind, t.on);
+        items.push(value_item(inp, label, (f, decimals_of(inp, t.kind)), inp.words.common.unit_n(), s));
     }
     if let Some(inner) = &poly.inner {
         items.push(value_item(
             inp,
             force_label(inp, inner.kind, inner.on),
-            inner.force.norm(),
+            (inner.force.norm(), decimals_of(inp, inner.kind)),
             inp.words.common.unit_n(),
             false,
         ));
@@ -97,7 +98,8 @@ fn group_legend(inp: &ForcesInput, poly: &Polygon, mu_f: f64, width: f64) -> Vec
     for il in inp.fa.forces.inertia.iter().filter(|il| links_of(inp, poly).contains(&il.link) && il.moment != 0.0) {
         let label =
             LabelText::new("M", inp.words.sheet.force(ForceKind::Inertia, &inp.m.links[il.link].number.to_string()));
-        items.push(value_item(inp, label, il.moment.abs(), inp.words.common.unit_n_m(), false));
+        let value = (il.moment.abs(), Some(inp.decimals.moment));
+        items.push(value_item(inp, label, value, inp.words.common.unit_n_m(), false));
     }
     with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
 }

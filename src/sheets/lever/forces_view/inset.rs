@@ -10,7 +10,7 @@
 //! larger keeps its labels on the polygon.
 
 use super::ForcesInput;
-use super::legend::{force_label, scale_item, value_item};
+use super::legend::{decimals_of, force_label, scale_item, value_item};
 use crate::drawing::place::Labels;
 use crate::drawing::scale;
 use crate::drawing::scene::{Anchor, Group, THIN, VECTOR, points_bbox};
@@ -422,7 +422,8 @@ pub(super) fn draw(
             // lettering: at 3.5 mm "P_i3 = 52.43 N" found room only over the next
             // enlargement's drawing (the worked example's T beside L).
             let (label, h) = if (b - a).norm() < SIDE_MIN {
-                (value_item(inp, label, t.force.norm(), inp.words.common.unit_n(), false), 2.5)
+                let value = (t.force.norm(), decimals_of(inp, t.kind));
+                (value_item(inp, label, value, inp.words.common.unit_n(), false), 2.5)
             } else {
                 (label, 3.5)
             };

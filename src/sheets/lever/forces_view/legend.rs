@@ -46,10 +46,37 @@ pub(super) fn equation_lines(inp: &ForcesInput, poly: &Polygon, width: f64) -> V
     wrap_items(terms, width, "", " = 0")
 }
 
-/// "G₂ = 19,6 N", with a star when the arrow is drawn longer than its scale gives.
-pub(super) fn value_item(inp: &ForcesInput, label: LabelText, value: f64, unit: &str, short: bool) -> LabelText {
+/// "G₂ = 19,6 N", with a star when the arrow is drawn longer than its scale gives; with
+/// `decimals` (its table's, [`decimals_of`]) where given, else four significant digits.
+pub(super) fn value_item(
+    inp: &ForcesInput,
+    label: LabelText,
+    (value, decimals): (f64, Option<usize>),
+    unit: &str,
+    short: bool,
+) -> LabelText {
     let star = if short { "*" } else { "" };
-    label.with_tail(format!("{star} = {} {unit}", fmt::value(value, inp.words.lang)))
+    let lang = inp.words.lang;
+    let written = match decimals {
+        Some(d) => fmt::localise(&crate::num::digits::at_decimals(value, d), lang),
+        None => fmt::value(value, lang),
+    };
+    label.with_tail(format!("{star} = {written} {unit}"))
+}
+
+/// The decimals a force of `kind` is written with in a legend: those its table prints it
+/// with (table 3's weights and inertia forces, table 4's reactions); none for a load or
+/// the balancing force, which table 5 writes with four significant digits as
+/// [`fmt::value`] does, nor for a reaction's normal or tangential part, which no table
+/// lists (at table 4's whole newtons the worked example's short Rᵗ₁₂ read 5 N for 5,467).
+pub(super) fn decimals_of(inp: &ForcesInput, kind: Kind) -> Option<usize> {
+    let d = inp.decimals;
+    match kind {
+        Kind::Weight => Some(d.weight),
+        Kind::Inertia => Some(d.inertia),
+        Kind::Reaction { part: Part::Whole, .. } => Some(d.reaction),
+        Kind::Reaction { .. } | Kind::Load(_) | Kind::Balancing => None,
+    }
 }
 
 pub(super) fn with_short_note(

@@ -24,6 +24,7 @@ use crate::drawing::scene::{Anchor, Group, Text};
 use crate::drawing::table::Table;
 use crate::lever::analysis::ForceAnalysis;
 use crate::lever::linkage::{Mechanism, State};
+use crate::report::lever::LegendDecimals;
 use crate::report::{AnswerKeys, Segment};
 pub use cells::CellMemo;
 use cells::{Bodies, Cell, Content, GROWN_POLYGONS, Sizes, cells, pack};
@@ -48,6 +49,8 @@ pub struct ForcesInput<'a> {
     pub words: LeverWords,
     /// Tables 3–5 as drawn.
     pub tables: Vec<Table>,
+    /// The decimals tables 3 and 4 print the legends' quantities with.
+    pub decimals: LegendDecimals,
     /// The cells laid out so far, shared by every layout the sheet tries.
     pub memo: &'a CellMemo,
     /// Whether the group drawings and polygons grow into the room the cells leave (see

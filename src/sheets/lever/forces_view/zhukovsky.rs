@@ -3,7 +3,8 @@
 
 use super::arrows::{Arrows, Push, arrow_scale, twin_rows, unit_directions};
 use super::legend::{
-    couple_label, force_label, scale_item, text_rows, value_item, with_semicolon, with_short_note, wrap_items,
+    couple_label, decimals_of, force_label, scale_item, text_rows, value_item, with_semicolon, with_short_note,
+    wrap_items,
 };
 use super::{ARROW_MIN, ForcesInput, LINE};
 use crate::drawing::fmt;
@@ -27,7 +28,7 @@ pub(super) fn lever_lines(inp: &ForcesInput, width: f64) -> usize {
 fn balancing_rows(inp: &ForcesInput, width: f64) -> Vec<Vec<LabelText>> {
     let (f, w) = (&inp.fa.forces, &inp.words);
     let balancing = |prime: &str, v: f64| {
-        value_item(inp, LabelText::new(prime, w.sheet.sub_balancing()), v, w.common.unit_n(), false)
+        value_item(inp, LabelText::new(prime, w.sheet.sub_balancing()), (v, None), w.common.unit_n(), false)
     };
     let mut power = balancing("P″", f.p_m_power);
     power.tail = format!("{} {}", power.tail, w.sheet.from_power_balance());
@@ -114,13 +115,17 @@ pub(super) fn lever_legend(inp: &ForcesInput, mu_f: f64, width: f64) -> Vec<Vec<
         if f <= 0.0 {
             continue;
         }
-        let label = if l.couple { couple_label(inp, l.on) } else { force_label(inp, l.kind, l.on) };
+        let (label, decimals) = if l.couple {
+            (couple_label(inp, l.on), None)
+        } else {
+            (force_label(inp, l.kind, l.on), decimals_of(inp, l.kind))
+        };
         if items.iter().any(|i| i.main == label.main && i.sub == label.sub) {
             continue;
         }
         let s = f / mu_f < ARROW_MIN;
         short |= s;
-        items.push(value_item(inp, label, f, inp.words.common.unit_n(), s));
+        items.push(value_item(inp, label, (f, decimals), inp.words.common.unit_n(), s));
     }
     with_short_note(inp, wrap_items(items, width, ";", ""), short, width)
 }
