@@ -131,7 +131,8 @@ pub fn reactions(m: &Mechanism, f: &Forces) -> Vec<(String, kurbo::Vec2)> {
 
 /// The decimals tables 3 and 4 print the force drawings' quantities with, for their legends
 /// to write the same digits: a group's legend read P_i2 = 111,7 N and G2 = 206,0 N over
-/// table 3's 112 and 206 (a teacher's review). Reactions' parts (Rⁿ, Rᵗ) take table 4's.
+/// table 3's 112 and 206 (a teacher's review). Whole reactions take table 4's; their
+/// normal and tangential parts, in no table, keep four significant digits.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LegendDecimals {
     pub weight: usize,
